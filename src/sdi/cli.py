@@ -1,0 +1,182 @@
+"""The `sdi` command line. Thin: it parses, calls the library, prints.
+
+Exit codes: 0 success, 1 planning or verification failure, 2 bad input (the message names the
+field or part and the fix; no stack trace).
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Annotated, Any, NoReturn
+
+import typer
+from rich.console import Console
+
+from sdi.errors import InputError, SDIError, SequencingError
+from sdi.inspector.analysis import Analysis
+from sdi.inspector.sequencer import sequence as run_sequence
+from sdi.inspector.verifier import verify
+from sdi.model.cell import CellConfig
+from sdi.model.layout import load_layout
+from sdi.pipeline import plan as run_plan
+from sdi.render import print_plan, violations_table
+
+app = typer.Typer(
+    add_completion=False,
+    no_args_is_help=True,
+    help="SDI: plain-language commands → verified, sequenced robot assembly plans.",
+    pretty_exceptions_enable=False,
+)
+out = Console()
+err = Console(stderr=True)
+
+CellOption = Annotated[
+    Path | None,
+    typer.Option("--cell", help="cell configuration TOML (default: built-in; $SDI_CELL)"),
+]
+JsonOption = Annotated[bool, typer.Option("--json", help="print one JSON object")]
+
+
+def _emit(data: dict[str, Any]) -> None:
+    sys.stdout.write(json.dumps(data, indent=None) + "\n")
+
+
+def _bad_input(exc: SDIError, as_json: bool) -> NoReturn:
+    if as_json:
+        _emit({"status": "error", "error": str(exc)})
+    else:
+        err.print(f"[bold red]error:[/bold red] {exc}")
+    raise typer.Exit(2)
+
+
+def _cell(path: Path | None, as_json: bool) -> CellConfig:
+    try:
+        return CellConfig.load(path)
+    except InputError as exc:
+        _bad_input(exc, as_json)
+
+
+@app.command()
+def plan(
+    command: Annotated[str, typer.Argument(help="what to build, in plain language")],
+    json_out: JsonOption = False,
+    cell_path: CellOption = None,
+    out_file: Annotated[
+        Path | None, typer.Option("--out", help="also write the JSON result here")
+    ] = None,
+) -> None:
+    """Plan a command end to end: spec → layout → verification → assembly sequence."""
+    cell = _cell(cell_path, json_out)
+    result = run_plan(command, cell)
+    data = result.to_json_dict()
+    if out_file is not None and result.status == "success":
+        tmp = out_file.with_suffix(out_file.suffix + ".tmp")
+        tmp.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+        tmp.replace(out_file)
+    if json_out:
+        _emit(data)
+    else:
+        print_plan(out, result, cell)
+    raise typer.Exit({"success": 0, "failure": 1, "error": 2}[result.status])
+
+
+def _load(path: Path, cell: CellConfig, as_json: bool) -> tuple[Any, list[str] | None]:
+    try:
+        return load_layout(path, max_parts=cell.limits.max_parts)
+    except InputError as exc:
+        _bad_input(exc, as_json)
+
+
+@app.command("verify")
+def verify_cmd(
+    layout_file: Annotated[
+        Path, typer.Argument(help="layout JSON ({objects: […]} or a plan result)")
+    ],
+    json_out: JsonOption = False,
+    cell_path: CellOption = None,
+) -> None:
+    """Verify a layout (and its sequence, if the file has one) against every constraint."""
+    cell = _cell(cell_path, json_out)
+    layout, sequence = _load(layout_file, cell, json_out)
+    report = verify(layout, cell, sequence=sequence)
+    if json_out:
+        _emit({"status": "success" if report.passed else "failure", **report.to_json_dict()})
+    elif report.passed:
+        out.print(f"[green]passed[/green]: {len(layout)} parts satisfy every constraint")
+    else:
+        out.print(violations_table(report.violations))
+    raise typer.Exit(0 if report.passed else 1)
+
+
+@app.command("sequence")
+def sequence_cmd(
+    layout_file: Annotated[Path, typer.Argument(help="layout JSON")],
+    json_out: JsonOption = False,
+    cell_path: CellOption = None,
+) -> None:
+    """Compute the assembly order (Alg. 4) for a layout."""
+    cell = _cell(cell_path, json_out)
+    layout, _ = _load(layout_file, cell, json_out)
+    try:
+        order = run_sequence(Analysis(layout, cell))
+    except SequencingError as exc:
+        if json_out:
+            _emit(
+                {"status": "failure", "sequence": None, "error": str(exc), "blocked": exc.blocked}
+            )
+        else:
+            err.print(f"[bold red]no sequence:[/bold red] {exc}")
+        raise typer.Exit(1) from None
+    if json_out:
+        _emit({"status": "success", "sequence": order})
+    else:
+        out.print(" → ".join(order))
+
+
+@app.command()
+def bench(
+    out_file: Annotated[
+        Path | None, typer.Option("--out", help="write the results JSON here")
+    ] = None,
+    json_out: JsonOption = False,
+    cell_path: CellOption = None,
+) -> None:
+    """Run the 70-command evaluation suite on the offline front end."""
+    from rich.progress import Progress
+
+    from sdi.bench.runner import run_suite
+    from sdi.bench.suite import SUITE
+
+    cell = _cell(cell_path, json_out)
+    with Progress(console=err, transient=True) as progress:
+        task = progress.add_task("commands", total=len(SUITE))
+        result = run_suite(cell, progress=lambda *_: progress.advance(task))
+    data = result.to_json_dict()
+    if out_file is not None:
+        out_file.parent.mkdir(parents=True, exist_ok=True)
+        out_file.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+    if json_out:
+        _emit(data)
+    else:
+        out.print(result.markdown_table())
+        for record in data["commands"]:
+            if not record["accepted"]:
+                out.print(f"[red]✗[/red] {record['id']} {record['text']!r}: {record['reason']}")
+
+
+@app.command()
+def skills() -> None:
+    """Print the skill registry as OpenAI function-calling tool schemas (JSON)."""
+    from sdi.skills import default_registry
+
+    _emit({"tools": default_registry().tools()})
+
+
+def main() -> None:
+    app()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,54 @@
+"""The one exception tree of SDI.
+
+Every error names what is wrong (the field, the part id or the word), the bound it broke and
+what to do about it. User mistakes are `InputError`s: the CLI prints their message and exits
+with code 2, never a stack trace.
+"""
+
+from __future__ import annotations
+
+
+class SDIError(Exception):
+    """Root of every error SDI raises on purpose."""
+
+
+class InputError(SDIError):
+    """Bad input from a person or a program: malformed JSON, a bad value, an unknown field.
+
+    `field` is the dotted path of the offending value (``objects[3].size``) when known.
+    """
+
+    def __init__(self, message: str, *, field: str | None = None) -> None:
+        self.field = field
+        super().__init__(f"{field}: {message}" if field else message)
+
+
+class LimitError(InputError):
+    """Input beyond an explicit, configurable limit (part count, text length, …)."""
+
+
+class SpecError(SDIError):
+    """The language front end could not turn a command into a structure specification.
+
+    `understood` says what it did recognise so the operator can rephrase.
+    """
+
+    def __init__(self, message: str, *, understood: dict[str, object] | None = None) -> None:
+        self.understood = understood or {}
+        super().__init__(message)
+
+
+class InfeasibleError(SDIError):
+    """A generator or recovery skill cannot satisfy a parameter; `parameter` names it."""
+
+    def __init__(self, message: str, *, parameter: str | None = None) -> None:
+        self.parameter = parameter
+        super().__init__(message)
+
+
+class SequencingError(SDIError):
+    """No assembly order exists; `blocked` lists the parts that could not be placed."""
+
+    def __init__(self, message: str, *, blocked: list[str]) -> None:
+        self.blocked = blocked
+        super().__init__(message)

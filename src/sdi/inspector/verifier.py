@@ -1,0 +1,350 @@
+"""The verifier V(C, K): every constraint as its own check, and the composite `verify`.
+
+Each check takes an `Analysis` (a layout seen through the cell) and returns violations with a
+message and a concrete hint. Checks that need an order (gravity, sequence, gripping) use the
+given sequence, or the sequencer's order when none is given.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict
+
+from sdi.errors import InputError
+from sdi.inspector.analysis import Analysis, Precedence
+from sdi.inspector.sequencer import disassemble
+from sdi.inspector.stability import find_toppling
+from sdi.inspector.violation import Constraint, Violation, fmt, fmt_point
+from sdi.model.cell import CellConfig
+from sdi.model.layout import Layout
+
+AXES = "xyz"
+
+
+def _names(ids: Sequence[str], limit: int = 5) -> str:
+    shown = ", ".join(ids[:limit])
+    return shown + (f" (+{len(ids) - limit} more)" if len(ids) > limit else "")
+
+
+def check_workspace(a: Analysis) -> list[Violation]:
+    """C2: every part's box lies inside the workspace cuboid W (within ε)."""
+    ws, eps = a.cell.workspace, a.cell.tolerances.contact
+    c, h = a.layout.centres, a.layout.half_extents
+    lo, hi = np.array(ws.lower), np.array(ws.upper)
+    bad = np.nonzero(np.any((c - h < lo - eps) | (c + h > hi + eps), axis=1))[0]
+    out = []
+    for i in bad.tolist():
+        part = a.layout.objects[i]
+        target = np.clip(c[i], lo + h[i], hi - h[i])
+        broken = [
+            f"{AXES[d]} ∈ [{fmt(c[i, d] - h[i, d])}, {fmt(c[i, d] + h[i, d])}] "
+            f"(workspace {fmt(lo[d])}…{fmt(hi[d])})"
+            for d in range(3)
+            if c[i, d] - h[i, d] < lo[d] - eps or c[i, d] + h[i, d] > hi[d] + eps
+        ]
+        too_big = [AXES[d] for d in range(3) if 2 * h[i, d] > hi[d] - lo[d]]
+        moves = [f"{AXES[d]}={fmt(target[d])}" for d in range(3) if abs(target[d] - c[i, d]) > 1e-9]
+        hint = (
+            f"{part.id} is larger than the workspace along {', '.join(too_big)}; use a smaller part"
+            if too_big
+            else f"move {part.id} to {', '.join(moves)}"
+        )
+        out.append(
+            Violation(
+                constraint=Constraint.WORKSPACE,
+                objects=(part.id,),
+                message=f"{part.id} leaves the workspace: box {'; '.join(broken)}",
+                hint=hint,
+                suggestion=None
+                if too_big
+                else {"id": part.id, "position": [round(v, 6) for v in target]},
+            )
+        )
+    return out
+
+
+def check_collision(a: Analysis) -> list[Violation]:
+    """C3: no two boxes overlap by more than ε."""
+    g = a.graph
+    pairs, gaps = g.pairs[g.colliding], g.gaps[g.colliding]
+    c, ids = a.layout.centres, a.layout.ids
+    out = []
+    for (i, j), gap in zip(pairs.tolist(), gaps, strict=True):
+        depth = -gap
+        # Separate along the axis of least penetration; prefer lifting on ties (stacking).
+        d = min((2, 0, 1), key=lambda k: (round(float(depth[k]), 9), k != 2))
+        mover, other = (j, i) if (c[j, 2], j) >= (c[i, 2], i) else (i, j)
+        sign = 1.0 if c[mover, d] >= c[other, d] else -1.0
+        target = c[mover].copy()
+        target[d] += sign * float(depth[d])
+        out.append(
+            Violation(
+                constraint=Constraint.COLLISION,
+                objects=(ids[i], ids[j]),
+                message=f"{ids[i]} overlaps {ids[j]} by {fmt(float(depth[d]))} m along {AXES[d]}",
+                hint=f"move {ids[mover]} to {AXES[d]}={fmt(target[d])}",
+                suggestion={"id": ids[mover], "position": [round(float(v), 6) for v in target]},
+            )
+        )
+    return out
+
+
+def check_contact(a: Analysis) -> list[Violation]:
+    """C4 (paper): a part not resting on the table is in contact with some other part."""
+    g = a.graph
+    n = len(a.layout)
+    touching = np.bincount(g.pairs[g.in_contact].ravel(), minlength=n) > 0
+    out = []
+    for i in np.nonzero(~g.on_table & ~touching)[0].tolist():
+        part = a.layout.objects[i]
+        below = (part.position[0], part.position[1], part.bottom - a.cell.cube[2] / 2)
+        out.append(
+            Violation(
+                constraint=Constraint.CONTACT,
+                objects=(part.id,),
+                message=f"{part.id} floats: its bottom is {fmt(part.bottom)} m above the table "
+                "and it touches no other part",
+                hint=f"lower {part.id} onto the part or table below it, or add a part at "
+                f"{fmt_point(below)}",
+                suggestion={"add_part_at": [round(v, 6) for v in below]},
+            )
+        )
+    return out
+
+
+def check_support(a: Analysis) -> list[Violation]:
+    """Stricter C4: a part off the table rests on a top face with footprint overlap.
+
+    Parts that touch nothing at all are left to `check_contact`.
+    """
+    g = a.graph
+    n = len(a.layout)
+    c, h, ids = a.layout.centres, a.layout.half_extents, a.layout.ids
+    supported = np.zeros(n, dtype=bool)
+    supported[g.support_edges[:, 1]] = True
+    contact_pairs = g.pairs[g.in_contact]
+    touching = np.bincount(contact_pairs.ravel(), minlength=n) > 0
+    out = []
+    for i in np.nonzero(~g.on_table & ~supported & touching)[0].tolist():
+        neighbours = contact_pairs[(contact_pairs == i).any(axis=1)].ravel()
+        neighbours = [k for k in neighbours.tolist() if k != i]
+        lower = [k for k in neighbours if c[k, 2] + h[k, 2] <= c[i, 2] - h[i, 2] + 0.5 * h[i, 2]]
+        pid = ids[i]
+        if lower:
+            k = min(lower, key=lambda k: float(np.hypot(*(c[k, :2] - c[i, :2]))))
+            target = (float(c[k, 0]), float(c[k, 1]), float(c[k, 2] + h[k, 2] + h[i, 2]))
+            hint = f"move {pid} onto {ids[k]} at {fmt_point(target)}"
+            suggestion: dict[str, object] = {"id": pid, "position": [round(v, 6) for v in target]}
+        else:
+            target = (float(c[i, 0]), float(c[i, 1]), float(c[i, 2] - h[i, 2] - a.cell.cube[2] / 2))
+            hint = f"add a part under {pid} at {fmt_point(target)}"
+            suggestion = {"add_part_at": [round(v, 6) for v in target]}
+        out.append(
+            Violation(
+                constraint=Constraint.SUPPORT,
+                objects=(pid, *[ids[k] for k in neighbours[:4]]),
+                message=f"{pid} is off the table but rests on no top face: it touches "
+                f"{_names([ids[k] for k in neighbours])} only at a side or an edge",
+                hint=hint,
+                suggestion=suggestion,
+            )
+        )
+    return out
+
+
+def check_stability(a: Analysis) -> list[Violation]:
+    """Beyond the paper: each sub-structure's centre of mass is over its support polygon."""
+    ids = a.layout.ids
+    out = []
+    for t in find_toppling(a.graph, a.cell.tolerances.stability_margin):
+        names = [ids[i] for i in t.parts]
+        out.append(
+            Violation(
+                constraint=Constraint.STABILITY,
+                objects=tuple(names),
+                message=f"the {len(names)}-part sub-structure {_names(names)} above "
+                f"z={fmt(t.plane_z)} has its centre of mass at {fmt_point(t.com)}, "
+                f"{fmt(t.outside_by)} m outside its support polygon",
+                hint=f"move it by {fmt_point(t.towards)} m or add a support under "
+                f"{fmt_point(t.com)}",
+                suggestion={"ids": names, "translate": [round(v, 6) for v in t.towards]},
+            )
+        )
+    return out
+
+
+def _rank(a: Analysis, sequence: Sequence[str]) -> np.ndarray:
+    index = a.layout.index
+    rank = np.empty(len(a.layout), dtype=np.intp)
+    for k, pid in enumerate(sequence):
+        rank[index[pid]] = k
+    return rank
+
+
+def check_order(a: Analysis, sequence: Sequence[str]) -> list[Violation]:
+    """C1 gravity and C6 sequence for a given order.
+
+    A support edge placed in the wrong order is a `sequence` violation, so is a stated
+    precedence; other contact pairs with the lower part placed later are `gravity` violations.
+    """
+    rank = _rank(a, sequence)
+    ids = a.layout.ids
+    support = {tuple(e) for e in a.graph.support_edges.tolist()}
+    out = []
+
+    def hint(lo: int, up: int) -> str:
+        return (
+            f"place {ids[lo]} before {ids[up]} (now step {rank[lo] + 1} after step {rank[up] + 1})"
+        )
+
+    for lo, up in a.graph.gravity_edges.tolist():
+        if rank[lo] < rank[up]:
+            continue
+        if (lo, up) in support:
+            code, message = Constraint.SEQUENCE, f"{ids[up]} rests on {ids[lo]} but is placed first"
+        else:
+            code = Constraint.GRAVITY
+            message = f"{ids[lo]} touches {ids[up]} lower down but is placed after it"
+        out.append(
+            Violation(
+                constraint=code, objects=(ids[lo], ids[up]), message=message, hint=hint(lo, up)
+            )
+        )
+    for lo, up in a.precedence_edges.tolist():
+        if rank[lo] > rank[up]:
+            message = f"the stated precedence puts {ids[lo]} before {ids[up]}"
+            out.append(
+                Violation(
+                    constraint=Constraint.SEQUENCE,
+                    objects=(ids[lo], ids[up]),
+                    message=message,
+                    hint=hint(lo, up),
+                )
+            )
+    return out
+
+
+def check_gripping_order(a: Analysis, sequence: Sequence[str]) -> list[Violation]:
+    """C5 for a given order: each part is grippable around the parts placed before it."""
+    rank = _rank(a, sequence)
+    ok = a.grip.grippable_given(rank)
+    ids = a.layout.ids
+    out = []
+    for i in np.nonzero(~ok)[0].tolist():
+        blockers = [ids[j] for j in a.grip.blockers_given(i, rank)]
+        out.append(_grip_violation(a, i, blockers, placed=True))
+    return out
+
+
+def _grip_violation(a: Analysis, i: int, blockers: list[str], *, placed: bool) -> Violation:
+    pid = a.layout.ids[i]
+    if not a.grip.fits[i].any():
+        tools = ", ".join(o.label for o in a.grip.options)
+        return Violation(
+            constraint=Constraint.GRIPPING,
+            objects=(pid,),
+            message=f"no gripper fits {pid} (size {fmt_point(a.layout.objects[i].size)} m; "
+            f"options: {tools})",
+            hint=f"use a part size the grippers can hold, e.g. {fmt_point(a.cell.cube)} m",
+        )
+    when = "when it is placed" if placed else "in any order"
+    return Violation(
+        constraint=Constraint.GRIPPING,
+        objects=(pid, *blockers),
+        message=f"no tool can grip {pid} {when}: {_names(blockers)} "
+        f"{'placed before it ' if placed else ''}block every grip option",
+        hint=f"place {pid} before {_names(blockers, 3)}, or leave a gap of at least "
+        f"{fmt(_finger_gap(a.cell))} m beside {pid} along x or y, or keep its top free",
+    )
+
+
+def _finger_gap(cell: CellConfig) -> float:
+    gaps = [g.clearance + g.finger_thickness for g in cell.grippers if g.kind == "parallel"]
+    return max(gaps, default=0.0)
+
+
+class Report(BaseModel):
+    """The verifier's answer: pass/fail, the violations, and the order that was checked."""
+
+    model_config = ConfigDict(frozen=True)
+
+    passed: bool
+    violations: tuple[Violation, ...]
+    sequence: tuple[str, ...] | None
+    checked: tuple[str, ...]
+
+    def by_constraint(self) -> dict[str, int]:
+        counts: dict[str, int] = {}
+        for v in self.violations:
+            counts[v.constraint.value] = counts.get(v.constraint.value, 0) + 1
+        return counts
+
+    def to_json_dict(self) -> dict[str, object]:
+        return {
+            "passed": self.passed,
+            "violations": [v.to_json_dict() for v in self.violations],
+            "sequence": list(self.sequence) if self.sequence is not None else None,
+            "checked": list(self.checked),
+        }
+
+
+GEOMETRY_CHECKS: dict[Constraint, Callable[[Analysis], list[Violation]]] = {
+    Constraint.WORKSPACE: check_workspace,
+    Constraint.COLLISION: check_collision,
+    Constraint.CONTACT: check_contact,
+    Constraint.SUPPORT: check_support,
+    Constraint.STABILITY: check_stability,
+}
+
+
+def order_violations(
+    a: Analysis, sequence: Sequence[str] | None
+) -> tuple[list[Violation], list[str] | None]:
+    """Gravity, sequence and gripping: check `sequence`, or find one and report why none exists."""
+    if sequence is not None:
+        if sorted(sequence) != sorted(a.layout.ids):
+            raise InputError("must order every part of the layout exactly once", field="sequence")
+        return check_order(a, sequence) + check_gripping_order(a, sequence), list(sequence)
+    order, stuck = disassemble(a)
+    ids = a.layout.ids
+    if stuck is None:
+        return [], [ids[i] for i in order]
+    out = [
+        _grip_violation(a, i, [ids[j] for j in blockers], placed=False)
+        for i, blockers in sorted(stuck.ungrippable.items())
+    ]
+    if not stuck.ungrippable:
+        names = [ids[i] for i in stuck.waiting]
+        out.append(
+            Violation(
+                constraint=Constraint.SEQUENCE,
+                objects=tuple(names),
+                message=f"the stated precedence has a cycle through {_names(names)}",
+                hint="remove one of the precedence pairs between these parts",
+            )
+        )
+    return out, None
+
+
+def verify(
+    layout: Layout,
+    cell: CellConfig | None = None,
+    *,
+    sequence: Sequence[str] | None = None,
+    precedence: Precedence = (),
+) -> Report:
+    """V(C, K): run every check; pass only when no constraint is violated."""
+    a = Analysis(layout, cell or CellConfig(), tuple(precedence))
+    violations: list[Violation] = []
+    for check in GEOMETRY_CHECKS.values():
+        violations.extend(check(a))
+    order_v, order = order_violations(a, sequence)
+    violations.extend(order_v)
+    return Report(
+        passed=not violations,
+        violations=tuple(violations),
+        sequence=tuple(order) if order is not None else None,
+        checked=tuple(c.value for c in Constraint),
+    )

@@ -1,0 +1,86 @@
+"""End to end with no model: command → spec → layout → verified + sequenced plan.
+
+`plan` never raises for a user's mistake: every outcome is a `PlanResult` whose `status` is
+``success`` only when the layout passed every constraint, ``failure`` when the command was
+understood but no feasible layout came out, and ``error`` when the command itself is unusable.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict
+
+from sdi.design.composer import compose
+from sdi.errors import InfeasibleError, InputError, SpecError
+from sdi.inspector.verifier import verify
+from sdi.inspector.violation import Violation
+from sdi.model.cell import CellConfig
+from sdi.model.layout import Layout
+from sdi.spec.grammar import parse_command
+from sdi.spec.structure_spec import Spec
+
+Status = Literal["success", "failure", "error"]
+
+
+class PlanResult(BaseModel):
+    """The outcome of planning one command (the `sdi plan --json` contract)."""
+
+    model_config = ConfigDict(frozen=True)
+
+    status: Status
+    command: str
+    spec: Spec | None = None
+    layout: Layout | None = None
+    sequence: tuple[str, ...] | None = None
+    violations: tuple[Violation, ...] = ()
+    error: str | None = None
+    understood: dict[str, Any] | None = None
+    seconds: float = 0.0
+    llm_calls: int = 0
+
+    def to_json_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {
+            "status": self.status,
+            "command": self.command,
+            "spec": self.spec.model_dump(mode="json", exclude_none=True) if self.spec else None,
+            "layout": self.layout.to_json_dict() if self.layout is not None else None,
+            "sequence": list(self.sequence) if self.sequence is not None else None,
+            "violations": [v.to_json_dict() for v in self.violations],
+            "metrics": {"seconds": round(self.seconds, 6), "llm_calls": self.llm_calls},
+        }
+        if self.error:
+            out["error"] = self.error
+        if self.understood:
+            out["understood"] = self.understood
+        return out
+
+
+def plan(command: str, cell: CellConfig | None = None) -> PlanResult:
+    """Plan `command` with the rule-based Specifier and the parametric Designer."""
+    cell = cell or CellConfig()
+    start = time.perf_counter()
+
+    def done(**kw: Any) -> PlanResult:
+        return PlanResult(command=command, seconds=time.perf_counter() - start, **kw)
+
+    try:
+        spec = parse_command(command, cell)
+    except SpecError as exc:
+        return done(status="error", error=str(exc), understood=exc.understood or None)
+    except InputError as exc:
+        return done(status="error", error=str(exc))
+    try:
+        layout = compose(spec, cell)
+    except (InfeasibleError, InputError) as exc:
+        return done(status="failure", spec=spec, error=str(exc))
+    report = verify(layout, cell, precedence=spec.precedence)
+    return done(
+        status="success" if report.passed else "failure",
+        spec=spec,
+        layout=layout,
+        sequence=report.sequence,
+        violations=report.violations,
+        error=None if report.passed else f"{len(report.violations)} constraint violation(s)",
+    )

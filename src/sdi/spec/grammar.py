@@ -1,0 +1,1120 @@
+"""The rule-based Specifier: a plain-language command → a structured `Spec`, with no model.
+
+The command is tokenised (numbers in words become digits, units and symbols split off), then
+read in passes, each marking the tokens it explains:
+
+1. coordinates (``x = 0.45 m``, ``at (0.4, 0.3)``), rotations, axes, dimension groups
+   (``3 by 4``, ``2x2x2``) and measurements with units (``20 cm tall``);
+2. shape nouns, with context deciding words that are also part nouns ("a block" vs "5 blocks");
+3. segmentation: every remaining token is attached to the structure it modifies, split at
+   conjunctions between shape nouns ("a tower of 5 and a wall 3 high");
+4. attributes per structure: counts, levels, steps, spans, vague sizes, regions, gaps,
+   multiplicity ("two towers"); compounds ("two towers joined by a bridge" → a bridge on
+   tower-high pillars, "a castle with corner towers 3 high").
+
+A command with no recognisable structure fails with `SpecError`, saying what was understood.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from pydantic import ValidationError
+
+from sdi.errors import LimitError, SpecError
+from sdi.model.cell import CellConfig
+from sdi.spec import lexicon as lx
+from sdi.spec.numbers import QUANTITY_WORDS, words_to_numbers
+from sdi.spec.structure_spec import Spec, StructureSpec
+
+_TOKEN = re.compile(r"\d+(?:\.\d+)?|\.\d+|[a-z]+|[=:(),;°×*+&\-/]")
+_SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "", "'": "", "°": " deg ", "\u00a0": " "}
+
+# Default parameters of each family by vague size class (S, M, L). Keys are StructureSpec fields.
+SIZE_TABLE: dict[str, dict[str, tuple[int, int, int]]] = {
+    "tower": {"height": (2, 3, 6)},
+    "row": {"length": (3, 5, 8)},
+    "grid": {"length": (2, 3, 4), "width": (2, 3, 4)},
+    "wall": {"length": (3, 4, 6), "height": (1, 2, 3)},
+    "block": {"length": (2, 3, 3), "width": (2, 3, 3), "height": (1, 2, 3)},
+    "pack": {"count": (4, 8, 12)},
+    "pyramid": {"length": (2, 3, 4)},
+    "staircase": {"steps": (2, 3, 5)},
+    "bridge": {"height": (1, 2, 3), "spans": (1, 1, 2)},
+    "arch": {"height": (1, 2, 3)},
+    "canopy": {"height": (2, 3, 4)},
+    "enclosure": {"length": (3, 4, 5), "width": (3, 4, 5)},
+    "castle": {"length": (3, 4, 5), "width": (3, 4, 5), "height": (1, 1, 2)},
+    "l_shape": {"length": (2, 3, 4), "width": (2, 3, 4)},
+    "u_shape": {"length": (3, 3, 4), "width": (2, 3, 4)},
+    "t_shape": {"length": (3, 3, 5), "width": (2, 3, 4)},
+    "cross": {"length": (3, 3, 5)},
+}
+# The parameter a bare number sets ("a tower of 5", "a 4 staircase").
+PRIMARY = {
+    "tower": "height", "row": "length", "grid": "count", "wall": "length", "block": "count",
+    "pack": "count", "pyramid": "length", "staircase": "steps", "bridge": "height",
+    "arch": "height", "canopy": "height", "enclosure": "length", "castle": "length",
+    "l_shape": "length", "u_shape": "length", "t_shape": "length", "cross": "length",
+}  # fmt: skip
+# Which field a measurement in metres sets when no dimension word says.
+PRIMARY_M = {
+    "tower": "height_m",
+    "staircase": "height_m",
+    "canopy": "height_m",
+    "bridge": "height_m",
+}
+# Shapes that hold pillars: a tower-like noun after them ("with legs 3 high") is part of them.
+PILLARED = {"bridge", "arch", "canopy", "castle"}
+NUMERIC_CATEGORIES = {"height", "length", "width", "count", "steps", "span", "spans"}
+
+
+@dataclass
+class Tok:
+    text: str
+    kind: str  # "num" | "word" | "sym"
+    value: float = 0.0
+    used: bool = False
+
+
+@dataclass
+class Hit:
+    """A structure mentioned in the command."""
+
+    index: int
+    shape: str
+    plural: bool
+    params: dict[str, Any] = field(default_factory=dict)
+    multiplicity: int = 1
+    start: int = 0
+    end: int = 0
+
+
+def tokenize(command: str) -> list[Tok]:
+    text = command.lower()
+    for a, b in _SYMBOLS.items():
+        text = text.replace(a, b)
+    raw = words_to_numbers(_TOKEN.findall(text))
+    toks: list[Tok] = []
+    for t in raw:
+        if t[0].isdigit() or (t[0] == "." and len(t) > 1):
+            toks.append(Tok(t, "num", float(t)))
+        elif t.isalpha():
+            toks.append(Tok(t, "word"))
+        else:
+            toks.append(Tok(t, "sym"))
+    # Signs: "- 0.1" after "=", ":", "(", "," or at the start is a negative number.
+    out: list[Tok] = []
+    for k, t in enumerate(toks):
+        if t.text == "-" and k + 1 < len(toks) and toks[k + 1].kind == "num":
+            prev = out[-1].text if out else "("
+            if prev in ("=", ":", "(", ",", "at", "to", "of", "is"):
+                toks[k + 1].value = -toks[k + 1].value
+                toks[k + 1].text = "-" + toks[k + 1].text
+                continue
+        if t.text in ("-", "/"):
+            continue  # "3-cube", "l-shaped", "and/or": joiners carry no meaning here
+        out.append(t)
+    return out
+
+
+class _Parser:
+    def __init__(self, command: str, cell: CellConfig) -> None:
+        self.command = command
+        self.cell = cell
+        self.toks = tokenize(command)
+        self.notes: list[str] = []
+        self.coords: list[tuple[int, str, float]] = []  # (token index, axis, metres)
+        self.yaws: list[tuple[int, float]] = []
+        self.axes: list[tuple[int, str]] = []
+        self.dims: list[tuple[int, list[int]]] = []
+        self.measures: list[tuple[int, float, str | None]] = []  # (index, metres, field)
+        self.hits: list[Hit] = []
+        self.beam = False
+
+    # -- helpers -------------------------------------------------------------------------
+    def word(self, k: int) -> str:
+        return self.toks[k].text if 0 <= k < len(self.toks) else ""
+
+    def is_num(self, k: int) -> bool:
+        return 0 <= k < len(self.toks) and self.toks[k].kind == "num"
+
+    def unit_at(self, k: int) -> float | None:
+        return lx.UNITS_M.get(self.word(k)) if not self.toks[k].used else None
+
+    def _metres(self, k: int) -> tuple[float, int]:
+        """Value of the number at k in metres and the index after it (with its unit)."""
+        value = self.toks[k].value
+        if k + 1 < len(self.toks) and self.word(k + 1) in lx.UNITS_M:
+            self.toks[k + 1].used = True
+            return value * lx.UNITS_M[self.word(k + 1)], k + 2
+        if abs(value) > 2.0:
+            self.notes.append(f"read {value:g} without a unit as {value:g} cm")
+            return value / 100.0, k + 1
+        return value, k + 1
+
+    # -- pass 1: coordinates, rotation, axes, dimension groups, measurements --------------
+    def scan_geometry(self) -> None:
+        t = self.toks
+        n = len(t)
+        for k in range(n):
+            w = t[k].text
+            if t[k].used:
+                continue
+            # "x = 0.45 m", "y: 30 cm", "x of 0.4", "x coordinate 0.4"
+            if w in ("x", "y") and not self.is_num(k - 1):
+                j = k + 1
+                while j < n and t[j].text in ("=", ":", "of", "is", "coordinate", "position",
+                                              "value", "equals", "equal", "to", "at"):  # fmt: skip
+                    j += 1
+                if self.is_num(j) and not (j + 1 < n and t[j + 1].text in ("x", "by")):
+                    metres, end = self._metres(j)
+                    self.coords.append((k, w, metres))
+                    for m in range(k, end):
+                        t[m].used = True
+                    continue
+            # "at (0.4, 0.3)", "at 0.4, 0.3", "position 0.4 0.3"
+            if w in (
+                "at",
+                "position",
+                "coordinates",
+                "centred",
+                "centered",
+                "located",
+                "to",
+                "around",
+                "near",
+            ):
+                j = k + 1
+                if j < n and t[j].text == "(":
+                    j += 1
+                if self.is_num(j):
+                    j2 = j + 1
+                    if j2 < n and t[j2].text in lx.UNITS_M:
+                        j2 += 1
+                    if j2 < n and t[j2].text == ",":
+                        j2 += 1
+                    if self.is_num(j2):
+                        x, _ = self._metres(j)
+                        y, end = self._metres(j2)
+                        if end < n and t[end].text == "," and self.is_num(end + 1):
+                            end += 2
+                        if end < n and t[end].text == ")":
+                            end += 1
+                        self.coords += [(k, "x", x), (k, "y", y)]
+                        for m in range(k + 1, end):
+                            t[m].used = True
+                        continue
+            # rotations: "rotated 45 degrees", "at an angle of 30°", "turned by 90"
+            if w in ("deg", "degree", "degrees") and self.is_num(k - 1) and not t[k - 1].used:
+                self.yaws.append((k, t[k - 1].value))
+                t[k].used = t[k - 1].used = True
+                continue
+            if w in ("rotated", "rotate", "turned", "turn", "angled", "yaw", "angle", "twisted",
+                     "rotation", "tilted") and not t[k].used:  # fmt: skip
+                for j in range(k + 1, min(n, k + 5)):
+                    if self.is_num(j) and not t[j].used:
+                        self.yaws.append((k, t[j].value))
+                        t[j].used = t[k].used = True
+                        if self.word(j + 1) in ("deg", "degree", "degrees"):
+                            t[j + 1].used = True
+                        break
+                    if self.word(j) == "quarter":
+                        self.yaws.append((k, 90.0))
+                        t[j].used = t[k].used = True
+                        break
+                continue
+            if w in ("diagonal", "diagonally"):
+                self.yaws.append((k, 45.0))
+                t[k].used = True
+                continue
+            # axes: "along x", "along the y axis", "in the x direction", "x-axis"
+            if w in ("x", "y") and not self.is_num(k - 1) and not self.is_num(k + 1):
+                before = {self.word(k - 1), self.word(k - 2)}
+                after = self.word(k + 1)
+                if before & {
+                    "along",
+                    "parallel",
+                    "following",
+                    "in",
+                    "on",
+                    "direction",
+                } or after in ("axis", "direction", "wise", "dir"):
+                    self.axes.append((k, w))
+                    t[k].used = True
+                    if after in ("axis", "direction", "wise", "dir"):
+                        t[k + 1].used = True
+                    continue
+            if w in ("sideways", "lengthwise", "crosswise") or (
+                w == "left" and self.word(k + 1) == "to" and self.word(k + 2) == "right"
+            ):
+                self.axes.append((k, "y"))
+                t[k].used = True
+                continue
+            if (
+                (w == "away"
+                and self.word(k + 1) == "from")
+                or (w == "towards"
+                and self.word(k + 1) in ("the", "robot"))
+            ):
+                self.axes.append((k, "x"))
+                t[k].used = True
+                continue
+            # dimension groups: "3 x 4", "2 by 2 by 3", "3*3"
+            if (
+                self.is_num(k)
+                and self.word(k + 1) in ("x", "by", "times", "*")
+                and self.is_num(k + 2)
+            ):
+                values = [int(t[k].value), int(t[k + 2].value)]
+                end = k + 3
+                if self.word(end) in ("x", "by", "times", "*") and self.is_num(end + 1):
+                    values.append(int(t[end + 1].value))
+                    end += 2
+                # a unit after the group applies to every number ("30 x 20 cm")
+                unit = lx.UNITS_M.get(self.word(end))
+                if unit is not None:
+                    t[end].used = True
+                    values = [max(1, round(v * unit / self.cell.cube[0])) for v in values]
+                    end += 1
+                self.dims.append((k, values))
+                for m in range(k, end):
+                    t[m].used = True
+        # measurements with units: "20 cm tall", "a 0.3 m wall", "height of 15 cm"
+        for k in range(n):
+            if t[k].used or not self.is_num(k) or self.word(k + 1) not in lx.UNITS_M:
+                continue
+            metres = t[k].value * lx.UNITS_M[self.word(k + 1)]
+            t[k].used = t[k + 1].used = True
+            fieldname = None
+            nxt = [self.word(k + 2), self.word(k + 3)]
+            prev = [self.word(k - 1), self.word(k - 2), self.word(k - 3)]
+            for w in nxt + prev:
+                if w in lx.DIMENSION_WORDS:
+                    fieldname = lx.DIMENSION_WORDS[w] + "_m"
+                    break
+                if w in (
+                    "apart",
+                    "spacing",
+                    "spaced",
+                    "gap",
+                    "gaps",
+                    "separated",
+                    "between",
+                    "space",
+                ):
+                    fieldname = "gap_m"
+                    break
+            for j in (k + 2, k + 3, k - 1, k - 2, k - 3):
+                if (
+                    0 <= j < n
+                    and t[j].text
+                    in set(lx.DIMENSION_WORDS)
+                    | {"apart", "spacing", "spaced", "gap", "gaps", "separated"}
+                    and not t[j].used
+                ):
+                    t[j].used = True
+                    break
+            self.measures.append((k, metres, fieldname))
+
+    # -- pass 2: shape nouns ---------------------------------------------------------------
+    def _ambiguous_is_shape(self, k: int) -> bool:
+        w = self.word(k)
+        prev = self.word(k - 1)
+        nxt = self.word(k + 1)
+        if w in ("block", "brick", "box", "cube"):
+            if self.is_num(k - 1) and not self.toks[k - 1].used:
+                return False  # "a 3-cube tower", "1 block"
+            if nxt in lx.SHAPE_WORDS and nxt not in lx.AMBIGUOUS_SHAPES:
+                return False  # "block tower", "brick wall": a material
+            if any(
+                d[0] == k - 1 or (self.toks[k - 1].used and self.dims and d[0] < k) for d in self.dims
+            ):
+                return True
+            if prev in lx.SIZE_WORDS or prev in (
+                "solid",
+                "single",
+                "compact",
+                "dense",
+                "filled",
+                "full",
+            ):
+                return True
+            if nxt in (
+                "of",
+                "made",
+                "built",
+                "consisting",
+                "composed",
+                "from",
+                "out",
+                "using",
+                "with",
+            ):
+                return True
+            return w != "cube"
+        if w in ("square", "squares", "rectangle"):
+            if nxt in lx.SHAPE_WORDS:
+                return False  # "square pyramid", "square enclosure"
+            return True
+        if w == "corner":
+            if (
+                nxt in lx.SHAPE_WORDS
+                or prev in lx.REGION_WORDS
+                or prev in ("the", "each", "every", "its")
+            ):
+                return False
+            return prev in ("a", "an", "one", "single") or prev in lx.SIZE_WORDS
+        if w == "plus":
+            return nxt in ("sign", "shape", "shaped", "symbol") or (
+                prev in ("a", "an") and nxt in ("", "of", "with", "made")
+            )
+        if w in ("steps",):
+            return not (
+                self.is_num(k - 1)
+                and any(
+                    lx.SHAPE_WORDS.get(x.text) not in (None, "staircase")
+                    and x.text not in lx.AMBIGUOUS_SHAPES
+                    for x in self.toks
+                )
+            )
+        if w in ("line", "lines", "string", "strip", "track", "lane"):
+            return prev in (
+                "a",
+                "an",
+                "in",
+                "one",
+                "single",
+                "straight",
+                "long",
+                "short",
+            ) or self.is_num(k - 1)
+        if w in (
+            "layer",
+            "frame",
+            "outline",
+            "boundary",
+            "pad",
+            "deck",
+            "panel",
+            "plate",
+            "sheet",
+            "field",
+        ):
+            return prev in ("a", "an", "one", "single", "flat") or prev in lx.SIZE_WORDS
+        if w in ("group", "arrangement", "formation"):
+            return prev in lx.SIZE_WORDS or prev in ("compact", "dense", "tight", "close")
+        # the rest ("well", "keep", "mass", …) need an article or a size word in front
+        return prev in ("a", "an", "one", "single") or prev in lx.SIZE_WORDS
+
+    def scan_shapes(self) -> None:
+        t = self.toks
+        for k, tok in enumerate(t):
+            if tok.used or tok.kind != "word":
+                continue
+            w = tok.text
+            shape = None
+            if w in lx.LETTER_SHAPES:
+                nxt = self.word(k + 1)
+                if nxt in lx.LETTER_SHAPE_TAILS or (
+                    self.word(k - 1) in ("a", "an", "the", "letter", "big", "small", "large")
+                    and nxt in ("", "of", "with", "made", ",", "and", "at", "on", "in", "using")
+                ):
+                    shape = lx.LETTER_SHAPES[w]
+                    if nxt in lx.LETTER_SHAPE_TAILS:
+                        t[k + 1].used = True
+            elif w == "table" and self.word(k - 1) in ("the", "on", "of"):
+                continue
+            elif w in lx.SHAPE_WORDS:
+                if w in lx.AMBIGUOUS_SHAPES or w == "cube":
+                    if not self._ambiguous_is_shape(k):
+                        continue
+                shape = lx.SHAPE_WORDS[w]
+            elif w == "cube" and self._ambiguous_is_shape(k):
+                shape = "block"
+            if shape is None:
+                continue
+            tok.used = True
+            plural = w.endswith("s") and w not in (
+                "stairs",
+                "steps",
+                "bleachers",
+                "crossroads",
+                "series",
+                "mass",
+            )
+            # noun compounds: "door frame", "brick wall", "square pyramid": the last noun heads
+            if self.hits and self.hits[-1].index == k - 1:
+                self.hits.pop()
+            self.hits.append(Hit(index=k, shape=shape, plural=plural))
+        # "hollow square/rectangle" → enclosure; "solid/filled" keep grid
+        for h in self.hits:
+            if h.shape == "grid" and self.word(h.index - 1) in ("hollow", "empty", "open"):
+                h.shape = "enclosure"
+            if h.shape == "block" and self.word(h.index - 1) in ("hollow", "empty"):
+                h.shape = "enclosure"
+        # the word "cube" as a shape ("a single cube") means a one-part tower unless sized
+        for h in self.hits:
+            if self.word(h.index) == "cube" and h.shape == "block":
+                prev = self.word(h.index - 1)
+                sized = (
+                    prev in lx.SIZE_WORDS
+                    or any(d for d in self.dims if d[0] < h.index)
+                    or self.word(h.index + 1)
+                    in (
+                        "of",
+                        "made",
+                        "built",
+                        "consisting",
+                        "composed",
+                        "from",
+                        "out",
+                        "using",
+                        "with",
+                    )
+                )
+                if not sized:
+                    h.shape = "tower"
+                    h.params["height"] = 1
+
+    # -- pass 3: segmentation --------------------------------------------------------------
+    def segment(self) -> None:
+        hits = self.hits
+        n = len(self.toks)
+        if not hits:
+            return
+        hits[0].start = 0
+        hits[-1].end = n
+        for a, b in zip(hits, hits[1:], strict=False):
+            cut = None
+            for k in range(a.index + 1, b.index):
+                if (
+                    self.word(k) in lx.SEPARATORS
+                    or self.word(k) in lx.JOIN_WORDS
+                    or self.word(k) == "with"
+                ):
+                    cut = k
+            if cut is None:
+                # no conjunction: the second noun's modifiers start after the first noun's
+                cut = b.index
+                while cut - 1 > a.index and (
+                    self.is_num(cut - 1)
+                    or self.word(cut - 1) in lx.SIZE_WORDS
+                    or self.word(cut - 1) in ("a", "an", "the")
+                ):
+                    cut -= 1
+            a.end = cut
+            b.start = cut
+
+    # -- pass 4: attributes ----------------------------------------------------------------
+    def attributes(self, h: Hit) -> None:
+        t = self.toks
+        p = h.params
+        span_range = range(h.start, h.end)
+
+        def take(k: int) -> None:
+            t[k].used = True
+
+        # dimension groups
+        for k, values in self.dims:
+            if k in span_range:
+                self._apply_dims(h, values)
+        # measurements in metres
+        for k, metres, fname in self.measures:
+            if k in span_range:
+                fname = fname or PRIMARY_M.get(h.shape, "length_m")
+                if (fname == "gap_m" and h.shape in ("bridge", "arch", "canopy")) or (fname == "width_m" and h.shape in ("arch",)):
+                    p["span"] = max(1, round(metres / self.cell.cube[0]))
+                else:
+                    p[fname] = metres
+        for k, axis in self.axes:
+            if k in span_range:
+                p["axis"] = axis
+        for k, yaw in self.yaws:
+            if k in span_range:
+                p["yaw_deg"] = yaw
+        for k, axis, value in self.coords:
+            if k in span_range:
+                p["at_" + axis] = value
+
+        # "N rows/layers of M": levels (walls, blocks…) or a grid's rows
+        for k in span_range:
+            if self.is_num(k) and not t[k].used and self.word(k + 1) in lx.LEVEL_WORDS | {"rows", "columns", "lines"} \
+                    and self.word(k + 2) == "of" and self.is_num(k + 3) and not t[k + 3].used:  # fmt: skip
+                a, b = int(t[k].value), int(t[k + 3].value)
+                if h.shape in ("grid", "pack", "row"):
+                    h.shape = "grid" if h.shape == "row" else h.shape
+                    p.setdefault("width", a)
+                    p.setdefault("length", b)
+                elif h.shape == "tower":
+                    p.setdefault("height", a * b)
+                else:
+                    p.setdefault("height", a)
+                    p.setdefault("length", b)
+                for m in range(k, k + 4):
+                    take(m)
+
+        for k in span_range:
+            if t[k].used:
+                continue
+            w = t[k].text
+            nxt, nxt2 = self.word(k + 1), self.word(k + 2)
+            prev, prev2 = self.word(k - 1), self.word(k - 2)
+            if t[k].kind == "num":
+                v = int(round(t[k].value))
+                if v != t[k].value and abs(t[k].value) < 50:
+                    self.notes.append(f"rounded {t[k].value:g} to {v}")
+                if v <= 0:
+                    raise SpecError(
+                        f"{t[k].text} is not a usable count; counts must be whole numbers ≥ 1",
+                        understood=self.understood(),
+                    )
+                # "N high/tall/long/wide", "N cubes high", "N levels", "N steps", "N spans"
+                j = k + 1
+                if self.word(j) in lx.PART_WORDS:
+                    j += 1
+                wj = self.word(j)
+                if wj in lx.DIMENSION_WORDS and (wj not in ("up", "height", "width", "length")):
+                    p.setdefault(lx.DIMENSION_WORDS[wj], v)
+                    for m in range(k, j + 1):
+                        take(m)
+                    continue
+                if (
+                    wj in lx.LEVEL_WORDS
+                    and j == k + 1
+                    and not (wj in ("row", "rows") and h.shape in ("grid", "row"))
+                ):
+                    if wj == "deep":
+                        p.setdefault("width", v)
+                    else:
+                        p.setdefault("height", v)
+                    take(k)
+                    take(j)
+                    if self.word(j + 1) in ("high", "tall"):
+                        take(j + 1)
+                    continue
+                if wj in lx.STEP_WORDS and j == k + 1:
+                    if h.shape == "staircase":
+                        p.setdefault("steps", v)
+                    else:
+                        p.setdefault("height", v)
+                    take(k)
+                    take(j)
+                    continue
+                if wj in lx.SPAN_WORDS and j == k + 1:
+                    p.setdefault(
+                        "spans"
+                        if wj.endswith("s")
+                        or (wj in ("span",)
+                        and h.shape == "bridge"
+                        and v > 1
+                        and prev not in ("of",))
+                        else "span",
+                        v,
+                    )
+                    take(k)
+                    take(j)
+                    continue
+                if wj in ("apart", "spacing", "gap", "gaps"):
+                    p["gap_m"] = v * self.cell.cube[0] if wj != "apart" else v / 100.0
+                    take(k)
+                    take(j)
+                    continue
+                if (
+                    (self.word(k + 1) in ("on", "per")
+                    and self.word(k + 2) in ("a", "each", "every"))
+                    or (self.word(k + 1) == "per"
+                    and self.word(k + 2) in ("side", "edge"))
+                ):
+                    p.setdefault("length", v)
+                    p.setdefault("width", v)
+                    take(k)
+                    continue
+                # "height of N", "length: N", "span of N", "base of N", "with N steps"
+                key = None
+                for back in (prev, prev2):
+                    if back in (
+                        "height",
+                        "tall",
+                        "high",
+                        "levels",
+                        "tiers",
+                        "layers",
+                        "storeys",
+                        "floors",
+                        "stories",
+                    ):
+                        key = "height"
+                    elif back in ("length", "long"):
+                        key = "length"
+                    elif back in ("width", "wide", "depth", "deep", "breadth"):
+                        key = "width"
+                    elif back in ("span", "spanning", "opening", "gap", "spacing", "distance"):
+                        key = "span" if h.shape in ("bridge", "arch", "canopy") else "gap"
+                    elif back in ("base", "bottom", "foot", "footprint"):
+                        key = "length"
+                    elif back in (
+                        "arm",
+                        "arms",
+                        "side",
+                        "sides",
+                        "edge",
+                        "edges",
+                        "leg",
+                        "legs",
+                        "wing",
+                        "wings",
+                    ):
+                        key = "arms"
+                    elif back in ("steps", "stairs") and h.shape == "staircase":
+                        key = "steps"
+                    if key:
+                        break
+                if key == "arms":
+                    p.setdefault("length", v)
+                    p.setdefault("width", v)
+                    take(k)
+                    continue
+                if key == "gap":
+                    p["gap_m"] = v * self.cell.cube[0] if v < 10 else v / 100.0
+                    take(k)
+                    continue
+                if key:
+                    p.setdefault(key, v)
+                    take(k)
+                    continue
+                # a number in front of a plural shape noun: how many structures
+                if (
+                    k + 1 <= h.index
+                    and all(
+                        self.word(m) in lx.SIZE_WORDS
+                        or self.word(m)
+                        in (
+                            "separate",
+                            "individual",
+                            "identical",
+                            "distinct",
+                            "similar",
+                            "small",
+                            "more",
+                            "different",
+                            "independent",
+                            "free",
+                            "standing",
+                            "freestanding",
+                        )
+                        or (self.toks[m].used
+                        and m == h.index)
+                        for m in range(k + 1, h.index + 1)
+                    )
+                    and h.plural
+                ):
+                    h.multiplicity = v
+                    take(k)
+                    continue
+                if (
+                    self.word(k + 1) in lx.PART_WORDS
+                    or prev in ("of", "with", "using", "from", "has", "have")
+                    or k + 1 == h.index
+                ):
+                    p.setdefault("_count", v)
+                    take(k)
+                    if self.word(k + 1) in lx.PART_WORDS:
+                        take(k + 1)
+                    continue
+                p.setdefault("_loose", []).append(v)
+                take(k)
+                continue
+            # words
+            if w in QUANTITY_WORDS and (
+                nxt in ("of",)
+                or nxt in lx.PART_WORDS
+                or nxt in lx.SHAPE_WORDS
+                or k + 1 == h.index
+                or nxt in lx.SIZE_WORDS
+            ):
+                q = QUANTITY_WORDS[w]
+                if (
+                    k < h.index
+                    and h.plural
+                    and (
+                        nxt in lx.SHAPE_WORDS
+                        or (nxt == "of" and self.word(k + 2) in lx.SHAPE_WORDS)
+                        or all(
+                            self.word(m) in lx.SIZE_WORDS
+                            or self.word(m) in ("of", "separate", "individual")
+                            for m in range(k + 1, h.index)
+                        )
+                    )
+                ):
+                    h.multiplicity = q
+                else:
+                    p.setdefault("_count", q)
+                take(k)
+                continue
+            if w in lx.SIZE_WORDS:
+                dim, size = lx.SIZE_WORDS[w]
+                if w in ("high", "tall", "long", "wide", "deep") and self.is_num(k - 1):
+                    continue
+                p.setdefault("_sizes", []).append((dim, size))
+                take(k)
+                continue
+            if w in lx.REGION_WORDS:
+                region = lx.REGION_WORDS[w]
+                if (
+                    w in ("far", "close", "near")
+                    and nxt in ("from", "to")
+                    and self.word(k + 2) in ("the", "robot")
+                ):
+                    region = "back" if w == "far" else "front"
+                if (
+                    (w == "left"
+                    and prev == "to"
+                    and prev2 == "right")
+                    or (w == "right"
+                    and nxt == "to")
+                ):
+                    continue
+                p.setdefault("_regions", []).append(region)
+                take(k)
+                continue
+            if w == "corner" and prev == "the":
+                p.setdefault("_regions", []).append("corner")
+                take(k)
+                continue
+            if w in (
+                "apart",
+                "spaced",
+                "separated",
+                "gaps",
+                "gapped",
+                "spread",
+                "scattered",
+                "distributed",
+                "sparse",
+                "sparsely",
+                "loosely",
+                "gap",
+            ):
+                p.setdefault("gap_m", self.cell.cube[0])
+                take(k)
+                continue
+            if w in ("d", "dimensional", "dimension") and self.is_num(k - 1):
+                p["dims"] = 3 if t[k - 1].value >= 3 else 2
+                take(k)
+                take(k - 1)
+                continue
+            if h.shape == "pyramid" and w in (
+                "square",
+                "stepped",
+                "ziggurat",
+                "solid",
+                "four",
+                "sided",
+                "volumetric",
+                "full",
+                "egyptian",
+                "mayan",
+                "aztec",
+                "pyramidal",
+            ):
+                p["dims"] = 3
+                take(k)
+                continue
+            if h.shape == "pyramid" and w in ("flat", "triangular", "planar", "triangle", "2d"):
+                p["dims"] = 2
+                take(k)
+                continue
+            if w in lx.BEAM_WORDS:
+                self.beam = True
+                take(k)
+        if self.word(h.index) in ("ziggurat", "ziggurats"):
+            p.setdefault("dims", 3)
+
+    def _apply_dims(self, h: Hit, values: list[int]) -> None:
+        p = h.params
+        if h.shape == "pyramid":
+            p["length"] = values[0]
+            if len(values) >= 2 and values[1] == values[0]:
+                p["dims"] = 3
+            if len(values) == 3:
+                p["height"] = values[2]
+            return
+        if h.shape == "wall":
+            p["length"] = values[0]
+            if len(values) == 2:
+                p["height"] = values[1]
+            else:
+                p["width"], p["height"] = values[1], values[2]
+                h.shape = "block" if values[1] > 1 else "wall"
+            return
+        if h.shape in ("tower", "row") and len(values) >= 2:
+            h.shape = "block" if len(values) == 3 or h.shape == "tower" else "grid"
+        if h.shape in ("pack",) and len(values) >= 2:
+            h.shape = "block" if len(values) == 3 else "grid"
+        if h.shape == "grid" and len(values) == 3:
+            h.shape = "block"
+        if h.shape == "block" and len(values) == 2:
+            values = [*values, 1] if "height" not in p else values
+        keys = ["length", "width", "height"]
+        for key, v in zip(keys, values, strict=False):
+            p[key] = v
+
+    # -- compounds and defaults ----------------------------------------------------------------
+    def merge_compounds(self) -> None:
+        hits = self.hits
+        merged: list[Hit] = []
+        k = 0
+        while k < len(hits):
+            h = hits[k]
+            nxt = hits[k + 1] if k + 1 < len(hits) else None
+            between = {self.word(m) for m in range(h.index + 1, nxt.index)} if nxt else set()
+            # "two towers joined by a bridge", "towers connected with a beam"
+            if nxt and h.shape == "tower" and nxt.shape == "bridge" and between & lx.JOIN_WORDS | {"with", "by"} \
+                    and (h.plural or h.multiplicity > 1) and between & (lx.JOIN_WORDS | {"by"}):  # fmt: skip
+                nxt.params = {
+                    **h.params,
+                    **{k2: v for k2, v in nxt.params.items() if k2 not in h.params},
+                }
+                nxt.params.setdefault("spans", max(1, h.multiplicity - 1))
+                if "height" not in h.params and "_count" in h.params:
+                    nxt.params["height"] = nxt.params.pop("_count")
+                nxt.multiplicity = 1
+                nxt.start = h.start
+                hits[k + 1] = nxt
+                k += 1
+                continue
+            # "a bridge between two towers of 3", "a gate with pillars 3 high", "table with legs"
+            if nxt and h.shape in PILLARED and nxt.shape == "tower":
+                for key in ("height", "height_m", "_count", "_loose"):
+                    if key in nxt.params:
+                        value = nxt.params[key]
+                        if key == "_loose":
+                            value = value[0]
+                        if h.shape == "castle":
+                            h.params["_tower_height"] = value
+                        else:
+                            h.params.setdefault(
+                                "height_m" if key == "height_m" else "height", value
+                            )
+                        break
+                for key in ("_sizes",):
+                    if key in nxt.params and h.shape == "castle":
+                        h.params["_tower_sizes"] = nxt.params[key]
+                if h.shape in ("bridge",) and nxt.multiplicity > 2:
+                    h.params.setdefault("spans", nxt.multiplicity - 1)
+                merged.append(h)
+                k += 2
+                continue
+            merged.append(h)
+            k += 1
+        self.hits = merged
+
+    def build(self, h: Hit) -> list[StructureSpec]:
+        p = dict(h.params)
+        shape = h.shape
+        sizes = p.pop("_sizes", [])
+        regions = p.pop("_regions", [])
+        count = p.pop("_count", None)
+        loose = p.pop("_loose", [])
+        tower_height = p.pop("_tower_height", None)
+        p.pop("_tower_sizes", None)
+        if count is not None:
+            key = PRIMARY[shape]
+            if shape == "staircase" and "steps" not in p and count > 6:
+                # "a staircase of 10 cubes": the steps whose triangle holds that many
+                steps = int(((8 * count + 1) ** 0.5 - 1) / 2)
+                p["steps"] = max(1, steps)
+                self.notes.append(f"{count} parts make a staircase of {p['steps']} steps")
+            elif shape == "pyramid" and "length" not in p and count > 4:
+                p["length"] = _pyramid_base(count, p.get("dims") == 3)
+                self.notes.append(f"{count} parts read as a pyramid with a base of {p['length']}")
+            elif shape in ("wall",) and "length" not in p:
+                p["count"] = count
+            elif shape in (
+                "grid",
+                "block",
+                "pack",
+                "row",
+                "tower",
+                "enclosure",
+                "castle",
+                "l_shape",
+                "u_shape",
+                "t_shape",
+                "cross",
+            ):
+                if shape in ("enclosure", "castle") and "length" not in p:
+                    side = max(3, (count + 4) // 4)
+                    p["length"] = p["width"] = side
+                    self.notes.append(f"{count} parts read as an enclosure {side} parts on a side")
+                elif shape in ("l_shape",) and "length" not in p:
+                    p["length"] = p["width"] = max(2, (count + 1) // 2)
+                elif shape in ("u_shape",) and "length" not in p:
+                    p["length"] = max(3, count // 3)
+                    p["width"] = max(2, (count - p["length"]) // 2 + 1)
+                elif shape in ("t_shape", "cross") and "length" not in p:
+                    p["length"] = max(3, (count + 1) // 2 | 1)
+                    p["width"] = max(2, count - p["length"] + 1)
+                elif shape == "block" and "length" not in p:
+                    shape = "pack"
+                    p["count"] = count
+                elif shape == "tower" and "height" not in p:
+                    p["height"] = count
+                elif shape == "row" and "length" not in p:
+                    p["length"] = count
+                elif shape in ("grid", "pack") and "count" not in p and "length" not in p:
+                    p["count"] = count
+            elif key not in p:
+                p[key] = count
+        for v in loose:
+            key = PRIMARY[shape]
+            if key == "count" and ("length" in p or "count" in p):
+                continue
+            if key not in p:
+                p[key] = v
+        for dim, size in sizes:
+            index = "SML".index(size)
+            table = SIZE_TABLE.get(shape, {})
+            for key, values in table.items():
+                if (
+                    dim == "all"
+                    or key == dim
+                    or (dim == "length" and key in ("steps", "count", "spans"))
+                    or (dim == "height" and key == "steps")
+                ):
+                    if key not in p and f"{key}_m" not in p:
+                        p[key] = values[index]
+        if shape == "castle" and tower_height is not None:
+            p["count"] = max(1, int(tower_height) - int(p.get("height", 1)))
+        if shape in ("grid", "block", "enclosure", "castle") and "width" in p and "length" not in p:
+            p["length"] = p["width"]  # one side given: make it square
+        region = _region(regions)
+        if region:
+            p["region"] = region
+        if self.beam and shape in ("tower", "row", "grid", "wall"):
+            p["part"] = "beam"
+        kwargs = {k: v for k, v in p.items() if k in StructureSpec.model_fields}
+        try:
+            spec = StructureSpec(shape=shape, **kwargs)  # type: ignore[arg-type]
+        except ValidationError as exc:
+            first = exc.errors()[0]
+            raise SpecError(
+                f"{shape}: {'.'.join(str(x) for x in first['loc'])} {first['msg']}",
+                understood=self.understood(),
+            ) from None
+        copies = max(1, h.multiplicity)
+        if copies > 20:
+            raise SpecError(
+                f"{copies} separate {shape}s is more than 20", understood=self.understood()
+            )
+        return [spec] * copies
+
+    def understood(self) -> dict[str, object]:
+        out: dict[str, object] = {}
+        if self.hits:
+            out["structures"] = [h.shape for h in self.hits]
+        nums = [t.value for t in self.toks if t.kind == "num"]
+        if nums:
+            out["numbers"] = [int(v) if v == int(v) else v for v in nums]
+        if self.coords:
+            out["coordinates"] = {axis: v for _, axis, v in self.coords}
+        parts = [t.text for t in self.toks if t.text in lx.PART_WORDS]
+        if parts:
+            out["parts"] = parts
+        regions = [lx.REGION_WORDS[t.text] for t in self.toks if t.text in lx.REGION_WORDS]
+        if regions:
+            out["regions"] = regions
+        return out
+
+    def implied(self) -> Hit | None:
+        """No shape noun: a verb ("stack five cubes") or a bare count ("place 4 cubes")."""
+        for k, t in enumerate(self.toks):
+            if t.text in lx.VERB_SHAPES and not t.used:
+                t.used = True
+                return Hit(
+                    index=k, shape=lx.VERB_SHAPES[t.text], plural=False, start=0, end=len(self.toks)
+                )
+        has_part = any(t.text in lx.PART_WORDS for t in self.toks)
+        has_num = any(t.kind == "num" or t.text in QUANTITY_WORDS for t in self.toks)
+        if has_part and (has_num or self.coords):
+            self.notes.append("no structure named: placed the parts in a row")
+            hit = Hit(index=len(self.toks), shape="row", plural=False, start=0, end=len(self.toks))
+            for t in self.toks:
+                if (
+                    t.kind == "num"
+                    and not t.used
+                    and any(x.text in ("apart", "separate", "separately") for x in self.toks)
+                ):
+                    break
+            return hit
+        return None
+
+    def parse(self) -> Spec:
+        if not self.toks:
+            raise SpecError("the command is empty; say what to build, e.g. 'a 3-cube tower'")
+        self.scan_geometry()
+        self.scan_shapes()
+        if not self.hits:
+            hit = self.implied()
+            if hit is None:
+                known = ", ".join(sorted({s for s in lx.SHAPE_WORDS.values()}))
+                raise SpecError(
+                    "no structure recognised in the command; name one of: "
+                    + known
+                    + " (e.g. 'a tower of 4 cubes', 'a 3 by 3 grid on the left')",
+                    understood=self.understood(),
+                )
+            self.hits = [hit]
+        self.segment()
+        for h in self.hits:
+            self.attributes(h)
+        self.merge_compounds()
+        # Coordinates and regions that fell outside every segment go to the only structure.
+        structures: list[StructureSpec] = []
+        for h in self.hits:
+            structures.extend(self.build(h))
+        total = len(structures)
+        if total > 50:
+            raise SpecError(f"{total} structures is more than 50", understood=self.understood())
+        return Spec(structures=tuple(structures), notes=tuple(dict.fromkeys(self.notes)))
+
+
+def _pyramid_base(count: int, three_d: bool) -> int:
+    base = 1
+    while True:
+        total = sum((base - k) ** (2 if three_d else 1) for k in range(base))
+        if total >= count:
+            return base
+        base += 1
+
+
+def _region(regions: list[str]) -> str | None:
+    if not regions:
+        return None
+    names = set(regions)
+    depth = next((r for r in ("front", "back") if r in names), None)
+    side = next((r for r in ("left", "right") if r in names), None)
+    if depth and side:
+        return f"{depth} {side}"
+    if "corner" in names:
+        return f"{depth or 'back'} {side or 'left'}"
+    return depth or side or ("centre" if "centre" in names else None)
+
+
+def parse_command(command: str, cell: CellConfig | None = None) -> Spec:
+    """The rule-based Specifier: a command → `Spec`, or `SpecError` saying what it understood."""
+    cell = cell or CellConfig()
+    if not isinstance(command, str):
+        raise SpecError("the command must be text")
+    if len(command) > cell.limits.max_command_chars:
+        raise LimitError(
+            f"the command has {len(command)} characters; the limit is "
+            f"{cell.limits.max_command_chars} (limits.max_command_chars)",
+            field="command",
+        )
+    if not command.strip():
+        raise SpecError("the command is empty; say what to build, e.g. 'a 3-cube tower'")
+    return _Parser(command, cell).parse()
