@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-from rich.console import Console, Group
+from rich.console import Console, Group, RenderableType
 from rich.panel import Panel
 from rich.table import Table
 from rich.text import Text
@@ -78,7 +78,7 @@ def plan_panel(result: object, cell: CellConfig) -> Panel:
 
     assert isinstance(result, PlanResult)
     colour = {"success": "green", "failure": "red", "error": "red"}[result.status]
-    lines: list[object] = [Text.assemble(("command  ", "bold"), result.command)]
+    lines: list[RenderableType] = [Text.assemble(("command  ", "bold"), result.command)]
     if result.spec is not None:
         lines.append(Text.assemble(("spec     ", "bold"), result.spec.describe()))
         for note in result.spec.notes:

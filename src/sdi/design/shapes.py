@@ -132,7 +132,7 @@ def pyramid(sp: StructureSpec, z: Sizes) -> list[Box]:
             parameter="height",
         )
     three_d = sp.dims == 3
-    out = []
+    out: list[Box] = []
     for k in range(levels):
         n = base - k
         off = k * z.s / 2
@@ -185,7 +185,7 @@ def bridge(sp: StructureSpec, z: Sizes) -> list[Box]:
         )
     pitch = (span + 1) * z.s
     top = height * z.h
-    out = []
+    out: list[Box] = []
     for j in range(width):
         v = j * z.s
         for p in range(spans + 1):

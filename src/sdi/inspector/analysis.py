@@ -53,13 +53,20 @@ class Analysis:
     def preference(self) -> np.ndarray:
         """Assembly preference rank per part: lower bottom first, then x, y, then id."""
         layout = self.layout
-        bottoms = layout.centres[:, 2] - layout.half_extents[:, 2]
-        keys = [
-            (round(float(bottoms[i]), 4), round(float(c[0]), 4), round(float(c[1]), 4),
-             natural_key(p.id))
-            for i, (p, c) in enumerate(zip(layout.objects, layout.centres, strict=True))
-        ]  # fmt: skip
-        order = sorted(range(len(keys)), key=keys.__getitem__)
-        rank = np.empty(len(keys), dtype=np.intp)
-        rank[order] = np.arange(len(keys))
+        n = len(layout)
+        c = np.round(layout.centres, 4)
+        bottom = np.round(layout.centres[:, 2] - layout.half_extents[:, 2], 4)
+        order = np.lexsort((c[:, 1], c[:, 0], bottom))
+        key = np.stack([bottom[order], c[order, 0], c[order, 1]], axis=1)
+        tied = np.nonzero(np.all(key[1:] == key[:-1], axis=1))[0]
+        if tied.size:  # parts at the same place (only in colliding layouts): order by id
+            order = np.array(
+                sorted(
+                    range(n),
+                    key=lambda i: (bottom[i], c[i, 0], c[i, 1], natural_key(layout.objects[i].id)),
+                ),
+                dtype=np.intp,
+            )
+        rank = np.empty(n, dtype=np.intp)
+        rank[order] = np.arange(n)
         return rank

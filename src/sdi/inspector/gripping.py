@@ -127,6 +127,8 @@ class GripModel:
         pairs = cKDTree(c[:, :2]).query_pairs(radius, p=np.inf, output_type="ndarray")
         pairs = pairs.astype(np.intp).reshape(-1, 2)
         both = np.concatenate([pairs, pairs[:, ::-1]])  # (part i, other j)
+        floor = np.min([b[:, :, 4].min(axis=1) for b in boxes], axis=0)  # lowest keep-out z
+        both = both[c[both[:, 1], 2] + h[both[:, 1], 2] > floor[both[:, 0]] + self.eps]
         i, j = both[:, 0], both[:, 1]
         j_lo, j_hi = c[j] - h[j], c[j] + h[j]
         rows = []
@@ -138,8 +140,7 @@ class GripModel:
                     bi[:, :, 2 * d], j_lo[:, None, d]
                 )
                 hit &= overlap > self.eps
-            hit = hit.any(axis=1)
-            k = np.nonzero(hit)[0]
+            k = np.nonzero(hit.any(axis=1))[0]
             rows.append(np.stack([i[k], np.full(k.size, o), j[k]], axis=1))
         return np.concatenate(rows).astype(np.intp).reshape(-1, 3)
 

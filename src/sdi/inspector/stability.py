@@ -94,22 +94,28 @@ def find_toppling(graph: ContactGraph, margin: float) -> list[Toppling]:
         weight = np.bincount(label[idx], weights=mass[idx])
         com_x = np.bincount(label[idx], weights=mass[idx] * c[idx, 0]) / weight
         com_y = np.bincount(label[idx], weights=mass[idx] * c[idx, 1]) / weight
+        # Fast path, vectorised: the centre of mass lies well inside one of its patches.
+        cx, cy = com_x[cross_label], com_y[cross_label]
+        inside_one = (
+            (cross_patch[:, 0] + margin <= cx)
+            & (cx <= cross_patch[:, 1] - margin)
+            & (cross_patch[:, 2] + margin <= cy)
+            & (cy <= cross_patch[:, 3] - margin)
+        )
+        settled = np.zeros(weight.size, dtype=bool)
+        settled[cross_label[inside_one]] = True
+        held = np.zeros(weight.size, dtype=bool)
+        held[cross_label] = True  # components with nothing under them go to the support check
+        fresh = fresh[held[fresh] & ~settled[fresh]]
+        if fresh.size == 0:
+            continue
         order = np.argsort(cross_label, kind="stable")
         cross_label, cross_patch = cross_label[order], cross_patch[order]
         starts = np.searchsorted(cross_label, fresh, side="left")
         ends = np.searchsorted(cross_label, fresh, side="right")
         for comp, s, t in zip(fresh.tolist(), starts.tolist(), ends.tolist(), strict=True):
-            if s == t:
-                continue  # nothing holds it up: reported by the support check instead
             com = np.array([com_x[comp], com_y[comp]])
-            sub = cross_patch[s:t]
-            # Fast path: the centre of mass is well inside one patch.
-            if np.any(
-                (sub[:, 0] + margin <= com[0]) & (com[0] <= sub[:, 1] - margin)
-                & (sub[:, 2] + margin <= com[1]) & (com[1] <= sub[:, 3] - margin)
-            ):  # fmt: skip
-                continue
-            outside, fix = _hull_check(com, sub, margin)
+            outside, fix = _hull_check(com, cross_patch[s:t], margin)
             if outside <= -margin + 1e-12:
                 continue
             members = np.nonzero(label == comp)[0]

@@ -68,7 +68,11 @@ class Layout(BaseModel):
         """AABB half extents, metres, shape (N, 3)."""
         if not self.objects:
             return np.zeros((0, 3))
-        return np.array([part.half_extents for part in self.objects], dtype=float)
+        half = 0.5 * np.array([part.size for part in self.objects], dtype=float)
+        for i, part in enumerate(self.objects):
+            if part.orientation != (1.0, 0.0, 0.0, 0.0):
+                half[i] = part.half_extents
+        return half
 
     @cached_property
     def volumes(self) -> np.ndarray:

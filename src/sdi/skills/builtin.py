@@ -254,7 +254,7 @@ def _generator(shape: str, cell: CellConfig) -> Skill[Any]:
     )
 
     def run(args: BaseModel) -> SkillResult:
-        spec = StructureSpec(shape=shape, **args.model_dump(exclude_unset=True))  # type: ignore[arg-type]
+        spec = StructureSpec(shape=shape, **args.model_dump(exclude_unset=True))
         return _checked(compose(Spec(structures=(spec,)), cell), cell)
 
     return Skill(

@@ -68,6 +68,7 @@ PRIMARY_M = {
 }
 # Shapes that hold pillars: a tower-like noun after them ("with legs 3 high") is part of them.
 PILLARED = {"bridge", "arch", "canopy", "castle"}
+LETTER_HEADS = {"l_shape", "u_shape", "t_shape", "cross"}
 NUMERIC_CATEGORIES = {"height", "length", "width", "count", "steps", "span", "spans"}
 
 
@@ -98,13 +99,13 @@ def tokenize(command: str) -> list[Tok]:
         text = text.replace(a, b)
     raw = words_to_numbers(_TOKEN.findall(text))
     toks: list[Tok] = []
-    for t in raw:
-        if t[0].isdigit() or (t[0] == "." and len(t) > 1):
-            toks.append(Tok(t, "num", float(t)))
-        elif t.isalpha():
-            toks.append(Tok(t, "word"))
+    for word in raw:
+        if word[0].isdigit() or (word[0] == "." and len(word) > 1):
+            toks.append(Tok(word, "num", float(word)))
+        elif word.isalpha():
+            toks.append(Tok(word, "word"))
         else:
-            toks.append(Tok(t, "sym"))
+            toks.append(Tok(word, "sym"))
     # Signs: "- 0.1" after "=", ":", "(", "," or at the start is a negative number.
     out: list[Tok] = []
     for k, t in enumerate(toks):
@@ -371,15 +372,11 @@ class _Parser:
             return nxt in ("sign", "shape", "shaped", "symbol") or (
                 prev in ("a", "an") and nxt in ("", "of", "with", "made")
             )
-        if w in ("steps",):
-            return not (
-                self.is_num(k - 1)
-                and any(
-                    lx.SHAPE_WORDS.get(x.text) not in (None, "staircase")
-                    and x.text not in lx.AMBIGUOUS_SHAPES
-                    for x in self.toks
-                )
+        if w == "steps":
+            others = any(
+                x.text in lx.SHAPE_WORDS and x.text not in lx.AMBIGUOUS_SHAPES for x in self.toks
             )
+            return not (self.is_num(k - 1) and others)
         if w in ("line", "lines", "string", "strip", "track", "lane"):
             return prev in (
                 "a",
@@ -908,6 +905,19 @@ class _Parser:
                 merged.append(h)
                 k += 2
                 continue
+            # "a podium with four steps", "a U shaped wall": one structure named twice
+            if (
+                nxt
+                and (nxt.shape == h.shape or h.shape in LETTER_HEADS and nxt.shape in ("wall", "row"))
+                and not between & (lx.SEPARATORS | {"next", "beside"})
+                and not nxt.plural
+            ):
+                for key, value in nxt.params.items():
+                    h.params.setdefault(key, value)
+                h.end = nxt.end
+                merged.append(h)
+                k += 2
+                continue
             merged.append(h)
             k += 1
         self.hits = merged
@@ -978,6 +988,13 @@ class _Parser:
         for dim, size in sizes:
             index = "SML".index(size)
             table = SIZE_TABLE.get(shape, {})
+            related = {
+                "length": {"length", "steps", "count", "spans"},
+                "height": {"height", "steps"},
+                "width": {"width"},
+            }.get(dim, set())
+            if dim != "all" and not related & set(table):
+                dim = "all"  # "a short row", "a long tower": the size word applies overall
             for key, values in table.items():
                 if (
                     dim == "all"
@@ -998,7 +1015,7 @@ class _Parser:
             p["part"] = "beam"
         kwargs = {k: v for k, v in p.items() if k in StructureSpec.model_fields}
         try:
-            spec = StructureSpec(shape=shape, **kwargs)  # type: ignore[arg-type]
+            spec = StructureSpec(shape=shape, **kwargs)
         except ValidationError as exc:
             first = exc.errors()[0]
             raise SpecError(
