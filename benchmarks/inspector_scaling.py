@@ -41,7 +41,9 @@ def field_of_columns(n: int) -> Layout:
     for k in range(n):
         col, level = divmod(k, LEVELS)
         i, j = divmod(col, nx)
-        parts.append(Part(id=f"c{k}", position=(0.1 + 0.05 * i, 0.1 + 0.05 * j, 0.025 + 0.05 * level)))
+        parts.append(
+            Part(id=f"c{k}", position=(0.1 + 0.05 * i, 0.1 + 0.05 * j, 0.025 + 0.05 * level))
+        )
     return Layout(objects=tuple(parts))
 
 
@@ -84,10 +86,11 @@ def main() -> int:
         graph = Analysis(layout, cell).graph
         ours_pairs = (int(graph.in_contact.sum()), int(graph.colliding.sum()))
         assert ours_pairs == naive_pairs(layout, eps), "spatial index disagrees with all pairs"
-        t_verify = best(lambda: verify(layout, cell))
-        t_sequence = best(lambda: sequence(Analysis(layout, cell)))
-        t_pairs = best(lambda: Analysis(layout, cell).graph.colliding)
-        t_naive = best(lambda: naive_pairs(layout, eps), repeats=1 if n >= 10_000 else REPEATS)
+        t_verify = best(lambda lay=layout: verify(lay, cell))
+        t_sequence = best(lambda lay=layout: sequence(Analysis(lay, cell)))
+        t_pairs = best(lambda lay=layout: Analysis(lay, cell).graph.colliding)
+        repeats = 1 if n >= 10_000 else REPEATS
+        t_naive = best(lambda lay=layout: naive_pairs(lay, eps), repeats=repeats)
         rows.append(
             {
                 "parts": n,

@@ -35,7 +35,9 @@ def timed(fn) -> float:
 def main() -> int:
     cell = CellConfig()
     plan("warm up the imports", cell)
-    tower = Layout(objects=tuple(Part(id=f"c{k}", position=(0.4, 0.3, 0.025 + 0.05 * k)) for k in range(3)))
+    tower = Layout(
+        objects=tuple(Part(id=f"c{k}", position=(0.4, 0.3, 0.025 + 0.05 * k)) for k in range(3))
+    )
     reference = min(timed(lambda: verify(tower, cell)) for _ in range(20))
     per_command = []
     for command in SUITE:

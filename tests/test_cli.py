@@ -15,7 +15,11 @@ SDI = [sys.executable, "-m", "sdi.cli"]
 
 def run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
-        [*SDI, *args], capture_output=True, text=True, timeout=120, env={**os.environ, **(env or {})}
+        [*SDI, *args],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env={**os.environ, **(env or {})},
     )
 
 
@@ -87,13 +91,30 @@ GOOD = {"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "size": [0.05, 0.
         ("{not json", "not valid JSON"),
         ('{"objects": [{"id": "a", "position": [NaN, 0.3, 0.025]}]}', "NaN"),
         ('{"objects": [{"id": "a", "position": [0.4, 0.3, Infinity]}]}', "Infinity"),
-        ('{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "size": [0, 0.05, 0.05]}]}', "objects[0].size"),
-        ('{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "size": [-1, 0.05, 0.05]}]}', "> 0"),
-        ('{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025]}, {"id": "a", "position": [0.5, 0.3, 0.025]}]}', "duplicate part id 'a'"),
-        ('{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "colour": "red"}]}', "objects[0].colour"),
-        ('{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "orientation": [1, 1, 0, 0]}]}', "norm"),
+        (
+            '{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "size": [0, 0.05, 0.05]}]}',
+            "objects[0].size",
+        ),
+        (
+            '{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "size": [-1, 0.05, 0.05]}]}',
+            "> 0",
+        ),
+        (
+            '{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025]}, '
+            '{"id": "a", "position": [0.5, 0.3, 0.025]}]}',
+            "duplicate part id 'a'",
+        ),
+        (
+            '{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], "colour": "red"}]}',
+            "objects[0].colour",
+        ),
+        (
+            '{"objects": [{"id": "a", "position": [0.4, 0.3, 0.025], '
+            '"orientation": [1, 1, 0, 0]}]}',
+            "norm",
+        ),
         ('{"objects": {}}', "objects"),
-        ('[1, 2, 3]', "JSON object"),
+        ("[1, 2, 3]", "JSON object"),
     ],
 )
 @pytest.mark.parametrize("subcommand", ["verify", "sequence"])

@@ -18,7 +18,11 @@ def build(shape: str, **kw):
 
 @pytest.mark.parametrize(
     ("shape", "kw", "z_max"),
-    [("tower", {"height": 6}, 0.15), ("staircase", {"steps": 5}, 0.10), ("wall", {"length": 4, "height": 4}, 0.1)],
+    [
+        ("tower", {"height": 6}, 0.15),
+        ("staircase", {"steps": 5}, 0.10),
+        ("wall", {"length": 4, "height": 4}, 0.1),
+    ],
 )
 def test_flatten_lowers_keeps_parts_and_verifies(shape, kw, z_max):
     layout = build(shape, **kw)
@@ -75,6 +79,8 @@ def test_region_half_space_and_box():
 
     r = Region(normal=(1.0, 1.0, 0.0), offset=0.7)
     assert r.blocks(np.array([[0.3, 0.3, 0.0]]), np.array([[0.35, 0.35, 0.05]])).tolist() == [False]
-    assert r.blocks(np.array([[0.36, 0.33, 0.0]]), np.array([[0.41, 0.38, 0.05]])).tolist() == [True]
+    assert r.blocks(np.array([[0.36, 0.33, 0.0]]), np.array([[0.41, 0.38, 0.05]])).tolist() == [
+        True
+    ]
     with pytest.raises(ValueError):
         Region(normal=(1.0, 0.0, 0.0))

@@ -85,7 +85,9 @@ def test_granular_checks_only_report_their_constraint(registry):
     ws = registry.dispatch("check_workspace", {"layout": layout})
     col = registry.dispatch("check_collision", {"layout": layout})
     grav = registry.dispatch("check_gravity", {"layout": layout})
-    assert ws.status == "failure" and {v["constraint"] for v in ws.data["violations"]} == {"workspace"}
+    assert ws.status == "failure" and {v["constraint"] for v in ws.data["violations"]} == {
+        "workspace"
+    }
     assert col.status == "success"
     assert grav.status == "failure"
     assert {v["constraint"] for v in grav.data["violations"]} <= {"contact", "support", "stability"}
@@ -105,7 +107,10 @@ def test_recovery_skills(registry):
     layout = _tower(registry, height=6)
     flat = registry.dispatch("flatten", {"layout": layout, "z_max": 0.15})
     assert flat.status == "success", flat.errors
-    assert max(o["position"][2] + o["size"][2] / 2 for o in flat.data["layout"]["objects"]) <= 0.15 + 1e-9
+    assert (
+        max(o["position"][2] + o["size"][2] / 2 for o in flat.data["layout"]["objects"])
+        <= 0.15 + 1e-9
+    )
     moved = registry.dispatch("shift", {"layout": layout, "blocked": [{"x_max": 0.5}]})
     assert moved.status == "success", moved.errors
     assert min(o["position"][0] - 0.025 for o in moved.data["layout"]["objects"]) >= 0.5 - 1e-9

@@ -109,7 +109,10 @@ def test_multiplicity_and_compounds():
     joined = one("two towers of 3 cubes joined by a bridge")
     assert joined.shape == "bridge" and joined.height == 3
     spec = parse_command("a tower of 4 cubes on the left and a staircase with 3 steps on the right")
-    assert [(s.shape, s.region) for s in spec.structures] == [("tower", "left"), ("staircase", "right")]
+    assert [(s.shape, s.region) for s in spec.structures] == [
+        ("tower", "left"),
+        ("staircase", "right"),
+    ]
     assert spec.structures[0].height == 4 and spec.structures[1].steps == 3
     spec = parse_command("a tower next to a wall")
     assert [s.shape for s in spec.structures] == ["tower", "wall"]
@@ -118,7 +121,9 @@ def test_multiplicity_and_compounds():
 def test_material_words_are_not_structures():
     assert [s.shape for s in parse_command("a brick wall").structures] == ["wall"]
     assert [s.shape for s in parse_command("a tower of blocks").structures] == ["tower"]
-    assert [s.shape for s in parse_command("a 4 by 5 grid in the back left corner").structures] == ["grid"]
+    assert [s.shape for s in parse_command("a 4 by 5 grid in the back left corner").structures] == [
+        "grid"
+    ]
 
 
 @pytest.mark.parametrize("command", ["", "   ", "hello there", "asdfgh qwerty", "build something"])

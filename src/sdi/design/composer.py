@@ -16,6 +16,7 @@ import numpy as np
 
 from sdi.design.shapes import FAMILIES, MAX_PARTS_PER_STRUCTURE, Box, Sizes
 from sdi.errors import InfeasibleError, InputError, LimitError
+from sdi.inspector.contacts import ContactGraph
 from sdi.inspector.verifier import Report, verify
 from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
@@ -143,25 +144,76 @@ def _clear(
     return all(np.any(np.abs(centre - c) >= half + h + gap - 1e-9) for c, h in taken)
 
 
+def _search(
+    want: np.ndarray,
+    half: np.ndarray,
+    taken: list[tuple[np.ndarray, np.ndarray]],
+    gap: float,
+    cell: CellConfig,
+    axes: tuple[int, ...],
+) -> np.ndarray | None:
+    """The free spot nearest `want`, moving only along `axes` (half-part steps)."""
+    if _inside(want, half, cell) and _clear(want, half, taken, gap):
+        return want
+    if not axes:
+        return None
+    step = cell.cube[0] / 2
+    reach = int(max(cell.workspace.x_max - cell.workspace.x_min,
+                    cell.workspace.y_max - cell.workspace.y_min) / step) + 1  # fmt: skip
+    for r in range(1, reach + 1):
+        ring = []
+        for i in range(-r, r + 1) if 0 in axes else (0,):
+            for j in range(-r, r + 1) if 1 in axes else (0,):
+                if max(abs(i), abs(j)) == r:
+                    ring.append(want + step * np.array([i, j]))
+        ring.sort(key=lambda c: (float(np.linalg.norm(c - want)), c[0], c[1]))
+        for c in ring:
+            if _inside(c, half, cell) and _clear(c, half, taken, gap):
+                return c
+    return None
+
+
+def _clamp(c: np.ndarray, half: np.ndarray, cell: CellConfig, axes: tuple[int, ...]) -> np.ndarray:
+    ws = cell.workspace
+    c = c.copy()
+    for d in axes:
+        lo = (ws.x_min, ws.y_min)[d] + half[d]
+        hi = (ws.x_max, ws.y_max)[d] - half[d]
+        if lo <= hi:
+            c[d] = min(max(c[d], lo), hi)
+    return c
+
+
 def _place_all(placed: list[_Placed], cell: CellConfig) -> list[np.ndarray]:
+    """Footprint centres: stated coordinates exactly, regions and the rest nearest free spot.
+
+    Stated coordinates are kept (an unstated axis may slide to avoid another structure); a
+    named region is a preference the structure is pulled into and moved from to stay clear;
+    structures with neither go side by side along y around the anchor.
+    """
     anchor = np.array(cell.design.anchor)
     gap = cell.design.structure_gap
     ws = cell.workspace
     centres: list[np.ndarray | None] = [None] * len(placed)
     taken: list[tuple[np.ndarray, np.ndarray]] = []
-    # Stated positions first, exactly where asked.
+    owners: list[int] = []
+
+    def put(k: int, c: np.ndarray) -> None:
+        centres[k] = c
+        taken.append((c, placed[k].half))
+        owners.append(k)
+
+    # 1. stated coordinates
     for k, p in enumerate(placed):
-        x, y = _target(p.spec, cell)
-        if x is None and y is None:
+        if p.spec.at_x is None and p.spec.at_y is None:
             continue
+        x, y = _target(p.spec, cell)
         c = np.array([anchor[0] if x is None else x, anchor[1] if y is None else y])
+        free_axes = tuple(d for d, v in enumerate((p.spec.at_x, p.spec.at_y)) if v is None)
+        c = _clamp(c, p.half, cell, free_axes)
         if not _inside(c, p.half, cell):
-            field = (
-                "at_x"
-                if not (ws.x_min <= c[0] - p.half[0] and c[0] + p.half[0] <= ws.x_max)
-                else "at_y"
-            )
-            d = 0 if field == "at_x" else 1
+            d = 0 if not (ws.x_min <= c[0] - p.half[0] and c[0] + p.half[0] <= ws.x_max) else 1
+            field = ("at_x", "at_y")[d]
             lo = (ws.x_min, ws.y_min)[d] + p.half[d]
             hi = (ws.x_max, ws.y_max)[d] - p.half[d]
             raise InfeasibleError(
@@ -169,43 +221,43 @@ def _place_all(placed: list[_Placed], cell: CellConfig) -> list[np.ndarray]:
                 f"its centre {'xy'[d]} must lie in [{lo:.3f}, {hi:.3f}] m",
                 parameter=field,
             )
-        centres[k] = c
-        taken.append((c, p.half))
-    # The rest side by side along y around the anchor, then the nearest free spot.
-    free = [k for k, c in enumerate(centres) if c is None]
+        spot = _search(c, p.half, taken, 0.0, cell, free_axes)
+        if spot is None:
+            other = next(
+                placed[o]
+                for o, (tc, th) in zip(owners, taken, strict=True)
+                if not _clear(c, p.half, [(tc, th)], 0.0)
+            )
+            field = "at_x" if p.spec.at_x is not None else "at_y"
+            raise InfeasibleError(
+                f"{field}: the {p.spec.shape} at ({c[0]:g}, {c[1]:g}) m overlaps the "
+                f"{other.spec.shape} placed before it; give them positions at least "
+                f"{2 * float(max(p.half)):.3f} m apart",
+                parameter=field,
+            )
+        put(k, spot)
+    # 2. named regions, 3. the rest side by side along y around the anchor
+    regional = [k for k, p in enumerate(placed) if centres[k] is None and p.spec.region]
+    free = [k for k, p in enumerate(placed) if centres[k] is None and not p.spec.region]
+    wants: list[tuple[int, np.ndarray, str]] = []
+    for k in regional:
+        x, y = _target(placed[k].spec, cell)
+        assert x is not None and y is not None
+        wants.append((k, _clamp(np.array([x, y]), placed[k].half, cell, (0, 1)), "region"))
     widths = [2 * placed[k].half[1] for k in free]
-    total = sum(widths) + gap * max(0, len(free) - 1)
-    y = anchor[1] - total / 2
-    preferred = []
-    for w in widths:
-        preferred.append(np.array([anchor[0], y + w / 2]))
-        y += w + gap
-    step = cell.cube[0] / 2
-    for k, want in zip(free, preferred, strict=True):
-        p = placed[k]
-        spot = None
-        for r in range(0, 40):
-            ring = [
-                want + step * np.array([i, j])
-                for i in range(-r, r + 1)
-                for j in range(-r, r + 1)
-                if max(abs(i), abs(j)) == r
-            ]
-            ring.sort(key=lambda c: (float(np.linalg.norm(c - want)), c[0], c[1]))
-            for c in ring:
-                if _inside(c, p.half, cell) and _clear(c, p.half, taken, gap):
-                    spot = c
-                    break
-            if spot is not None:
-                break
+    y0 = anchor[1] - (sum(widths) + gap * max(0, len(free) - 1)) / 2
+    for k, w in zip(free, widths, strict=True):
+        wants.append((k, np.array([anchor[0], y0 + w / 2]), "structures"))
+        y0 += w + gap
+    for k, want, field in wants:
+        spot = _search(want, placed[k].half, taken, gap, cell, (0, 1))
         if spot is None:
             raise InfeasibleError(
-                f"structures: the {len(placed)} structures do not fit side by side in the "
-                "workspace; make them smaller or fewer",
-                parameter="structures",
+                f"{field}: no free place in the workspace for the {placed[k].spec.shape} "
+                f"beside the {len(taken)} structure(s) already placed; make them smaller or fewer",
+                parameter=field,
             )
-        centres[k] = spot
-        taken.append((spot, p.half))
+        put(k, spot)
     return [c for c in centres if c is not None]
 
 
@@ -236,18 +288,36 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
     parts: list[Part] = []
     counters: dict[str, int] = {}
     for p, centre in zip(placed, centres, strict=True):
+        mine: list[Part] = []
         for (dx, dy), z, size, yaw, kind in zip(p.xy, p.z, p.sizes, p.yaws, p.kinds, strict=True):
             counters[kind] = counters.get(kind, 0) + 1
             prefix = "c" if kind == "cube" else kind[0]
-            parts.append(
+            mine.append(
                 Part(
                     id=f"{prefix}{counters[kind]}",
                     position=(round(centre[0] + dx, 6), round(centre[1] + dy, 6), round(z, 6)),
-                    orientation=quat_from_yaw(0.0 if kind == "cube" else yaw),
+                    # a cube turned by a multiple of 90° is the same box: keep it axis-aligned
+                    orientation=quat_from_yaw(0.0 if kind == "cube" and _square(yaw) else yaw),
                     size=size,
                 )
             )
+        if not _square(math.radians(p.spec.yaw_deg)) and len(mine) > 1:
+            graph = ContactGraph(Layout(objects=tuple(mine)), cell.tolerances.contact, 0.0)
+            if graph.colliding.any():
+                raise InfeasibleError(
+                    f"yaw_deg: turned by {p.spec.yaw_deg:g}°, the bounding boxes of neighbouring "
+                    f"parts of the {p.spec.shape} overlap (the verifier uses axis-aligned boxes); "
+                    "use a multiple of 90°",
+                    parameter="yaw_deg",
+                )
+        parts.extend(mine)
     return Layout(objects=tuple(parts))
+
+
+def _square(yaw_rad: float) -> bool:
+    """`yaw_rad` is a multiple of 90°."""
+    quarter = yaw_rad / (math.pi / 2)
+    return abs(quarter - round(quarter)) < 1e-9
 
 
 def design(spec: Spec, cell: CellConfig | None = None) -> tuple[Layout, Report]:

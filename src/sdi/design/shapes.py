@@ -109,12 +109,27 @@ def block(sp: StructureSpec, z: Sizes) -> list[Box]:
 
 
 def pack(sp: StructureSpec, z: Sizes) -> list[Box]:
-    """`count` parts as compact as possible: a near-cubic block filled bottom-up."""
+    """`count` parts as compact as possible, filled bottom-up.
+
+    Among bounding boxes at least 75 % full, take the one with the least surface (the most
+    cube-like), then the squarest, then the fewest levels; `height` fixes the number of levels.
+    """
     n = sp.count or 8
-    levels = _resolve(sp.height, sp.height_m, z.h, max(1, round(n ** (1 / 3))), "height")
-    per_level = math.ceil(n / levels)
-    nu = math.ceil(math.sqrt(per_level))
-    nv = math.ceil(per_level / nu)
+    fixed = _resolve(sp.height, sp.height_m, z.h, 0, "height") or None
+    best: tuple[float, int, int, int, int, int] | None = None
+    for levels in [fixed] if fixed else range(1, n + 1):
+        per_level = math.ceil(n / levels)
+        for nu in range(1, per_level + 1):
+            nv = math.ceil(per_level / nu)
+            if nu > nv or (nu - 1) * nv >= per_level:
+                continue  # keep nu ≤ nv and no empty row
+            fill = n / (nu * nv * levels)
+            surface = 2 * (nu * nv + nv * levels + nu * levels)
+            key = (0 if fill >= 0.75 else 1, surface, max(nu, nv, levels), levels, nu, nv)
+            if best is None or key < best:
+                best = key
+    assert best is not None
+    _, _, _, levels, nu, nv = best
     cells = [(i, j, k) for k in range(levels) for j in range(nv) for i in range(nu)][:n]
     return [Box(i * z.s, j * z.s, z.h / 2 + k * z.h) for i, j, k in cells]
 

@@ -29,8 +29,11 @@ class Toppling:
     plane_z: float
     com: tuple[float, float]
     outside_by: float
+    movers: list[int]
+    """The parts to move: the sub-structure, less the parts that rest on the table."""
     towards: tuple[float, float]
-    """Translation (dx, dy), metres, that would bring the centre of mass over the support."""
+    """Translation (dx, dy) of `movers`, metres, that brings the centre of mass over the
+    support (zero when none was found)."""
 
 
 def _hull_check(com: np.ndarray, patches: np.ndarray, margin: float) -> tuple[float, np.ndarray]:
@@ -52,6 +55,66 @@ def _hull_check(com: np.ndarray, patches: np.ndarray, margin: float) -> tuple[fl
     norm = float(np.linalg.norm(direction))
     fix = direction / norm * (max(outside, 0.0) + margin) if norm > 0 else np.zeros(2)
     return outside, fix
+
+
+def _fix(
+    graph: ContactGraph, members: np.ndarray, plane: int, margin: float
+) -> tuple[list[int], np.ndarray]:
+    """Parts to move and a translation that makes the sub-structure stand, if one exists.
+
+    First the whole sub-structure slides on its fixed supporters (their patches change as it
+    moves, so the move is refined a few times); failing that, the parts resting on the cut
+    stay and everything above them moves. Returns a zero move when neither works.
+    """
+    layout, eps = graph.layout, graph.eps
+    c, h, mass = layout.centres, layout.half_extents, layout.volumes
+    bottoms = c[:, 2] - h[:, 2]
+    cut = plane * eps
+    member_list = members.tolist()
+    resting = [m for m in member_list if abs(bottoms[m] - cut) <= eps]
+    above = [m for m in member_list if abs(bottoms[m] - cut) > eps]
+    edges = graph.support_edges
+    if plane <= 0:
+        r = np.array(resting, dtype=np.intp)
+        base = np.stack(
+            [c[r, 0] - h[r, 0], c[r, 0] + h[r, 0], c[r, 1] - h[r, 1], c[r, 1] + h[r, 1]], 1
+        )
+    else:
+        crossing = edges[~np.isin(edges[:, 0], member_list) & np.isin(edges[:, 1], member_list)]
+        base = graph.support_patches[
+            ~np.isin(edges[:, 0], member_list) & np.isin(edges[:, 1], member_list)
+        ]
+    strategies: list[tuple[list[int], np.ndarray | None]] = []
+    if plane > 0:
+        strategies.append((member_list, crossing))  # slide the whole sub-structure
+    strategies.append((above, None))  # keep what rests on the cut, move the rest
+    total = float(np.sum(mass[members]))
+    for movers, sliding in strategies:
+        if not movers:
+            continue
+        moved_mass = float(np.sum(mass[movers]))
+        shift = np.zeros(2)
+        for _ in range(12):
+            com = (
+                np.sum(mass[members, None] * c[members, :2], axis=0) + shift * moved_mass
+            ) / total
+            if sliding is None:
+                patches = base
+            else:
+                lo, up = sliding[:, 0], sliding[:, 1]
+                x_lo = np.maximum(c[lo, 0] - h[lo, 0], c[up, 0] - h[up, 0] + shift[0])
+                x_hi = np.minimum(c[lo, 0] + h[lo, 0], c[up, 0] + h[up, 0] + shift[0])
+                y_lo = np.maximum(c[lo, 1] - h[lo, 1], c[up, 1] - h[up, 1] + shift[1])
+                y_hi = np.minimum(c[lo, 1] + h[lo, 1], c[up, 1] + h[up, 1] + shift[1])
+                ok = (x_hi - x_lo > eps) & (y_hi - y_lo > eps)
+                patches = np.stack([x_lo, x_hi, y_lo, y_hi], 1)[ok]
+            if len(patches) == 0:
+                break
+            outside, step = _hull_check(com, patches, margin)
+            if outside <= -margin + 1e-12:
+                return movers, np.round(shift, 4)
+            shift = shift + step * 1.05
+    return member_list, np.zeros(2)
 
 
 def find_toppling(graph: ContactGraph, margin: float) -> list[Toppling]:
@@ -115,7 +178,7 @@ def find_toppling(graph: ContactGraph, margin: float) -> list[Toppling]:
         ends = np.searchsorted(cross_label, fresh, side="right")
         for comp, s, t in zip(fresh.tolist(), starts.tolist(), ends.tolist(), strict=True):
             com = np.array([com_x[comp], com_y[comp]])
-            outside, fix = _hull_check(com, cross_patch[s:t], margin)
+            outside, _ = _hull_check(com, cross_patch[s:t], margin)
             if outside <= -margin + 1e-12:
                 continue
             members = np.nonzero(label == comp)[0]
@@ -123,13 +186,15 @@ def find_toppling(graph: ContactGraph, margin: float) -> list[Toppling]:
             if key in reported:
                 continue
             reported.add(key)
+            movers, shift = _fix(graph, members, plane, margin)
             found.append(
                 Toppling(
                     parts=members.tolist(),
                     plane_z=float(plane * eps),
                     com=(float(com[0]), float(com[1])),
                     outside_by=max(outside, 0.0),
-                    towards=(float(fix[0]), float(fix[1])),
+                    movers=movers,
+                    towards=(float(shift[0]), float(shift[1])),
                 )
             )
     return found

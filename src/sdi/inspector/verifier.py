@@ -131,16 +131,23 @@ def check_support(a: Analysis) -> list[Violation]:
         neighbours = contact_pairs[(contact_pairs == i).any(axis=1)].ravel()
         neighbours = [k for k in neighbours.tolist() if k != i]
         lower = [k for k in neighbours if c[k, 2] + h[k, 2] <= c[i, 2] - h[i, 2] + 0.5 * h[i, 2]]
+        lower.sort(key=lambda k: float(np.hypot(*(c[k, :2] - c[i, :2]))))
         pid = ids[i]
-        if lower:
-            k = min(lower, key=lambda k: float(np.hypot(*(c[k, :2] - c[i, :2]))))
-            target = (float(c[k, 0]), float(c[k, 1]), float(c[k, 2] + h[k, 2] + h[i, 2]))
-            hint = f"move {pid} onto {ids[k]} at {fmt_point(target)}"
-            suggestion: dict[str, object] = {"id": pid, "position": [round(v, 6) for v in target]}
+        # Move it onto a lower neighbour whose top is free; else add a part under it.
+        onto = [(k, np.array([c[k, 0], c[k, 1], c[k, 2] + h[k, 2] + h[i, 2]])) for k in lower]
+        spot = next(((k, t) for k, t in onto if _free(a, t, h[i], skip=i)), None)
+        below = np.array([c[i, 0], c[i, 1], c[i, 2] - h[i, 2] - a.cell.cube[2] / 2])
+        suggestion: dict[str, object] | None
+        if spot is not None:
+            k, target = spot
+            hint = f"move {pid} onto {ids[k]} at {fmt_point(tuple(target))}"
+            suggestion = {"id": pid, "position": [round(float(v), 6) for v in target]}
+        elif below[2] > 0 and _free(a, below, np.array(a.cell.cube) / 2, skip=i):
+            hint = f"add a part under {pid} at {fmt_point(tuple(below))}"
+            suggestion = {"add_part_at": [round(float(v), 6) for v in below]}
         else:
-            target = (float(c[i, 0]), float(c[i, 1]), float(c[i, 2] - h[i, 2] - a.cell.cube[2] / 2))
-            hint = f"add a part under {pid} at {fmt_point(target)}"
-            suggestion = {"add_part_at": [round(v, 6) for v in target]}
+            hint = f"remove {pid} or place it on a free top face"
+            suggestion = None
         out.append(
             Violation(
                 constraint=Constraint.SUPPORT,
@@ -154,12 +161,31 @@ def check_support(a: Analysis) -> list[Violation]:
     return out
 
 
+def _free(a: Analysis, centre: np.ndarray, half: np.ndarray, *, skip: int) -> bool:
+    """No part except `skip` overlaps the box (centre, half extents) by more than ε."""
+    eps = a.cell.tolerances.contact
+    gap = np.abs(a.layout.centres - centre) - (a.layout.half_extents + half)
+    hit = np.all(gap < -eps, axis=1)
+    hit[skip] = False
+    return not bool(hit.any())
+
+
 def check_stability(a: Analysis) -> list[Violation]:
     """Beyond the paper: each sub-structure's centre of mass is over its support polygon."""
     ids = a.layout.ids
     out = []
     for t in find_toppling(a.graph, a.cell.tolerances.stability_margin):
         names = [ids[i] for i in t.parts]
+        movers = [ids[i] for i in t.movers]
+        suggestion: dict[str, object] | None = None
+        if any(t.towards):
+            hint = (
+                f"move {_names(movers, 3)} by {fmt_point(t.towards)} m, or add a support under "
+                f"{fmt_point(t.com)}"
+            )
+            suggestion = {"ids": movers, "translate": [round(v, 6) for v in t.towards]}
+        else:
+            hint = f"add a support under {fmt_point(t.com)} or shorten the overhang"
         out.append(
             Violation(
                 constraint=Constraint.STABILITY,
@@ -167,9 +193,8 @@ def check_stability(a: Analysis) -> list[Violation]:
                 message=f"the {len(names)}-part sub-structure {_names(names)} above "
                 f"z={fmt(t.plane_z)} has its centre of mass at {fmt_point(t.com)}, "
                 f"{fmt(t.outside_by)} m outside its support polygon",
-                hint=f"move it by {fmt_point(t.towards)} m or add a support under "
-                f"{fmt_point(t.com)}",
-                suggestion={"ids": names, "translate": [round(v, 6) for v in t.towards]},
+                hint=hint,
+                suggestion=suggestion,
             )
         )
     return out

@@ -116,7 +116,10 @@ def _describe(error: ValidationError, data: Any) -> InputError:
     field = _field_path(loc)
     message = first["msg"].removeprefix("Value error, ")
     if first["type"] == "extra_forbidden":
-        message = "unknown field; a part has only id, position, orientation, size"
+        if len(loc) >= 2 and loc[0] == "objects":
+            message = "unknown field; a part has only id, position, orientation, size"
+        else:
+            message = "unknown field; a layout has only 'objects' (and 'sequence')"
     # Name the part, not only its index, when we can.
     if len(loc) >= 2 and loc[0] == "objects" and isinstance(loc[1], int):
         try:

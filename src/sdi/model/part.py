@@ -12,14 +12,16 @@ from functools import cached_property
 from typing import Annotated
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, Strict, field_validator
 
 QUAT_TOLERANCE = 1e-3
 """How far from 1 a quaternion's norm may be before it is refused (no silent renormalising)."""
 
 PartId = Annotated[str, Field(min_length=1, max_length=64, pattern=r"^[A-Za-z0-9_.:\-]+$")]
-Vec3 = tuple[float, float, float]
-Quat = tuple[float, float, float, float]
+Number = Annotated[float, Strict()]
+"""A JSON number: integers and floats; no booleans or numeric strings."""
+Vec3 = tuple[Number, Number, Number]
+Quat = tuple[Number, Number, Number, Number]
 
 
 def quat_from_yaw(yaw_rad: float) -> Quat:

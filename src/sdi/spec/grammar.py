@@ -17,6 +17,7 @@ A command with no recognisable structure fails with `SpecError`, saying what was
 
 from __future__ import annotations
 
+import itertools
 import re
 from dataclasses import dataclass, field
 from typing import Any
@@ -67,8 +68,47 @@ PRIMARY_M = {
     "bridge": "height_m",
 }
 # Shapes that hold pillars: a tower-like noun after them ("with legs 3 high") is part of them.
-PILLARED = {"bridge", "arch", "canopy", "castle"}
+# Words that may stand before an imperative verb at the start of a clause.
+CLAUSE_LEAD = {
+    "please", "now", "then", "and", ",", ":", ";", "to", "you", "can", "could", "would",
+    "also", "just", "lets", "let", "us", "i", "we", "want", "need", "go", "ahead", "kindly",
+    "first", "next", "finally", "robot", "hey", "ok", "okay",
+}  # fmt: skip
+# Words after "packed", "stacked"…: the shape they imply when no noun names one.
+IMPLYING_WORDS = {
+    "packed": "pack", "tightly": "pack", "densely": "pack", "compactly": "pack",
+    "stacked": "tower", "piled": "tower",
+}  # fmt: skip
 LETTER_HEADS = {"l_shape", "u_shape", "t_shape", "cross"}
+# Nouns that name a part of a bigger structure when linked to it ("a castle with towers").
+COMPONENTS = {
+    "castle": {"enclosure", "wall", "tower", "row"},
+    "canopy": {"tower", "canopy", "grid"},
+    "bridge": {"tower"},
+    "arch": {"tower"},
+    "enclosure": {"wall"},
+    "u_shape": {"wall"},
+    "l_shape": {"wall"},
+    "t_shape": {"wall"},
+}
+LINKS = {
+    "with",
+    "of",
+    ":",
+    "having",
+    "has",
+    "whose",
+    "on",
+    "atop",
+    "featuring",
+    "including",
+    "where",
+    "and",
+    ",",
+    "plus",
+    "each",
+    "at",
+}
 NUMERIC_CATEGORIES = {"height", "length", "width", "count", "steps", "span", "spans"}
 
 
@@ -88,6 +128,7 @@ class Hit:
     shape: str
     plural: bool
     params: dict[str, Any] = field(default_factory=dict)
+    verb: bool = False
     multiplicity: int = 1
     start: int = 0
     end: int = 0
@@ -254,35 +295,35 @@ class _Parser:
                 self.axes.append((k, "y"))
                 t[k].used = True
                 continue
-            if (
-                (w == "away"
-                and self.word(k + 1) == "from")
-                or (w == "towards"
-                and self.word(k + 1) in ("the", "robot"))
+            if (w == "away" and self.word(k + 1) == "from") or (
+                w == "towards" and self.word(k + 1) in ("the", "robot")
             ):
                 self.axes.append((k, "x"))
                 t[k].used = True
                 continue
-            # dimension groups: "3 x 4", "2 by 2 by 3", "3*3"
-            if (
-                self.is_num(k)
-                and self.word(k + 1) in ("x", "by", "times", "*")
-                and self.is_num(k + 2)
-            ):
-                values = [int(t[k].value), int(t[k + 2].value)]
-                end = k + 3
-                if self.word(end) in ("x", "by", "times", "*") and self.is_num(end + 1):
-                    values.append(int(t[end + 1].value))
-                    end += 2
-                # a unit after the group applies to every number ("30 x 20 cm")
-                unit = lx.UNITS_M.get(self.word(end))
-                if unit is not None:
-                    t[end].used = True
-                    values = [max(1, round(v * unit / self.cell.cube[0])) for v in values]
-                    end += 1
-                self.dims.append((k, values))
-                for m in range(k, end):
-                    t[m].used = True
+            # dimension groups: "3 x 4", "2 by 2 by 3", "3*3", "20 cm by 15 cm"
+            if self.is_num(k):
+                group = self._dims_at(k)
+                if group is not None:
+                    values, end = group
+                    inner = bool(
+                        {self.word(m) for m in range(end, end + 3)}
+                        & {
+                            "space",
+                            "hole",
+                            "opening",
+                            "interior",
+                            "inside",
+                            "cavity",
+                            "void",
+                            "gap",
+                        }
+                    )
+                    self.dims.append((k, [v + 2 for v in values] if inner else values))
+                    if inner:
+                        self.notes.append(f"an inside of {' by '.join(map(str, values))} parts")
+                    for m in range(k, end):
+                        t[m].used = True
         # measurements with units: "20 cm tall", "a 0.3 m wall", "height of 15 cm"
         for k in range(n):
             if t[k].used or not self.is_num(k) or self.word(k + 1) not in lx.UNITS_M:
@@ -320,6 +361,36 @@ class _Parser:
                     break
             self.measures.append((k, metres, fieldname))
 
+    def _dims_at(self, k: int) -> tuple[list[int], int] | None:
+        """A group of 2–3 sizes starting at token k, each in parts or with a unit."""
+        values: list[float] = []
+        units: list[float | None] = []
+        j = k
+        while self.is_num(j) and not self.toks[j].used:
+            values.append(self.toks[j].value)
+            unit = lx.UNITS_M.get(self.word(j + 1))
+            units.append(unit)
+            j += 2 if unit is not None else 1
+            if len(values) < 3 and self.word(j) in ("x", "by", "times", "*") and self.is_num(j + 1):
+                j += 1
+                continue
+            break
+        if len(values) < 2:
+            return None
+        trailing = units[-1]
+        s = self.cell.cube[0]
+        parts = []
+        for v, unit in zip(values, units, strict=True):
+            unit = unit if unit is not None else trailing
+            parts.append(int(v) if unit is None else max(1, round(v * unit / s)))
+        if any(u is not None for u in units):
+            self.notes.append(f"{' by '.join(f'{v:g}' for v in values)} read as {parts} parts")
+        return parts, j
+
+    def _verb_position(self, k: int) -> bool:
+        """Token k starts a clause (imperative verb), e.g. "Pack 8 cubes…", "please stack…"."""
+        return all(self.word(m) in CLAUSE_LEAD for m in range(k))
+
     # -- pass 2: shape nouns ---------------------------------------------------------------
     def _ambiguous_is_shape(self, k: int) -> bool:
         w = self.word(k)
@@ -331,7 +402,8 @@ class _Parser:
             if nxt in lx.SHAPE_WORDS and nxt not in lx.AMBIGUOUS_SHAPES:
                 return False  # "block tower", "brick wall": a material
             if any(
-                d[0] == k - 1 or (self.toks[k - 1].used and self.dims and d[0] < k) for d in self.dims
+                d[0] == k - 1 or (self.toks[k - 1].used and self.dims and d[0] < k)
+                for d in self.dims
             ):
                 return True
             if prev in lx.SIZE_WORDS or prev in (
@@ -357,9 +429,7 @@ class _Parser:
                 return True
             return w != "cube"
         if w in ("square", "squares", "rectangle"):
-            if nxt in lx.SHAPE_WORDS:
-                return False  # "square pyramid", "square enclosure"
-            return True
+            return nxt not in lx.SHAPE_WORDS  # not "square pyramid", "square enclosure"
         if w == "corner":
             if (
                 nxt in lx.SHAPE_WORDS
@@ -425,9 +495,8 @@ class _Parser:
             elif w == "table" and self.word(k - 1) in ("the", "on", "of"):
                 continue
             elif w in lx.SHAPE_WORDS:
-                if w in lx.AMBIGUOUS_SHAPES or w == "cube":
-                    if not self._ambiguous_is_shape(k):
-                        continue
+                if (w in lx.AMBIGUOUS_SHAPES or w == "cube") and not self._ambiguous_is_shape(k):
+                    continue
                 shape = lx.SHAPE_WORDS[w]
             elif w == "cube" and self._ambiguous_is_shape(k):
                 shape = "block"
@@ -445,7 +514,8 @@ class _Parser:
             # noun compounds: "door frame", "brick wall", "square pyramid": the last noun heads
             if self.hits and self.hits[-1].index == k - 1:
                 self.hits.pop()
-            self.hits.append(Hit(index=k, shape=shape, plural=plural))
+            verb = w in lx.VERB_SHAPES and self._verb_position(k)
+            self.hits.append(Hit(index=k, shape=shape, plural=plural, verb=verb))
         # "hollow square/rectangle" → enclosure; "solid/filled" keep grid
         for h in self.hits:
             if h.shape == "grid" and self.word(h.index - 1) in ("hollow", "empty", "open"):
@@ -484,7 +554,7 @@ class _Parser:
             return
         hits[0].start = 0
         hits[-1].end = n
-        for a, b in zip(hits, hits[1:], strict=False):
+        for a, b in itertools.pairwise(hits):
             cut = None
             for k in range(a.index + 1, b.index):
                 if (
@@ -518,11 +588,14 @@ class _Parser:
         for k, values in self.dims:
             if k in span_range:
                 self._apply_dims(h, values)
+        self._value_lists(h)
         # measurements in metres
         for k, metres, fname in self.measures:
             if k in span_range:
                 fname = fname or PRIMARY_M.get(h.shape, "length_m")
-                if (fname == "gap_m" and h.shape in ("bridge", "arch", "canopy")) or (fname == "width_m" and h.shape in ("arch",)):
+                if (fname == "gap_m" and h.shape in ("bridge", "arch", "canopy")) or (
+                    fname == "width_m" and h.shape in ("arch",)
+                ):
                     p["span"] = max(1, round(metres / self.cell.cube[0]))
                 else:
                     p[fname] = metres
@@ -538,8 +611,15 @@ class _Parser:
 
         # "N rows/layers of M": levels (walls, blocks…) or a grid's rows
         for k in span_range:
-            if self.is_num(k) and not t[k].used and self.word(k + 1) in lx.LEVEL_WORDS | {"rows", "columns", "lines"} \
-                    and self.word(k + 2) == "of" and self.is_num(k + 3) and not t[k + 3].used:  # fmt: skip
+            rows = lx.LEVEL_WORDS | {"rows", "columns", "lines"}
+            if (
+                self.is_num(k)
+                and not t[k].used
+                and self.word(k + 1) in rows
+                and self.word(k + 2) == "of"
+                and self.is_num(k + 3)
+                and not t[k + 3].used
+            ):
                 a, b = int(t[k].value), int(t[k + 3].value)
                 if h.shape in ("grid", "pack", "row"):
                     h.shape = "grid" if h.shape == "row" else h.shape
@@ -557,10 +637,10 @@ class _Parser:
             if t[k].used:
                 continue
             w = t[k].text
-            nxt, nxt2 = self.word(k + 1), self.word(k + 2)
+            nxt = self.word(k + 1)
             prev, prev2 = self.word(k - 1), self.word(k - 2)
             if t[k].kind == "num":
-                v = int(round(t[k].value))
+                v = round(t[k].value)
                 if v != t[k].value and abs(t[k].value) < 50:
                     self.notes.append(f"rounded {t[k].value:g} to {v}")
                 if v <= 0:
@@ -604,27 +684,37 @@ class _Parser:
                     p.setdefault(
                         "spans"
                         if wj.endswith("s")
-                        or (wj in ("span",)
-                        and h.shape == "bridge"
-                        and v > 1
-                        and prev not in ("of",))
+                        or (
+                            wj in ("span",)
+                            and h.shape == "bridge"
+                            and v > 1
+                            and prev not in ("of",)
+                        )
                         else "span",
                         v,
                     )
                     take(k)
                     take(j)
                     continue
+                if wj in ("taller", "higher", "above", "over", "more", "extra") and h.shape in (
+                    "castle",
+                    "tower",
+                ):
+                    p["_relative"] = v
+                    for m in range(k, j + 1):
+                        take(m)
+                    continue
                 if wj in ("apart", "spacing", "gap", "gaps"):
-                    p["gap_m"] = v * self.cell.cube[0] if wj != "apart" else v / 100.0
+                    if h.shape in ("bridge", "arch", "canopy") and wj != "apart":
+                        p["span"] = v
+                    else:
+                        p["gap_m"] = v * self.cell.cube[0] if wj != "apart" else v / 100.0
                     take(k)
                     take(j)
                     continue
                 if (
-                    (self.word(k + 1) in ("on", "per")
-                    and self.word(k + 2) in ("a", "each", "every"))
-                    or (self.word(k + 1) == "per"
-                    and self.word(k + 2) in ("side", "edge"))
-                ):
+                    self.word(j) in ("on", "per") and self.word(j + 1) in ("a", "each", "every")
+                ) or (self.word(j) == "per" and self.word(j + 1) in ("side", "edge")):
                     p.setdefault("length", v)
                     p.setdefault("width", v)
                     take(k)
@@ -702,8 +792,7 @@ class _Parser:
                             "standing",
                             "freestanding",
                         )
-                        or (self.toks[m].used
-                        and m == h.index)
+                        or (self.toks[m].used and m == h.index)
                         for m in range(k + 1, h.index + 1)
                     )
                     and h.plural
@@ -766,12 +855,8 @@ class _Parser:
                     and self.word(k + 2) in ("the", "robot")
                 ):
                     region = "back" if w == "far" else "front"
-                if (
-                    (w == "left"
-                    and prev == "to"
-                    and prev2 == "right")
-                    or (w == "right"
-                    and nxt == "to")
+                if (w == "left" and prev == "to" and prev2 == "right") or (
+                    w == "right" and nxt == "to"
                 ):
                     continue
                 p.setdefault("_regions", []).append(region)
@@ -830,6 +915,28 @@ class _Parser:
         if self.word(h.index) in ("ziggurat", "ziggurats"):
             p.setdefault("dims", 3)
 
+    def _value_lists(self, h: Hit) -> None:
+        """ "three towers of 2, 3 and 4 cubes": one value per copy."""
+        t = self.toks
+        k = h.start
+        while k < h.end:
+            if not self.is_num(k) or t[k].used:
+                k += 1
+                continue
+            run, j = [k], k + 1
+            while self.word(j) in (",", "and", "or") and self.is_num(j + 1) and not t[j + 1].used:
+                run.append(j + 1)
+                j += 2
+                if self.word(j) == "and" and self.word(j - 2) == ",":
+                    continue
+            if len(run) >= 2:
+                h.params["_each"] = [round(t[m].value) for m in run]
+                for m in range(k, j):
+                    t[m].used = True
+                if self.word(j) in lx.PART_WORDS:
+                    t[j].used = True
+            k = j
+
     def _apply_dims(self, h: Hit, values: list[int]) -> None:
         p = h.params
         if h.shape == "pyramid":
@@ -861,20 +968,34 @@ class _Parser:
 
     # -- compounds and defaults ----------------------------------------------------------------
     def merge_compounds(self) -> None:
+        # "three towers in a row", "towers in a line": an arrangement, not another structure
+        self.hits = [
+            h
+            for n, h in enumerate(self.hits)
+            if not (
+                n > 0
+                and h.shape == "row"
+                and not h.params
+                and self.word(h.index - 1) in ("a", "one", "single", "straight")
+                and self.word(h.index - 2) in ("in", "into", "along", "forming", "form")
+            )
+        ]
         hits = self.hits
         merged: list[Hit] = []
         k = 0
         while k < len(hits):
             h = hits[k]
             nxt = hits[k + 1] if k + 1 < len(hits) else None
-            between = {self.word(m) for m in range(h.index + 1, nxt.index)} if nxt else set()
+            between = self.between(h, nxt)
             # "two towers joined by a bridge", "towers connected with a beam"
-            if nxt and h.shape == "tower" and nxt.shape == "bridge" and between & lx.JOIN_WORDS | {"with", "by"} \
-                    and (h.plural or h.multiplicity > 1) and between & (lx.JOIN_WORDS | {"by"}):  # fmt: skip
-                nxt.params = {
-                    **h.params,
-                    **{k2: v for k2, v in nxt.params.items() if k2 not in h.params},
-                }
+            if (
+                nxt
+                and h.shape == "tower"
+                and nxt.shape == "bridge"
+                and (h.plural or h.multiplicity > 1)
+                and between & (lx.JOIN_WORDS | {"by"})
+            ):
+                nxt.params = {**nxt.params, **h.params}
                 nxt.params.setdefault("spans", max(1, h.multiplicity - 1))
                 if "height" not in h.params and "_count" in h.params:
                     nxt.params["height"] = nxt.params.pop("_count")
@@ -883,32 +1004,37 @@ class _Parser:
                 hits[k + 1] = nxt
                 k += 1
                 continue
-            # "a bridge between two towers of 3", "a gate with pillars 3 high", "table with legs"
-            if nxt and h.shape in PILLARED and nxt.shape == "tower":
-                for key in ("height", "height_m", "_count", "_loose"):
-                    if key in nxt.params:
-                        value = nxt.params[key]
-                        if key == "_loose":
-                            value = value[0]
-                        if h.shape == "castle":
-                            h.params["_tower_height"] = value
-                        else:
-                            h.params.setdefault(
-                                "height_m" if key == "height_m" else "height", value
-                            )
+            # "pack 8 cubes into a compact cube", "stack 6 cubes as a pyramid": the verb's
+            # shape gives way to the target named after it
+            if nxt and h.verb and between & {"into", "as", "forming", "form", "to"}:
+                for key, value in h.params.items():
+                    nxt.params.setdefault(key, value)
+                nxt.start = h.start
+                k += 1
+                continue
+            # containers absorb their components: "a castle: a 4 by 4 ring of walls with a
+            # tower at each corner", "a shelter with four legs and a roof", "a bridge with
+            # three spans on pillars 3 high", "a courtyard with walls 2 high"
+            parts = COMPONENTS.get(h.shape, set())
+            if nxt and nxt.shape in parts and between & LINKS:
+                j = k + 1
+                while j < len(hits) and hits[j].shape in parts:
+                    if j > k + 1 and self.between(hits[j - 1], hits[j]) & {
+                        "next",
+                        "beside",
+                        "another",
+                    }:
                         break
-                for key in ("_sizes",):
-                    if key in nxt.params and h.shape == "castle":
-                        h.params["_tower_sizes"] = nxt.params[key]
-                if h.shape in ("bridge",) and nxt.multiplicity > 2:
-                    h.params.setdefault("spans", nxt.multiplicity - 1)
+                    self.absorb(h, hits[j])
+                    h.end = hits[j].end
+                    j += 1
                 merged.append(h)
-                k += 2
+                k = j
                 continue
             # "a podium with four steps", "a U shaped wall": one structure named twice
             if (
                 nxt
-                and (nxt.shape == h.shape or h.shape in LETTER_HEADS and nxt.shape in ("wall", "row"))
+                and (nxt.shape == h.shape or self._letter_wall(h, nxt))
                 and not between & (lx.SEPARATORS | {"next", "beside"})
                 and not nxt.plural
             ):
@@ -922,6 +1048,43 @@ class _Parser:
             k += 1
         self.hits = merged
 
+    @staticmethod
+    def _letter_wall(h: Hit, nxt: Hit) -> bool:
+        """ "a U shaped wall": the letter names the shape, the noun the material."""
+        return h.shape in LETTER_HEADS and nxt.shape in ("wall", "row")
+
+    def between(self, a: Hit, b: Hit | None) -> set[str]:
+        return {self.word(m) for m in range(a.index + 1, b.index)} if b else set()
+
+    def absorb(self, container: Hit, part: Hit) -> None:
+        """Fold a component noun's attributes into its container."""
+        cp, pp = container.params, dict(part.params)
+        height = pp.pop("height", None) or pp.pop("_count", None)
+        if height is None and pp.get("_loose"):
+            height = pp["_loose"][0]
+        pp.pop("_loose", None)
+        if part.shape == "tower":
+            if container.shape == "castle":
+                if height is not None:
+                    cp["_tower_height"] = height
+            elif height is not None:
+                cp.setdefault("height", height)
+            elif "height_m" in pp:
+                cp.setdefault("height_m", pp.pop("height_m"))
+            if container.shape == "bridge" and part.multiplicity > 2:
+                cp.setdefault("spans", part.multiplicity - 1)
+        elif part.shape in ("wall", "enclosure", "row"):
+            if height is not None and part.shape != "row":
+                cp.setdefault("height", height)
+            for key in ("length", "width", "length_m", "width_m"):
+                if key in pp and container.shape in ("castle", "enclosure"):
+                    cp.setdefault(key, pp[key])
+        pp.pop("length", None)
+        pp.pop("width", None)
+        pp.pop("_sizes", None)
+        for key, value in pp.items():
+            cp.setdefault(key, value)
+
     def build(self, h: Hit) -> list[StructureSpec]:
         p = dict(h.params)
         shape = h.shape
@@ -930,6 +1093,8 @@ class _Parser:
         count = p.pop("_count", None)
         loose = p.pop("_loose", [])
         tower_height = p.pop("_tower_height", None)
+        relative = p.pop("_relative", None)
+        each = p.pop("_each", None)
         p.pop("_tower_sizes", None)
         if count is not None:
             key = PRIMARY[shape]
@@ -996,16 +1161,15 @@ class _Parser:
             if dim != "all" and not related & set(table):
                 dim = "all"  # "a short row", "a long tower": the size word applies overall
             for key, values in table.items():
-                if (
-                    dim == "all"
-                    or key == dim
-                    or (dim == "length" and key in ("steps", "count", "spans"))
-                    or (dim == "height" and key == "steps")
-                ):
-                    if key not in p and f"{key}_m" not in p:
-                        p[key] = values[index]
-        if shape == "castle" and tower_height is not None:
+                applies = dim == "all" or key == dim or key in related
+                if applies and key not in p and f"{key}_m" not in p:
+                    p[key] = values[index]
+        if shape == "castle" and relative is not None:
+            p["count"] = int(relative)
+        elif shape == "castle" and tower_height is not None:
             p["count"] = max(1, int(tower_height) - int(p.get("height", 1)))
+        if shape in ("wall", "row") and "width" in p and "length" not in p:
+            p["length"] = p.pop("width")  # a wall or a row is one part thick: "wide" is long
         if shape in ("grid", "block", "enclosure", "castle") and "width" in p and "length" not in p:
             p["length"] = p["width"]  # one side given: make it square
         region = _region(regions)
@@ -1023,6 +1187,13 @@ class _Parser:
                 understood=self.understood(),
             ) from None
         copies = max(1, h.multiplicity)
+        if each is not None and copies == 1:
+            copies = len(each) if h.plural else 1
+        if each is not None and copies == len(each):
+            key = PRIMARY[shape] if PRIMARY[shape] != "count" else "length"
+            return [spec.model_copy(update={key: v}) for v in each]
+        if each is not None:
+            self.notes.append(f"values {each}: used the first")
         if copies > 20:
             raise SpecError(
                 f"{copies} separate {shape}s is more than 20", understood=self.understood()
@@ -1048,6 +1219,14 @@ class _Parser:
 
     def implied(self) -> Hit | None:
         """No shape noun: a verb ("stack five cubes") or a bare count ("place 4 cubes")."""
+        if self.dims:
+            shape = "block" if any(len(v) == 3 for _, v in self.dims) else "grid"
+            return Hit(index=len(self.toks), shape=shape, plural=False, start=0, end=len(self.toks))
+        for word, shape in IMPLYING_WORDS.items():
+            if any(t.text == word for t in self.toks):
+                return Hit(
+                    index=len(self.toks), shape=shape, plural=False, start=0, end=len(self.toks)
+                )
         for k, t in enumerate(self.toks):
             if t.text in lx.VERB_SHAPES and not t.used:
                 t.used = True
