@@ -282,7 +282,18 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
                 field="structures",
             )
         p = _orient(s, boxes, sizes)
-        _check_fits(p, cell)
+        try:
+            _check_fits(p, cell)
+        except InfeasibleError as exc:
+            # An unstated axis is ours to choose: turn the structure if that makes it fit.
+            if s.axis is not None or exc.parameter not in ("length", "width"):
+                raise
+            turned = s.model_copy(update={"axis": "x"})
+            p = _orient(turned, boxes, sizes)
+            try:
+                _check_fits(p, cell)
+            except InfeasibleError:
+                raise exc from None
         placed.append(p)
     centres = _place_all(placed, cell)
     parts: list[Part] = []

@@ -92,23 +92,16 @@ COMPONENTS = {
     "t_shape": {"wall"},
 }
 LINKS = {
-    "with",
-    "of",
-    ":",
-    "having",
-    "has",
-    "whose",
-    "on",
-    "atop",
-    "featuring",
-    "including",
-    "where",
-    "and",
-    ",",
-    "plus",
-    "each",
-    "at",
-}
+    "with", "of", ":", "having", "has", "whose", "on", "atop", "featuring", "including", "where",
+    "and", ",", "plus", "each", "at", "between", "over", "across", "upon", "from", "supported",
+    "resting", "standing", "carried",
+}  # fmt: skip
+# "a 5-cube bar", "5 cubes at the bottom": a count that names a dimension of the shape.
+PART_NOUN_KEYS = {
+    "bar": "length", "base": "length", "bottom": "length", "stem": "width",
+    "arms": "arms", "arm": "arms", "sides": "arms", "side": "arms", "legs": "height",
+    "leg": "height",
+}  # fmt: skip
 NUMERIC_CATEGORIES = {"height", "length", "width", "count", "steps", "span", "spans"}
 
 
@@ -206,7 +199,7 @@ class _Parser:
             if t[k].used:
                 continue
             # "x = 0.45 m", "y: 30 cm", "x of 0.4", "x coordinate 0.4"
-            if w in ("x", "y") and not self.is_num(k - 1):
+            if w == "y" or (w == "x" and not (self.is_num(k - 1) and self.is_num(k + 1))):
                 j = k + 1
                 while j < n and t[j].text in ("=", ":", "of", "is", "coordinate", "position",
                                               "value", "equals", "equal", "to", "at"):  # fmt: skip
@@ -486,8 +479,8 @@ class _Parser:
             if w in lx.LETTER_SHAPES:
                 nxt = self.word(k + 1)
                 if nxt in lx.LETTER_SHAPE_TAILS or (
-                    self.word(k - 1) in ("a", "an", "the", "letter", "big", "small", "large")
-                    and nxt in ("", "of", "with", "made", ",", "and", "at", "on", "in", "using")
+                    self.word(k - 1) in ("a", "an", "the", "letter", "capital", "one")
+                    or self.word(k - 1) in lx.SIZE_WORDS
                 ):
                     shape = lx.LETTER_SHAPES[w]
                     if nxt in lx.LETTER_SHAPE_TAILS:
@@ -522,29 +515,10 @@ class _Parser:
                 h.shape = "enclosure"
             if h.shape == "block" and self.word(h.index - 1) in ("hollow", "empty"):
                 h.shape = "enclosure"
-        # the word "cube" as a shape ("a single cube") means a one-part tower unless sized
+        # the word "cube" as a shape is one part ("a single cube") unless sized: see `build`
         for h in self.hits:
             if self.word(h.index) == "cube" and h.shape == "block":
-                prev = self.word(h.index - 1)
-                sized = (
-                    prev in lx.SIZE_WORDS
-                    or any(d for d in self.dims if d[0] < h.index)
-                    or self.word(h.index + 1)
-                    in (
-                        "of",
-                        "made",
-                        "built",
-                        "consisting",
-                        "composed",
-                        "from",
-                        "out",
-                        "using",
-                        "with",
-                    )
-                )
-                if not sized:
-                    h.shape = "tower"
-                    h.params["height"] = 1
+                h.params["_cube_word"] = True
 
     # -- pass 3: segmentation --------------------------------------------------------------
     def segment(self) -> None:
@@ -654,7 +628,11 @@ class _Parser:
                     j += 1
                 wj = self.word(j)
                 if wj in lx.DIMENSION_WORDS and (wj not in ("up", "height", "width", "length")):
-                    p.setdefault(lx.DIMENSION_WORDS[wj], v)
+                    key = lx.DIMENSION_WORDS[wj]
+                    if h.shape in ("u_shape", "t_shape"):  # "a U 4 wide and 3 deep"
+                        key = "length" if key == "width" and wj != "deep" else key
+                        key = "width" if wj in ("deep", "long", "tall", "high") else key
+                    p.setdefault(key, v)
                     for m in range(k, j + 1):
                         take(m)
                     continue
@@ -695,6 +673,21 @@ class _Parser:
                     )
                     take(k)
                     take(j)
+                    continue
+                wk = self.word(j + 1) if wj in ("at", "on", "in", "for", "along") else wj
+                if wk == "the":
+                    wk = self.word(j + 2)
+                placed_on = wj in ("at", "on", "in", "for", "along") and wk in ("base", "bottom")
+                if wk in PART_NOUN_KEYS and (wk == wj or placed_on):
+                    key = PART_NOUN_KEYS[wk]
+                    if key == "arms":
+                        p.setdefault("length", v)
+                        p.setdefault("width", v)
+                    else:
+                        p.setdefault(key, v)
+                    last = j if wk == wj else (j + 2 if self.word(j + 1) == "the" else j + 1)
+                    for m in range(k, last + 1):
+                        take(m)
                     continue
                 if wj in ("taller", "higher", "above", "over", "more", "extra") and h.shape in (
                     "castle",
@@ -961,7 +954,7 @@ class _Parser:
         if h.shape == "grid" and len(values) == 3:
             h.shape = "block"
         if h.shape == "block" and len(values) == 2:
-            values = [*values, 1] if "height" not in p else values
+            p["_flat"] = True  # "a 3 by 3 block": one level unless levels are given
         keys = ["length", "width", "height"]
         for key, v in zip(keys, values, strict=False):
             p[key] = v
@@ -1095,7 +1088,20 @@ class _Parser:
         tower_height = p.pop("_tower_height", None)
         relative = p.pop("_relative", None)
         each = p.pop("_each", None)
+        cube_word = p.pop("_cube_word", False)
+        flat = p.pop("_flat", False)
         p.pop("_tower_sizes", None)
+        sized = (
+            count is not None
+            or sizes
+            or loose
+            or each
+            or any(
+                key in p for key in ("length", "width", "height", "count", "length_m", "height_m")
+            )
+        )
+        if cube_word and not sized:
+            shape, p["height"] = "tower", 1  # "a cube", "a single cube": one part
         if count is not None:
             key = PRIMARY[shape]
             if shape == "staircase" and "steps" not in p and count > 6:
@@ -1151,6 +1157,13 @@ class _Parser:
             if key not in p:
                 p[key] = v
         for dim, size in sizes:
+            if size == "X":  # "the tallest tower you can": as many levels as the cell holds
+                if dim in ("height", "all") and "height" not in p:
+                    p["height" if shape != "staircase" else "steps"] = int(
+                        (self.cell.workspace.z_max - self.cell.workspace.z_min) / self.cell.cube[2]
+                        + 1e-9
+                    )
+                size = "L"
             index = "SML".index(size)
             table = SIZE_TABLE.get(shape, {})
             related = {
@@ -1164,6 +1177,8 @@ class _Parser:
                 applies = dim == "all" or key == dim or key in related
                 if applies and key not in p and f"{key}_m" not in p:
                     p[key] = values[index]
+        if shape == "block" and flat and "height" not in p and "height_m" not in p:
+            p["height"] = 1
         if shape == "castle" and relative is not None:
             p["count"] = int(relative)
         elif shape == "castle" and tower_height is not None:

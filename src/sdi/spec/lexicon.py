@@ -508,6 +508,9 @@ SIZE_WORDS: dict[str, tuple[str, str]] = {
     "stubby": ("height", "S"), "long": ("length", "L"), "longer": ("length", "L"),
     "lengthy": ("length", "L"), "extended": ("length", "L"), "wide": ("width", "L"),
     "broad": ("width", "L"), "wider": ("width", "L"), "narrow": ("width", "S"),
+    "tallest": ("height", "X"), "highest": ("height", "X"), "biggest": ("all", "L"),
+    "largest": ("all", "L"), "longest": ("length", "L"), "widest": ("width", "L"),
+    "maximum": ("height", "X"), "max": ("height", "X"),
     "thin": ("width", "S"), "slim": ("width", "S"),
 }  # fmt: skip
 
