@@ -713,7 +713,7 @@ class _Parser:
                     take(k)
                     continue
                 # "height of N", "length: N", "span of N", "base of N", "with N steps"
-                key = None
+                role: str | None = None
                 for back in (prev, prev2):
                     if back in (
                         "height",
@@ -726,15 +726,15 @@ class _Parser:
                         "floors",
                         "stories",
                     ):
-                        key = "height"
+                        role = "height"
                     elif back in ("length", "long"):
-                        key = "length"
+                        role = "length"
                     elif back in ("width", "wide", "depth", "deep", "breadth"):
-                        key = "width"
+                        role = "width"
                     elif back in ("span", "spanning", "opening", "gap", "spacing", "distance"):
-                        key = "span" if h.shape in ("bridge", "arch", "canopy") else "gap"
+                        role = "span" if h.shape in ("bridge", "arch", "canopy") else "gap"
                     elif back in ("base", "bottom", "foot", "footprint"):
-                        key = "length"
+                        role = "length"
                     elif back in (
                         "arm",
                         "arms",
@@ -747,22 +747,22 @@ class _Parser:
                         "wing",
                         "wings",
                     ):
-                        key = "arms"
+                        role = "arms"
                     elif back in ("steps", "stairs") and h.shape == "staircase":
-                        key = "steps"
-                    if key:
+                        role = "steps"
+                    if role:
                         break
-                if key == "arms":
+                if role == "arms":
                     p.setdefault("length", v)
                     p.setdefault("width", v)
                     take(k)
                     continue
-                if key == "gap":
+                if role == "gap":
                     p["gap_m"] = v * self.cell.cube[0] if v < 10 else v / 100.0
                     take(k)
                     continue
-                if key:
-                    p.setdefault(key, v)
+                if role:
+                    p.setdefault(role, v)
                     take(k)
                     continue
                 # a number in front of a plural shape noun: how many structures
