@@ -166,6 +166,136 @@ def bench(
                 out.print(f"[red]✗[/red] {record['id']} {record['text']!r}: {record['reason']}")
 
 
+ArmsOption = Annotated[
+    str | None,
+    typer.Option("--arms", help="comma-separated robots to use (default: every robot of the cell)"),
+]
+
+
+def _commission(layout_file: Path, cell_path: Path | None, arms: str | None, as_json: bool) -> Any:
+    from sdi.commission import commission
+    from sdi.errors import MotionPlanningError, UnverifiedPlanError
+
+    cell = _cell(cell_path, as_json)
+    layout, sequence = _load(layout_file, cell, as_json)
+    try:
+        return commission(layout, cell, sequence=sequence, arms=arms.split(",") if arms else None)
+    except UnverifiedPlanError as exc:
+        if as_json:
+            _emit({"status": "refused", "error": str(exc), "violations": exc.violations})
+        else:
+            err.print(f"[bold red]refused:[/bold red] {exc}")
+            for v in exc.violations:
+                err.print(f"  - {v}")
+        raise typer.Exit(1) from None
+    except MotionPlanningError as exc:
+        event = getattr(exc.event, "to_json_dict", lambda: None)()
+        if as_json:
+            _emit({"status": "failure", "error": str(exc), "event": event})
+        else:
+            err.print(f"[bold red]motion planning failed:[/bold red] {exc}")
+        raise typer.Exit(1) from None
+
+
+@app.command("execute")
+def execute_cmd(
+    layout_file: Annotated[Path, typer.Argument(help="layout JSON or a saved plan result")],
+    json_out: JsonOption = False,
+    cell_path: CellOption = None,
+    arms: ArmsOption = None,
+    epsilon: Annotated[float, typer.Option(help="V_traj threshold on δ, rad")] = 0.05,
+    fault: Annotated[
+        list[str] | None, typer.Option("--fault", help="inject a failure scenario (repeatable)")
+    ] = None,
+    report_dir: Annotated[
+        Path | None, typer.Option("--report", help="write report.json and deviation.png here")
+    ] = None,
+) -> None:
+    """Plan motion for a verified layout, execute it in simulation, monitor and report."""
+    from sdi.commission import execute
+    from sdi.execute.faults import SCENARIOS
+    from sdi.monitor import plot_deviation
+
+    unknown = [f for f in fault or [] if f not in SCENARIOS]
+    if unknown:
+        _bad_input(
+            InputError(
+                f"unknown scenario {unknown}; choose from {sorted(SCENARIOS)}", field="--fault"
+            ),
+            json_out,
+        )
+    if epsilon <= 0:
+        _bad_input(InputError("must be > 0 rad", field="--epsilon"), json_out)
+    plan = _commission(layout_file, cell_path, arms, json_out)
+    result, report = execute(plan, epsilon=epsilon, faults=tuple(SCENARIOS[f] for f in fault or []))
+    report = {"planning": plan.summary(), **report}
+    if report_dir is not None:
+        report_dir.mkdir(parents=True, exist_ok=True)
+        (report_dir / "report.json").write_text(
+            json.dumps(report, indent=2) + "\n", encoding="utf-8"
+        )
+        if result.executed and set(result.executed) == set(plan.motion.trajectories):
+            from sdi.monitor import deviation
+
+            plot_deviation(
+                deviation(plan.motion.trajectories, result.executed),
+                epsilon,
+                report_dir / "deviation.png",
+            )
+    if json_out:
+        _emit(report)
+    else:
+        out.print_json(data=report)
+    raise typer.Exit(0 if report["status"] == "success" and report["v_traj"] == "pass" else 1)
+
+
+@app.command("export")
+def export_cmd(
+    layout_file: Annotated[Path, typer.Argument(help="layout JSON or a saved plan result")],
+    rapid: Annotated[
+        Path | None, typer.Option("--rapid", help="directory for one RAPID module per robot")
+    ] = None,
+    python: Annotated[
+        Path | None, typer.Option("--python", help="file for the Python program")
+    ] = None,
+    cell_path: CellOption = None,
+    arms: ArmsOption = None,
+) -> None:
+    """Export robot programs (ABB RAPID, abb-motion-program-exec Python) for a verified layout."""
+    from sdi.export import python_program, rapid_module
+
+    if rapid is None and python is None:
+        _bad_input(InputError("give --rapid DIR and/or --python FILE"), False)
+    plan = _commission(layout_file, cell_path, arms, False)
+    written = []
+    if rapid is not None:
+        rapid.mkdir(parents=True, exist_ok=True)
+        for name in plan.tasks.robots:
+            if plan.tasks.for_robot(name):
+                path = rapid / f"SDI_{name.upper()}.mod"
+                path.write_text(
+                    rapid_module(plan.job, plan.tasks, plan.motion, plan.robots[name]),
+                    encoding="utf-8",
+                )
+                written.append(path)
+    if python is not None:
+        python.parent.mkdir(parents=True, exist_ok=True)
+        python.write_text(
+            python_program(
+                plan.job,
+                plan.tasks,
+                plan.motion,
+                plan.robots,
+                command=str(layout_file),
+                filename=python.name,
+            ),
+            encoding="utf-8",
+        )
+        written.append(python)
+    for path in written:
+        out.print(f"wrote {path}")
+
+
 @app.command()
 def skills() -> None:
     """Print the skill registry as OpenAI function-calling tool schemas (JSON)."""

@@ -52,3 +52,23 @@ class SequencingError(SDIError):
     def __init__(self, message: str, *, blocked: list[str]) -> None:
         self.blocked = blocked
         super().__init__(message)
+
+
+class UnverifiedPlanError(SDIError):
+    """A layout or sequence that did not pass the Inspector was offered to the robot side.
+
+    The safety gate: nothing reaches task generation, motion planning, a driver or an exporter
+    unless `verify` passed it. `violations` lists what the Inspector found.
+    """
+
+    def __init__(self, message: str, *, violations: list[str] | None = None) -> None:
+        self.violations = violations or []
+        super().__init__(message)
+
+
+class MotionPlanningError(SDIError):
+    """No motion for a step. `event` is the failure event (step, part id, error type, pose)."""
+
+    def __init__(self, message: str, *, event: object) -> None:
+        self.event = event
+        super().__init__(message)

@@ -148,10 +148,10 @@ class CellConfig(_Frozen):
     grippers: tuple[VacuumGripper | ParallelGripper, ...] = (VacuumGripper(), ParallelGripper())
     supply_areas: tuple[SupplyArea, ...] = (
         SupplyArea(
-            name="irb120_supply", robot="irb120", x_range=(0.15, 0.35), y_range=(-0.25, -0.05)
+            name="irb120_supply", robot="irb120", x_range=(0.12, 0.30), y_range=(-0.10, 0.00)
         ),
         SupplyArea(
-            name="irb1600_supply", robot="irb1600", x_range=(0.90, 1.10), y_range=(0.60, 0.80)
+            name="irb1600_supply", robot="irb1600", x_range=(0.80, 0.95), y_range=(0.65, 0.80)
         ),
     )
     tolerances: Tolerances = Tolerances()

@@ -1,0 +1,7 @@
+"""Execution: the safety-gated job, failure injection and the drivers (the Operator's side)."""
+
+from sdi.execute.faults import SCENARIOS, FaultScenario
+from sdi.execute.job import VerifiedJob
+from sdi.execute.sim import ExecutionResult, SimDriver
+
+__all__ = ["SCENARIOS", "ExecutionResult", "FaultScenario", "SimDriver", "VerifiedJob"]

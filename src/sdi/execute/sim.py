@@ -1,0 +1,304 @@
+"""The `sim` driver: PyBullet physics executes Q_plan on simulated robots and real parts.
+
+- The robots (the project's URDFs) follow Q_plan with joint position control, stepped at
+  `physics_hz`; Q_exec is read from the simulated encoders at each robot's controller rate.
+- Parts are dynamic boxes (mass from their volume and `density`, friction) that appear on the
+  robot's supply slot when its step begins, are carried, released and settle under gravity.
+- Gripping follows the tool: the vacuum holds a part only if its top face is under the cups;
+  the parallel gripper only if the part sits between the pads. A held part is fixed to the TCP
+  by a constraint at its actual relative pose, so tracking errors carry through to placement.
+- Every Q_exec sample goes to the streaming monitor; execution pauses at the first breach.
+- Failure injection: a step whose target lies in a blocked region fails before it moves.
+
+Only a `VerifiedJob` is accepted, and it is re-verified before anything moves.
+"""
+
+from __future__ import annotations
+
+import math
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pybullet as pb
+
+from sdi.execute.faults import FaultScenario
+from sdi.execute.job import VerifiedJob
+from sdi.motion.planner import MotionPlan
+from sdi.motion.scene import TABLE_CENTRE, TABLE_HALF, _quat_xyzw
+from sdi.motion.trajectory import JointTrajectory
+from sdi.robot import RobotModel, write_urdf
+from sdi.tasks.events import FailureEvent
+from sdi.tasks.generator import pose_tuple
+from sdi.tasks.task import TaskPlan
+
+
+@dataclass
+class ExecutionResult:
+    """What happened: Q_exec, the as-built part poses and errors, and any failure event."""
+
+    status: str  # "success" | "failure" | "paused"
+    executed: dict[str, JointTrajectory]
+    as_built: dict[str, tuple[float, ...]] = field(default_factory=dict)
+    placement_error: dict[str, float] = field(default_factory=dict)  # m, centre distance
+    failure: FailureEvent | None = None
+    completed_steps: int = 0
+    simulated_seconds: float = 0.0
+
+    @property
+    def max_placement_error(self) -> float:
+        return max(self.placement_error.values(), default=0.0)
+
+
+def _pose_matrix(pos: tuple[float, ...], quat_xyzw: tuple[float, ...]) -> np.ndarray:
+    T = np.eye(4)
+    T[:3, :3] = np.array(pb.getMatrixFromQuaternion(quat_xyzw)).reshape(3, 3)
+    T[:3, 3] = pos
+    return T
+
+
+class SimDriver:
+    """Executes verified jobs in PyBullet (DIRECT, headless)."""
+
+    name = "sim"
+
+    def __init__(
+        self,
+        robots: dict[str, RobotModel],
+        *,
+        physics_hz: float = 1000.0,
+        density: float = 700.0,
+        friction: float = 0.9,
+        faults: tuple[FaultScenario, ...] = (),
+        settle_seconds: float = 0.5,
+    ) -> None:
+        self.robots = robots
+        self.physics_hz = physics_hz
+        self.density = density
+        self.friction = friction
+        self.faults = faults
+        self.settle_seconds = settle_seconds
+
+    def execute(
+        self,
+        job: VerifiedJob,
+        tasks: TaskPlan,
+        motion: MotionPlan,
+        *,
+        monitor: object | None = None,
+    ) -> ExecutionResult:
+        """Run the job; `monitor` is a streaming monitor with `update(robot, t, q)`."""
+        job.recheck()  # the safety gate, again, right before motion
+        placed_ids = {s.part_id for s in tasks.steps}
+        if placed_ids != set(job.layout.ids) or [s.part_id for s in tasks.steps] != list(
+            job.sequence
+        ):
+            from sdi.errors import UnverifiedPlanError
+
+            raise UnverifiedPlanError("refused: the task plan does not match the verified job")
+        c = pb.connect(pb.DIRECT)
+        tmp = tempfile.TemporaryDirectory(prefix="sdi-sim-")
+        try:
+            return self._run(c, Path(tmp.name), job, tasks, motion, monitor)
+        finally:
+            pb.disconnect(c)
+            tmp.cleanup()
+
+    def _run(
+        self,
+        c: int,
+        tmp: Path,
+        job: VerifiedJob,
+        tasks: TaskPlan,
+        motion: MotionPlan,
+        monitor: object | None,
+    ) -> ExecutionResult:
+        dt = 1.0 / self.physics_hz
+        pb.setGravity(0, 0, -9.81, physicsClientId=c)
+        pb.setTimeStep(dt, physicsClientId=c)
+        table_shape = pb.createCollisionShape(
+            pb.GEOM_BOX, halfExtents=TABLE_HALF, physicsClientId=c
+        )
+        table = pb.createMultiBody(0, table_shape, basePosition=TABLE_CENTRE, physicsClientId=c)
+        pb.changeDynamics(table, -1, lateralFriction=self.friction, physicsClientId=c)
+        bodies: dict[str, tuple[int, list[int], int]] = {}
+        for name in tasks.robots:
+            model = self.robots[name]
+            path = write_urdf(model, tmp / name)
+            T = model.T_world_base
+            body = pb.loadURDF(
+                str(path), T[:3, 3].tolist(), _quat_xyzw(T[:3, :3]), useFixedBase=True,
+                physicsClientId=c,
+            )  # fmt: skip
+            joints, tcp = [], -1
+            for j in range(pb.getNumJoints(body, physicsClientId=c)):
+                info = pb.getJointInfo(body, j, physicsClientId=c)
+                if info[2] == pb.JOINT_REVOLUTE:
+                    joints.append(j)
+                if info[12].decode() == "tcp":
+                    tcp = j
+            q0 = motion.trajectories[name].q[0]
+            for j, v in zip(joints, q0, strict=True):
+                pb.resetJointState(body, j, float(v), physicsClientId=c)
+            bodies[name] = (body, joints, tcp)
+
+        steps = {s.step: s for s in tasks.steps}
+        starts = {m.step: m.start for m in motion.steps}
+        events = sorted(motion.events, key=lambda e: e.t)
+        parts: dict[str, int] = {}
+        held: dict[str, tuple[int, str]] = {}  # robot → (constraint, part id)
+        spawned: set[int] = set()
+        failure: FailureEvent | None = None
+        status = "success"
+        end = max(tr.t[-1] for tr in motion.trajectories.values())
+        recorded: dict[str, list[tuple[float, np.ndarray]]] = {r: [] for r in tasks.robots}
+        next_sample = dict.fromkeys(tasks.robots, 0.0)
+        ev = 0
+        n_steps = math.ceil(end / dt) + 1
+        done_steps = 0
+        for k in range(n_steps):
+            t = k * dt
+            # parts appear on the supply when their step begins; injected faults fire there
+            for s, t_start in starts.items():
+                if s in spawned or t + 1e-12 < t_start:
+                    continue
+                spawned.add(s)
+                step = steps[s]
+                for scenario in self.faults:
+                    event = scenario.check(step)
+                    if event is not None:
+                        failure, status = event, "failure"
+                        break
+                if failure is not None:
+                    break
+                parts[step.part_id] = self._spawn(c, step.T_world_part_supply, step.part_size)
+            if failure is not None:
+                break
+            while ev < len(events) and events[ev].t <= t + 1e-12:
+                e = events[ev]
+                ev += 1
+                body, _, tcp = bodies[e.robot]
+                step = next(s for s in tasks.steps if s.part_id == e.part_id)
+                part = parts[e.part_id]
+                if e.kind == "grip":
+                    problem = self._grippable(c, body, tcp, part, step.tool, step.part_size)
+                    if problem:
+                        failure = FailureEvent(
+                            step=step.step, part_id=step.part_id, error_type="grip",
+                            target_pose=pose_tuple(step.T_world_part_supply), robot=e.robot,
+                            message=problem,
+                        )  # fmt: skip
+                        status = "failure"
+                        break
+                    held[e.robot] = (self._attach(c, body, tcp, part), e.part_id)
+                else:
+                    constraint, _ = held.pop(e.robot)
+                    pb.removeConstraint(constraint, physicsClientId=c)
+                    done_steps += 1
+            if failure is not None:
+                break
+            for name, (body, joints, _) in bodies.items():
+                tr = motion.trajectories[name]
+                target = tr.at(np.array([t]))[0]
+                ahead = tr.at(np.array([t + 1.0 / tr.rate_hz]))[0]
+                velocity = (ahead - target) * tr.rate_hz  # feed-forward, rad/s
+                pb.setJointMotorControlArray(
+                    body, joints, pb.POSITION_CONTROL, targetPositions=target.tolist(),
+                    targetVelocities=velocity.tolist(), forces=[5000.0] * len(joints),
+                    positionGains=[0.8] * len(joints), velocityGains=[1.0] * len(joints),
+                    physicsClientId=c,
+                )  # fmt: skip
+            pb.stepSimulation(physicsClientId=c)
+            breach = None
+            for name, (body, joints, _) in bodies.items():
+                if t + 1e-12 >= next_sample[name]:
+                    q = np.array([s[0] for s in pb.getJointStates(body, joints, physicsClientId=c)])
+                    recorded[name].append((t, q))
+                    next_sample[name] += 1.0 / self.robots[name].controller_rate_hz
+                    if monitor is not None:
+                        breach = monitor.update(name, t, q) or breach  # type: ignore[attr-defined]
+            if breach is not None:
+                status = "paused"
+                step_now = max(
+                    (m for m in motion.steps if m.start <= t), key=lambda m: m.start, default=None
+                )
+                current = steps[step_now.step] if step_now else tasks.steps[0]
+                failure = FailureEvent(
+                    step=current.step, part_id=current.part_id, error_type="deviation",
+                    target_pose=pose_tuple(current.T_world_part_target), robot=breach.robot,
+                    message=f"δ = {breach.deviation:.4f} rad exceeded ε at t = {breach.t:.3f} s",
+                )  # fmt: skip
+                break
+        for _ in range(int(self.settle_seconds * self.physics_hz)):
+            pb.stepSimulation(physicsClientId=c)
+        as_built: dict[str, tuple[float, ...]] = {}
+        errors: dict[str, float] = {}
+        for placed in tasks.steps:
+            if placed.part_id not in parts:
+                continue
+            pos, orn = pb.getBasePositionAndOrientation(parts[placed.part_id], physicsClientId=c)
+            T = _pose_matrix(pos, orn)
+            as_built[placed.part_id] = pose_tuple(T)
+            errors[placed.part_id] = float(
+                np.linalg.norm(T[:3, 3] - placed.T_world_part_target[:3, 3])
+            )
+        executed = {}
+        for name, rows in recorded.items():
+            if rows:
+                executed[name] = JointTrajectory(
+                    name, np.array([r[0] for r in rows]), np.array([r[1] for r in rows]),
+                    self.robots[name].controller_rate_hz,
+                )  # fmt: skip
+        return ExecutionResult(
+            status=status,
+            executed=executed,
+            as_built=as_built,
+            placement_error=errors,
+            failure=failure,
+            completed_steps=done_steps,
+            simulated_seconds=min(end, n_steps * dt),
+        )
+
+    def _spawn(self, c: int, T: np.ndarray, size: tuple[float, float, float]) -> int:
+        half = [s / 2 for s in size]
+        shape = pb.createCollisionShape(pb.GEOM_BOX, halfExtents=half, physicsClientId=c)
+        mass = self.density * size[0] * size[1] * size[2]
+        body = pb.createMultiBody(
+            mass, shape, basePosition=T[:3, 3].tolist(), baseOrientation=_quat_xyzw(T[:3, :3]),
+            physicsClientId=c,
+        )  # fmt: skip
+        pb.changeDynamics(body, -1, lateralFriction=self.friction, physicsClientId=c)
+        return body
+
+    def _grippable(
+        self, c: int, robot: int, tcp: int, part: int, tool: str, size: tuple[float, float, float]
+    ) -> str | None:
+        """Why the tool cannot hold the part here, or None (vacuum: top face; fingers: sides)."""
+        state = pb.getLinkState(robot, tcp, computeForwardKinematics=True, physicsClientId=c)
+        T_tcp = _pose_matrix(state[4], state[5])
+        pos, orn = pb.getBasePositionAndOrientation(part, physicsClientId=c)
+        T_part = _pose_matrix(pos, orn)
+        p = np.linalg.inv(T_part) @ T_tcp[:, 3]  # TCP in the part frame
+        half = 0.5 * np.array(size)
+        if tool == "vacuum":
+            if abs(p[2] - half[2]) > 0.004:
+                return f"suction cups {abs(p[2] - half[2]) * 1000:.1f} mm off the top face"
+            if abs(p[0]) > half[0] - 0.01 or abs(p[1]) > half[1] - 0.01:
+                return "suction cups not over the top face"
+            return None
+        if abs(p[0]) > half[0] or abs(p[1]) > half[1] or not -half[2] <= p[2] <= half[2]:
+            return "the part is not between the finger pads"
+        return None
+
+    def _attach(self, c: int, robot: int, tcp: int, part: int) -> int:
+        state = pb.getLinkState(robot, tcp, computeForwardKinematics=True, physicsClientId=c)
+        pos, orn = pb.getBasePositionAndOrientation(part, physicsClientId=c)
+        inv_pos, inv_orn = pb.invertTransform(state[4], state[5])
+        rel_pos, rel_orn = pb.multiplyTransforms(inv_pos, inv_orn, pos, orn)
+        for link in range(-1, pb.getNumJoints(robot, physicsClientId=c)):
+            pb.setCollisionFilterPair(robot, part, link, -1, 0, physicsClientId=c)
+        return pb.createConstraint(
+            robot, tcp, part, -1, pb.JOINT_FIXED, [0, 0, 0], rel_pos, [0, 0, 0],
+            parentFrameOrientation=rel_orn, physicsClientId=c,
+        )  # fmt: skip
