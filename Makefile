@@ -25,6 +25,7 @@ bench: $(STAMP)
 	$(PY) benchmarks/inspector_scaling.py
 	$(PY) benchmarks/plan_latency.py
 	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json
+	$(PY) benchmarks/cell_motion.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache

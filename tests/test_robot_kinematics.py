@@ -216,7 +216,7 @@ def test_default_cell_placement():
     irb120, irb1600 = ROBOTS["irb120"], ROBOTS["irb1600"]
     np.testing.assert_allclose(irb120.T_world_base[:3, 3], (0.0, 0.30, 0.0))
     np.testing.assert_allclose(irb120.T_world_base[:3, :3], np.eye(3))  # faces +x
-    np.testing.assert_allclose(irb1600.T_world_base[:3, 3], (1.10, 0.30, 0.0))
+    np.testing.assert_allclose(irb1600.T_world_base[:3, 3], (1.30, 0.30, 0.0))
     np.testing.assert_allclose(irb1600.T_world_base[:3, 0], (-1.0, 0.0, 0.0), atol=1e-12)
     assert (irb120.controller_rate_hz, irb1600.controller_rate_hz) == (50.0, 250.0)
     assert (irb120.tool.kind, irb1600.tool.kind) == ("vacuum", "parallel")

@@ -188,6 +188,8 @@ def _commission(layout_file: Path, cell_path: Path | None, arms: str | None, as_
             for v in exc.violations:
                 err.print(f"  - {v}")
         raise typer.Exit(1) from None
+    except InputError as exc:
+        _bad_input(exc, as_json)
     except MotionPlanningError as exc:
         event = getattr(exc.event, "to_json_dict", lambda: None)()
         if as_json:
@@ -294,6 +296,96 @@ def export_cmd(
         written.append(python)
     for path in written:
         out.print(f"wrote {path}")
+
+
+def _human_ok(question: str, approve: bool, as_json: bool) -> None:
+    """Nothing moves without a person's OK: a prompt, or --approve for unattended runs."""
+    if approve:
+        return
+    if not sys.stdin.isatty():
+        message = f"{question} needs a human OK: run interactively or pass --approve"
+        if as_json:
+            _emit({"status": "refused", "error": message})
+        else:
+            err.print(f"[bold red]refused:[/bold red] {message}")
+        raise typer.Exit(1)
+    if not typer.confirm(question, default=False):
+        err.print("[yellow]stopped by the operator; nothing moved[/yellow]")
+        raise typer.Exit(1)
+
+
+@app.command("run")
+def run_cmd(
+    command: Annotated[str, typer.Argument(help="what to build, in plain language")],
+    approve: Annotated[
+        bool, typer.Option("--approve", help="approve the design and the execution (unattended)")
+    ] = False,
+    json_out: JsonOption = False,
+    cell_path: CellOption = None,
+    arms: ArmsOption = None,
+    epsilon: Annotated[float, typer.Option(help="V_traj threshold on δ, rad")] = 0.05,
+    report_dir: Annotated[
+        Path | None, typer.Option("--report", help="write plan.json, report.json, deviation.png")
+    ] = None,
+) -> None:
+    """Plan, review, commission, confirm, execute in simulation and monitor one command."""
+    from sdi.commission import commission, execute
+    from sdi.errors import MotionPlanningError
+    from sdi.monitor import deviation, plot_deviation
+
+    cell = _cell(cell_path, json_out)
+    result = run_plan(command, cell)
+    if not json_out:
+        print_plan(out, result, cell)
+    if result.status != "success" or result.layout is None:
+        if json_out:
+            _emit({"design": result.to_json_dict()})
+        raise typer.Exit({"failure": 1, "error": 2}.get(result.status, 1))
+    _human_ok("Approve this design for the robots?", approve, json_out)
+    try:
+        plan = commission(
+            result.layout, cell, sequence=result.sequence, arms=arms.split(",") if arms else None
+        )
+    except InputError as exc:
+        _bad_input(exc, json_out)
+    except MotionPlanningError as exc:
+        event = getattr(exc.event, "to_json_dict", lambda: None)()
+        if json_out:
+            _emit(
+                {
+                    "design": result.to_json_dict(),
+                    "status": "failure",
+                    "error": str(exc),
+                    "event": event,
+                }
+            )
+        else:
+            err.print(f"[bold red]motion planning failed:[/bold red] {exc}")
+        raise typer.Exit(1) from None
+    summary = plan.summary()
+    if not json_out:
+        out.print(f"[bold]commissioning[/bold]: {summary}")
+    _human_ok(
+        f"Execute {summary['steps']} steps (makespan {summary['makespan_s']} s)?", approve, json_out
+    )
+    executed, report = execute(plan, epsilon=epsilon)
+    report = {"design": result.to_json_dict(), "planning": summary, **report}
+    if report_dir is not None:
+        report_dir.mkdir(parents=True, exist_ok=True)
+        (report_dir / "report.json").write_text(
+            json.dumps(report, indent=2) + "\n", encoding="utf-8"
+        )
+        if executed.executed and set(executed.executed) == set(plan.motion.trajectories):
+            plot_deviation(
+                deviation(plan.motion.trajectories, executed.executed),
+                epsilon,
+                report_dir / "deviation.png",
+            )
+    if json_out:
+        _emit(report)
+    else:
+        out.print_json(data={k: v for k, v in report.items() if k != "design"})
+    raise typer.Exit(0 if report["status"] == "success" and report["v_traj"] == "pass" else 1)
 
 
 @app.command()

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from sdi.execute.driver import Driver
 from sdi.execute.faults import FaultScenario
 from sdi.execute.job import VerifiedJob
 from sdi.execute.sim import ExecutionResult, SimDriver
@@ -182,7 +183,7 @@ def execute(
     *,
     epsilon: float = EPSILON,
     faults: tuple[FaultScenario, ...] = (),
-    driver: SimDriver | None = None,
+    driver: Driver | None = None,
 ) -> tuple[ExecutionResult, dict[str, object]]:
     """Run a commissioned plan on a driver (default: PyBullet) with streaming monitoring."""
     driver = driver or SimDriver(plan.robots, faults=faults)

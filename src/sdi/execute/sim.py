@@ -72,6 +72,8 @@ class SimDriver:
         friction: float = 0.9,
         faults: tuple[FaultScenario, ...] = (),
         settle_seconds: float = 0.5,
+        solver_iterations: int = 150,
+        position_gain: float = 0.8,
     ) -> None:
         self.robots = robots
         self.physics_hz = physics_hz
@@ -79,6 +81,8 @@ class SimDriver:
         self.friction = friction
         self.faults = faults
         self.settle_seconds = settle_seconds
+        self.solver_iterations = solver_iterations
+        self.position_gain = position_gain
 
     def execute(
         self,
@@ -117,6 +121,7 @@ class SimDriver:
         dt = 1.0 / self.physics_hz
         pb.setGravity(0, 0, -9.81, physicsClientId=c)
         pb.setTimeStep(dt, physicsClientId=c)
+        pb.setPhysicsEngineParameter(numSolverIterations=self.solver_iterations, physicsClientId=c)
         table_shape = pb.createCollisionShape(
             pb.GEOM_BOX, halfExtents=TABLE_HALF, physicsClientId=c
         )
@@ -206,7 +211,8 @@ class SimDriver:
                 pb.setJointMotorControlArray(
                     body, joints, pb.POSITION_CONTROL, targetPositions=target.tolist(),
                     targetVelocities=velocity.tolist(), forces=[5000.0] * len(joints),
-                    positionGains=[0.8] * len(joints), velocityGains=[1.0] * len(joints),
+                    positionGains=[self.position_gain] * len(joints),
+                    velocityGains=[1.0] * len(joints),
                     physicsClientId=c,
                 )  # fmt: skip
             pb.stepSimulation(physicsClientId=c)
@@ -298,7 +304,9 @@ class SimDriver:
         rel_pos, rel_orn = pb.multiplyTransforms(inv_pos, inv_orn, pos, orn)
         for link in range(-1, pb.getNumJoints(robot, physicsClientId=c)):
             pb.setCollisionFilterPair(robot, part, link, -1, 0, physicsClientId=c)
-        return pb.createConstraint(
+        constraint = pb.createConstraint(
             robot, tcp, part, -1, pb.JOINT_FIXED, [0, 0, 0], rel_pos, [0, 0, 0],
             parentFrameOrientation=rel_orn, physicsClientId=c,
         )  # fmt: skip
+        pb.changeConstraint(constraint, maxForce=1e4, physicsClientId=c)
+        return constraint

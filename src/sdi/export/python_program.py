@@ -67,6 +67,8 @@ def build_programs(name):
         mp = abb.MotionProgram(tool=tool(spec))
         mp.WaitTime(spec["grip_wait_s"])
         mp.MoveL(robtarget(step["place"][2]), abb.v100, abb.fine)
+        for q in step["to_home_deg"]:
+            mp.MoveAbsJ(abb.jointtarget(q, [6e5] * 6), abb.v500, abb.z10)
     mp.MoveAbsJ(abb.jointtarget(spec["home_deg"], [6e5] * 6), abb.v500, abb.fine)
     programs.append((mp, None))
     return programs
@@ -115,7 +117,7 @@ def robot_data(tasks: TaskPlan, motion: MotionPlan, robot: RobotModel) -> dict[s
     x, y, z, qw, qx, qy, qz = pose_tuple(robot.tool.T_flange_tcp)
     steps = []
     for step in tasks.for_robot(robot.name):
-        to_pick, to_place = motion.via.get(step.step, ([], []))
+        to_pick, to_place, to_home = motion.via.get(step.step, ([], [], []))
         steps.append(
             {
                 "part": step.part_id,
@@ -123,6 +125,7 @@ def robot_data(tasks: TaskPlan, motion: MotionPlan, robot: RobotModel) -> dict[s
                 "pick": [_target(robot, w.T_world_tcp, w.q) for w in step.pick],
                 "to_place_deg": [_deg(q) for q in to_place[:-1]],
                 "place": [_target(robot, w.T_world_tcp, w.q) for w in step.place],
+                "to_home_deg": [_deg(q) for q in to_home],
             }
         )
     return {

@@ -109,7 +109,7 @@ def rapid_module(job: VerifiedJob, tasks: TaskPlan, motion: MotionPlan, robot: R
         lines += [f"    {t.robtarget()}" for t in _targets(robot, step)]
     lines += ["", "    PROC main()", f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};"]
     for step in steps:
-        to_pick, to_place = motion.via.get(step.step, ([], []))
+        to_pick, to_place, to_home = motion.via.get(step.step, ([], [], []))
         p = f"p{step.step + 1}"
         lines.append(f"        ! step {step.step + 1}: {step.part_id}")
         for q in to_pick[:-1]:
@@ -130,6 +130,10 @@ def rapid_module(job: VerifiedJob, tasks: TaskPlan, motion: MotionPlan, robot: R
             f"        WaitTime {wait};",
             f"        MoveL {p}_place_retreat, {LINEAR_SPEED}, fine, {tool} \\WObj:=wobj0;",
         ]
+        # back home over the supply through the checked via points
+        for q in to_home[:-1]:
+            lines.append(f"        MoveAbsJ {jointtarget(q)}, {FREE_SPEED}, z10, {tool};")
+        lines.append(f"        MoveAbsJ jHome, {FREE_SPEED}, z10, {tool};")
     lines += [
         f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};",
         "    ENDPROC",

@@ -151,7 +151,7 @@ class CellConfig(_Frozen):
             name="irb120_supply", robot="irb120", x_range=(0.12, 0.30), y_range=(-0.10, 0.00)
         ),
         SupplyArea(
-            name="irb1600_supply", robot="irb1600", x_range=(0.80, 0.95), y_range=(0.65, 0.80)
+            name="irb1600_supply", robot="irb1600", x_range=(0.95, 1.10), y_range=(0.72, 0.87)
         ),
     )
     tolerances: Tolerances = Tolerances()

@@ -70,11 +70,14 @@ class MotionPlan:
     trajectories: dict[str, JointTrajectory]
     events: list[GripEvent] = field(default_factory=list)
     steps: list[StepMotion] = field(default_factory=list)
-    via: dict[int, tuple[list[np.ndarray], list[np.ndarray]]] = field(default_factory=dict)
+    via: dict[int, tuple[list[np.ndarray], list[np.ndarray], list[np.ndarray]]] = field(
+        default_factory=dict
+    )
     revised: dict[int, PickPlace] = field(default_factory=dict)
     """Steps whose waypoints the planner moved to another IK branch (the originals collide)."""
-    """Per step: the checked free-space joint via points to the pick approach and from the
-    pick retreat to the place approach (ends included), for exporters to replay exactly."""
+    """Per step: the checked free-space joint via points to the pick approach, from the pick
+    retreat to the place approach, and from the place retreat home (ends included), for the
+    exporters to replay exactly."""
 
     @property
     def makespan(self) -> float:
@@ -139,6 +142,7 @@ class MotionPlanner:
         self.margin = margin
         self.timeout = timeout
         self.speed_scale = speed_scale
+        self.last_reasons: list[str] = []
         _seed_once(seed)
 
     # -- OMPL --------------------------------------------------------------------------------
@@ -207,38 +211,46 @@ class MotionPlanner:
     ) -> tuple[Waypoint, Waypoint, Waypoint] | None:
         """Approach/grasp/retreat on a collision-free IK branch, nearest `q_from` first."""
         model = self.robots[robot]
+        reasons: list[str] = []
 
-        def ok(w: tuple[np.ndarray, np.ndarray]) -> bool:
-            up, at = w
-            return (
-                scene.collides(robot, up) is None
-                and scene.collides(robot, at, ignore_parts=ignore, margin=0.001) is None
-            )
+        def ok(up: np.ndarray, at: np.ndarray) -> bool:
+            hit = scene.collides(robot, up)
+            where = "approach"
+            if hit is None:
+                hit = scene.collides(robot, at, ignore_parts=ignore, margin=0.001)
+                where = "grasp"
+            if hit is not None:
+                reasons.append(f"{hit} at the {where}")
+            return hit is None
 
-        if ok((wps[0].q, wps[1].q)):
+        if ok(wps[0].q, wps[1].q):
             return wps
         for up in sorted(
             ik(model, wps[0].T_world_tcp), key=lambda q: float(np.sum(np.abs(q - q_from)))
         ):
             at = ik_nearest(model, wps[1].T_world_tcp, up)
-            if at is None or float(np.max(np.abs(at - up))) > 1.5 or not ok((up, at)):
+            if at is None or float(np.max(np.abs(at - up))) > 1.5:
+                reasons.append("no IK branch joins the approach and the grasp")
+                continue
+            if not ok(up, at):
                 continue
             return (
                 Waypoint(wps[0].name, wps[0].T_world_tcp, up),
                 Waypoint(wps[1].name, wps[1].T_world_tcp, at),
                 Waypoint(wps[2].name, wps[2].T_world_tcp, up),
             )
+        self.last_reasons = sorted(set(reasons))
         return None
 
     # -- one step ----------------------------------------------------------------------------
     def plan_step(
-        self, scene: Scene, step: PickPlace, q0: np.ndarray, t0: float
+        self, scene: Scene, step: PickPlace, q0: np.ndarray, t0: float, home: np.ndarray
     ) -> tuple[
         list[tuple[float, np.ndarray]],
         list[GripEvent],
         float,
         float,
-        tuple[list[np.ndarray], list[np.ndarray]],
+        tuple[list[np.ndarray], list[np.ndarray], list[np.ndarray]],
     ]:
         """Sampled motion of `step` from q0 at time t0: (samples, grip events, end, seconds).
 
@@ -277,10 +289,13 @@ class MotionPlanner:
                 q_now[0] = target
 
         def hold(kind: str) -> None:
-            events.append(GripEvent(clock[0], robot, kind, step.part_id))
+            # the arm settles at the stop point for the dwell, then the gripper acts
             for _ in range(max(1, round(GRASP_SECONDS[step.tool] / dt))):
                 clock[0] += dt
                 samples.append((clock[0], q_now[0].copy()))
+            events.append(GripEvent(clock[0], robot, kind, step.part_id))
+            clock[0] += dt
+            samples.append((clock[0], q_now[0].copy()))
 
         supports = self._touching(scene, step)
         pick = self._free_branch(scene, robot, step.pick, q0, frozenset({"table"}))
@@ -305,7 +320,10 @@ class MotionPlanner:
         move([step.pick[2].q], frozenset({"table"}), close, "lifting from the supply")
         place = self._free_branch(scene, robot, step.place, step.pick[2].q, supports)
         if place is None:
-            raise fail("collision", "every IK branch at the target collides")
+            raise fail(
+                "collision",
+                f"every IK branch at the target collides ({'; '.join(self.last_reasons)})",
+            )
         if place is not step.place:
             step = dataclasses.replace(step, place=place)
         path = self._rrt(scene, robot, step.pick[2].q, step.place[0].q, fail)
@@ -316,9 +334,13 @@ class MotionPlanner:
         scene.detach(robot)
         scene.add_part(step.part_id, step.T_world_part_target, step.part_size)
         move([step.place[2].q], supports | {step.part_id}, close, "retreating from the target")
+        # back to its home over its own supply, out of the other arm's way
+        path = self._rrt(scene, robot, step.place[2].q, home, fail)
+        to_home = path[1:]
+        move(path[1:], frozenset(), self.margin, "returning home")
         seconds = time.perf_counter() - started
         self._last_step = step
-        return samples, events, clock[0], seconds, (to_pick, to_place)
+        return samples, events, clock[0], seconds, (to_pick, to_place, to_home)
 
     def _touching(self, scene: Scene, step: PickPlace) -> frozenset[str]:
         """Placed parts within 2 mm of the target box: the part may touch them when set down."""
@@ -351,7 +373,7 @@ class MotionPlanner:
             clock = dict.fromkeys(tasks.robots, 0.0)
             events: list[GripEvent] = []
             steps: list[StepMotion] = []
-            via: dict[int, tuple[list[np.ndarray], list[np.ndarray]]] = {}
+            via: dict[int, tuple[list[np.ndarray], list[np.ndarray], list[np.ndarray]]] = {}
             revised: dict[int, PickPlace] = {}
             for step in tasks.steps:
                 robot = step.robot
@@ -362,7 +384,7 @@ class MotionPlanner:
                 if t0 > clock[robot]:
                     samples[robot].append((t0, q_now[robot].copy()))
                 rows, evs, end, seconds, via[step.step] = self.plan_step(
-                    scene, step, q_now[robot], t0
+                    scene, step, q_now[robot], t0, tasks.home[robot]
                 )
                 samples[robot].extend(rows)
                 events.extend(evs)

@@ -604,8 +604,10 @@ def irb1600(T_world_base: np.ndarray | None = None, *, tool: ToolModel | None = 
 
 IRB120_BASE_XY: tuple[float, float] = (0.0, 0.30)
 """World position of the IRB120's base, m (yaw 0: it faces +x, the workspace)."""
-IRB1600_BASE_XY: tuple[float, float] = (1.10, 0.30)
-"""World position of the IRB1600's base, m (yaw π: it faces −x, the workspace)."""
+IRB1600_BASE_XY: tuple[float, float] = (1.30, 0.30)
+"""World position of the IRB1600's base, m (yaw π: it faces −x, the workspace). Far enough
+back that every workspace point has a front, elbow-up solution: nearer, targets by its own
+edge need over-the-head configurations that sweep towards the IRB120."""
 
 
 def default_robots() -> dict[str, RobotModel]:
@@ -615,8 +617,8 @@ def default_robots() -> dict[str, RobotModel]:
     c2 + √(a2² + c3²) ≈ 0.58 m from the shoulder, so with the VGC10 pointing down at a 0.05 m
     cube on the table it reaches about x ≤ 0.57 on the line y = 0.30 and less off it: targets
     with x > ~0.6 are outside its reach and IK fails there (the paper's "workspace boundary
-    x > 0.6 → IK failure"). The IRB1600 stands at world (1.10, 0.30) facing −x and reaches
-    the whole workspace W (x 0.20–0.80, y 0.05–0.55).
+    x > 0.6 → IK failure"). The IRB1600 stands at world (1.30, 0.30) facing −x and reaches
+    the whole workspace W (x 0.20–0.80, y 0.05–0.55) in front, elbow-up configurations.
     """
     return {
         "irb120": irb120(make_transform((*IRB120_BASE_XY, 0.0))),

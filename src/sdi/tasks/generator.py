@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sdi.errors import MotionPlanningError, UnverifiedPlanError
+from sdi.errors import InputError, MotionPlanningError, UnverifiedPlanError
 from sdi.inspector.analysis import Analysis
 from sdi.inspector.verifier import verify
 from sdi.model.cell import CellConfig, ParallelGripper, SupplyArea
@@ -140,7 +140,27 @@ class TaskGenerator:
             )
         self.robots = {n: all_robots[n] for n in names}
         self.areas = {a.robot: a for a in self.cell.supply_areas}
+        for robot in self.robots.values():
+            self._check_supply(robot)
         self.home = {n: self._home(r) for n, r in self.robots.items()}
+
+    def _check_supply(self, robot: RobotModel) -> None:
+        """Every pick slot of the robot's supply area must be reachable with the tool down."""
+        area = self.areas.get(robot.name)
+        if area is None:
+            raise InputError(
+                f"{robot.name} has no supply area; add one for it", field="supply_areas"
+            )
+        down = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
+        for T in supply_slots(area, self.cell.cube):
+            grasp = T.copy()
+            grasp[2, 3] = self.cell.cube[2]
+            if not ik(robot, _frame(down, grasp[:3, 3])):
+                raise InputError(
+                    f"the pick slot at ({T[0, 3]:.3f}, {T[1, 3]:.3f}) m is out of "
+                    f"{robot.name}'s reach; move the area closer to the robot",
+                    field=f"supply_areas.{area.name}",
+                )
 
     def _home(self, robot: RobotModel) -> np.ndarray:
         """Tool down, 0.30 m above the centre of the robot's supply area, in a front,

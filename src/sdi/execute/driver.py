@@ -1,0 +1,30 @@
+"""The protocol every execution driver implements (simulation now; real controllers later).
+
+A driver takes a `VerifiedJob` (the Inspector passed it), its task plan and Q_plan, executes,
+streams Q_exec samples to an optional monitor (`update(robot, t, q) -> breach | None`, and
+stops at the first breach), and reports an `ExecutionResult`: Q_exec, as-built poses and any
+failure event. Drivers must call `job.recheck()` before anything moves.
+"""
+
+from __future__ import annotations
+
+from typing import Protocol, runtime_checkable
+
+from sdi.execute.job import VerifiedJob
+from sdi.execute.sim import ExecutionResult
+from sdi.motion.planner import MotionPlan
+from sdi.tasks.task import TaskPlan
+
+
+@runtime_checkable
+class Driver(Protocol):
+    name: str
+
+    def execute(
+        self,
+        job: VerifiedJob,
+        tasks: TaskPlan,
+        motion: MotionPlan,
+        *,
+        monitor: object | None = None,
+    ) -> ExecutionResult: ...

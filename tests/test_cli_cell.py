@@ -1,0 +1,89 @@
+"""`sdi execute`, `sdi export` and `sdi run` as real subprocesses (sim, no robot)."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.slow
+SDI = [sys.executable, "-m", "sdi.cli"]
+
+
+def run(*args: str, stdin: str | None = None) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([*SDI, *args], capture_output=True, text=True, timeout=600, input=stdin)
+
+
+@pytest.fixture(scope="module")
+def tower_file(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("cli") / "tower.json"
+    proc = run("plan", "a 2-cube tower at x = 0.4", "--out", str(path))
+    assert proc.returncode == 0, proc.stderr
+    return path
+
+
+def test_execute_reports_and_plots(tower_file, tmp_path):
+    proc = run("execute", str(tower_file), "--arms", "irb120", "--json", "--report", str(tmp_path))
+    assert proc.returncode == 0, proc.stderr
+    report = json.loads(proc.stdout)
+    assert report["status"] == "success" and report["v_traj"] == "pass"
+    assert report["max_placement_error_m"] <= 0.002
+    assert report["planning"]["steps"] == 2
+    assert json.loads((tmp_path / "report.json").read_text())["v_traj"] == "pass"
+    assert (tmp_path / "deviation.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_execute_refuses_an_unverified_layout(tmp_path):
+    path = tmp_path / "floating.json"
+    path.write_text(json.dumps({"objects": [{"id": "a", "position": [0.4, 0.3, 0.3]}]}))
+    proc = run("execute", str(path), "--json")
+    assert proc.returncode == 1
+    out = json.loads(proc.stdout)
+    assert out["status"] == "refused" and any("contact" in v for v in out["violations"])
+
+
+def test_execute_unknown_fault_is_bad_input(tower_file):
+    proc = run("execute", str(tower_file), "--fault", "meteor")
+    assert proc.returncode == 2 and "low_ceiling" in proc.stderr
+
+
+def test_export_writes_rapid_and_python(tower_file, tmp_path):
+    proc = run("export", str(tower_file), "--arms", "irb120", "--rapid", str(tmp_path / "rapid"),
+               "--python", str(tmp_path / "prog.py"))  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    module = (tmp_path / "rapid" / "SDI_IRB120.mod").read_text()
+    assert module.startswith("MODULE SDI_IRB120") and module.count("MoveL") == 8
+    check = subprocess.run(
+        [sys.executable, str(tmp_path / "prog.py"), "--dry-run"], capture_output=True, text=True
+    )
+    assert check.returncode == 0, check.stderr
+    assert "MoveL" in check.stdout
+
+
+def test_run_needs_a_human_ok(tmp_path):
+    proc = run("run", "a 2-cube tower at x = 0.4", "--json")  # stdin is not a terminal
+    assert proc.returncode == 1
+    assert "human OK" in proc.stdout
+
+
+def test_run_with_approval_executes(tmp_path):
+    proc = run("run", "a 2-cube tower at x = 0.4", "--approve", "--arms", "irb120", "--json")
+    assert proc.returncode == 0, proc.stderr
+    report = json.loads(proc.stdout)
+    assert report["design"]["status"] == "success"
+    assert report["status"] == "success" and report["v_traj"] == "pass"
+
+
+def test_unreachable_supply_area_is_bad_input(tower_file, tmp_path):
+    cell = tmp_path / "cell.toml"
+    cell.write_text(
+        '[[supply_areas]]\nname = "far"\nrobot = "irb120"\nx_range = [0.60, 0.70]\n'
+        'y_range = [0.0, 0.1]\n\n[[supply_areas]]\nname = "b"\nrobot = "irb1600"\n'
+        "x_range = [0.95, 1.10]\ny_range = [0.72, 0.87]\n"
+    )
+    proc = run("execute", str(tower_file), "--cell", str(cell))
+    assert proc.returncode == 2
+    assert "supply_areas.far" in proc.stderr and "Traceback" not in proc.stderr
