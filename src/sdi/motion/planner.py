@@ -40,6 +40,8 @@ from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
 ou.setLogLevel(ou.LOG_ERROR)
 
 CHECK_RESOLUTION = 0.01
+CLOSE_WORK_SPEED = 0.25
+"""Fraction of the speed/acceleration limits for approach, grasp and retreat moves."""
 """OMPL motion-validation step as a fraction of the state space extent."""
 
 
@@ -278,8 +280,10 @@ class MotionPlanner:
         q_now = [q0]
 
         def move(path: list[np.ndarray], ignore: frozenset[str], margin: float, what: str) -> None:
+            # close work (1 mm clearance, parts meeting) runs slowly, like MoveL v100
+            scale = self.speed_scale * (CLOSE_WORK_SPEED if margin < self.margin else 1.0)
             for target in path:
-                seg = _ruckig_segment(model, q_now[0], target, dt, self.speed_scale)
+                seg = _ruckig_segment(model, q_now[0], target, dt, scale)
                 for row in seg:
                     hit = scene.collides(robot, row, ignore_parts=ignore, margin=margin)
                     if hit is not None:
