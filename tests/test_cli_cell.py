@@ -63,18 +63,31 @@ def test_export_writes_rapid_and_python(tower_file, tmp_path):
     assert "MoveL" in check.stdout
 
 
-def test_run_needs_a_human_ok(tmp_path):
-    proc = run("run", "a 2-cube tower at x = 0.4", "--json")  # stdin is not a terminal
-    assert proc.returncode == 1
-    assert "human OK" in proc.stdout
+def test_run_waits_for_a_human_ok(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    proc = run("run", "a 2-cube tower at x = 0.4", "--json", "--db", str(db))  # no terminal
+    assert proc.returncode == 0, proc.stderr
+    status = json.loads(proc.stdout)
+    assert status["status"] == "paused" and status["waiting_for"]["kind"] == "design_review"
+    assert status.get("execution") is None  # nothing moved
 
 
 def test_run_with_approval_executes(tmp_path):
-    proc = run("run", "a 2-cube tower at x = 0.4", "--approve", "--arms", "irb120", "--json")
+    db = tmp_path / "runs.sqlite"
+    proc = run(
+        "run",
+        "a 2-cube tower at x = 0.4",
+        "--approve",
+        "--arms",
+        "irb120",
+        "--json",
+        "--db",
+        str(db),
+    )
     assert proc.returncode == 0, proc.stderr
     report = json.loads(proc.stdout)
-    assert report["design"]["status"] == "success"
-    assert report["status"] == "success" and report["v_traj"] == "pass"
+    assert report["status"] == "success" and report["execution"]["v_traj"] == "pass"
+    assert report["usage"]["llm_calls"] == 0  # the rules backend: no model at all
 
 
 def test_unreachable_supply_area_is_bad_input(tower_file, tmp_path):

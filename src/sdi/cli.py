@@ -298,94 +298,215 @@ def export_cmd(
         out.print(f"wrote {path}")
 
 
-def _human_ok(question: str, approve: bool, as_json: bool) -> None:
-    """Nothing moves without a person's OK: a prompt, or --approve for unattended runs."""
-    if approve:
-        return
-    if not sys.stdin.isatty():
-        message = f"{question} needs a human OK: run interactively or pass --approve"
-        if as_json:
-            _emit({"status": "refused", "error": message})
-        else:
-            err.print(f"[bold red]refused:[/bold red] {message}")
-        raise typer.Exit(1)
-    if not typer.confirm(question, default=False):
-        err.print("[yellow]stopped by the operator; nothing moved[/yellow]")
-        raise typer.Exit(1)
+BackendOption = Annotated[
+    str, typer.Option("--backend", help="rules (offline, default) | local (llama.cpp) | openai")
+]
+MethodOption = Annotated[str, typer.Option("--method", help="a method of the paper's Table II")]
+DbOption = Annotated[
+    Path | None, typer.Option("--db", help="run database (default: user data dir; $SDI_DB)")
+]
+
+
+def _model(backend: str, as_json: bool) -> Any:
+    """The chat model for a backend, and the server to stop afterwards (or None)."""
+    from sdi.llm import LocalModelUnavailable, LocalServer, OpenAIChat
+
+    if backend == "rules":
+        return None, None
+    if backend == "openai":
+        return OpenAIChat(), None
+    if backend == "local":
+        try:
+            server = LocalServer().start()
+        except LocalModelUnavailable as exc:
+            _bad_input(InputError(str(exc), field="--backend"), as_json)
+        return server.chat_model(), server
+    _bad_input(
+        InputError(f"unknown backend {backend!r}; use rules, local or openai", field="--backend"),
+        as_json,
+    )
+
+
+def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
+    """Ask the operator at an interrupt; None when nobody can answer (non-interactive)."""
+    waiting = status.waiting_for or {}
+    if as_json or not sys.stdin.isatty():
+        return None
+    kind = waiting.get("kind")
+    if kind == "design_review":
+        from sdi.model.layout import parse_layout
+        from sdi.render import top_view
+
+        layout, _ = parse_layout(waiting.get("layout") or {"objects": []})
+        out.print(top_view(layout, CellConfig()))
+        out.print(f"sequence: {' → '.join(waiting.get('sequence') or [])}")
+        answer = typer.prompt("Design review: [a]pprove, [e]dit FILE.json, [r]eject", default="a")
+    elif kind == "pre_execute":
+        out.print(f"planned: {waiting.get('planning')}")
+        answer = typer.prompt("Execute on the robots (sim)? [a]pprove / [r]eject", default="r")
+    else:
+        out.print(f"[red]failure[/red]: {waiting.get('failure')} {waiting.get('violations')}")
+        answer = typer.prompt("Failure report: [r]etry, [e]dit FILE.json, [x] abort", default="x")
+    if answer.startswith("e"):
+        path = answer.split(maxsplit=1)[1] if " " in answer else typer.prompt("edits file")
+        return {"action": "edit", "edits": json.loads(Path(path).read_text(encoding="utf-8"))}
+    if kind == "failure_report":
+        return {"action": "retry" if answer.startswith("r") else "abort"}
+    return {"action": "approve" if answer.startswith("a") else "reject"}
+
+
+def _drive(orch: Any, status: Any, as_json: bool) -> Any:
+    while status.status == "paused":
+        decision = _review(status, as_json)
+        if decision is None:
+            break
+        status = orch.resume(status.run_id, decision)
+    return status
+
+
+def _finish(status: Any, as_json: bool) -> None:
+    data = status.to_json_dict()
+    if as_json:
+        _emit(data)
+    else:
+        out.print_json(data=data)
+        if status.status == "paused":
+            kind = (status.waiting_for or {}).get("kind")
+            err.print(
+                f"[yellow]paused at {kind}[/yellow]: nothing moves without a human OK. "
+                f"Continue with `sdi resume {status.run_id} --approve` (or --reject, --edit FILE)"
+            )
+    codes = {"success": 0, "paused": 0}
+    raise typer.Exit(codes.get(status.status, 1))
 
 
 @app.command("run")
 def run_cmd(
     command: Annotated[str, typer.Argument(help="what to build, in plain language")],
     approve: Annotated[
-        bool, typer.Option("--approve", help="approve the design and the execution (unattended)")
+        bool, typer.Option("--approve", help="approve design and execution (unattended runs)")
     ] = False,
     json_out: JsonOption = False,
     cell_path: CellOption = None,
     arms: ArmsOption = None,
-    epsilon: Annotated[float, typer.Option(help="V_traj threshold on δ, rad")] = 0.05,
-    report_dir: Annotated[
-        Path | None, typer.Option("--report", help="write plan.json, report.json, deviation.png")
+    backend: BackendOption = "rules",
+    method: MethodOption = "Hybrid",
+    fault: Annotated[
+        list[str] | None, typer.Option("--fault", help="inject a failure scenario (repeatable)")
     ] = None,
+    db: DbOption = None,
 ) -> None:
-    """Plan, review, commission, confirm, execute in simulation and monitor one command."""
-    from sdi.commission import commission, execute
-    from sdi.errors import MotionPlanningError
-    from sdi.monitor import deviation, plot_deviation
+    """Run the whole orchestrator graph: plan, design, inspect, review, confirm, execute (sim)."""
+    from sdi.execute.faults import SCENARIOS
+    from sdi.orchestrator import Orchestrator
 
+    unknown = [f for f in fault or [] if f not in SCENARIOS]
+    if unknown:
+        _bad_input(
+            InputError(
+                f"unknown scenario {unknown}; choose from {sorted(SCENARIOS)}", field="--fault"
+            ),
+            json_out,
+        )
     cell = _cell(cell_path, json_out)
-    result = run_plan(command, cell)
-    if not json_out:
-        print_plan(out, result, cell)
-    if result.status != "success" or result.layout is None:
-        if json_out:
-            _emit({"design": result.to_json_dict()})
-        raise typer.Exit({"failure": 1, "error": 2}.get(result.status, 1))
-    _human_ok("Approve this design for the robots?", approve, json_out)
+    model, server = _model(backend, json_out)
     try:
-        plan = commission(
-            result.layout, cell, sequence=result.sequence, arms=arms.split(",") if arms else None
-        )
-    except InputError as exc:
-        _bad_input(exc, json_out)
-    except MotionPlanningError as exc:
-        event = getattr(exc.event, "to_json_dict", lambda: None)()
-        if json_out:
-            _emit(
-                {
-                    "design": result.to_json_dict(),
-                    "status": "failure",
-                    "error": str(exc),
-                    "event": event,
-                }
+        orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
+        try:
+            status = orch.start(
+                command, method=method, backend=backend, faults=list(fault or []), approve=approve
             )
-        else:
-            err.print(f"[bold red]motion planning failed:[/bold red] {exc}")
-        raise typer.Exit(1) from None
-    summary = plan.summary()
-    if not json_out:
-        out.print(f"[bold]commissioning[/bold]: {summary}")
-    _human_ok(
-        f"Execute {summary['steps']} steps (makespan {summary['makespan_s']} s)?", approve, json_out
-    )
-    executed, report = execute(plan, epsilon=epsilon)
-    report = {"design": result.to_json_dict(), "planning": summary, **report}
-    if report_dir is not None:
-        report_dir.mkdir(parents=True, exist_ok=True)
-        (report_dir / "report.json").write_text(
-            json.dumps(report, indent=2) + "\n", encoding="utf-8"
-        )
-        if executed.executed and set(executed.executed) == set(plan.motion.trajectories):
-            plot_deviation(
-                deviation(plan.motion.trajectories, executed.executed),
-                epsilon,
-                report_dir / "deviation.png",
-            )
+        except InputError as exc:
+            _bad_input(exc, json_out)
+        if not json_out:
+            err.print(f"run {status.run_id}")
+        status = _drive(orch, status, json_out)
+    finally:
+        if server is not None:
+            server.stop()
+    _finish(status, json_out)
+
+
+@app.command("resume")
+def resume_cmd(
+    run_id: Annotated[str, typer.Argument(help="the run to continue")],
+    approve: Annotated[
+        bool, typer.Option("--approve", help="answer the pending review: approve")
+    ] = False,
+    reject: Annotated[
+        bool, typer.Option("--reject", help="answer the pending review: reject")
+    ] = False,
+    edit: Annotated[
+        Path | None, typer.Option("--edit", help="answer with edits from a JSON file")
+    ] = None,
+    json_out: JsonOption = False,
+    cell_path: CellOption = None,
+    arms: ArmsOption = None,
+    backend: BackendOption = "rules",
+    db: DbOption = None,
+) -> None:
+    """Continue a paused or interrupted run (after a review prompt, a crash or a kill)."""
+    from sdi.orchestrator import Orchestrator
+
+    decision: dict[str, Any] | None = None
+    if edit is not None:
+        try:
+            edits = json.loads(edit.read_text(encoding="utf-8"))
+        except (OSError, json.JSONDecodeError) as exc:
+            _bad_input(InputError(f"cannot read edits: {exc}", field="--edit"), json_out)
+        decision = {"action": "edit", "edits": edits}
+    elif approve:
+        decision = {"action": "approve"}
+    elif reject:
+        decision = {"action": "reject"}
+    cell = _cell(cell_path, json_out)
+    model, server = _model(backend, json_out)
+    try:
+        orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
+        try:
+            status = orch.resume(run_id, decision)
+        except InputError as exc:
+            _bad_input(exc, json_out)
+        if decision is None:
+            status = _drive(orch, status, json_out)
+        elif approve:
+            while (
+                status.status == "paused"
+                and (status.waiting_for or {}).get("kind") != "failure_report"
+            ):
+                status = orch.resume(run_id, {"action": "approve"})
+    finally:
+        if server is not None:
+            server.stop()
+    _finish(status, json_out)
+
+
+@app.command("log")
+def log_cmd(
+    run_id: Annotated[str, typer.Argument(help="the run whose audit trail to show")],
+    json_out: JsonOption = False,
+    db: DbOption = None,
+) -> None:
+    """The message-bus audit trail of a run: who told whom what, in order."""
+    from sdi.orchestrator import MessageBus, default_db
+
+    bus = MessageBus(db or default_db())
+    history = bus.history(run_id)
+    if not history:
+        _bad_input(InputError(f"no run {run_id!r}", field="RUN_ID"), json_out)
     if json_out:
-        _emit(report)
-    else:
-        out.print_json(data={k: v for k, v in report.items() if k != "design"})
-    raise typer.Exit(0 if report["status"] == "success" and report["v_traj"] == "pass" else 1)
+        _emit({"run_id": run_id, "messages": [m.__dict__ for m in history]})
+        return
+    from rich.table import Table
+
+    table = Table(title=f"run {run_id}")
+    for col in ("#", "sender", "receiver", "type", "payload"):
+        table.add_column(col)
+    for m in history:
+        table.add_row(
+            str(m.seq), m.sender, m.receiver, m.type, json.dumps(m.payload, default=str)[:120]
+        )
+    out.print(table)
 
 
 @app.command()

@@ -1,0 +1,264 @@
+"""ξ_generate / ξ_modify, the Designer: spec → layout, in three interchangeable strategies.
+
+- `RuleDesigner`: the parametric generators (no model; the `rules` backend).
+- `LoopDesigner`: one LLM call per attempt (paper Alg. 2). `feedback` selects the baseline:
+  "none" (LLM-Direct, one pass), "full" (LLM-FixedLoop: every constraint and every violation
+  each retry), "adaptive" (LLM-AdaptLoop: only φ(E), the violated constraints, and the previous
+  layout); `full_prompt` puts all of K into the first prompt (LLM-FullPrompt).
+- `AgenticDesigner`: a function-calling loop over the skill registry (paper Alg. 3) with a step
+  budget and the "output final JSON" nudge.
+
+Every strategy ends in the same safety gate (paper eq. 17): the layout is verified by the
+Inspector and returned only if it passes. Malformed output — not JSON, wrong types, unknown
+fields or tools, hallucinated ids, oversized replies — is counted and fed back, never raised.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+from pydantic import ValidationError
+
+from sdi.agents.prompts import all_constraints, few_shot_messages, phi, system_prompt
+from sdi.design.composer import compose
+from sdi.errors import InfeasibleError, InputError
+from sdi.inspector.verifier import Report, verify
+from sdi.llm.chat import ChatModel, Message
+from sdi.llm.openai_backend import LLMError, parse_json
+from sdi.model.cell import CellConfig
+from sdi.model.layout import Layout, parse_layout
+from sdi.skills.registry import SkillRegistry
+from sdi.spec.structure_spec import Spec
+
+MAX_TOOL_RESULT = 6000
+"""Characters of a tool result sent back to the model (the rest is cut, with a note)."""
+
+
+@dataclass
+class DesignOutcome:
+    status: Literal["success", "failure"]
+    layout: Layout | None
+    report: Report | None
+    attempts: int = 0
+    notes: list[str] = field(default_factory=list)
+
+
+def safety_gate(
+    layout: Layout | None, cell: CellConfig, attempts: int, notes: list[str]
+) -> DesignOutcome:
+    """C_final = C if V(C, K) passes, else FAILURE (paper eq. 17)."""
+    if layout is None:
+        return DesignOutcome("failure", None, None, attempts, [*notes, "no layout produced"])
+    report = verify(layout, cell)
+    if report.passed:
+        return DesignOutcome("success", layout, report, attempts, notes)
+    return DesignOutcome(
+        "failure",
+        layout,
+        report,
+        attempts,
+        [*notes, f"safety gate: {len(report.violations)} violation(s)"],
+    )
+
+
+def _layout_from(value: Any, cell: CellConfig) -> Layout:
+    if isinstance(value, dict) and "layout" in value and "objects" not in value:
+        value = value["layout"]
+    layout, _ = parse_layout(value, max_parts=cell.limits.max_parts)
+    return layout
+
+
+class RuleDesigner:
+    name = "parametric"
+
+    def __init__(self, cell: CellConfig | None = None) -> None:
+        self.cell = cell or CellConfig()
+
+    def design(self, spec: Spec | None, command: str = "") -> DesignOutcome:
+        if spec is None:
+            return DesignOutcome("failure", None, None, 0, ["the parametric designer needs a spec"])
+        try:
+            layout = compose(spec, self.cell)
+        except (InfeasibleError, InputError) as exc:
+            return DesignOutcome("failure", None, None, 1, [str(exc)])
+        return safety_gate(layout, self.cell, 1, [])
+
+
+class LoopDesigner:
+    """Alg. 2 and its baselines: one structured-output LLM call per attempt."""
+
+    def __init__(
+        self,
+        model: ChatModel,
+        cell: CellConfig | None = None,
+        *,
+        t_max: int = 3,
+        feedback: Literal["none", "full", "adaptive"] = "adaptive",
+        full_prompt: bool = False,
+    ) -> None:
+        self.model = model
+        self.cell = cell or CellConfig()
+        self.t_max = 1 if feedback == "none" else t_max
+        self.feedback = feedback
+        self.full_prompt = full_prompt
+        self.name = {"none": "direct", "full": "fixed-loop", "adaptive": "adaptive-loop"}[feedback]
+
+    def _minimal(self, spec: Spec | None, command: str) -> list[Message]:
+        system = system_prompt(self.cell)
+        if self.full_prompt:
+            system += "\nAll constraints:\n" + all_constraints()
+        task = (
+            command
+            if spec is None
+            else f"{command}\nSpecification: {spec.model_dump_json(exclude_none=True)}"
+        )
+        return [
+            {"role": "system", "content": system},
+            *few_shot_messages(),
+            {"role": "user", "content": task},
+        ]
+
+    def design(
+        self,
+        spec: Spec | None,
+        command: str = "",
+        start: Layout | None = None,
+        violations: tuple[Any, ...] = (),
+    ) -> DesignOutcome:
+        prompt = self._minimal(spec, command)
+        if start is not None:  # ξ_modify: repair a given layout
+            prompt += self._retry(start, violations, None)
+        notes: list[str] = []
+        layout: Layout | None = None
+        for attempt in range(1, self.t_max + 1):
+            try:
+                reply = self.model.chat(
+                    prompt, json_schema=Layout.model_json_schema(), max_tokens=2048, role="designer"
+                )
+            except LLMError as exc:
+                notes.append(str(exc))
+                break
+            try:
+                layout = _layout_from(parse_json(reply.content), self.cell)
+            except (ValueError, ValidationError, InputError) as exc:
+                self.model.usage.malformed += 1
+                notes.append(f"attempt {attempt}: malformed layout ({exc})")
+                retry = f"Your answer was not a valid layout: {exc}. Answer with JSON only."
+                prompt = [
+                    *self._minimal(spec, command),
+                    {
+                        "role": "user",
+                        "content": retry,
+                    },
+                ]
+                layout = None
+                continue
+            report = verify(layout, self.cell)
+            if report.passed:
+                return DesignOutcome("success", layout, report, attempt, notes)
+            notes.append(f"attempt {attempt}: {len(report.violations)} violation(s)")
+            prompt = self._minimal(spec, command) + self._retry(layout, report.violations, report)
+        return safety_gate(layout, self.cell, self.t_max, notes)
+
+    def _retry(self, layout: Layout, violations: Any, report: Report | None) -> list[Message]:
+        previous = json.dumps(layout.to_json_dict())
+        if self.feedback == "full":
+            found = "\n".join(f"- {v.message}" for v in violations)
+            text = (
+                "Your layout failed verification.\nAll constraints:\n"
+                f"{all_constraints()}\nViolations:\n{found}"
+            )
+        else:
+            text = "Your layout failed verification.\n" + phi(violations)
+        return [
+            {"role": "assistant", "content": previous},
+            {"role": "user", "content": text + "\nReturn the corrected layout as JSON only."},
+        ]
+
+
+SKILL_INSTRUCTIONS = (
+    "You have tools. Prefer a generate_* tool to build a structure, call verify to check a "
+    "layout, and flatten/shift to repair one. When the layout passes, answer with the final "
+    'layout as JSON only: {"objects": [...]}.'
+)
+
+
+class AgenticDesigner:
+    """Alg. 3: the LLM picks skills through function calling until it outputs a layout."""
+
+    name = "agentic"
+
+    def __init__(
+        self,
+        model: ChatModel,
+        registry: SkillRegistry,
+        cell: CellConfig | None = None,
+        *,
+        t_max: int = 8,
+    ) -> None:
+        self.model = model
+        self.registry = registry
+        self.cell = cell or CellConfig()
+        self.t_max = t_max
+
+    def design(
+        self,
+        spec: Spec | None,
+        command: str = "",
+        start: Layout | None = None,
+        violations: tuple[Any, ...] = (),
+    ) -> DesignOutcome:
+        task = (
+            command
+            if spec is None
+            else f"{command}\nSpecification: {spec.model_dump_json(exclude_none=True)}"
+        )
+        if start is not None:
+            task += (
+                "\nRepair this layout: " + json.dumps(start.to_json_dict()) + "\n" + phi(violations)
+            )
+        messages: list[Message] = [
+            {"role": "system", "content": system_prompt(self.cell) + "\n" + SKILL_INSTRUCTIONS},
+            {"role": "user", "content": task},
+        ]
+        notes: list[str] = []
+        layout: Layout | None = None
+        candidate: Layout | None = None  # the last layout a tool produced
+        tools = self.registry.tools()
+        steps = 0
+        for steps in range(1, self.t_max + 1):
+            try:
+                reply = self.model.chat(messages, tools=tools, max_tokens=1024, role="designer")
+            except LLMError as exc:
+                notes.append(str(exc))
+                break
+            if reply.tool_calls:
+                messages.append(reply.as_message())
+                for call in reply.tool_calls:
+                    result = self.registry.dispatch(call.name, call.arguments)
+                    if result.status == "failure":
+                        self.model.usage.malformed += int(call.name not in self.registry)
+                    produced = result.data.get("layout")
+                    if produced is not None:
+                        with contextlib.suppress(InputError):
+                            candidate = _layout_from(produced, self.cell)
+                    text = result.to_json()
+                    if len(text) > MAX_TOOL_RESULT:
+                        text = text[:MAX_TOOL_RESULT] + f"... (cut; {len(text)} characters)"
+                    messages.append({"role": "tool", "tool_call_id": call.id, "content": text})
+                continue
+            try:
+                layout = _layout_from(parse_json(reply.content), self.cell)
+                break
+            except (ValueError, ValidationError, InputError) as exc:
+                self.model.usage.malformed += 1
+                notes.append(f"step {steps}: no layout in the reply ({exc})")
+                messages.append(reply.as_message())
+                messages.append({"role": "user", "content": "Output final JSON: the layout only."})
+        if layout is None and candidate is not None:
+            notes.append("used the last layout a tool produced")
+            layout = candidate
+        return safety_gate(layout, self.cell, steps, notes)

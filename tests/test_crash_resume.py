@@ -1,0 +1,98 @@
+"""Crash and resume with the real CLI, SQLite checkpoints and processes that really die."""
+
+from __future__ import annotations
+
+import json
+import os
+import pty
+import re
+import select
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from sdi.orchestrator import MessageBus
+
+pytestmark = pytest.mark.slow
+SDI = [sys.executable, "-m", "sdi.cli"]
+
+
+def history(db, run_id: str) -> list[str]:
+    bus = MessageBus(db)
+    try:
+        return [m.type for m in bus.history(run_id)]
+    finally:
+        bus.close()
+
+
+def test_kill_during_human_review_then_resume(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    master, slave = pty.openpty()  # stdin is a terminal: the CLI asks and waits
+    proc = subprocess.Popen(
+        [*SDI, "run", "a 2-cube tower at x = 0.4", "--db", str(db), "--arms", "irb120"],
+        stdin=slave, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+    )  # fmt: skip
+    os.close(slave)
+    seen = b""
+    deadline = time.monotonic() + 120
+    while b"Design review" not in seen and time.monotonic() < deadline:
+        ready, _, _ = select.select([proc.stdout, proc.stderr], [], [], 1.0)
+        for stream in ready:
+            seen += os.read(stream.fileno(), 65536)
+    assert b"Design review" in seen, seen[-2000:]
+    run_id = re.search(rb"run ([0-9a-f]{12})", seen).group(1).decode()
+    proc.send_signal(signal.SIGKILL)  # the operator's terminal dies mid-review
+    proc.wait(timeout=30)
+    proc.stdout.close()
+    proc.stderr.close()
+    os.close(master)
+    before = history(db, run_id)
+    assert "verification" in before and "execution" not in before
+    done = subprocess.run(
+        [*SDI, "resume", run_id, "--approve", "--db", str(db), "--arms", "irb120", "--json"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    result = json.loads(done.stdout)
+    assert result["status"] == "success" and result["execution"]["v_traj"] == "pass"
+    after = history(db, run_id)
+    assert after[: len(before)] == before  # nothing from before the kill was lost
+
+
+def test_crash_during_replan_then_resume(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    env = {**os.environ, "SDI_CRASH_AT": "replan"}
+    crashed = subprocess.run(
+        [*SDI, "run", "a 3-cube tower at x = 0.4", "--fault", "low_ceiling", "--approve",
+         "--db", str(db), "--arms", "irb120", "--json"],
+        capture_output=True, text=True, timeout=600, env=env,
+    )  # fmt: skip
+    assert crashed.returncode == 137  # died inside REPLAN
+    bus = MessageBus(db)
+    (run_id,) = bus.runs()
+    failures = [m for m in bus.history(run_id) if m.type == "execution"]
+    bus.close()
+    assert failures and failures[0].payload["status"] == "failure"
+    resumed = subprocess.run(
+        [*SDI, "resume", run_id, "--approve", "--db", str(db), "--arms", "irb120", "--json"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert resumed.returncode == 0, resumed.stderr
+    result = json.loads(resumed.stdout)
+    assert result["status"] == "success" and result["tried"][0] == "flatten"
+    log = subprocess.run(
+        [*SDI, "log", run_id, "--db", str(db), "--json"], capture_output=True, text=True
+    )
+    types = [m["type"] for m in json.loads(log.stdout)["messages"]]
+    assert types.count("execution") == 2 and "route" in types
+
+
+def test_resume_unknown_run_is_bad_input(tmp_path):
+    proc = subprocess.run(
+        [*SDI, "resume", "deadbeef0000", "--db", str(tmp_path / "x.sqlite")],
+        capture_output=True, text=True, timeout=120,
+    )  # fmt: skip
+    assert proc.returncode == 2 and "deadbeef0000" in proc.stderr
