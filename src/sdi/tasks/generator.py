@@ -265,6 +265,9 @@ class TaskGenerator:
         steps: list[PickPlace] = []
         free_at = dict.fromkeys(self.robots, 0.0)
         ends: dict[int, float] = {}
+        # Look-ahead: work only one robot can do is reserved for it, so flexible steps go to
+        # the other arm (time each robot still owes to exclusive steps, s).
+        exclusive = self._exclusive_load(layout, order, a, rank, slots)
         for k, pid in enumerate(order):
             i = index[pid]
             part = layout.objects[i]
@@ -289,12 +292,14 @@ class TaskGenerator:
                     duration = self._estimate(robot, last_q[name], pick_q, place_q)
                     start = max([free_at[name], *(ends[d] for d in depends)])
                     end = start + duration
-                    if best is None or end < best[0] - 1e-9:
+                    owed = sum(t for j, t in exclusive.get(name, {}).items() if j > k)
+                    score = end + owed
+                    if best is None or score < best[0] - 1e-9:
                         step = self._step(
                             k, pid, name, option, T_part, T_supply, T_part_tcp, pick_q, place_q,
                             part.size, depends,
                         )  # fmt: skip
-                        best = (end, step, duration)
+                        best = (score, step, end)
             if best is None:
                 tools = sorted({o.kind for o in options}) or ["none"]
                 raise MotionPlanningError(
@@ -308,7 +313,7 @@ class TaskGenerator:
                         message="no inverse kinematics solution for the supply or target pose",
                     ),
                 )
-            end, step, duration = best
+            _, step, end = best
             steps.append(step)
             used[step.robot] += 1
             last_q[step.robot] = step.place[2].q
@@ -316,6 +321,43 @@ class TaskGenerator:
             ends[k] = end
         plan = TaskPlan(tuple(steps), tuple(self.robots), dict(self.home))
         return plan, self.schedule(plan)
+
+    def _exclusive_load(
+        self,
+        layout: Layout,
+        order: list[str],
+        a: Analysis,
+        rank: np.ndarray,
+        slots: dict[str, list[np.ndarray]],
+    ) -> dict[str, dict[int, float]]:
+        """Per robot: estimated seconds of the steps that only it can do, by step index."""
+        out: dict[str, dict[int, float]] = {}
+        if len(self.robots) < 2:
+            return out
+        index = layout.index
+        for k, pid in enumerate(order):
+            part = layout.objects[index[pid]]
+            T_part = _frame(rotation_matrix(part.orientation), np.array(part.position))
+            half = 0.5 * np.array(part.size)
+            options = self._options(a, index[pid], rank)
+            able: dict[str, float] = {}
+            for name, robot in self.robots.items():
+                if name not in self.areas or not slots[name]:
+                    continue
+                T_supply = slots[name][0].copy()
+                T_supply[2, 3] = part.size[2] / 2
+                for option in options:
+                    if option.kind != robot.tool.kind:
+                        continue
+                    found = self._try(robot, option, T_part, T_supply, half, self.home[name])
+                    if found is not None:
+                        home = self.home[name]
+                        able[name] = self._estimate(robot, home, found[1], found[2])
+                        break
+            if len(able) == 1:
+                ((name, seconds),) = able.items()
+                out.setdefault(name, {})[k] = seconds
+        return out
 
     def _estimate(
         self, robot: RobotModel, q0: np.ndarray, pick: list[np.ndarray], place: list[np.ndarray]
