@@ -66,10 +66,28 @@ def plan(
     out_file: Annotated[
         Path | None, typer.Option("--out", help="also write the JSON result here")
     ] = None,
+    backend: Annotated[
+        str, typer.Option("--backend", help="rules (offline, default) | local (llama.cpp) | openai")
+    ] = "rules",
+    method: Annotated[
+        str, typer.Option("--method", help="a method of the paper's Table II")
+    ] = "Hybrid",
 ) -> None:
     """Plan a command end to end: spec → layout → verification → assembly sequence."""
     cell = _cell(cell_path, json_out)
-    result = run_plan(command, cell)
+    if backend == "rules" and method == "Hybrid":
+        result = run_plan(command, cell)
+    else:
+        from sdi.pipeline import plan_with
+
+        model, server = _model(backend, json_out)
+        try:
+            result = plan_with(command, method, model, cell)
+        except InputError as exc:
+            _bad_input(exc, json_out)
+        finally:
+            if server is not None:
+                server.stop()
     data = result.to_json_dict()
     if out_file is not None and result.status == "success":
         tmp = out_file.with_suffix(out_file.suffix + ".tmp")

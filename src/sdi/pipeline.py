@@ -84,3 +84,49 @@ def plan(command: str, cell: CellConfig | None = None) -> PlanResult:
         violations=report.violations,
         error=None if report.passed else f"{len(report.violations)} constraint violation(s)",
     )
+
+
+def plan_with(command: str, method: str, model: Any, cell: CellConfig | None = None) -> PlanResult:
+    """Plan `command` with a method's Specifier and Designer and a chat model (design only).
+
+    The same JSON contract as `plan`; `llm_calls` counts the model's calls. The Inspector has
+    the last word: status is ``success`` only if the final layout passed every check.
+    """
+    from sdi.agents.specifier import Specifier
+    from sdi.orchestrator.graph import RunContext, _designer
+    from sdi.orchestrator.methods import METHODS
+
+    if method not in METHODS:
+        raise InputError(
+            f"unknown method {method!r}; choose from {sorted(METHODS)}", field="--method"
+        )
+    cell = cell or CellConfig()
+    m = METHODS[method]
+    start = time.perf_counter()
+    before = model.usage.calls if model is not None else 0
+
+    def done(**kw: Any) -> PlanResult:
+        calls = (model.usage.calls - before) if model is not None else 0
+        return PlanResult(
+            command=command, seconds=time.perf_counter() - start, llm_calls=calls, **kw
+        )
+
+    spec: Spec | None = None
+    if model is None or m.specifier:
+        try:
+            spec = Specifier(model if m.specifier else None, cell).specify(command).spec
+        except SpecError as exc:
+            return done(status="error", error=str(exc), understood=exc.understood or None)
+    ctx = RunContext(cell, m, model, None)  # type: ignore[arg-type]
+    outcome = _designer(ctx).design(spec, command)
+    if outcome.layout is None:
+        return done(status="failure", spec=spec, error="; ".join(outcome.notes) or "no layout")
+    report = outcome.report or verify(outcome.layout, cell)
+    return done(
+        status="success" if report.passed else "failure",
+        spec=spec,
+        layout=outcome.layout,
+        sequence=report.sequence,
+        violations=report.violations,
+        error=None if report.passed else f"{len(report.violations)} constraint violation(s)",
+    )
