@@ -108,3 +108,12 @@ def test_driver_refuses_a_job_it_did_not_get_from_the_inspector(single_arm):
     plan, _, _ = single_arm
     with pytest.raises(UnverifiedPlanError):
         VerifiedJob(plan.job.layout, plan.job.sequence, plan.job.cell, plan.job.report)
+
+
+def test_as_built_check_reports_parts_out_of_tolerance():
+    plan = commission(towers((2, 0.4)), arms=["irb120"])
+    strict = SimDriver(plan.robots, placement_tolerance=1e-6)  # tighter than any real placement
+    result, report = execute(plan, driver=strict)
+    assert result.status == "failure"
+    assert report["failure"]["error_type"] == "placement"
+    assert report["failure"]["part_id"] in {"c1", "c2"}

@@ -139,6 +139,52 @@ def arms_clear(
     return None
 
 
+def order_clear(
+    motion: MotionPlan, robots: dict[str, RobotModel], tasks: TaskPlan, rate_hz: float = 50.0
+) -> str | None:
+    """Check the re-timed plan against parts placed ahead of the assembly order.
+
+    Each step was planned against the parts placed before it in σ*. Run in parallel, the other
+    arm may already have placed parts that come later in σ*: those are obstacles the step never
+    saw. For every sample of every step, the robot (and what it carries) is checked against
+    exactly those parts. Returns a description of the first contact, or None.
+    """
+    released = {e.part_id: e.t for e in motion.events if e.kind == "release"}
+    gripped = {e.part_id: e.t for e in motion.events if e.kind == "grip"}
+    by_part = {s.part_id: s for s in tasks.steps}
+    rank = {s.part_id: s.step for s in tasks.steps}
+    with Scene({n: robots[n] for n in tasks.robots}) as scene:
+        placed: list[str] = []
+        for m in sorted(motion.steps, key=lambda m: m.start):
+            step = by_part[m.part_id]
+            ahead = sorted(
+                (pid for pid, t in released.items() if rank[pid] > step.step and t < m.end),
+                key=released.__getitem__,
+            )
+            if not ahead:
+                continue
+            tr = motion.trajectories[m.robot]
+            for t in np.arange(m.start, m.end, 1.0 / rate_hz):
+                present = [pid for pid in ahead if released[pid] <= t]
+                for pid in present:
+                    if pid not in placed:
+                        s = by_part[pid]
+                        scene.add_part(pid, s.T_world_part_target, s.part_size)
+                        placed.append(pid)
+                carrying = gripped[m.part_id] <= t < released[m.part_id]
+                if carrying and m.robot not in scene.carried:
+                    scene.attach(m.robot, step.T_tcp_part, step.part_size)
+                if not carrying and m.robot in scene.carried:
+                    scene.detach(m.robot)
+                q = tr.at(np.array([t]))[0]
+                ignore = frozenset(set(scene.parts) - set(present)) | {"table"}
+                hit = scene.collides(m.robot, q, ignore_parts=ignore, margin=0.001)
+                if hit is not None and ("part" in hit):
+                    return f"step {step.step + 1} ({m.robot}) at t = {t:.1f} s would touch {hit}"
+            scene.detach(m.robot)
+    return None
+
+
 def commission(
     layout: Layout,
     cell: CellConfig | None = None,
@@ -166,8 +212,10 @@ def commission(
     parallel = len({s.robot for s in tasks.steps}) > 1
     if parallel:
         clash = arms_clear(motion, robots, tasks)
-        if clash is not None:
-            notes.append(f"the arms would meet at t = {clash:.2f} s in parallel: one arm at a time")
+        reason = None if clash is None else f"the arms would meet at t = {clash:.2f} s"
+        reason = reason or order_clear(motion, robots, tasks)
+        if reason is not None:
+            notes.append(f"in parallel, {reason}: one arm at a time")
             motion, parallel = sequential, False
             schedule = Schedule(
                 tuple(

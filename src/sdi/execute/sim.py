@@ -33,6 +33,9 @@ from sdi.tasks.events import FailureEvent
 from sdi.tasks.generator import pose_tuple
 from sdi.tasks.task import TaskPlan
 
+DISTURBANCE = 0.003
+"""A placed part that moves more than this (m) after settling was disturbed: execution stops."""
+
 
 @dataclass
 class ExecutionResult:
@@ -72,6 +75,7 @@ class SimDriver:
         friction: float = 0.9,
         faults: tuple[FaultScenario, ...] = (),
         settle_seconds: float = 0.5,
+        placement_tolerance: float = 0.005,
         solver_iterations: int = 150,
         position_gain: float = 0.8,
     ) -> None:
@@ -81,6 +85,7 @@ class SimDriver:
         self.friction = friction
         self.faults = faults
         self.settle_seconds = settle_seconds
+        self.placement_tolerance = placement_tolerance
         self.solver_iterations = solver_iterations
         self.position_gain = position_gain
 
@@ -154,6 +159,8 @@ class SimDriver:
         parts: dict[str, int] = {}
         held: dict[str, tuple[int, str]] = {}  # robot → (constraint, part id)
         spawned: set[int] = set()
+        released: dict[str, float] = {}
+        settled: dict[str, np.ndarray] = {}
         failure: FailureEvent | None = None
         status = "success"
         end = max(tr.t[-1] for tr in motion.trajectories.values())
@@ -201,20 +208,11 @@ class SimDriver:
                     constraint, _ = held.pop(e.robot)
                     pb.removeConstraint(constraint, physicsClientId=c)
                     done_steps += 1
+                    released[e.part_id] = t
             if failure is not None:
                 break
             for name, (body, joints, _) in bodies.items():
-                tr = motion.trajectories[name]
-                target = tr.at(np.array([t]))[0]
-                ahead = tr.at(np.array([t + 1.0 / tr.rate_hz]))[0]
-                velocity = (ahead - target) * tr.rate_hz  # feed-forward, rad/s
-                pb.setJointMotorControlArray(
-                    body, joints, pb.POSITION_CONTROL, targetPositions=target.tolist(),
-                    targetVelocities=velocity.tolist(), forces=[5000.0] * len(joints),
-                    positionGains=[self.position_gain] * len(joints),
-                    velocityGains=[1.0] * len(joints),
-                    physicsClientId=c,
-                )  # fmt: skip
+                self._control(c, body, joints, motion.trajectories[name], t)
             pb.stepSimulation(physicsClientId=c)
             breach = None
             for name, (body, joints, _) in bodies.items():
@@ -224,6 +222,34 @@ class SimDriver:
                     next_sample[name] += 1.0 / self.robots[name].controller_rate_hz
                     if monitor is not None:
                         breach = monitor.update(name, t, q) or breach  # type: ignore[attr-defined]
+            # placed parts must stay where they were set down (checked every 50 ms, after
+            # they had 0.2 s to settle)
+            if k % max(1, int(0.05 * self.physics_hz)) == 0:
+                for pid, t_rel in released.items():
+                    if t - t_rel < 0.2:
+                        continue
+                    pos, _ = pb.getBasePositionAndOrientation(parts[pid], physicsClientId=c)
+                    if pid not in settled:
+                        settled[pid] = np.array(pos)
+                        continue
+                    moved = float(np.linalg.norm(np.array(pos) - settled[pid]))
+                    if moved > DISTURBANCE:
+                        touching = sorted(
+                            {name for name, (body, _, _) in bodies.items()
+                             if pb.getContactPoints(body, parts[pid], physicsClientId=c)}
+                        )  # fmt: skip
+                        step = next(s for s in tasks.steps if s.part_id == pid)
+                        status = "failure"
+                        who = ", ".join(touching) or "another part"
+                        failure = FailureEvent(
+                            step=step.step, part_id=pid, error_type="collision",
+                            target_pose=pose_tuple(step.T_world_part_target), robot=step.robot,
+                            message=f"placed part {pid} was disturbed by {moved * 1000:.1f} mm at "
+                            f"t = {t:.2f} s (touching: {who})",
+                        )  # fmt: skip
+                        break
+                if failure is not None:
+                    break
             if breach is not None:
                 status = "paused"
                 step_now = max(
@@ -241,14 +267,26 @@ class SimDriver:
         as_built: dict[str, tuple[float, ...]] = {}
         errors: dict[str, float] = {}
         for placed in tasks.steps:
-            if placed.part_id not in parts:
-                continue
+            if placed.part_id not in released:
+                continue  # never set down (execution stopped before its step)
             pos, orn = pb.getBasePositionAndOrientation(parts[placed.part_id], physicsClientId=c)
             T = _pose_matrix(pos, orn)
             as_built[placed.part_id] = pose_tuple(T)
             errors[placed.part_id] = float(
                 np.linalg.norm(T[:3, 3] - placed.T_world_part_target[:3, 3])
             )
+        if failure is None and errors:
+            # the as-built check: every part must end where the design put it
+            worst = max(errors, key=lambda pid: errors[pid])
+            if errors[worst] > self.placement_tolerance:
+                step = next(s for s in tasks.steps if s.part_id == worst)
+                status = "failure"
+                failure = FailureEvent(
+                    step=step.step, part_id=worst, error_type="placement",
+                    target_pose=pose_tuple(step.T_world_part_target), robot=step.robot,
+                    message=f"as built {errors[worst] * 1000:.1f} mm from its design pose "
+                    f"(tolerance {self.placement_tolerance * 1000:.1f} mm)",
+                )  # fmt: skip
         executed = {}
         for name, rows in recorded.items():
             if rows:
@@ -265,6 +303,18 @@ class SimDriver:
             completed_steps=done_steps,
             simulated_seconds=min(end, n_steps * dt),
         )
+
+    def _control(self, c: int, body: int, joints: list[int], tr: JointTrajectory, t: float) -> None:
+        """Joint position control with velocity feed-forward from Q_plan."""
+        target = tr.at(np.array([t]))[0]
+        ahead = tr.at(np.array([t + 1.0 / tr.rate_hz]))[0]
+        velocity = (ahead - target) * tr.rate_hz  # feed-forward, rad/s
+        n = len(joints)
+        pb.setJointMotorControlArray(
+            body, joints, pb.POSITION_CONTROL, targetPositions=target.tolist(),
+            targetVelocities=velocity.tolist(), forces=[5000.0] * n,
+            positionGains=[self.position_gain] * n, velocityGains=[1.0] * n, physicsClientId=c,
+        )  # fmt: skip
 
     def _spawn(self, c: int, T: np.ndarray, size: tuple[float, float, float]) -> int:
         half = [s / 2 for s in size]

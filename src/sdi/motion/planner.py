@@ -357,10 +357,7 @@ class MotionPlanner:
         pb.resetBasePositionAndOrientation(
             probe, T[:3, 3].tolist(), _quat_xyzw(T[:3, :3]), physicsClientId=scene.client
         )
-        near = frozenset(
-            pid for pid, body in scene.parts.items()
-            if pb.getClosestPoints(probe, body, 0.002, physicsClientId=scene.client)
-        )  # fmt: skip
+        near = frozenset(scene.near_parts(probe, 0.002))
         pb.removeBody(probe, physicsClientId=scene.client)
         return near
 

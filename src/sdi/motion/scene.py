@@ -85,7 +85,9 @@ class Scene:
             # spherical wrist, are not checked; their boxes overlap at ordinary wrist angles.
             pairs = [(a, b) for a in links for b in links if b - a >= 3 and a != WRIST_FOREARM]
             self.robots[name] = _Loaded(model, body, joints, pairs)
-        self.parts: dict[str, int] = {}
+        self.parts: dict[str, int] = {}  # part id → link index in the compound body
+        self._placed: list[tuple[str, np.ndarray, tuple[float, float, float]]] = []
+        self._parts_body = -1
         self.carried: dict[str, tuple[int, np.ndarray]] = {}  # robot → (body, T_tcp_part)
 
     def close(self) -> None:
@@ -109,13 +111,41 @@ class Scene:
     def add_part(
         self, part_id: str, T_world_part: np.ndarray, size: tuple[float, float, float]
     ) -> None:
-        """A placed part: a static obstacle from now on."""
-        body = self._box(size)
-        pb.resetBasePositionAndOrientation(
-            body, T_world_part[:3, 3].tolist(), _quat_xyzw(T_world_part[:3, :3]),
-            physicsClientId=self.client,
+        """A placed part: a static obstacle from now on.
+
+        All placed parts are links of one static compound body, so a collision query against
+        them is one call whatever their number.
+        """
+        self._placed.append((part_id, T_world_part.copy(), size))
+        c = self.client
+        if self._parts_body >= 0:
+            pb.removeBody(self._parts_body, physicsClientId=c)
+        shapes = [
+            pb.createCollisionShape(pb.GEOM_BOX, halfExtents=[v / 2 for v in sz], physicsClientId=c)
+            for _, _, sz in self._placed
+        ]
+        n = len(shapes)
+        self._parts_body = pb.createMultiBody(
+            baseMass=0, baseCollisionShapeIndex=-1, basePosition=[0, 0, 0],
+            linkMasses=[0] * n, linkCollisionShapeIndices=shapes, linkVisualShapeIndices=[-1] * n,
+            linkPositions=[T[:3, 3].tolist() for _, T, _ in self._placed],
+            linkOrientations=[_quat_xyzw(T[:3, :3]) for _, T, _ in self._placed],
+            linkInertialFramePositions=[[0, 0, 0]] * n,
+            linkInertialFrameOrientations=[[0, 0, 0, 1]] * n,
+            linkParentIndices=[0] * n, linkJointTypes=[pb.JOINT_FIXED] * n,
+            linkJointAxis=[[0, 0, 1]] * n, physicsClientId=c,
         )  # fmt: skip
-        self.parts[part_id] = body
+        self.parts = {pid: k for k, (pid, _, _) in enumerate(self._placed)}
+
+    def near_parts(self, body: int, distance: float, link: int | None = None) -> set[str]:
+        """Placed parts within `distance` (m) of `body` (or one of its links)."""
+        if self._parts_body < 0:
+            return set()
+        kwargs = {} if link is None else {"linkIndexA": link}
+        points = pb.getClosestPoints(
+            body, self._parts_body, distance, physicsClientId=self.client, **kwargs
+        )
+        return {self._placed[p[4]][0] for p in points if 0 <= p[4] < len(self._placed)}
 
     def attach(self, robot: str, T_tcp_part: np.ndarray, size: tuple[float, float, float]) -> None:
         """`robot` carries a part of `size` at T_tcp_part until `detach`."""
@@ -162,14 +192,12 @@ class Scene:
         r = self.robots[robot]
         c = self.client
         # every moving link against the table (the base, link −1, stands on it)
-        for link in range(pb.getNumJoints(r.body, physicsClientId=c)):
-            if self._near(r.body, self.table, link):
-                return "table"
-        for pid, body in self.parts.items():
-            if pid in ignore_parts:
-                continue
-            if self._near(r.body, body):
-                return f"part {pid}"
+        on_table = pb.getClosestPoints(r.body, self.table, self._margin, physicsClientId=c)
+        if any(p[3] != -1 for p in on_table):
+            return "table"
+        hit = sorted(self.near_parts(r.body, self._margin) - ignore_parts)
+        if hit:
+            return f"part {hit[0]}"
         for name, other in self.robots.items():
             if name != robot and self._near(r.body, other.body):
                 return f"robot {name}"
@@ -183,9 +211,9 @@ class Scene:
             box = held[0]
             if "table" not in ignore_parts and self._near(box, self.table):
                 return "table (carried part)"
-            for pid, body in self.parts.items():
-                if pid not in ignore_parts and self._near(box, body):
-                    return f"part {pid} (carried part)"
+            hit = sorted(self.near_parts(box, self._margin) - ignore_parts)
+            if hit:
+                return f"part {hit[0]} (carried part)"
             for name, other in self.robots.items():
                 if name != robot and self._near(box, other.body):
                     return f"robot {name} (carried part)"

@@ -5,7 +5,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Literal
 
-ErrorType = Literal["ik", "collision", "timeout", "unreachable", "grip", "deviation", "blocked"]
+ErrorType = Literal[
+    "ik", "collision", "timeout", "unreachable", "grip", "deviation", "blocked", "placement"
+]
 
 
 @dataclass(frozen=True)

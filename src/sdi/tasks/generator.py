@@ -36,6 +36,8 @@ from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
 
 APPROACH_HEIGHT = 0.10
 """Approach and retreat waypoints sit this far above the grasp, m."""
+PLACEMENT_CLEARANCE = 0.0008
+"""Gap (m) left beside already-placed side neighbours when setting a part down."""
 CONFLICT_DISTANCE = 0.25
 """Steps of different arms whose targets are closer than this (xy, m) never overlap in time."""
 
@@ -272,6 +274,7 @@ class TaskGenerator:
             i = index[pid]
             part = layout.objects[i]
             T_part = _frame(rotation_matrix(part.orientation), np.array(part.position))
+            T_part[:3, 3] += self._clearance(a, i, rank)
             half = 0.5 * np.array(part.size)
             options = self._options(a, i, rank)
             depends = tuple(sorted(rank[j] for j in interacts.get(i, ()) if rank[j] < k))
@@ -321,6 +324,38 @@ class TaskGenerator:
             ends[k] = end
         plan = TaskPlan(tuple(steps), tuple(self.robots), dict(self.home))
         return plan, self.schedule(plan)
+
+    def _clearance(self, a: Analysis, i: int, rank: np.ndarray) -> np.ndarray:
+        """Offset (m) that sets part i down a little away from side neighbours already placed.
+
+        A stiff gripper pressing a part against one that is already there shoves it; real cells
+        leave a small gap. Per lateral axis with placed neighbours on one side only, the part
+        moves PLACEMENT_CLEARANCE away from them (inside the contact tolerance, relative to the
+        design pose, so offsets never accumulate). The Inspector's contact relations still hold.
+        """
+        c = a.layout.centres
+        h = a.layout.half_extents
+        graph = a.graph
+        pairs = graph.pairs[graph.in_contact]
+        mine = pairs[(pairs == i).any(axis=1)]
+        offset = np.zeros(3)
+        clearance = min(PLACEMENT_CLEARANCE, 0.8 * self.cell.tolerances.contact)
+        for axis in (0, 1):
+            sides = set()
+            for p, q in mine.tolist():
+                j = q if p == i else p
+                if rank[j] > rank[i]:
+                    continue
+                # a side neighbour: overlapping in z, touching across this axis
+                overlap_z = min(c[i, 2] + h[i, 2], c[j, 2] + h[j, 2]) - max(
+                    c[i, 2] - h[i, 2], c[j, 2] - h[j, 2]
+                )
+                gap = abs(c[i, axis] - c[j, axis]) - (h[i, axis] + h[j, axis])
+                if overlap_z > 0.5 * h[i, 2] and abs(gap) <= self.cell.tolerances.contact:
+                    sides.add(1.0 if c[j, axis] > c[i, axis] else -1.0)
+            if len(sides) == 1:
+                offset[axis] = -sides.pop() * clearance
+        return offset
 
     def _exclusive_load(
         self,
