@@ -29,7 +29,7 @@ from sdi.monitor import StreamingMonitor, verify_trajectory
 from sdi.motion.planner import MotionPlan, MotionPlanner
 from sdi.motion.scene import Scene
 from sdi.motion.trajectory import JointTrajectory
-from sdi.robot import RobotModel, default_robots
+from sdi.robot import RobotModel, robots_for
 from sdi.tasks.generator import TaskGenerator
 from sdi.tasks.schedule import Schedule
 from sdi.tasks.task import TaskPlan
@@ -196,7 +196,7 @@ def commission(
 ) -> Commissioning:
     """Plan a verified layout for the cell (one or two arms); refuses unverified layouts."""
     cell = cell or CellConfig()
-    robots = robots or default_robots()
+    robots = robots or robots_for(cell)
     job = VerifiedJob.inspect(layout, cell, sequence)
     generator = TaskGenerator(cell, robots, arms=arms)
     tasks, _ = generator.generate(layout, job.sequence)

@@ -101,6 +101,15 @@ class SupplyArea(_Frozen):
     pitch: float = Field(0.08, description="spacing of the part grid in the area, m")
 
 
+class RobotPlacement(_Frozen):
+    """Where a robot of the cell stands: its base on the table plane, turned about z."""
+
+    name: str
+    model: Literal["irb120", "irb1600"]
+    base_xy: Vec2 = Field(description="world position of the base, m")
+    base_yaw_deg: float = Field(0.0, description="rotation of the base about z, degrees")
+
+
 class Tolerances(_Frozen):
     contact: float = Field(0.001, description="ε of the paper's contact predicate, m")
     support_overlap: float = Field(
@@ -153,6 +162,10 @@ class CellConfig(_Frozen):
         SupplyArea(
             name="irb1600_supply", robot="irb1600", x_range=(0.95, 1.10), y_range=(0.72, 0.87)
         ),
+    )
+    robots: tuple[RobotPlacement, ...] = (
+        RobotPlacement(name="irb120", model="irb120", base_xy=(0.0, 0.30), base_yaw_deg=0.0),
+        RobotPlacement(name="irb1600", model="irb1600", base_xy=(1.30, 0.30), base_yaw_deg=180.0),
     )
     tolerances: Tolerances = Tolerances()
     limits: Limits = Limits()

@@ -23,6 +23,7 @@ from sdi.robot.model import (
     default_robots,
     irb120,
     irb1600,
+    robots_for,
     two_fg7,
     vgc10,
 )
@@ -62,6 +63,7 @@ __all__ = [
     "link_frames",
     "make_transform",
     "pose_error",
+    "robots_for",
     "rpy_from_matrix",
     "tool_down_pose",
     "two_fg7",

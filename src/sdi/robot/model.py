@@ -23,6 +23,7 @@ from typing import Literal
 
 import numpy as np
 
+from sdi.model.cell import CellConfig
 from sdi.robot.exceptions import JointLimitError, RobotModelError
 from sdi.robot.transforms import invert_transform, is_rigid, make_transform
 
@@ -624,6 +625,16 @@ def default_robots() -> dict[str, RobotModel]:
         "irb120": irb120(make_transform((*IRB120_BASE_XY, 0.0))),
         "irb1600": irb1600(make_transform((*IRB1600_BASE_XY, 0.0), (0.0, 0.0, math.pi))),
     }
+
+
+def robots_for(cell: CellConfig) -> dict[str, RobotModel]:
+    """The robots of a cell configuration (`[[robots]]`), placed where it says."""
+    factories = {"irb120": irb120, "irb1600": irb1600}
+    out: dict[str, RobotModel] = {}
+    for p in cell.robots:
+        T = make_transform((*p.base_xy, 0.0), (0.0, 0.0, math.radians(p.base_yaw_deg)))
+        out[p.name] = replace(factories[p.model](T), name=p.name)
+    return out
 
 
 __all__ = [

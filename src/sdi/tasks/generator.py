@@ -29,7 +29,7 @@ from sdi.inspector.verifier import verify
 from sdi.model.cell import CellConfig, ParallelGripper, SupplyArea
 from sdi.model.layout import Layout
 from sdi.model.part import rotation_matrix
-from sdi.robot import RobotModel, default_robots, ik, ik_nearest
+from sdi.robot import RobotModel, ik, ik_nearest, robots_for
 from sdi.tasks.events import FailureEvent
 from sdi.tasks.schedule import Schedule, list_schedule
 from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
@@ -133,7 +133,7 @@ class TaskGenerator:
         arms: Sequence[str] | None = None,
     ) -> None:
         self.cell = cell or CellConfig()
-        all_robots = robots or default_robots()
+        all_robots = robots or robots_for(self.cell)
         names = list(arms) if arms else list(all_robots)
         unknown = [n for n in names if n not in all_robots]
         if unknown:
