@@ -184,6 +184,20 @@ def bench(
                 out.print(f"[red]✗[/red] {record['id']} {record['text']!r}: {record['reason']}")
 
 
+FaultOption = Annotated[
+    list[str] | None, typer.Option("--fault", help="inject a failure scenario (repeatable)")
+]
+
+
+def _check_faults(names: list[str] | None, as_json: bool) -> None:
+    from sdi.execute.faults import SCENARIOS
+
+    unknown = [f for f in names or [] if f not in SCENARIOS]
+    if unknown:
+        message = f"unknown scenario {unknown}; choose from {sorted(SCENARIOS)}"
+        _bad_input(InputError(message, field="--fault"), as_json)
+
+
 ArmsOption = Annotated[
     str | None,
     typer.Option("--arms", help="comma-separated robots to use (default: every robot of the cell)"),
@@ -224,9 +238,7 @@ def execute_cmd(
     cell_path: CellOption = None,
     arms: ArmsOption = None,
     epsilon: Annotated[float, typer.Option(help="V_traj threshold on δ, rad")] = 0.05,
-    fault: Annotated[
-        list[str] | None, typer.Option("--fault", help="inject a failure scenario (repeatable)")
-    ] = None,
+    fault: FaultOption = None,
     report_dir: Annotated[
         Path | None, typer.Option("--report", help="write report.json and deviation.png here")
     ] = None,
@@ -236,14 +248,7 @@ def execute_cmd(
     from sdi.execute.faults import SCENARIOS
     from sdi.monitor import plot_deviation
 
-    unknown = [f for f in fault or [] if f not in SCENARIOS]
-    if unknown:
-        _bad_input(
-            InputError(
-                f"unknown scenario {unknown}; choose from {sorted(SCENARIOS)}", field="--fault"
-            ),
-            json_out,
-        )
+    _check_faults(fault, json_out)
     if epsilon <= 0:
         _bad_input(InputError("must be > 0 rad", field="--epsilon"), json_out)
     plan = _commission(layout_file, cell_path, arms, json_out)
@@ -409,23 +414,13 @@ def run_cmd(
     arms: ArmsOption = None,
     backend: BackendOption = "rules",
     method: MethodOption = "Hybrid",
-    fault: Annotated[
-        list[str] | None, typer.Option("--fault", help="inject a failure scenario (repeatable)")
-    ] = None,
+    fault: FaultOption = None,
     db: DbOption = None,
 ) -> None:
     """Run the whole orchestrator graph: plan, design, inspect, review, confirm, execute (sim)."""
-    from sdi.execute.faults import SCENARIOS
     from sdi.orchestrator import Orchestrator
 
-    unknown = [f for f in fault or [] if f not in SCENARIOS]
-    if unknown:
-        _bad_input(
-            InputError(
-                f"unknown scenario {unknown}; choose from {sorted(SCENARIOS)}", field="--fault"
-            ),
-            json_out,
-        )
+    _check_faults(fault, json_out)
     cell = _cell(cell_path, json_out)
     model, server = _model(backend, json_out)
     try:

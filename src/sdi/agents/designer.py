@@ -46,6 +46,13 @@ class DesignOutcome:
     notes: list[str] = field(default_factory=list)
 
 
+def task_text(spec: Spec | None, command: str) -> str:
+    """The user turn: the command, and the structured spec when there is one."""
+    if spec is None:
+        return command
+    return f"{command}\nSpecification: {spec.model_dump_json(exclude_none=True)}"
+
+
 def safety_gate(
     layout: Layout | None, cell: CellConfig, attempts: int, notes: list[str]
 ) -> DesignOutcome:
@@ -110,11 +117,7 @@ class LoopDesigner:
         system = system_prompt(self.cell)
         if self.full_prompt:
             system += "\nAll constraints:\n" + all_constraints()
-        task = (
-            command
-            if spec is None
-            else f"{command}\nSpecification: {spec.model_dump_json(exclude_none=True)}"
-        )
+        task = task_text(spec, command)
         return [
             {"role": "system", "content": system},
             *few_shot_messages(),
@@ -211,11 +214,7 @@ class AgenticDesigner:
         start: Layout | None = None,
         violations: tuple[Any, ...] = (),
     ) -> DesignOutcome:
-        task = (
-            command
-            if spec is None
-            else f"{command}\nSpecification: {spec.model_dump_json(exclude_none=True)}"
-        )
+        task = task_text(spec, command)
         if start is not None:
             task += (
                 "\nRepair this layout: " + json.dumps(start.to_json_dict()) + "\n" + phi(violations)
