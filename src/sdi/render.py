@@ -36,10 +36,10 @@ def top_view(layout: Layout, cell: CellConfig) -> Text:
     hi = layout.centres + layout.half_extents
     for k in range(len(layout)):
         # cells whose centre lies inside the part's footprint (half-cell offsets round down)
-        i0 = max(0, int(np.floor((lo[k, 0] - ws.x_min) / s + 0.5)))
-        i1 = min(nx, max(i0 + 1, int(np.floor((hi[k, 0] - ws.x_min) / s + 0.5))))
-        j0 = max(0, int(np.floor((lo[k, 1] - ws.y_min) / s + 0.5)))
-        j1 = min(ny, max(j0 + 1, int(np.floor((hi[k, 1] - ws.y_min) / s + 0.5))))
+        i0 = max(0, int(np.floor((lo[k, 0] - ws.x_min) / s + 0.5 + 1e-6)))
+        i1 = min(nx, max(i0 + 1, int(np.floor((hi[k, 0] - ws.x_min) / s + 0.5 + 1e-6))))
+        j0 = max(0, int(np.floor((lo[k, 1] - ws.y_min) / s + 0.5 + 1e-6)))
+        j1 = min(ny, max(j0 + 1, int(np.floor((hi[k, 1] - ws.y_min) / s + 0.5 + 1e-6))))
         level = round(hi[k, 2] / cell.cube[2])
         levels[i0:i1, j0:j1] = np.maximum(levels[i0:i1, j0:j1], level)
     text = Text()
