@@ -206,6 +206,7 @@ class AgenticDesigner:
         self.registry = registry
         self.cell = cell or CellConfig()
         self.t_max = t_max
+        self.transcript: list[Message] = []
 
     def design(
         self,
@@ -223,14 +224,29 @@ class AgenticDesigner:
             {"role": "system", "content": system_prompt(self.cell) + "\n" + SKILL_INSTRUCTIONS},
             {"role": "user", "content": task},
         ]
+        self.transcript = messages  # the conversation, for the audit trail and tests
         notes: list[str] = []
         layout: Layout | None = None
         candidate: Layout | None = None  # the last layout a tool produced
         tools = self.registry.tools()
+        if spec is not None:  # offer only the generators the spec names (smaller prompts)
+            wanted = {f"generate_{st.shape}" for st in spec.structures} | {"generate"}
+            names = [t["function"]["name"] for t in tools]
+            tools = [
+                t for t, n in zip(tools, names, strict=True)
+                if not n.startswith("generate_") or n in wanted
+            ]  # fmt: skip
         steps = 0
         for steps in range(1, self.t_max + 1):
+            choice = None
+            if steps == 1 and spec is not None and len(spec.structures) == 1 and start is None:
+                name = f"generate_{spec.structures[0].shape}"
+                if name in self.registry:  # begin with the generator the spec names
+                    choice = {"type": "function", "function": {"name": name}}
             try:
-                reply = self.model.chat(messages, tools=tools, max_tokens=1024, role="designer")
+                reply = self.model.chat(
+                    messages, tools=tools, max_tokens=1024, role="designer", tool_choice=choice
+                )
             except LLMError as exc:
                 notes.append(str(exc))
                 break

@@ -83,4 +83,5 @@ class ChatModel(Protocol):
         max_tokens: int = 1024,
         temperature: float = 0.3,
         role: str = "llm",
+        tool_choice: str | dict[str, Any] | None = None,
     ) -> ChatReply: ...

@@ -12,10 +12,12 @@ import importlib.util
 import socket
 import subprocess
 import sys
+import tempfile
 import time
 import urllib.request
 from pathlib import Path
 from types import TracebackType
+from typing import IO
 
 from sdi.errors import SDIError
 from sdi.llm.openai_backend import OpenAIChat
@@ -55,7 +57,7 @@ class LocalServer:
     """`with LocalServer() as server: model = server.chat_model()` — always stopped on exit."""
 
     def __init__(
-        self, *, model_path: Path | None = None, n_ctx: int = 4096, startup_timeout: float = 180.0
+        self, *, model_path: Path | None = None, n_ctx: int = 8192, startup_timeout: float = 180.0
     ) -> None:
         if not server_available():
             raise LocalModelUnavailable(
@@ -67,6 +69,7 @@ class LocalServer:
         self.startup_timeout = startup_timeout
         self.port = _free_port()
         self.process: subprocess.Popen[bytes] | None = None
+        self.log: IO[bytes] | None = None
 
     @property
     def base_url(self) -> str:
@@ -76,11 +79,14 @@ class LocalServer:
         command = [sys.executable, "-m", "llama_cpp.server", "--model", str(self.model_path)]
         command += ["--host", "127.0.0.1", "--port", str(self.port), "--n_ctx", str(self.n_ctx)]
         command += ["--chat_format", "chatml-function-calling"]
-        self.process = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        # the server logs a lot: to a file, never an unread pipe (which would block it)
+        self.log = tempfile.TemporaryFile()  # noqa: SIM115 - closed in stop()
+        self.process = subprocess.Popen(command, stdout=self.log, stderr=subprocess.STDOUT)
         deadline = time.monotonic() + self.startup_timeout
         while time.monotonic() < deadline:
             if self.process.poll() is not None:
-                err = (self.process.stderr.read() if self.process.stderr else b"").decode()[-2000:]
+                self.log.seek(0)
+                err = self.log.read().decode(errors="replace")[-2000:]
                 raise LocalModelUnavailable(f"the llama.cpp server exited: {err}")
             with (
                 contextlib.suppress(OSError),
@@ -102,6 +108,9 @@ class LocalServer:
             except subprocess.TimeoutExpired:
                 self.process.kill()
         self.process = None
+        if self.log is not None:
+            self.log.close()
+            self.log = None
 
     def chat_model(self) -> OpenAIChat:
         return OpenAIChat(model="local", base_url=self.base_url, api_key="local", name="local")

@@ -61,6 +61,7 @@ class OpenAIChat:
         max_tokens: int = 1024,
         temperature: float = 0.3,
         role: str = "llm",
+        tool_choice: str | dict[str, Any] | None = None,
     ) -> ChatReply:
         import openai
 
@@ -72,15 +73,19 @@ class OpenAIChat:
         }
         if tools:
             kwargs["tools"] = tools
+            if tool_choice is not None:
+                kwargs["tool_choice"] = tool_choice
         for _ in range(2):
             if json_schema is not None:
                 kwargs["response_format"] = self._format(json_schema)
             try:
                 response = self._client.chat.completions.create(**kwargs)
                 break
-            except openai.BadRequestError as exc:
-                if json_schema is not None and self._schema_mode == "json_schema":
-                    self._schema_mode = "json_object"  # e.g. llama.cpp's server
+            except (openai.BadRequestError, openai.InternalServerError) as exc:
+                # llama.cpp's server refuses the json_schema type (with a 400 or a 500)
+                refused = "json_schema" in str(exc) or isinstance(exc, openai.BadRequestError)
+                if json_schema is not None and self._schema_mode == "json_schema" and refused:
+                    self._schema_mode = "json_object"
                     continue
                 self.usage.failures += 1
                 raise LLMError(f"{self.name}: the endpoint refused the request: {exc}") from None
