@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from pydantic import ValidationError
 
 from sdi.agents.prompts import SPEC_PROMPT
-from sdi.errors import SDIError, SpecError
+from sdi.errors import SpecError
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
 from sdi.model.cell import CellConfig
@@ -74,9 +74,4 @@ class Specifier:
         return SpecResult(llm_spec, "llm")
 
 
-def relax(command: str) -> str:
-    """Specifier relaxation: the raw command, passed on as it was typed."""
-    return command
-
-
-__all__ = ["SDIError", "SpecResult", "Specifier", "relax"]
+__all__ = ["SpecResult", "Specifier"]

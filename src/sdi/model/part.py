@@ -46,6 +46,26 @@ def rotation_matrix(q: Quat) -> np.ndarray:
     )
 
 
+def quat_from_matrix(R: np.ndarray) -> Quat:
+    """Unit quaternion ``[w, x, y, z]`` of a 3×3 rotation matrix (inverse of `rotation_matrix`)."""
+    w = math.sqrt(max(0.0, 1.0 + R[0, 0] + R[1, 1] + R[2, 2])) / 2
+    if w > 1e-6:
+        return (
+            w,
+            (R[2, 1] - R[1, 2]) / (4 * w),
+            (R[0, 2] - R[2, 0]) / (4 * w),
+            (R[1, 0] - R[0, 1]) / (4 * w),
+        )
+    i = int(np.argmax(np.diag(R)))  # a turn near 180°: start from the largest diagonal
+    v = [0.0, 0.0, 0.0]
+    v[i] = math.sqrt(max(0.0, 1 + 2 * R[i, i] - np.trace(R))) / 2
+    for j in range(3):
+        if j != i:
+            v[j] = (R[j, i] + R[i, j]) / (4 * v[i])
+    w = (R[(i + 2) % 3, (i + 1) % 3] - R[(i + 1) % 3, (i + 2) % 3]) / (4 * v[i])
+    return (w, v[0], v[1], v[2])
+
+
 class Part(BaseModel):
     """A box part. Immutable: edits make new parts (`moved`, `model_copy`)."""
 

@@ -362,8 +362,9 @@ class MotionPlanner:
         return near
 
     # -- the whole job -----------------------------------------------------------------------
-    def plan(self, tasks: TaskPlan, start_times: dict[int, float] | None = None) -> MotionPlan:
-        """Q_plan for every step, in σ* order; `start_times` (s) from a schedule, if any."""
+    def plan(self, tasks: TaskPlan) -> MotionPlan:
+        """Q_plan for every step in σ* order, each arm one step after another (`retime` in
+        `sdi.commission` moves the steps to a two-arm schedule)."""
         with Scene(self.robots, margin=self.margin) as scene:
             q_now = {r: tasks.home[r].copy() for r in tasks.robots}
             for r, q in q_now.items():
@@ -381,9 +382,7 @@ class MotionPlanner:
                 for r in tasks.robots:  # the other arms stand where they last stopped
                     if r != robot:
                         scene.set_q(r, q_now[r])
-                t0 = max(clock[robot], (start_times or {}).get(step.step, 0.0))
-                if t0 > clock[robot]:
-                    samples[robot].append((t0, q_now[robot].copy()))
+                t0 = clock[robot]
                 rows, evs, end, seconds, via[step.step] = self.plan_step(
                     scene, step, q_now[robot], t0, tasks.home[robot]
                 )

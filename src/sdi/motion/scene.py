@@ -10,7 +10,6 @@ carried part, anything but its own gripper.
 
 from __future__ import annotations
 
-import math
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,6 +17,7 @@ from pathlib import Path
 import numpy as np
 import pybullet as pb
 
+from sdi.model.part import quat_from_matrix
 from sdi.robot import RobotModel, fk, write_urdf
 
 TABLE_HALF = (1.5, 1.5, 0.05)
@@ -27,22 +27,9 @@ TABLE_CENTRE = (0.55, 0.30, -0.05)
 
 
 def _quat_xyzw(R: np.ndarray) -> tuple[float, float, float, float]:
-    w = math.sqrt(max(0.0, 1.0 + R[0, 0] + R[1, 1] + R[2, 2])) / 2
-    if w > 1e-6:
-        return (
-            (R[2, 1] - R[1, 2]) / (4 * w),
-            (R[0, 2] - R[2, 0]) / (4 * w),
-            (R[1, 0] - R[0, 1]) / (4 * w),
-            w,
-        )
-    i = int(np.argmax(np.diag(R)))
-    v = [0.0, 0.0, 0.0]
-    v[i] = math.sqrt(max(0.0, 1 + 2 * R[i, i] - np.trace(R))) / 2
-    for j in range(3):
-        if j != i:
-            v[j] = (R[j, i] + R[i, j]) / (4 * v[i])
-    w = (R[(i + 2) % 3, (i + 1) % 3] - R[(i + 1) % 3, (i + 2) % 3]) / (4 * v[i])
-    return (v[0], v[1], v[2], w)
+    """PyBullet's quaternion order [x, y, z, w] of a rotation matrix."""
+    w, x, y, z = quat_from_matrix(R)
+    return (x, y, z, w)
 
 
 @dataclass

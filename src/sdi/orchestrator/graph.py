@@ -14,9 +14,8 @@ checkpointed (SQLite), so a killed process resumes where it stopped.
 from __future__ import annotations
 
 import os
-import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, TypedDict
 
 from langgraph.graph import END, START, StateGraph
@@ -80,8 +79,6 @@ class RunContext:
     model: ChatModel | None
     bus: MessageBus
     arms: list[str] | None = None
-    phase_seconds: float = 300.0
-    clock: dict[str, float] = field(default_factory=dict)
 
 
 def _crash_hook(node: str) -> None:
@@ -459,8 +456,3 @@ def _llm_critic(ctx: RunContext, layout: Layout) -> dict[str, Any]:
     except (ValueError, AttributeError, LLMError, SDIError):
         ctx.model.usage.malformed += 1
         return {"passed": False, "problems": ["critic answer unusable"]}
-
-
-def elapsed(ctx: RunContext, phase: str) -> float:
-    start = ctx.clock.setdefault(phase, time.monotonic())
-    return time.monotonic() - start

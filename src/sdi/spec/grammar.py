@@ -102,7 +102,6 @@ PART_NOUN_KEYS = {
     "arms": "arms", "arm": "arms", "sides": "arms", "side": "arms", "legs": "height",
     "leg": "height",
 }  # fmt: skip
-NUMERIC_CATEGORIES = {"height", "length", "width", "count", "steps", "span", "spans"}
 
 
 @dataclass
@@ -175,9 +174,6 @@ class _Parser:
 
     def is_num(self, k: int) -> bool:
         return 0 <= k < len(self.toks) and self.toks[k].kind == "num"
-
-    def unit_at(self, k: int) -> float | None:
-        return lx.UNITS_M.get(self.word(k)) if not self.toks[k].used else None
 
     def _metres(self, k: int) -> tuple[float, int]:
         """Value of the number at k in metres and the index after it (with its unit)."""

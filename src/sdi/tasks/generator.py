@@ -28,7 +28,7 @@ from sdi.inspector.analysis import Analysis
 from sdi.inspector.verifier import verify
 from sdi.model.cell import CellConfig, ParallelGripper, SupplyArea
 from sdi.model.layout import Layout
-from sdi.model.part import rotation_matrix
+from sdi.model.part import quat_from_matrix, rotation_matrix
 from sdi.robot import RobotModel, ik, ik_nearest, robots_for
 from sdi.tasks.events import FailureEvent
 from sdi.tasks.schedule import Schedule, list_schedule
@@ -42,29 +42,9 @@ CONFLICT_DISTANCE = 0.25
 """Steps of different arms whose targets are closer than this (xy, m) never overlap in time."""
 
 
-def _pose(T: np.ndarray) -> tuple[float, ...]:
-    from sdi.model.part import Part  # noqa: F401  (keeps the quaternion convention in one place)
-
-    R = T[:3, :3]
-    w = math.sqrt(max(0.0, 1.0 + R[0, 0] + R[1, 1] + R[2, 2])) / 2
-    if w > 1e-6:
-        x = (R[2, 1] - R[1, 2]) / (4 * w)
-        y = (R[0, 2] - R[2, 0]) / (4 * w)
-        z = (R[1, 0] - R[0, 1]) / (4 * w)
-    else:  # 180° turn: take the largest diagonal
-        i = int(np.argmax(np.diag(R)))
-        v = np.zeros(3)
-        v[i] = math.sqrt(max(0.0, 1 + 2 * R[i, i] - np.trace(R))) / 2
-        for j in range(3):
-            if j != i:
-                v[j] = (R[j, i] + R[i, j]) / (4 * v[i])
-        x, y, z = v
-    return (*(float(v) for v in T[:3, 3]), w, float(x), float(y), float(z))
-
-
 def pose_tuple(T: np.ndarray) -> tuple[float, ...]:
     """(x, y, z, qw, qx, qy, qz) of a 4×4 pose, metres."""
-    return _pose(T)
+    return (*(float(v) for v in T[:3, 3]), *(float(q) for q in quat_from_matrix(T[:3, :3])))
 
 
 def _frame(R: np.ndarray, p: np.ndarray) -> np.ndarray:
