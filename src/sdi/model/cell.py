@@ -123,6 +123,9 @@ class Tolerances(_Frozen):
 class Limits(_Frozen):
     max_parts: int = Field(10_000, ge=1, description="largest layout accepted")
     max_command_chars: int = Field(2_000, ge=1, description="longest command accepted")
+    phase_seconds: float = Field(
+        300.0, gt=0, description="wall-clock limit of one orchestrator phase (design, plan, …), s"
+    )
 
 
 class DesignDefaults(_Frozen):

@@ -29,6 +29,7 @@ from ompl import geometric as og
 from ompl import util as ou
 from ruckig import InputParameter, Result, Ruckig, Synchronization, Trajectory
 
+from sdi import deadline
 from sdi.errors import MotionPlanningError
 from sdi.motion.scene import Scene
 from sdi.motion.trajectory import JointTrajectory
@@ -378,6 +379,7 @@ class MotionPlanner:
             via: dict[int, tuple[list[np.ndarray], list[np.ndarray], list[np.ndarray]]] = {}
             revised: dict[int, PickPlace] = {}
             for step in tasks.steps:
+                deadline.check()
                 robot = step.robot
                 for r in tasks.robots:  # the other arms stand where they last stopped
                     if r != robot:

@@ -8,7 +8,9 @@ tries the recovery skills first (shift, flatten) and sends their output straight
 Inspector, then the Designer's `modify`, then Specifier relaxation (the raw command), then the
 human. At most `method.replans` replans. The three human touch points are LangGraph
 `interrupt()`s: design review, pre-execution confirmation, failure report. State is
-checkpointed (SQLite), so a killed process resumes where it stopped.
+checkpointed (SQLite), so a killed process resumes where it stopped. Every working phase runs
+under a wall-clock limit (`[limits] phase_seconds`, 300 s by default); a phase that runs past it
+stops at its next clean point and goes to the failure report.
 """
 
 from __future__ import annotations
@@ -21,8 +23,15 @@ from typing import Any, TypedDict
 from langgraph.graph import END, START, StateGraph
 from langgraph.types import interrupt
 
-from sdi.agents.designer import AgenticDesigner, DesignOutcome, LoopDesigner, RuleDesigner
+from sdi.agents.designer import (
+    AgenticDesigner,
+    DesignOutcome,
+    GeneratorFirstDesigner,
+    LoopDesigner,
+    RuleDesigner,
+)
 from sdi.agents.specifier import Specifier
+from sdi.deadline import PhaseTimeout, phase_limit
 from sdi.errors import (
     InfeasibleError,
     InputError,
@@ -68,6 +77,7 @@ class RunState(TypedDict, total=False):
     phase: str
     notes: list[str]
     approve: bool
+    design_only: bool  # stop once the design is verified (benchmarks): status "verified"
 
 
 @dataclass
@@ -103,6 +113,8 @@ def _designer(ctx: RunContext) -> Any:
         registry = default_registry(ctx.cell)
         registry = registry.subset(SASS_SKILLS if m.designer == "agentic-1" else SAMS_SKILLS)
         return AgenticDesigner(model, registry, ctx.cell)
+    if m.designer == "generator-first":
+        return GeneratorFirstDesigner(model, ctx.cell)
     feedback = {
         "direct": "none",
         "full-prompt": "none",
@@ -234,6 +246,8 @@ def build_graph(ctx: RunContext) -> StateGraph:
 
     # -- HUMAN_REVIEW -------------------------------------------------------------------------
     def human_review(state: RunState) -> dict[str, Any]:
+        if state.get("design_only"):
+            return {"status": "verified", "phase": "end"}
         if state.get("approve"):
             decision: dict[str, Any] = {"action": "approve"}
         else:
@@ -383,7 +397,7 @@ def build_graph(ctx: RunContext) -> StateGraph:
         return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "failure": None}
 
     def failure_report(state: RunState) -> dict[str, Any]:
-        if state.get("approve"):
+        if state.get("approve") or state.get("design_only"):
             return {"status": "failure", "phase": "end"}
         decision = interrupt(
             {
@@ -412,9 +426,23 @@ def build_graph(ctx: RunContext) -> StateGraph:
             return {"phase": "plan", "replans": 0, "tried": [], "failure": None, "relaxed": False}
         return {"status": "failure", "phase": "end"}
 
+    def limited(
+        name: str, fn: Callable[[RunState], dict[str, Any]]
+    ) -> Callable[[RunState], dict[str, Any]]:
+        def node(state: RunState) -> dict[str, Any]:
+            try:
+                with phase_limit(name, cell.limits.phase_seconds):
+                    return fn(state)
+            except PhaseTimeout as exc:
+                failure = {"error_type": "timeout", "phase": name, "message": str(exc)}
+                say(state, "orchestrator", "human", "failure", failure)
+                return {"failure": failure, "notes": [str(exc)], "phase": "failure_report"}
+
+        return node
+
     def route(state: RunState) -> str:
         phase = state.get("phase", "end")
-        if state.get("status") in ("failure", "rejected", "aborted", "success"):
+        if state.get("status") in ("failure", "rejected", "aborted", "success", "verified"):
             return END
         return {
             "design": "design", "inspect": "inspect", "review": "human_review",
@@ -430,6 +458,8 @@ def build_graph(ctx: RunContext) -> StateGraph:
         "failure_report": failure_report,
     }  # fmt: skip
     for name, fn in nodes.items():
+        if name not in ("human_review", "failure_report"):  # a person is not timed
+            fn = limited(name, fn)
         g.add_node(name, fn)  # type: ignore[call-overload]
     g.add_edge(START, "plan")
     for name in nodes:

@@ -13,7 +13,14 @@ from dataclasses import dataclass
 from typing import Literal
 
 Designer = Literal[
-    "direct", "full-prompt", "fixed-loop", "adaptive-loop", "agentic-1", "agentic-8", "parametric"
+    "direct",
+    "full-prompt",
+    "fixed-loop",
+    "adaptive-loop",
+    "agentic-1",
+    "agentic-8",
+    "generator-first",
+    "parametric",
 ]
 Orchestration = Literal["none", "rule", "pge", "langgraph", "hybrid"]
 
@@ -89,15 +96,15 @@ METHODS: dict[str, Method] = {
         Method(
             "Hybrid",
             True,
-            "adaptive-loop",
+            "generator-first",
             "hybrid",
             True,
-            description="SDI + LangGraph + recovery skills",
+            description="SDI + LangGraph + recovery skills; generator skills before the model",
         ),
         Method(
             "Hybrid-LLMCritic",
             True,
-            "adaptive-loop",
+            "generator-first",
             "hybrid",
             True,
             "llm",

@@ -37,7 +37,7 @@ def default_db() -> Path:
 @dataclass
 class RunStatus:
     run_id: str
-    status: str  # "paused" | "success" | "failure" | "rejected" | "aborted" | "running"
+    status: str  # paused | success | verified | failure | rejected | aborted | running
     waiting_for: dict[str, Any] | None = None
     state: dict[str, Any] = field(default_factory=dict)
     usage: dict[str, Any] = field(default_factory=dict)
@@ -109,13 +109,16 @@ class Orchestrator:
         faults: list[str] | None = None,
         approve: bool = False,
         run_id: str | None = None,
+        design_only: bool = False,
     ) -> RunStatus:
+        """Run `command` until it ends or pauses for a person. `design_only` stops once the
+        design passed the Inspector (status ``verified``; nothing is planned or executed)."""
         graph = self._graph(method)
         run_id = run_id or uuid.uuid4().hex[:12]
         state: RunState = {
             "run_id": run_id, "command": command, "method": method, "backend": backend,
             "replans": 0, "tried": [], "faults": list(faults or []), "notes": [],
-            "approve": approve, "relaxed": False,
+            "approve": approve, "relaxed": False, "design_only": design_only,
         }  # fmt: skip
         self.bus.send(
             run_id,
