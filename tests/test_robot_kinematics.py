@@ -264,3 +264,59 @@ def test_urdf_loads_in_pybullet_and_matches_fk(robot: RobotModel, tmp_path):
             _assert_pose(T_pb, fk(robot, q), tol=1e-6)
     finally:
         pb.disconnect(client)
+
+
+# -- swept-motion bound (the planner's dense re-check relies on it) --------------------------
+
+
+def _geometry_points(robot: RobotModel, carried: np.ndarray) -> list[tuple[int, np.ndarray]]:
+    """Box corners and cylinder rims of every collision shape, per frame, and a carried part."""
+    points = []
+    signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])
+    shapes = [(i, s) for i, ss in enumerate(robot.link_shapes) for s in ss]
+    shapes += [(7, b) for b in robot.tool.collision_boxes]
+    rim = [(np.cos(a), np.sin(a)) for a in np.linspace(0, 2 * np.pi, 16, endpoint=False)]
+    for frame, shape in shapes:
+        d = np.array(shape.dimensions)
+        if shape.kind == "box":
+            local = list(signs * d)
+        elif shape.kind == "cylinder":  # rims (radius, half length along z)
+            local = [np.array([d[0] * c, d[0] * s, z]) for c, s in rim for z in (-d[-1], d[-1])]
+        else:  # sphere: points on the surface
+            unit = np.random.default_rng(0).normal(size=(64, 3))
+            local = list(d[0] * unit / np.linalg.norm(unit, axis=1, keepdims=True))
+        for p in local:
+            points.append((frame, (shape.T_link_shape @ np.append(p, 1.0))[:3]))
+    points += [(7, p) for p in carried]
+    return points
+
+
+def test_sweep_bound_covers_every_point_of_the_arm_and_its_part(robot: RobotModel):
+    from sdi.robot.kinematics import frame_reach, link_frames_batch, sweep_bound
+
+    # a 5 cm cube 4 cm below the flange, as a carried part
+    corners = np.array([[x, y, z] for x in (-0.025, 0.025) for y in (-0.025, 0.025)
+                        for z in (0.015, 0.065)])  # fmt: skip
+    reach = frame_reach(robot, float(np.max(np.linalg.norm(corners, axis=1))))
+    points = _geometry_points(robot, corners)
+    rng = np.random.default_rng(5)
+    qa = _random_q(robot, 200, 11)
+    qb = qa + rng.normal(scale=rng.choice([0.001, 0.02, 0.3], size=(200, 1)), size=(200, 6))
+    Fa, Fb = link_frames_batch(robot, qa), link_frames_batch(robot, qb)
+    for k in range(len(qa)):
+        bound = float(sweep_bound(Fa[k], Fb[k][None], reach)[0])
+        moved = max(
+            np.linalg.norm((Fb[k][f] @ np.append(p, 1))[:3] - (Fa[k][f] @ np.append(p, 1))[:3])
+            for f, p in points
+        )
+        assert moved <= bound + 1e-12
+        assert bound < 10 * moved + 1e-3  # and not uselessly loose
+
+
+def test_link_frames_batch_equals_link_frames(robot: RobotModel):
+    from sdi.robot.kinematics import link_frames_batch
+
+    Q = _random_q(robot, 50, 3)
+    batch = link_frames_batch(robot, Q)
+    for q, frames in zip(Q, batch, strict=True):
+        assert np.allclose(np.array(link_frames(robot, q)), frames, atol=1e-12)

@@ -34,6 +34,7 @@ from sdi.errors import MotionPlanningError
 from sdi.motion.scene import Scene
 from sdi.motion.trajectory import JointTrajectory
 from sdi.robot import RobotModel, ik, ik_nearest
+from sdi.robot.kinematics import frame_reach, link_frames_batch, sweep_bound
 from sdi.tasks.events import FailureEvent
 from sdi.tasks.generator import pose_tuple
 from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
@@ -41,9 +42,15 @@ from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
 ou.setLogLevel(ou.LOG_ERROR)
 
 CHECK_RESOLUTION = 0.01
+"""OMPL motion-validation step as a fraction of the state space extent."""
 CLOSE_WORK_SPEED = 0.25
 """Fraction of the speed/acceleration limits for approach, grasp and retreat moves."""
-"""OMPL motion-validation step as a fraction of the state space extent."""
+SWEEP_FRACTION = 0.5
+"""The dense re-check: a controller sample is checked unless no point of the arm (or the part
+it carries) has moved more than this fraction of the clearance since the last checked sample
+(bounded by `sweep_bound`), so every sample keeps at least half the clearance; the last sample
+of every segment is always checked. Fast motion checks every sample; slow close work skips the
+samples that barely move."""
 
 
 @dataclass(frozen=True)
@@ -283,12 +290,28 @@ class MotionPlanner:
         def move(path: list[np.ndarray], ignore: frozenset[str], margin: float, what: str) -> None:
             # close work (1 mm clearance, parts meeting) runs slowly, like MoveL v100
             scale = self.speed_scale * (CLOSE_WORK_SPEED if margin < self.margin else 1.0)
+            held = scene.carried.get(robot)
+            carried = 0.0
+            if held is not None:
+                T_flange_part = model.tool.T_flange_tcp @ held[1]
+                half = 0.5 * float(np.linalg.norm(step.part_size))
+                carried = float(np.linalg.norm(T_flange_part[:3, 3])) + half
+            reach = frame_reach(model, carried)
+            allowed = SWEEP_FRACTION * margin
             for target in path:
                 seg = _ruckig_segment(model, q_now[0], target, dt, scale)
-                for row in seg:
-                    hit = scene.collides(robot, row, ignore_parts=ignore, margin=margin)
+                frames = link_frames_batch(model, seg)
+                checked = link_frames_batch(model, q_now[0])[0]
+                k = 0
+                while k < len(seg):  # the next sample that moved too far (or every 32nd)
+                    window = frames[k : k + 32]
+                    over = np.flatnonzero(sweep_bound(checked, window, reach) > allowed)
+                    j = k + (int(over[0]) if len(over) else len(window) - 1)
+                    hit = scene.collides(robot, seg[j], ignore_parts=ignore, margin=margin)
                     if hit is not None:
                         raise fail("collision", f"{what}: the trajectory touches {hit}")
+                    checked, k = frames[j], j + 1
+                for row in seg:
                     clock[0] += dt
                     samples.append((clock[0], row))
                 q_now[0] = target

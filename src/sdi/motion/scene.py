@@ -67,7 +67,12 @@ class Scene:
                 for j in range(pb.getNumJoints(body, physicsClientId=c))
                 if pb.getJointInfo(body, j, physicsClientId=c)[2] == pb.JOINT_REVOLUTE
             ]
-            links = list(range(-1, pb.getNumJoints(body, physicsClientId=c)))
+            # frames without geometry (flange, tcp) cannot collide
+            links = [
+                k
+                for k in range(-1, pb.getNumJoints(body, physicsClientId=c))
+                if pb.getCollisionShapeData(body, k, physicsClientId=c)
+            ]
             # SRDF-style: adjacent links, and the forearm (link 4) with everything past the
             # spherical wrist, are not checked; their boxes overlap at ordinary wrist angles.
             pairs = [(a, b) for a in links for b in links if b - a >= 3 and a != WRIST_FOREARM]

@@ -84,6 +84,29 @@ def link_frames(model: RobotModel, q: Sequence[float] | np.ndarray) -> list[np.n
     return frames
 
 
+def link_frames_batch(model: RobotModel, Q: np.ndarray) -> np.ndarray:
+    """`link_frames` for many configurations at once: Q (n, 6) rad → (n, 9, 4, 4)."""
+    Q = np.asarray(Q, dtype=float).reshape(-1, 6)
+    n = len(Q)
+    out = np.empty((n, 9, 4, 4))
+    T = np.broadcast_to(model.T_world_base, (n, 4, 4)).copy()
+    out[:, 0] = T
+    for i, joint in enumerate(model.joints):
+        c, s = np.cos(Q[:, i]), np.sin(Q[:, i])
+        J = np.zeros((n, 4, 4))
+        J[:, 3, 3] = 1.0
+        J[:, :3, 3] = joint.origin_xyz
+        a, b = {"x": (1, 2), "y": (2, 0), "z": (0, 1)}[joint.axis]
+        k = 3 - a - b
+        J[:, k, k] = 1.0
+        J[:, a, a], J[:, a, b], J[:, b, a], J[:, b, b] = c, -s, s, c
+        T = T @ J
+        out[:, i + 1] = T
+    out[:, 7] = T @ T_LINK6_FLANGE
+    out[:, 8] = out[:, 7] @ model.tool.T_flange_tcp
+    return out
+
+
 def fk_flange(model: RobotModel, q: Sequence[float] | np.ndarray) -> np.ndarray:
     """(4, 4) pose of the flange (ROS-Industrial tool0) in the world at joint values `q` rad."""
     return link_frames(model, q)[7]
@@ -309,4 +332,42 @@ def ik_nearest(
     return Q[int(np.argmin(d))].copy()
 
 
-__all__ = ["fk", "fk_flange", "fk_opw", "ik", "ik_nearest", "link_frames"]
+def _shape_reach(shape: object) -> float:
+    """Largest distance (m) from the carrying frame's origin to a point of `shape`."""
+    dims = np.asarray(shape.dimensions)  # type: ignore[attr-defined]
+    kind = shape.kind  # type: ignore[attr-defined]
+    extent = float(np.linalg.norm(dims)) if kind != "sphere" else float(dims[0])
+    return float(np.linalg.norm(shape.T_link_shape[:3, 3])) + extent  # type: ignore[attr-defined]
+
+
+def frame_reach(model: RobotModel, carried: float = 0.0) -> np.ndarray:
+    """Per frame of `link_frames`, how far (m) its geometry reaches from the frame origin.
+
+    The flange frame carries the tool and, when given, a part whose farthest point is
+    `carried` m from the flange origin.
+    """
+    reach = [max((_shape_reach(s) for s in shapes), default=0.0) for shapes in model.link_shapes]
+    tool = max(_shape_reach(b) for b in model.tool.collision_boxes)
+    reach += [0.0] * (9 - len(reach))
+    reach[7] = max(reach[7], tool, carried)
+    return np.array(reach)
+
+
+def sweep_bound(frames_a: np.ndarray, frames_b: np.ndarray, reach: np.ndarray) -> np.ndarray:
+    """Upper bound (m) on how far any point of the arm moves between configurations.
+
+    `frames_a` (9, 4, 4) are the `link_frames` of one configuration, `frames_b` (..., 9, 4, 4)
+    those of one or many others; returns one bound per configuration of `frames_b`. A point at
+    distance ≤ r from a frame's origin moves at most |Δp| + θ·r when the frame moves by Δp and
+    turns by θ (the chord of a turn is shorter than its arc).
+    """
+    dp = np.linalg.norm(frames_b[..., :3, 3] - frames_a[:, :3, 3], axis=-1)
+    trace = np.einsum("kij,...kij->...k", frames_a[:, :3, :3], frames_b[..., :3, :3])
+    theta = np.arccos(np.clip((trace - 1.0) / 2.0, -1.0, 1.0))
+    return np.max(dp + theta * reach, axis=-1)
+
+
+__all__ = [
+    "fk", "fk_flange", "fk_opw", "frame_reach", "ik", "ik_nearest", "link_frames",
+    "link_frames_batch", "sweep_bound",
+]  # fmt: skip
