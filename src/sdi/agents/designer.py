@@ -23,7 +23,13 @@ from typing import Any, Literal
 from pydantic import ValidationError
 
 from sdi import deadline
-from sdi.agents.prompts import all_constraints, few_shot_messages, phi, system_prompt
+from sdi.agents.prompts import (
+    LAYOUT_OUTPUT_SCHEMA,
+    all_constraints,
+    few_shot_messages,
+    phi,
+    system_prompt,
+)
 from sdi.design.composer import compose
 from sdi.errors import InfeasibleError, InputError
 from sdi.inspector.verifier import Report, verify
@@ -145,8 +151,10 @@ class LoopDesigner:
         t_max: int = 3,
         feedback: Literal["none", "full", "adaptive"] = "adaptive",
         full_prompt: bool = False,
+        temperature: float = 0.3,
     ) -> None:
         self.model = model
+        self.temperature = temperature
         self.cell = cell or CellConfig()
         self.t_max = 1 if feedback == "none" else t_max
         self.feedback = feedback
@@ -180,7 +188,11 @@ class LoopDesigner:
             deadline.check()
             try:
                 reply = self.model.chat(
-                    prompt, json_schema=Layout.model_json_schema(), max_tokens=2048, role="designer"
+                    prompt,
+                    json_schema=LAYOUT_OUTPUT_SCHEMA,
+                    max_tokens=2048,
+                    temperature=self.temperature,
+                    role="designer",
                 )
             except LLMError as exc:
                 notes.append(str(exc))

@@ -23,6 +23,38 @@ CONSTRAINT_TEXT: dict[Constraint, str] = {
 }
 
 
+def _vector(n: int) -> dict[str, object]:
+    return {"type": "array", "items": {"type": "number"}, "minItems": n, "maxItems": n}
+
+
+LAYOUT_OUTPUT_SCHEMA: dict[str, object] = {
+    "type": "object",
+    "properties": {
+        "objects": {
+            "type": "array",
+            "minItems": 1,
+            "items": {
+                "type": "object",
+                "properties": {
+                    "id": {"type": "string"},
+                    "position": _vector(3),
+                    "size": _vector(3),
+                },
+                "required": ["id", "position", "size"],
+                "additionalProperties": False,
+            },
+        }
+    },
+    "required": ["objects"],
+    "additionalProperties": False,
+}
+"""What the Designer must answer: at least one part, each with id, position and size. Stricter
+than the layout file format (whose `objects` may be empty and whose size has a default), so a
+grammar-constrained server cannot satisfy it with `{}`; plain types only, which every
+structured-output implementation (OpenAI, llama.cpp's grammar, vLLM) understands. The Inspector
+still parses the answer as a full `Layout`."""
+
+
 def system_prompt(cell: CellConfig) -> str:
     ws = cell.workspace
     s = cell.cube

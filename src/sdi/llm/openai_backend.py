@@ -9,6 +9,7 @@ come from the SDK; every call is counted in `usage`.
 
 from __future__ import annotations
 
+import html
 import json
 import os
 from typing import Any
@@ -124,6 +125,8 @@ def parse_json(text: str | None, *, limit: int = 200_000) -> Any:
     if len(text) > limit:
         raise ValueError(f"reply of {len(text)} characters exceeds {limit}")
     cleaned = text.strip()
+    if "&#34;" in cleaned or "&quot;" in cleaned:  # some chat templates HTML-escape quotes
+        cleaned = html.unescape(cleaned)
     if "```" in cleaned:
         parts = cleaned.split("```")
         cleaned = max(parts[1::2], key=len) if len(parts) > 2 else cleaned
