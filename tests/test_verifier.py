@@ -687,3 +687,36 @@ class TestTableIV:
 def test_sequence_found_by_verify_is_the_sequencer_order():
     lay = gen("castle")
     assert check(lay).sequence == tuple(sequence(Analysis(lay)))
+
+
+def test_violations_serialise_to_plain_json_for_checkpoints_and_the_bus():
+    # checkpoints (msgpack) and the message bus (JSON) refuse numpy scalars
+    import json
+
+    from sdi.inspector.verifier import verify
+    from sdi.model.layout import parse_layout
+
+    bad = {"objects": [
+        {"id": "float", "position": [0.4, 0.3, 0.3]},
+        {"id": "a", "position": [0.5, 0.3, 0.025]}, {"id": "b", "position": [0.52, 0.3, 0.025]},
+        {"id": "out", "position": [2.0, 0.3, 0.025]},
+        {"id": "big", "position": [0.3, 0.1, 0.05], "size": [0.05, 0.05, 0.1]},
+        {"id": "top", "position": [0.33, 0.1, 0.125]},
+    ]}  # fmt: skip
+    layout, _ = parse_layout(json.dumps(bad))
+    report = verify(layout)
+    assert len({v.constraint for v in report.violations}) >= 3
+    for v in report.violations:
+        text = json.dumps(v.to_json_dict())  # no default=: plain types only
+        assert json.loads(text)["constraint"] == v.constraint.value
+
+
+def test_plain_turns_numpy_values_into_json_values():
+    import json
+
+    import numpy as np
+
+    from sdi.jsonable import plain
+
+    value = {"a": np.float64(0.5), "b": (np.int64(2), np.array([1.0, 2.0])), 3: [np.bool_(True)]}
+    assert json.loads(json.dumps(plain(value))) == {"a": 0.5, "b": [2, [1.0, 2.0]], "3": [True]}

@@ -9,6 +9,8 @@ from enum import StrEnum
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from sdi.jsonable import plain
+
 
 class Constraint(StrEnum):
     """The constraint set K: the paper's six (§II) plus our stricter physical checks."""
@@ -63,7 +65,7 @@ class Violation(BaseModel):
             "hint": self.hint,
         }
         if self.suggestion is not None:
-            out["suggestion"] = self.suggestion
+            out["suggestion"] = plain(self.suggestion)
         return out
 
 

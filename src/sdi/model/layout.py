@@ -94,9 +94,9 @@ class Layout(BaseModel):
             "objects": [
                 {
                     "id": p.id,
-                    "position": [round(v, 6) for v in p.position],
-                    "orientation": [round(v, 9) for v in p.orientation],
-                    "size": [round(v, 6) for v in p.size],
+                    "position": [round(float(v), 6) for v in p.position],
+                    "orientation": [round(float(v), 9) for v in p.orientation],
+                    "size": [round(float(v), 6) for v in p.size],
                 }
                 for p in self.objects
             ]

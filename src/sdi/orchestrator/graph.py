@@ -42,6 +42,7 @@ from sdi.errors import (
 )
 from sdi.execute.faults import SCENARIOS
 from sdi.inspector.verifier import verify
+from sdi.jsonable import plain
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
 from sdi.model.cell import CellConfig
@@ -432,7 +433,7 @@ def build_graph(ctx: RunContext) -> StateGraph:
         def node(state: RunState) -> dict[str, Any]:
             try:
                 with phase_limit(name, cell.limits.phase_seconds):
-                    return fn(state)
+                    return plain(fn(state))  # JSON-ready: checkpoints refuse numpy
             except PhaseTimeout as exc:
                 failure = {"error_type": "timeout", "phase": name, "message": str(exc)}
                 say(state, "orchestrator", "human", "failure", failure)
