@@ -117,3 +117,50 @@ def test_as_built_check_reports_parts_out_of_tolerance():
     assert result.status == "failure"
     assert report["failure"]["error_type"] == "placement"
     assert report["failure"]["part_id"] in {"c1", "c2"}
+
+
+def test_resting_parts_do_not_creep_in_the_simulator():
+    # PyBullet lets a resting box creep ~0.3 mm per 30 s; over a long job the bottom row of a
+    # wall drifted 3 mm and the disturbance watch stopped execution. Parts sleep when at rest.
+    import pybullet as pb
+
+    from sdi.motion.scene import TABLE_CENTRE, TABLE_HALF
+
+    driver = SimDriver({})
+    c = pb.connect(pb.DIRECT)
+    try:
+        pb.setGravity(0, 0, -9.81, physicsClientId=c)
+        pb.setTimeStep(1.0 / driver.physics_hz, physicsClientId=c)
+        pb.setPhysicsEngineParameter(
+            numSolverIterations=driver.solver_iterations, physicsClientId=c
+        )
+        table = pb.createCollisionShape(pb.GEOM_BOX, halfExtents=TABLE_HALF, physicsClientId=c)
+        table = pb.createMultiBody(0, table, basePosition=TABLE_CENTRE, physicsClientId=c)
+        pb.changeDynamics(table, -1, lateralFriction=driver.friction, physicsClientId=c)
+        T = np.eye(4)
+        T[:3, 3] = (0.7, 0.2, 0.025)
+        part = driver._spawn(c, T, (0.05, 0.05, 0.05))
+        for _ in range(int(0.5 * driver.physics_hz)):  # settle
+            pb.stepSimulation(physicsClientId=c)
+        start = np.array(pb.getBasePositionAndOrientation(part, physicsClientId=c)[0])
+        for _ in range(int(30 * driver.physics_hz)):
+            pb.stepSimulation(physicsClientId=c)
+        end = np.array(pb.getBasePositionAndOrientation(part, physicsClientId=c)[0])
+    finally:
+        pb.disconnect(c)
+    assert np.linalg.norm(end - start) < 5e-5  # m, over 30 s
+
+
+@pytest.mark.slow
+def test_twenty_five_part_dual_arm_job_builds_within_2_mm():
+    from sdi.pipeline import plan
+
+    command = "a wall 5 long and 3 high at x = 0.3 and a wall 5 long and 2 high at x = 0.7"
+    layout = plan(command).layout
+    assert layout is not None and len(layout) == 25
+    planned = commission(layout)
+    assert planned.parallel and set(planned.summary()["steps_per_robot"]) == {"irb120", "irb1600"}
+    result, report = execute(planned)
+    assert report["status"] == "success" and report["v_traj"] == "pass", report["failure"]
+    assert len(result.placement_error) == 25
+    assert result.max_placement_error <= 0.002

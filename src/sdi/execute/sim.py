@@ -211,6 +211,10 @@ class SimDriver:
                 else:
                     constraint, _ = held.pop(e.robot)
                     pb.removeConstraint(constraint, physicsClientId=c)
+                    pb.changeDynamics(
+                        parts[e.part_id], -1, physicsClientId=c,
+                        activationState=pb.ACTIVATION_STATE_ENABLE_SLEEPING,
+                    )  # fmt: skip
                     done_steps += 1
                     released[e.part_id] = t
             if failure is not None:
@@ -328,7 +332,13 @@ class SimDriver:
             mass, shape, basePosition=T[:3, 3].tolist(), baseOrientation=_quat_xyzw(T[:3, :3]),
             physicsClientId=c,
         )  # fmt: skip
-        pb.changeDynamics(body, -1, lateralFriction=self.friction, physicsClientId=c)
+        # A resting box creeps ~0.3 mm per 30 s under PyBullet's contact solver (the bottom row
+        # of a wall drifted 3 mm over a 25-part job); sleeping stops that, and a contact with
+        # anything moving wakes the part again.
+        pb.changeDynamics(
+            body, -1, lateralFriction=self.friction,
+            activationState=pb.ACTIVATION_STATE_ENABLE_SLEEPING, physicsClientId=c,
+        )  # fmt: skip
         return body
 
     def _grippable(
@@ -352,6 +362,9 @@ class SimDriver:
         return None
 
     def _attach(self, c: int, robot: int, tcp: int, part: int) -> int:
+        # held parts never fall asleep (a sleeping part would stop following the gripper)
+        for state in (pb.ACTIVATION_STATE_WAKE_UP, pb.ACTIVATION_STATE_DISABLE_SLEEPING):
+            pb.changeDynamics(part, -1, activationState=state, physicsClientId=c)
         state = pb.getLinkState(robot, tcp, computeForwardKinematics=True, physicsClientId=c)
         pos, orn = pb.getBasePositionAndOrientation(part, physicsClientId=c)
         inv_pos, inv_orn = pb.invertTransform(state[4], state[5])
