@@ -140,23 +140,27 @@ def _check_epsilon(epsilon: float) -> float:
     return eps
 
 
+def _check_trajectory(kind: str, robot: str, traj: object, empty: str = "") -> JointTrajectory:
+    """`traj` must be a non-empty JointTrajectory of `robot`; `kind` is planned/executed."""
+    if not isinstance(traj, JointTrajectory):
+        raise MonitorError(
+            f"{kind} trajectory must be a JointTrajectory, got {type(traj).__name__}",
+            robot=robot,
+        )
+    if traj.robot != robot:
+        raise MonitorError(
+            f"{kind} trajectory is keyed {robot!r} but belongs to robot {traj.robot!r}",
+            robot=robot,
+        )
+    if len(traj) == 0:
+        raise MonitorError(f"{kind} trajectory has no samples{empty}", robot=robot)
+    return traj
+
+
 def _check_plan(plan: Mapping[str, JointTrajectory]) -> dict[str, JointTrajectory]:
     if not plan:
         raise MonitorError("the plan has no robots; nothing to monitor")
-    for robot, traj in plan.items():
-        if not isinstance(traj, JointTrajectory):
-            raise MonitorError(
-                f"planned trajectory must be a JointTrajectory, got {type(traj).__name__}",
-                robot=robot,
-            )
-        if traj.robot != robot:
-            raise MonitorError(
-                f"planned trajectory is keyed {robot!r} but belongs to robot {traj.robot!r}",
-                robot=robot,
-            )
-        if len(traj) == 0:
-            raise MonitorError("planned trajectory has no samples", robot=robot)
-    return dict(plan)
+    return {robot: _check_trajectory("planned", robot, traj) for robot, traj in plan.items()}
 
 
 def _dof_mismatch(robot: str, dof_plan: int, dof_exec: int) -> MonitorError:
@@ -229,21 +233,9 @@ def deviation(
                 f"robot (executed has {sorted(executed)})",
                 robot=robot,
             )
-        e = executed[robot]
-        if not isinstance(e, JointTrajectory):
-            raise MonitorError(
-                f"executed trajectory must be a JointTrajectory, got {type(e).__name__}",
-                robot=robot,
-            )
-        if e.robot != robot:
-            raise MonitorError(
-                f"executed trajectory is keyed {robot!r} but belongs to robot {e.robot!r}",
-                robot=robot,
-            )
-        if len(e) == 0:
-            raise MonitorError(
-                "executed trajectory has no samples; an empty recording cannot pass", robot=robot
-            )
+        e = _check_trajectory(
+            "executed", robot, executed[robot], "; an empty recording cannot pass"
+        )
         if e.dof != p.dof:
             raise _dof_mismatch(robot, p.dof, e.dof)
         series[robot] = DeviationSeries(robot, e.t, _norms(p.at(e.t) - e.q))
