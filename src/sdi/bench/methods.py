@@ -40,6 +40,7 @@ class MethodRecord:
     replans: int
     seconds: float
     reason: str | None = None
+    spec_source: str | None = None  # llm | rules (llm malformed) | rules (llm disagreed) | …
 
     @property
     def success(self) -> bool:
@@ -111,6 +112,7 @@ def _one(
         replans=int(status.state.get("replans") or 0),
         seconds=seconds,
         reason=reason,
+        spec_source=status.state.get("spec_source"),
     )
 
 
