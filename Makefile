@@ -45,10 +45,13 @@ test: $(STAMP) $(LOCAL_STAMP)
 	$(VENV)/bin/mypy
 	SDI_REQUIRE_LOCAL_LLM=1 $(PY) -m pytest
 
-bench: $(STAMP)
+bench: $(STAMP) $(LOCAL_STAMP)
 	$(PY) benchmarks/inspector_scaling.py
 	$(PY) benchmarks/plan_latency.py
 	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json
+	$(PY) benchmarks/methods.py --backend rules
+	$(PY) benchmarks/methods.py --backend local --phase-seconds 60
+	$(PY) benchmarks/critic_ablation.py --backend local
 	$(PY) benchmarks/cell_motion.py
 
 clean:
