@@ -41,3 +41,14 @@ def test_an_llm_call_is_not_started_after_the_limit():
         with pytest.raises(deadline.PhaseTimeout):
             model.chat([{"role": "user", "content": "hi"}])
     assert model.usage.calls == 0
+
+
+def test_execution_is_allowed_its_plan_duration_on_top_of_the_phase_limit():
+    from sdi.model.cell import CellConfig, Limits
+    from sdi.orchestrator.graph import phase_seconds
+
+    cell = CellConfig(limits=Limits(phase_seconds=300))
+    planned = {"planning": {"makespan_s": 600.0}}
+    assert phase_seconds("design", planned, cell) == 300
+    assert phase_seconds("execute", planned, cell) == 300 + 2 * 600
+    assert phase_seconds("execute", {}, cell) == 300  # nothing planned yet

@@ -165,6 +165,17 @@ def llm_route(state: RunState, ctx: RunContext) -> str:
     return action if action in allowed else fallback
 
 
+def phase_seconds(name: str, state: RunState, cell: CellConfig) -> float:
+    """The wall-clock limit of phase `name`: `[limits] phase_seconds`, and for EXECUTE that plus
+    twice the planned makespan — a robot cannot finish faster than its plan, and a long job
+    must not be cut off by a limit meant for thinking."""
+    limit = cell.limits.phase_seconds
+    if name == "execute":
+        makespan = float((state.get("planning") or {}).get("makespan_s") or 0.0)
+        limit += 2.0 * makespan
+    return limit
+
+
 def build_graph(ctx: RunContext) -> StateGraph:
     cell, method, bus = ctx.cell, ctx.method, ctx.bus
 
@@ -432,7 +443,7 @@ def build_graph(ctx: RunContext) -> StateGraph:
     ) -> Callable[[RunState], dict[str, Any]]:
         def node(state: RunState) -> dict[str, Any]:
             try:
-                with phase_limit(name, cell.limits.phase_seconds):
+                with phase_limit(name, phase_seconds(name, state, cell)):
                     return plain(fn(state))  # JSON-ready: checkpoints refuse numpy
             except PhaseTimeout as exc:
                 failure = {"error_type": "timeout", "phase": name, "message": str(exc)}
