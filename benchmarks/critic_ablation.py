@@ -16,15 +16,17 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import tempfile
 from contextlib import ExitStack
 from pathlib import Path
 
 from sdi.bench.suite import SUITE
 from sdi.inspector.verifier import verify
+from sdi.llm import open_backend
 from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
 from sdi.orchestrator.bus import MessageBus
-from sdi.orchestrator.graph import RunContext, _llm_critic
+from sdi.orchestrator.graph import RunContext, llm_critic
 from sdi.orchestrator.methods import METHODS
 from sdi.pipeline import plan
 
@@ -60,19 +62,15 @@ def main(argv: list[str] | None = None) -> int:
 
     rows = []
     with ExitStack() as stack:
-        if args.backend == "local":
-            from sdi.llm import LocalServer
-
-            model = stack.enter_context(LocalServer()).chat_model()
-        else:
-            from sdi.llm import OpenAIChat
-
-            model = OpenAIChat()
-        bus = stack.enter_context(_TempBus())
+        model = open_backend(args.backend, stack)
+        assert model is not None  # the critic needs a model: --backend is local or openai
+        tmp = Path(stack.enter_context(tempfile.TemporaryDirectory()))
+        bus = MessageBus(tmp / "bus.sqlite")  # the critic sends nothing; the context needs one
+        stack.callback(bus.close)
         ctx = RunContext(cell, METHODS["Hybrid-LLMCritic"], model, bus)
         for name, layout in cases:
             truth = verify(layout, cell).passed
-            verdict = _llm_critic(ctx, layout)
+            verdict = llm_critic(ctx, layout)
             rows.append({"case": name, "feasible": truth, "critic_passed": verdict["passed"]})
             print(name, truth, verdict["passed"], file=sys.stderr, flush=True)
         usage = model.usage.to_json_dict()
@@ -97,19 +95,6 @@ def main(argv: list[str] | None = None) -> int:
     out.write_text(json.dumps(data | {"rows": rows}, indent=2) + "\n", encoding="utf-8")
     print(json.dumps(summary))
     return 0
-
-
-class _TempBus:
-    def __enter__(self) -> MessageBus:
-        import tempfile
-
-        self._dir = tempfile.TemporaryDirectory()
-        self.bus = MessageBus(Path(self._dir.name) / "bus.sqlite")
-        return self.bus
-
-    def __exit__(self, *exc: object) -> None:
-        self.bus.close()
-        self._dir.cleanup()
 
 
 if __name__ == "__main__":

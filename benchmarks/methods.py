@@ -25,6 +25,7 @@ from pathlib import Path
 
 from sdi.bench.methods import markdown_table, records_json, run_method, summarise
 from sdi.bench.suite import SUITE
+from sdi.llm import open_backend
 from sdi.model.cell import CellConfig, Limits
 from sdi.orchestrator.methods import METHODS
 
@@ -54,15 +55,7 @@ def main(argv: list[str] | None = None) -> int:
     cell = CellConfig(limits=Limits(phase_seconds=phase_seconds))
 
     with ExitStack() as stack:
-        model = None
-        if args.backend == "local":
-            from sdi.llm import LocalServer
-
-            model = stack.enter_context(LocalServer()).chat_model()
-        elif args.backend == "openai":
-            from sdi.llm import OpenAIChat
-
-            model = OpenAIChat()
+        model = open_backend(args.backend, stack)
         records = []
         for method in args.methods:
             records += run_method(

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import sys
+from contextlib import ExitStack
 from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
@@ -80,14 +81,12 @@ def plan(
     else:
         from sdi.pipeline import plan_with
 
-        model, server = _model(backend, json_out)
-        try:
-            result = plan_with(command, method, model, cell)
-        except InputError as exc:
-            _bad_input(exc, json_out)
-        finally:
-            if server is not None:
-                server.stop()
+        with ExitStack() as stack:
+            model = _model(backend, json_out, stack)
+            try:
+                result = plan_with(command, method, model, cell)
+            except InputError as exc:
+                _bad_input(exc, json_out)
     data = result.to_json_dict()
     if out_file is not None and result.status == "success":
         tmp = out_file.with_suffix(out_file.suffix + ".tmp")
@@ -330,24 +329,14 @@ DbOption = Annotated[
 ]
 
 
-def _model(backend: str, as_json: bool) -> Any:
-    """The chat model for a backend, and the server to stop afterwards (or None)."""
-    from sdi.llm import LocalModelUnavailable, LocalServer, OpenAIChat
+def _model(backend: str, as_json: bool, stack: ExitStack) -> Any:
+    """The chat model for a backend (None: rules); a local server stops when `stack` closes."""
+    from sdi.llm import open_backend
 
-    if backend == "rules":
-        return None, None
-    if backend == "openai":
-        return OpenAIChat(), None
-    if backend == "local":
-        try:
-            server = LocalServer().start()
-        except LocalModelUnavailable as exc:
-            _bad_input(InputError(str(exc), field="--backend"), as_json)
-        return server.chat_model(), server
-    _bad_input(
-        InputError(f"unknown backend {backend!r}; use rules, local or openai", field="--backend"),
-        as_json,
-    )
+    try:
+        return open_backend(backend, stack)
+    except InputError as exc:
+        _bad_input(exc, as_json)
 
 
 def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
@@ -422,8 +411,8 @@ def run_cmd(
 
     _check_faults(fault, json_out)
     cell = _cell(cell_path, json_out)
-    model, server = _model(backend, json_out)
-    try:
+    with ExitStack() as stack:
+        model = _model(backend, json_out, stack)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
         try:
             status = orch.start(
@@ -434,9 +423,6 @@ def run_cmd(
         if not json_out:
             err.print(f"run {status.run_id}")
         status = _drive(orch, status, json_out)
-    finally:
-        if server is not None:
-            server.stop()
     _finish(status, json_out)
 
 
@@ -473,8 +459,8 @@ def resume_cmd(
     elif reject:
         decision = {"action": "reject"}
     cell = _cell(cell_path, json_out)
-    model, server = _model(backend, json_out)
-    try:
+    with ExitStack() as stack:
+        model = _model(backend, json_out, stack)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
         try:
             status = orch.resume(run_id, decision)
@@ -488,9 +474,6 @@ def resume_cmd(
                 and (status.waiting_for or {}).get("kind") != "failure_report"
             ):
                 status = orch.resume(run_id, {"action": "approve"})
-    finally:
-        if server is not None:
-            server.stop()
     _finish(status, json_out)
 
 

@@ -129,14 +129,12 @@ class GeneratorFirstDesigner:
         generated = self.rules.design(spec, command)
         if generated.status == "success":
             return generated
-        notes = [f"generators: {'; '.join(generated.notes)}"]
-        if generated.layout is not None and generated.report is not None:
-            outcome = self.loop.design(
-                spec, command, start=generated.layout, violations=generated.report.violations
-            )
-        else:
-            outcome = self.loop.design(spec, command)
-        outcome.notes[:0] = notes
+        # repair what the generators built, or design from the command if they built nothing
+        report = generated.report
+        outcome = self.loop.design(
+            spec, command, start=generated.layout, violations=report.violations if report else ()
+        )
+        outcome.notes[:0] = [f"generators: {'; '.join(generated.notes)}"]
         return outcome
 
 

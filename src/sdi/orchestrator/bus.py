@@ -15,6 +15,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from sdi.jsonable import plain
+
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS messages (
     id TEXT PRIMARY KEY, run_id TEXT NOT NULL, seq INTEGER NOT NULL, ts REAL NOT NULL,
@@ -54,7 +56,7 @@ class MessageBus:
         *,
         key: str = "",
     ) -> str:
-        body = json.dumps(payload, sort_keys=True, default=str)
+        body = json.dumps(plain(payload), sort_keys=True, default=str)
         mid = hashlib.sha1(
             f"{run_id}|{sender}|{receiver}|{type}|{key}|{body}".encode()
         ).hexdigest()[:16]

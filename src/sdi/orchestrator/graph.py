@@ -233,7 +233,7 @@ def build_graph(ctx: RunContext) -> StateGraph:
                 "phase": "replan",
             }
         if method.critic == "llm" and ctx.model is not None:
-            verdict = _llm_critic(ctx, layout)
+            verdict = llm_critic(ctx, layout)
             say(state, "critic", "orchestrator", "verdict", verdict)
             if verdict.get("passed"):
                 return {"violations": [], "sequence": list(layout.ids), "phase": "review"}
@@ -479,7 +479,7 @@ def build_graph(ctx: RunContext) -> StateGraph:
     return g
 
 
-def _llm_critic(ctx: RunContext, layout: Layout) -> dict[str, Any]:
+def llm_critic(ctx: RunContext, layout: Layout) -> dict[str, Any]:
     """The ablation: an LLM judges feasibility instead of the Inspector (never the last gate)."""
     assert ctx.model is not None
     import json

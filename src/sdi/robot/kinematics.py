@@ -21,7 +21,7 @@ from weakref import WeakKeyDictionary
 import numpy as np
 
 from sdi.robot.exceptions import RobotModelError
-from sdi.robot.model import T_LINK6_FLANGE, OPWParameters, RobotModel
+from sdi.robot.model import T_LINK6_FLANGE, CollisionShape, OPWParameters, RobotModel
 
 _TWO_PI = 2.0 * math.pi
 _ACOS_SLACK = 1e-12
@@ -332,12 +332,11 @@ def ik_nearest(
     return Q[int(np.argmin(d))].copy()
 
 
-def _shape_reach(shape: object) -> float:
+def _shape_reach(shape: CollisionShape) -> float:
     """Largest distance (m) from the carrying frame's origin to a point of `shape`."""
-    dims = np.asarray(shape.dimensions)  # type: ignore[attr-defined]
-    kind = shape.kind  # type: ignore[attr-defined]
-    extent = float(np.linalg.norm(dims)) if kind != "sphere" else float(dims[0])
-    return float(np.linalg.norm(shape.T_link_shape[:3, 3])) + extent  # type: ignore[attr-defined]
+    dims = np.asarray(shape.dimensions)
+    extent = float(dims[0]) if shape.kind == "sphere" else float(np.linalg.norm(dims))
+    return float(np.linalg.norm(shape.T_link_shape[:3, 3])) + extent
 
 
 def frame_reach(model: RobotModel, carried: float = 0.0) -> np.ndarray:
