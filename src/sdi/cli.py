@@ -96,7 +96,7 @@ def plan(
         _emit(data)
     else:
         print_plan(out, result, cell)
-    raise typer.Exit({"success": 0, "failure": 1, "error": 2}[result.status])
+    raise typer.Exit({"success": 0, "partial": 1, "failure": 1, "error": 2}[result.status])
 
 
 def _load(path: Path, cell: CellConfig, as_json: bool) -> tuple[Any, list[str] | None]:

@@ -1,8 +1,11 @@
 """End to end with no model: command → spec → layout → verified + sequenced plan.
 
 `plan` never raises for a user's mistake: every outcome is a `PlanResult` whose `status` is
-``success`` only when the layout passed every constraint, ``failure`` when the command was
-understood but no feasible layout came out, and ``error`` when the command itself is unusable.
+``success`` only when the layout passed every constraint **and** the reading used every
+material word of the command; ``partial`` when the layout passed but part of the command was
+not used (`notes` and `ignored` say what); ``failure`` when the command was understood but no
+feasible layout came out; and ``error`` when the command itself is unusable (`understood`
+says what was recognised).
 """
 
 from __future__ import annotations
@@ -16,12 +19,12 @@ from sdi.design.composer import compose
 from sdi.errors import InfeasibleError, InputError, SpecError
 from sdi.inspector.verifier import verify
 from sdi.inspector.violation import Violation
+from sdi.language import Reading, read
 from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
-from sdi.spec.grammar import parse_command
 from sdi.spec.structure_spec import Spec
 
-Status = Literal["success", "failure", "error"]
+Status = Literal["success", "partial", "failure", "error"]
 
 
 class PlanResult(BaseModel):
@@ -39,11 +42,17 @@ class PlanResult(BaseModel):
     understood: dict[str, Any] | None = None
     seconds: float = 0.0
     llm_calls: int = 0
+    notes: tuple[str, ...] = ()
+    ignored: tuple[str, ...] = ()
+    reading: Reading | None = None
 
     def to_json_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
             "status": self.status,
             "command": self.command,
+            "notes": list(self.notes),
+            "ignored": list(self.ignored),
+            "reading": self.reading.to_json_dict() if self.reading is not None else None,
             "spec": self.spec.model_dump(mode="json", exclude_none=True) if self.spec else None,
             "layout": self.layout.to_json_dict() if self.layout is not None else None,
             "sequence": list(self.sequence) if self.sequence is not None else None,
@@ -52,8 +61,8 @@ class PlanResult(BaseModel):
         }
         if self.error:
             out["error"] = self.error
-        if self.understood:
-            out["understood"] = self.understood
+        if self.status == "error":
+            out["understood"] = self.understood or {}
         return out
 
 
@@ -66,24 +75,40 @@ def plan(command: str, cell: CellConfig | None = None) -> PlanResult:
         return PlanResult(command=command, seconds=time.perf_counter() - start, **kw)
 
     try:
-        spec = parse_command(command, cell)
+        reading = read(command, cell)
     except SpecError as exc:
-        return done(status="error", error=str(exc), understood=exc.understood or None)
+        return done(status="error", error=str(exc), understood=exc.understood or {})
     except InputError as exc:
-        return done(status="error", error=str(exc))
+        return done(status="error", error=str(exc), understood={})
+    spec = reading.spec
+    said = {"notes": reading.notes, "ignored": reading.ignored, "reading": reading}
     try:
         layout = compose(spec, cell)
     except (InfeasibleError, InputError) as exc:
-        return done(status="failure", spec=spec, error=str(exc))
+        return done(status="failure", spec=spec, error=str(exc), **said)
     report = verify(layout, cell, precedence=spec.precedence)
+    status: Status = "failure"
+    if report.passed:
+        status = "success" if reading.complete else "partial"
     return done(
-        status="success" if report.passed else "failure",
+        status=status,
+        **said,
         spec=spec,
         layout=layout,
         sequence=report.sequence,
         violations=report.violations,
-        error=None if report.passed else f"{len(report.violations)} constraint violation(s)",
+        error=_error(report.passed, len(report.violations), reading),
     )
+
+
+def _error(passed: bool, violations: int, reading: Reading) -> str | None:
+    if not passed:
+        return f"{violations} constraint violation(s)"
+    if not reading.complete:
+        return "the layout verifies, but part of the command was not used: " + ", ".join(
+            f"'{m}'" for m in reading.material
+        )
+    return None
 
 
 def plan_with(command: str, method: str, model: Any, cell: CellConfig | None = None) -> PlanResult:

@@ -77,12 +77,15 @@ def plan_panel(result: object, cell: CellConfig) -> Panel:
     from sdi.pipeline import PlanResult
 
     assert isinstance(result, PlanResult)
-    colour = {"success": "green", "failure": "red", "error": "red"}[result.status]
+    colour = {"success": "green", "partial": "yellow", "failure": "red", "error": "red"}[
+        result.status
+    ]
     lines: list[RenderableType] = [Text.assemble(("command  ", "bold"), result.command)]
     if result.spec is not None:
-        lines.append(Text.assemble(("spec     ", "bold"), result.spec.describe()))
-        for note in result.spec.notes:
-            lines.append(Text.assemble(("note     ", "bold yellow"), note))
+        lines.append(Text.assemble(("read as  ", "bold"), result.spec.describe()))
+    for note in result.notes or (result.spec.notes if result.spec is not None else ()):
+        style = "bold yellow" if note.startswith("ignored") else "yellow"
+        lines.append(Text.assemble(("note     ", "bold yellow"), (note, style)))
     if result.layout is not None:
         n = len(result.layout)
         levels = len({round(p.position[2], 3) for p in result.layout})

@@ -1,10 +1,14 @@
 """ξ_spec, the Specifier: command → structured spec l̂ under a JSON Schema (paper §III-B).
 
 With a model: one structured-output call (system prompt + schema), validated with pydantic.
-The rule-based grammar parses the same command as a cross-check: where it understands the
-command and the model's spec names different structures, the grammar's reading wins (small
-models drift); where the model's output is malformed, the grammar is the fallback. Without a
-model (`rules` backend) the grammar alone is the Specifier.
+The offline reader (`sdi.language`) reads the same command as a cross-check, slot by slot:
+every value the reader took from the command's words (a count, a size, a coordinate, a
+region) and every relation it found must be the same in the model's spec, matched structure
+by structure; otherwise the reader's spec wins and the disagreement is reported — explicit
+numbers in the command always beat a model's reading. The model's spec is used when it agrees
+on all of those (it may add what the words left open). Where the model's output is
+malformed, the reader is the fallback. Without a model (`rules` backend) the reader alone is
+the Specifier.
 """
 
 from __future__ import annotations
@@ -15,10 +19,10 @@ from pydantic import ValidationError
 
 from sdi.agents.prompts import SPEC_PROMPT
 from sdi.errors import SpecError
+from sdi.language import read
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
 from sdi.model.cell import CellConfig
-from sdi.spec.grammar import parse_command
 from sdi.spec.structure_spec import Spec
 
 
@@ -38,7 +42,7 @@ class Specifier:
         rules: Spec | None = None
         rules_error: SpecError | None = None
         try:
-            rules = parse_command(command, self.cell)
+            rules = read(command, self.cell).spec
         except SpecError as exc:
             rules_error = exc
         if self.model is None:
@@ -63,15 +67,48 @@ class Specifier:
                     understood=rules_error.understood if rules_error else {},
                 ) from None
             return SpecResult(rules, "rules (llm malformed)", [f"model output unusable: {exc}"])
-        if rules is not None and sorted(s.shape for s in rules.structures) != sorted(
-            s.shape for s in llm_spec.structures
-        ):
-            return SpecResult(
-                rules,
-                "rules (llm disagreed)",
-                [f"model read {llm_spec.describe()!r}, grammar read {rules.describe()!r}"],
-            )
+        if rules is not None:
+            conflict = disagreement(rules, llm_spec)
+            if conflict:
+                return SpecResult(
+                    rules,
+                    "rules (llm disagreed)",
+                    [
+                        f"the model's reading disagrees with the command's words ({conflict}); "
+                        f"used the grammar's: model read {llm_spec.describe()!r}, grammar read "
+                        f"{rules.describe()!r}"
+                    ],
+                )
         return SpecResult(llm_spec, "llm")
 
 
-__all__ = ["SpecResult", "Specifier"]
+def disagreement(rules: Spec, model: Spec) -> str | None:
+    """Where `model` contradicts what the grammar read from the words, or None.
+
+    Structures are matched in order within each family; every field the grammar set (not a
+    default) must have the same value in the model's structure, and the relations must be
+    the same.
+    """
+    shapes = sorted(s.shape for s in rules.structures)
+    if shapes != sorted(s.shape for s in model.structures):
+        return f"structures {shapes} vs {sorted(s.shape for s in model.structures)}"
+    theirs: dict[str, list[int]] = {}
+    for k, s in enumerate(model.structures):
+        theirs.setdefault(s.shape, []).append(k)
+    mapping: dict[int, int] = {}
+    for k, s in enumerate(rules.structures):
+        j = theirs[s.shape].pop(0)
+        mapping[k] = j
+        said = s.model_dump(exclude_defaults=True)
+        got = model.structures[j].model_dump()
+        for key, value in said.items():
+            if got.get(key) != value:
+                return f"{s.shape} {key}: command says {value}, model says {got.get(key)}"
+    mine = sorted((r.kind, mapping[r.subject], mapping[r.object], r.side) for r in rules.relations)
+    other = sorted((r.kind, r.subject, r.object, r.side) for r in model.relations)
+    if mine != other:
+        return "relations between the structures differ"
+    return None
+
+
+__all__ = ["SpecResult", "Specifier", "disagreement"]

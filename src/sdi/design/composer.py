@@ -261,8 +261,115 @@ def _place_all(placed: list[_Placed], cell: CellConfig) -> list[np.ndarray]:
     return [c for c in centres if c is not None]
 
 
+def _merge(base: _Placed, other: _Placed, dxy: np.ndarray, dz: float) -> _Placed:
+    """One unit of `base` and `other` moved by (dxy, dz), re-centred on its footprint."""
+    xy = np.vstack([base.xy, other.xy + dxy])
+    z = np.concatenate([base.z, other.z + dz])
+    sizes = [*base.sizes, *other.sizes]
+    yaws = np.concatenate([base.yaws, other.yaws])
+    lo = np.minimum(-base.half, dxy - other.half)
+    hi = np.maximum(base.half, dxy + other.half)
+    centre = (lo + hi) / 2
+    return _Placed(
+        spec=base.spec,
+        xy=xy - centre,
+        z=z,
+        sizes=sizes,
+        yaws=yaws,
+        half=(hi - lo) / 2,
+        kinds=[*base.kinds, *other.kinds],
+    )
+
+
+def _box_half(p: _Placed) -> np.ndarray:
+    """Per-part footprint half extents (n, 2), m."""
+    return np.array(
+        [
+            [abs(math.cos(a)) * d[0] / 2 + abs(math.sin(a)) * d[1] / 2,
+             abs(math.sin(a)) * d[0] / 2 + abs(math.cos(a)) * d[1] / 2]
+            for a, d in zip(p.yaws, p.sizes, strict=True)
+        ]
+    ).reshape(-1, 2)  # fmt: skip
+
+
+def _top(p: _Placed) -> tuple[float, np.ndarray]:
+    """Height of the unit's top face, m, and the footprint centre of the parts that reach it."""
+    tops = p.z + np.array([d[2] for d in p.sizes]) / 2
+    top = float(tops.max())
+    high = tops > top - 1e-6
+    half = _box_half(p)[high]
+    lo, hi = (p.xy[high] - half).min(axis=0), (p.xy[high] + half).max(axis=0)
+    return top, (lo + hi) / 2
+
+
+_SIDES = {"left": (1, 1.0), "right": (1, -1.0), "back": (0, 1.0), "front": (0, -1.0)}
+
+
+def _ring_for(ring: StructureSpec, inner: _Placed, cell: CellConfig) -> StructureSpec:
+    """The ring's size: as stated, else one part of room around `inner` on every side."""
+    unit = cell.cube[0]
+    need = [round(2 * float(h) / unit + 0.499) + 2 for h in inner.half]  # inside, in parts
+    if ring.length is not None or ring.length_m is not None:
+        return ring
+    side = max(need) + 2
+    return ring.model_copy(update={"length": side, "width": side, "axis": None})
+
+
+def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[_Placed]:
+    """Fold related structures into units: a subject joins its object's unit.
+
+    Returns the units to place, one per structure that is no relation's subject, in order.
+    """
+    subject_of = {r.subject: r for r in spec.relations}
+    children: dict[int, list[int]] = {}
+    for r in spec.relations:
+        children.setdefault(r.object, []).append(r.subject)
+    units: dict[int, _Placed] = {}
+
+    def unit(k: int) -> _Placed:
+        if k in units:
+            return units[k]
+        base = placed[k]
+        assert base is not None
+        for c in children.get(k, []):
+            rel = subject_of[c]
+            if rel.kind == "around":
+                sub_spec = _ring_for(spec.structures[c], base, cell)
+                sizes = _sizes(cell, sub_spec.part)
+                sub = _orient(sub_spec, FAMILIES[sub_spec.shape](sub_spec, sizes), sizes)
+                inside = sub.half - 2 * cell.cube[0] * 0.999
+                if np.any(inside + 1e-9 < base.half):
+                    raise InfeasibleError(
+                        f"around: the {sub_spec.shape}'s inside is smaller than the "
+                        f"{base.spec.shape} it should enclose; make the ring at least "
+                        f"{round(2 * float(base.half.max()) / cell.cube[0]) + 2} parts on a side",
+                        parameter="length",
+                    )
+                base = _merge(base, sub, np.zeros(2), 0.0)
+            else:
+                sub = unit(c)
+                if rel.kind == "on_top_of":
+                    top, centre = _top(base)
+                    bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
+                    base = _merge(base, sub, centre, top - bottom)
+                else:
+                    d, sign = _SIDES[rel.side or "left"]
+                    dxy = np.zeros(2)
+                    dxy[d] = sign * (base.half[d] + sub.half[d] + cell.design.structure_gap)
+                    base = _merge(base, sub, dxy, 0.0)
+        units[k] = base
+        return base
+
+    return [unit(k) for k in range(len(placed)) if k not in subject_of]
+
+
 def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
-    """Generate and place every structure of `spec`; no verification (see `design`)."""
+    """Generate and place every structure of `spec`; no verification (see `design`).
+
+    Related structures (`spec.relations`) are built as one unit first: a structure on top of
+    another stands centred on its highest parts, a ring around another is sized to enclose
+    it, a structure next to another stands one structure gap away on the stated side.
+    """
     cell = cell or CellConfig()
     placed: list[_Placed] = []
     total = 0
@@ -295,6 +402,10 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
             except InfeasibleError:
                 raise exc from None
         placed.append(p)
+    if spec.relations:
+        placed = _relate(spec, list(placed), cell)
+        for p in placed:
+            _check_fits(p, cell)
     centres = _place_all(placed, cell)
     parts: list[Part] = []
     counters: dict[str, int] = {}

@@ -20,7 +20,7 @@ from sdi.model.region import Region
 from sdi.recovery import flatten, shift
 from sdi.skills.registry import SkillRegistry
 from sdi.skills.skill import Skill, SkillResult
-from sdi.spec.grammar import parse_command
+from sdi.spec import parse_command
 from sdi.spec.structure_spec import Spec, StructureSpec
 
 

@@ -1,6 +1,19 @@
-"""Command → structured specification (the Specifier ξ_spec)."""
+"""The structured specification l̂ (`Spec`) and the phrase grammar that fills its slots.
 
-from sdi.spec.grammar import parse_command
-from sdi.spec.structure_spec import SHAPES, Spec, StructureSpec
+`parse_command` reads a whole command through the language front end (`sdi.language`).
+"""
 
-__all__ = ["SHAPES", "Spec", "StructureSpec", "parse_command"]
+from __future__ import annotations
+
+from sdi.model.cell import CellConfig
+from sdi.spec.structure_spec import SHAPES, Relation, Spec, StructureSpec
+
+
+def parse_command(command: str, cell: CellConfig | None = None) -> Spec:
+    """The offline Specifier: a command → `Spec`, or `SpecError` saying what it understood."""
+    from sdi.language import read
+
+    return read(command, cell).spec
+
+
+__all__ = ["SHAPES", "Relation", "Spec", "StructureSpec", "parse_command"]

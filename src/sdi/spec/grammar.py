@@ -24,7 +24,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from sdi.errors import LimitError, SpecError
+from sdi.errors import SpecError
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import QUANTITY_WORDS, words_to_numbers
@@ -628,6 +628,12 @@ class _Parser:
                     if h.shape in ("u_shape", "t_shape"):  # "a U 4 wide and 3 deep"
                         key = "length" if key == "width" and wj != "deep" else key
                         key = "width" if wj in ("deep", "long", "tall", "high") else key
+                    if wj == "thick" and "length" in p and "width" in p:
+                        key = "height"  # "five across and three deep, one cube thick"
+                    elif key in p and p[key] != v:
+                        other = {"width": "length", "length": "width"}.get(key)
+                        if other and other not in p:
+                            key = other  # "3 wide, 2 deep": two different sides
                     p.setdefault(key, v)
                     for m in range(k, j + 1):
                         take(m)
@@ -676,6 +682,8 @@ class _Parser:
                 placed_on = wj in ("at", "on", "in", "for", "along") and wk in ("base", "bottom")
                 if wk in PART_NOUN_KEYS and (wk == wj or placed_on):
                     key = PART_NOUN_KEYS[wk]
+                    if key == "height" and j == k + 1:
+                        key = "_legs"  # "four legs": how many, not how high
                     if key == "arms":
                         p.setdefault("length", v)
                         p.setdefault("width", v)
@@ -765,7 +773,9 @@ class _Parser:
                 if (
                     k + 1 <= h.index
                     and all(
-                        self.word(m) in lx.SIZE_WORDS
+                        (self.is_num(m) and self.word(m + 1) in lx.PART_WORDS and m + 2 == h.index)
+                        or (self.word(m) in lx.PART_WORDS and self.is_num(m - 1) and m > k + 1)
+                        or self.word(m) in lx.SIZE_WORDS
                         or self.word(m)
                         in (
                             "separate",
@@ -1087,6 +1097,12 @@ class _Parser:
         cube_word = p.pop("_cube_word", False)
         flat = p.pop("_flat", False)
         p.pop("_tower_sizes", None)
+        legs = p.pop("_legs", None)
+        if legs is not None and not (shape == "canopy" and legs == 4):
+            self.notes.append(
+                f"ignored '{legs} legs': a {shape} has "
+                + ("four legs" if shape == "canopy" else "no legs to count")
+            )
         sized = (
             count is not None
             or sizes
@@ -1137,6 +1153,8 @@ class _Parser:
                     p["width"] = max(2, count - p["length"] + 1)
                 elif shape == "block" and "length" not in p:
                     shape = "pack"
+                    p["count"] = count
+                elif shape == "block":
                     p["count"] = count
                 elif shape == "tower" and "height" not in p:
                     p["height"] = count
@@ -1311,17 +1329,13 @@ def _region(regions: list[str]) -> str | None:
     return depth or side or ("centre" if "centre" in names else None)
 
 
-def parse_command(command: str, cell: CellConfig | None = None) -> Spec:
-    """The rule-based Specifier: a command → `Spec`, or `SpecError` saying what it understood."""
-    cell = cell or CellConfig()
-    if not isinstance(command, str):
-        raise SpecError("the command must be text")
-    if len(command) > cell.limits.max_command_chars:
-        raise LimitError(
-            f"the command has {len(command)} characters; the limit is "
-            f"{cell.limits.max_command_chars} (limits.max_command_chars)",
-            field="command",
-        )
-    if not command.strip():
-        raise SpecError("the command is empty; say what to build, e.g. 'a 3-cube tower'")
-    return _Parser(command, cell).parse()
+def parse_phrase(text: str, cell: CellConfig) -> tuple[Spec, list[str]]:
+    """Slot filling for one phrase of a command: its `Spec` and the words it left unused.
+
+    The language front end (`sdi.language.reader`) cuts a command into clauses and phrases
+    and relates them; each phrase is read here. Raises `SpecError` when the phrase names no
+    structure.
+    """
+    parser = _Parser(text, cell)
+    spec = parser.parse()
+    return spec, [t.text for t in parser.toks if not t.used]

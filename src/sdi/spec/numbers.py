@@ -44,6 +44,8 @@ def words_to_numbers(tokens: list[str]) -> list[str]:
                 if w in UNITS and not (w == "no" and used):
                     if w == "no" and j + 1 < n and tokens[j + 1] not in UNITS:
                         break
+                    if current % 10 or (used and current < 20 and current):
+                        break  # "two eight-cube stacks": two numbers, not 2 + 8
                     current += UNITS[w]
                 elif w in TENS:
                     current += TENS[w]

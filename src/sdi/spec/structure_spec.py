@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 Shape = Literal[
     "tower", "row", "grid", "wall", "block", "pyramid", "staircase", "bridge", "arch",
@@ -57,14 +57,73 @@ class StructureSpec(BaseModel):
         return " ".join([self.shape, *parts])
 
 
+RelationKind = Literal["on_top_of", "around", "next_to"]
+Side = Literal["left", "right", "front", "back"]
+
+
+class Relation(BaseModel):
+    """How one structure stands to another; indices into `Spec.structures`.
+
+    ``on_top_of``: `subject` stands on the top face of `object`, centred on it. ``around``:
+    `subject` (a ring) encloses `object`, sized to leave one part of room on every side.
+    ``next_to``: `subject` stands beside `object` on `side` (left = +y, back = +x), one
+    structure gap away. A structure is the subject of at most one relation.
+    """
+
+    model_config = ConfigDict(frozen=True, extra="forbid")
+
+    kind: RelationKind
+    subject: int = Field(ge=0, description="index of the structure that is placed")
+    object: int = Field(ge=0, description="index of the structure it is placed against")
+    side: Side | None = Field(None, description="next_to: which side of the object")
+
+    def describe(self, names: list[str] | None = None) -> str:
+        a = names[self.subject] if names else f"#{self.subject + 1}"
+        b = names[self.object] if names else f"#{self.object + 1}"
+        kind = self.kind.replace("_", " ")
+        if self.kind == "next_to" and self.side:
+            return f"{a} {kind} {b} ({self.side})"
+        return f"{a} {kind} {b}"
+
+
 class Spec(BaseModel):
-    """The whole command: one or more structures, placed side by side unless positioned."""
+    """The whole command: one or more structures, placed side by side unless positioned or
+    related to each other (`relations`)."""
 
     model_config = ConfigDict(frozen=True, extra="forbid")
 
     structures: tuple[StructureSpec, ...] = Field(min_length=1, max_length=50)
+    relations: tuple[Relation, ...] = ()
     precedence: tuple[tuple[str, str], ...] = ()
     notes: tuple[str, ...] = Field((), description="assumptions the front end made")
 
+    @model_validator(mode="after")
+    def _relations_valid(self) -> Spec:
+        n = len(self.structures)
+        subjects: set[int] = set()
+        for r in self.relations:
+            if r.subject >= n or r.object >= n or r.subject == r.object:
+                raise ValueError(
+                    f"relation {r.kind}: structures {r.subject} and {r.object} must be two "
+                    f"different indices below {n}"
+                )
+            if r.subject in subjects:
+                raise ValueError(f"structure {r.subject} is the subject of two relations")
+            subjects.add(r.subject)
+        # no cycles: following subject → object must end
+        target = {r.subject: r.object for r in self.relations}
+        for start in target:
+            seen, k = {start}, start
+            while k in target:
+                k = target[k]
+                if k in seen:
+                    raise ValueError("the relations between structures form a cycle")
+                seen.add(k)
+        return self
+
     def describe(self) -> str:
-        return "; ".join(s.describe() for s in self.structures)
+        text = "; ".join(s.describe() for s in self.structures)
+        if self.relations:
+            names = [f"{s.shape}#{k + 1}" for k, s in enumerate(self.structures)]
+            text += " | " + "; ".join(r.describe(names) for r in self.relations)
+        return text

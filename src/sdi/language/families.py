@@ -1,0 +1,108 @@
+"""The family registry: which slots each structure family uses, and what a value it cannot use
+becomes.
+
+Each generator in `sdi.design.shapes` reads a fixed set of `StructureSpec` fields; a value
+in any other field would be silently dropped. `check_family` turns such a value into the
+family that can hold it (a grid two high is a block), derives a slot from the others where
+the words imply it (eighteen cubes in a block three by three are two layers), or reports it
+in the notes — never drops it silently.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from sdi.spec.structure_spec import StructureSpec
+
+COMMON = frozenset({"shape", "axis", "yaw_deg", "at_x", "at_y", "region", "part"})
+
+
+@dataclass(frozen=True)
+class Family:
+    """One structure family: its slots (the `StructureSpec` fields its generator reads)."""
+
+    name: str
+    slots: frozenset[str]
+    summary: str
+
+
+def _f(name: str, slots: str, summary: str) -> Family:
+    return Family(name, frozenset(slots.split()), summary)
+
+
+FAMILIES: dict[str, Family] = {
+    f.name: f
+    for f in (
+        _f("tower", "count height height_m", "one column of parts"),
+        _f("row", "count length length_m gap_m", "parts in a line on the table"),
+        _f("grid", "count length length_m width width_m gap_m", "one layer of rows"),
+        _f("wall", "count length length_m height height_m", "a row stacked in levels"),
+        _f("block", "length length_m width width_m height height_m", "a solid box of parts"),
+        _f("pack", "count height height_m", "a compact cluster of a given count"),
+        _f("pyramid", "dims length length_m width height height_m", "levels shrinking upwards"),
+        _f("staircase", "steps length width width_m height height_m", "rising steps"),
+        _f("bridge", "height height_m span spans width width_m", "pillars with beams"),
+        _f("arch", "height height_m span width_m", "a corbelled arch"),
+        _f("canopy", "height height_m span", "four pillars with a roof"),
+        _f("enclosure", "length length_m width width_m height height_m", "a ring of walls"),
+        _f("castle", "count length length_m width width_m height height_m", "ring + towers"),
+        _f("l_shape", "length length_m width width_m height height_m", "an L"),
+        _f("u_shape", "length length_m width width_m height height_m", "a U"),
+        _f("t_shape", "length length_m width width_m height height_m", "a T"),
+        _f("cross", "length length_m height height_m", "a plus sign"),
+    )
+}
+
+
+def unused_slots(spec: StructureSpec) -> dict[str, object]:
+    """Fields set on `spec` that its family's generator does not read."""
+    family = FAMILIES[spec.shape]
+    values = spec.model_dump(exclude_none=True, exclude_defaults=True)
+    return {k: v for k, v in values.items() if k not in family.slots and k not in COMMON}
+
+
+def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> StructureSpec:
+    """`spec` with every value placed where its family uses it, or reported in `notes`
+    (and, when it changes what is built, in `material`)."""
+    flat = spec.shape in ("grid",)
+    if flat and ((spec.height or 1) > 1 or spec.height_m is not None):
+        notes.append(
+            f"a grid {spec.height or ''} high is a solid block: built a block".replace("  ", " ")
+        )
+        spec = spec.model_copy(update={"shape": "block", "gap_m": None})
+        if spec.count is not None and spec.length is None:
+            spec = spec.model_copy(update={"count": None})
+    if spec.shape == "block" and spec.count is not None:
+        spec = _block_from_count(spec, notes, material)
+    if spec.shape in ("row", "wall") and spec.width is not None and spec.width > 1:
+        wide = "grid" if spec.shape == "row" and (spec.height or 1) == 1 else "block"
+        notes.append(f"a {spec.shape} {spec.width} wide is a {wide}: built a {wide}")
+        spec = spec.model_copy(update={"shape": wide, "gap_m": None, "count": None})
+        if wide == "grid":
+            spec = spec.model_copy(update={"height": None})
+    if spec.shape == "row" and spec.height is not None and spec.height > 1:
+        notes.append(f"a row {spec.height} high is a wall: built a wall")
+        spec = spec.model_copy(update={"shape": "wall", "gap_m": None})
+    left = unused_slots(spec)
+    if left:
+        values = ", ".join(f"{k}={v}" for k, v in left.items())
+        notes.append(f"ignored {values}: a {spec.shape} has no such parameter")
+        material.extend(f"{k}={v}" for k, v in left.items())
+        spec = spec.model_copy(update=dict.fromkeys(left))
+    return spec
+
+
+def _block_from_count(spec: StructureSpec, notes: list[str], material: list[str]) -> StructureSpec:
+    count = spec.count or 0
+    length, w, h = spec.length, spec.width, spec.height
+    known = [v for v in (length, w, h) if v]
+    if len(known) == 2:
+        area = known[0] * known[1]
+        if count % area == 0:
+            third = count // area
+            key = "height" if h is None else ("width" if w is None else "length")
+            notes.append(f"{count} parts in a block: {key} {third}")
+            return spec.model_copy(update={key: third, "count": None})
+    notes.append(f"ignored count={count}: a block's part count follows from its sides")
+    material.append(f"count={count}")
+    return spec.model_copy(update={"count": None})

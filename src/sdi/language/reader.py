@@ -1,0 +1,887 @@
+"""The offline Specifier: a command → a `Reading` (structures, relations, notes).
+
+The command is read in stages:
+
+1. **Normalise and correct**: symbols, ``3x3`` → ``3 x 3``; unknown words close to a known
+   word are corrected (`sdi.language.typos`); negations and hedges with a clear reading are
+   rewritten ("not too tall" → medium, "not on the left" → on the right, "don't stack them"
+   → side by side), each with a note.
+2. **Parse** with spaCy's dependency parser (`sdi.language.syntax`).
+3. **Clauses**: sentences, ``;`` and sequence words ("then", "after that") separate clauses;
+   a clause that names no structure continues the one before ("Make it 5 high").
+4. **Relations**: markers such as "on top of", "around", "surround … with", "next to",
+   "to the left of", "joined by", "connecting" relate the noun phrase before them to the one
+   after (or, for verbs, the verb's object to the phrase after "with"). A marker is a
+   relation only if its object is a structure, a pronoun ("it", "them") or a definite
+   reference to an earlier structure ("the base"); "on the left" stays a region.
+5. **Slot filling**: each phrase is read by the phrase grammar (`sdi.spec.grammar`), which
+   fills the family's slots (counts, levels, sizes, regions, coordinates).
+6. **Composition**: pronouns and "the base" resolve to earlier phrases; "a second row"
+   copies the row it refers to; two towers "joined by" a beam become a bridge on them.
+7. **Accounting**: every word is used or reported; unused material words make the reading
+   incomplete (`Reading.complete` is False, the plan is ``partial``).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+from sdi.errors import LimitError, SpecError
+from sdi.language import typos, words
+from sdi.language.families import check_family
+from sdi.language.reading import Reading
+from sdi.language.syntax import parse
+from sdi.model.cell import CellConfig
+from sdi.spec import lexicon as lx
+from sdi.spec.grammar import parse_phrase
+from sdi.spec.structure_spec import Relation, RelationKind, Spec, StructureSpec
+
+if TYPE_CHECKING:
+    from spacy.tokens import Doc, Token
+
+_SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "\u00a0": " "}
+_DIMS = re.compile(r"(?<=\d)\s*[x*]\s*(?=\d)", re.IGNORECASE)
+_SPACES = re.compile(r"\s+")
+
+# Sequence words that start a new clause.
+_SEQUENCE = {"then", "afterwards", "finally", "lastly", "next", "after"}
+_LEADS = {"first", "firstly", "and", ",", "after", "that", "then", "next", "finally", "also"}
+
+# Relation markers: words → (kind, side). Kinds: on (subject on object), around (subject
+# encloses object), inside (object encloses subject), next (beside, `side`), join (subject
+# joins the object's pillars), joined (the object joins the subject's pillars).
+_MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
+    (("on", "top", "of"), "on", None),
+    (("on", "the", "top", "of"), "on", None),
+    (("on", "top"), "on", None),
+    (("onto",), "on", None),
+    (("atop",), "on", None),
+    (("upon",), "on", None),
+    (("above",), "on", None),
+    (("over",), "on", None),
+    (("on",), "on", None),
+    (("around",), "around", None),
+    (("round",), "around", None),
+    (("surrounding",), "around", None),
+    (("enclosing",), "around", None),
+    (("encircling",), "around", None),
+    (("inside", "of"), "inside", None),
+    (("inside",), "inside", None),
+    (("within",), "inside", None),
+    (("in", "the", "middle", "of"), "inside", None),
+    (("in", "the", "centre", "of"), "inside", None),
+    (("in", "the", "center", "of"), "inside", None),
+    (("surrounded", "by"), "inside", None),
+    (("enclosed", "by"), "inside", None),
+    (("enclosed", "in"), "inside", None),
+    (("encircled", "by"), "inside", None),
+    (("ringed", "by"), "inside", None),
+    (("next", "to"), "next", None),
+    (("beside",), "next", None),
+    (("besides",), "next", None),
+    (("alongside",), "next", None),
+    (("adjacent", "to"), "next", None),
+    (("close", "to"), "next", None),
+    (("to", "the", "left", "of"), "next", "left"),
+    (("on", "the", "left", "of"), "next", "left"),
+    (("left", "of"), "next", "left"),
+    (("to", "the", "right", "of"), "next", "right"),
+    (("on", "the", "right", "of"), "next", "right"),
+    (("right", "of"), "next", "right"),
+    (("in", "front", "of"), "next", "front"),
+    (("behind",), "next", "back"),
+    (("at", "the", "back", "of"), "next", "back"),
+    (("joined", "by"), "joined", None),
+    (("connected", "by"), "joined", None),
+    (("linked", "by"), "joined", None),
+    (("bridged", "by"), "joined", None),
+    (("spanned", "by"), "joined", None),
+    (("joined", "with"), "joined", None),
+    (("connected", "with"), "joined", None),
+    (("topped", "by"), "topped", None),
+    (("topped", "with"), "topped", None),
+    (("capped", "by"), "topped", None),
+    (("capped", "with"), "topped", None),
+    (("joining",), "join", None),
+    (("connecting",), "join", None),
+    (("linking",), "join", None),
+    (("bridging",), "join", None),
+    (("spanning",), "join", None),
+    (("between",), "join", None),
+]
+_MARKERS.sort(key=lambda m: -len(m[0]))
+_VERB_AROUND = {"surround", "encircle", "enclose", "ring", "circle"}
+_VERB_JOIN = {"join", "connect", "link", "bridge"}
+_VERB_TOP = {"top", "cap", "crown"}
+_PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
+# Nouns that name a structure in a relation but not a family of their own.
+_GENERIC = {"platform", "slab", "plinth", "pedestal", "layer", "floor", "level", "tier",
+            "structure", "thing", "one", "first", "last", "other"}  # fmt: skip
+# "a ziggurat on a 3 by 3 base" is the ziggurat's own base; "on top of the base" is another
+# structure (and so is "a base layer"): these nouns name a structure only after "on top of".
+_BASES = {"base", "foundation", "bottom", "footing", "footprint"}
+_BEAMS = {"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "girders", "bar",
+          "slab", "bridge", "bridges", "arch", "roof", "deck", "span"}  # fmt: skip
+_EMPTY = {"empty", "hollow", "open", "free", "blank"}
+_COPY = {"second", "another", "same", "identical", "matching", "similar", "twin", "copy"}
+_KINDS: dict[str, RelationKind] = {"on": "on_top_of", "around": "around", "next": "next_to"}
+_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front"}
+_LEVEL_ORDINAL = re.compile(
+    r"\b(?:as|for|on|to form)\s+(?:the|a)\s+(?:second|third|fourth|fifth|next|top|final|last|"
+    r"upper|new)\s+(?:level|layer|tier|storey|story|floor|row)\b",
+    re.IGNORECASE,
+)
+
+# Negations and hedges with one clear reading: (pattern, replacement, note).
+_REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+|and\s+)?(?:(?:that|which)\s+is\s+|that's\s+)?not\s+"
+            r"(?:too|very|so|overly|that|excessively|all\s+that)\s+"
+            r"(?:tall|high|big|large|long|wide|huge|massive)\b",
+            re.IGNORECASE,
+        ),
+        " medium ",
+        "read '{0}' as a medium size",
+    ),
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+|and\s+)?not\s+(?:too|very|so)\s+"
+            r"(?:small|short|low|tiny|little)\b",
+            re.IGNORECASE,
+        ),
+        " medium ",
+        "read '{0}' as a medium size",
+    ),
+    (
+        re.compile(
+            r"\b(?:(?:that|which)\s+(?:is|are)\s+|that's\s+|but\s+|and\s+)?not\s+(?:on|in|at|to)"
+            r"\s+the\s+(left|right|front|back)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+|and\s+)?(?:please\s+)?(?:do\s+not|don't|dont|never|no\s+need\s+"
+            r"to)\s+(?:stack|pile|put\s+\w+\s+on\s+top)\b(?:\s+(?:them|it|the\s+cubes|anything))?"
+            r"(?:\s+(?:up|on\s+top(?:\s+of\s+each\s+other)?))?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': laid side by side, not stacked",
+    ),
+    (
+        re.compile(r"(?:,\s*)?\b(?:with\s+)?no\s+stacking\b", re.IGNORECASE),
+        " ",
+        "'{0}': laid side by side, not stacked",
+    ),
+    (
+        re.compile(
+            r"\bwith\s+(?:a|one|an)\s+(bridge|beam|lintel|plank|slab|arch|girder)\s+"
+            r"(?:between\s+them|across(?:\s+the\s+top|\s+them)?|on\s+top|connecting\s+them|"
+            r"joining\s+them|linking\s+them|spanning\s+them)\b",
+            re.IGNORECASE,
+        ),
+        " joined by a {0} ",
+        "",
+    ),
+]
+_REWRITES += [
+    (
+        re.compile(
+            r"\b(?:whose|with\s+(?:a|the|its))\s+(?:bottom|base|lowest|first|ground)\s+"
+            r"(?:row|layer|level|tier|course)\s+(?:has|having|of|with|is|containing|holds|"
+            r"holding|made\s+of)?\s*(\d+|[a-z]+)",
+            re.IGNORECASE,
+        ),
+        " with a base of {0} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(?:with\s+)?one\s+(?:leg|arm|side|wing|branch)\s+(\d+|[a-z]+)(?:\s+\w+)?\s+"
+            r"long\s*,?\s+and\s+the\s+other(?:\s+(?:leg|arm|side|wing|one|branch))?\s+"
+            r"(\d+|[a-z]+)(?:\s+\w+)?\s+long\b",
+            re.IGNORECASE,
+        ),
+        " {0} long and {1} wide ",
+        "",
+    ),
+    (re.compile(r"\bside\s+by\s+side\b", re.IGNORECASE), " ", ""),
+]
+_OPEN = re.compile(
+    r"\b(?:(tall|high|big|large)\s+)?(structure|thing|something|shape|construction|object|"
+    r"build|sculpture|monument)\s+(?:that\s+is\s+\w+\s+)?with\s+a\s+(wide|broad|big|large|"
+    r"wider|broader|heavy|solid)\s+(base|bottom|foot|footing|foundation)\b",
+    re.IGNORECASE,
+)
+
+
+@dataclass
+class _Phrase:
+    """A noun phrase that names one or more structures (or refers to earlier ones)."""
+
+    tokens: list[int]
+    clause: int
+    text: str = ""
+    spec: Spec | None = None
+    first: int = 0  # index of its first structure in the reading
+    count: int = 0  # how many structures it produced
+    ref: int | None = None  # a pure reference: the phrase it refers to
+    unused: list[str] = field(default_factory=list)
+
+
+@dataclass
+class _Rel:
+    kind: str
+    subject: int  # phrase index
+    object: int | None  # phrase index; None: "on top" with no object (the phrase before)
+    side: str | None = None
+
+
+@dataclass
+class _State:
+    command: str
+    cell: CellConfig
+    notes: list[str] = field(default_factory=list)
+    ignored: list[str] = field(default_factory=list)
+    material: list[str] = field(default_factory=list)
+    no_stack: bool = False
+
+
+def read(command: str, cell: CellConfig | None = None) -> Reading:
+    """Read `command`; `SpecError` (with `understood`) when it names nothing buildable."""
+    cell = cell or CellConfig()
+    if not isinstance(command, str):
+        raise SpecError("the command must be text", understood={})
+    if len(command) > cell.limits.max_command_chars:
+        raise LimitError(
+            f"the command has {len(command)} characters; the limit is "
+            f"{cell.limits.max_command_chars} (limits.max_command_chars)",
+            field="command",
+        )
+    if not command.strip():
+        raise SpecError(
+            "the command is empty; say what to build, e.g. 'a 3-cube tower'", understood={}
+        )
+    st = _State(command, cell)
+    text = _normalise(command)
+    text, corrected = typos.correct(text)
+    st.notes += corrected
+    text = _rewrite(text, st)
+    doc = parse(text)
+    phrases, rels = _structure(doc)
+    structures = _fill(phrases, rels, st, doc)
+    if not structures:
+        _no_structure(st, doc, command)
+    relations, structures = _relate(phrases, rels, structures, st)
+    structures = [check_family(s, st.notes, st.material) for s in structures]
+    if st.no_stack:
+        structures = [_unstack(s, st) for s in structures]
+    if len(structures) > 50:
+        raise SpecError(
+            f"{len(structures)} structures is more than 50", understood=_understood(doc)
+        )
+    try:
+        spec = Spec(
+            structures=tuple(structures),
+            relations=tuple(relations),
+            notes=tuple(dict.fromkeys(st.notes)),
+        )
+    except ValueError as exc:
+        raise SpecError(
+            f"the structures cannot be related: {exc}", understood=_understood(doc)
+        ) from None
+    return Reading(
+        command=command,
+        text=text.strip(),
+        spec=spec,
+        phrases=tuple(p.text for p in phrases if p.text and p.ref is None),
+        notes=tuple(dict.fromkeys(st.notes)),
+        ignored=tuple(dict.fromkeys(st.ignored)),
+        material=tuple(dict.fromkeys(st.material)),
+    )
+
+
+# -- 1. normalise ---------------------------------------------------------------------------
+def _normalise(command: str) -> str:
+    text = command
+    for a, b in _SYMBOLS.items():
+        text = text.replace(a, b)
+    text = _DIMS.sub(" x ", text)
+    return _SPACES.sub(" ", text).strip()
+
+
+def _rewrite(text: str, st: _State) -> str:
+    for pattern, replacement, note in _REWRITES:
+
+        def sub(m: re.Match[str], replacement: str = replacement, note: str = note) -> str:
+            said = m.group(0).strip(" ,")
+            groups = [g.lower() if g else "" for g in m.groups()]
+            opposite = _OPPOSITE.get(groups[0], "") if groups else ""
+            if "stack" in note or "stacked" in note:
+                st.no_stack = True
+            if note:
+                st.notes.append(note.format(said, opposite=opposite))
+            return replacement.format(*groups, opposite=opposite) if groups else replacement
+
+        text = pattern.sub(sub, text)
+    text = _LEVEL_ORDINAL.sub(" on top ", text)
+    m = _OPEN.search(text)
+    if m and not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", text.lower())
+                     if w not in ("base", "bottom") and w not in lx.AMBIGUOUS_SHAPES):  # fmt: skip
+        size = "big " if m.group(1) else ""
+        st.notes.append(
+            f"read '{m.group(0)}' as a {size}3-D pyramid (wide at the base, rising to a point)"
+        )
+        text = text[: m.start()] + f"{size}3-D pyramid" + text[m.end() :]
+    return _SPACES.sub(" ", text)
+
+
+# -- 3–4. clauses, phrases and relation markers ---------------------------------------------
+def _clauses(doc: Doc) -> list[list[int]]:
+    clauses: list[list[int]] = []
+    current: list[int] = []
+    for sent in doc.sents:
+        if current:
+            clauses.append(current)
+            current = []
+        for tok in sent:
+            w = tok.lower_
+            if w in (";", ".", "!", "?") and tok.i != len(doc) - 1 and not tok.like_num:
+                if current:
+                    clauses.append(current)
+                    current = []
+                continue
+            if w in _SEQUENCE and _starts_clause(doc, tok) and current:
+                clauses.append(current)
+                current = []
+            current.append(tok.i)
+    if current:
+        clauses.append(current)
+    # strip leading sequence words and trailing punctuation
+    out = []
+    for c in clauses:
+        while c and doc[c[0]].lower_ in _LEADS | _SEQUENCE:
+            c = c[1:]
+        while c and doc[c[-1]].is_punct:
+            c = c[:-1]
+        if c:
+            out.append(c)
+    return out
+
+
+def _starts_clause(doc: Doc, tok: Token) -> bool:
+    """`tok` ("then", "next", "after") begins a new step of the description."""
+    w = tok.lower_
+    if w == "next":
+        nxt = doc[tok.i + 1].lower_ if tok.i + 1 < len(doc) else ""
+        return nxt in (",", "add", "put", "place", "build", "stack", "make", "lay")
+    if w == "after":
+        nxt = doc[tok.i + 1].lower_ if tok.i + 1 < len(doc) else ""
+        return nxt in ("that", "this")
+    return True
+
+
+def _is_structure_noun(doc: Doc, k: int) -> bool:
+    w = doc[k].lower_
+    if w in lx.PART_WORDS and w not in ("block", "blocks"):
+        return False
+    return w in lx.SHAPE_WORDS or w in _GENERIC or w in _BEAMS
+
+
+def _object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[int | None, bool]:
+    """The noun a relation marker points at, and whether it names a structure (`strong`:
+    the marker is "on top of", after which "the base" is a structure too)."""
+    k = start
+    empty = False
+    while k < end:
+        tok = doc[k]
+        w = tok.lower_
+        if w in _EMPTY:
+            empty = True
+        if tok.pos_ in ("DET", "NUM", "ADJ", "ADV", "PUNCT", "SYM") or w in ("x", "by", "-"):
+            k += 1
+            continue
+        if w in lx.SIZE_WORDS or (w in lx.REGION_WORDS and doc[k].dep_ in ("amod", "compound")):
+            k += 1
+            continue
+        if (
+            tok.dep_ == "compound"
+            and k + 1 < end
+            and doc[k + 1].pos_ in ("NOUN", "PROPN")
+            and w not in lx.REGION_WORDS
+        ):
+            k += 1
+            continue
+        break
+    if k >= end:
+        return None, False
+    w = doc[k].lower_
+    if w in lx.REGION_WORDS or w in ("corner", "corners", "table", "edge", "side", "robot"):
+        return k, False
+    if w in ("each", "other", "top"):
+        return k, False
+    if empty:
+        return k, False
+    if w in _PRONOUNS and doc[k].pos_ in ("PRON", "DET", "NUM", "NOUN"):
+        return k, True
+    if w in _BASES:
+        return k, strong
+    return k, _is_structure_noun(doc, k)
+
+
+_COMPONENTS = {
+    "castle": {"enclosure", "wall", "tower", "row"},
+    "canopy": {"tower", "canopy", "grid"},
+    "bridge": {"tower"},
+    "arch": {"tower"},
+    "enclosure": {"wall"},
+}
+
+
+def _component(doc: Doc, clause: list[int], marker: int, head: int) -> bool:
+    """The object noun names a part of the structure before the marker ("on pillars")."""
+    before = [lx.SHAPE_WORDS[doc[i].lower_] for i in clause if i < marker and
+              doc[i].lower_ in lx.SHAPE_WORDS]  # fmt: skip
+    family = lx.SHAPE_WORDS.get(doc[head].lower_)
+    if not before or family is None:
+        return False
+    return family in _COMPONENTS.get(before[-1], set()) and doc[head].lower_.endswith("s")
+
+
+def _structure(doc: Doc) -> tuple[list[_Phrase], list[_Rel]]:
+    phrases: list[_Phrase] = []
+    rels: list[_Rel] = []
+    for ci, clause in enumerate(_clauses(doc)):
+        _clause_phrases(doc, clause, ci, phrases, rels)
+    for p in phrases:
+        p.text = "".join(doc[k].text_with_ws for k in p.tokens).strip()
+    return phrases, rels
+
+
+def _clause_phrases(
+    doc: Doc, clause: list[int], ci: int, phrases: list[_Phrase], rels: list[_Rel]
+) -> None:
+    end = clause[-1] + 1
+    lower = [t.lower_ for t in doc]
+    markers: list[tuple[int, int, str, str | None]] = []  # (start, end, kind, side)
+    k = clause[0]
+    # verbs: "surround X with Y", "join X and Y with Z", "top it with a beam"
+    verb: tuple[int, str] | None = None
+    for i in clause:
+        lemma = doc[i].lemma_.lower()
+        if doc[i].tag_ in ("VB", "VBP") or (i == clause[0] and doc[i].tag_ != "VBN"):
+            if lemma in _VERB_AROUND or lower[i] in _VERB_AROUND:
+                verb = (i, "v_around")
+            elif lemma in _VERB_JOIN or lower[i] in _VERB_JOIN:
+                verb = (i, "v_join")
+            elif lemma in _VERB_TOP and lower[i] in _VERB_TOP:
+                verb = (i, "v_top")
+            if verb:
+                break
+    if verb is not None:
+        v, kind = verb
+        prep = next(
+            (i for i in clause if i > v and lower[i] in ("with", "by", "using", "in")), None
+        )
+        if prep is not None and any(_object_head(doc, prep + 1, end)[1] for _ in (0,)):
+            markers.append((v, v + 1, kind + "_verb", None))
+            markers.append((prep, prep + 1, kind, None))
+    while k < end:
+        if markers and any(s <= k < e for s, e, _, _ in markers):
+            k += 1
+            continue
+        found = None
+        for words_, kind, side in _MARKERS:
+            n = len(words_)
+            if tuple(lower[k : k + n]) == words_ and k + n <= end:
+                found = (words_, kind, side)
+                break
+        if found is None:
+            k += 1
+            continue
+        words_, kind, side = found
+        n = len(words_)
+        strong = words_ in (("on", "top", "of"), ("on", "the", "top", "of"), ("atop",))
+        head, is_structure = _object_head(doc, k + n, end, strong)
+        if is_structure and head is not None and kind == "on" and _component(doc, clause, k, head):
+            k += n
+            continue  # "a bridge on pillars 3 high": the bridge's own pillars
+        numeric_before = k > clause[0] and (
+            doc[k - 1].like_num
+            or (lower[k - 1] in lx.PART_WORDS and k - 2 >= 0 and doc[k - 2].like_num)
+        )
+        implicit = kind == "on" and words_[-1] == "top" and (head is None or not is_structure)
+        if numeric_before and kind == "on" and words_[0] in ("above", "over"):
+            k += n
+            continue
+        if is_structure or implicit:
+            markers.append((k, k + n, kind, side))
+        k += n
+    if not markers:
+        phrases.append(_Phrase(tokens=list(clause), clause=ci))
+        return
+    markers.sort()
+    # cut the clause into segments between markers
+    segments: list[list[int]] = []
+    cur: list[int] = []
+    bounds = iter(markers)
+    m = next(bounds, None)
+    for i in clause:
+        while m is not None and i >= m[1]:
+            m = next(bounds, None)
+        if m is not None and m[0] <= i < m[1]:
+            if i == m[0]:
+                segments.append(cur)
+                cur = []
+            continue
+        cur.append(i)
+    segments.append(cur)
+    base = len(phrases)
+    for seg in segments:
+        phrases.append(_Phrase(tokens=seg, clause=ci))
+    # relate the segments: marker j sits between segment j and j + 1
+    for j, (_, _, kind, side) in enumerate(markers):
+        before, after = base + j, base + j + 1
+        if kind.endswith("_verb"):
+            continue
+        if kind == "v_around":
+            rels.append(_Rel("around", after, before))
+        elif kind == "v_join":
+            rels.append(_Rel("joined", before, after))
+        elif kind == "v_top":
+            rels.append(_Rel("on", after, before))
+        elif kind == "on":
+            implicit = (
+                not phrases[after].tokens
+                or not _object_head(doc, phrases[after].tokens[0], phrases[after].tokens[-1] + 1)[1]
+            )
+            rels.append(_Rel("on", before, None if implicit else after))
+        elif kind == "around":
+            rels.append(_Rel("around", before, after))
+        elif kind == "inside":
+            rels.append(_Rel("around", after, before))
+        elif kind == "next":
+            rels.append(_Rel("next", before, after, side))
+        elif kind == "joined":
+            rels.append(_Rel("joined", before, after))
+        elif kind == "join":
+            rels.append(_Rel("joined", after, before))
+        elif kind == "topped":
+            rels.append(_Rel("on", after, before))
+
+
+# -- 5. slot filling ------------------------------------------------------------------------
+def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> list[StructureSpec]:
+    structures: list[StructureSpec] = []
+    pos = {t.lower_: t.pos_ for t in doc}
+    joiners = {r.object for r in rels if r.kind == "joined"}
+    for k, p in enumerate(phrases):
+        content = [
+            w
+            for w in re.findall(r"[a-z0-9.]+", p.text.lower())
+            if w not in words.HARMLESS or w in lx.SHAPE_WORDS
+        ]
+        ref = _reference(p, phrases[:k])
+        if ref is not None:
+            p.ref = ref
+            continue
+        if not content:
+            continue
+        if k in joiners and all(w in _BEAMS or w in lx.PART_WORDS or w == "top" for w in content):
+            continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
+        try:
+            spec, unused = parse_phrase(p.text, st.cell)
+        except SpecError:
+            if _continues(p, phrases[:k]):
+                continue
+            st.material.append(p.text)
+            st.notes.append(f"ignored '{p.text}': no structure named there")
+            continue
+        p.spec = spec
+        p.first = len(structures)
+        p.count = len(spec.structures)
+        structures.extend(spec.structures)
+        st.notes.extend(spec.notes)
+        st.material.extend(n for n in spec.notes if n.startswith("ignored"))
+        for w in unused:
+            _account(w, pos.get(w), st)
+    return structures
+
+
+def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
+    """A phrase that only points at an earlier one ("it", "them", "the base")."""
+    words_ = [w for w in p.text.lower().replace(",", " ").split() if w not in ("the", "of")]
+    if not words_ or len(words_) > 3:
+        return None
+    built = [j for j, q in enumerate(before) if q.spec is not None or q.ref is not None]
+    if not built:
+        return None
+    if words_[0] in _PRONOUNS and len(words_) <= 2:
+        if words_[0] in ("them", "these", "those"):
+            many = [j for j in built if before[j].count > 1]
+            return _target(before, many[-1] if many else built[-1])
+        return _target(before, built[-1])
+    if (
+        len(words_) <= 2
+        and words_[-1] in _GENERIC | set(lx.SHAPE_WORDS)
+        and p.text.lower().startswith("the")
+    ):
+        noun = words_[-1]
+        if noun in ("base", "foundation", "bottom", "first", "platform", "plinth"):
+            return _target(before, built[0])
+        family = lx.SHAPE_WORDS.get(noun)
+        for j in reversed(built):
+            spec = before[_target(before, j)].spec
+            if spec is not None and any(s.shape == family for s in spec.structures):
+                return _target(before, j)
+        return _target(before, built[-1])
+    return None
+
+
+def _target(phrases: list[_Phrase], j: int) -> int:
+    while phrases[j].ref is not None:
+        j = phrases[j].ref  # type: ignore[assignment]
+    return j
+
+
+def _continues(p: _Phrase, before: list[_Phrase]) -> bool:
+    """A phrase with no structure that modifies the one before ("Make it 5 cubes tall")."""
+    built = [q for q in before if q.spec is not None]
+    if not built or p.ref is not None:
+        return False
+    prev = built[-1]
+    try:
+        spec, _ = parse_phrase(prev.text + " , " + p.text, CellConfig())
+    except SpecError:
+        return False
+    if spec.structures == prev.spec.structures if prev.spec else True:
+        return False
+    prev.text = prev.text + " , " + p.text
+    prev.spec = spec
+    prev.count = len(spec.structures)
+    p.count = 0
+    return True
+
+
+def _account(word: str, pos: str | None, st: _State) -> None:
+    if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
+        return
+    if words.is_material(word, pos):
+        st.material.append(word)
+        st.ignored.append(word)
+        st.notes.append(f"ignored '{word}': not used by the reading")
+    elif word not in words.HARMLESS and word not in words.CONSULTED and word not in lx.FILLER:
+        st.ignored.append(word)
+
+
+# -- 6. composition -------------------------------------------------------------------------
+def _relate(
+    phrases: list[_Phrase], rels: list[_Rel], structures: list[StructureSpec], st: _State
+) -> tuple[list[Relation], list[StructureSpec]]:
+    relations: list[Relation] = []
+    drop: set[int] = set()
+    replace: dict[int, StructureSpec] = {}
+
+    def built(j: int | None, fallback: int) -> int | None:
+        if j is None:
+            # "on top" with no object: the phrase before the subject
+            cands = [q for q in range(fallback) if phrases[q].count and phrases[q].spec]
+            return cands[-1] if cands else None
+        j = _target(phrases, j)
+        return j if phrases[j].count and phrases[j].spec is not None else None
+
+    joiners = {r.object for r in rels if r.kind == "joined"}
+    for r in rels:
+        subj = r.subject
+        if r.kind == "on" and subj in joiners:
+            continue  # "joined by a bridge on top": the joining beam lies on top anyway
+        obj = built(r.object, r.subject)
+        if r.kind == "joined":
+            pillars = built(r.subject, r.subject) if r.kind == "joined" else None
+            pillars = (
+                _target(phrases, r.subject) if phrases[r.subject].ref is not None else (pillars)
+            )
+            _join(phrases, pillars, r.object, structures, replace, drop, st)
+            continue
+        if phrases[subj].ref is not None or not phrases[subj].count:
+            if phrases[subj].tokens and not phrases[subj].count and r.kind == "on" and obj:
+                # "a beam on top of the two towers": the beam joins them
+                _join(phrases, obj, subj, structures, replace, drop, st)
+                continue
+            st.material.append(f"relation {r.kind}")
+            st.notes.append(f"ignored a relation '{r.kind}': its subject is not a structure")
+            continue
+        if obj is None:
+            st.material.append(f"relation {r.kind}")
+            st.notes.append(f"ignored '{r.kind}': no structure to relate '{phrases[subj].text}' to")
+            continue
+        s_idx = phrases[subj].first + phrases[subj].count - 1
+        o_idx = phrases[obj].first + phrases[obj].count - 1
+        if o_idx == s_idx or obj == subj:
+            # "a staircase with a tower next to it", "add a second row on top of it": the
+            # pronoun points at the structure before the subject
+            o_idx = (
+                phrases[subj].first - 1 if obj == subj and phrases[subj].count == 1 else (s_idx - 1)
+            )
+            if o_idx < 0:
+                st.material.append(f"relation {r.kind}")
+                st.notes.append(f"ignored '{r.kind}': nothing before '{phrases[subj].text}'")
+                continue
+        if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1:
+            _join(phrases, obj, subj, structures, replace, drop, st)
+            continue
+        subject = replace.get(s_idx, structures[s_idx])
+        obj_spec = replace.get(o_idx, structures[o_idx])
+        subject = _copy_if_asked(phrases[subj], subject, obj_spec, st)
+        if r.kind == "around" and subject.shape not in ("enclosure", "castle"):
+            st.notes.append(f"a {subject.shape} around another structure: built as a ring")
+            subject = StructureSpec(shape="enclosure", height=subject.height, part=subject.part)
+        if r.kind == "around" and obj_spec.shape in ("enclosure", "castle"):
+            subject, obj_spec = obj_spec, subject
+            s_idx, o_idx = o_idx, s_idx
+        replace[s_idx] = subject
+        if any(rel.subject == s_idx for rel in relations):
+            st.material.append(f"relation {r.kind}")
+            st.notes.append(f"ignored a second relation of '{phrases[subj].text}'")
+            continue
+        kind: RelationKind = _KINDS[r.kind]
+        placed = {"at_x": subject.at_x, "at_y": subject.at_y, "region": subject.region}
+        if kind != "around" and any(v is not None for v in placed.values()):
+            # the unit stands where the object stands: a position said of the subject moves
+            # to the object when the object has none
+            if obj_spec.at_x is None and obj_spec.at_y is None and obj_spec.region is None:
+                replace[o_idx] = obj_spec.model_copy(update=placed)
+            else:
+                st.notes.append(
+                    f"the position of the {subject.shape} follows the {obj_spec.shape} it is "
+                    f"{kind.replace('_', ' ')}"
+                )
+            replace[s_idx] = subject.model_copy(update=dict.fromkeys(placed))
+        relations.append(Relation(kind=kind, subject=s_idx, object=o_idx, side=r.side))
+    for k, s in replace.items():
+        structures[k] = s
+    if drop:
+        keep = [k for k in range(len(structures)) if k not in drop]
+        index = {old: new for new, old in enumerate(keep)}
+        relations = [
+            r.model_copy(update={"subject": index[r.subject], "object": index[r.object]})
+            for r in relations
+            if r.subject in index and r.object in index
+        ]
+        structures = [structures[k] for k in keep]
+    return relations, structures
+
+
+def _copy_if_asked(
+    p: _Phrase, subject: StructureSpec, other: StructureSpec, st: _State
+) -> StructureSpec:
+    """ "a second row", "another one like it": the same parameters as the structure referred to."""
+    said = set(p.text.lower().split())
+    explicit = subject.model_dump(exclude_defaults=True, exclude={"shape"})
+    if said & _COPY and not explicit and subject.shape == other.shape:
+        st.notes.append(f"'{p.text}': the same {other.shape} as the one it stands on or beside")
+        return other.model_copy(update={"at_x": None, "at_y": None, "region": None})
+    return subject
+
+
+def _join(
+    phrases: list[_Phrase],
+    pillars: int | None,
+    joiner: int | None,
+    structures: list[StructureSpec],
+    replace: dict[int, StructureSpec],
+    drop: set[int],
+    st: _State,
+) -> None:
+    """Towers "joined by" a beam or bridge: a bridge standing on them as its pillars."""
+    if pillars is None or not phrases[pillars].count:
+        st.material.append("relation joined")
+        st.notes.append("ignored 'joined by': no towers to join")
+        return
+    p = phrases[pillars]
+    idx = list(range(p.first, p.first + p.count))
+    towers = [replace.get(k, structures[k]) for k in idx]
+    if len(towers) == 1 and towers[0].shape in ("bridge", "arch", "canopy"):
+        return  # "a bridge: two pillars … with a beam across the top": the bridge's own beam
+    if len(towers) < 2 or any(t.shape != "tower" for t in towers):
+        shapes = ", ".join(t.shape for t in towers)
+        st.material.append("relation joined")
+        st.notes.append(
+            f"ignored 'joined by': only two or more towers can carry a beam (got {shapes})"
+        )
+        return
+    heights = {t.height or (3 if t.height_m is None else None) for t in towers}
+    metres = {t.height_m for t in towers if t.height_m is not None}
+    if len(heights) > 1 or len(metres) > 1:
+        st.material.append("relation joined")
+        st.notes.append("ignored 'joined by': towers of different heights cannot carry one beam")
+        return
+    first = towers[0]
+    bridge = StructureSpec(
+        shape="bridge",
+        height=first.height,
+        height_m=first.height_m,
+        spans=len(towers) - 1,
+        at_x=first.at_x,
+        at_y=first.at_y,
+        region=first.region,
+        axis=first.axis,
+    )
+    if joiner is not None and phrases[joiner].spec is not None:
+        j = phrases[joiner]
+        extra = j.spec.structures[0] if j.spec else None
+        if extra is not None and extra.shape == "bridge" and extra.span is not None:
+            bridge = bridge.model_copy(update={"span": extra.span})
+        drop.update(range(j.first, j.first + j.count))
+    st.notes.append(
+        f"{len(towers)} towers joined by a beam: a bridge with {len(towers) - 1} span(s) on them"
+    )
+    replace[idx[0]] = bridge
+    drop.update(idx[1:])
+
+
+def _unstack(s: StructureSpec, st: _State) -> StructureSpec:
+    if s.shape == "tower":
+        return StructureSpec(
+            shape="row", length=s.height or 3, at_x=s.at_x, at_y=s.at_y, region=s.region
+        )
+    return s
+
+
+# -- errors ---------------------------------------------------------------------------------
+def _understood(doc: Doc) -> dict[str, object]:
+    out: dict[str, object] = {}
+    shapes = [lx.SHAPE_WORDS[t.lower_] for t in doc if t.lower_ in lx.SHAPE_WORDS]
+    if shapes:
+        out["structures"] = shapes
+    nums = [t.text for t in doc if t.like_num]
+    if nums:
+        out["numbers"] = nums
+    parts = [t.lower_ for t in doc if t.lower_ in lx.PART_WORDS]
+    if parts:
+        out["parts"] = parts
+    regions = [lx.REGION_WORDS[t.lower_] for t in doc if t.lower_ in lx.REGION_WORDS]
+    if regions:
+        out["regions"] = regions
+    unknown = [
+        t.text for t in doc if t.is_alpha and t.lower_ not in words.VOCABULARY and not t.is_stop
+    ]
+    if unknown:
+        out["unknown_words"] = unknown[:20]
+    return out
+
+
+def _no_structure(st: _State, doc: Doc, command: str) -> None:
+    known = ", ".join(sorted(set(lx.SHAPE_WORDS.values())))
+    raise SpecError(
+        "no structure recognised in the command; name one of: "
+        + known
+        + " (e.g. 'a tower of 4 cubes', 'a 3 by 3 grid on the left')",
+        understood=_understood(doc),
+    )

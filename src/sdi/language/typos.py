@@ -1,0 +1,61 @@
+"""Typo correction: an unknown word close to a word the Specifier knows is read as that word.
+
+A word is a candidate only if it is unknown both to the lexicon and to the English pipeline's
+vocabulary, has at least four letters, and lies within a Damerau–Levenshtein distance of 1
+(words of up to five letters) or 2 (longer words) of exactly one best lexicon word. Every
+correction is reported ("corrected 'brige' to 'bridge'").
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from rapidfuzz import process
+from rapidfuzz.distance import DamerauLevenshtein
+
+from sdi.language import words
+from sdi.language.syntax import pipeline
+
+_WORD = re.compile(r"[A-Za-z]+")
+_SUFFIXES = {"y", "s", "es", "ed", "d", "ing", "er", "est", "ly", "ish", "ie", "ies"}
+
+
+@lru_cache(maxsize=1)
+def _known() -> frozenset[str]:
+    return frozenset(words.VOCABULARY)
+
+
+def _vocab_has(word: str) -> bool:
+    return word in pipeline().vocab.strings
+
+
+def correct(text: str) -> tuple[str, list[str]]:
+    """`text` with typos replaced, and a note per correction."""
+    notes: list[str] = []
+    choices = sorted(words.CORRECTABLE)
+
+    def fix(m: re.Match[str]) -> str:
+        raw = m.group(0)
+        w = raw.lower()
+        if len(w) < 4 or w in _known() or _vocab_has(w):
+            return raw
+        limit = 1 if len(w) <= 5 else 2
+        found = process.extract(
+            w, choices, scorer=DamerauLevenshtein.distance, score_cutoff=limit, limit=3
+        )
+        if not found:
+            return raw
+        if any(w.startswith(c) and w[len(c) :] in _SUFFIXES for c, _, _ in found):
+            return raw  # "chunky", "stacked": a derived form of a word, not a typo
+        best = min(d for _, d, _ in found)
+        top = [c for c, d, _ in found if d == best]
+        if len(top) > 1:
+            same_start = [c for c in top if c[0] == w[0]]
+            if len(same_start) != 1:
+                return raw
+            top = same_start
+        notes.append(f"corrected '{raw}' to '{top[0]}'")
+        return top[0]
+
+    return _WORD.sub(fix, text), notes
