@@ -303,7 +303,8 @@ def bridge(
 
 def arch(bs: Boxes) -> Reason:
     """Anything with a part spanning a gap between two separate supports."""
-    if bx.spans(bs) or bx.roof_legs(bs):
+    legs = bx.roof_legs(bs)
+    if bx.spans(bs) or (legs is not None and len(legs) >= 2):
         return None
     return "nothing spans a gap"
 
