@@ -23,9 +23,9 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 
 
 def _sturdy(bs: Boxes) -> Reason:
-    """Broader at the bottom than at the top, at least 2 x 2 at the base, 3+ cubes high."""
+    """At least 2 x 2 at the base, no narrower at the bottom than at the top, 3+ cubes high."""
     counts = bx.level_counts(bs)
-    if bx.thickness_cubes(bs) < 3 or bx.plan_dims(bs)[0] < 2 or counts[0] <= counts[-1]:
+    if bx.thickness_cubes(bs) < 3 or bx.plan_dims(bs)[0] < 2 or counts[0] < counts[-1]:
         return f"not sturdy-looking: levels {counts}, footprint {bx.plan_dims(bs)}"
     return None
 
@@ -62,7 +62,7 @@ CASES: tuple[Case, ...] = (
     _c("rel-04", REL, "a wall with a 3-cube stack beside it, on the right",
        k.beside(T(3), k.wall(), "right")),
     _c("rel-05", REL, "set a short row of 3 between two towers of 4",
-       k.between_(k.row(3), T(4))),
+       k.any_of(k.between_(k.row(3), T(4)), one(k.profile(4, 1, 1, 1, 4)))),
     _c("rel-06", REL, "a staircase going up to a tower of 4 at its top end",
        one(_stair_then_tower)),
     # ------------------------------------------------------------------ sequence
@@ -155,7 +155,10 @@ CASES: tuple[Case, ...] = (
     _c("reg-05", REG, "a ring right in the middle of the workspace",
        one(k.ring, k.region("centre"))),
     _c("reg-06", REG, "a tower of 2 at the back and a tower of 5 at the front",
-       k.structures(k.all_of(T(2), k.region("back")), k.all_of(T(5), k.region("front")))),
+       k.any_of(
+           k.structures(k.all_of(T(2), k.region("back")), k.all_of(T(5), k.region("front"))),
+           k.beside(T(2), T(5), "back", max_gap=0.5),
+       )),
     # ------------------------------------------------------------------ open
     _c("open-01", OPEN, "something sturdy-looking and tallish", one(_sturdy)),
     _c("open-02", OPEN, "a modest little structure", k.layout(_modest)),
