@@ -45,6 +45,7 @@ def run_case(case: Case) -> dict[str, Any]:
         "outcome": outcome,
         "reason": reason,
         "notes": list(result.get("notes") or []),
+        "error": result.get("error"),
         "ms": round(ms, 2),
     }
 

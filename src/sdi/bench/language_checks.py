@@ -509,6 +509,8 @@ def _pair(a: Check, b: Check, rel: Callable[[Boxes, Boxes], Reason], n: int = 2)
         bs = _boxes_or_reason(result)
         if isinstance(bs, str):
             return bs
+        if not bx.in_workspace(bs):
+            return "a part outside the workspace"
         comps = bx.components(bs)
         if len(comps) != n:
             return f"{len(comps)} separate structures, want {n}"
@@ -554,6 +556,8 @@ def between_(mid: Check, end: Check, end2: Check | None = None) -> Pred:
         bs = _boxes_or_reason(result)
         if isinstance(bs, str):
             return bs
+        if not bx.in_workspace(bs):
+            return "a part outside the workspace"
         comps = bx.components(bs)
         if len(comps) != 3:
             return f"{len(comps)} separate structures, want 3"
