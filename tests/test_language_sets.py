@@ -282,3 +282,16 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         src = (here / name).read_text(encoding="utf-8")
         imports = [ln for ln in src.splitlines() if ln.lstrip().startswith(("import ", "from "))]
         assert not [ln for ln in imports if any(f in ln for f in forbidden)], name
+
+
+def test_many_structures_match_quickly_and_one_to_one():
+    singles = res(
+        *[cube(0.25 + 0.1 * i, 0.10 + 0.1 * j, 0.025) for i in range(5) for j in range(3)]
+    )
+    assert k.each(15, k.tower(1))(singles) is None
+    checks = [k.tower(1)] * 14 + [k.tower(2)]
+    assert k.structures(*checks)(singles) is not None
+    two = res(*column(0.40, 0.30, 2), *column(0.60, 0.30, 2))
+    assert k.structures(k.tower(2), k.tower(3))(two) is not None  # no double use of a tower
+    dup = res(*column(0.45, 0.30, 3), cube(0.45, 0.30, 0.075))
+    assert k.one(k.tower(3))(dup) == "overlapping parts"

@@ -361,16 +361,21 @@ def interior_area(bs: Boxes) -> float:
 
 
 def encloses(ring: Boxes, inner: Boxes) -> bool:
-    """`ring` surrounds an empty interior that contains the xy centre of every part of
-    `inner`."""
+    """`ring` surrounds an empty interior that contains the whole footprint (centre and
+    corners) of every part of `inner`."""
     if not ring or not inner:
         return False
     inside, x0, y0 = _interior(ring)
+    m = 0.003  # footprint corners, pulled in by 3 mm
     for b in inner:
         cx, cy, _ = b.centre
-        i, j = int((cx - x0) / _RES), int((cy - y0) / _RES)
-        if not (0 <= i < inside.shape[0] and 0 <= j < inside.shape[1] and inside[i, j]):
-            return False
+        xs = (cx, b.lo[0] + m, b.hi[0] - m)
+        ys = (cy, b.lo[1] + m, b.hi[1] - m)
+        for x in xs:
+            for y in ys:
+                i, j = int((x - x0) / _RES), int((y - y0) / _RES)
+                if not (0 <= i < inside.shape[0] and 0 <= j < inside.shape[1] and inside[i, j]):
+                    return False
     return True
 
 

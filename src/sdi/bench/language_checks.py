@@ -117,7 +117,12 @@ def on_table(bs: Boxes) -> Reason:
 
 
 def full(bs: Boxes) -> Reason:
-    return None if bx.is_full(bs) else "not a solid box of cells"
+    """Every cube cell of the bounding box filled (and, with cubes only, one cube per cell)."""
+    if not bx.is_full(bs):
+        return "not a solid box of cells"
+    if only_cubes(bs) is None and len(bs) != len(bx.voxels(bs)):
+        return "overlapping parts"
+    return None
 
 
 def tower(
@@ -464,14 +469,26 @@ def layout(check: Check) -> Pred:
 
 
 def _assign(comps: Sequence[Boxes], checks: Sequence[Check]) -> Reason:
-    """Reason unless some one-to-one assignment of components to checks passes them all."""
-    first: Reason = None
-    for perm in itertools.permutations(range(len(comps))):
-        r = all_of(*[lambda _, c=checks[k], g=comps[i]: c(g) for k, i in enumerate(perm)])(None)
-        if r is None:
-            return None
-        first = first or r
-    return first
+    """Reason unless a one-to-one assignment of components to checks passes them all
+    (bipartite matching, so many structures stay cheap)."""
+    passes = [[checks[c](g) is None for g in comps] for c in range(len(checks))]
+    owner: dict[int, int] = {}  # component -> check
+
+    def augment(c: int, seen: set[int]) -> bool:
+        for i, ok in enumerate(passes[c]):
+            if ok and i not in seen:
+                seen.add(i)
+                if i not in owner or augment(owner[i], seen):
+                    owner[i] = c
+                    return True
+        return False
+
+    for c in range(len(checks)):
+        if not augment(c, set()):
+            # the first component this check would have needed, for the reason
+            free = [g for i, g in enumerate(comps) if i not in owner] or list(comps)
+            return checks[c](free[0]) or "structures cannot be matched one-to-one"
+    return None
 
 
 def structures(*checks: Check, within: bool = True) -> Pred:
