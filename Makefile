@@ -48,6 +48,7 @@ test: $(STAMP) $(LOCAL_STAMP)
 bench: $(STAMP) $(LOCAL_STAMP)
 	$(PY) benchmarks/inspector_scaling.py
 	$(PY) benchmarks/plan_latency.py
+	$(PY) benchmarks/language.py
 	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json
 	$(PY) benchmarks/methods.py --backend rules
 	$(PY) benchmarks/methods.py --backend local --phase-seconds 60

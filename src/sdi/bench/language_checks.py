@@ -1,0 +1,652 @@
+"""Acceptance predicates and scoring for the language evaluation sets.
+
+A *check* looks at a list of world boxes (one structure, or the whole layout) and returns None
+when it holds, else a short reason. A *predicate* (`Case.accept`) looks at the whole plan result
+dict. `one`, `structures`, `beside`, `around`, … lift checks to predicates; predicates and
+checks both compose with `all_of` / `any_of`.
+
+Everything geometric comes from `sdi.bench.boxes`, which reads only the raw plan JSON.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any, TypeVar
+
+from sdi.bench import boxes as bx
+from sdi.bench.boxes import Box, Boxes
+
+Reason = str | None
+Check = Callable[[Boxes], Reason]
+Pred = Callable[[Mapping[str, Any]], Reason]
+T = TypeVar("T")
+
+PHENOMENA = (
+    "relation",
+    "sequence",
+    "numbers",
+    "dimensions",
+    "negation",
+    "typo",
+    "word_order",
+    "filler",
+    "region",
+    "open",
+    "bad_input",
+)
+
+
+@dataclass(frozen=True)
+class Case:
+    """One evaluation command: `accept(result)` is None when the result is acceptable."""
+
+    id: str
+    phenomenon: str
+    text: str
+    accept: Callable[[Mapping[str, Any]], Reason]
+
+
+# ---------------------------------------------------------------- combinators
+
+
+def all_of(*fs: Callable[[T], Reason]) -> Callable[[T], Reason]:
+    def f(x: T) -> Reason:
+        for g in fs:
+            r = g(x)
+            if r is not None:
+                return r
+        return None
+
+    return f
+
+
+def any_of(*fs: Callable[[T], Reason]) -> Callable[[T], Reason]:
+    def f(x: T) -> Reason:
+        reasons = []
+        for g in fs:
+            r = g(x)
+            if r is None:
+                return None
+            reasons.append(r)
+        return "none of: " + " | ".join(reasons)
+
+    return f
+
+
+def _in(value: int, lo: int | None, hi: int | None) -> bool:
+    return (lo is None or value >= lo) and (hi is None or value <= hi)
+
+
+def _rng(n: int | None, lo: int | None, hi: int | None) -> tuple[int | None, int | None]:
+    return (n, n) if n is not None else (lo, hi)
+
+
+def _fmt(lo: int | None, hi: int | None) -> str:
+    if lo == hi:
+        return str(lo)
+    return f"{lo if lo is not None else ''}–{hi if hi is not None else ''}"
+
+
+# ---------------------------------------------------------------- structure checks (on boxes)
+
+
+def parts(n: int | None = None, lo: int | None = None, hi: int | None = None) -> Check:
+    lo, hi = _rng(n, lo, hi)
+
+    def f(bs: Boxes) -> Reason:
+        return None if _in(len(bs), lo, hi) else f"{len(bs)} parts, want {_fmt(lo, hi)}"
+
+    return f
+
+
+def height(n: int | None = None, lo: int | None = None, hi: int | None = None) -> Check:
+    """Overall height in cubes."""
+    lo, hi = _rng(n, lo, hi)
+
+    def f(bs: Boxes) -> Reason:
+        h = bx.thickness_cubes(bs)
+        return None if _in(h, lo, hi) else f"{h} cubes high, want {_fmt(lo, hi)}"
+
+    return f
+
+
+def on_table(bs: Boxes) -> Reason:
+    return None if bs and min(b.lo[2] for b in bs) <= bx.TOL else "not on the table"
+
+
+def full(bs: Boxes) -> Reason:
+    """Every cube cell of the bounding box filled (and, with cubes only, one cube per cell)."""
+    if not bx.is_full(bs):
+        return "not a solid box of cells"
+    if only_cubes(bs) is None and len(bs) != len(bx.voxels(bs)):
+        return "overlapping parts"
+    return None
+
+
+def tower(
+    n: int | None = None, lo: int | None = None, hi: int | None = None, base: int = 1
+) -> Check:
+    """A single column (base × base cells) of `n` (or lo–hi) cubes high, full, on the table."""
+    lo, hi = _rng(n, lo, hi)
+
+    def f(bs: Boxes) -> Reason:
+        if bx.plan_dims(bs) != (base, base):
+            return f"tower footprint {bx.plan_dims(bs)}, want {base}×{base}"
+        return all_of(full, height(lo=lo, hi=hi))(bs)
+
+    return f
+
+
+def row(n: int | None = None, lo: int | None = None, hi: int | None = None) -> Check:
+    """One layer, one cube thick, `n` cubes long."""
+    lo, hi = _rng(n, lo, hi)
+
+    def f(bs: Boxes) -> Reason:
+        a, b = bx.plan_dims(bs)
+        if a != 1 or bx.thickness_cubes(bs) != 1:
+            return f"not a one-layer row: {a}×{b}×{bx.thickness_cubes(bs)}"
+        if not _in(b, lo, hi):
+            return f"row of {b}, want {_fmt(lo, hi)}"
+        return full(bs)
+
+    return f
+
+
+def block(a: int, b: int, c: int = 1) -> Check:
+    """A full a×b footprint (either orientation), c layers high — grid, slab, block, patch."""
+
+    def f(bs: Boxes) -> Reason:
+        dims = bx.plan_dims(bs)
+        if dims != tuple(sorted((a, b))):
+            return f"footprint {dims[0]}×{dims[1]}, want {a}×{b}"
+        if bx.thickness_cubes(bs) != c:
+            return f"{bx.thickness_cubes(bs)} layers, want {c}"
+        return full(bs)
+
+    return f
+
+
+def block_xy(nx: int, ny: int, c: int = 1) -> Check:
+    """Like `block` but oriented: nx cubes along x (depth), ny along y (width)."""
+
+    def f(bs: Boxes) -> Reason:
+        dims = bx.footprint_cubes(bs)
+        if dims != (nx, ny):
+            return f"x×y footprint {dims[0]}×{dims[1]}, want {nx}×{ny}"
+        return block(nx, ny, c)(bs)
+
+    return f
+
+
+def wall(
+    length: int | None = None,
+    high: int | None = None,
+    lo: int | None = None,
+    hi: int | None = None,
+) -> Check:
+    """One cube thick, full, `length` long (or lo–hi) and `high` high (≥ 2 when not given)."""
+
+    def f(bs: Boxes) -> Reason:
+        t, n = bx.plan_dims(bs)
+        h = bx.thickness_cubes(bs)
+        if t != 1:
+            return f"wall {t} thick"
+        if (length is not None and n != length) or not _in(n, lo, hi):
+            return f"wall {n} long, want {length if length is not None else _fmt(lo, hi)}"
+        if (high is not None and h != high) or (high is None and h < 2):
+            return f"wall {h} high, want {high if high is not None else '≥ 2'}"
+        return full(bs)
+
+    return f
+
+
+def ring(bs: Boxes) -> Reason:
+    """An enclosure: a closed loop of parts around at least one cube-cell of empty floor."""
+    return None if bx.interior_area(bs) >= 0.002 else "no enclosed interior"
+
+
+def ring_of(high: int | None = None, inner: tuple[int, int] | None = None) -> Check:
+    """A ring `high` cubes high whose empty interior is `inner` cells (either orientation)."""
+
+    def f(bs: Boxes) -> Reason:
+        r = ring(bs)
+        if r:
+            return r
+        if high is not None and bx.thickness_cubes(bs) != high:
+            return f"ring {bx.thickness_cubes(bs)} high, want {high}"
+        if inner is not None:
+            cells = round(bx.interior_area(bs) / (bx.CUBE * bx.CUBE))
+            if cells != inner[0] * inner[1]:
+                return f"ring interior {cells} cells, want {inner[0]}×{inner[1]}"
+        return None
+
+    return f
+
+
+def staircase(n: int | None = None, lo: int | None = None, hi: int | None = None) -> Check:
+    lo, hi = _rng(n, lo, hi)
+
+    def f(bs: Boxes) -> Reason:
+        s = bx.staircase_steps(bs)
+        if s < 2:
+            return "not a staircase"
+        return None if _in(s, lo, hi) else f"{s} steps, want {_fmt(lo, hi)}"
+
+    return f
+
+
+def pyramid(n: int | None = None, lo: int | None = None, hi: int | None = None) -> Check:
+    """≥ 2 levels, each smaller and inside the one below; n = number of levels."""
+    lo, hi = _rng(n, lo, hi)
+
+    def f(bs: Boxes) -> Reason:
+        p = bx.pyramid_levels(bs)
+        if p is None:
+            return "not a pyramid"
+        return None if _in(len(p), lo, hi) else f"pyramid of {len(p)} levels, want {_fmt(lo, hi)}"
+
+    return f
+
+
+def pyramid_counts(*counts: int) -> Check:
+    """A pyramid with exactly these parts per level, bottom first."""
+
+    def f(bs: Boxes) -> Reason:
+        p = bx.pyramid_levels(bs)
+        return None if p == list(counts) else f"levels {p}, want {list(counts)}"
+
+    return f
+
+
+def levels(*counts: int) -> Check:
+    """Exactly these parts per level (distinct bottom heights), bottom first."""
+
+    def f(bs: Boxes) -> Reason:
+        got = bx.level_counts(bs)
+        return None if got == list(counts) else f"parts per level {got}, want {list(counts)}"
+
+    return f
+
+
+def legs_roof(
+    legs: int | None = None,
+    leg_lo: int | None = None,
+    leg_hi: int | None = None,
+    min_legs: int = 2,
+) -> Check:
+    """A connected top piece (beam, deck, roof) on ≥ `min_legs` separate supports; each leg
+    leg_lo–leg_hi cubes high. Bridges, gates, arches (with 2), tables and canopies (with 4)."""
+
+    def f(bs: Boxes) -> Reason:
+        found = bx.roof_legs(bs)
+        if found is None:
+            return "no top piece resting on separate supports"
+        n = len(found)
+        if n < min_legs or (legs is not None and n != legs):
+            return f"{n} supports, want {legs if legs is not None else f'≥ {min_legs}'}"
+        for g in found:
+            h = bx.thickness_cubes(g)
+            if not _in(h, leg_lo, leg_hi):
+                return f"support {h} high, want {_fmt(leg_lo, leg_hi)}"
+        return None
+
+    return f
+
+
+def bridge(
+    pillar: int | None = None,
+    pillars: int | None = None,
+    lo: int | None = None,
+    hi: int | None = None,
+) -> Check:
+    """Pillars (`pillar` cubes high, or lo–hi) joined by a span on top; `pillars` supports."""
+    lo, hi = _rng(pillar, lo, hi)
+    return legs_roof(legs=pillars, leg_lo=lo, leg_hi=hi, min_legs=2)
+
+
+def arch(bs: Boxes) -> Reason:
+    """Anything with a part spanning a gap between two separate supports."""
+    legs = bx.roof_legs(bs)
+    if bx.spans(bs) or (legs is not None and len(legs) >= 2):
+        return None
+    return "nothing spans a gap"
+
+
+def canopy(legs: int | None = None, lo: int | None = None, hi: int | None = None) -> Check:
+    return legs_roof(legs=legs, leg_lo=lo, leg_hi=hi, min_legs=3)
+
+
+def castle(bs: Boxes) -> Reason:
+    """A ring whose corners carry ≥ 4 columns taller than the rest of the wall."""
+    r = ring(bs)
+    if r:
+        return r
+    hs = sorted((len(c) for c in bx.columns(bs)), reverse=True)
+    if len(hs) < 5 or hs[3] <= hs[-1]:
+        return "no corner towers above the wall"
+    return None
+
+
+def shape_letter(kind: str) -> Check:
+    def f(bs: Boxes) -> Reason:
+        got = bx.letter(bs)
+        return None if got == kind else f"footprint letter {got}, want {kind}"
+
+    return f
+
+
+def profile(*hs: int) -> Check:
+    """Slice heights along the long axis equal `hs` (either direction), every column full."""
+
+    def f(bs: Boxes) -> Reason:
+        fx, fy = bx.footprint_cubes(bs)
+        axis = 0 if fx >= fy else 1
+        got = bx.step_profile(bs, axis)
+        width = (fy, fx)[axis]
+        if got not in (list(hs), list(hs)[::-1]):
+            return f"height profile {got}, want {list(hs)}"
+        if len(bx.voxels(bs)) != sum(hs) * width:
+            return "columns not full"
+        return None
+
+    return f
+
+
+def rises(direction: str) -> Check:
+    def f(bs: Boxes) -> Reason:
+        got = bx.rises_towards(bs)
+        return None if got == direction else f"climbs towards {got}, want {direction}"
+
+    return f
+
+
+def base(a: int, b: int) -> Check:
+    """The bottom level is a full a×b footprint (either orientation)."""
+
+    def f(bs: Boxes) -> Reason:
+        z0 = min(q.lo[2] for q in bs)
+        bottom = [q for q in bs if q.lo[2] <= z0 + bx.TOL]
+        return block(a, b, 1)(bottom)
+
+    return f
+
+
+def dims(a: int, b: int) -> Check:
+    """Footprint a×b cubes (either orientation), whatever the fill."""
+
+    def f(bs: Boxes) -> Reason:
+        got = bx.plan_dims(bs)
+        return None if got == tuple(sorted((a, b))) else f"footprint {got}, want {a}×{b}"
+
+    return f
+
+
+def long(n: int | None = None, lo: int | None = None, hi: int | None = None) -> Check:
+    """The longer footprint side, in cubes."""
+    lo, hi = _rng(n, lo, hi)
+
+    def f(bs: Boxes) -> Reason:
+        b = bx.plan_dims(bs)[1]
+        return None if _in(b, lo, hi) else f"{b} cubes long, want {_fmt(lo, hi)}"
+
+    return f
+
+
+def flat(bs: Boxes) -> Reason:
+    """One cube thick in plan (a 2-D shape standing in a vertical plane)."""
+    return None if bx.plan_dims(bs)[0] == 1 else f"footprint {bx.plan_dims(bs)}, not one thick"
+
+
+def broad(bs: Boxes) -> Reason:
+    """At least two cubes each way in plan."""
+    return None if bx.plan_dims(bs)[0] >= 2 else f"footprint {bx.plan_dims(bs)}, not 2-D"
+
+
+def only_cubes(bs: Boxes) -> Reason:
+    sizes = {tuple(round(v, 3) for v in sorted(q.size)) for q in bs}
+    return None if sizes <= {(0.05, 0.05, 0.05)} else f"non-cube parts {sorted(sizes)}"
+
+
+def not_(check: Check, what: str) -> Check:
+    """Holds when `check` fails; `what` names what must not be the case."""
+    return lambda bs: None if check(bs) is not None else what
+
+
+def region(name: str) -> Check:
+    return lambda bs: bx.region_problem(bs, name)
+
+
+def near(x: float | None = None, y: float | None = None, tol: float = 0.03) -> Check:
+    """Footprint centre within `tol` of the given coordinate(s)."""
+
+    def f(bs: Boxes) -> Reason:
+        cx, cy = bx.centre(bs)
+        if x is not None and abs(cx - x) > tol:
+            return f"centre x {cx:.3f}, want {x} ± {tol}"
+        if y is not None and abs(cy - y) > tol:
+            return f"centre y {cy:.3f}, want {y} ± {tol}"
+        return None
+
+    return f
+
+
+def on_top(upper: Check, lower: Check) -> Check:
+    """Some level splits the boxes into `lower` (below) and `upper` (standing on it)."""
+
+    def f(bs: Boxes) -> Reason:
+        reasons = []
+        for z in sorted({round(b.lo[2], 3) for b in bs})[1:]:
+            below, above = bx.split_at(bs, z)
+            r = lower(below) or upper(above)
+            if r is None and bx.stands_on(above, below):
+                return None
+            reasons.append(r or "upper part does not rest on the lower")
+        return "no level split fits: " + (reasons[0] if reasons else "one level only")
+
+    return f
+
+
+# ---------------------------------------------------------------- predicates (on results)
+
+
+def _boxes_or_reason(result: Mapping[str, Any]) -> list[Box] | str:
+    objs = bx.objects(result)
+    if not objs:
+        return "no layout"
+    return bx.boxes(result)
+
+
+def layout(check: Check) -> Pred:
+    """`check` on the whole layout (all structures together)."""
+
+    def f(result: Mapping[str, Any]) -> Reason:
+        bs = _boxes_or_reason(result)
+        return bs if isinstance(bs, str) else check(bs)
+
+    return f
+
+
+def _assign(comps: Sequence[Boxes], checks: Sequence[Check]) -> Reason:
+    """Reason unless a one-to-one assignment of components to checks passes them all
+    (bipartite matching, so many structures stay cheap)."""
+    passes = [[checks[c](g) is None for g in comps] for c in range(len(checks))]
+    owner: dict[int, int] = {}  # component -> check
+
+    def augment(c: int, seen: set[int]) -> bool:
+        for i, ok in enumerate(passes[c]):
+            if ok and i not in seen:
+                seen.add(i)
+                if i not in owner or augment(owner[i], seen):
+                    owner[i] = c
+                    return True
+        return False
+
+    for c in range(len(checks)):
+        if not augment(c, set()):
+            # the first component this check would have needed, for the reason
+            free = [g for i, g in enumerate(comps) if i not in owner] or list(comps)
+            return checks[c](free[0]) or "structures cannot be matched one-to-one"
+    return None
+
+
+def structures(*checks: Check, within: bool = True) -> Pred:
+    """Exactly len(checks) separate structures, matched one-to-one with `checks`; all inside
+    the workspace (unless `within` is False)."""
+
+    def f(result: Mapping[str, Any]) -> Reason:
+        bs = _boxes_or_reason(result)
+        if isinstance(bs, str):
+            return bs
+        if within and not bx.in_workspace(bs):
+            return "a part outside the workspace"
+        comps = bx.components(bs)
+        if len(comps) != len(checks):
+            return f"{len(comps)} separate structures, want {len(checks)}"
+        return _assign(comps, checks)
+
+    return f
+
+
+def one(*checks: Check) -> Pred:
+    """Exactly one structure, passing every check."""
+    return structures(all_of(*checks))
+
+
+def each(k: int, *checks: Check) -> Pred:
+    """Exactly k structures, each passing every check."""
+    return structures(*[all_of(*checks)] * k)
+
+
+def _pair(a: Check, b: Check, rel: Callable[[Boxes, Boxes], Reason], n: int = 2) -> Pred:
+    """Exactly n structures; two of them, A passing a and B passing b, satisfy rel(A, B)."""
+
+    def f(result: Mapping[str, Any]) -> Reason:
+        bs = _boxes_or_reason(result)
+        if isinstance(bs, str):
+            return bs
+        if not bx.in_workspace(bs):
+            return "a part outside the workspace"
+        comps = bx.components(bs)
+        if len(comps) != n:
+            return f"{len(comps)} separate structures, want {n}"
+        first: Reason = None
+        for i, j in itertools.permutations(range(n), 2):
+            r = a(comps[i]) or b(comps[j]) or rel(comps[i], comps[j])
+            if r is None:
+                return None
+            first = first or r
+        return first
+
+    return f
+
+
+def beside(a: Check, b: Check, side: str | None = None, max_gap: float = 0.25) -> Pred:
+    """Two separate structures, A on `side` of B (left/right/back/front), gap ≤ max_gap."""
+
+    def rel(sa: Boxes, sb: Boxes) -> Reason:
+        gap = bx.separation(sa, sb)
+        if gap > max_gap:
+            return f"{gap:.2f} m apart"
+        if side is not None and bx.side_of(sa, sb) != side:
+            return f"A is {bx.side_of(sa, sb)} of B, want {side}"
+        return None
+
+    return _pair(a, b, rel)
+
+
+def around(inner: Check, outer: Check = ring) -> Pred:
+    """Two structures: `outer` surrounds `inner` (inside its empty interior)."""
+
+    def rel(sa: Boxes, sb: Boxes) -> Reason:
+        return None if bx.encloses(sa, sb) else "the ring does not surround the other"
+
+    return _pair(outer, inner, rel)
+
+
+def between_(mid: Check, end: Check, end2: Check | None = None) -> Pred:
+    """Three structures, `mid` between the other two."""
+    end2 = end2 or end
+
+    def f(result: Mapping[str, Any]) -> Reason:
+        bs = _boxes_or_reason(result)
+        if isinstance(bs, str):
+            return bs
+        if not bx.in_workspace(bs):
+            return "a part outside the workspace"
+        comps = bx.components(bs)
+        if len(comps) != 3:
+            return f"{len(comps)} separate structures, want 3"
+        first: Reason = None
+        for i, j, k in itertools.permutations(range(3)):
+            r = mid(comps[i]) or end(comps[j]) or end2(comps[k])
+            if r is None and not bx.between(comps[i], comps[j], comps[k]):
+                r = "not between"
+            if r is None:
+                return None
+            first = first or r
+        return first
+
+    return f
+
+
+def status_is(*statuses: str) -> Pred:
+    def f(result: Mapping[str, Any]) -> Reason:
+        s = result.get("status")
+        return None if s in statuses else f"status {s}, want {'/'.join(statuses)}"
+
+    return f
+
+
+def refused(result: Mapping[str, Any]) -> Reason:
+    """The honest outcome for an unusable command: status error."""
+    return status_is("error")(result)
+
+
+def noted(result: Mapping[str, Any]) -> Reason:
+    return None if result.get("notes") or result.get("ignored") else "no notes"
+
+
+def honest(reading: Pred | None = None, infeasible_ok: bool = True) -> Pred:
+    """The honest outcomes for a contradictory, over-limit or half-usable command: an error;
+    a failure (if `infeasible_ok`); or a layout fitting `reading` *with* notes naming the
+    assumption (status success or partial). Never a silent success."""
+
+    def f(result: Mapping[str, Any]) -> Reason:
+        s = result.get("status")
+        if s == "error" or (infeasible_ok and s == "failure"):
+            return None
+        if s in ("success", "partial"):
+            if reading is None:
+                return f"status {s}, want error" + ("/failure" if infeasible_ok else "")
+            r = noted(result) or reading(result)
+            return None if r is None else f"{s}: {r}"
+        return f"status {s}"
+
+    return f
+
+
+# ---------------------------------------------------------------- scoring
+
+OUTCOMES = ("correct", "honest_miss", "silent_misreading")
+
+
+def score(case: Case, result: Mapping[str, Any]) -> tuple[str, Reason]:
+    """(outcome, reason) of one case: correct, honest_miss or silent_misreading."""
+    try:
+        reason = case.accept(result)
+    except Exception as exc:  # a predicate crash on malformed output counts against it
+        reason = f"predicate raised {type(exc).__name__}: {exc}"
+    status = result.get("status")
+    if case.phenomenon == "bad_input":
+        ok = reason is None
+    else:
+        ok = status == "success" and reason is None
+        if status != "success" and reason is None:
+            reason = f"status {status}"
+    if ok:
+        return "correct", None
+    if status != "success":
+        return "honest_miss", reason or f"status {status}"
+    return "silent_misreading", reason

@@ -1,0 +1,297 @@
+"""The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
+layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
+themselves — sizes, unique ids, no shared commands, and the frozen test set's hash."""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from pathlib import Path
+
+import pytest
+
+from sdi.bench import boxes as bx
+from sdi.bench import language_checks as k
+from sdi.bench.language_checks import PHENOMENA, Case, score
+from sdi.bench.language_dev import CASES as DEV
+from sdi.bench.language_test import CASES as TEST
+
+# sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
+# must be a deliberate, reviewed decision.
+FROZEN_TEST_SHA256 = "7d1dd3c73b2b10f6f30c812bf0d0d6b9a140b1b80858ddbdf669aad08563a6fa"
+
+YAW90 = [math.cos(math.pi / 4), 0.0, 0.0, math.sin(math.pi / 4)]
+C = 0.05
+
+
+def cube(x, y, z, i=[0]):  # noqa: B006 - a running id
+    i[0] += 1
+    return {"id": f"c{i[0]}", "position": [x, y, z], "orientation": [1, 0, 0, 0], "size": [C, C, C]}
+
+
+def beam(x, y, z, q=(1.0, 0.0, 0.0, 0.0)):
+    return {"id": "b", "position": [x, y, z], "orientation": list(q), "size": [0.15, C, C]}
+
+
+def res(*objs, status="success", **extra):
+    return {"status": status, "layout": {"objects": list(objs)}, **extra}
+
+
+def column(x, y, n, z0=0.0):
+    return [cube(x, y, z0 + C / 2 + C * j) for j in range(n)]
+
+
+def ring(x0, y0, n, high=1):
+    """An n × n square ring of cubes, lower-left cube centre at (x0, y0)."""
+    out = []
+    for i in range(n):
+        for j in range(n):
+            if i in (0, n - 1) or j in (0, n - 1):
+                out += column(x0 + C * i, y0 + C * j, high)
+    return out
+
+
+def grid(x0, y0, a, b, layers=1, z0=0.0):
+    return [
+        cube(x0 + C * i, y0 + C * j, z0 + C / 2 + C * h)
+        for h in range(layers)
+        for i in range(a)
+        for j in range(b)
+    ]
+
+
+TOWER3 = res(*column(0.45, 0.30, 3))
+TOWER4 = res(*column(0.45, 0.30, 4))
+# two 2-cube towers 0.10 m apart along y, a beam turned 90° about z resting on both
+BRIDGE = res(*column(0.45, 0.25, 2), *column(0.45, 0.35, 2), beam(0.45, 0.30, 0.125, YAW90))
+BEAM_ON_ONE = res(*column(0.45, 0.25, 2), *column(0.45, 0.35, 2), beam(0.45, 0.20, 0.125, YAW90))
+# a 5 × 5 ring (3 × 3 empty inside) with a 2-cube tower in the middle
+PEN = res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 2))
+_R5 = ring(0.35, 0.20, 5)
+PEN_OPEN = res(*_R5[:2], *_R5[3:], *column(0.45, 0.30, 2))  # a side cube missing
+TOWER_OUTSIDE = res(*ring(0.35, 0.20, 5), *column(0.70, 0.30, 2))
+STAIRS3 = res(*column(0.40, 0.30, 1), *column(0.45, 0.30, 2), *column(0.50, 0.30, 3))
+
+
+def test_box_of_rotated_beam():
+    b = bx.box_of(beam(0.45, 0.30, 0.125, YAW90))
+    assert b.size == pytest.approx((0.05, 0.15, 0.05))
+    assert b.lo == pytest.approx((0.425, 0.225, 0.10))
+    q45 = [math.cos(math.pi / 8), 0.0, 0.0, math.sin(math.pi / 8)]
+    b45 = bx.box_of(beam(0.45, 0.30, 0.125, q45))
+    side = (0.15 + 0.05) / 2 * math.sqrt(2)  # |R| rotates the half-extents
+    assert b45.size == pytest.approx((side, side, 0.05))
+    # a beam stood upright (90° about y) is 0.15 m tall
+    qy = [math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0]
+    assert bx.box_of(beam(0.45, 0.30, 0.075, qy)).size == pytest.approx((0.05, 0.05, 0.15))
+
+
+def test_measures_on_a_tower_and_a_block():
+    bs = bx.boxes(TOWER3)
+    assert bx.count(bs) == 3 and bx.height_cubes(bs) == 3 and bx.tallest(bs) == 3
+    assert bx.levels(bs) == {0.0: 1, 0.05: 1, 0.1: 1}
+    assert bx.footprint_cubes(bs) == (1, 1)
+    blk = bx.boxes(res(*grid(0.40, 0.25, 3, 2, layers=2)))
+    assert bx.footprint_cubes(blk) == (3, 2) and bx.plan_dims(blk) == (2, 3)
+    assert bx.level_counts(blk) == [6, 6] and bx.is_full(blk)
+    assert bx.boxes({"status": "error", "layout": None}) == []
+
+
+def test_contact_face_and_edge_but_not_corner():
+    a = bx.box_of(cube(0.40, 0.30, 0.025))
+    assert bx.touching(a, bx.box_of(cube(0.45, 0.30, 0.025)))  # face
+    assert bx.touching(a, bx.box_of(cube(0.45, 0.35, 0.025)))  # vertical edge
+    assert not bx.touching(a, bx.box_of(cube(0.45, 0.35, 0.075)))  # corner only
+    assert not bx.touching(a, bx.box_of(cube(0.46, 0.30, 0.025)))  # 1 cm gap
+    assert len(bx.components(bx.boxes(PEN))) == 2
+
+
+def test_tower_checks():
+    assert k.one(k.tower(3))(TOWER3) is None
+    assert k.one(k.tower(3))(TOWER4) is not None
+    assert k.one(k.tower(lo=2, hi=4))(TOWER4) is None
+    assert k.one(k.tower(3))(res(*column(0.40, 0.30, 3), *column(0.60, 0.30, 3))) is not None
+    assert k.each(2, k.tower(3))(res(*column(0.40, 0.30, 3), *column(0.60, 0.30, 3))) is None
+    assert k.one(k.tower(3))({"status": "error", "layout": None}) == "no layout"
+
+
+def test_bridge_on_two_towers():
+    bs = bx.boxes(BRIDGE)
+    spans = bx.spans(bs)
+    assert len(spans) == 1 and len(spans[0].supports) == 2
+    assert k.one(k.bridge(2, pillars=2))(BRIDGE) is None
+    assert k.one(k.bridge(3))(BRIDGE) is not None  # pillars are 2 high
+    assert k.one(k.bridge())(BEAM_ON_ONE) is not None  # the beam rests on one tower only
+    assert k.one(k.bridge())(res(*column(0.45, 0.25, 2), *column(0.45, 0.35, 2))) is not None
+    assert k.one(k.arch)(BRIDGE) is None and k.one(k.arch)(TOWER3) is not None
+
+
+def test_ring_around_a_tower():
+    assert k.around(k.tower(2))(PEN) is None
+    assert k.around(k.tower(3))(PEN) is not None  # wrong tower height
+    assert k.around(k.tower(2))(PEN_OPEN) is not None  # a gap in the ring
+    assert k.around(k.tower(2))(TOWER_OUTSIDE) is not None
+    ring_only = res(*ring(0.35, 0.20, 4))
+    assert k.one(k.ring_of(high=1, inner=(2, 2)))(ring_only) is None
+    assert k.one(k.ring_of(high=2))(ring_only) is not None
+    assert k.one(k.ring)(TOWER3) is not None
+
+
+def test_staircase_and_profile():
+    assert bx.staircase_steps(bx.boxes(STAIRS3)) == 3
+    assert bx.rises_towards(bx.boxes(STAIRS3)) == "back"
+    assert k.one(k.staircase(3), k.rises("back"))(STAIRS3) is None
+    assert k.one(k.staircase(4))(STAIRS3) is not None
+    assert k.one(k.staircase())(TOWER3) is not None
+    gappy = res(*column(0.40, 0.30, 1), *column(0.50, 0.30, 3), cube(0.45, 0.30, 0.075))
+    assert k.one(k.staircase())(gappy) is not None  # a hole under the middle step
+    ends = res(*column(0.40, 0.30, 2), cube(0.45, 0.30, 0.025), *column(0.50, 0.30, 2))
+    assert k.one(k.profile(2, 1, 2))(ends) is None
+    assert k.one(k.profile(1, 2, 3))(ends) is not None
+
+
+def test_pyramid_and_on_top():
+    pyr = res(*grid(0.40, 0.25, 3, 3), *grid(0.425, 0.275, 2, 2, z0=C), cube(0.45, 0.30, 0.125))
+    assert bx.pyramid_levels(bx.boxes(pyr)) == [9, 4, 1]
+    assert k.one(k.pyramid_counts(9, 4, 1), k.broad)(pyr) is None
+    assert k.one(k.pyramid(2))(pyr) is not None
+    assert k.one(k.pyramid())(res(*grid(0.40, 0.25, 3, 3, layers=2))) is not None
+    slab_tower = res(*grid(0.40, 0.25, 2, 2), *column(0.40, 0.25, 2, z0=C))
+    assert k.one(k.on_top(k.tower(2), k.block(2, 2, 1)))(slab_tower) is None
+    assert k.one(k.on_top(k.tower(3), k.block(2, 2, 1)))(slab_tower) is not None
+    assert bx.stands_on(
+        bx.boxes(res(*column(0.40, 0.25, 2, z0=C))), bx.boxes(res(*grid(0.40, 0.25, 2, 2)))
+    )
+
+
+def test_canopy_on_four_legs():
+    legs = [c for x in (0.40, 0.50) for y in (0.25, 0.35) for c in column(x, y, 2)]
+    roof = [beam(0.40, 0.30, 0.125, YAW90), beam(0.50, 0.30, 0.125, YAW90)]
+    roof2 = [beam(0.45, 0.25, 0.175), beam(0.45, 0.35, 0.175)]
+    table = res(*legs, *roof, *roof2)
+    assert k.one(k.canopy(4, 2, 2))(table) is None
+    assert k.one(k.canopy(4, 3, 3))(table) is not None
+    assert k.one(k.canopy())(BRIDGE) is not None  # two legs only
+
+
+def test_relative_placement_and_regions():
+    tower_left = column(0.45, 0.45, 3)
+    wall = [c for y in (0.15, 0.20, 0.25) for c in column(0.45, y, 2)]
+    r = res(*tower_left, *wall)
+    assert k.beside(k.tower(3), k.wall(3, 2), "left")(r) is None
+    assert k.beside(k.tower(3), k.wall(3, 2), "right")(r) is not None
+    assert k.beside(k.tower(3), k.wall(3, 2), "left", max_gap=0.05)(r) is not None
+    assert bx.sides(bx.boxes(res(*tower_left)), bx.boxes(res(*wall))) == {"left"}
+    assert k.one(k.tower(3), k.region("left"))(res(*tower_left)) is None
+    assert k.one(k.tower(3), k.region("back left"))(res(*tower_left)) is not None
+    assert k.one(k.tower(3), k.region("back left"))(res(*column(0.65, 0.45, 3))) is None
+    assert k.one(k.tower(3), k.near(0.45, 0.45))(res(*tower_left)) is None
+    three = res(*column(0.45, 0.15, 2), *column(0.45, 0.30, 5), *column(0.45, 0.45, 2))
+    assert k.between_(k.tower(5), k.tower(2))(three) is None
+    off = res(*column(0.45, 0.15, 2), *column(0.45, 0.45, 5), *column(0.45, 0.30, 2))
+    assert k.between_(k.tower(5), k.tower(2))(off) is not None
+    outside = res(*column(0.85, 0.30, 3))
+    assert k.one(k.tower(3))(outside) == "a part outside the workspace"
+
+
+def test_letters():
+    el = res(
+        *[cube(0.40 + C * i, 0.25, 0.025) for i in range(3)],
+        *[cube(0.40, 0.25 + C * j, 0.025) for j in range(1, 3)],
+    )
+    assert bx.letter(bx.boxes(el)) == "L"
+    tee = res(
+        *[cube(0.40 + C * i, 0.35, 0.025) for i in range(3)],
+        *[cube(0.45, 0.25 + C * j, 0.025) for j in range(2)],
+    )
+    assert bx.letter(bx.boxes(tee)) == "T"
+    plus = res(
+        *[cube(0.40 + C * i, 0.30, 0.025) for i in range(3)],
+        cube(0.45, 0.25, 0.025),
+        cube(0.45, 0.35, 0.025),
+    )
+    assert bx.letter(bx.boxes(plus)) == "cross"
+    assert bx.letter(bx.boxes(TOWER3)) is None
+
+
+def test_scoring_outcomes():
+    case = Case("x", "relation", "a 3-cube tower", k.one(k.tower(3)))
+    assert score(case, TOWER3) == ("correct", None)
+    assert score(case, TOWER4)[0] == "silent_misreading"
+    assert score(case, {**TOWER3, "status": "partial"})[0] == "honest_miss"
+    assert score(case, {"status": "error", "layout": None})[0] == "honest_miss"
+    bad = Case("y", "bad_input", "a 3-cube tower 4 high", k.honest(k.one(k.tower(3))))
+    assert score(bad, {"status": "error", "layout": None})[0] == "correct"
+    assert score(bad, TOWER3)[0] == "silent_misreading"  # silent: no note of the assumption
+    assert score(bad, {**TOWER3, "notes": ["assumed 3 cubes"]})[0] == "correct"
+    assert score(bad, {**TOWER4, "notes": ["assumed 4 cubes"]})[0] == "silent_misreading"
+    gib = Case("z", "bad_input", "blah", k.refused)
+    assert score(gib, {"status": "failure", "layout": None})[0] == "honest_miss"
+    crash = Case("w", "relation", "t", lambda r: r["nope"])  # a crashing predicate
+    assert score(crash, TOWER3)[0] == "silent_misreading"
+
+
+def test_set_sizes_ids_and_phenomena():
+    assert len(DEV) >= 150 and len(TEST) >= 60
+    ids = [c.id for c in (*DEV, *TEST)]
+    assert len(ids) == len(set(ids))
+    for cases, least in ((DEV, 10), (TEST, 5)):
+        per = {p: sum(c.phenomenon == p for c in cases) for p in PHENOMENA}
+        assert set(per) == set(PHENOMENA) and min(per.values()) >= least, per
+        assert {c.phenomenon for c in cases} <= set(PHENOMENA)
+        assert all(callable(c.accept) for c in cases)
+
+
+def _norm(text: str) -> str:
+    return " ".join(text.lower().split())
+
+
+def test_no_command_shared_between_dev_and_test():
+    dev = {_norm(c.text) for c in DEV}
+    assert not [c.id for c in TEST if _norm(c.text) in dev]
+    assert len({_norm(c.text) for c in TEST}) == len(TEST)
+
+
+def test_test_set_is_frozen():
+    path = Path(k.__file__).with_name("language_test.py")
+    assert hashlib.sha256(path.read_bytes()).hexdigest() == FROZEN_TEST_SHA256
+
+
+NO_LAYOUT = {"status": "error", "layout": None}
+
+
+@pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
+def test_every_predicate_answers_without_raising(result):
+    for case in (*DEV, *TEST):
+        out = case.accept(result)
+        assert out is None or isinstance(out, str), case.id
+
+
+def test_the_judges_import_nothing_from_the_system_they_judge():
+    forbidden = (
+        "sdi.model",
+        "sdi.design",
+        "sdi.inspector",
+        "sdi.spec",
+        "sdi.bench.signatures",
+        "sdi.bench.suite",
+        "sdi.pipeline",
+    )
+    here = Path(k.__file__).parent
+    for name in ("boxes.py", "language_checks.py", "language_dev.py", "language_test.py"):
+        src = (here / name).read_text(encoding="utf-8")
+        imports = [ln for ln in src.splitlines() if ln.lstrip().startswith(("import ", "from "))]
+        assert not [ln for ln in imports if any(f in ln for f in forbidden)], name
+
+
+def test_many_structures_match_quickly_and_one_to_one():
+    singles = res(
+        *[cube(0.25 + 0.1 * i, 0.10 + 0.1 * j, 0.025) for i in range(5) for j in range(3)]
+    )
+    assert k.each(15, k.tower(1))(singles) is None
+    checks = [k.tower(1)] * 14 + [k.tower(2)]
+    assert k.structures(*checks)(singles) is not None
+    two = res(*column(0.40, 0.30, 2), *column(0.60, 0.30, 2))
+    assert k.structures(k.tower(2), k.tower(3))(two) is not None  # no double use of a tower
+    dup = res(*column(0.45, 0.30, 3), cube(0.45, 0.30, 0.075))
+    assert k.one(k.tower(3))(dup) == "overlapping parts"
