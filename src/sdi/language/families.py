@@ -54,11 +54,20 @@ FAMILIES: dict[str, Family] = {
 }
 
 
+# Values a family has without a slot for them ("a row one high", "a grid one layer thick").
+IMPLIED = {"height": 1, "width": 1, "count": 1}
+
+
 def unused_slots(spec: StructureSpec) -> dict[str, object]:
-    """Fields set on `spec` that its family's generator does not read."""
+    """Fields set on `spec` that its family's generator does not read (and that differ
+    from what the family is anyway: a row is one part high)."""
     family = FAMILIES[spec.shape]
     values = spec.model_dump(exclude_none=True, exclude_defaults=True)
-    return {k: v for k, v in values.items() if k not in family.slots and k not in COMMON}
+    return {
+        k: v
+        for k, v in values.items()
+        if k not in family.slots and k not in COMMON and IMPLIED.get(k) != v
+    }
 
 
 def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> StructureSpec:
@@ -83,6 +92,13 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
     if spec.shape == "row" and spec.height is not None and spec.height > 1:
         notes.append(f"a row {spec.height} high is a wall: built a wall")
         spec = spec.model_copy(update={"shape": "wall", "gap_m": None})
+    implied = {
+        k: None
+        for k, v in spec.model_dump(exclude_none=True).items()
+        if k not in FAMILIES[spec.shape].slots and k not in COMMON and IMPLIED.get(k) == v
+    }
+    if implied:
+        spec = spec.model_copy(update=implied)
     left = unused_slots(spec)
     if left:
         values = ", ".join(f"{k}={v}" for k, v in left.items())

@@ -127,7 +127,8 @@ _BEAMS = {"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "gi
 _EMPTY = {"empty", "hollow", "open", "free", "blank"}
 _COPY = {"second", "another", "same", "identical", "matching", "similar", "twin", "copy"}
 _KINDS: dict[str, RelationKind] = {"on": "on_top_of", "around": "around", "next": "next_to"}
-_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front"}
+_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front",
+             "middle": "left", "centre": "left", "center": "left"}  # fmt: skip
 _LEVEL_ORDINAL = re.compile(
     r"\b(?:as|for|on|to form)\s+(?:the|a)\s+(?:second|third|fourth|fifth|next|top|final|last|"
     r"upper|new)\s+(?:level|layer|tier|storey|story|floor|row)\b",
@@ -157,8 +158,8 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     ),
     (
         re.compile(
-            r"\b(?:(?:that|which)\s+(?:is|are)\s+|that's\s+|but\s+|and\s+)?not\s+(?:on|in|at|to)"
-            r"\s+the\s+(left|right|front|back)(?:\s+side)?\b",
+            r"\b(?:(?:that|which)\s+(?:is|are)\s+|that's\s+|but\s+|and\s+|is\s+)?not\s+"
+            r"(?:on|in|at|to)\s+the\s+(left|right|front|back|middle|centre|center)(?:\s+side)?\b",
             re.IGNORECASE,
         ),
         " on the {opposite} ",
@@ -308,10 +309,19 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
 
 
 # -- 1. normalise ---------------------------------------------------------------------------
+_CONTRACTIONS = [
+    (re.compile(r"\b(can)'?t\b", re.IGNORECASE), r"\1 not"),
+    (re.compile(r"\bwon'?t\b", re.IGNORECASE), "will not"),
+    (re.compile(r"\b(is|are|was|were|do|does|did|should|must|could|would)n'?t\b", re.I), r"\1 not"),
+]
+
+
 def _normalise(command: str) -> str:
     text = command
     for a, b in _SYMBOLS.items():
         text = text.replace(a, b)
+    for pattern, repl in _CONTRACTIONS:
+        text = pattern.sub(repl, text)
     text = _DIMS.sub(" x ", text)
     return _SPACES.sub(" ", text).strip()
 
@@ -579,7 +589,6 @@ def _clause_phrases(
 # -- 5. slot filling ------------------------------------------------------------------------
 def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> list[StructureSpec]:
     structures: list[StructureSpec] = []
-    pos = {t.lower_: t.pos_ for t in doc}
     joiners = {r.object for r in rels if r.kind == "joined"}
     for k, p in enumerate(phrases):
         content = [
@@ -600,6 +609,10 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
         except SpecError:
             if _continues(p, phrases[:k]):
                 continue
+            if _chatter(p.text):
+                st.ignored.append(p.text)
+                st.notes.append(f"ignored '{p.text}': no structure, size or place in it")
+                continue
             st.material.append(p.text)
             st.notes.append(f"ignored '{p.text}': no structure named there")
             continue
@@ -609,8 +622,12 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
         structures.extend(spec.structures)
         st.notes.extend(spec.notes)
         st.material.extend(n for n in spec.notes if n.startswith("ignored"))
+        free = list(p.tokens)
         for w in unused:
-            _account(w, pos.get(w), st)
+            tok = next((doc[i] for i in free if doc[i].lower_.replace("'", "") == w), None)
+            if tok is not None:
+                free.remove(tok.i)
+            _account(w, tok, st)
     return structures
 
 
@@ -669,8 +686,48 @@ def _continues(p: _Phrase, before: list[_Phrase]) -> bool:
     return True
 
 
-def _account(word: str, pos: str | None, st: _State) -> None:
+def _chatter(text: str) -> bool:
+    """A clause with nothing the Specifier could use ("The visitors arrive at 10")."""
+    known = (
+        set(lx.SHAPE_WORDS) | set(lx.SIZE_WORDS) | set(lx.DIMENSION_WORDS) | set(lx.REGION_WORDS)
+        | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | _BEAMS
+    )  # fmt: skip
+    return not any(w in known for w in re.findall(r"[a-z]+", text.lower()))
+
+
+def _attached(tok: Token) -> bool:
+    """`tok` modifies a structure (or a part) in the parse, not the chatter around it."""
+    seen = 0
+    t = tok
+    while seen < 8:
+        if t.lower_ in lx.SHAPE_WORDS or t.lower_ in _GENERIC or t.lower_ in lx.PART_WORDS:
+            return t.i != tok.i or tok.pos_ != "NOUN"
+        if t.lower_ in ("for",) and t.dep_ == "prep":
+            return False  # "for the demo", "for a teddy bear": a purpose
+        if t.head.i == t.i:
+            return False
+        if t.dep_ in ("advcl", "intj", "parataxis", "discourse", "ccomp", "mark"):
+            return False
+        t = t.head
+        seen += 1
+    return False
+
+
+def _account(word: str, tok: Token | None, st: _State) -> None:
     if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
+        return
+    pos = tok.pos_ if tok is not None else None
+    numeric = word[:1].isdigit()
+    known = (
+        word in words.CORRECTABLE or word in words.NEGATIONS or numeric
+    ) and word not in words.HARMLESS
+    if tok is not None and not known and not _attached(tok):
+        if word not in words.HARMLESS and word not in words.CONSULTED:
+            st.ignored.append(word)
+            st.notes.append(f"ignored '{word}': not about the structure")
+        return
+    if tok is not None and word in words.NEGATIONS and not _attached(tok):
+        st.ignored.append(word)
         return
     if words.is_material(word, pos):
         st.material.append(word)

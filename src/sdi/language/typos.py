@@ -38,7 +38,16 @@ def correct(text: str) -> tuple[str, list[str]]:
     def fix(m: re.Match[str]) -> str:
         raw = m.group(0)
         w = raw.lower()
-        if len(w) < 4 or w in _known() or _vocab_has(w):
+        if len(w) < 3 or w in _known():
+            return raw
+        if len(w) == 3:  # three letters: only a swap of two neighbours ("teh")
+            swaps = {w[:i] + w[i + 1] + w[i] + w[i + 2 :] for i in range(2)}
+            hit = sorted(swaps & words.CORRECTABLE)
+            if len(hit) == 1:
+                notes.append(f"corrected '{raw}' to '{hit[0]}'")
+                return hit[0]
+            return raw
+        if _vocab_has(w):
             return raw
         limit = 1 if len(w) <= 5 else 2
         found = process.extract(
