@@ -214,6 +214,136 @@ _REWRITES += [
     ),
     (re.compile(r"\bside\s+by\s+side\b", re.IGNORECASE), " ", ""),
 ]
+_SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
+_REWRITES += [
+    # "anywhere except the back", "anywhere but on the left"
+    (
+        re.compile(
+            r"\b(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|away\s+from)\s+"
+            r"(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|middle|centre|center)\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    # "no taller than 2 cubes" → 2 cubes high; "no more than 3 steps" → 3 steps
+    (
+        re.compile(
+            r"\b(?:no|not)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
+            r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
+            re.IGNORECASE,
+        ),
+        " {0}{1} high ",
+        "read '{0}' as exactly that many (the most allowed)",
+    ),
+    (
+        re.compile(r"\b(?:no|not)\s+(?:more|longer|wider|bigger)\s+than\s+|\bat\s+most\s+", re.I),
+        " ",
+        "read '{0}' as exactly that many (the most allowed)",
+    ),
+    # "a tower of 4, not 5": the number that is not wanted
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+(\d+)\b(?!\s*(?:cm|mm|m\b|high|tall|long|wide))", re.I
+        ),
+        " ",
+        "'{0}': kept the other number",
+    ),
+    # "no beams, only cubes": cubes are the default part
+    (
+        re.compile(
+            r",?\s*\b(?:no|without)\s+beams?\b,?(?:\s*(?:just|only)\s+cubes)?|"
+            r",?\s*\b(?:just|only)\s+cubes\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': built of cubes only",
+    ),
+    # "a 3x3 grid without the middle cube": a ring
+    (
+        re.compile(
+            r"\b(grid|square|layer|slab|pad|patch|platform)\s+(?:of\s+cubes\s+)?without\s+"
+            r"(?:the\s+|a\s+)?(?:middle|centre|center|inner|central)(?:\s+(?:cube|one|part|piece))?",
+            re.IGNORECASE,
+        ),
+        " hollow {0} ",
+        "read '{0}' as a hollow ring",
+    ),
+    # "an enclosure with no roof and nothing inside": what an enclosure is anyway
+    (
+        re.compile(
+            r"\b(?:with\s+)?(?:no|without\s+a|without)\s+roof\b|\b(?:and\s+)?nothing\s+(?:else\s+)?"
+            r"inside\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
+    # "a castle without the corner towers": a ring
+    (
+        re.compile(
+            r"\bcastle\s+without\s+(?:the\s+|any\s+)?(?:corner\s+)?towers\b(?:,?\s*just\s+the\s+"
+            r"walls?(?:\s+around)?)?",
+            re.IGNORECASE,
+        ),
+        " enclosure ",
+        "read '{0}' as an enclosure (a castle is a ring with corner towers)",
+    ),
+    # "not a 3-D one, just flat" for pyramids
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+(?:a\s+)?3-?d(?:\s+one)?,?(?:\s+just)?(?:\s+flat)?", re.I
+        ),
+        " 2-D ",
+        "read '{0}' as a flat (2-D) one",
+    ),
+    # "not a tower: a flat 2 by 2 patch", "no bridge, just two pillars"
+    (
+        re.compile(
+            r"(?:^|(?<=[.;,:]))\s*(?:no|not\s+an?|not|without\s+an?)\s+(?:" + _SHAPE_ALT + r")\b"
+            r"\s*[,:;.-]+\s*(?:just|only|but|instead)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    # "as tall as the cell allows" → the tallest
+    (
+        re.compile(
+            r"\bas\s+(tall|high)\s+as\s+(?:the\s+(?:cell|workspace|space|robot|room)\s+"
+            r"(?:allows|permits|can\s+\w+)|possible|it\s+can\s+(?:go|get|be)|you\s+can(?:\s+\w+)?|"
+            r"allowed)",
+            re.IGNORECASE,
+        ),
+        " tallest ",
+        "read '{0}' as the tallest that fits",
+    ),
+    # "3 stacks: one of 1, one of 2 and one of 3 cubes" → of 1, 2 and 3 cubes
+    (
+        re.compile(
+            r"[:,]?\s*\bone\s+of\s+(\w+)\s*(?:,|and)\s*one\s+of\s+(\w+)"
+            r"(?:\s*(?:,|and)\s*(?:one\s+of\s+)?(\w+))?",
+            re.IGNORECASE,
+        ),
+        " of {0}, {1} and {2} ",
+        "",
+    ),
+    # "stack a row of four on top": the verb names no tower when a structure follows
+    (
+        re.compile(
+            r"\b(?:stack|pile)\s+(?=(?:a|an|the|another|one|\d+|two|three|four)\s+(?:[\w-]+\s+){0,3}"
+            r"(?:row|rows|grid|wall|layer|slab|pyramid|staircase|bridge|arch|ring|enclosure|pad|"
+            r"square|platform)\b)",
+            re.IGNORECASE,
+        ),
+        "put ",
+        "",
+    ),
+    (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),
+    (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
+    (re.compile(r"\bnothing\s+(?:fancy|else|special|more)\b", re.IGNORECASE), " ", ""),
+    (re.compile(r"\bStep\s+\d+\s*[:.)-]", re.IGNORECASE), " then ", ""),
+]
 _OPEN = re.compile(
     r"\b(?:(tall|high|big|large)\s+)?(structure|thing|something|shape|construction|object|"
     r"build|sculpture|monument)\s+(?:that\s+is\s+\w+\s+)?with\s+a\s+(wide|broad|big|large|"
@@ -337,7 +467,7 @@ def _rewrite(text: str, st: _State) -> str:
                 st.no_stack = True
             if note:
                 st.notes.append(note.format(said, opposite=opposite))
-            return replacement.format(*groups, opposite=opposite) if groups else replacement
+            return replacement.format(*groups, "", "", opposite=opposite)
 
         text = pattern.sub(sub, text)
     text = _LEVEL_ORDINAL.sub(" on top ", text)

@@ -112,6 +112,25 @@ class Tok:
     used: bool = False
 
 
+class _Slots(dict[str, Any]):
+    """A structure's slots; a second, different value for a filled slot is a conflict."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.conflicts: list[tuple[str, Any, Any]] = []
+
+    def setdefault(self, key: str, default: Any = None) -> Any:
+        if (
+            key in self
+            and not key.startswith("_")
+            and isinstance(default, int | float)
+            and isinstance(self[key], int | float)
+            and self[key] != default
+        ):
+            self.conflicts.append((key, self[key], default))
+        return super().setdefault(key, default)
+
+
 @dataclass
 class Hit:
     """A structure mentioned in the command."""
@@ -119,7 +138,7 @@ class Hit:
     index: int
     shape: str
     plural: bool
-    params: dict[str, Any] = field(default_factory=dict)
+    params: dict[str, Any] = field(default_factory=_Slots)
     verb: bool = False
     multiplicity: int = 1
     start: int = 0
@@ -459,7 +478,11 @@ class _Parser:
             "sheet",
             "field",
         ):
-            return prev in ("a", "an", "one", "single", "flat") or prev in lx.SIZE_WORDS
+            return (
+                prev in ("a", "an", "one", "single", "flat")
+                or prev in lx.SIZE_WORDS
+                or (self.is_num(k - 1) and self.toks[k - 1].used)
+            )
         if w in ("group", "arrangement", "formation"):
             return prev in lx.SIZE_WORDS or prev in ("compact", "dense", "tight", "close")
         # the rest ("well", "keep", "mass", …) need an article or a size word in front
@@ -649,7 +672,7 @@ class _Parser:
                         p.setdefault("height", v)
                     take(k)
                     take(j)
-                    if self.word(j + 1) in ("high", "tall"):
+                    if self.word(j + 1) in ("high", "tall", "deep", "thick"):
                         take(j + 1)
                     continue
                 if wj in lx.STEP_WORDS and j == k + 1:
@@ -830,6 +853,9 @@ class _Parser:
                         or all(
                             self.word(m) in lx.SIZE_WORDS
                             or self.word(m) in ("of", "separate", "individual")
+                            or self.is_num(m)
+                            or self.word(m) in lx.DIMENSION_WORDS
+                            or self.word(m) in lx.PART_WORDS
                             for m in range(k + 1, h.index)
                         )
                     )
@@ -1085,6 +1111,11 @@ class _Parser:
             cp.setdefault(key, value)
 
     def build(self, h: Hit) -> list[StructureSpec]:
+        for key, kept, other in getattr(h.params, "conflicts", []):
+            self.notes.append(
+                f"ignored {key} {other:g}: the command also says {key} {kept:g} for the "
+                f"{h.shape}; used {kept:g}"
+            )
         p = dict(h.params)
         shape = h.shape
         sizes = p.pop("_sizes", [])
@@ -1114,6 +1145,13 @@ class _Parser:
         )
         if cube_word and not sized:
             shape, p["height"] = "tower", 1  # "a cube", "a single cube": one part
+        if count is not None and shape in ("tower", "row"):
+            key = PRIMARY[shape]
+            if key in p and p[key] != count:
+                self.notes.append(
+                    f"ignored {count:g} parts: the command also says {key} {p[key]:g} for the "
+                    f"{shape}; used {p[key]:g}"
+                )
         if count is not None:
             key = PRIMARY[shape]
             if shape == "staircase" and "steps" not in p and count > 6:
