@@ -36,6 +36,7 @@ from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
 from sdi.spec.grammar import parse_phrase
+from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import Relation, RelationKind, Spec, StructureSpec
 
 if TYPE_CHECKING:
@@ -363,6 +364,7 @@ class _Phrase:
     first: int = 0  # index of its first structure in the reading
     count: int = 0  # how many structures it produced
     ref: int | None = None  # a pure reference: the phrase it refers to
+    side: str | None = None  # "it on the right": the side the reference names
     unused: list[str] = field(default_factory=list)
 
 
@@ -407,6 +409,18 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     doc = parse(text)
     phrases, rels = _structure(doc)
     structures = _fill(phrases, rels, st, doc)
+    if not structures:
+        # nothing recognised: correct harder (words the English vocabulary knows too, "wal"),
+        # then read a structure-less description ("something small") as a tower
+        retry, fixed = typos.correct(text, aggressive=True)
+        if not fixed:
+            retry, fixed = _open(text)
+        if fixed:
+            st = _State(command, cell, notes=st.notes + fixed)
+            text = retry
+            doc = parse(text)
+            phrases, rels = _structure(doc)
+            structures = _fill(phrases, rels, st, doc)
     if not structures:
         _no_structure(st, doc, command)
     relations, structures = _relate(phrases, rels, structures, st)
@@ -456,7 +470,102 @@ def _normalise(command: str) -> str:
     return _SPACES.sub(" ", text).strip()
 
 
+_ANOTHER = re.compile(r"\b(another|one\s+more|a\s+second)\s+one\b", re.IGNORECASE)
+_SIZES = ("count", "length", "width", "height", "steps", "span", "spans", "dims",
+          "length_m", "width_m", "height_m", "gap_m", "part")  # fmt: skip
+_MODIFY = [
+    # (pattern, how the number changes the height of the structure referred to)
+    (re.compile(r"\b(?:add|put|stack|place|pile)\s+(\w+)\s+(?:more|extra|additional)\s+"
+                r"(?:cubes?|levels?|layers?|parts?|blocks?|steps?)\b", re.I), "+"),
+    (re.compile(r"\bmake\s+(?:it|them)\s+(\w+)\s+(?:more\s+)?(?:cubes?\s+|levels?\s+|layers?\s+)?"
+                r"(?:taller|higher)\b", re.I), "+"),
+    (re.compile(r"\braise\s+(?:it|them)\s+by\s+(another|one\s+more|\w+)\s+(?:more\s+)?"
+                r"(?:layers?|levels?|cubes?)\b", re.I), "+"),
+    (re.compile(r"\b(?:keep\s+adding|add)\s+(?:steps|levels|layers|cubes)\s+until\s+(?:it|there)\s+"
+                r"(?:has|is|are)\s+(\w+)", re.I), "="),
+    (re.compile(r"\btake\s+(?:the\s+)?top\s+(\w+)\s+(?:cubes?\s+|levels?\s+)?off\b", re.I), "-"),
+]  # fmt: skip
+_LEGS = re.compile(r"\blegs?\b", re.IGNORECASE)
+_TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
+
+
+def _another(text: str) -> str:
+    """ "a tower on the left and another one on the right": another tower."""
+
+    def sub(m: re.Match[str]) -> str:
+        before = [
+            w for w in re.findall(r"[a-z]+", text[: m.start()].lower()) if w in lx.SHAPE_WORDS
+        ]
+        if not before:
+            return m.group(0)
+        noun = before[-1]
+        noun = noun[:-1] if noun.endswith("s") and noun[:-1] in lx.SHAPE_WORDS else noun
+        return f"another {noun}"
+
+    return _ANOTHER.sub(sub, text)
+
+
+def _copies(spec: Spec, text: str, st: _State) -> Spec:
+    """ "another tower", "a second row": the sizes of the one named before."""
+    if not set(re.findall(r"[a-z]+", text.lower())) & _COPY:
+        return spec
+    out = list(spec.structures)
+    for k, s in enumerate(out):
+        if k == 0 or s.model_dump(include=set(_SIZES), exclude_defaults=True):
+            continue
+        first = next((o for o in out[:k] if o.shape == s.shape), None)
+        if first is not None:
+            out[k] = s.model_copy(update=first.model_dump(include=set(_SIZES)))
+            st.notes.append(f"another {s.shape}: the same size as the first")
+    return spec.model_copy(update={"structures": tuple(out)})
+
+
+def _modify(p: _Phrase, before: list[_Phrase], st: _State) -> _Phrase | None:
+    """ "then add two more cubes to it", "make it two taller": change the last structure."""
+    built = [q for q in before if q.spec is not None and q.count]
+    if not built:
+        return None
+    for pattern, op in _MODIFY:
+        m = pattern.search(p.text)
+        if not m:
+            continue
+        word = (m.group(1) or "").lower()
+        word = "1" if word in ("another", "one more", "a", "an") else word
+        value = words_to_numbers([word])[0]
+        if not value.isdigit():
+            return None
+        n = int(value)
+        target = built[-1]
+        assert target.spec is not None
+        last = target.spec.structures[-1]
+        key = "steps" if last.shape == "staircase" else "height"
+        now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
+        new = {"+": now + n, "-": now - n, "=": n}[op]
+        if new < 1:
+            return None
+        shape = "block" if last.shape == "grid" and key == "height" and new > 1 else last.shape
+        changed = last.model_copy(update={key: new, "shape": shape})
+        target.spec = target.spec.model_copy(
+            update={"structures": (*target.spec.structures[:-1], changed)}
+        )
+        st.notes.append(f"'{m.group(0)}': the {last.shape} now has {key} {new}")
+        p.count = 0
+        return target
+    return None
+
+
 def _rewrite(text: str, st: _State) -> str:
+    text = _another(text)
+    if (
+        _LEGS.search(text)
+        and _TOP.search(text)
+        and not any(
+            lx.SHAPE_WORDS.get(w) in ("canopy", "bridge", "arch")
+            for w in re.findall(r"[a-z]+", text.lower())
+        )
+    ):
+        st.notes.append("legs with a top: read as a table")
+        text = "a table with " + text
     for pattern, replacement, note in _REWRITES:
 
         def sub(m: re.Match[str], replacement: str = replacement, note: str = note) -> str:
@@ -682,6 +791,12 @@ def _clause_phrases(
             continue
         cur.append(i)
     segments.append(cur)
+    if len(markers) == 1 and not [i for i in segments[0] if doc[i].lower_ not in words.HARMLESS]:
+        # "On top of two 2-cube towers, a beam.": the subject follows the object
+        commas = [n for n, i in enumerate(segments[1]) if doc[i].lower_ == ","]
+        if commas:
+            cut = commas[0]
+            segments = [segments[1][cut + 1 :], segments[1][:cut]]
     base = len(phrases)
     for seg in segments:
         phrases.append(_Phrase(tokens=seg, clause=ci))
@@ -734,8 +849,13 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             continue
         if k in joiners and all(w in _BEAMS or w in lx.PART_WORDS or w == "top" for w in content):
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
+        changed = _modify(p, phrases[:k], st)
+        if changed is not None and changed.spec is not None:
+            structures[changed.first + changed.count - 1] = changed.spec.structures[-1]
+            continue
         try:
             spec, unused = parse_phrase(p.text, st.cell)
+            spec = _copies(spec, p.text, st)
         except SpecError:
             if _continues(p, phrases[:k]):
                 continue
@@ -764,12 +884,18 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
 def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
     """A phrase that only points at an earlier one ("it", "them", "the base")."""
     words_ = [w for w in p.text.lower().replace(",", " ").split() if w not in ("the", "of")]
-    if not words_ or len(words_) > 3:
+    if not words_ or len(words_) > 6:
         return None
     built = [j for j, q in enumerate(before) if q.spec is not None or q.ref is not None]
     if not built:
         return None
-    if words_[0] in _PRONOUNS and len(words_) <= 2:
+    sides = [w for w in words_[1:] if w in ("left", "right", "front", "back")]
+    trailing = all(
+        w in lx.REGION_WORDS or w in ("on", "to", "at", "in", "its", "side", "hand", "of")
+        for w in words_[1:]
+    )
+    if words_[0] in _PRONOUNS and (len(words_) <= 2 or trailing) and len(words_) <= 6:
+        p.side = sides[0] if sides else None
         if words_[0] in ("them", "these", "those"):
             many = [j for j in built if before[j].count > 1]
             return _target(before, many[-1] if many else built[-1])
@@ -896,30 +1022,45 @@ def _relate(
             )
             _join(phrases, pillars, r.object, structures, replace, drop, st)
             continue
-        if phrases[subj].ref is not None or not phrases[subj].count:
-            if phrases[subj].tokens and not phrases[subj].count and r.kind == "on" and obj:
+        s_ref = phrases[subj].ref is not None
+        subj = _target(phrases, subj)
+        if not phrases[subj].count or phrases[subj].spec is None:
+            if phrases[subj].tokens and r.kind == "on" and obj is not None:
                 # "a beam on top of the two towers": the beam joins them
                 _join(phrases, obj, subj, structures, replace, drop, st)
                 continue
             st.material.append(f"relation {r.kind}")
             st.notes.append(f"ignored a relation '{r.kind}': its subject is not a structure")
             continue
-        if obj is None:
+        s_first, s_last = phrases[subj].first, phrases[subj].first + phrases[subj].count - 1
+        o_ref = r.object is not None and phrases[r.object].ref is not None
+        if r.object is None:
+            # "X with Y on top", "on top" alone: the structure before the subject
+            s_idx = s_last
+            o_idx = (
+                s_last - 1
+                if phrases[subj].count > 1
+                else (phrases[obj].first + phrases[obj].count - 1 if obj is not None else -1)
+            )
+        elif obj is None:
+            o_idx = -1
+            s_idx = s_last
+        elif obj == subj:
+            # "a staircase with a tower next to it", "a ring with a tower inside it": the
+            # pronoun's side takes the first structure of the phrase, the other the last
+            s_idx = s_first if s_ref else s_last
+            o_idx = s_first if o_ref or not s_ref else s_last
+            if phrases[subj].count == 1:
+                o_idx = s_first - 1
+        else:
+            s_idx = s_last
+            o_idx = phrases[obj].first + phrases[obj].count - 1
+        if o_idx < 0 or o_idx == s_idx:
             st.material.append(f"relation {r.kind}")
             st.notes.append(f"ignored '{r.kind}': no structure to relate '{phrases[subj].text}' to")
             continue
-        s_idx = phrases[subj].first + phrases[subj].count - 1
-        o_idx = phrases[obj].first + phrases[obj].count - 1
-        if o_idx == s_idx or obj == subj:
-            # "a staircase with a tower next to it", "add a second row on top of it": the
-            # pronoun points at the structure before the subject
-            o_idx = (
-                phrases[subj].first - 1 if obj == subj and phrases[subj].count == 1 else (s_idx - 1)
-            )
-            if o_idx < 0:
-                st.material.append(f"relation {r.kind}")
-                st.notes.append(f"ignored '{r.kind}': nothing before '{phrases[subj].text}'")
-                continue
+        if obj is None:
+            obj = subj
         if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1:
             _join(phrases, obj, subj, structures, replace, drop, st)
             continue
@@ -950,7 +1091,8 @@ def _relate(
                     f"{kind.replace('_', ' ')}"
                 )
             replace[s_idx] = subject.model_copy(update=dict.fromkeys(placed))
-        relations.append(Relation(kind=kind, subject=s_idx, object=o_idx, side=r.side))
+        side = r.side or (phrases[r.object].side if r.object is not None else None)
+        relations.append(Relation(kind=kind, subject=s_idx, object=o_idx, side=side))
     for k, s in replace.items():
         structures[k] = s
     if drop:
@@ -1022,6 +1164,14 @@ def _join(
     )
     if joiner is not None and phrases[joiner].spec is not None:
         j = phrases[joiner]
+        own = [x.shape for x in j.spec.structures] if j.spec else []
+        if any(shape not in ("bridge", "arch") for shape in own):
+            st.material.append("relation between")
+            st.notes.append(
+                f"ignored 'between': only a beam or bridge can join towers, not a "
+                f"{own[0]}; built them side by side"
+            )
+            return
         extra = j.spec.structures[0] if j.spec else None
         if extra is not None and extra.shape == "bridge" and extra.span is not None:
             bridge = bridge.model_copy(update={"span": extra.span})
@@ -1039,6 +1189,26 @@ def _unstack(s: StructureSpec, st: _State) -> StructureSpec:
             shape="row", length=s.height or 3, at_x=s.at_x, at_y=s.at_y, region=s.region
         )
     return s
+
+
+_GENERIC_NOUNS = re.compile(
+    r"\b(something|structure|thing|shape|object|construction|sculpture|build|piece|model)\b",
+    re.IGNORECASE,
+)
+
+
+def _open(text: str) -> tuple[str, list[str]]:
+    """An open description with no family named: the family its size words suggest."""
+    m = _GENERIC_NOUNS.search(text)
+    if not m:
+        return text, []
+    said = set(re.findall(r"[a-z]+", text.lower()))
+    if said & {"wide", "flat", "low", "broad", "long", "spread"}:
+        family = "platform" if not said & {"long"} else "row"
+    else:
+        family = "tower"
+    note = f"no structure named: read '{m.group(0)}' as a {family}"
+    return text[: m.start()] + family + text[m.end() :], [note]
 
 
 # -- errors ---------------------------------------------------------------------------------

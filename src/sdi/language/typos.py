@@ -30,8 +30,9 @@ def _vocab_has(word: str) -> bool:
     return word in pipeline().vocab.strings
 
 
-def correct(text: str) -> tuple[str, list[str]]:
-    """`text` with typos replaced, and a note per correction."""
+def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
+    """`text` with typos replaced, and a note per correction. `aggressive` also corrects
+    words the English vocabulary knows ("wal"), for a command nothing else could read."""
     notes: list[str] = []
     choices = sorted(words.CORRECTABLE)
 
@@ -47,7 +48,7 @@ def correct(text: str) -> tuple[str, list[str]]:
                 notes.append(f"corrected '{raw}' to '{hit[0]}'")
                 return hit[0]
             return raw
-        if _vocab_has(w):
+        if _vocab_has(w) and not aggressive:
             return raw
         limit = 1 if len(w) <= 5 else 2
         found = process.extract(
