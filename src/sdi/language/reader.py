@@ -94,6 +94,10 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("in", "front", "of"), "next", "front"),
     (("behind",), "next", "back"),
     (("at", "the", "back", "of"), "next", "back"),
+    (("joined", "at", "the", "top", "by"), "joined", None),
+    (("connected", "at", "the", "top", "by"), "joined", None),
+    (("joined", "on", "top", "by"), "joined", None),
+    (("joined", "together", "by"), "joined", None),
     (("joined", "by"), "joined", None),
     (("connected", "by"), "joined", None),
     (("linked", "by"), "joined", None),
@@ -636,8 +640,21 @@ def _starts_clause(doc: Doc, tok: Token) -> bool:
     return True
 
 
+_ONE = {"a", "an", "one", "single", "lone"}
+_SPACES_WORDS = {"space", "hole", "gap", "room", "opening", "void", "cavity", "interior", "area"}
+
+
+def _names_structure(doc: Doc, tokens: list[int]) -> bool:
+    """The tokens name a structure (not a space: "a 2 by 2 space inside")."""
+    if any(doc[i].lower_ in _SPACES_WORDS | _EMPTY for i in tokens):
+        return False
+    return any(_is_structure_noun(doc, i) for i in tokens)
+
+
 def _is_structure_noun(doc: Doc, k: int) -> bool:
     w = doc[k].lower_
+    if w in ("cube", "block", "brick", "box") and doc[k - 1].lower_ in _ONE and k > 0:
+        return True  # "around a single cube": one part is a structure too
     if w in lx.PART_WORDS and w not in ("block", "blocks"):
         return False
     return w in lx.SHAPE_WORDS or w in _GENERIC or w in _BEAMS
@@ -765,7 +782,9 @@ def _clause_phrases(
             doc[k - 1].like_num
             or (lower[k - 1] in lx.PART_WORDS and k - 2 >= 0 and doc[k - 2].like_num)
         )
-        implicit = kind == "on" and words_[-1] == "top" and (head is None or not is_structure)
+        implicit = (
+            kind == "on" and words_[-1] == "top" and (head is None or not is_structure)
+        ) or (kind == "inside" and head is None)
         if numeric_before and kind == "on" and words_[0] in ("above", "over"):
             k += n
             continue
@@ -805,6 +824,22 @@ def _clause_phrases(
         before, after = base + j, base + j + 1
         if kind.endswith("_verb"):
             continue
+        if kind in ("on", "inside") and not _names_structure(doc, phrases[after].tokens):
+            # "a block with a single cube on top", "an enclosure with a pyramid inside":
+            # the structure after "with" is the subject, the one before it the object
+            toks = phrases[before].tokens
+            withs = [n for n, i in enumerate(toks) if doc[i].lower_ == "with"]
+            if withs and _names_structure(doc, toks[withs[-1] + 1 :]):
+                cut = withs[-1]
+                phrases[before].tokens = toks[:cut]
+                phrases[after].tokens = toks[cut + 1 :] + phrases[after].tokens
+                if kind == "on":
+                    rels.append(_Rel("on", after, before))
+                else:
+                    rels.append(_Rel("around", before, after))
+                continue
+            if kind == "inside":
+                continue  # "with a 2 by 2 space inside": the ring's own inside
         if kind == "v_around":
             rels.append(_Rel("around", after, before))
         elif kind == "v_join":
@@ -834,7 +869,9 @@ def _clause_phrases(
 # -- 5. slot filling ------------------------------------------------------------------------
 def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> list[StructureSpec]:
     structures: list[StructureSpec] = []
-    joiners = {r.object for r in rels if r.kind == "joined"}
+    joiners = {r.object for r in rels if r.kind == "joined"} | {
+        r.subject for r in rels if r.kind == "on" and _beam_only(phrases[r.subject].text)
+    }
     for k, p in enumerate(phrases):
         content = [
             w
@@ -879,6 +916,15 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
                 free.remove(tok.i)
             _account(w, tok, st)
     return structures
+
+
+def _beam_only(text: str) -> bool:
+    said = [w for w in re.findall(r"[a-z]+", text.lower()) if w not in words.HARMLESS]
+    return (
+        bool(said)
+        and all(w in _BEAMS or w in lx.PART_WORDS for w in said)
+        and any(w in _BEAMS for w in said)
+    )
 
 
 def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
@@ -964,6 +1010,10 @@ def _attached(tok: Token) -> bool:
             return False
         if t.dep_ in ("advcl", "intj", "parataxis", "discourse", "ccomp", "mark"):
             return False
+        if t.dep_ == "relcl" and any(
+            c.lower_ in ("could", "can", "would", "might") for c in t.children
+        ):
+            return False  # "a gateway a cube could pass under"
         t = t.head
         seen += 1
     return False
@@ -1067,12 +1117,12 @@ def _relate(
         subject = replace.get(s_idx, structures[s_idx])
         obj_spec = replace.get(o_idx, structures[o_idx])
         subject = _copy_if_asked(phrases[subj], subject, obj_spec, st)
-        if r.kind == "around" and subject.shape not in ("enclosure", "castle"):
-            st.notes.append(f"a {subject.shape} around another structure: built as a ring")
-            subject = StructureSpec(shape="enclosure", height=subject.height, part=subject.part)
         if r.kind == "around" and obj_spec.shape in ("enclosure", "castle"):
             subject, obj_spec = obj_spec, subject
             s_idx, o_idx = o_idx, s_idx
+        if r.kind == "around" and subject.shape not in ("enclosure", "castle"):
+            st.notes.append(f"a {subject.shape} around another structure: built as a ring")
+            subject = StructureSpec(shape="enclosure", height=subject.height, part=subject.part)
         replace[s_idx] = subject
         if any(rel.subject == s_idx for rel in relations):
             st.material.append(f"relation {r.kind}")

@@ -47,7 +47,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             if len(hit) == 1:
                 notes.append(f"corrected '{raw}' to '{hit[0]}'")
                 return hit[0]
-            return raw
+            if not aggressive:
+                return raw
         if _vocab_has(w) and not aggressive:
             return raw
         limit = 1 if len(w) <= 5 else 2

@@ -530,6 +530,12 @@ class _Parser:
             self.hits.append(Hit(index=k, shape=shape, plural=plural, verb=verb))
         # "hollow square/rectangle" → enclosure; "solid/filled" keep grid
         for h in self.hits:
+            if (
+                h.shape == "tower"
+                and self.word(h.index) in ("pile", "piles", "heap")
+                and (self.word(h.index - 1) in ("compact", "dense", "tight", "neat", "close"))
+            ):
+                h.shape = "pack"  # "a compact pile of 8 cubes"
             if h.shape == "grid" and self.word(h.index - 1) in ("hollow", "empty", "open"):
                 h.shape = "enclosure"
             if h.shape == "block" and self.word(h.index - 1) in ("hollow", "empty"):
@@ -1216,6 +1222,8 @@ class _Parser:
                         + 1e-9
                     )
                 size = "L"
+            if dim == "height" and size in ("S",) and shape in ("grid", "row", "pack"):
+                continue  # "a low, wide platform": a grid is one layer anyway
             index = "SML".index(size)
             table = SIZE_TABLE.get(shape, {})
             related = {
