@@ -824,7 +824,9 @@ def _clause_phrases(
         before, after = base + j, base + j + 1
         if kind.endswith("_verb"):
             continue
-        if kind in ("on", "inside") and not _names_structure(doc, phrases[after].tokens):
+        after_toks = phrases[after].tokens
+        named = bool(after_toks) and _object_head(doc, after_toks[0], after_toks[-1] + 1)[1]
+        if kind in ("on", "inside") and not named:
             # "a block with a single cube on top", "an enclosure with a pyramid inside":
             # the structure after "with" is the subject, the one before it the object
             toks = phrases[before].tokens
