@@ -788,7 +788,8 @@ def _clause_phrases(
         if numeric_before and kind == "on" and words_[0] in ("above", "over"):
             k += n
             continue
-        if is_structure or implicit:
+        overlaps = any(a < k + n and k < b for a, b, _, _ in markers)
+        if (is_structure or implicit) and not overlaps:
             markers.append((k, k + n, kind, side))
         k += n
     if not markers:

@@ -15,9 +15,11 @@ from rapidfuzz import process
 from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.language import words
+from sdi.spec import lexicon as lx
 from sdi.language.syntax import pipeline
 
 _WORD = re.compile(r"[A-Za-z]+")
+_SHAPES = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES)
 _SUFFIXES = {"y", "s", "es", "ed", "d", "ing", "er", "est", "ly", "ish", "ie", "ies"}
 
 
@@ -49,11 +51,14 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
                 return hit[0]
             if not aggressive:
                 return raw
+            choices_here = [c for c in choices if c in _SHAPES and len(c) > len(w)]
+        else:
+            choices_here = choices
         if _vocab_has(w) and not aggressive:
             return raw
         limit = 1 if len(w) <= 5 else 2
         found = process.extract(
-            w, choices, scorer=DamerauLevenshtein.distance, score_cutoff=limit, limit=3
+            w, choices_here, scorer=DamerauLevenshtein.distance, score_cutoff=limit, limit=3
         )
         if not found:
             return raw

@@ -804,6 +804,8 @@ class _Parser:
                     and all(
                         (self.is_num(m) and self.word(m + 1) in lx.PART_WORDS and m + 2 == h.index)
                         or (self.word(m) in lx.PART_WORDS and self.is_num(m - 1) and m > k + 1)
+                        or (self.is_num(m) and self.word(m + 1) in lx.DIMENSION_WORDS)
+                        or (self.word(m) in lx.DIMENSION_WORDS and self.is_num(m - 1) and m > k + 1)
                         or self.word(m) in lx.SIZE_WORDS
                         or self.word(m)
                         in (

@@ -1,0 +1,263 @@
+"""The language front end: relations built as the words say, every word accounted for.
+
+The commands here are this file's own (not in the evaluation sets); each test checks the
+layout's geometry or the reading's account, not only the family names.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from sdi.errors import SpecError
+from sdi.language import FAMILIES, check_family, read
+from sdi.pipeline import plan
+from sdi.spec.structure_spec import Relation, Spec, StructureSpec
+
+
+def boxes(result):
+    assert result.layout is not None, result.error
+    lo = np.array([[p.position[d] - p.size[d] / 2 for d in range(3)] for p in result.layout])
+    hi = np.array([[p.position[d] + p.size[d] / 2 for d in range(3)] for p in result.layout])
+    return lo, hi
+
+
+# -- relations ----------------------------------------------------------------------------------
+def test_a_column_on_top_of_a_base_stands_on_its_top_face():
+    r = plan("put a column of 3 cubes on top of a 4 by 4 base layer")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 16 + 3
+    upper = lo[:, 2] > 0.01
+    assert upper.sum() == 3
+    # the column stands on the base's top face, inside its footprint
+    assert np.isclose(lo[upper, 2].min(), hi[~upper, 2].max())
+    for d in (0, 1):
+        assert lo[upper, d].min() >= lo[~upper, d].min() - 1e-9
+        assert hi[upper, d].max() <= hi[~upper, d].max() + 1e-9
+
+
+def test_a_ring_around_a_tower_leaves_the_tower_inside():
+    r = plan("a pen of cubes surrounding a 2-cube stack")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    tall = hi[:, 2] > 0.06
+    assert tall.sum() == 1  # the stack's upper cube; the ring is one high
+    tower_xy = ((lo[tall, 0] + hi[tall, 0]) / 2)[0], ((lo[tall, 1] + hi[tall, 1]) / 2)[0]
+    ring = lo[:, 2] < 0.01
+    # ring parts on every side of the tower
+    assert (hi[ring, 0] < tower_xy[0]).any() and (lo[ring, 0] > tower_xy[0]).any()
+    assert (hi[ring, 1] < tower_xy[1]).any() and (lo[ring, 1] > tower_xy[1]).any()
+
+
+def test_towers_joined_by_a_beam_carry_it():
+    r = plan("connect two 3-high columns with a beam across the top")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    beams = [p for p in r.layout if max(p.size) > 0.1]
+    assert len(beams) == 1
+    assert np.isclose(beams[0].position[2] - beams[0].size[2] / 2, 0.15)  # on 3 levels
+    assert len(r.layout) == 3 + 3 + 1
+
+
+def test_a_structure_to_the_left_of_another_is_at_larger_y():
+    r = plan("a 3-cube tower to the left of a wall 4 long and 1 high")
+    assert r.status == "success", r.notes
+    tower = [p for p in r.layout if p.position[2] > 0.06]
+    assert len(tower) == 2
+    column = (tower[0].position[0], tower[0].position[1])
+    wall = [p for p in r.layout if (p.position[0], p.position[1]) != column]
+    assert len(wall) == 4
+    assert all(column[1] > p.position[1] for p in wall)
+
+
+def test_then_add_on_top_of_it_stacks_a_copy():
+    r = plan("lay 5 cubes in a row, and then put a second row on top of it")
+    assert r.status == "success", r.notes
+    lo, _ = boxes(r)
+    assert len(lo) == 10
+    assert sorted(np.round(lo[:, 2], 3).tolist()).count(0.05) == 5
+
+
+def test_a_pronoun_inside_a_phrase_points_at_the_other_structure():
+    reading = read("a 3-step staircase with a 2-cube tower beside it")
+    [rel] = reading.spec.relations
+    shapes = [s.shape for s in reading.spec.structures]
+    assert shapes[rel.subject] == "tower" and shapes[rel.object] == "staircase"
+
+
+def test_a_bridge_on_its_own_pillars_is_not_a_relation():
+    reading = read("a bridge with two spans on pillars 2 cubes high")
+    assert reading.spec.relations == ()
+    [bridge] = reading.spec.structures
+    assert (bridge.shape, bridge.spans, bridge.height) == ("bridge", 2, 2)
+
+
+# -- honest status ------------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "command, dropped",
+    [
+        ("a chunky tower of 3", "chunky"),
+        ("a wobbly wall 4 long", "wobbly"),
+        ("a 3-cube tower 6 cubes tall", "3 parts"),
+    ],
+)
+def test_a_reading_that_drops_a_material_word_is_partial(command, dropped):
+    r = plan(command)
+    assert r.status == "partial"
+    assert any(dropped in n for n in r.notes), r.notes
+    assert r.error and "not used" in r.error
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "hi there, could you please build a tower of 3 for the demo? thanks!",
+        "ok so, just a row of 4 cubes. The visitors come at 10.",
+        "Kindly construct a 2 by 2 grid, nothing fancy",
+    ],
+)
+def test_chatter_and_politeness_do_not_make_a_plan_partial(command):
+    assert plan(command).status == "success"
+
+
+def test_material_means_numbers_negations_and_structure_words():
+    from sdi.language.words import is_material
+
+    assert is_material("5", "NUM")
+    assert is_material("not", "PART")
+    assert is_material("left", "ADJ")
+    assert is_material("wobbly", "ADJ")
+    assert not is_material("please", "INTJ")
+    assert not is_material("the", "DET")
+    assert not is_material("build", "VERB")
+
+
+def test_typos_are_corrected_and_reported():
+    reading = read("a smal pyramd on the rigth")
+    assert [s.shape for s in reading.spec.structures] == ["pyramid"]
+    assert reading.spec.structures[0].region == "right"
+    assert sum("corrected" in n for n in reading.notes) == 3
+
+
+def test_a_derived_word_is_not_a_typo():
+    reading = read("a stubbyish tower of 2")
+    assert not any("corrected" in n for n in reading.notes)
+    assert "stubbyish" in reading.material
+
+
+@pytest.mark.parametrize(
+    "command, check",
+    [
+        ("five cubes next to each other, do not stack them", lambda s: s.shape == "row"),
+        ("a tower which is not on the right", lambda s: s.region != "right"),
+        ("a tower, but not too high", lambda s: s.height == 3),
+        ("a wall 6 long, no higher than 2 cubes", lambda s: s.height == 2),
+    ],
+)
+def test_negations_with_one_reading_are_applied_and_stated(command, check):
+    reading = read(command)
+    assert check(reading.spec.structures[0]), reading.spec
+    assert reading.complete and reading.notes
+
+
+def test_every_error_says_what_was_understood():
+    for command in ("xyzzy plugh", "construye una torre", "3 4 5"):
+        r = plan(command).to_json_dict()
+        assert r["status"] == "error" and "understood" in r
+
+
+def test_the_command_length_limit_is_an_error_not_a_crash():
+    r = plan("a tower " * 400)
+    assert r.status == "error" and "limit" in (r.error or "")
+
+
+# -- the family registry ------------------------------------------------------------------------
+def test_every_family_has_an_entry_and_a_value_it_cannot_use_is_reported():
+    from sdi.design.shapes import FAMILIES as GENERATORS
+
+    assert set(FAMILIES) == set(GENERATORS)
+    notes: list[str] = []
+    material: list[str] = []
+    out = check_family(StructureSpec(shape="tower", height=3, width=4), notes, material)
+    assert out.width is None and material == ["width=4"]
+    assert notes and "ignored width=4" in notes[0]
+
+
+def test_a_grid_given_a_height_becomes_a_block():
+    notes: list[str] = []
+    out = check_family(StructureSpec(shape="grid", length=2, width=3, height=2), notes, [])
+    assert (out.shape, out.length, out.width, out.height) == ("block", 2, 3, 2)
+
+
+def test_a_block_of_a_count_with_two_sides_gets_its_height():
+    notes: list[str] = []
+    spec = StructureSpec(shape="block", count=18, length=3, width=3)
+    assert check_family(spec, notes, []).height == 2
+
+
+# -- relations in the spec ----------------------------------------------------------------------
+def test_relations_must_form_a_forest():
+    t = StructureSpec(shape="tower")
+    with pytest.raises(ValueError, match="cycle"):
+        Spec(
+            structures=(t, t),
+            relations=(
+                Relation(kind="on_top_of", subject=0, object=1),
+                Relation(kind="next_to", subject=1, object=0),
+            ),
+        )
+    with pytest.raises(ValueError, match="two different"):
+        Spec(structures=(t,), relations=(Relation(kind="on_top_of", subject=0, object=0),))
+
+
+# -- compositions rendered to English parse back to the same tree --------------------------------
+_RENDER = {
+    "tower": (lambda n: f"a tower of {n} cubes", "height"),
+    "row": (lambda n: f"a row of {n} cubes", "length"),
+    "staircase": (lambda n: f"a staircase with {n} steps", "steps"),
+    "wall": (lambda n: f"a wall {n} cubes long", "length"),
+    "pyramid": (lambda n: f"a pyramid with a base of {n} cubes", "length"),
+}
+_RELATIONS = {
+    "next_to": ["{a} next to {b}", "{a} beside {b}"],
+    "left": ["{a} to the left of {b}"],
+    "right": ["{a} to the right of {b}"],
+    "on_top_of": ["{a} on top of {b}"],
+}
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    first=st.sampled_from(sorted(_RENDER)),
+    second=st.sampled_from(sorted(_RENDER)),
+    n1=st.integers(2, 4),
+    n2=st.integers(2, 4),
+    relation=st.sampled_from(sorted(_RELATIONS)),
+    form=st.integers(0, 1),
+    lead=st.sampled_from(["", "please build ", "put ", "could you make "]),
+)
+def test_rendered_compositions_parse_back(first, second, n1, n2, relation, form, lead):
+    if relation == "on_top_of" and (first, second) != ("tower", "tower"):
+        second = "row" if first == "tower" else second
+    render_a, slot_a = _RENDER[first]
+    render_b, slot_b = _RENDER[second]
+    templates = _RELATIONS[relation]
+    text = lead + templates[form % len(templates)].format(a=render_a(n1), b=render_b(n2))
+    reading = read(text)
+    assert reading.complete, (text, reading.material)
+    structures = reading.spec.structures
+    assert [s.shape for s in structures] == [first, second], text
+    assert getattr(structures[0], slot_a) == n1 and getattr(structures[1], slot_b) == n2, text
+    [rel] = reading.spec.relations
+    kind = "next_to" if relation in ("left", "right") else relation
+    side = relation if relation in ("left", "right") else None
+    assert (rel.kind, rel.subject, rel.object, rel.side) == (kind, 0, 1, side), text
+
+
+def test_an_unreadable_command_raises_with_what_was_understood():
+    with pytest.raises(SpecError) as info:
+        read("the quick brown fox")
+    assert info.value.understood is not None
