@@ -55,7 +55,6 @@ def test_a_ring_around_a_tower_leaves_the_tower_inside():
 def test_towers_joined_by_a_beam_carry_it():
     r = plan("connect two 3-high columns with a beam across the top")
     assert r.status == "success", r.notes
-    lo, hi = boxes(r)
     beams = [p for p in r.layout if max(p.size) > 0.1]
     assert len(beams) == 1
     assert np.isclose(beams[0].position[2] - beams[0].size[2] / 2, 0.15)  # on 3 levels

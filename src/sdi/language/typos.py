@@ -15,8 +15,8 @@ from rapidfuzz import process
 from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.language import words
-from sdi.spec import lexicon as lx
 from sdi.language.syntax import pipeline
+from sdi.spec import lexicon as lx
 
 _WORD = re.compile(r"[A-Za-z]+")
 _SHAPES = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES)
