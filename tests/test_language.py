@@ -260,3 +260,32 @@ def test_an_unreadable_command_raises_with_what_was_understood():
     with pytest.raises(SpecError) as info:
         read("the quick brown fox")
     assert info.value.understood is not None
+
+
+# -- the model cross-check compares slots and relations -----------------------------------------
+def test_explicit_numbers_beat_a_models_reading():
+    from scripted_model import ScriptedChat
+    from sdi.agents.specifier import Specifier
+
+    wrong = {"structures": [{"shape": "tower", "height": 9, "at_x": 0.7}]}
+    result = Specifier(ScriptedChat([wrong])).specify("a 3-cube tower at x = 0.4")
+    [tower] = result.spec.structures
+    assert (tower.height, tower.at_x) == (3, 0.4)
+    assert result.source == "rules (llm disagreed)"
+    assert "height" in result.notes[0] and "9" in result.notes[0]
+
+
+def test_a_model_that_agrees_on_every_stated_slot_is_used():
+    from scripted_model import ScriptedChat
+    from sdi.agents.specifier import Specifier
+
+    right = {
+        "structures": [{"shape": "grid", "length": 3, "width": 3}, {"shape": "tower", "height": 2}],
+        "relations": [{"kind": "on_top_of", "subject": 1, "object": 0}],
+    }
+    result = Specifier(ScriptedChat([right])).specify("a 2-high column on top of a 3x3 layer")
+    assert result.source == "llm"
+    missing = {**right, "relations": []}
+    result = Specifier(ScriptedChat([missing])).specify("a 2-high column on top of a 3x3 layer")
+    assert result.source == "rules (llm disagreed)"
+    assert len(result.spec.relations) == 1

@@ -104,5 +104,8 @@ SPEC_PROMPT = (
     "the schema. Use shape names from the schema, counts in parts (a cube is 0.05 m), positions "
     "in metres (at_x, at_y) only when the command states them, and a region (left, right, front, "
     "back, centre, or combinations like 'back left') when it names one. One entry in "
-    "'structures' per separate structure."
+    "'structures' per structure. When the command relates structures, add 'relations' with "
+    "indices into 'structures': on_top_of (subject stands on object), around (subject, a ring, "
+    "encloses object), next_to (subject beside object, with side left/right/front/back). Towers "
+    "joined by a beam are one bridge (height = tower height, spans = towers - 1)."
 )

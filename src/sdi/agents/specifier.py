@@ -13,6 +13,7 @@ the Specifier.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from pydantic import ValidationError
@@ -23,6 +24,7 @@ from sdi.language import read
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
 from sdi.model.cell import CellConfig
+from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import Spec
 
 
@@ -68,7 +70,7 @@ class Specifier:
                 ) from None
             return SpecResult(rules, "rules (llm malformed)", [f"model output unusable: {exc}"])
         if rules is not None:
-            conflict = disagreement(rules, llm_spec)
+            conflict = disagreement(rules, llm_spec, stated_numbers(command))
             if conflict:
                 return SpecResult(
                     rules,
@@ -82,12 +84,29 @@ class Specifier:
         return SpecResult(llm_spec, "llm")
 
 
-def disagreement(rules: Spec, model: Spec) -> str | None:
+def stated_numbers(command: str) -> set[float]:
+    """The numbers written in `command`, in digits or words ("three" → 3)."""
+    tokens = re.findall(r"\d+(?:\.\d+)?|[a-z]+", command.lower())
+    out: set[float] = set()
+    for t in words_to_numbers(tokens):
+        try:
+            out.add(float(t))
+        except ValueError:
+            continue
+    return out
+
+
+_PLACE = ("at_x", "at_y", "region", "axis", "dims", "part", "shape")
+
+
+def disagreement(rules: Spec, model: Spec, stated: set[float] | None = None) -> str | None:
     """Where `model` contradicts what the grammar read from the words, or None.
 
-    Structures are matched in order within each family; every field the grammar set (not a
-    default) must have the same value in the model's structure, and the relations must be
-    the same.
+    Structures are matched in order within each family; every field the grammar took from
+    the words — a position, region, axis or part, or a count or size whose number is written
+    in the command (`stated`; all numbers when None) — must have the same value in the
+    model's structure, and the relations must be the same. Values the grammar chose for a
+    vague word ("a very tall tower") are the model's to choose.
     """
     shapes = sorted(s.shape for s in rules.structures)
     if shapes != sorted(s.shape for s in model.structures):
@@ -102,6 +121,13 @@ def disagreement(rules: Spec, model: Spec) -> str | None:
         said = s.model_dump(exclude_defaults=True)
         got = model.structures[j].model_dump()
         for key, value in said.items():
+            explicit = (
+                key in _PLACE
+                or stated is None
+                or (isinstance(value, int | float) and float(value) in stated)
+            )
+            if not explicit:
+                continue
             if got.get(key) != value:
                 return f"{s.shape} {key}: command says {value}, model says {got.get(key)}"
     mine = sorted((r.kind, mapping[r.subject], mapping[r.object], r.side) for r in rules.relations)
