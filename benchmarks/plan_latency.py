@@ -19,10 +19,10 @@ from pathlib import Path
 
 from sdi.bench.suite import SUITE
 from sdi.inspector.verifier import verify
+from sdi.language import read
 from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
 from sdi.model.part import Part
-from sdi.language import read
 from sdi.pipeline import plan
 from sdi.spec.grammar import parse_phrase
 

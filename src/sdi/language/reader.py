@@ -63,6 +63,10 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("above",), "on", None),
     (("over",), "on", None),
     (("on",), "on", None),
+    (("underneath",), "under", None),
+    (("beneath",), "under", None),
+    (("below",), "under", None),
+    (("under",), "under", None),
     (("around",), "around", None),
     (("round",), "around", None),
     (("surrounding",), "around", None),
@@ -597,23 +601,21 @@ def _rewrite(text: str, st: _State) -> str:
 
 # -- 3–4. clauses, phrases and relation markers ---------------------------------------------
 def _clauses(doc: Doc) -> list[list[int]]:
+    # Clauses end at sentence punctuation, not at the parser's sentence guesses (it splits
+    # "a tower at x = 450 mm" at "=").
     clauses: list[list[int]] = []
     current: list[int] = []
-    for sent in doc.sents:
-        if current:
-            clauses.append(current)
-            current = []
-        for tok in sent:
-            w = tok.lower_
-            if w in (";", ".", "!", "?") and tok.i != len(doc) - 1 and not tok.like_num:
-                if current:
-                    clauses.append(current)
-                    current = []
-                continue
-            if w in _SEQUENCE and _starts_clause(doc, tok) and current:
+    for tok in doc:
+        w = tok.lower_
+        if w in (";", ".", "!", "?") and tok.i != len(doc) - 1 and not tok.like_num:
+            if current:
                 clauses.append(current)
                 current = []
-            current.append(tok.i)
+            continue
+        if w in _SEQUENCE and _starts_clause(doc, tok) and current:
+            clauses.append(current)
+            current = []
+        current.append(tok.i)
     if current:
         clauses.append(current)
     # strip leading sequence words and trailing punctuation
@@ -855,6 +857,8 @@ def _clause_phrases(
                 or not _object_head(doc, phrases[after].tokens[0], phrases[after].tokens[-1] + 1)[1]
             )
             rels.append(_Rel("on", before, None if implicit else after))
+        elif kind == "under":
+            rels.append(_Rel("on", after, before))
         elif kind == "around":
             rels.append(_Rel("around", before, after))
         elif kind == "inside":
@@ -962,8 +966,9 @@ def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
             spec = before[_target(before, j)].spec
             if spec is not None and any(s.shape == family for s in spec.structures):
                 return _target(before, j)
-        return _target(before, built[-1])
-    return None
+        if family is None:
+            return _target(before, built[-1])  # "the structure", "the other one"
+        return None  # "the tower" named for the first time: a structure of its own
 
 
 def _target(phrases: list[_Phrase], j: int) -> int:
@@ -1253,9 +1258,9 @@ _GENERIC_NOUNS = re.compile(
 def _open(text: str) -> tuple[str, list[str]]:
     """An open description with no family named: the family its size words suggest."""
     m = _GENERIC_NOUNS.search(text)
-    if not m:
-        return text, []
     said = set(re.findall(r"[a-z]+", text.lower()))
+    if not m or not said & set(lx.SIZE_WORDS):
+        return text, []  # "build something": nothing to go on
     if said & {"wide", "flat", "low", "broad", "long", "spread"}:
         family = "platform" if not said & {"long"} else "row"
     else:
@@ -1289,9 +1294,17 @@ def _understood(doc: Doc) -> dict[str, object]:
 
 def _no_structure(st: _State, doc: Doc, command: str) -> None:
     known = ", ".join(sorted(set(lx.SHAPE_WORDS.values())))
+    understood = _understood(doc)
+    try:
+        parse_phrase(doc.text, st.cell)
+    except SpecError as exc:
+        if exc.understood and "not a usable count" not in str(exc):
+            understood = {**understood, **exc.understood}
+        elif "not a usable count" in str(exc):
+            raise SpecError(str(exc), understood=understood) from None
     raise SpecError(
         "no structure recognised in the command; name one of: "
         + known
         + " (e.g. 'a tower of 4 cubes', 'a 3 by 3 grid on the left')",
-        understood=_understood(doc),
+        understood=understood,
     )

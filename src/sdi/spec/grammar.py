@@ -873,6 +873,9 @@ class _Parser:
                     p.setdefault("_count", q)
                 take(k)
                 continue
+            if w in ("low", "flat", "squat") and h.shape in ("grid", "row", "pack"):
+                take(k)  # "a low, wide platform": a grid is one layer anyway
+                continue
             if w in lx.SIZE_WORDS:
                 dim, size = lx.SIZE_WORDS[w]
                 if w in ("high", "tall", "long", "wide", "deep") and self.is_num(k - 1):
@@ -1224,8 +1227,6 @@ class _Parser:
                         + 1e-9
                     )
                 size = "L"
-            if dim == "height" and size in ("S",) and shape in ("grid", "row", "pack"):
-                continue  # "a low, wide platform": a grid is one layer anyway
             index = "SML".index(size)
             table = SIZE_TABLE.get(shape, {})
             related = {
