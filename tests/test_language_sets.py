@@ -1,6 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
-themselves — sizes, unique ids, no shared commands, and the frozen test set's hash."""
+themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
+second dev set (dev2) is held to the same checks and shares no command with either."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from sdi.bench import boxes as bx
 from sdi.bench import language_checks as k
 from sdi.bench.language_checks import PHENOMENA, Case, score
 from sdi.bench.language_dev import CASES as DEV
+from sdi.bench.language_dev2 import CASES as DEV2
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -242,6 +244,17 @@ def test_set_sizes_ids_and_phenomena():
         assert all(callable(c.accept) for c in cases)
 
 
+def test_dev2_set_sizes_ids_and_phenomena():
+    assert len(DEV2) >= 160
+    ids = [c.id for c in (*DEV, *DEV2, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev2-") for c in DEV2)
+    per = {p: sum(c.phenomenon == p for c in DEV2) for p in PHENOMENA}
+    assert min(per.values()) >= 14, per
+    assert {c.phenomenon for c in DEV2} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV2)
+
+
 def _norm(text: str) -> str:
     return " ".join(text.lower().split())
 
@@ -250,6 +263,14 @@ def test_no_command_shared_between_dev_and_test():
     dev = {_norm(c.text) for c in DEV}
     assert not [c.id for c in TEST if _norm(c.text) in dev]
     assert len({_norm(c.text) for c in TEST}) == len(TEST)
+
+
+def test_no_command_shared_between_dev2_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV2}) == len(DEV2)
+    dev = {_norm(c.text) for c in DEV}
+    assert not [c.id for c in DEV2 if _norm(c.text) in dev]
+    test = {_norm(c.text) for c in TEST}
+    assert not [c.id for c in DEV2 if _norm(c.text) in test]
 
 
 def test_test_set_is_frozen():
@@ -262,7 +283,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *TEST):
+    for case in (*DEV, *DEV2, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -278,7 +299,13 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "sdi.pipeline",
     )
     here = Path(k.__file__).parent
-    for name in ("boxes.py", "language_checks.py", "language_dev.py", "language_test.py"):
+    for name in (
+        "boxes.py",
+        "language_checks.py",
+        "language_dev.py",
+        "language_dev2.py",
+        "language_test.py",
+    ):
         src = (here / name).read_text(encoding="utf-8")
         imports = [ln for ln in src.splitlines() if ln.lstrip().startswith(("import ", "from "))]
         assert not [ln for ln in imports if any(f in ln for f in forbidden)], name
@@ -295,3 +322,88 @@ def test_many_structures_match_quickly_and_one_to_one():
     assert k.structures(k.tower(2), k.tower(3))(two) is not None  # no double use of a tower
     dup = res(*column(0.45, 0.30, 3), cube(0.45, 0.30, 0.075))
     assert k.one(k.tower(3))(dup) == "overlapping parts"
+
+
+def _dev2(case_id: str) -> Case:
+    return next(c for c in DEV2 if c.id == case_id)
+
+
+_CASTLE = ring(0.35, 0.20, 5) + [
+    c
+    for x, y in ((0.35, 0.20), (0.55, 0.20), (0.35, 0.40), (0.55, 0.40))
+    for c in column(x, y, 2, C)
+]
+_ROW4 = [cube(0.45, 0.225 + C * j, 0.025) for j in range(4)]
+_STAIRS3 = column(0.30, 0.30, 1) + column(0.35, 0.30, 2) + column(0.40, 0.30, 3)
+_CROSS = [cube(0.40 + C * i, 0.30, 0.025) for i in range(3)] + [
+    cube(0.45, 0.25, 0.025),
+    cube(0.45, 0.35, 0.025),
+]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev2-rel-11",  # a castle with a single cube in its courtyard
+            res(*_CASTLE, cube(0.45, 0.30, 0.025)),
+            res(*ring(0.35, 0.20, 5), cube(0.45, 0.30, 0.025)),
+        ),
+        (
+            "dev2-rel-17",  # a 4-cube row with a cube on each end
+            res(*_ROW4, cube(0.45, 0.225, 0.075), cube(0.45, 0.375, 0.075)),
+            res(*_ROW4, cube(0.45, 0.225, 0.075)),
+        ),
+        (
+            "dev2-rel-07",  # a 4-cube tower with a 3-step staircase in front of it
+            res(*_STAIRS3, *column(0.45, 0.30, 4)),  # built against it: one 4-step flight
+            res(
+                *column(0.45, 0.30, 1),
+                *column(0.40, 0.30, 2),
+                *column(0.35, 0.30, 3),
+                *column(0.30, 0.30, 4),
+            ),  # climbing towards the robot
+        ),
+        (
+            "dev2-seq-05",  # a row of 5, then take away the middle cube
+            res(*[cube(0.45, 0.20 + C * j, 0.025) for j in (0, 1, 3, 4)]),
+            res(*[cube(0.45, 0.20 + C * j, 0.025) for j in range(4)]),
+        ),
+        (
+            "dev2-seq-15",  # a 3x3 ring built up to 3 layers
+            res(*ring(0.40, 0.25, 3, high=3)),
+            res(*ring(0.40, 0.25, 3, high=1)),
+        ),
+        ("dev2-neg-08", res(*_CROSS), res(*grid(0.40, 0.25, 3, 3))),  # 3x3 without corners
+        (
+            "dev2-dim-16",  # 2 deep (along x, away from the robot) and 5 wide
+            res(*grid(0.45, 0.20, 2, 5)),
+            res(*grid(0.40, 0.25, 5, 2)),
+        ),
+        (
+            "dev2-reg-15",  # 40 cm out from the robot, 10 cm left of centre
+            res(*column(0.40, 0.40, 2)),
+            res(*column(0.45, 0.45, 2)),
+        ),
+        (
+            "dev2-neg-05",  # a staircase, not going up towards the robot
+            res(*column(0.40, 0.30, 1), *column(0.40, 0.35, 2), *column(0.40, 0.40, 3)),
+            res(*column(0.50, 0.30, 1), *column(0.45, 0.30, 2), *column(0.40, 0.30, 3)),
+        ),
+        (
+            "dev2-open-19",  # twelve cubes packed as tightly as possible
+            res(*grid(0.40, 0.25, 2, 2, layers=3)),
+            res(*grid(0.40, 0.25, 2, 6)),
+        ),
+        ("dev2-open-06", res(*ring(0.40, 0.25, 4)), res(*ring(0.35, 0.20, 5))),  # small
+        (
+            "dev2-open-13",  # a sturdy base with a tall tower on it
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 3, z0=C)),
+            res(*column(0.45, 0.30, 4)),
+        ),
+    ],
+)
+def test_dev2_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev2(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
