@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import ast
+import math
 import re
 from collections import Counter
 from pathlib import Path
@@ -9,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from sdi.bench import signatures as sg
+from sdi.bench import suite as suite_module
 from sdi.bench.runner import SuiteResult, run_suite
 from sdi.bench.suite import GROUPS, SUITE, by_id
 from sdi.model import Layout, Part, quat_from_yaw
@@ -113,9 +116,100 @@ def test_suite_ids_and_texts_are_unique_and_well_formed():
 # (b) signatures on hand-made layouts ----------------------------------------------------------
 
 
-def test_signatures_do_not_use_the_verifier():
-    source = Path(sg.__file__).read_text(encoding="utf-8")
-    assert "sdi.inspector" not in source and "sdi.design" not in source
+# What the judging modules may take from the judged code: the Layout and Part classes as
+# containers of raw poses, nothing else (no geometry helpers, no cell tables, no Designer or
+# Inspector). Their cached geometry attributes must not be read either.
+_JUDGES = (sg, suite_module)
+_FORBIDDEN_MODULES = ("sdi.design", "sdi.inspector", "sdi.model.cell")
+_CONTAINERS = {
+    "sdi.model": {"Layout", "Part"},
+    "sdi.model.layout": {"Layout"},
+    "sdi.model.part": {"Part"},
+}
+_GEOMETRY_ATTRIBUTES = {"half_extents", "centres", "volumes", "bottom", "top"}
+
+
+def _sdi_imports(tree: ast.AST) -> list[tuple[str, str | None]]:
+    """(module, imported name or None for a plain ``import``) for every import of sdi code."""
+    out: list[tuple[str, str | None]] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out += [(a.name, None) for a in node.names if a.name.split(".")[0] == "sdi"]
+        elif isinstance(node, ast.ImportFrom) and (node.module or "").split(".")[0] == "sdi":
+            assert node.level == 0 and node.module
+            out += [(node.module, a.name) for a in node.names]
+    return out
+
+
+@pytest.mark.parametrize("module", _JUDGES, ids=lambda m: m.__name__)
+def test_the_judges_import_no_geometry_or_regions_from_the_judged_code(module):
+    tree = ast.parse(Path(module.__file__).read_text(encoding="utf-8"))
+    imports = _sdi_imports(tree)
+    assert imports, "the parser found no sdi imports at all"
+    for mod, name in imports:
+        full = f"{mod}.{name}" if name else mod
+        assert not full.startswith(_FORBIDDEN_MODULES), full
+        if mod in _CONTAINERS:
+            assert name in _CONTAINERS[mod], f"{full}: only the data classes may be imported"
+        elif mod == "sdi":
+            assert name not in {"design", "inspector", "model"}, full
+        else:
+            assert mod.startswith("sdi.bench") and name is not None, full
+    used = {n.attr for n in ast.walk(tree) if isinstance(n, ast.Attribute)}
+    assert not used & _GEOMETRY_ATTRIBUTES, sorted(used & _GEOMETRY_ATTRIBUTES)
+    names = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
+    assert not names & {"CellConfig", "rotation_matrix", "quat_from_yaw"}
+
+
+def test_the_suite_uses_only_judging_modules_of_the_bench():
+    tree = ast.parse(Path(suite_module.__file__).read_text(encoding="utf-8"))
+    bench = {(m, n) for m, n in _sdi_imports(tree) if m.startswith("sdi.bench")}
+    assert bench == {("sdi.bench", "signatures")}
+
+
+def _part(yaw_deg: float, size=(0.15, 0.05, 0.05)) -> Part:
+    half = math.radians(yaw_deg) / 2  # the quaternion written out, not the model's helper
+    return Part(
+        id="p",
+        position=(0.45, 0.30, 0.025),
+        orientation=(math.cos(half), 0.0, 0.0, math.sin(half)),
+        size=size,
+    )
+
+
+def test_raw_pose_box_turned_90_degrees_swaps_x_and_y():
+    assert sg.world_half_extents((1.0, 0.0, 0.0, 0.0), (0.15, 0.05, 0.05)) == pytest.approx(
+        (0.075, 0.025, 0.025)
+    )
+    for yaw in (90.0, -90.0, 270.0):
+        c, h = sg.world_boxes(Layout(objects=(_part(yaw),)))
+        assert h[0] == pytest.approx((0.025, 0.075, 0.025), abs=1e-12)
+        assert c[0] == pytest.approx((0.45, 0.30, 0.025))
+    assert sg.footprint_size(Layout(objects=(_part(90.0),))) == pytest.approx((0.05, 0.15))
+    assert sg.footprint_size(Layout(objects=(_part(180.0),))) == pytest.approx((0.15, 0.05))
+    # a quarter turn about x instead stands the beam's y edge up: y and z swap
+    q = (math.cos(math.pi / 4), math.sin(math.pi / 4), 0.0, 0.0)
+    assert sg.world_half_extents(q, (0.15, 0.05, 0.10)) == pytest.approx((0.075, 0.05, 0.025))
+
+
+def test_raw_pose_box_turned_45_degrees_has_the_larger_footprint():
+    r = math.sqrt(0.5)
+    cube = _part(45.0, size=(0.05, 0.05, 0.05))
+    _, h = sg.world_boxes(Layout(objects=(cube,)))
+    assert h[0] == pytest.approx((0.05 * r, 0.05 * r, 0.025))  # the diagonal, 0.0707 m across
+    beam = _part(45.0)
+    _, h = sg.world_boxes(Layout(objects=(beam,)))
+    side = (0.075 + 0.025) * r  # (long + short half-edge) · cos 45°
+    assert h[0] == pytest.approx((side, side, 0.025))
+    assert sg.footprint_size(Layout(objects=(beam,))) == pytest.approx((2 * side, 2 * side))
+    # 0.141 m each way: more than the beam's width on both axes, so a larger footprint
+    # (0.020 m² against 0.15 × 0.05 = 0.0075 m² unturned)
+    assert 2 * side > 0.05 and (2 * side) ** 2 > 0.15 * 0.05
+    assert sg.footprint_size(Layout(objects=(cube,))) == pytest.approx((0.1 * r, 0.1 * r))
+    assert 0.1 * r > 0.05  # a cube turned 45° is wider than its edge
+    # a not-quite-unit quaternion is normalised by the judge itself
+    q = tuple(1.0005 * v for v in beam.orientation)
+    assert sg.world_half_extents(q, beam.size) == pytest.approx((side, side, 0.025))
 
 
 def test_lattice_counts_levels_columns_and_beams():
@@ -302,8 +396,31 @@ def test_positions_and_regions():
     assert sg.in_named_region(front_right, "front right")
     assert not sg.in_named_region(front_right, "back left")
     assert sg.in_named_region(middle, "centre") and not sg.in_named_region(back_left, "centre")
+    assert sg.in_named_region(back_left, "back-left corner")
+    assert sg.in_named_region(middle, "center") and sg.in_named_region(middle, "middle")
     with pytest.raises(ValueError):
-        sg.region_ranges("upstairs")
+        sg.in_named_region(middle, "upstairs")
+    assert sg.region_problem(Layout(), "left") == "no parts"
+
+
+@pytest.mark.parametrize(
+    ("name", "inside", "outside"),
+    [
+        ("left", (0.45, 0.34), (0.45, 0.32)),
+        ("right", (0.45, 0.26), (0.45, 0.28)),
+        ("front", (0.41, 0.30), (0.43, 0.30)),
+        ("back", (0.49, 0.30), (0.47, 0.30)),
+        ("centre", (0.52, 0.37), (0.54, 0.30)),
+        ("centre", (0.38, 0.23), (0.45, 0.39)),
+        ("back left", (0.49, 0.34), (0.49, 0.32)),
+        ("back left", (0.49, 0.34), (0.47, 0.34)),
+        ("front right", (0.30, 0.15), (0.30, 0.45)),
+    ],
+)
+def test_named_regions_are_the_judges_own_numbers(name, inside, outside):
+    # left y > 0.33, right y < 0.27, front x < 0.42, back x > 0.48, centre ±0.08 of (0.45, 0.30)
+    assert sg.in_named_region(at_centre(stack(0, 0, 2), *inside), name)
+    assert not sg.in_named_region(at_centre(stack(0, 0, 2), *outside), name)
 
 
 def test_compactness():

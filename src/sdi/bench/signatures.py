@@ -14,6 +14,30 @@ whole cells and non-overlapping parts never share one.
 
 Signatures that care about exact extents (pyramids, spans, positions) use the continuous
 geometry instead. All lengths are metres, world frame, z up.
+
+**Own geometry.** Nothing here asks the judged system for geometry: every part's world
+axis-aligned box is computed in this module from its raw pose alone — `position` (box centre),
+`orientation` (unit quaternion ``[w, x, y, z]``, world from part) and `size` (edge lengths in
+the part frame) — by rotating the half-extents with the quaternion's rotation matrix and taking
+absolute values (`world_half_extents`). A `Layout` is only read as a list of such poses; its
+own cached geometry (`Layout.half_extents`, `Part.half_extents`, …), the Designer, the
+Inspector and the cell's tables are never consulted.
+
+**Named regions** are fixed numbers written here, not the composer's or the cell's region
+table. They apply to the footprint centre (x, y) of the layout's bounding box, in the default
+cell's world frame (the robot at x = 0: front = small x, back = large x, left = +y,
+right = -y):
+
+=========  ==========================================
+left       y > 0.33 m
+right      y < 0.27 m
+front      x < 0.42 m
+back       x > 0.48 m
+centre     within 0.08 m of (0.45, 0.30) on both x and y
+=========  ==========================================
+
+A name of several words ("back left", "front-right") must satisfy every word; "center" and
+"middle" mean "centre", and "corner" adds nothing ("back left corner" = "back left").
 """
 
 from __future__ import annotations
@@ -27,7 +51,6 @@ from functools import lru_cache
 
 import numpy as np
 
-from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
 from sdi.model.part import Part
 
@@ -41,6 +64,7 @@ Cell = tuple[int, int, int]
 Cell2 = tuple[int, int]
 
 __all__ = [
+    "REGION_TESTS",
     "UNIT",
     "Lattice",
     "bbox_cells",
@@ -78,11 +102,63 @@ __all__ = [
     "levels",
     "main_axis",
     "pyramid_dims",
-    "region_ranges",
+    "quaternion_matrix",
+    "region_problem",
+    "region_words",
     "separate_structures",
     "span_parts",
     "staircase_steps",
+    "world_boxes",
+    "world_half_extents",
 ]
+
+
+# ---------------------------------------------------------------------------------------------
+# Own geometry: world boxes from raw poses
+
+
+def quaternion_matrix(q: Sequence[float]) -> tuple[tuple[float, float, float], ...]:
+    """The rotation matrix (world from part) of a quaternion ``[w, x, y, z]``, normalised here."""
+    w, x, y, z = (float(v) for v in q)
+    n = math.sqrt(w * w + x * x + y * y + z * z) or 1.0
+    w, x, y, z = w / n, x / n, y / n, z / n
+    return (
+        (1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)),
+        (2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)),
+        (2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)),
+    )
+
+
+@lru_cache(maxsize=4096)
+def world_half_extents(
+    orientation: tuple[float, ...], size: tuple[float, ...]
+) -> tuple[float, float, float]:
+    """Half-extents (m) of the world axis-aligned box of a box of edge lengths `size` (part
+    frame) turned by the unit quaternion `orientation` ``[w, x, y, z]``: ``|R| · size / 2``."""
+    r = quaternion_matrix(orientation)
+    half = [0.5 * float(v) for v in size]
+    hx, hy, hz = (sum(abs(r[i][j]) * half[j] for j in range(3)) for i in range(3))
+    return (hx, hy, hz)
+
+
+def _half(part: Part) -> tuple[float, float, float]:
+    """World half-extents of one part, from its raw pose only."""
+    return world_half_extents(tuple(part.orientation), tuple(part.size))
+
+
+def world_boxes(layout: Layout) -> tuple[np.ndarray, np.ndarray]:
+    """Part centres and world half-extents, m, each of shape (N, 3), from the raw poses."""
+    if len(layout) == 0:
+        return np.zeros((0, 3)), np.zeros((0, 3))
+    c = np.array([[float(v) for v in p.position] for p in layout.objects], dtype=float)
+    h = np.array([_half(p) for p in layout.objects], dtype=float)
+    return c, h
+
+
+def _bounds(layout: Layout) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest and highest corner (x, y, z) of the layout's world bounding box, m (non-empty)."""
+    c, h = world_boxes(layout)
+    return (c - h).min(axis=0), (c + h).max(axis=0)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -127,9 +203,7 @@ _Key = tuple[tuple[tuple[float, ...], tuple[float, ...]], ...]
 
 def lattice(layout: Layout, unit: float = UNIT) -> Lattice:
     """The lattice view of `layout` with cells of `unit` metres (see the module docstring)."""
-    key = tuple(
-        (tuple(p.position), tuple(float(v) for v in p.half_extents)) for p in layout.objects
-    )
+    key = tuple((tuple(float(v) for v in p.position), _half(p)) for p in layout.objects)
     return _lattice(key, unit)
 
 
@@ -166,7 +240,8 @@ def _lattice(key: _Key, unit: float) -> Lattice:
 
 def is_long(part: Part, unit: float = UNIT) -> bool:
     """True for a long part such as a beam: an xy edge of at least 1.5 cells."""
-    return float(max(part.half_extents[0], part.half_extents[1])) * 2 >= 1.5 * unit - 1e-9
+    hx, hy, _ = _half(part)
+    return max(hx, hy) * 2 >= 1.5 * unit - 1e-9
 
 
 def levels(layout: Layout, unit: float = UNIT) -> int:
@@ -222,8 +297,7 @@ def footprint_size(layout: Layout) -> tuple[float, float]:
     """Extent of the layout's xy bounding box along x and y, m."""
     if len(layout) == 0:
         return (0.0, 0.0)
-    lo = (layout.centres - layout.half_extents).min(axis=0)
-    hi = (layout.centres + layout.half_extents).max(axis=0)
+    lo, hi = _bounds(layout)
     return (float(hi[0] - lo[0]), float(hi[1] - lo[1]))
 
 
@@ -358,7 +432,7 @@ def is_block(layout: Layout, min_side: int = 2, min_height: int = 2, unit: float
 def _level_groups(layout: Layout, unit: float) -> list[list[int]]:
     """Part indices grouped by the level of their centre, bottom level first."""
     groups: dict[int, list[int]] = {}
-    for n, z in enumerate(layout.centres[:, 2]):
+    for n, z in enumerate(world_boxes(layout)[0][:, 2]):
         groups.setdefault(math.floor(z / unit), []).append(n)
     return [groups[k] for k in sorted(groups)]
 
@@ -367,7 +441,7 @@ def _pyramid_levels(layout: Layout, unit: float) -> list[np.ndarray] | None:
     """Per level, ``[x0, x1, y0, y1, top z]`` (m) when every level is a full rectangle."""
     if len(layout) == 0:
         return None
-    c, h = layout.centres, layout.half_extents
+    c, h = world_boxes(layout)
     boxes: list[np.ndarray] = []
     groups = _level_groups(layout, unit)
     if min(float(c[n, 2] - h[n, 2]) for n in groups[0]) > TOL:
@@ -497,7 +571,7 @@ def span_parts(layout: Layout, min_gap: float = 0.01) -> list[tuple[str, float]]
     """
     if len(layout) == 0:
         return []
-    c, h = layout.centres, layout.half_extents
+    c, h = world_boxes(layout)
     lo, hi = c - h, c + h
     out: list[tuple[str, float]] = []
     for n, part in enumerate(layout.objects):
@@ -531,7 +605,7 @@ def span_parts(layout: Layout, min_gap: float = 0.01) -> list[tuple[str, float]]
 
 def _clear_below(layout: Layout, n: int, axis: int, g0: float, g1: float) -> bool:
     """Nothing between the table and part `n`'s underside over the stretch (g0, g1) of `axis`."""
-    c, h = layout.centres, layout.half_extents
+    c, h = world_boxes(layout)
     lo, hi = c - h, c + h
     other = 1 - axis
     bottom = float(lo[n, 2])
@@ -738,8 +812,8 @@ def separate_structures(layout: Layout) -> list[Layout]:
     n = len(layout)
     if n == 0:
         return []
-    lo = layout.centres - layout.half_extents
-    hi = layout.centres + layout.half_extents
+    c, h = world_boxes(layout)
+    lo, hi = c - h, c + h
     parent = list(range(n))
 
     def find(a: int) -> int:
@@ -765,10 +839,8 @@ def gap_between(a: Layout, b: Layout) -> float:
     overlap in plan)."""
     if len(a) == 0 or len(b) == 0:
         raise ValueError("an empty layout has no footprint")
-    alo = (a.centres - a.half_extents).min(axis=0)
-    ahi = (a.centres + a.half_extents).max(axis=0)
-    blo = (b.centres - b.half_extents).min(axis=0)
-    bhi = (b.centres + b.half_extents).max(axis=0)
+    alo, ahi = _bounds(a)
+    blo, bhi = _bounds(b)
     dx = max(0.0, float(blo[0] - ahi[0]), float(alo[0] - bhi[0]))
     dy = max(0.0, float(blo[1] - ahi[1]), float(alo[1] - bhi[1]))
     return math.hypot(dx, dy)
@@ -778,8 +850,7 @@ def footprint_centre(layout: Layout) -> tuple[float, float]:
     """Centre (x, y) of the layout's xy bounding box, m. Raises ValueError when empty."""
     if len(layout) == 0:
         raise ValueError("an empty layout has no footprint")
-    lo = (layout.centres - layout.half_extents).min(axis=0)
-    hi = (layout.centres + layout.half_extents).max(axis=0)
+    lo, hi = _bounds(layout)
     return (float(lo[0] + hi[0]) / 2, float(lo[1] + hi[1]) / 2)
 
 
@@ -793,45 +864,56 @@ def in_region(layout: Layout, x_range: Sequence[float], y_range: Sequence[float]
     )
 
 
-def region_ranges(
-    name: str, cell: CellConfig | None = None
-) -> tuple[tuple[float, float], tuple[float, float]]:
-    """The x and y ranges (m) of the workspace that a named region of the cell stands for.
+_AT_CENTRE = "within 0.08 m of (0.45, 0.30)"
 
-    The cell names regions by a point each (left = +y, back = +x). A side word keeps the half
-    of the workspace beyond the midpoint between that side's point and the opposite side's
-    point ("back left" → the back half ∩ the left half); ``centre`` is the box around the
-    centre point reaching a quarter of the way to each side's point.
+REGION_TESTS: dict[str, tuple[Callable[[float, float], bool], str]] = {
+    "left": (lambda x, y: y > 0.33, "y > 0.33"),
+    "right": (lambda x, y: y < 0.27, "y < 0.27"),
+    "front": (lambda x, y: x < 0.42, "x < 0.42"),
+    "back": (lambda x, y: x > 0.48, "x > 0.48"),
+    "centre": (lambda x, y: abs(x - 0.45) <= 0.08 and abs(y - 0.30) <= 0.08, _AT_CENTRE),
+}
+"""Region word → (test on the footprint centre (x, y), m; the test as text). See the module
+docstring; these numbers belong to the judge, not to the cell or the composer."""
+
+_REGION_SYNONYMS = {"center": "centre", "middle": "centre"}
+
+
+def region_words(name: str) -> list[str]:
+    """The region words of a name such as "back left" or "front-right corner".
+
+    Raises ValueError for a word that is not a region ("corner" is allowed and adds nothing).
     """
-    cell = cell or CellConfig()
-    reg = cell.design.regions
-    ws = cell.workspace
-    if name not in reg:
-        raise ValueError(f"unknown region {name!r}; the cell has {sorted(reg)}")
-    cx, cy = reg.get("centre", ws.centre)
-    front_x = reg.get("front", (ws.x_min, cy))[0]
-    back_x = reg.get("back", (ws.x_max, cy))[0]
-    left_y = reg.get("left", (cx, ws.y_max))[1]
-    right_y = reg.get("right", (cx, ws.y_min))[1]
-    x_mid, y_mid = (front_x + back_x) / 2, (left_y + right_y) / 2
-    words = set(name.split())
-    if words == {"centre"}:
-        qx, qy = (back_x - front_x) / 4, (left_y - right_y) / 4
-        return ((cx - qx, cx + qx), (cy - qy, cy + qy))
-    xr = (ws.x_min, ws.x_max)
-    yr = (ws.y_min, ws.y_max)
-    if "back" in words:
-        xr = (x_mid, ws.x_max)
-    if "front" in words:
-        xr = (ws.x_min, x_mid)
-    if "left" in words:
-        yr = (y_mid, ws.y_max)
-    if "right" in words:
-        yr = (ws.y_min, y_mid)
-    return (xr, yr)
+    words = name.lower().replace("-", " ").split()
+    out = []
+    for word in words:
+        word = _REGION_SYNONYMS.get(word, word)
+        if word == "corner":
+            continue
+        if word not in REGION_TESTS:
+            raise ValueError(
+                f"unknown region word {word!r} in {name!r}; use {sorted(REGION_TESTS)}"
+            )
+        if word not in out:
+            out.append(word)
+    if not out:
+        raise ValueError(f"no region word in {name!r}")
+    return out
 
 
-def in_named_region(layout: Layout, name: str, cell: CellConfig | None = None) -> bool:
-    """True when the footprint centre lies in the named region (see `region_ranges`)."""
-    xr, yr = region_ranges(name, cell)
-    return in_region(layout, xr, yr)
+def region_problem(layout: Layout, name: str) -> str | None:
+    """None when the footprint centre lies in the named region, else which test it fails."""
+    words = region_words(name)
+    if len(layout) == 0:
+        return "no parts"
+    x, y = footprint_centre(layout)
+    for word in words:
+        test, need = REGION_TESTS[word]
+        if not test(x, y):
+            return f"centre ({x:.3f}, {y:.3f}) m is not {word}: needs {need}"
+    return None
+
+
+def in_named_region(layout: Layout, name: str) -> bool:
+    """True when the footprint centre lies in the named region (see the module docstring)."""
+    return region_problem(layout, name) is None

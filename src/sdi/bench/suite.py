@@ -7,8 +7,12 @@ compounds, positions and regions; E (12) scale stress, 13–25 parts each.
 Commands are written the way an operator would type them. Each carries an acceptance predicate
 built from `sdi.bench.signatures` — part count, levels, the shape's signature, and the position
 or region when the command states one — that returns None for an acceptable layout or a short
-reason. Predicates accept every reasonable reading of a vague command and nothing else; named
-regions are judged against the default `CellConfig`.
+reason. Predicates accept every reasonable reading of a vague command and nothing else.
+
+The judge is independent of the system it judges: `sdi.bench.signatures` computes every part's
+world box from the raw pose itself, and named regions ("back left", "centre") are fixed numbers
+written there (see its module docstring), not the composer's or the cell's region table. A
+`Layout` is only read for its parts' raw poses.
 """
 
 from __future__ import annotations
@@ -18,15 +22,12 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from sdi.bench import signatures as sg
-from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
 
 Accept = Callable[[Layout], str | None]
 """An acceptance predicate: None when the layout does what the command asked, else why not."""
 
 GROUPS: tuple[str, ...] = ("A", "B", "C", "D", "E")
-
-_CELL = CellConfig()
 
 
 @dataclass(frozen=True)
@@ -182,13 +183,14 @@ def at(x: float | None = None, y: float | None = None, tol: float = 0.03) -> Acc
 
 
 def region(name: str) -> Accept:
-    """Footprint centre inside the cell's named region (`signatures.region_ranges`)."""
+    """Footprint centre inside the named region, judged on the fixed numbers of
+    `signatures.REGION_TESTS` (left y > 0.33, right y < 0.27, front x < 0.42, back x > 0.48,
+    centre within 0.08 m of (0.45, 0.30); several words must all hold)."""
+    sg.region_words(name)  # an unknown region word is a mistake in the suite: fail at import
 
     def run(layout: Layout) -> str | None:
-        if sg.in_named_region(layout, name, _CELL):
-            return None
-        cx, cy = sg.footprint_centre(layout)
-        return f"centre ({cx:.3f}, {cy:.3f}) m is not in the {name} region"
+        reason = sg.region_problem(layout, name)
+        return None if reason is None else f"{name} region: {reason}"
 
     return run
 
