@@ -373,6 +373,7 @@ class _Phrase:
     count: int = 0  # how many structures it produced
     ref: int | None = None  # a pure reference: the phrase it refers to
     side: str | None = None  # "it on the right": the side the reference names
+    modified: bool = False  # "then add two more cubes to it": changed an earlier structure
     unused: list[str] = field(default_factory=list)
 
 
@@ -410,7 +411,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             "the command is empty; say what to build, e.g. 'a 3-cube tower'", understood={}
         )
     st = _State(command, cell)
-    text = _normalise(command)
+    text = _normalise(command, st.notes)
     text, corrected = typos.correct(text)
     st.notes += corrected
     text = _rewrite(text, st)
@@ -468,12 +469,69 @@ _CONTRACTIONS = [
 ]
 
 
-def _normalise(command: str) -> str:
+_SCIENTIFIC = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?|\.\d+)[eE]([+-]?\d+)\b")
+_NOT_A_NUMBER = re.compile(r"(?<![\w])(nan|inf|infinity)(?![\w])", re.IGNORECASE)
+_DECIMAL_COMMA = re.compile(r"(?<=[=:])\s*(-?\d+),(\d+)\b(?!\s*(?:,|and)\s*\d)")
+_REFERENCE_NO = re.compile(r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b", re.IGNORECASE)
+_METRE_WORDS = [
+    (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
+    (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
+    (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
+]
+# The largest number a command may carry; beyond it nothing SDI builds is meant.
+_LARGEST = 1e6
+
+
+def _normalise(command: str, notes: list[str] | None = None) -> str:
+    """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
+    notes = notes if notes is not None else []
     text = command
     for a, b in _SYMBOLS.items():
         text = text.replace(a, b)
+    text = text.replace("@", " at ")
     for pattern, repl in _CONTRACTIONS:
         text = pattern.sub(repl, text)
+    bad = _NOT_A_NUMBER.search(text)
+    if bad:
+        raise SpecError(
+            f"'{bad.group(0)}' is not a number SDI can use; give a finite value (e.g. 'x = 0.4')",
+            understood={},
+        )
+
+    def scientific(m: re.Match[str]) -> str:
+        value = float(m.group(0))
+        if abs(value) > _LARGEST:
+            raise SpecError(
+                f"{m.group(0)} is too large for any count or position in the cell; "
+                f"numbers above {_LARGEST:g} are refused",
+                understood={"numbers": [m.group(0)]},
+            )
+        plain = f"{value:.6f}".rstrip("0").rstrip(".")
+        notes.append(f"read {m.group(0)} as {plain}")
+        return plain
+
+    text = _SCIENTIFIC.sub(scientific, text)
+
+    def comma(m: re.Match[str]) -> str:
+        notes.append(f"read '{m.group(1)},{m.group(2)}' as {m.group(1)}.{m.group(2)}")
+        return f" {m.group(1)}.{m.group(2)}"
+
+    text = _DECIMAL_COMMA.sub(comma, text)
+
+    def reference(m: re.Match[str]) -> str:
+        notes.append(f"ignored '{m.group(0)}': a reference number, not a size")
+        return " "
+
+    text = _REFERENCE_NO.sub(reference, text)
+    for pattern, repl in _METRE_WORDS:
+        text = pattern.sub(repl, text)
+    for m in re.finditer(r"\d+(?:\.\d+)?", text):
+        if float(m.group(0)) > _LARGEST:
+            raise SpecError(
+                f"{m.group(0)} is too large for any count or position in the cell; "
+                f"numbers above {_LARGEST:g} are refused",
+                understood={"numbers": [m.group(0)]},
+            )
     text = _DIMS.sub(" x ", text)
     return _SPACES.sub(" ", text).strip()
 
@@ -481,18 +539,53 @@ def _normalise(command: str) -> str:
 _ANOTHER = re.compile(r"\b(another|one\s+more|a\s+second)\s+one\b", re.IGNORECASE)
 _SIZES = ("count", "length", "width", "height", "steps", "span", "spans", "dims",
           "length_m", "width_m", "height_m", "gap_m", "part")  # fmt: skip
+_N = r"(\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|another|one\s+more)"
+_UNIT = (
+    r"(?:\s+(?:more|extra|additional|further))?"
+    r"(?:\s+(?:cubes?|levels?|layers?|parts?|blocks?|steps?|storeys?|tiers?))?"
+)
+_REF = r"(?:it|them|the\s+\w+(?:\s+one)?)"
+
+
+def _op(pattern: str, op: str) -> tuple[re.Pattern[str], str]:
+    return re.compile(pattern, re.IGNORECASE), op
+
+
+# (pattern, operation on the height of the structure referred to)
 _MODIFY = [
-    # (pattern, how the number changes the height of the structure referred to)
-    (re.compile(r"\b(?:add|put|stack|place|pile)\s+(\w+)\s+(?:more|extra|additional)\s+"
-                r"(?:cubes?|levels?|layers?|parts?|blocks?|steps?)\b", re.I), "+"),
-    (re.compile(r"\bmake\s+(?:it|them)\s+(\w+)\s+(?:more\s+)?(?:cubes?\s+|levels?\s+|layers?\s+)?"
-                r"(?:taller|higher)\b", re.I), "+"),
-    (re.compile(r"\braise\s+(?:it|them)\s+by\s+(another|one\s+more|\w+)\s+(?:more\s+)?"
-                r"(?:layers?|levels?|cubes?)\b", re.I), "+"),
-    (re.compile(r"\b(?:keep\s+adding|add)\s+(?:steps|levels|layers|cubes)\s+until\s+(?:it|there)\s+"
-                r"(?:has|is|are)\s+(\w+)", re.I), "="),
-    (re.compile(r"\btake\s+(?:the\s+)?top\s+(\w+)\s+(?:cubes?\s+|levels?\s+)?off\b", re.I), "-"),
-]  # fmt: skip
+    _op(r"\b(?:add|put|stack|place|pile)\s+" + _N + r"\s+(?:more|extra|additional)" + _UNIT, "+"),
+    _op(r"\b(?:add|put|stack|place)\s+" + _N + _UNIT + r"\s+(?:to|on|onto)\s+" + _REF + r"\b", "+"),
+    _op(
+        r"\badd\s+(?:a|one|another)\s+(?:second|third|fourth|fifth|new|further|extra|more)?"
+        r"\s*(?:layer|level|tier|storey|course)\b",
+        "+1",
+    ),
+    _op(
+        r"\bmake\s+(?:it|them)\s+" + _N + r"\s+(?:more\s+)?(?:cubes?\s+|levels?\s+|layers?\s+)?"
+        r"(?:taller|higher)\b",
+        "+",
+    ),
+    _op(r"\b(?:raise|extend|grow)\s+(?:it|them)\s+by\s+" + _N + _UNIT, "+"),
+    _op(
+        r"\b(?:keep\s+adding|add)\s+(?:steps|levels|layers|cubes)\s+until\s+(?:it|there)\s+"
+        r"(?:has|is|are)\s+" + _N,
+        "=",
+    ),
+    _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
+    _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
+    _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
+    _op(
+        r"\b(?:take|knock|lift)\s+(?:off\s+)?(?:the\s+)?top\s+"
+        + _N
+        + r"?\s*(?:cubes?\s+|levels?\s+)?off\b",
+        "-",
+    ),
+    _op(
+        r"\b(?:take|knock|lift|remove)\s+(?:off\s+)?the\s+top\s+(cube|one|level|layer)\b"
+        r"(?:\s+off)?",
+        "-1",
+    ),
+]
 _LEGS = re.compile(r"\blegs?\b", re.IGNORECASE)
 _TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
 
@@ -528,38 +621,46 @@ def _copies(spec: Spec, text: str, st: _State) -> Spec:
     return spec.model_copy(update={"structures": tuple(out)})
 
 
-def _modify(p: _Phrase, before: list[_Phrase], st: _State) -> _Phrase | None:
-    """ "then add two more cubes to it", "make it two taller": change the last structure."""
+def _modify(p: _Phrase, before: list[_Phrase], structures: list[StructureSpec], st: _State) -> bool:
+    """ "then add two more cubes to it", "make it two taller": change an earlier structure."""
     built = [q for q in before if q.spec is not None and q.count]
     if not built:
-        return None
+        return False
     for pattern, op in _MODIFY:
         m = pattern.search(p.text)
         if not m:
             continue
-        word = (m.group(1) or "").lower()
-        word = "1" if word in ("another", "one more", "a", "an") else word
-        value = words_to_numbers([word])[0]
-        if not value.isdigit():
-            return None
-        n = int(value)
+        if op in ("+1", "-1"):
+            n, op = 1, op[0]
+        else:
+            word = re.sub(r"\s+", " ", (m.group(1) or "1").lower())
+            word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
+                    "triple": "3"}.get(word, word)  # fmt: skip
+            value = words_to_numbers([word])[0]
+            if not value.isdigit():
+                return False
+            n = int(value)
         target = built[-1]
-        assert target.spec is not None
-        last = target.spec.structures[-1]
+        index = target.first + target.count - 1
+        ordinal = re.search(r"\bthe\s+(first|second|third|last)\b", p.text, re.I)
+        if ordinal and target.count > 1:
+            pick = {"first": 0, "second": 1, "third": 2, "last": target.count - 1}
+            index = target.first + min(pick[ordinal.group(1).lower()], target.count - 1)
+        last = structures[index]
         key = "steps" if last.shape == "staircase" else "height"
         now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
-        new = {"+": now + n, "-": now - n, "=": n}[op]
+        new = {"+": now + n, "-": now - n, "=": n, "*": now * n}[op]
         if new < 1:
-            return None
-        shape = "block" if last.shape == "grid" and key == "height" and new > 1 else last.shape
-        changed = last.model_copy(update={key: new, "shape": shape})
-        target.spec = target.spec.model_copy(
-            update={"structures": (*target.spec.structures[:-1], changed)}
-        )
-        st.notes.append(f"'{m.group(0)}': the {last.shape} now has {key} {new}")
+            return False
+        shape = last.shape
+        if key == "height" and new > 1 and shape in ("grid", "row"):
+            shape = "block" if shape == "grid" else "wall"
+        structures[index] = last.model_copy(update={key: new, "shape": shape})
+        st.notes.append(f"'{m.group(0).strip()}': the {last.shape} now has {key} {new}")
         p.count = 0
-        return target
-    return None
+        p.modified = True
+        return True
+    return False
 
 
 def _rewrite(text: str, st: _State) -> str:
@@ -893,9 +994,7 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             continue
         if k in joiners and all(w in _BEAMS or w in lx.PART_WORDS or w == "top" for w in content):
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
-        changed = _modify(p, phrases[:k], st)
-        if changed is not None and changed.spec is not None:
-            structures[changed.first + changed.count - 1] = changed.spec.structures[-1]
+        if _modify(p, phrases[:k], structures, st):
             continue
         try:
             spec, unused = parse_phrase(p.text, st.cell)
@@ -955,8 +1054,8 @@ def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
         return _target(before, built[-1])
     if (
         len(words_) <= 2
-        and words_[-1] in _GENERIC | set(lx.SHAPE_WORDS)
-        and p.text.lower().startswith("the")
+        and words_[-1] in _GENERIC | _BASES | set(lx.SHAPE_WORDS)
+        and p.text.lower().startswith(("the", "its"))
     ):
         noun = words_[-1]
         if noun in ("base", "foundation", "bottom", "first", "platform", "plinth"):
@@ -969,6 +1068,7 @@ def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
         if family is None:
             return _target(before, built[-1])  # "the structure", "the other one"
         return None  # "the tower" named for the first time: a structure of its own
+    return None
 
 
 def _target(phrases: list[_Phrase], j: int) -> int:
@@ -1070,6 +1170,8 @@ def _relate(
     joiners = {r.object for r in rels if r.kind == "joined"}
     for r in rels:
         subj = r.subject
+        if phrases[subj].modified or (r.object is not None and phrases[r.object].modified):
+            continue  # "add a third layer on it": already a change of that structure
         if r.kind == "on" and subj in joiners:
             continue  # "joined by a bridge on top": the joining beam lies on top anyway
         obj = built(r.object, r.subject)

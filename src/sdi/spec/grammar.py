@@ -822,8 +822,8 @@ class _Parser:
                             "standing",
                             "freestanding",
                         )
-                        or (self.toks[m].used and m == h.index)
-                        for m in range(k + 1, h.index + 1)
+                        or (m == h.index and m < len(self.toks) and self.toks[m].used)
+                        for m in range(k + 1, min(h.index + 1, len(self.toks)))
                     )
                     and h.plural
                 ):
