@@ -67,7 +67,8 @@ def violations_table(violations: tuple[Violation, ...] | list[Violation], limit:
     table.add_column("hint", style="yellow")
     for v in list(violations)[:limit]:
         ids = ", ".join(v.objects[:4]) + (" …" if len(v.objects) > 4 else "")
-        table.add_row(v.constraint.value, ids, v.message, v.hint)
+        # Text, not markup: a message such as "quaternion [w, x, y, z]" is shown as written.
+        table.add_row(*(Text(cell) for cell in (v.constraint.value, ids, v.message, v.hint)))
     if len(violations) > limit:
         table.caption = f"(+{len(violations) - limit} more; use --json for all)"
     return table

@@ -15,10 +15,11 @@ All lengths are metres, all angles radians unless a name says otherwise.
 from __future__ import annotations
 
 import os
+import re
 import tomllib
 from functools import cached_property
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
@@ -26,10 +27,23 @@ from sdi.errors import InputError
 
 Vec2 = tuple[float, float]
 Vec3 = tuple[float, float, float]
+Length = Annotated[float, Field(gt=0)]
+"""A length that must be > 0, metres."""
+Gap = Annotated[float, Field(ge=0)]
+"""A gap or tolerance that must be ≥ 0, metres."""
+Lengths2 = tuple[Length, Length]
+Lengths3 = tuple[Length, Length, Length]
 
 
 class _Frozen(BaseModel):
-    model_config = ConfigDict(frozen=True, extra="forbid")
+    """Frozen, no unknown keys, every number finite (no NaN or infinity)."""
+
+    model_config = ConfigDict(frozen=True, extra="forbid", allow_inf_nan=False)
+
+
+def _ordered_range(name: str, lo: float, hi: float) -> None:
+    if not lo < hi:
+        raise ValueError(f"{name}: the first value must be below the second, got [{lo}, {hi}]")
 
 
 class Workspace(_Frozen):
@@ -47,7 +61,7 @@ class Workspace(_Frozen):
         for axis in "xyz":
             lo, hi = getattr(self, f"{axis}_min"), getattr(self, f"{axis}_max")
             if not lo < hi:
-                raise ValueError(f"workspace.{axis}_min ({lo}) must be below {axis}_max ({hi})")
+                raise ValueError(f"{axis}_min: must be below {axis}_max ({hi}), got {lo}")
         return self
 
     @property
@@ -68,9 +82,11 @@ class VacuumGripper(_Frozen):
 
     kind: Literal["vacuum"] = "vacuum"
     name: str = "VGC10"
-    min_face: float = Field(0.04, description="smallest top-face edge the cup pattern seals on, m")
-    body_half_extents: Vec2 = Field((0.05, 0.05), description="body footprint half sizes x, y, m")
-    body_clearance: float = Field(
+    min_face: Length = Field(0.04, description="smallest top-face edge the cup pattern seals on, m")
+    body_half_extents: Lengths2 = Field(
+        (0.05, 0.05), description="body footprint half sizes x, y, m"
+    )
+    body_clearance: Gap = Field(
         0.02, description="height of the body's underside above the gripped part's top face, m"
     )
 
@@ -80,13 +96,13 @@ class ParallelGripper(_Frozen):
 
     kind: Literal["parallel"] = "parallel"
     name: str = "2FG7"
-    max_opening: float = Field(0.073, description="widest finger opening, m")
-    finger_thickness: float = Field(0.010, description="finger thickness along β, m")
-    finger_width: float = Field(0.020, description="finger width across β, m")
-    clearance: float = Field(0.004, description="free space each side beyond the part face, m")
-    grip_depth: float = Field(0.0175, description="deepest pad reach below the part top, m")
-    finger_length: float = Field(0.0445, description="fingertip to gripper body, m")
-    body_half_extents: Vec2 = Field(
+    max_opening: Length = Field(0.073, description="widest finger opening, m")
+    finger_thickness: Length = Field(0.010, description="finger thickness along β, m")
+    finger_width: Length = Field(0.020, description="finger width across β, m")
+    clearance: Gap = Field(0.004, description="free space each side beyond the part face, m")
+    grip_depth: Length = Field(0.0175, description="deepest pad reach below the part top, m")
+    finger_length: Length = Field(0.0445, description="fingertip to gripper body, m")
+    body_half_extents: Lengths2 = Field(
         (0.045, 0.0355), description="body footprint half sizes along β and across β, m"
     )
 
@@ -98,7 +114,13 @@ class SupplyArea(_Frozen):
     robot: str
     x_range: Vec2
     y_range: Vec2
-    pitch: float = Field(0.08, description="spacing of the part grid in the area, m")
+    pitch: Length = Field(0.08, description="spacing of the part grid in the area, m")
+
+    @model_validator(mode="after")
+    def _ordered(self) -> SupplyArea:
+        _ordered_range("x_range", *self.x_range)
+        _ordered_range("y_range", *self.y_range)
+        return self
 
 
 class RobotPlacement(_Frozen):
@@ -111,11 +133,11 @@ class RobotPlacement(_Frozen):
 
 
 class Tolerances(_Frozen):
-    contact: float = Field(0.001, description="ε of the paper's contact predicate, m")
-    support_overlap: float = Field(
+    contact: Gap = Field(0.001, description="ε of the paper's contact predicate, m")
+    support_overlap: Gap = Field(
         0.005, description="least footprint overlap on each axis for support from below, m"
     )
-    stability_margin: float = Field(
+    stability_margin: Gap = Field(
         0.002, description="least distance of a centre of mass inside its support polygon, m"
     )
 
@@ -132,7 +154,7 @@ class DesignDefaults(_Frozen):
     """Where and how generators place structures when the command does not say."""
 
     anchor: Vec2 = Field((0.45, 0.30), description="default footprint centre x, y, m")
-    structure_gap: float = Field(0.10, description="gap between separate structures, m")
+    structure_gap: Gap = Field(0.10, description="gap between separate structures, m")
     regions: dict[str, Vec2] = Field(
         default_factory=lambda: {
             "centre": (0.45, 0.30),
@@ -149,11 +171,21 @@ class DesignDefaults(_Frozen):
     )
 
 
+def _unique(table: str, names: list[str]) -> None:
+    seen: set[str] = set()
+    for i, name in enumerate(names):
+        if name in seen:
+            raise ValueError(
+                f"{table}[{i}].name: duplicate name {name!r}; every name must be unique"
+            )
+        seen.add(name)
+
+
 class CellConfig(_Frozen):
     """Everything the symbolic core needs to know about the cell."""
 
     workspace: Workspace = Workspace()
-    part_types: dict[str, Vec3] = Field(
+    part_types: dict[str, Lengths3] = Field(
         default_factory=lambda: {"cube": (0.05, 0.05, 0.05), "beam": (0.15, 0.05, 0.05)},
         description="named part sizes (x, y, z), m",
     )
@@ -179,12 +211,18 @@ class CellConfig(_Frozen):
         return self.part_types["cube"]
 
     @model_validator(mode="after")
-    def _needs_cube(self) -> CellConfig:
-        for name, size in self.part_types.items():
-            if min(size) <= 0:
-                raise ValueError(f"part_types.{name}: every edge must be > 0 m, got {list(size)}")
+    def _consistent(self) -> CellConfig:
         if "cube" not in self.part_types:
             raise ValueError("part_types must define 'cube', the default part")
+        _unique("robots", [r.name for r in self.robots])
+        _unique("supply_areas", [a.name for a in self.supply_areas])
+        robots = {r.name for r in self.robots}
+        for i, area in enumerate(self.supply_areas):
+            if area.robot not in robots:
+                raise ValueError(
+                    f"supply_areas[{i}].robot: no robot named {area.robot!r}; "
+                    f"the cell has {sorted(robots)}"
+                )
         return self
 
     @classmethod
@@ -194,15 +232,62 @@ class CellConfig(_Frozen):
         if not path:
             return cls()
         path = Path(path)
+        fix = "give --cell a TOML file (or unset $SDI_CELL)"
         try:
             data: dict[str, Any] = tomllib.loads(path.read_text(encoding="utf-8"))
         except FileNotFoundError:
-            raise InputError(f"no such cell configuration file: {path}") from None
+            raise InputError(f"no such cell configuration file: {path}; {fix}") from None
+        except IsADirectoryError:
+            raise InputError(f"{path} is a folder, not a cell configuration; {fix}") from None
+        except UnicodeDecodeError:
+            raise InputError(f"{path} is not UTF-8 text; {fix}") from None
+        except OSError as exc:
+            raise InputError(f"cannot read {path}: {exc.strerror or exc}; {fix}") from None
         except tomllib.TOMLDecodeError as exc:
             raise InputError(f"{path} is not valid TOML: {exc}") from None
+        except RecursionError:
+            raise InputError(f"{path} is nested too deeply to be a cell configuration") from None
+        return cls.from_dict(data)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> CellConfig:
+        """Validate a parsed TOML document; errors name the TOML key (``workspace.x_max``)."""
         try:
             return cls.model_validate(data)
         except ValidationError as exc:
-            first = exc.errors()[0]
-            field = ".".join(str(x) for x in first["loc"])
-            raise InputError(first["msg"].removeprefix("Value error, "), field=field) from None
+            raise _describe(exc.errors()[0]) from None
+
+
+def _key(loc: tuple[int | str, ...]) -> str:
+    key = ""
+    for item in loc:
+        key += f"[{item}]" if isinstance(item, int) else (f".{item}" if key else str(item))
+    return key
+
+
+def _describe(error: Any) -> InputError:
+    """One `ValidationError` entry as an `InputError` naming the TOML key and the fix."""
+    loc = tuple(x for x in error["loc"] if not (isinstance(x, str) and x.startswith("function-")))
+    kind, got, ctx = error["type"], error.get("input"), error.get("ctx") or {}
+    if kind == "finite_number":
+        message = f"must be a finite number, got {got}"
+    elif kind in ("greater_than", "greater_than_equal", "less_than_equal", "less_than"):
+        bound = {"greater_than": "> ", "greater_than_equal": "≥ ", "less_than": "< ",
+                 "less_than_equal": "≤ "}[kind]  # fmt: skip
+        message = f"must be {bound}{next(iter(ctx.values()))}, got {got}"
+    elif kind == "extra_forbidden":
+        section = _key(loc[:-1])
+        message = f"unknown key{f' in [{section}]' if section else ''}; check its spelling"
+    elif kind in ("float_parsing", "float_type", "int_parsing", "int_type", "int_from_float"):
+        message = f"must be a number, got {got!r}"
+    else:
+        message = error["msg"].removeprefix("Value error, ")
+    # Our own validators start their message with the key inside the section.
+    named = _OWN_KEY.match(message)
+    if named:
+        key = ".".join(k for k in (_key(loc), named[1]) if k)
+        return InputError(named[2], field=key)
+    return InputError(message, field=_key(loc) or None)
+
+
+_OWN_KEY = re.compile(r"^([A-Za-z_][\w\[\].]*): (.*)$", re.DOTALL)
