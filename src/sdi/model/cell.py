@@ -27,12 +27,19 @@ from sdi.errors import InputError
 
 Vec2 = tuple[float, float]
 Vec3 = tuple[float, float, float]
-Length = Annotated[float, Field(gt=0)]
+REACH = 1000.0
+"""Largest |coordinate| and length in a cell, m (parts obey the same bound, `MAX_COORDINATE`)."""
+Coord = Annotated[float, Field(ge=-REACH, le=REACH)]
+"""A world coordinate, metres."""
+Length = Annotated[float, Field(gt=0, le=REACH)]
 """A length that must be > 0, metres."""
-Gap = Annotated[float, Field(ge=0)]
+Gap = Annotated[float, Field(ge=0, le=REACH)]
 """A gap or tolerance that must be ≥ 0, metres."""
+Coords2 = tuple[Coord, Coord]
 Lengths2 = tuple[Length, Length]
-Lengths3 = tuple[Length, Length, Length]
+PartEdge = Annotated[float, Field(gt=0, le=10.0)]
+"""An edge of a part type, metres (parts are at most 10 m, like `Part.size`)."""
+Lengths3 = tuple[PartEdge, PartEdge, PartEdge]
 
 
 class _Frozen(BaseModel):
@@ -49,12 +56,12 @@ def _ordered_range(name: str, lo: float, hi: float) -> None:
 class Workspace(_Frozen):
     """The assembly workspace cuboid W (paper eq. 6). Every part's box must lie inside it."""
 
-    x_min: float = 0.20
-    x_max: float = 0.80
-    y_min: float = 0.05
-    y_max: float = 0.55
-    z_min: float = 0.0
-    z_max: float = 0.50
+    x_min: Coord = 0.20
+    x_max: Coord = 0.80
+    y_min: Coord = 0.05
+    y_max: Coord = 0.55
+    z_min: Coord = 0.0
+    z_max: Coord = 0.50
 
     @model_validator(mode="after")
     def _ordered(self) -> Workspace:
@@ -112,8 +119,8 @@ class SupplyArea(_Frozen):
 
     name: str
     robot: str
-    x_range: Vec2
-    y_range: Vec2
+    x_range: Coords2
+    y_range: Coords2
     pitch: Length = Field(0.08, description="spacing of the part grid in the area, m")
 
     @model_validator(mode="after")
@@ -128,8 +135,10 @@ class RobotPlacement(_Frozen):
 
     name: str
     model: Literal["irb120", "irb1600"]
-    base_xy: Vec2 = Field(description="world position of the base, m")
-    base_yaw_deg: float = Field(0.0, description="rotation of the base about z, degrees")
+    base_xy: Coords2 = Field(description="world position of the base, m")
+    base_yaw_deg: float = Field(
+        0.0, ge=-360.0, le=360.0, description="rotation of the base about z, degrees"
+    )
 
 
 class Tolerances(_Frozen):
@@ -146,16 +155,19 @@ class Limits(_Frozen):
     max_parts: int = Field(10_000, ge=1, description="largest layout accepted")
     max_command_chars: int = Field(2_000, ge=1, description="longest command accepted")
     phase_seconds: float = Field(
-        300.0, gt=0, description="wall-clock limit of one orchestrator phase (design, plan, …), s"
+        300.0,
+        gt=0,
+        le=1e6,
+        description="wall-clock limit of one orchestrator phase (design, plan, …), s",
     )
 
 
 class DesignDefaults(_Frozen):
     """Where and how generators place structures when the command does not say."""
 
-    anchor: Vec2 = Field((0.45, 0.30), description="default footprint centre x, y, m")
+    anchor: Coords2 = Field((0.45, 0.30), description="default footprint centre x, y, m")
     structure_gap: Gap = Field(0.10, description="gap between separate structures, m")
-    regions: dict[str, Vec2] = Field(
+    regions: dict[str, Coords2] = Field(
         default_factory=lambda: {
             "centre": (0.45, 0.30),
             "left": (0.45, 0.45),
@@ -217,7 +229,8 @@ class CellConfig(_Frozen):
         _unique("robots", [r.name for r in self.robots])
         _unique("supply_areas", [a.name for a in self.supply_areas])
         robots = {r.name for r in self.robots}
-        for i, area in enumerate(self.supply_areas):
+        given = "supply_areas" in self.model_fields_set  # the defaults name the default robots
+        for i, area in enumerate(self.supply_areas if given else ()):
             if area.robot not in robots:
                 raise ValueError(
                     f"supply_areas[{i}].robot: no robot named {area.robot!r}; "
@@ -280,6 +293,14 @@ def _describe(error: Any) -> InputError:
         message = f"unknown key{f' in [{section}]' if section else ''}; check its spelling"
     elif kind in ("float_parsing", "float_type", "int_parsing", "int_type", "int_from_float"):
         message = f"must be a number, got {got!r}"
+    elif kind in ("tuple_type", "list_type", "too_short", "too_long"):
+        message = f"must be a list of numbers of the right length, got {got!r}"
+    elif kind == "missing" and loc and isinstance(loc[-1], int):
+        loc, message = loc[:-1], "too few numbers in the list"
+    elif kind == "missing":
+        message = "is required; add it"
+    elif kind in ("dict_type", "model_type", "model_attributes_type"):
+        message = f"must be a TOML table of keys and values, got {got!r}"
     else:
         message = error["msg"].removeprefix("Value error, ")
     # Our own validators start their message with the key inside the section.

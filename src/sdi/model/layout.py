@@ -211,7 +211,7 @@ def load_layout(
     except IsADirectoryError:
         raise InputError(f"{path} is a folder; give a layout JSON file") from None
     except UnicodeDecodeError:
-        raise InputError(f"{path} is not UTF-8 text; give a layout JSON file") from None
+        raise InputError(f"cannot read {path}: not UTF-8 text; give a layout JSON file") from None
     except OSError as exc:
         raise InputError(f"cannot read {path}: {exc.strerror or exc}; check the path") from None
     return parse_layout(text, max_parts=max_parts)
