@@ -48,7 +48,7 @@ test: $(STAMP) $(LOCAL_STAMP)
 bench: $(STAMP) $(LOCAL_STAMP)
 	$(PY) benchmarks/inspector_scaling.py
 	$(PY) benchmarks/plan_latency.py
-	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json
+	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json --force
 	$(PY) benchmarks/methods.py --backend rules
 	$(PY) benchmarks/methods.py --backend local --phase-seconds 60
 	$(PY) benchmarks/critic_ablation.py --backend local
