@@ -114,9 +114,10 @@ def _sqlite_reason(exc: sqlite3.Error) -> str:
     return f"{text}; give another --db"
 
 
-def _database(path: Path | None, *, must_exist: bool) -> Path:
+def _database(path: Path | None, *, run_id: str | None = None) -> Path:
     """The run database (`path`, $SDI_DB or the user data dir), checked before SDI opens it:
-    not a folder, and an SQLite file if it exists. `must_exist` refuses a missing one."""
+    not a folder, SDI's SQLite file if it exists. Given the `run_id` it must hold, a missing
+    database is refused (never created empty)."""
     from sdi.orchestrator import default_db
 
     db = path or default_db()
@@ -124,9 +125,11 @@ def _database(path: Path | None, *, must_exist: bool) -> Path:
     if db.is_dir():
         raise InputError(f"{db} is a folder; give a database file", field="--db")
     if not db.exists():
-        if must_exist:
+        if run_id is not None:
             raise InputError(
-                f"no run database at {db}; give the --db of an earlier `sdi run`", field="--db"
+                f"no run database at {db}, so no run {run_id!r}; "
+                "give the --db of the `sdi run` that printed it",
+                field="--db",
             )
         if path is not None and not db.parent.is_dir():
             raise InputError(f"folder {db.parent} does not exist; create it first", field="--db")
@@ -134,11 +137,16 @@ def _database(path: Path | None, *, must_exist: bool) -> Path:
     try:
         conn = sqlite3.connect(f"file:{db}?mode=ro", uri=True, timeout=2.0)
         try:
-            conn.execute("SELECT count(*) FROM sqlite_master").fetchone()
+            tables = {row[0] for row in conn.execute("SELECT name FROM sqlite_master")}
         finally:
             conn.close()
     except sqlite3.Error as exc:
         raise InputError(f"{db}: {_sqlite_reason(exc)}", field="--db") from None
+    if tables and not tables & {"messages", "checkpoints"}:
+        raise InputError(
+            f"{db} is another program's SQLite database, not SDI's; give another --db",
+            field="--db",
+        )
     return db
 
 
@@ -540,7 +548,7 @@ def _describe_failure(failure: Any) -> str:
     head = failure.get("message") or failure.get("error") or failure.get("type") or "failed"
     details = [
         f"{key} {failure[key]}"
-        for key in ("error_type", "kind", "part_id", "step", "phase")
+        for key in ("error_type", "robot", "part_id", "step", "scenario")
         if failure.get(key) is not None
     ]
     return f"{head}" + (f" ({', '.join(details)})" if details else "")
@@ -591,7 +599,7 @@ def run_cmd(
     _check_faults(fault, json_out)
     cell = _cell(cell_path, json_out)
     robots = _arms(arms, cell, json_out)
-    db = _database(db, must_exist=False)
+    db = _database(db)
     with ExitStack() as stack:
         model = _model(backend, json_out, stack)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
@@ -637,7 +645,7 @@ def resume_cmd(
         decision = {"action": "reject"}
     cell = _cell(cell_path, json_out)
     robots = _arms(arms, cell, json_out)
-    db = _database(db, must_exist=True)
+    db = _database(db, run_id=run_id)
     with ExitStack() as stack:
         model = _model(backend, json_out, stack)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
@@ -665,7 +673,7 @@ def log_cmd(
     """The message-bus audit trail of a run: who told whom what, in order."""
     from sdi.orchestrator import MessageBus
 
-    path = _database(db, must_exist=True)
+    path = _database(db, run_id=run_id)
     bus = MessageBus(path)
     history = bus.history(run_id)
     if not history:
