@@ -155,3 +155,26 @@ def test_bench_out_is_checked_before_the_suite_runs(tmp_path):
     proc = run("bench", "--out", str(tmp_path / "no" / "results.json"))
     assert proc.returncode == 2 and "--out: folder" in proc.stderr
     assert "Traceback" not in proc.stderr
+
+
+def test_a_re_export_with_fewer_arms_leaves_no_module_of_the_other_arm(tmp_path):
+    layout = tmp_path / "tower.json"
+    layout.write_text(
+        json.dumps(
+            {"objects": [{"id": f"c{k}", "position": [0.4, 0.3, 0.025 + 0.05 * k]} for k in (0, 1)]}
+        )
+    )
+    rapid, program = tmp_path / "rapid", tmp_path / "prog.py"
+    earlier = Outputs()  # what an earlier two-arm export left behind
+    earlier.folder(rapid, "--rapid", patterns=("SDI_*.mod",))
+    earlier.file(program, "--python")
+    earlier.commit(
+        {rapid / "SDI_IRB120.mod": "old", rapid / "SDI_IRB1600.mod": "old", program: "old"}
+    )
+    proc = run("export", str(layout), "--arms", "irb120", "--rapid", str(rapid),
+               "--python", str(program))  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    assert sorted(p.name for p in rapid.iterdir()) == [MANIFEST, "SDI_IRB120.mod"]
+    assert (rapid / "SDI_IRB120.mod").read_text().startswith("MODULE SDI_IRB120")
+    assert program.read_text() != "old" and written_by_sdi(program)
+    assert leftovers(tmp_path) == []
