@@ -124,6 +124,15 @@ def test_a_folder_holding_outputs_sdi_did_not_write_is_refused(tmp_path):
     assert (rapid / "SDI_IRB120.mod").read_text() == "generated"
 
 
+def test_a_file_may_go_into_the_output_folder_the_commit_creates(tmp_path):
+    rapid = tmp_path / "robot"
+    outputs = Outputs()
+    outputs.folder(rapid, "--rapid", patterns=("SDI_*.mod",))
+    outputs.file(rapid / "prog.py", "--python")
+    outputs.commit({rapid / "SDI_IRB120.mod": "MODULE", rapid / "prog.py": "print()"})
+    assert written_by_sdi(rapid / "prog.py") and written_by_sdi(rapid / "SDI_IRB120.mod")
+
+
 def test_a_folder_path_that_is_a_file_is_refused(tmp_path):
     path = tmp_path / "report"
     path.write_text("x")

@@ -107,7 +107,9 @@ class Outputs:
             raise OutputError(f"{path} is a folder; give a file name", field=option)
         if path.name == MANIFEST:
             raise OutputError(f"{MANIFEST} is SDI's manifest; choose another name", field=option)
-        self._check_folder(path.parent, option)
+        pending = self._folders.get(path.parent)
+        if pending is None or not pending.create:  # else: a folder this commit creates
+            self._check_folder(path.parent, option)
         if path.exists() or path.is_symlink():
             self._check_replace(path, option)
         self._files[path] = option
