@@ -405,9 +405,14 @@ def invocations(draw: st.DrawFn, base: Path) -> list[str]:
     if sub in ("verify", "sequence", "execute", "export"):
         args.append(draw(hostile_path(base, "layout.json")))
     if sub in ("resume", "log"):
-        args.append(draw(st.one_of(TEXT.filter(lambda t: not t.startswith("-")), st.just("r1"))))
-    if sub in ("resume", "log", "run") and draw(st.booleans()):
-        args += ["--db", draw(hostile_path(base, "runs.sqlite"))]
+        run_ids = st.one_of(TEXT.filter(lambda t: not t.startswith("-")), st.just("r1"))
+        args.append(draw(st.one_of(st.just("r1"), run_ids)))
+    if sub in ("resume", "log") or (sub == "run" and draw(st.booleans())):
+        kind = draw(st.sampled_from(["good", "hostile"]))
+        db = base / "runs.sqlite"
+        if kind == "good":
+            db.write_bytes(_paused_run_db())
+        args += ["--db", str(db) if kind == "good" else draw(hostile_path(base, "runs.sqlite"))]
     if sub not in ("skills", "log") and draw(st.booleans()):
         args += ["--cell", draw(hostile_path(base, "cell.toml"))]
     if sub in ("plan", "bench") and draw(st.booleans()):
