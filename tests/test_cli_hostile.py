@@ -444,7 +444,7 @@ FUZZ = {"examples": 0, "crashes": 0}
 
 
 @settings(
-    max_examples=int(os.environ.get("SDI_FUZZ_EXAMPLES", "120")),
+    max_examples=int(os.environ.get("SDI_FUZZ_EXAMPLES", "300")),
     deadline=None,
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
 )
