@@ -290,7 +290,10 @@ def _describe(error: Any) -> InputError:
         message = f"must be {bound}{next(iter(ctx.values()))}, got {got}"
     elif kind == "extra_forbidden":
         section = _key(loc[:-1])
-        message = f"unknown key{f' in [{section}]' if section else ''}; check its spelling"
+        model = _SECTIONS.get(str(loc[0]) if len(loc) > 1 else "")
+        known = f"; the keys are {', '.join(model.model_fields)}" if model else ""
+        where = f" in [{section}]" if section else ""
+        message = f"unknown key{where}; check its spelling{known}"
     elif kind in ("float_parsing", "float_type", "int_parsing", "int_type", "int_from_float"):
         message = f"must be a number, got {got!r}"
     elif kind in ("tuple_type", "list_type", "too_short", "too_long"):
@@ -312,3 +315,15 @@ def _describe(error: Any) -> InputError:
 
 
 _OWN_KEY = re.compile(r"^([A-Za-z_][\w\[\].]*): (.*)$", re.DOTALL)
+
+
+_SECTIONS: dict[str, type[BaseModel]] = {
+    "": CellConfig,
+    "workspace": Workspace,
+    "tolerances": Tolerances,
+    "limits": Limits,
+    "design": DesignDefaults,
+    "robots": RobotPlacement,
+    "supply_areas": SupplyArea,
+}
+"""TOML sections → the model that reads them (to list the valid keys of a misspelt one)."""
