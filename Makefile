@@ -48,8 +48,8 @@ test: $(STAMP) $(LOCAL_STAMP)
 bench: $(STAMP) $(LOCAL_STAMP)
 	$(PY) benchmarks/inspector_scaling.py
 	$(PY) benchmarks/plan_latency.py
-	$(PY) benchmarks/language.py
-	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json
+	$(PY) benchmarks/language.py --set all
+	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json --force
 	$(PY) benchmarks/methods.py --backend rules
 	$(PY) benchmarks/methods.py --backend local --phase-seconds 60
 	$(PY) benchmarks/critic_ablation.py --backend local

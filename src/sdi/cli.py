@@ -1,12 +1,17 @@
 """The `sdi` command line. Thin: it parses, calls the library, prints.
 
 Exit codes: 0 success, 1 planning or verification failure, 2 bad input (the message names the
-field or part and the fix; no stack trace).
+field or part and the fix; no stack trace). One boundary (`_Boundary`) turns every `SDIError`
+and every OS or SQLite error on a path the user gave into that one line and exit 2. Every file
+is written through `sdi.outputs` (checked first, whole or not at all, no overwriting of files
+SDI did not write unless --force).
 """
 
 from __future__ import annotations
 
 import json
+import math
+import sqlite3
 import sys
 from contextlib import ExitStack
 from pathlib import Path
@@ -14,6 +19,8 @@ from typing import Annotated, Any, NoReturn
 
 import typer
 from rich.console import Console
+from rich.text import Text
+from typer.core import TyperGroup
 
 from sdi.errors import InputError, SDIError, SequencingError
 from sdi.inspector.analysis import Analysis
@@ -21,10 +28,45 @@ from sdi.inspector.sequencer import sequence as run_sequence
 from sdi.inspector.verifier import verify
 from sdi.model.cell import CellConfig
 from sdi.model.layout import load_layout
+from sdi.outputs import Outputs
 from sdi.pipeline import plan as run_plan
 from sdi.render import print_plan, violations_table
 
+
+class _Boundary(TyperGroup):
+    """The one error path of the CLI: a user's mistake is one line and exit 2, never a trace.
+
+    `SDIError`s that no command handled, and OS or SQLite errors on a path the user gave,
+    become ``error: <what>: <why>; <fix>`` on stderr (or one JSON object with ``--json``).
+    Anything else is a bug in SDI and keeps its traceback.
+    """
+
+    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
+        _invocation.clear()
+        _invocation["json"] = "--json" in args
+        return super().parse_args(ctx, args)
+
+    def invoke(self, ctx: Any) -> Any:
+        as_json = bool(_invocation.get("json"))
+        try:
+            return super().invoke(ctx)
+        except SDIError as exc:
+            _fail(str(exc), as_json)
+        except sqlite3.Error as exc:
+            db = _invocation.get("db", "the run database")
+            _fail(f"--db: {db}: {_sqlite_reason(exc)}", as_json)
+        except OSError as exc:
+            if exc.filename is None:
+                raise
+            _fail(f"{exc.filename}: {exc.strerror or exc}; check the path", as_json)
+
+
+_invocation: dict[str, object] = {}
+"""What the boundary needs to know about the command being run: ``json``, ``db``."""
+
+
 app = typer.Typer(
+    cls=_Boundary,
     add_completion=False,
     no_args_is_help=True,
     help="SDI: plain-language commands → verified, sequenced robot assembly plans.",
@@ -44,12 +86,110 @@ def _emit(data: dict[str, Any]) -> None:
     sys.stdout.write(json.dumps(data, indent=None) + "\n")
 
 
-def _bad_input(exc: SDIError, as_json: bool) -> NoReturn:
+def _line(console: Console, label: str, style: str, message: object) -> None:
+    """Print ``label message`` as one line; `message` is shown as is (never read as markup)."""
+    console.print(Text.assemble((label, style), " ", str(message)), soft_wrap=True)
+
+
+def _fail(message: str, as_json: bool) -> NoReturn:
     if as_json:
-        _emit({"status": "error", "error": str(exc)})
+        _emit({"status": "error", "error": message})
     else:
-        err.print(f"[bold red]error:[/bold red] {exc}")
+        _line(err, "error:", "bold red", message)
     raise typer.Exit(2)
+
+
+def _bad_input(exc: SDIError, as_json: bool) -> NoReturn:
+    _fail(str(exc), as_json)
+
+
+def _sqlite_reason(exc: sqlite3.Error) -> str:
+    text = str(exc)
+    if "locked" in text or "busy" in text:
+        return "the database is locked by another process; wait for it or use another --db"
+    if "not a database" in text or "malformed" in text:
+        return "not an SDI run database (damaged or another kind of file); give another --db"
+    if "unable to open" in text:
+        return "cannot open it (a folder, a missing folder or no permission); give a file path"
+    return f"{text}; give another --db"
+
+
+def _database(path: Path | None, *, run_id: str | None = None) -> Path:
+    """The run database (`path`, $SDI_DB or the user data dir), checked before SDI opens it:
+    not a folder, SDI's SQLite file if it exists. Given the `run_id` it must hold, a missing
+    database is refused (never created empty)."""
+    from sdi.orchestrator import default_db
+
+    db = path or default_db()
+    _invocation["db"] = str(db)
+    if db.is_dir():
+        raise InputError(f"{db} is a folder; give a database file", field="--db")
+    if not db.exists():
+        if run_id is not None:
+            raise InputError(
+                f"no run database at {db}, so no run {run_id!r}; "
+                "give the --db of the `sdi run` that printed it",
+                field="--db",
+            )
+        if path is not None and not db.parent.is_dir():
+            raise InputError(f"folder {db.parent} does not exist; create it first", field="--db")
+        return db
+    try:
+        conn = sqlite3.connect(f"file:{db}?mode=ro", uri=True, timeout=2.0)
+        try:
+            tables = {row[0] for row in conn.execute("SELECT name FROM sqlite_master")}
+        finally:
+            conn.close()
+    except sqlite3.Error as exc:
+        raise InputError(f"{db}: {_sqlite_reason(exc)}", field="--db") from None
+    if tables and not tables & {"messages", "checkpoints"}:
+        raise InputError(
+            f"{db} is another program's SQLite database, not SDI's; give another --db",
+            field="--db",
+        )
+    return db
+
+
+def _arms(arms: str | None, cell: CellConfig, as_json: bool) -> list[str] | None:
+    """The robots named by ``--arms`` (None: all); unknown names are bad input."""
+    if arms is None:
+        return None
+    names = [a.strip() for a in arms.split(",") if a.strip()]
+    known = [r.name for r in cell.robots]
+    unknown = [a for a in names if a not in known]
+    if unknown or not names:
+        message = f"unknown robots {unknown}" if unknown else "names no robot"
+        _fail(f"--arms: {message}; the cell has {', '.join(known)}", as_json)
+    return names
+
+
+def _read_edits(path: Path) -> Any:
+    """The edits JSON of ``--edit`` or the interactive ``e FILE``; bad files are bad input."""
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise InputError(f"no such file: {path}; check the path", field="edits") from None
+    except IsADirectoryError:
+        raise InputError(f"{path} is a folder; give an edits JSON file", field="edits") from None
+    except UnicodeDecodeError:
+        raise InputError(
+            f"{path} is not UTF-8 text; give an edits JSON file", field="edits"
+        ) from None
+    except OSError as exc:
+        raise InputError(f"cannot read {path}: {exc.strerror or exc}", field="edits") from None
+    except json.JSONDecodeError as exc:
+        raise InputError(
+            f"{path} is not valid JSON: {exc.msg} at line {exc.lineno}; "
+            'give a list of edits, e.g. [{"op": "translate", …}]',
+            field="edits",
+        ) from None
+    except RecursionError:
+        raise InputError(f"{path} is nested too deeply to be edits", field="edits") from None
+
+
+ForceOption = Annotated[
+    bool, typer.Option("--force", help="replace output files that SDI did not write")
+]
 
 
 def _cell(path: Path | None, as_json: bool) -> CellConfig:
@@ -73,9 +213,13 @@ def plan(
     method: Annotated[
         str, typer.Option("--method", help="a method of the paper's Table II")
     ] = "Hybrid",
+    force: ForceOption = False,
 ) -> None:
     """Plan a command end to end: spec → layout → verification → assembly sequence."""
     cell = _cell(cell_path, json_out)
+    outputs = Outputs(force=force)
+    if out_file is not None:
+        outputs.file(out_file, "--out")
     if backend == "rules" and method == "Hybrid":
         result = run_plan(command, cell)
     else:
@@ -89,9 +233,7 @@ def plan(
                 _bad_input(exc, json_out)
     data = result.to_json_dict()
     if out_file is not None and result.status == "success":
-        tmp = out_file.with_suffix(out_file.suffix + ".tmp")
-        tmp.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
-        tmp.replace(out_file)
+        outputs.commit({out_file: json.dumps(data, indent=2) + "\n"})
     if json_out:
         _emit(data)
     else:
@@ -144,12 +286,12 @@ def sequence_cmd(
                 {"status": "failure", "sequence": None, "error": str(exc), "blocked": exc.blocked}
             )
         else:
-            err.print(f"[bold red]no sequence:[/bold red] {exc}")
+            _line(err, "no sequence:", "bold red", exc)
         raise typer.Exit(1) from None
     if json_out:
         _emit({"status": "success", "sequence": order})
     else:
-        out.print(" → ".join(order))
+        out.print(Text(" → ".join(order)), soft_wrap=True)
 
 
 @app.command()
@@ -159,6 +301,7 @@ def bench(
     ] = None,
     json_out: JsonOption = False,
     cell_path: CellOption = None,
+    force: ForceOption = False,
 ) -> None:
     """Run the 70-command evaluation suite on the offline front end."""
     from rich.progress import Progress
@@ -167,20 +310,22 @@ def bench(
     from sdi.bench.suite import SUITE
 
     cell = _cell(cell_path, json_out)
+    outputs = Outputs(force=force)
+    if out_file is not None:
+        outputs.file(out_file, "--out")
     with Progress(console=err, transient=True) as progress:
         task = progress.add_task("commands", total=len(SUITE))
         result = run_suite(cell, progress=lambda *_: progress.advance(task))
     data = result.to_json_dict()
     if out_file is not None:
-        out_file.parent.mkdir(parents=True, exist_ok=True)
-        out_file.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
+        outputs.commit({out_file: json.dumps(data, indent=2) + "\n"})
     if json_out:
         _emit(data)
     else:
         out.print(result.markdown_table())
         for record in data["commands"]:
             if not record["accepted"]:
-                out.print(f"[red]✗[/red] {record['id']} {record['text']!r}: {record['reason']}")
+                _line(out, "✗", "red", f"{record['id']} {record['text']!r}: {record['reason']}")
 
 
 FaultOption = Annotated[
@@ -203,21 +348,30 @@ ArmsOption = Annotated[
 ]
 
 
-def _commission(layout_file: Path, cell_path: Path | None, arms: str | None, as_json: bool) -> Any:
-    from sdi.commission import commission
+def _commission(
+    layout_file: Path,
+    cell_path: Path | None,
+    arms: str | None,
+    as_json: bool,
+) -> Any:
+    """Check the cell, the arms and the layout (cheap, before anything heavy is imported),
+    then plan the job for the cell."""
     from sdi.errors import MotionPlanningError, UnverifiedPlanError
 
     cell = _cell(cell_path, as_json)
+    robots = _arms(arms, cell, as_json)
     layout, sequence = _load(layout_file, cell, as_json)
+    from sdi.commission import commission
+
     try:
-        return commission(layout, cell, sequence=sequence, arms=arms.split(",") if arms else None)
+        return commission(layout, cell, sequence=sequence, arms=robots)
     except UnverifiedPlanError as exc:
         if as_json:
             _emit({"status": "refused", "error": str(exc), "violations": exc.violations})
         else:
-            err.print(f"[bold red]refused:[/bold red] {exc}")
+            _line(err, "refused:", "bold red", str(exc).removeprefix("refused: "))
             for v in exc.violations:
-                err.print(f"  - {v}")
+                _line(err, "  -", "", v)
         raise typer.Exit(1) from None
     except InputError as exc:
         _bad_input(exc, as_json)
@@ -226,7 +380,7 @@ def _commission(layout_file: Path, cell_path: Path | None, arms: str | None, as_
         if as_json:
             _emit({"status": "failure", "error": str(exc), "event": event})
         else:
-            err.print(f"[bold red]motion planning failed:[/bold red] {exc}")
+            _line(err, "motion planning failed:", "bold red", exc)
         raise typer.Exit(1) from None
 
 
@@ -241,31 +395,34 @@ def execute_cmd(
     report_dir: Annotated[
         Path | None, typer.Option("--report", help="write report.json and deviation.png here")
     ] = None,
+    force: ForceOption = False,
 ) -> None:
     """Plan motion for a verified layout, execute it in simulation, monitor and report."""
-    from sdi.commission import execute
     from sdi.execute.faults import SCENARIOS
-    from sdi.monitor import plot_deviation
 
     _check_faults(fault, json_out)
-    if epsilon <= 0:
-        _bad_input(InputError("must be > 0 rad", field="--epsilon"), json_out)
+    if not (math.isfinite(epsilon) and epsilon > 0):
+        _fail(f"--epsilon: must be a finite number > 0 rad, got {epsilon}", json_out)
+    outputs = Outputs(force=force)
+    if report_dir is not None:
+        outputs.folder(report_dir, "--report", patterns=("report.json", "deviation.png"))
     plan = _commission(layout_file, cell_path, arms, json_out)
+    from sdi.commission import execute
+    from sdi.monitor.report import deviation_png
+
     result, report = execute(plan, epsilon=epsilon, faults=tuple(SCENARIOS[f] for f in fault or []))
     report = {"planning": plan.summary(), **report}
     if report_dir is not None:
-        report_dir.mkdir(parents=True, exist_ok=True)
-        (report_dir / "report.json").write_text(
-            json.dumps(report, indent=2) + "\n", encoding="utf-8"
-        )
+        files: dict[Path, bytes | str] = {
+            report_dir / "report.json": json.dumps(report, indent=2) + "\n"
+        }
         if result.executed and set(result.executed) == set(plan.motion.trajectories):
             from sdi.monitor import deviation
 
-            plot_deviation(
-                deviation(plan.motion.trajectories, result.executed),
-                epsilon,
-                report_dir / "deviation.png",
+            files[report_dir / "deviation.png"] = deviation_png(
+                deviation(plan.motion.trajectories, result.executed), epsilon
             )
+        outputs.commit(files)
     if json_out:
         _emit(report)
     else:
@@ -284,40 +441,37 @@ def export_cmd(
     ] = None,
     cell_path: CellOption = None,
     arms: ArmsOption = None,
+    force: ForceOption = False,
 ) -> None:
     """Export robot programs (ABB RAPID, abb-motion-program-exec Python) for a verified layout."""
+    if rapid is None and python is None:
+        _fail("give --rapid DIR and/or --python FILE", False)
+    outputs = Outputs(force=force)
+    if rapid is not None:
+        outputs.folder(rapid, "--rapid", patterns=("SDI_*.mod",))
+    if python is not None:
+        outputs.file(python, "--python")
+    plan = _commission(layout_file, cell_path, arms, False)
     from sdi.export import python_program, rapid_module
 
-    if rapid is None and python is None:
-        _bad_input(InputError("give --rapid DIR and/or --python FILE"), False)
-    plan = _commission(layout_file, cell_path, arms, False)
-    written = []
+    files: dict[Path, bytes | str] = {}
     if rapid is not None:
-        rapid.mkdir(parents=True, exist_ok=True)
         for name in plan.tasks.robots:
             if plan.tasks.for_robot(name):
-                path = rapid / f"SDI_{name.upper()}.mod"
-                path.write_text(
-                    rapid_module(plan.job, plan.tasks, plan.motion, plan.robots[name]),
-                    encoding="utf-8",
+                files[rapid / f"SDI_{name.upper()}.mod"] = rapid_module(
+                    plan.job, plan.tasks, plan.motion, plan.robots[name]
                 )
-                written.append(path)
     if python is not None:
-        python.parent.mkdir(parents=True, exist_ok=True)
-        python.write_text(
-            python_program(
-                plan.job,
-                plan.tasks,
-                plan.motion,
-                plan.robots,
-                command=str(layout_file),
-                filename=python.name,
-            ),
-            encoding="utf-8",
+        files[python] = python_program(
+            plan.job,
+            plan.tasks,
+            plan.motion,
+            plan.robots,
+            command=str(layout_file),
+            filename=python.name,
         )
-        written.append(python)
-    for path in written:
-        out.print(f"wrote {path}")
+    for path in outputs.commit(files):
+        _line(out, "wrote", "", path)
 
 
 BackendOption = Annotated[
@@ -354,17 +508,50 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
         out.print(f"sequence: {' → '.join(waiting.get('sequence') or [])}")
         answer = typer.prompt("Design review: [a]pprove, [e]dit FILE.json, [r]eject", default="a")
     elif kind == "pre_execute":
-        out.print(f"planned: {waiting.get('planning')}")
+        _line(out, "planned:", "bold", _describe_planning(waiting.get("planning")))
         answer = typer.prompt("Execute on the robots (sim)? [a]pprove / [r]eject", default="r")
     else:
-        out.print(f"[red]failure[/red]: {waiting.get('failure')} {waiting.get('violations')}")
+        _line(out, "failure:", "red", _describe_failure(waiting.get("failure")))
+        for v in waiting.get("violations") or []:
+            _line(out, "  -", "", v)
         answer = typer.prompt("Failure report: [r]etry, [e]dit FILE.json, [x] abort", default="x")
-    if answer.startswith("e"):
+    while answer.startswith("e"):
         path = answer.split(maxsplit=1)[1] if " " in answer else typer.prompt("edits file")
-        return {"action": "edit", "edits": json.loads(Path(path).read_text(encoding="utf-8"))}
+        try:
+            return {"action": "edit", "edits": _read_edits(Path(path.strip()))}
+        except InputError as exc:
+            _line(err, "error:", "bold red", exc)
+            answer = typer.prompt("[e]dit FILE.json again, or another answer", default="e")
     if kind == "failure_report":
         return {"action": "retry" if answer.startswith("r") else "abort"}
     return {"action": "approve" if answer.startswith("a") else "reject"}
+
+
+def _describe_planning(summary: Any) -> str:
+    """The pre-execution summary in words: steps per robot, makespan, parallel, notes."""
+    if not isinstance(summary, dict):
+        return str(summary)
+    per_robot = summary.get("steps_per_robot") or {}
+    robots = ", ".join(f"{name} {n}" for name, n in per_robot.items())
+    text = f"{summary.get('steps', '?')} pick-and-place steps" + (f" ({robots})" if robots else "")
+    if isinstance(summary.get("makespan_s"), int | float):
+        text += f", makespan {summary['makespan_s']:.1f} s"
+    text += ", arms in parallel" if summary.get("parallel") else ", one arm at a time"
+    notes = summary.get("notes") or []
+    return text + (f"; {'; '.join(str(n) for n in notes)}" if notes else "")
+
+
+def _describe_failure(failure: Any) -> str:
+    """A failure event in words: its message, kind, part and step when known."""
+    if not isinstance(failure, dict):
+        return "the design did not pass the Inspector" if failure is None else str(failure)
+    head = failure.get("message") or failure.get("error") or failure.get("type") or "failed"
+    details = [
+        f"{key} {failure[key]}"
+        for key in ("error_type", "robot", "part_id", "step", "scenario")
+        if failure.get(key) is not None
+    ]
+    return f"{head}" + (f" ({', '.join(details)})" if details else "")
 
 
 def _drive(orch: Any, status: Any, as_json: bool) -> Any:
@@ -411,9 +598,11 @@ def run_cmd(
 
     _check_faults(fault, json_out)
     cell = _cell(cell_path, json_out)
+    robots = _arms(arms, cell, json_out)
+    db = _database(db)
     with ExitStack() as stack:
         model = _model(backend, json_out, stack)
-        orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
+        orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
         try:
             status = orch.start(
                 command, method=method, backend=backend, faults=list(fault or []), approve=approve
@@ -449,19 +638,17 @@ def resume_cmd(
 
     decision: dict[str, Any] | None = None
     if edit is not None:
-        try:
-            edits = json.loads(edit.read_text(encoding="utf-8"))
-        except (OSError, json.JSONDecodeError) as exc:
-            _bad_input(InputError(f"cannot read edits: {exc}", field="--edit"), json_out)
-        decision = {"action": "edit", "edits": edits}
+        decision = {"action": "edit", "edits": _read_edits(edit)}
     elif approve:
         decision = {"action": "approve"}
     elif reject:
         decision = {"action": "reject"}
     cell = _cell(cell_path, json_out)
+    robots = _arms(arms, cell, json_out)
+    db = _database(db, run_id=run_id)
     with ExitStack() as stack:
         model = _model(backend, json_out, stack)
-        orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
+        orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
         try:
             status = orch.resume(run_id, decision)
         except InputError as exc:
@@ -484,12 +671,13 @@ def log_cmd(
     db: DbOption = None,
 ) -> None:
     """The message-bus audit trail of a run: who told whom what, in order."""
-    from sdi.orchestrator import MessageBus, default_db
+    from sdi.orchestrator import MessageBus
 
-    bus = MessageBus(db or default_db())
+    path = _database(db, run_id=run_id)
+    bus = MessageBus(path)
     history = bus.history(run_id)
     if not history:
-        _bad_input(InputError(f"no run {run_id!r}", field="RUN_ID"), json_out)
+        _fail(f"RUN_ID: no run {run_id!r} in {path}; `sdi run` prints the run id", json_out)
     if json_out:
         _emit({"run_id": run_id, "messages": [m.__dict__ for m in history]})
         return
@@ -499,9 +687,9 @@ def log_cmd(
     for col in ("#", "sender", "receiver", "type", "payload"):
         table.add_column(col)
     for m in history:
-        table.add_row(
-            str(m.seq), m.sender, m.receiver, m.type, json.dumps(m.payload, default=str)[:120]
-        )
+        payload = json.dumps(m.payload, default=str, ensure_ascii=False)
+        cells = (str(m.seq), m.sender, m.receiver, m.type, payload[:120])
+        table.add_row(*(Text(c) for c in cells))
     out.print(table)
 
 

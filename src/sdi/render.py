@@ -26,11 +26,20 @@ LEVEL_STYLES = [
 ]
 
 
+MAX_CELLS = 120
+"""Largest top view drawn, cubes along x or y (a larger workspace is described, not drawn)."""
+
+
 def top_view(layout: Layout, cell: CellConfig) -> Text:
     """Column heights in parts on the cube grid, seen from above (x down the page, y across)."""
     ws, s = cell.workspace, cell.cube[0]
     nx = round((ws.x_max - ws.x_min) / s)
     ny = round((ws.y_max - ws.y_min) / s)
+    if nx > MAX_CELLS or ny > MAX_CELLS:
+        return Text(
+            f"top view omitted: the workspace is {nx} × {ny} cubes (at most {MAX_CELLS} a side)",
+            style="dim",
+        )
     levels = np.zeros((nx, ny), dtype=int)
     lo = layout.centres - layout.half_extents
     hi = layout.centres + layout.half_extents
@@ -67,7 +76,8 @@ def violations_table(violations: tuple[Violation, ...] | list[Violation], limit:
     table.add_column("hint", style="yellow")
     for v in list(violations)[:limit]:
         ids = ", ".join(v.objects[:4]) + (" …" if len(v.objects) > 4 else "")
-        table.add_row(v.constraint.value, ids, v.message, v.hint)
+        # Text, not markup: a message such as "quaternion [w, x, y, z]" is shown as written.
+        table.add_row(*(Text(cell) for cell in (v.constraint.value, ids, v.message, v.hint)))
     if len(violations) > limit:
         table.caption = f"(+{len(violations) - limit} more; use --json for all)"
     return table

@@ -99,6 +99,20 @@ def check_contact(a: Analysis) -> list[Violation]:
     out = []
     for i in np.nonzero(~g.on_table & ~touching)[0].tolist():
         part = a.layout.objects[i]
+        if part.bottom < 0:  # below the table top, not above it: nothing to add underneath
+            x, y, z = part.position
+            rest = (x, y, z - part.bottom)
+            out.append(
+                Violation(
+                    constraint=Constraint.CONTACT,
+                    objects=(part.id,),
+                    message=f"{part.id} is sunk {fmt(-part.bottom)} m into the table (its bottom "
+                    f"is at z = {fmt(part.bottom)} m) and it touches no other part",
+                    hint=f"raise {part.id} to z={fmt(rest[2])} so it rests on the table",
+                    suggestion={"id": part.id, "position": [round(v, 6) for v in rest]},
+                )
+            )
+            continue
         below = (part.position[0], part.position[1], part.bottom - a.cell.cube[2] / 2)
         out.append(
             Violation(

@@ -15,10 +15,11 @@ All lengths are metres, all angles radians unless a name says otherwise.
 from __future__ import annotations
 
 import os
+import re
 import tomllib
 from functools import cached_property
 from pathlib import Path
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
@@ -26,28 +27,48 @@ from sdi.errors import InputError
 
 Vec2 = tuple[float, float]
 Vec3 = tuple[float, float, float]
+REACH = 1000.0
+"""Largest |coordinate| and length in a cell, m (parts obey the same bound, `MAX_COORDINATE`)."""
+Coord = Annotated[float, Field(ge=-REACH, le=REACH)]
+"""A world coordinate, metres."""
+Length = Annotated[float, Field(gt=0, le=REACH)]
+"""A length that must be > 0, metres."""
+Gap = Annotated[float, Field(ge=0, le=REACH)]
+"""A gap or tolerance that must be ≥ 0, metres."""
+Coords2 = tuple[Coord, Coord]
+Lengths2 = tuple[Length, Length]
+PartEdge = Annotated[float, Field(gt=0, le=10.0)]
+"""An edge of a part type, metres (parts are at most 10 m, like `Part.size`)."""
+Lengths3 = tuple[PartEdge, PartEdge, PartEdge]
 
 
 class _Frozen(BaseModel):
-    model_config = ConfigDict(frozen=True, extra="forbid")
+    """Frozen, no unknown keys, every number finite (no NaN or infinity)."""
+
+    model_config = ConfigDict(frozen=True, extra="forbid", allow_inf_nan=False)
+
+
+def _ordered_range(name: str, lo: float, hi: float) -> None:
+    if not lo < hi:
+        raise ValueError(f"{name}: the first value must be below the second, got [{lo}, {hi}]")
 
 
 class Workspace(_Frozen):
     """The assembly workspace cuboid W (paper eq. 6). Every part's box must lie inside it."""
 
-    x_min: float = 0.20
-    x_max: float = 0.80
-    y_min: float = 0.05
-    y_max: float = 0.55
-    z_min: float = 0.0
-    z_max: float = 0.50
+    x_min: Coord = 0.20
+    x_max: Coord = 0.80
+    y_min: Coord = 0.05
+    y_max: Coord = 0.55
+    z_min: Coord = 0.0
+    z_max: Coord = 0.50
 
     @model_validator(mode="after")
     def _ordered(self) -> Workspace:
         for axis in "xyz":
             lo, hi = getattr(self, f"{axis}_min"), getattr(self, f"{axis}_max")
             if not lo < hi:
-                raise ValueError(f"workspace.{axis}_min ({lo}) must be below {axis}_max ({hi})")
+                raise ValueError(f"{axis}_min: must be below {axis}_max ({hi}), got {lo}")
         return self
 
     @property
@@ -68,9 +89,11 @@ class VacuumGripper(_Frozen):
 
     kind: Literal["vacuum"] = "vacuum"
     name: str = "VGC10"
-    min_face: float = Field(0.04, description="smallest top-face edge the cup pattern seals on, m")
-    body_half_extents: Vec2 = Field((0.05, 0.05), description="body footprint half sizes x, y, m")
-    body_clearance: float = Field(
+    min_face: Length = Field(0.04, description="smallest top-face edge the cup pattern seals on, m")
+    body_half_extents: Lengths2 = Field(
+        (0.05, 0.05), description="body footprint half sizes x, y, m"
+    )
+    body_clearance: Gap = Field(
         0.02, description="height of the body's underside above the gripped part's top face, m"
     )
 
@@ -80,13 +103,13 @@ class ParallelGripper(_Frozen):
 
     kind: Literal["parallel"] = "parallel"
     name: str = "2FG7"
-    max_opening: float = Field(0.073, description="widest finger opening, m")
-    finger_thickness: float = Field(0.010, description="finger thickness along β, m")
-    finger_width: float = Field(0.020, description="finger width across β, m")
-    clearance: float = Field(0.004, description="free space each side beyond the part face, m")
-    grip_depth: float = Field(0.0175, description="deepest pad reach below the part top, m")
-    finger_length: float = Field(0.0445, description="fingertip to gripper body, m")
-    body_half_extents: Vec2 = Field(
+    max_opening: Length = Field(0.073, description="widest finger opening, m")
+    finger_thickness: Length = Field(0.010, description="finger thickness along β, m")
+    finger_width: Length = Field(0.020, description="finger width across β, m")
+    clearance: Gap = Field(0.004, description="free space each side beyond the part face, m")
+    grip_depth: Length = Field(0.0175, description="deepest pad reach below the part top, m")
+    finger_length: Length = Field(0.0445, description="fingertip to gripper body, m")
+    body_half_extents: Lengths2 = Field(
         (0.045, 0.0355), description="body footprint half sizes along β and across β, m"
     )
 
@@ -96,9 +119,15 @@ class SupplyArea(_Frozen):
 
     name: str
     robot: str
-    x_range: Vec2
-    y_range: Vec2
-    pitch: float = Field(0.08, description="spacing of the part grid in the area, m")
+    x_range: Coords2
+    y_range: Coords2
+    pitch: Length = Field(0.08, description="spacing of the part grid in the area, m")
+
+    @model_validator(mode="after")
+    def _ordered(self) -> SupplyArea:
+        _ordered_range("x_range", *self.x_range)
+        _ordered_range("y_range", *self.y_range)
+        return self
 
 
 class RobotPlacement(_Frozen):
@@ -106,16 +135,18 @@ class RobotPlacement(_Frozen):
 
     name: str
     model: Literal["irb120", "irb1600"]
-    base_xy: Vec2 = Field(description="world position of the base, m")
-    base_yaw_deg: float = Field(0.0, description="rotation of the base about z, degrees")
+    base_xy: Coords2 = Field(description="world position of the base, m")
+    base_yaw_deg: float = Field(
+        0.0, ge=-360.0, le=360.0, description="rotation of the base about z, degrees"
+    )
 
 
 class Tolerances(_Frozen):
-    contact: float = Field(0.001, description="ε of the paper's contact predicate, m")
-    support_overlap: float = Field(
+    contact: Gap = Field(0.001, description="ε of the paper's contact predicate, m")
+    support_overlap: Gap = Field(
         0.005, description="least footprint overlap on each axis for support from below, m"
     )
-    stability_margin: float = Field(
+    stability_margin: Gap = Field(
         0.002, description="least distance of a centre of mass inside its support polygon, m"
     )
 
@@ -124,16 +155,19 @@ class Limits(_Frozen):
     max_parts: int = Field(10_000, ge=1, description="largest layout accepted")
     max_command_chars: int = Field(2_000, ge=1, description="longest command accepted")
     phase_seconds: float = Field(
-        300.0, gt=0, description="wall-clock limit of one orchestrator phase (design, plan, …), s"
+        300.0,
+        gt=0,
+        le=1e6,
+        description="wall-clock limit of one orchestrator phase (design, plan, …), s",
     )
 
 
 class DesignDefaults(_Frozen):
     """Where and how generators place structures when the command does not say."""
 
-    anchor: Vec2 = Field((0.45, 0.30), description="default footprint centre x, y, m")
-    structure_gap: float = Field(0.10, description="gap between separate structures, m")
-    regions: dict[str, Vec2] = Field(
+    anchor: Coords2 = Field((0.45, 0.30), description="default footprint centre x, y, m")
+    structure_gap: Gap = Field(0.10, description="gap between separate structures, m")
+    regions: dict[str, Coords2] = Field(
         default_factory=lambda: {
             "centre": (0.45, 0.30),
             "left": (0.45, 0.45),
@@ -149,11 +183,21 @@ class DesignDefaults(_Frozen):
     )
 
 
+def _unique(table: str, names: list[str]) -> None:
+    seen: set[str] = set()
+    for i, name in enumerate(names):
+        if name in seen:
+            raise ValueError(
+                f"{table}[{i}].name: duplicate name {name!r}; every name must be unique"
+            )
+        seen.add(name)
+
+
 class CellConfig(_Frozen):
     """Everything the symbolic core needs to know about the cell."""
 
     workspace: Workspace = Workspace()
-    part_types: dict[str, Vec3] = Field(
+    part_types: dict[str, Lengths3] = Field(
         default_factory=lambda: {"cube": (0.05, 0.05, 0.05), "beam": (0.15, 0.05, 0.05)},
         description="named part sizes (x, y, z), m",
     )
@@ -179,12 +223,19 @@ class CellConfig(_Frozen):
         return self.part_types["cube"]
 
     @model_validator(mode="after")
-    def _needs_cube(self) -> CellConfig:
-        for name, size in self.part_types.items():
-            if min(size) <= 0:
-                raise ValueError(f"part_types.{name}: every edge must be > 0 m, got {list(size)}")
+    def _consistent(self) -> CellConfig:
         if "cube" not in self.part_types:
             raise ValueError("part_types must define 'cube', the default part")
+        _unique("robots", [r.name for r in self.robots])
+        _unique("supply_areas", [a.name for a in self.supply_areas])
+        robots = {r.name for r in self.robots}
+        given = "supply_areas" in self.model_fields_set  # the defaults name the default robots
+        for i, area in enumerate(self.supply_areas if given else ()):
+            if area.robot not in robots:
+                raise ValueError(
+                    f"supply_areas[{i}].robot: no robot named {area.robot!r}; "
+                    f"the cell has {sorted(robots)}"
+                )
         return self
 
     @classmethod
@@ -194,15 +245,85 @@ class CellConfig(_Frozen):
         if not path:
             return cls()
         path = Path(path)
+        fix = "give --cell a TOML file (or unset $SDI_CELL)"
         try:
             data: dict[str, Any] = tomllib.loads(path.read_text(encoding="utf-8"))
         except FileNotFoundError:
-            raise InputError(f"no such cell configuration file: {path}") from None
+            raise InputError(f"no such cell configuration file: {path}; {fix}") from None
+        except IsADirectoryError:
+            raise InputError(f"{path} is a folder, not a cell configuration; {fix}") from None
+        except UnicodeDecodeError:
+            raise InputError(f"{path} is not UTF-8 text; {fix}") from None
+        except OSError as exc:
+            raise InputError(f"cannot read {path}: {exc.strerror or exc}; {fix}") from None
         except tomllib.TOMLDecodeError as exc:
             raise InputError(f"{path} is not valid TOML: {exc}") from None
+        except RecursionError:
+            raise InputError(f"{path} is nested too deeply to be a cell configuration") from None
+        return cls.from_dict(data)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> CellConfig:
+        """Validate a parsed TOML document; errors name the TOML key (``workspace.x_max``)."""
         try:
             return cls.model_validate(data)
         except ValidationError as exc:
-            first = exc.errors()[0]
-            field = ".".join(str(x) for x in first["loc"])
-            raise InputError(first["msg"].removeprefix("Value error, "), field=field) from None
+            raise _describe(exc.errors()[0]) from None
+
+
+def _key(loc: tuple[int | str, ...]) -> str:
+    key = ""
+    for item in loc:
+        key += f"[{item}]" if isinstance(item, int) else (f".{item}" if key else str(item))
+    return key
+
+
+def _describe(error: Any) -> InputError:
+    """One `ValidationError` entry as an `InputError` naming the TOML key and the fix."""
+    loc = tuple(x for x in error["loc"] if not (isinstance(x, str) and x.startswith("function-")))
+    kind, got, ctx = error["type"], error.get("input"), error.get("ctx") or {}
+    if kind == "finite_number":
+        message = f"must be a finite number, got {got}"
+    elif kind in ("greater_than", "greater_than_equal", "less_than_equal", "less_than"):
+        bound = {"greater_than": "> ", "greater_than_equal": "≥ ", "less_than": "< ",
+                 "less_than_equal": "≤ "}[kind]  # fmt: skip
+        message = f"must be {bound}{next(iter(ctx.values()))}, got {got}"
+    elif kind == "extra_forbidden":
+        section = _key(loc[:-1])
+        model = _SECTIONS.get(str(loc[0]) if len(loc) > 1 else "")
+        known = f"; the keys are {', '.join(model.model_fields)}" if model else ""
+        where = f" in [{section}]" if section else ""
+        message = f"unknown key{where}; check its spelling{known}"
+    elif kind in ("float_parsing", "float_type", "int_parsing", "int_type", "int_from_float"):
+        message = f"must be a number, got {got!r}"
+    elif kind in ("tuple_type", "list_type", "too_short", "too_long"):
+        message = f"must be a list of numbers of the right length, got {got!r}"
+    elif kind == "missing" and loc and isinstance(loc[-1], int):
+        loc, message = loc[:-1], "too few numbers in the list"
+    elif kind == "missing":
+        message = "is required; add it"
+    elif kind in ("dict_type", "model_type", "model_attributes_type"):
+        message = f"must be a TOML table of keys and values, got {got!r}"
+    else:
+        message = error["msg"].removeprefix("Value error, ")
+    # Our own validators start their message with the key inside the section.
+    named = _OWN_KEY.match(message)
+    if named:
+        key = ".".join(k for k in (_key(loc), named[1]) if k)
+        return InputError(named[2], field=key)
+    return InputError(message, field=_key(loc) or None)
+
+
+_OWN_KEY = re.compile(r"^([A-Za-z_][\w\[\].]*): (.*)$", re.DOTALL)
+
+
+_SECTIONS: dict[str, type[BaseModel]] = {
+    "": CellConfig,
+    "workspace": Workspace,
+    "tolerances": Tolerances,
+    "limits": Limits,
+    "design": DesignDefaults,
+    "robots": RobotPlacement,
+    "supply_areas": SupplyArea,
+}
+"""TOML sections → the model that reads them (to list the valid keys of a misspelt one)."""

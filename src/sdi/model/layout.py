@@ -146,6 +146,10 @@ def parse_layout(
             raise InputError(
                 f"not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}"
             ) from None
+        except RecursionError:
+            raise InputError(
+                'JSON nested too deeply; a layout is {"objects": [parts]}, a few levels deep'
+            ) from None
     if not isinstance(data, dict):
         raise InputError("a layout must be a JSON object with an 'objects' list")
     sequence = data.get("sequence")
@@ -203,7 +207,11 @@ def load_layout(
     try:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:
-        raise InputError(f"no such file: {path}") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"cannot read {path}: {exc}") from None
+        raise InputError(f"no such file: {path}; check the path") from None
+    except IsADirectoryError:
+        raise InputError(f"{path} is a folder; give a layout JSON file") from None
+    except UnicodeDecodeError:
+        raise InputError(f"cannot read {path}: not UTF-8 text; give a layout JSON file") from None
+    except OSError as exc:
+        raise InputError(f"cannot read {path}: {exc.strerror or exc}; check the path") from None
     return parse_layout(text, max_parts=max_parts)

@@ -14,6 +14,10 @@ from typing import Annotated
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, Strict, field_validator
 
+MAX_COORDINATE = 1000.0
+"""Largest |x|, |y|, |z| of a part centre, m: far beyond any cell, small enough that no
+computation on it overflows (a part at x = 1e308 is refused as input, not reported as 309
+digits)."""
 QUAT_TOLERANCE = 1e-3
 """How far from 1 a quaternion's norm may be before it is refused (no silent renormalising)."""
 
@@ -83,6 +87,16 @@ class Part(BaseModel):
     def _finite(cls, value: tuple[float, ...]) -> tuple[float, ...]:
         if not all(math.isfinite(v) for v in value):
             raise ValueError("every number must be finite (no NaN or infinity)")
+        return value
+
+    @field_validator("position")
+    @classmethod
+    def _bounded(cls, value: Vec3) -> Vec3:
+        if max(abs(v) for v in value) > MAX_COORDINATE:
+            raise ValueError(
+                f"coordinates are metres and at most {MAX_COORDINATE:g} m from the origin, "
+                f"got [{', '.join(f'{v:.6g}' for v in value)}]"
+            )
         return value
 
     @field_validator("size")

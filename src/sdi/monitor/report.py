@@ -59,11 +59,27 @@ def report_dict(source: DeviationResult | StreamingMonitor, epsilon: float) -> d
 def plot_deviation(
     source: DeviationResult | StreamingMonitor, epsilon: float, path: Path | str
 ) -> Path:
-    """Write a PNG of δ_r(t) (rad) over time t (s) for each robot, with the ε line and the worst
-    sample marked (and a monitor's first breach, if any). Returns the path written.
+    """Write `deviation_png` to `path` (whole or not at all) and return the path.
 
-    Creates the parent folder if needed. Needs matplotlib (not a core dependency).
+    Creates the parent folder if needed.
     """
+    from sdi.outputs import write_atomic
+
+    out = Path(path)
+    data = deviation_png(source, epsilon)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    write_atomic(out, data)
+    return out
+
+
+def deviation_png(source: DeviationResult | StreamingMonitor, epsilon: float) -> bytes:
+    """A PNG of δ_r(t) (rad) over time t (s) for each robot, with the ε line and the worst
+    sample marked (and a monitor's first breach, if any).
+
+    Needs matplotlib (not a core dependency).
+    """
+    import io
+
     eps = _check_epsilon(epsilon)
     result, breach = _unpack(source)
     try:
@@ -74,7 +90,6 @@ def plot_deviation(
             "plotting the deviation needs matplotlib; install it with `pip install matplotlib`"
         ) from exc
 
-    out = Path(path)
     fig = Figure(figsize=(8.0, 4.5), dpi=100)
     FigureCanvasAgg(fig)
     ax = fig.add_subplot(1, 1, 1)
@@ -110,6 +125,6 @@ def plot_deviation(
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper left", fontsize="small")
     fig.tight_layout()
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out, format="png")
-    return out
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png")
+    return buffer.getvalue()
