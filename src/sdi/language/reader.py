@@ -54,6 +54,11 @@ _LEADS = {"first", "firstly", "and", ",", "after", "that", "then", "next", "fina
 # encloses object), inside (object encloses subject), next (beside, `side`), join (subject
 # joins the object's pillars), joined (the object joins the subject's pillars).
 _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
+    (("on", "the", "middle", "of"), "on", None),
+    (("on", "the", "centre", "of"), "on", None),
+    (("on", "the", "center", "of"), "on", None),
+    (("across", "the", "top", "of"), "on", None),
+    (("across",), "on", None),
     (("on", "top", "of"), "on", None),
     (("on", "the", "top", "of"), "on", None),
     (("on", "top"), "on", None),
@@ -72,6 +77,8 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("surrounding",), "around", None),
     (("enclosing",), "around", None),
     (("encircling",), "around", None),
+    (("in",), "inside_ref", None),
+    (("into",), "inside_ref", None),
     (("inside", "of"), "inside", None),
     (("inside",), "inside", None),
     (("within",), "inside", None),
@@ -121,7 +128,7 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("between",), "join", None),
 ]
 _MARKERS.sort(key=lambda m: -len(m[0]))
-_VERB_AROUND = {"surround", "encircle", "enclose", "ring", "circle"}
+_VERB_AROUND = {"surround", "encircle", "enclose", "ring", "circle", "fence", "wall"}
 _VERB_JOIN = {"join", "connect", "link", "bridge"}
 _VERB_TOP = {"top", "cap", "crown"}
 _PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
@@ -133,6 +140,9 @@ _GENERIC = {"platform", "slab", "plinth", "pedestal", "layer", "floor", "level",
 _BASES = {"base", "foundation", "bottom", "footing", "footprint"}
 _BEAMS = {"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "girders", "bar",
           "slab", "bridge", "bridges", "arch", "roof", "deck", "span"}  # fmt: skip
+_FRONTED_VERBS = {"goes", "go", "stands", "sits", "comes", "is", "are", "put", "place", "build",
+                  "add", "stack", "lies", "rests", "belongs", "should", "will", "must"}  # fmt: skip
+_QUANTITY_NOUNS = {"pair", "couple", "set", "group", "bunch", "handful", "trio", "row", "line"}
 _EMPTY = {"empty", "hollow", "open", "free", "blank"}
 _COPY = {"second", "another", "same", "identical", "matching", "similar", "twin", "copy"}
 _KINDS: dict[str, RelationKind] = {"on": "on_top_of", "around": "around", "next": "next_to"}
@@ -779,6 +789,9 @@ def _object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[i
         if w in lx.SIZE_WORDS or (w in lx.REGION_WORDS and doc[k].dep_ in ("amod", "compound")):
             k += 1
             continue
+        if w in _QUANTITY_NOUNS and k + 1 < end and doc[k + 1].lower_ == "of":
+            k += 2  # "a pair of stacks", "a couple of towers"
+            continue
         if (
             tok.dep_ == "compound"
             and k + 1 < end
@@ -891,6 +904,11 @@ def _clause_phrases(
         if numeric_before and kind == "on" and words_[0] in ("above", "over"):
             k += n
             continue
+        if kind == "inside_ref":
+            if head is None or doc[head].lower_ not in ("it", "them"):
+                k += n
+                continue
+            kind = "inside"
         overlaps = any(a < k + n and k < b for a, b, _, _ in markers)
         if (is_structure or implicit) and not overlaps:
             markers.append((k, k + n, kind, side))
@@ -917,9 +935,26 @@ def _clause_phrases(
     if len(markers) == 1 and not [i for i in segments[0] if doc[i].lower_ not in words.HARMLESS]:
         # "On top of two 2-cube towers, a beam.": the subject follows the object
         commas = [n for n, i in enumerate(segments[1]) if doc[i].lower_ == ","]
+        verbs = [n for n, i in enumerate(segments[1]) if doc[i].lower_ in _FRONTED_VERBS and n]
         if commas:
             cut = commas[0]
             segments = [segments[1][cut + 1 :], segments[1][:cut]]
+        elif verbs:
+            cut = verbs[0]  # "To the right of a tower goes a row of 3."
+            segments = [segments[1][cut + 1 :], segments[1][:cut]]
+    for j in range(len(markers)):
+        tail = segments[j + 1]
+        commas = [n for n, i in enumerate(tail) if doc[i].lower_ == ","]
+        if (
+            commas
+            and commas[0] <= 2
+            and doc[tail[0]].lower_ in ("it", "them", "this", "that")
+            and _names_structure(doc, tail[commas[0] + 1 :])
+            and not markers[j][2].endswith("_verb")
+        ):
+            # "a T shape and, left of it, an L shape": the subject follows the pronoun
+            segments[j] = tail[commas[0] + 1 :]
+            segments[j + 1] = tail[: commas[0]]
     base = len(phrases)
     for seg in segments:
         phrases.append(_Phrase(tokens=seg, clause=ci))
@@ -1102,7 +1137,13 @@ def _chatter(text: str) -> bool:
         set(lx.SHAPE_WORDS) | set(lx.SIZE_WORDS) | set(lx.DIMENSION_WORDS) | set(lx.REGION_WORDS)
         | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | _BEAMS
     )  # fmt: skip
-    return not any(w in known for w in re.findall(r"[a-z]+", text.lower()))
+    said = re.findall(r"[a-z]+|\d+", text.lower())
+    if any(w.isdigit() for w in said) and not any(w in lx.PART_WORDS for w in said):
+        return bool(
+            re.search(r"\b(?:item|order|ticket|job|room|at|by|until|before|after)\b", text, re.I)
+        )
+    strong = known - lx.AMBIGUOUS_SHAPES - {"well", "item", "items", "object", "objects", "unit"}
+    return not any(w in strong for w in said)
 
 
 def _attached(tok: Token) -> bool:
@@ -1110,7 +1151,7 @@ def _attached(tok: Token) -> bool:
     seen = 0
     t = tok
     while seen < 8:
-        if t.lower_ in lx.SHAPE_WORDS or t.lower_ in _GENERIC or t.lower_ in lx.PART_WORDS:
+        if t.lower_ in lx.SHAPE_WORDS or t.lower_ in lx.PART_WORDS:
             return t.i != tok.i or tok.pos_ != "NOUN"
         if t.lower_ in ("for",) and t.dep_ == "prep":
             return False  # "for the demo", "for a teddy bear": a purpose
@@ -1132,6 +1173,8 @@ def _account(word: str, tok: Token | None, st: _State) -> None:
         return
     pos = tok.pos_ if tok is not None else None
     numeric = word[:1].isdigit()
+    if tok is None and not numeric and word not in words.CORRECTABLE | words.NEGATIONS:
+        return  # a piece of a contraction ("we've" → "weve") or a symbol
     known = (
         word in words.CORRECTABLE or word in words.NEGATIONS or numeric
     ) and word not in words.HARMLESS
