@@ -362,6 +362,169 @@ _REWRITES += [
     (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
     (re.compile(r"\bnothing\s+(?:fancy|else|special|more)\b", re.IGNORECASE), " ", ""),
     (re.compile(r"\bStep\s+\d+\s*[:.)-]", re.IGNORECASE), " then ", ""),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s+|and\s+|then\s+build\s+)?(?:each|every)\s+(?:level|layer|row|tier)\s+"
+            r"(?:exactly\s+)?(?:like|the\s+same\s+as|identical\s+to|matching)\s+the\s+one\s+"
+            r"(?:below|under(?:neath)?|beneath)(?:\s+it)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': every level the same",
+    ),
+]
+_REWRITES += [
+    (
+        re.compile(
+            r"\b(?:but\s+|and\s+)?(?:do\s+not|never)\s+(?:put|place|build|set)\s+(?:it|them)\s+"
+            r"(?:on|in|at|to)\s+the\s+(left|right|front|back|middle|centre|center)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (
+        re.compile(
+            r"\b(?:(?:and\s+)?keep\s+(?:it|them)\s+)away\s+from\s+the\s+"
+            r"(left|right|front|back)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (
+        re.compile(
+            r"\bneither\s+(?:on|in|at)\s+the\s+(?:left|right|front|back)\s+nor\s+(?:on|in|at)\s+"
+            r"the\s+(?:left|right|front|back)\b",
+            re.IGNORECASE,
+        ),
+        " in the centre ",
+        "read '{0}' as in the centre",
+    ),
+    (
+        re.compile(
+            r"\b(?:never|not\s+ever)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
+            r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
+            re.IGNORECASE,
+        ),
+        " {0}{1} high ",
+        "read '{0}' as exactly that many (the most allowed)",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:and\s+)?(?:no|not)\s+(?:fewer|less)\s+than\s+\w+|,?\s*\bat\s+least\s+\w+\s+and\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': the larger number is within the range",
+    ),
+    (
+        re.compile(r",?\s*\b(?:or\s+)?(?:maybe|perhaps|possibly)\s+(\d+|[a-z]+)\b", re.IGNORECASE),
+        " ",
+        "'{0}': used the first number",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+(one|two|three|four|five|six|seven|eight|nine|ten)\b"
+            r"(?!\s*(?:cm|mm|high|tall|long|wide|cubes?\s+(?:high|tall|long|wide)))",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': kept the other number",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s+)?(?:no|without)\s+(?:any\s+)?(?:windows|gaps|holes|openings)"
+            r"(?:\s+(?:or|and)\s+(?:windows|gaps|holes|openings))*\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': solid, as built",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s*out|with\s+no|and\s+no|no)\s+(?:a\s+|any\s+)?(?:beam|bridge|lintel|"
+            r"connection|link)s?(?:\s+(?:between|across|joining|connecting)\s+them)?\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': left separate",
+    ),
+    (
+        re.compile(
+            r"\b(?:i\s+)?(?:do\s+not|dont)\s+want\s+(?:a|an|the|any)?\s*(?:"
+            + _SHAPE_ALT
+            + r")\b\s*[,;:.]*\s*(?:(?:i\s+)?(?:want|need|would\s+like)\s+)?"
+            r"(?:just\s+|only\s+|but\s+)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    (
+        re.compile(r"\bnot\s+too\s+many\s+(steps|levels|layers|cubes|stairs)\b", re.IGNORECASE),
+        " a few {0} ",
+        "read '{0}' as a few",
+    ),
+    (
+        re.compile(r"\b(pyramid|ziggurat)(\s+that\s+is|\s*,)?\s+not\s+flat\b", re.IGNORECASE),
+        " 3-D {0} ",
+        "read '{0}' as a 3-D pyramid",
+    ),
+    # dimensions
+    (
+        re.compile(
+            r"\b(?:each|both|every)\s+(?:arm|leg|side|wing|branch)s?\s+(?:is\s+|are\s+)?(\d+|[a-z]+)"
+            r"(?:\s+(?:cubes?|parts?|blocks?))?(?:\s+long)?",
+            re.IGNORECASE,
+        ),
+        " {0} long and {0} wide ",
+        "",
+    ),
+    (
+        re.compile(r"\b(\d+|[a-z]+)\s+(?:down|along|up)\s+the\s+(stem|leg|arm|base|bar)\b", re.I),
+        " {0} {1} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:columns|cols)\s+(?:by|x|and)\s+(\d+|[a-z]+)\s+rows\b", re.I
+        ),
+        " {0} by {1} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(\d+|[a-z]+)\s+rows\s+(?:by|x)\s+(\d+|[a-z]+)\s+(?:columns|cols)\b", re.I),
+        " {0} by {1} ",
+        "",
+    ),
+    (
+        re.compile(r"(?:^|(?<=[,.;:(]))\s*(wide|deep|high|tall|long)\s*[:=]?\s*(\d+)\b", re.I),
+        " {1} {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(?:held\s+up|supported|carried|borne|propped\s+up)\s+by\b", re.IGNORECASE),
+        " with ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\bin\s+(?:its|the)\s+(?:courtyard|inside|interior|middle|centre|center)\b(?!\s+of)",
+            re.I,
+        ),
+        " inside ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(beside|next\s+to)\s+((?:a|an|the)\s+[\w\s-]{1,40}?)\s*,\s*on\s+(?:the\s+\w+'s|its)\s+"
+            r"(left|right|front|back)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " to the {2} of {1} ",
+        "",
+    ),
 ]
 _OPEN = re.compile(
     r"\b(?:(tall|high|big|large)\s+)?(structure|thing|something|shape|construction|object|"
@@ -582,6 +745,12 @@ _MODIFY = [
         "=",
     ),
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
+    _op(
+        r"\buntil\s+(?:it|they)\s+(?:is|are|stands?)\s+"
+        + _N
+        + r"\s+(?:cubes?\s+|levels?\s+|layers?\s+)?(?:high|tall)\b",
+        "=",
+    ),
     _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
     _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
     _op(
@@ -1031,6 +1200,12 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
         if _modify(p, phrases[:k], structures, st):
             continue
+        change = next((m for pattern, _ in _MODIFY if (m := pattern.search(p.text))), None)
+        tail: _Phrase | None = None
+        if change is not None and change.start() > 0:
+            # "begin with a 2-step staircase and keep adding steps until it has 4"
+            tail = _Phrase(tokens=[], clause=p.clause, text=p.text[change.start() :])
+            p.text = re.sub(r"(?:,|\band\b|\bthen\b|\s)+$", "", p.text[: change.start()])
         try:
             spec, unused = parse_phrase(p.text, st.cell)
             spec = _copies(spec, p.text, st)
@@ -1048,6 +1223,8 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
         p.first = len(structures)
         p.count = len(spec.structures)
         structures.extend(spec.structures)
+        if tail is not None:
+            _modify(tail, [p], structures, st)
         st.notes.extend(spec.notes)
         st.material.extend(n for n in spec.notes if n.startswith("ignored"))
         free = list(p.tokens)
