@@ -38,6 +38,14 @@ CellOption = Annotated[
     typer.Option("--cell", help="cell configuration TOML (default: built-in; $SDI_CELL)"),
 ]
 JsonOption = Annotated[bool, typer.Option("--json", help="print one JSON object")]
+LlmTimeoutOption = Annotated[
+    float | None,
+    typer.Option(
+        "--llm-timeout",
+        metavar="SECONDS",
+        help="wall-clock budget of one model call, retries included (default 120)",
+    ),
+]
 
 
 def _emit(data: dict[str, Any]) -> None:
@@ -73,6 +81,7 @@ def plan(
     method: Annotated[
         str, typer.Option("--method", help="a method of the paper's Table II")
     ] = "Hybrid",
+    llm_timeout: LlmTimeoutOption = None,
 ) -> None:
     """Plan a command end to end: spec → layout → verification → assembly sequence."""
     cell = _cell(cell_path, json_out)
@@ -82,7 +91,7 @@ def plan(
         from sdi.pipeline import plan_with
 
         with ExitStack() as stack:
-            model = _model(backend, json_out, stack)
+            model = _model(backend, json_out, stack, llm_timeout)
             try:
                 result = plan_with(command, method, model, cell)
             except InputError as exc:
@@ -96,6 +105,8 @@ def plan(
         _emit(data)
     else:
         print_plan(out, result, cell)
+        for note in result.notes:
+            err.print(f"[yellow]{note}[/yellow]")
     raise typer.Exit({"success": 0, "failure": 1, "error": 2}[result.status])
 
 
@@ -329,12 +340,14 @@ DbOption = Annotated[
 ]
 
 
-def _model(backend: str, as_json: bool, stack: ExitStack) -> Any:
-    """The chat model for a backend (None: rules); a local server stops when `stack` closes."""
+def _model(backend: str, as_json: bool, stack: ExitStack, timeout: float | None = None) -> Any:
+    """The chat model for a backend (None: rules); a local server stops when `stack` closes.
+    While it waits for the model, a spinner on stderr says what for (only on a terminal)."""
     from sdi.llm import open_backend
 
+    waiting = (lambda text: err.status(text, spinner="dots")) if err.is_terminal else None
     try:
-        return open_backend(backend, stack)
+        return open_backend(backend, stack, timeout=timeout, waiting=waiting)
     except InputError as exc:
         _bad_input(exc, as_json)
 
@@ -405,6 +418,7 @@ def run_cmd(
     method: MethodOption = "Hybrid",
     fault: FaultOption = None,
     db: DbOption = None,
+    llm_timeout: LlmTimeoutOption = None,
 ) -> None:
     """Run the whole orchestrator graph: plan, design, inspect, review, confirm, execute (sim)."""
     from sdi.orchestrator import Orchestrator
@@ -412,7 +426,7 @@ def run_cmd(
     _check_faults(fault, json_out)
     cell = _cell(cell_path, json_out)
     with ExitStack() as stack:
-        model = _model(backend, json_out, stack)
+        model = _model(backend, json_out, stack, llm_timeout)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
         try:
             status = orch.start(

@@ -22,6 +22,7 @@ from sdi.spec.grammar import parse_command
 from sdi.spec.structure_spec import Spec
 
 Status = Literal["success", "failure", "error"]
+SpecSource = Literal["model", "grammar"]
 
 
 class PlanResult(BaseModel):
@@ -39,6 +40,12 @@ class PlanResult(BaseModel):
     understood: dict[str, Any] | None = None
     seconds: float = 0.0
     llm_calls: int = 0
+    llm_malformed: int = 0
+    llm_failures: int = 0
+    spec_source: SpecSource | None = None
+    """Who wrote the spec: the model, or the grammar (no model, or its reply was not used)."""
+    notes: tuple[str, ...] = ()
+    """What the operator should know, e.g. that the model's reply was unusable."""
 
     def to_json_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
@@ -48,8 +55,16 @@ class PlanResult(BaseModel):
             "layout": self.layout.to_json_dict() if self.layout is not None else None,
             "sequence": list(self.sequence) if self.sequence is not None else None,
             "violations": [v.to_json_dict() for v in self.violations],
-            "metrics": {"seconds": round(self.seconds, 6), "llm_calls": self.llm_calls},
+            "metrics": {
+                "seconds": round(self.seconds, 6),
+                "llm_calls": self.llm_calls,
+                "llm_malformed": self.llm_malformed,
+                "llm_failures": self.llm_failures,
+            },
+            "notes": list(self.notes),
         }
+        if self.spec_source is not None:
+            out["spec_source"] = self.spec_source
         if self.error:
             out["error"] = self.error
         if self.understood:
@@ -74,11 +89,12 @@ def plan(command: str, cell: CellConfig | None = None) -> PlanResult:
     try:
         layout = compose(spec, cell)
     except (InfeasibleError, InputError) as exc:
-        return done(status="failure", spec=spec, error=str(exc))
+        return done(status="failure", spec=spec, spec_source="grammar", error=str(exc))
     report = verify(layout, cell, precedence=spec.precedence)
     return done(
         status="success" if report.passed else "failure",
         spec=spec,
+        spec_source="grammar",
         layout=layout,
         sequence=report.sequence,
         violations=report.violations,
@@ -103,20 +119,32 @@ def plan_with(command: str, method: str, model: Any, cell: CellConfig | None = N
     cell = cell or CellConfig()
     m = METHODS[method]
     start = time.perf_counter()
-    before = model.usage.calls if model is not None else 0
+    usage = model.usage if model is not None else None
+    before = (usage.calls, usage.malformed, usage.failures) if usage is not None else (0, 0, 0)
+    notes: list[str] = []
+    spec_source: SpecSource | None = None
 
     def done(**kw: Any) -> PlanResult:
-        calls = (model.usage.calls - before) if model is not None else 0
+        now = (usage.calls, usage.malformed, usage.failures) if usage is not None else (0, 0, 0)
         return PlanResult(
-            command=command, seconds=time.perf_counter() - start, llm_calls=calls, **kw
+            command=command,
+            seconds=time.perf_counter() - start,
+            llm_calls=now[0] - before[0],
+            llm_malformed=now[1] - before[1],
+            llm_failures=now[2] - before[2],
+            spec_source=spec_source,
+            notes=tuple(notes),
+            **kw,
         )
 
     spec: Spec | None = None
     if model is None or m.specifier:
         try:
-            spec = Specifier(model if m.specifier else None, cell).specify(command).spec
+            specified = Specifier(model if m.specifier else None, cell).specify(command)
         except SpecError as exc:
             return done(status="error", error=str(exc), understood=exc.understood or None)
+        spec, notes = specified.spec, list(specified.notes)
+        spec_source = "model" if specified.source == "llm" else "grammar"
     ctx = RunContext(cell, m, model, None)  # type: ignore[arg-type]
     outcome = _designer(ctx).design(spec, command)
     if outcome.layout is None:

@@ -62,16 +62,32 @@ class Specifier:
                     f"neither the model nor the grammar understood the command ({exc})",
                     understood=rules_error.understood if rules_error else {},
                 ) from None
-            return SpecResult(rules, "rules (llm malformed)", [f"model output unusable: {exc}"])
+            return SpecResult(
+                rules,
+                "rules (llm malformed)",
+                [f"the model's reply was unusable ({_why(exc)}); used the grammar"],
+            )
         if rules is not None and sorted(s.shape for s in rules.structures) != sorted(
             s.shape for s in llm_spec.structures
         ):
             return SpecResult(
                 rules,
                 "rules (llm disagreed)",
-                [f"model read {llm_spec.describe()!r}, grammar read {rules.describe()!r}"],
+                [
+                    f"model read {llm_spec.describe()!r}, grammar read {rules.describe()!r}; "
+                    "used the grammar"
+                ],
             )
         return SpecResult(llm_spec, "llm")
+
+
+def _why(exc: Exception) -> str:
+    """A short reason for a fallback note: what was wrong with the model's reply."""
+    if isinstance(exc, LLMError):
+        return exc.reason
+    if isinstance(exc, ValidationError):
+        return f"not a valid spec: {exc.error_count()} validation error(s)"
+    return f"not a JSON spec: {str(exc)[:80]}"
 
 
 __all__ = ["SpecResult", "Specifier"]
