@@ -14,7 +14,7 @@ from pydantic import BaseModel, ConfigDict
 
 from sdi.design.composer import compose
 from sdi.errors import InfeasibleError, InputError, SpecError
-from sdi.inspector.verifier import verify
+from sdi.inspector.verifier import cap_violations, verify
 from sdi.inspector.violation import Violation
 from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
@@ -48,13 +48,14 @@ class PlanResult(BaseModel):
     """What the operator should know, e.g. that the model's reply was unusable."""
 
     def to_json_dict(self) -> dict[str, Any]:
+        listed, omitted = cap_violations(self.violations)  # at most 50 per constraint
         out: dict[str, Any] = {
             "status": self.status,
             "command": self.command,
             "spec": self.spec.model_dump(mode="json", exclude_none=True) if self.spec else None,
             "layout": self.layout.to_json_dict() if self.layout is not None else None,
             "sequence": list(self.sequence) if self.sequence is not None else None,
-            "violations": [v.to_json_dict() for v in self.violations],
+            "violations": [v.to_json_dict() for v in listed],
             "metrics": {
                 "seconds": round(self.seconds, 6),
                 "llm_calls": self.llm_calls,
@@ -65,6 +66,8 @@ class PlanResult(BaseModel):
         }
         if self.spec_source is not None:
             out["spec_source"] = self.spec_source
+        if omitted:
+            out["omitted"] = omitted
         if self.error:
             out["error"] = self.error
         if self.understood:
