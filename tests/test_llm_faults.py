@@ -187,3 +187,19 @@ def test_the_client_raises_only_llm_errors_with_a_short_reason():
 def test_parse_json_refuses_deep_nesting_as_a_value_error():
     with pytest.raises(ValueError, match="too deep"):
         parse_json("[" * 90_000 + "]" * 90_000)
+
+
+def test_every_wait_is_announced_with_what_it_waits_for():
+    from contextlib import nullcontext
+
+    said: list[str] = []
+
+    def waiting(text: str):
+        said.append(text)
+        return nullcontext()
+
+    with FaultServer(["http500", "ok:hi"]) as server:
+        model = OpenAIChat(base_url=server.base_url, model="m", timeout=5.0, waiting=waiting)
+        assert model.chat([{"role": "user", "content": "x"}], role="designer").content == "hi"
+    assert len(said) == 2 and all("designer" in t and "127.0.0.1" in t for t in said)
+    assert "try 1/2" in said[0] and "try 2/2" in said[1]

@@ -26,6 +26,7 @@ import time
 from collections.abc import Callable
 from contextlib import AbstractContextManager, nullcontext
 from typing import Any
+from urllib.parse import urlsplit
 
 from sdi import deadline
 from sdi.errors import SDIError
@@ -205,10 +206,9 @@ class OpenAIChat:
                 done.set()
 
         worker = threading.Thread(target=run, name=f"sdi-llm-{role}", daemon=True)
-        text = (
-            f"waiting for {self.name} model {self.model!r} at {self.base_url} "
-            f"({role}, try {k} of {self.max_tries}, up to {left:.0f} s)"
-        )
+        host = urlsplit(self.base_url).netloc or self.base_url
+        tries = f"try {k}/{self.max_tries}"
+        text = f"waiting for {self.model} at {host} ({role}, {tries}, ≤ {left:.0f} s)"
         with self._waiting(text) if self._waiting else nullcontext():
             worker.start()
             finished = done.wait(left)
