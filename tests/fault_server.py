@@ -5,6 +5,7 @@ faults (a test double: lives only in tests/).
 with a valid completion (the last entry repeats). Faults:
 
 - ``ok``: a valid completion; ``ok:TEXT`` with TEXT as the message content
+- ``raw:BODY``: BODY as it is, labelled application/json, status 200
 - ``http500``: HTTP 500 with a JSON error body
 - ``hang``: accepts the request and never answers (until the server stops)
 - ``garbage``: random bytes labelled application/json
@@ -81,6 +82,8 @@ class FaultServer:
                 if name == "ok":
                     body = json.dumps(completion(arg or "{}")).encode()
                     self._send(200, "application/json", body)
+                elif name == "raw":
+                    self._send(200, "application/json", arg.encode())
                 elif name == "http500":
                     body = b'{"error": {"message": "internal error", "type": "server_error"}}'
                     self._send(500, "application/json", body)

@@ -203,3 +203,61 @@ def test_every_wait_is_announced_with_what_it_waits_for():
         assert model.chat([{"role": "user", "content": "x"}], role="designer").content == "hi"
     assert len(said) == 2 and all("designer" in t and "127.0.0.1" in t for t in said)
     assert "try 1/2" in said[0] and "try 2/2" in said[1]
+
+
+def _raw(message: object, **extra: object) -> str:
+    return "raw:" + json.dumps({"choices": [{"index": 0, "message": message}], **extra})
+
+
+@pytest.mark.parametrize(
+    ("body", "content", "tools"),
+    [
+        (
+            _raw({"content": [{"type": "text", "text": "a"}, {"type": "text", "text": "b"}]}),
+            "ab",
+            [],
+        ),
+        (
+            _raw(
+                {
+                    "content": None,
+                    "tool_calls": [{"id": "c1", "function": {"name": "f", "arguments": {"x": 1}}}],
+                }
+            ),
+            None,
+            [("c1", "f", '{"x": 1}')],
+        ),
+        (
+            _raw({"content": "hi"}, usage={"prompt_tokens": "many", "completion_tokens": -1}),
+            "hi",
+            [],
+        ),
+    ],
+)
+def test_odd_but_usable_completions_are_read(body, content, tools):
+    with FaultServer([body]) as server:
+        model = OpenAIChat(base_url=server.base_url, model="m", timeout=5.0)
+        reply = model.chat([{"role": "user", "content": "x"}])
+    assert reply.content == content
+    assert [(c.id, c.name, c.arguments) for c in reply.tool_calls] == tools
+    assert reply.prompt_tokens == 0 and model.usage.malformed == 0
+
+
+@pytest.mark.parametrize(
+    "body",
+    [
+        _raw({"content": None}),
+        _raw({"content": {"nested": True}}),
+        _raw("a string"),
+        "raw:" + json.dumps({"choices": {"0": {}}}),
+        "raw:" + json.dumps([1, 2, 3]),
+        "raw:null",
+    ],
+)
+def test_replies_shaped_wrong_are_malformed(body):
+    with FaultServer([body]) as server:
+        model = OpenAIChat(base_url=server.base_url, model="m", timeout=5.0, max_retries=0)
+        with pytest.raises(LLMError) as info:
+            model.chat([{"role": "user", "content": "x"}])
+    assert info.value.malformed and info.value.reason.startswith("not a chat completion")
+    assert model.usage.malformed == 1

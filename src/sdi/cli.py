@@ -457,6 +457,7 @@ def resume_cmd(
     arms: ArmsOption = None,
     backend: BackendOption = "rules",
     db: DbOption = None,
+    llm_timeout: LlmTimeoutOption = None,
 ) -> None:
     """Continue a paused or interrupted run (after a review prompt, a crash or a kill)."""
     from sdi.orchestrator import Orchestrator
@@ -474,7 +475,7 @@ def resume_cmd(
         decision = {"action": "reject"}
     cell = _cell(cell_path, json_out)
     with ExitStack() as stack:
-        model = _model(backend, json_out, stack)
+        model = _model(backend, json_out, stack, llm_timeout)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=arms.split(",") if arms else None)
         try:
             status = orch.resume(run_id, decision)

@@ -259,6 +259,11 @@ def _reply_from(body: bytes) -> ChatReply:
     if not isinstance(message, dict):
         raise _Malformed("a choice without a message")
     content = message.get("content")
+    if isinstance(content, list):  # content parts, as some servers send: their text joined
+        texts = [
+            p["text"] for p in content if isinstance(p, dict) and isinstance(p.get("text"), str)
+        ]
+        content = "".join(texts) if texts else None
     if content is not None and not isinstance(content, str):
         raise _Malformed("message content that is not text")
     calls = []
