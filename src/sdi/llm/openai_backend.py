@@ -163,6 +163,7 @@ class OpenAIChat:
                     self._schema_mode = "json_object"
                     tries -= 1  # a format negotiation, not a failed try
                     continue
+                self.usage.malformed += int(exc.malformed)
                 last = exc
             else:
                 self.usage.add(reply, role)
