@@ -344,7 +344,8 @@ def cap_violations(
         else:
             rest.setdefault(code, []).append(v.objects)
     for code, groups in rest.items():
-        parts = list(dict.fromkeys(name for group in groups for name in group))
+        firsts = (group[0] for group in groups if group)  # each violation's own part first
+        parts = list(dict.fromkeys([*firsts, *(name for group in groups for name in group)]))
         listed.append(
             Violation(
                 constraint=Constraint(code),
