@@ -80,6 +80,14 @@ CellOption = Annotated[
     typer.Option("--cell", help="cell configuration TOML (default: built-in; $SDI_CELL)"),
 ]
 JsonOption = Annotated[bool, typer.Option("--json", help="print one JSON object")]
+LlmTimeoutOption = Annotated[
+    float | None,
+    typer.Option(
+        "--llm-timeout",
+        metavar="SECONDS",
+        help="wall-clock budget of one model call, retries included (default 120)",
+    ),
+]
 
 
 def _emit(data: dict[str, Any]) -> None:
@@ -214,6 +222,7 @@ def plan(
         str, typer.Option("--method", help="a method of the paper's Table II")
     ] = "Hybrid",
     force: ForceOption = False,
+    llm_timeout: LlmTimeoutOption = None,
 ) -> None:
     """Plan a command end to end: spec → layout → verification → assembly sequence."""
     cell = _cell(cell_path, json_out)
@@ -226,7 +235,7 @@ def plan(
         from sdi.pipeline import plan_with
 
         with ExitStack() as stack:
-            model = _model(backend, json_out, stack)
+            model = _model(backend, json_out, stack, llm_timeout)
             try:
                 result = plan_with(command, method, model, cell)
             except InputError as exc:
@@ -238,6 +247,8 @@ def plan(
         _emit(data)
     else:
         print_plan(out, result, cell)
+        for note in result.notes:
+            err.print(note, style="yellow", markup=False, highlight=False)
     raise typer.Exit({"success": 0, "partial": 1, "failure": 1, "error": 2}[result.status])
 
 
@@ -483,12 +494,14 @@ DbOption = Annotated[
 ]
 
 
-def _model(backend: str, as_json: bool, stack: ExitStack) -> Any:
-    """The chat model for a backend (None: rules); a local server stops when `stack` closes."""
+def _model(backend: str, as_json: bool, stack: ExitStack, timeout: float | None = None) -> Any:
+    """The chat model for a backend (None: rules); a local server stops when `stack` closes.
+    While it waits for the model, a spinner on stderr says what for (only on a terminal)."""
     from sdi.llm import open_backend
 
+    waiting = (lambda text: err.status(text, spinner="dots")) if err.is_terminal else None
     try:
-        return open_backend(backend, stack)
+        return open_backend(backend, stack, timeout=timeout, waiting=waiting)
     except InputError as exc:
         _bad_input(exc, as_json)
 
@@ -592,6 +605,7 @@ def run_cmd(
     method: MethodOption = "Hybrid",
     fault: FaultOption = None,
     db: DbOption = None,
+    llm_timeout: LlmTimeoutOption = None,
 ) -> None:
     """Run the whole orchestrator graph: plan, design, inspect, review, confirm, execute (sim)."""
     from sdi.orchestrator import Orchestrator
@@ -601,7 +615,7 @@ def run_cmd(
     robots = _arms(arms, cell, json_out)
     db = _database(db)
     with ExitStack() as stack:
-        model = _model(backend, json_out, stack)
+        model = _model(backend, json_out, stack, llm_timeout)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
         try:
             status = orch.start(
@@ -632,6 +646,7 @@ def resume_cmd(
     arms: ArmsOption = None,
     backend: BackendOption = "rules",
     db: DbOption = None,
+    llm_timeout: LlmTimeoutOption = None,
 ) -> None:
     """Continue a paused or interrupted run (after a review prompt, a crash or a kill)."""
     from sdi.orchestrator import Orchestrator
@@ -647,7 +662,7 @@ def resume_cmd(
     robots = _arms(arms, cell, json_out)
     db = _database(db, run_id=run_id)
     with ExitStack() as stack:
-        model = _model(backend, json_out, stack)
+        model = _model(backend, json_out, stack, llm_timeout)
         orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
         try:
             status = orch.resume(run_id, decision)

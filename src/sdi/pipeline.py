@@ -17,7 +17,7 @@ from pydantic import BaseModel, ConfigDict
 
 from sdi.design.composer import compose
 from sdi.errors import InfeasibleError, InputError, SpecError
-from sdi.inspector.verifier import verify
+from sdi.inspector.verifier import cap_violations, verify
 from sdi.inspector.violation import Violation
 from sdi.language import Reading, read
 from sdi.model.cell import CellConfig
@@ -25,6 +25,7 @@ from sdi.model.layout import Layout
 from sdi.spec.structure_spec import Spec
 
 Status = Literal["success", "partial", "failure", "error"]
+SpecSource = Literal["model", "grammar"]
 
 
 class PlanResult(BaseModel):
@@ -45,8 +46,13 @@ class PlanResult(BaseModel):
     notes: tuple[str, ...] = ()
     ignored: tuple[str, ...] = ()
     reading: Reading | None = None
+    llm_malformed: int = 0
+    llm_failures: int = 0
+    spec_source: SpecSource | None = None
+    """Who wrote the spec: the model, or the grammar (no model, or its reply was not used)."""
 
     def to_json_dict(self) -> dict[str, Any]:
+        listed, omitted = cap_violations(self.violations)  # at most 50 per constraint
         out: dict[str, Any] = {
             "status": self.status,
             "command": self.command,
@@ -56,9 +62,18 @@ class PlanResult(BaseModel):
             "spec": self.spec.model_dump(mode="json", exclude_none=True) if self.spec else None,
             "layout": self.layout.to_json_dict() if self.layout is not None else None,
             "sequence": list(self.sequence) if self.sequence is not None else None,
-            "violations": [v.to_json_dict() for v in self.violations],
-            "metrics": {"seconds": round(self.seconds, 6), "llm_calls": self.llm_calls},
+            "violations": [v.to_json_dict() for v in listed],
+            "metrics": {
+                "seconds": round(self.seconds, 6),
+                "llm_calls": self.llm_calls,
+                "llm_malformed": self.llm_malformed,
+                "llm_failures": self.llm_failures,
+            },
         }
+        if self.spec_source is not None:
+            out["spec_source"] = self.spec_source
+        if omitted:
+            out["omitted"] = omitted
         if self.error:
             out["error"] = self.error
         if self.status == "error":
@@ -85,7 +100,7 @@ def plan(command: str, cell: CellConfig | None = None) -> PlanResult:
     try:
         layout = compose(spec, cell)
     except (InfeasibleError, InputError) as exc:
-        return done(status="failure", spec=spec, error=str(exc), **said)
+        return done(status="failure", spec=spec, spec_source="grammar", error=str(exc), **said)
     report = verify(layout, cell, precedence=spec.precedence)
     status: Status = "failure"
     if report.passed:
@@ -94,6 +109,7 @@ def plan(command: str, cell: CellConfig | None = None) -> PlanResult:
         status=status,
         **said,
         spec=spec,
+        spec_source="grammar",
         layout=layout,
         sequence=report.sequence,
         violations=report.violations,
@@ -101,10 +117,10 @@ def plan(command: str, cell: CellConfig | None = None) -> PlanResult:
     )
 
 
-def _error(passed: bool, violations: int, reading: Reading) -> str | None:
+def _error(passed: bool, violations: int, reading: Reading | None) -> str | None:
     if not passed:
         return f"{violations} constraint violation(s)"
-    if not reading.complete:
+    if reading is not None and not reading.complete:
         return "the layout verifies, but part of the command was not used: " + ", ".join(
             f"'{m}'" for m in reading.material
         )
@@ -128,30 +144,51 @@ def plan_with(command: str, method: str, model: Any, cell: CellConfig | None = N
     cell = cell or CellConfig()
     m = METHODS[method]
     start = time.perf_counter()
-    before = model.usage.calls if model is not None else 0
+    usage = model.usage if model is not None else None
+    before = (usage.calls, usage.malformed, usage.failures) if usage is not None else (0, 0, 0)
+    notes: list[str] = []
+    spec_source: SpecSource | None = None
 
     def done(**kw: Any) -> PlanResult:
-        calls = (model.usage.calls - before) if model is not None else 0
+        now = (usage.calls, usage.malformed, usage.failures) if usage is not None else (0, 0, 0)
         return PlanResult(
-            command=command, seconds=time.perf_counter() - start, llm_calls=calls, **kw
+            command=command,
+            seconds=time.perf_counter() - start,
+            llm_calls=now[0] - before[0],
+            llm_malformed=now[1] - before[1],
+            llm_failures=now[2] - before[2],
+            spec_source=spec_source,
+            notes=tuple(notes),
+            **kw,
         )
 
     spec: Spec | None = None
+    reading: Reading | None = None
     if model is None or m.specifier:
         try:
-            spec = Specifier(model if m.specifier else None, cell).specify(command).spec
+            specified = Specifier(model if m.specifier else None, cell).specify(command)
         except SpecError as exc:
             return done(status="error", error=str(exc), understood=exc.understood or None)
+        spec, notes = specified.spec, list(specified.notes)
+        spec_source = "model" if specified.source == "llm" else "grammar"
+        reading = specified.reading if spec_source == "grammar" else None
+        if reading is not None:
+            notes = [*reading.notes, *notes]
     ctx = RunContext(cell, m, model, None)  # type: ignore[arg-type]
     outcome = _designer(ctx).design(spec, command)
     if outcome.layout is None:
         return done(status="failure", spec=spec, error="; ".join(outcome.notes) or "no layout")
     report = outcome.report or verify(outcome.layout, cell)
+    status: Status = "failure"
+    if report.passed:
+        status = "partial" if reading is not None and not reading.complete else "success"
     return done(
-        status="success" if report.passed else "failure",
+        status=status,
         spec=spec,
         layout=outcome.layout,
         sequence=report.sequence,
         violations=report.violations,
-        error=None if report.passed else f"{len(report.violations)} constraint violation(s)",
+        error=_error(report.passed, len(report.violations), reading),
+        ignored=reading.ignored if reading is not None else (),
+        reading=reading,
     )

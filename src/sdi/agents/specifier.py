@@ -20,7 +20,7 @@ from pydantic import ValidationError
 
 from sdi.agents.prompts import SPEC_PROMPT
 from sdi.errors import SpecError
-from sdi.language import read
+from sdi.language import Reading, read
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
 from sdi.model.cell import CellConfig
@@ -33,6 +33,7 @@ class SpecResult:
     spec: Spec
     source: str  # "rules" | "llm" | "rules (llm malformed)" | "rules (llm disagreed)"
     notes: list[str] = field(default_factory=list)
+    reading: Reading | None = None  # the grammar's reading of the command, when it had one
 
 
 class Specifier:
@@ -42,16 +43,18 @@ class Specifier:
 
     def specify(self, command: str) -> SpecResult:
         rules: Spec | None = None
+        reading: Reading | None = None
         rules_error: SpecError | None = None
         try:
-            rules = read(command, self.cell).spec
+            reading = read(command, self.cell)
+            rules = reading.spec
         except SpecError as exc:
             rules_error = exc
         if self.model is None:
             if rules is None:
                 assert rules_error is not None
                 raise rules_error
-            return SpecResult(rules, "rules")
+            return SpecResult(rules, "rules", reading=reading)
         try:
             reply = self.model.chat(
                 [{"role": "system", "content": SPEC_PROMPT}, {"role": "user", "content": command}],
@@ -68,7 +71,12 @@ class Specifier:
                     f"neither the model nor the grammar understood the command ({exc})",
                     understood=rules_error.understood if rules_error else {},
                 ) from None
-            return SpecResult(rules, "rules (llm malformed)", [f"model output unusable: {exc}"])
+            return SpecResult(
+                rules,
+                "rules (llm malformed)",
+                [f"the model's reply was unusable ({_why(exc)}); used the grammar"],
+                reading,
+            )
         if rules is not None:
             conflict = disagreement(rules, llm_spec, stated_numbers(command))
             if conflict:
@@ -80,6 +88,7 @@ class Specifier:
                         f"used the grammar's: model read {llm_spec.describe()!r}, grammar read "
                         f"{rules.describe()!r}"
                     ],
+                    reading,
                 )
         return SpecResult(llm_spec, "llm")
 
@@ -135,6 +144,15 @@ def disagreement(rules: Spec, model: Spec, stated: set[float] | None = None) -> 
     if mine != other:
         return "relations between the structures differ"
     return None
+
+
+def _why(exc: Exception) -> str:
+    """A short reason for a fallback note: what was wrong with the model's reply."""
+    if isinstance(exc, LLMError):
+        return exc.reason
+    if isinstance(exc, ValidationError):
+        return f"not a valid spec: {exc.error_count()} validation error(s)"
+    return f"not a JSON spec: {str(exc)[:80]}"
 
 
 __all__ = ["SpecResult", "Specifier", "disagreement"]

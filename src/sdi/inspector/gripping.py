@@ -14,8 +14,8 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-from scipy.spatial import cKDTree
 
+from sdi.inspector.box_index import overlapping
 from sdi.model.cell import ParallelGripper, VacuumGripper
 from sdi.model.layout import Layout
 
@@ -87,7 +87,7 @@ class GripModel:
     """Grip options of every part and which other parts block which option.
 
     `fits[i, o]`: the tool of option o can hold part i at all. `blocks` rows are
-    ``(i, o, j)``: part j, when present, blocks option o of part i.
+    ``(i, o, j)``, sorted: part j, when present, blocks option o of part i.
     """
 
     layout: Layout
@@ -113,36 +113,40 @@ class GripModel:
         return options, fit, self._blocks(boxes)
 
     def _blocks(self, boxes: list[np.ndarray]) -> np.ndarray:
+        """Rows (i, o, j), sorted, for every part j whose box reaches more than ε into a
+        keep-out box of option o of part i (j ≠ i). A grid hash finds the overlaps, so the
+        cost is near-linear in the parts and the rows, however dense the layout."""
         layout = self.layout
         n = len(layout)
         if n < 2 or not boxes:
             return np.zeros((0, 3), dtype=np.intp)
         c, h = layout.centres, layout.half_extents
-        lateral = max(float(np.max(np.abs(b[:, :, [0, 1]] - c[:, None, 0:1]))) for b in boxes)
-        lateral = max(
-            lateral,
-            *(float(np.max(np.abs(b[:, :, [2, 3]] - c[:, None, 1:2]))) for b in boxes),
-        )
-        radius = lateral + float(h[:, :2].max()) + self.eps
-        pairs = cKDTree(c[:, :2]).query_pairs(radius, p=np.inf, output_type="ndarray")
-        pairs = pairs.astype(np.intp).reshape(-1, 2)
-        both = np.concatenate([pairs, pairs[:, ::-1]])  # (part i, other j)
-        floor = np.min([b[:, :, 4].min(axis=1) for b in boxes], axis=0)  # lowest keep-out z
-        both = both[c[both[:, 1], 2] + h[both[:, 1], 2] > floor[both[:, 0]] + self.eps]
-        i, j = both[:, 0], both[:, 1]
-        j_lo, j_hi = c[j] - h[j], c[j] + h[j]
-        rows = []
+        top = c[:, 2] + h[:, 2]
+        # implied by the overlap in exact arithmetic; kept so rounding decides as it always has
+        floor = np.min([b[:, :, 4].min(axis=1) for b in boxes], axis=0)
+        n_opt = len(boxes)
+        keys = []
         for o, b in enumerate(boxes):
-            bi = b[i]  # (M, B, 6)
-            hit = np.ones(bi.shape[:2], dtype=bool)
-            for d in range(3):
-                overlap = np.minimum(bi[:, :, 2 * d + 1], j_hi[:, None, d]) - np.maximum(
-                    bi[:, :, 2 * d], j_lo[:, None, d]
-                )
-                hit &= overlap > self.eps
-            k = np.nonzero(hit.any(axis=1))[0]
-            rows.append(np.stack([i[k], np.full(k.size, o), j[k]], axis=1))
-        return np.concatenate(rows).astype(np.intp).reshape(-1, 3)
+            flat = b.reshape(-1, 6)
+            q, j = overlapping(flat[:, 0::2], flat[:, 1::2], c - h, c + h, self.eps)
+            i = q // b.shape[1]
+            ok = (i != j) & (top[j] > floor[i] + self.eps)
+            keys.append((i[ok].astype(np.int64) * n_opt + o) * n + j[ok])
+        key = np.sort(np.concatenate(keys))  # one sorted row per (part, option, blocker)
+        key = key[np.concatenate([key[:1] == key[:1], key[1:] != key[:-1]])]
+        part_option, blocker = np.divmod(key, n)
+        part, option = np.divmod(part_option, n_opt)
+        return np.stack([part, option, blocker], axis=1).astype(np.intp)
+
+    @cached_property
+    def _by_part(self) -> np.ndarray:
+        """`blocks[ptr[i]:ptr[i + 1]]` are the rows of part i (blocks are sorted by part)."""
+        return np.searchsorted(self.blocks[:, 0], np.arange(len(self.layout) + 1))
+
+    def rows_of(self, part: int) -> np.ndarray:
+        """The `blocks` rows (part, o, j) of one part, in O(its rows)."""
+        ptr = self._by_part
+        return self.blocks[ptr[part] : ptr[part + 1]]
 
     @property
     def options(self) -> list[GripOption]:
@@ -166,6 +170,6 @@ class GripModel:
 
     def blockers_given(self, part: int, rank: np.ndarray) -> list[int]:
         """Parts placed before `part` that block any of its fitting options."""
-        b = self.blocks
-        rows = b[(b[:, 0] == part) & (rank[b[:, 2]] < rank[part]) & self.fits[part, b[:, 1]]]
+        b = self.rows_of(part)
+        rows = b[(rank[b[:, 2]] < rank[part]) & self.fits[part, b[:, 1]]]
         return sorted(set(rows[:, 2].tolist()))

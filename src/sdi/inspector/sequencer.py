@@ -43,7 +43,7 @@ def disassemble(analysis: Analysis) -> tuple[list[int], Stuck | None]:
     pred_ptr = np.searchsorted(by_upper[:, 1], np.arange(n + 1)).tolist()
     preds = by_upper[:, 0].tolist()
 
-    fitting = blocks[fits[blocks[:, 0], blocks[:, 1]]]
+    fitting = blocks[fits[blocks[:, 0], blocks[:, 1]]]  # sorted by part, like `blocks`
     count = np.zeros((n, n_opt), dtype=np.int64)
     np.add.at(count, (fitting[:, 0], fitting[:, 1]), 1)
     count[~fits] = -1  # an option whose tool does not fit never opens
@@ -87,14 +87,16 @@ def disassemble(analysis: Analysis) -> tuple[list[int], Stuck | None]:
     order = removal[::-1]
     if len(order) == n:
         return order, None
-    remaining = [i for i in range(n) if not removed[i]]
-    remaining_set = set(remaining)
+    part_ptr = np.searchsorted(fitting[:, 0], np.arange(n + 1)).tolist()
+    fitting_blocker = fitting[:, 2].tolist()
     ungrippable: dict[int, list[int]] = {}
     waiting: list[int] = []
-    for i in remaining:
+    for i in range(n):
+        if removed[i]:
+            continue
         if out_degree[i] == 0:
-            rows = blocks[(blocks[:, 0] == i) & fits[i, blocks[:, 1]]]
-            ungrippable[i] = sorted({j for j in rows[:, 2].tolist() if j in remaining_set})
+            blockers = fitting_blocker[part_ptr[i] : part_ptr[i + 1]]
+            ungrippable[i] = sorted({j for j in blockers if not removed[j]})
         else:
             waiting.append(i)
     return order, Stuck(ungrippable, waiting)

