@@ -92,6 +92,12 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
     if spec.shape == "row" and spec.height is not None and spec.height > 1:
         notes.append(f"a row {spec.height} high is a wall: built a wall")
         spec = spec.model_copy(update={"shape": "wall", "gap_m": None})
+    if (
+        spec.shape in ("cross", "pyramid")
+        and spec.width is not None
+        and spec.width == (spec.length or spec.width)
+    ):
+        spec = spec.model_copy(update={"width": None, "length": spec.length or spec.width})
     implied = {
         k: None
         for k, v in spec.model_dump(exclude_none=True).items()

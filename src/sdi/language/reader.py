@@ -296,7 +296,7 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         " ",
-        "",
+        "'{0}': as an enclosure is",
     ),
     # "a castle without the corner towers": a ring
     (
@@ -340,8 +340,9 @@ _REWRITES += [
     # "3 stacks: one of 1, one of 2 and one of 3 cubes" → of 1, 2 and 3 cubes
     (
         re.compile(
-            r"[:,]?\s*\bone\s+of\s+(\w+)\s*(?:,|and)\s*one\s+of\s+(\w+)"
-            r"(?:\s*(?:,|and)\s*(?:one\s+of\s+)?(\w+))?",
+            r"[:,]?\s*\bone\s+of\s+(\w+)(?:\s+(?:cubes?|parts?|blocks?))?\s*(?:,|and)\s*(?:the\s+other\s+|one\s+)of"
+            r"\s+(\w+)(?:\s+(?:cubes?|parts?|blocks?))?"
+            r"(?:\s*(?:,|and)\s*(?:one\s+of\s+)?(\w+)(?:\s+(?:cubes?|parts?|blocks?))?)?",
             re.IGNORECASE,
         ),
         " of {0}, {1} and {2} ",
@@ -463,8 +464,8 @@ _REWRITES += [
     ),
     (
         re.compile(r"\bnot\s+too\s+many\s+(steps|levels|layers|cubes|stairs)\b", re.IGNORECASE),
-        " a few {0} ",
-        "read '{0}' as a few",
+        " 3 {0} ",
+        "read '{0}' as a few (3)",
     ),
     (
         re.compile(r"\b(pyramid|ziggurat)(\s+that\s+is|\s*,)?\s+not\s+flat\b", re.IGNORECASE),
@@ -887,7 +888,14 @@ def _clauses(doc: Doc) -> list[list[int]]:
     current: list[int] = []
     for tok in doc:
         w = tok.lower_
-        if w in (";", ".", "!", "?") and tok.i != len(doc) - 1 and not tok.like_num:
+        spaced_dash = (
+            w in ("-", "--") and tok.i > 0 and doc[tok.i - 1].whitespace_ and tok.whitespace_
+        )
+        if (
+            (w in (";", ".", "!", "?") or spaced_dash)
+            and tok.i != len(doc) - 1
+            and not tok.like_num
+        ):
             if current:
                 clauses.append(current)
                 current = []
@@ -1181,6 +1189,7 @@ def _clause_phrases(
 # -- 5. slot filling ------------------------------------------------------------------------
 def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> list[StructureSpec]:
     structures: list[StructureSpec] = []
+    pending: list[str] = []
     joiners = {r.object for r in rels if r.kind == "joined"} | {
         r.subject for r in rels if r.kind == "on" and _beam_only(phrases[r.subject].text)
     }
@@ -1206,11 +1215,17 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             # "begin with a 2-step staircase and keep adding steps until it has 4"
             tail = _Phrase(tokens=[], clause=p.clause, text=p.text[change.start() :])
             p.text = re.sub(r"(?:,|\band\b|\bthen\b|\s)+$", "", p.text[: change.start()])
+        if pending and not [q for q in phrases[:k] if q.spec is not None]:
+            p.text = " , ".join([*pending, p.text])  # "High: 3. Long: 5. Wall."
+            pending.clear()
         try:
-            spec, unused = parse_phrase(p.text, st.cell)
+            spec, unused = _parse_or_base(p, st)
             spec = _copies(spec, p.text, st)
         except SpecError:
             if _continues(p, phrases[:k]):
+                continue
+            if not [q for q in phrases[:k] if q.spec is not None] and not _chatter(p.text):
+                pending.append(p.text)
                 continue
             if _chatter(p.text):
                 st.ignored.append(p.text)
@@ -1233,7 +1248,25 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             if tok is not None:
                 free.remove(tok.i)
             _account(w, tok, st)
+    for text in pending:
+        st.material.append(text)
+        st.notes.append(f"ignored '{text}': no structure named there")
     return structures
+
+
+def _parse_or_base(p: _Phrase, st: _State) -> tuple[Spec, list[str]]:
+    """The phrase grammar's reading; "a sturdy base" with nothing else named is a platform."""
+    try:
+        return parse_phrase(p.text, st.cell)
+    except SpecError:
+        base = re.search(r"\b(base|foundation|footing|plinth)\b", p.text, re.IGNORECASE)
+        if not base:
+            raise
+        text = p.text[: base.start()] + "platform" + p.text[base.end() :]
+        spec, unused = parse_phrase(text, st.cell)
+        st.notes.append(f"read '{base.group(0)}' as a platform (one layer)")
+        p.text = text
+        return spec, unused
 
 
 def _beam_only(text: str) -> bool:

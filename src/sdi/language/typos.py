@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from rapidfuzz import process
+from rapidfuzz import fuzz, process
 from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.language import words
@@ -20,7 +20,7 @@ from sdi.spec import lexicon as lx
 
 _WORD = re.compile(r"[A-Za-z]+")
 _SHAPES = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES)
-_SUFFIXES = {"y", "s", "es", "ed", "d", "ing", "er", "est", "ly", "ish", "ie", "ies"}
+_SUFFIXES = {"y", "ed", "ing", "er", "est", "ly", "ish", "ie", "ies"}
 
 
 @lru_cache(maxsize=1)
@@ -67,10 +67,12 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
         best = min(d for _, d, _ in found)
         top = [c for c, d, _ in found if d == best]
         if len(top) > 1:
-            same_start = [c for c in top if c[0] == w[0]]
-            if len(same_start) != 1:
+            same_start = [c for c in top if c[0] == w[0]] or top
+            # a tie: the candidate sharing most letters in order ("thre" → "three", not "the")
+            ranked = sorted(same_start, key=lambda c: -fuzz.ratio(w, c))
+            if len(ranked) > 1 and fuzz.ratio(w, ranked[0]) == fuzz.ratio(w, ranked[1]):
                 return raw
-            top = same_start
+            top = ranked[:1]
         notes.append(f"corrected '{raw}' to '{top[0]}'")
         return top[0]
 

@@ -64,7 +64,8 @@ HARMLESS = _words(
     what how which who where when while though although because since so, such own same
     identical matching similar another additional further other more please! alright right
     sure yes yeah well guys folks team assistant system sdi go add adding insert finish
-    complete continue repeat begin thats id isnt its im ive youre whats lets pls plz ty thx
+    complete continue repeat begin keep probably placed situated sited simple thats id isnt
+    its im ive youre whats lets pls plz ty thx
     umm um uh er hmm basically actually honestly hand irb irb120 irb1600 straight anywhere
     measuring measures measured outside outer external climbing ascending going
     """

@@ -38,7 +38,7 @@ SIZE_TABLE: dict[str, dict[str, tuple[int, int, int]]] = {
     "tower": {"height": (2, 3, 6)},
     "row": {"length": (3, 5, 8)},
     "grid": {"length": (2, 3, 4), "width": (2, 3, 4)},
-    "wall": {"length": (3, 4, 6), "height": (1, 2, 3)},
+    "wall": {"length": (3, 4, 6), "height": (1, 2, 4)},
     "block": {"length": (2, 3, 3), "width": (2, 3, 3), "height": (1, 2, 3)},
     "pack": {"count": (4, 8, 12)},
     "pyramid": {"length": (2, 3, 4)},
@@ -830,6 +830,9 @@ class _Parser:
                     h.multiplicity = v
                     take(k)
                     continue
+                if v == 1 and k + 1 == h.index and not h.plural:
+                    take(k)  # "1 tower", "one tower": one structure, not one part
+                    continue
                 if (
                     self.word(k + 1) in lx.PART_WORDS
                     or prev in ("of", "with", "using", "from", "has", "have")
@@ -872,6 +875,13 @@ class _Parser:
                 else:
                     p.setdefault("_count", q)
                 take(k)
+                continue
+            if w in ("thin", "skinny", "slim", "narrow", "slender") and h.shape in (
+                "tower",
+                "wall",
+                "row",
+            ):
+                take(k)  # a tower is one part wide anyway
                 continue
             if w in ("low", "flat", "squat") and h.shape in ("grid", "row", "pack"):
                 take(k)  # "a low, wide platform": a grid is one layer anyway
@@ -1271,7 +1281,9 @@ class _Parser:
             key = PRIMARY[shape] if PRIMARY[shape] != "count" else "length"
             return [spec.model_copy(update={key: v}) for v in each]
         if each is not None:
-            self.notes.append(f"values {each}: used the first")
+            self.notes.append(
+                f"ignored values {each[1:]}: one {shape} takes one value; used {each[0]}"
+            )
         if copies > 20:
             raise SpecError(
                 f"{copies} separate {shape}s is more than 20", understood=self.understood()

@@ -501,6 +501,7 @@ SIZE_WORDS: dict[str, tuple[str, str]] = {
     "sizable": ("all", "L"), "sizeable": ("all", "L"), "substantial": ("all", "L"),
     "impressive": ("all", "L"), "majestic": ("all", "L"), "monumental": ("all", "L"),
     "bigger": ("all", "L"), "larger": ("all", "L"), "generous": ("all", "L"),
+    "chunky": ("all", "L"), "hefty": ("all", "L"), "beefy": ("all", "L"), "stout": ("all", "L"),
     "tall": ("height", "L"), "high": ("height", "L"), "lofty": ("height", "L"),
     "towering": ("height", "L"), "taller": ("height", "L"), "higher": ("height", "L"),
     "low": ("height", "S"), "short": ("height", "S"), "squat": ("height", "S"),
