@@ -98,7 +98,7 @@ def test_a_bridge_on_its_own_pillars_is_not_a_relation():
 @pytest.mark.parametrize(
     "command, dropped",
     [
-        ("a chunky tower of 3", "chunky"),
+        ("a sparkly tower of 3", "sparkly"),
         ("a wobbly wall 4 long", "wobbly"),
         ("a 3-cube tower 6 cubes tall", "3 parts"),
     ],

@@ -142,7 +142,7 @@ _BEAMS = {"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "gi
           "slab", "bridge", "bridges", "arch", "roof", "deck", "span"}  # fmt: skip
 _FRONTED_VERBS = {"goes", "go", "stands", "sits", "comes", "is", "are", "put", "place", "build",
                   "add", "stack", "lies", "rests", "belongs", "should", "will", "must"}  # fmt: skip
-_QUANTITY_NOUNS = {"pair", "couple", "set", "group", "bunch", "handful", "trio", "row", "line"}
+_QUANTITY_NOUNS = {"pair", "couple", "set", "group", "bunch", "handful", "trio"}
 _EMPTY = {"empty", "hollow", "open", "free", "blank"}
 _COPY = {"second", "another", "same", "identical", "matching", "similar", "twin", "copy"}
 _KINDS: dict[str, RelationKind] = {"on": "on_top_of", "around": "around", "next": "next_to"}
