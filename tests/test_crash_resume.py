@@ -52,7 +52,7 @@ def test_kill_during_human_review_then_resume(tmp_path):
     before = history(db, run_id)
     assert "verification" in before and "execution" not in before
     done = subprocess.run(
-        [*SDI, "resume", run_id, "--approve", "--db", str(db), "--arms", "irb120", "--json"],
+        [*SDI, "resume", run_id, "--approve-all", "--db", str(db), "--json"],
         capture_output=True, text=True, timeout=600,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
@@ -66,7 +66,7 @@ def test_crash_during_replan_then_resume(tmp_path):
     db = tmp_path / "runs.sqlite"
     env = {**os.environ, "SDI_CRASH_AT": "replan"}
     crashed = subprocess.run(
-        [*SDI, "run", "a 3-cube tower at x = 0.4", "--fault", "low_ceiling", "--approve",
+        [*SDI, "run", "a 3-cube tower at x = 0.4", "--fault", "low_ceiling", "--approve-all",
          "--db", str(db), "--arms", "irb120", "--json"],
         capture_output=True, text=True, timeout=600, env=env,
     )  # fmt: skip
@@ -77,7 +77,7 @@ def test_crash_during_replan_then_resume(tmp_path):
     bus.close()
     assert failures and failures[0].payload["status"] == "failure"
     resumed = subprocess.run(
-        [*SDI, "resume", run_id, "--approve", "--db", str(db), "--arms", "irb120", "--json"],
+        [*SDI, "resume", run_id, "--db", str(db), "--json"],
         capture_output=True, text=True, timeout=600,
     )  # fmt: skip
     assert resumed.returncode == 0, resumed.stderr
@@ -86,8 +86,13 @@ def test_crash_during_replan_then_resume(tmp_path):
     log = subprocess.run(
         [*SDI, "log", run_id, "--db", str(db), "--json"], capture_output=True, text=True
     )
-    types = [m["type"] for m in json.loads(log.stdout)["messages"]]
-    assert types.count("execution") == 2 and "route" in types
+    messages = json.loads(log.stdout)["messages"]
+    types = [m["type"] for m in messages]
+    # one failed execution before the crash, one after the repair: EXECUTE did not run again
+    # on resume (checkpoints are written before the next node starts), and nothing is merged
+    assert types.count("execution_started") == 2 and types.count("execution") == 2
+    assert "route" in types
+    assert [m["seq"] for m in messages] == list(range(1, len(messages) + 1))
 
 
 def test_resume_unknown_run_is_bad_input(tmp_path):

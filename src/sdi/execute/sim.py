@@ -9,6 +9,10 @@
   by a constraint at its actual relative pose, so tracking errors carry through to placement.
 - Every Q_exec sample goes to the streaming monitor; execution pauses at the first breach.
 - Failure injection: a step whose target lies in a blocked region fails before it moves.
+- Progress: `progress` is told of every part set down (step, part, robot, its pose then), so
+  an interrupted execution leaves a record of what is built; `placed` starts an execution
+  from such a record: those parts stand where they were set down, their steps are skipped,
+  and the robots start where the first step still to do begins.
 
 Only a `VerifiedJob` is accepted, and it is re-verified before anything moves.
 """
@@ -17,8 +21,10 @@ from __future__ import annotations
 
 import math
 import tempfile
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pybullet as pb
@@ -49,6 +55,7 @@ class ExecutionResult:
     failure: FailureEvent | None = None
     completed_steps: int = 0
     simulated_seconds: float = 0.0
+    scenario: str | None = None  # the injected fault scenario that stopped execution
 
     @property
     def max_placement_error(self) -> float:
@@ -97,8 +104,13 @@ class SimDriver:
         motion: MotionPlan,
         *,
         monitor: object | None = None,
+        placed: Mapping[str, Sequence[float]] | None = None,
+        progress: Callable[[dict[str, Any]], None] | None = None,
     ) -> ExecutionResult:
-        """Run the job; `monitor` is a streaming monitor with `update(robot, t, q)`."""
+        """Run the job; `monitor` is a streaming monitor with `update(robot, t, q)`.
+
+        `placed` maps parts already built to their poses (x, y, z m, qw, qx, qy, qz): the run
+        continues from there. `progress` receives one dict per part set down."""
         job.recheck()  # the safety gate, again, right before motion
         placed_ids = {s.part_id for s in tasks.steps}
         if placed_ids != set(job.layout.ids) or [s.part_id for s in tasks.steps] != list(
@@ -110,7 +122,9 @@ class SimDriver:
         c = pb.connect(pb.DIRECT)
         tmp = tempfile.TemporaryDirectory(prefix="sdi-sim-")
         try:
-            return self._run(c, Path(tmp.name), job, tasks, motion, monitor)
+            return self._run(
+                c, Path(tmp.name), job, tasks, motion, monitor, dict(placed or {}), progress
+            )
         finally:
             pb.disconnect(c)
             tmp.cleanup()
@@ -123,8 +137,17 @@ class SimDriver:
         tasks: TaskPlan,
         motion: MotionPlan,
         monitor: object | None,
+        placed: dict[str, Sequence[float]],
+        progress: Callable[[dict[str, Any]], None] | None,
     ) -> ExecutionResult:
         dt = 1.0 / self.physics_hz
+        unknown = set(placed) - {s.part_id for s in tasks.steps}
+        if unknown:
+            from sdi.errors import UnverifiedPlanError
+
+            raise UnverifiedPlanError(f"refused: parts {sorted(unknown)} are not in this job")
+        todo = [m for m in motion.steps if m.part_id not in placed]
+        t0 = min((m.start for m in todo), default=0.0)
         pb.setGravity(0, 0, -9.81, physicsClientId=c)
         pb.setTimeStep(dt, physicsClientId=c)
         pb.setPhysicsEngineParameter(numSolverIterations=self.solver_iterations, physicsClientId=c)
@@ -149,7 +172,7 @@ class SimDriver:
                     joints.append(j)
                 if info[12].decode() == "tcp":
                     tcp = j
-            q0 = motion.trajectories[name].q[0]
+            q0 = motion.trajectories[name].at(np.array([t0]))[0]
             for j, v in zip(joints, q0, strict=True):
                 pb.resetJointState(body, j, float(v), physicsClientId=c)
             bodies[name] = (body, joints, tcp)
@@ -163,15 +186,24 @@ class SimDriver:
         released: dict[str, float] = {}
         settled: dict[str, np.ndarray] = {}
         failure: FailureEvent | None = None
+        scenario_name: str | None = None
         status = "success"
+        for built in tasks.steps:  # what an earlier, interrupted execution built stays built
+            if built.part_id in placed:
+                pose = [float(v) for v in placed[built.part_id]]
+                T = _pose_matrix(tuple(pose[:3]), (pose[4], pose[5], pose[6], pose[3]))
+                parts[built.part_id] = self._spawn(c, T, built.part_size)
+                spawned.add(built.step)
+                released[built.part_id] = t0 - 1.0
         end = max(tr.t[-1] for tr in motion.trajectories.values())
         recorded: dict[str, list[tuple[float, np.ndarray]]] = {r: [] for r in tasks.robots}
         next_sample = dict.fromkeys(tasks.robots, 0.0)
+        events = [e for e in events if e.part_id not in placed]
         ev = 0
         n_steps = math.ceil(end / dt) + 1
-        done_steps = 0
+        done_steps = len(placed)
         check_every = max(1, round(1.0 / dt))  # the phase's wall-clock limit, once a sim second
-        for k in range(n_steps):
+        for k in range(math.ceil(t0 / dt - 1e-9) if todo else n_steps, n_steps):
             if k % check_every == 0:
                 deadline.check()
             t = k * dt
@@ -185,6 +217,7 @@ class SimDriver:
                     event = scenario.check(step)
                     if event is not None:
                         failure, status = event, "failure"
+                        scenario_name = scenario.name
                         break
                 if failure is not None:
                     break
@@ -217,6 +250,15 @@ class SimDriver:
                     )  # fmt: skip
                     done_steps += 1
                     released[e.part_id] = t
+                    if progress is not None:
+                        pos, orn = pb.getBasePositionAndOrientation(
+                            parts[e.part_id], physicsClientId=c
+                        )
+                        progress({
+                            "step": step.step, "part_id": e.part_id, "robot": e.robot,
+                            "t": round(t, 4), "pose": list(pose_tuple(_pose_matrix(pos, orn))),
+                            "completed": done_steps,
+                        })  # fmt: skip
             if failure is not None:
                 break
             for name, (body, joints, _) in bodies.items():
@@ -274,14 +316,14 @@ class SimDriver:
             pb.stepSimulation(physicsClientId=c)
         as_built: dict[str, tuple[float, ...]] = {}
         errors: dict[str, float] = {}
-        for placed in tasks.steps:
-            if placed.part_id not in released:
+        for finished in tasks.steps:
+            if finished.part_id not in released:
                 continue  # never set down (execution stopped before its step)
-            pos, orn = pb.getBasePositionAndOrientation(parts[placed.part_id], physicsClientId=c)
+            pos, orn = pb.getBasePositionAndOrientation(parts[finished.part_id], physicsClientId=c)
             T = _pose_matrix(pos, orn)
-            as_built[placed.part_id] = pose_tuple(T)
-            errors[placed.part_id] = float(
-                np.linalg.norm(T[:3, 3] - placed.T_world_part_target[:3, 3])
+            as_built[finished.part_id] = pose_tuple(T)
+            errors[finished.part_id] = float(
+                np.linalg.norm(T[:3, 3] - finished.T_world_part_target[:3, 3])
             )
         if failure is None and errors:
             # the as-built check: every part must end where the design put it
@@ -310,6 +352,7 @@ class SimDriver:
             failure=failure,
             completed_steps=done_steps,
             simulated_seconds=min(end, n_steps * dt),
+            scenario=scenario_name,
         )
 
     def _control(self, c: int, body: int, joints: list[int], tr: JointTrajectory, t: float) -> None:
