@@ -101,3 +101,52 @@ def test_resume_unknown_run_is_bad_input(tmp_path):
         capture_output=True, text=True, timeout=120,
     )  # fmt: skip
     assert proc.returncode == 2 and "deadbeef0000" in proc.stderr
+
+
+def test_kill_during_execution_resumes_from_what_is_built(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    env = {**os.environ, "SDI_CRASH_AFTER_STEPS": "1"}  # dies right after the first part is set
+    crashed = subprocess.run(
+        [*SDI, "run", "a 3-cube tower at x = 0.4", "--approve-all", "--db", str(db),
+         "--arms", "irb120", "--json"],
+        capture_output=True, text=True, timeout=600, env=env,
+    )  # fmt: skip
+    assert crashed.returncode == 137
+    bus = MessageBus(db)
+    (run_id,) = bus.runs()
+    bus.close()
+    before = history(db, run_id)
+    assert before.count("step_done") == 1 and "execution" not in before
+    # resume (no answer): it must not move; it shows what is built and asks again
+    asked = subprocess.run(
+        [*SDI, "resume", run_id, "--db", str(db), "--json"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert asked.returncode == 0, asked.stderr
+    waiting = json.loads(asked.stdout)["waiting_for"]
+    assert waiting["kind"] == "resume_execution"
+    built = waiting["as_built"]
+    assert [p["part_id"] for p in built["placed"]] == ["c1"] and built["steps_completed"] == 1
+    assert built["record_hash"] == waiting["record_hash"]
+    assert "execution_interrupted" in history(db, run_id)
+    assert history(db, run_id).count("execution_started") == 1  # nothing moved yet
+    done = subprocess.run(
+        [*SDI, "resume", run_id, "--approve", "--db", str(db), "--json"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    result = json.loads(done.stdout)
+    assert result["status"] == "success" and result["execution"]["v_traj"] == "pass"
+    assert result["execution"]["completed_steps"] == 3
+    assert result["execution"]["record_hash"] == waiting["record_hash"] == result["approved_hash"]
+    log = subprocess.run(
+        [*SDI, "log", run_id, "--db", str(db), "--json"], capture_output=True, text=True
+    )
+    messages = json.loads(log.stdout)["messages"]
+    types = [m["type"] for m in messages]
+    assert types.count("record") == 1  # motion was planned once, before the first approval
+    assert types.count("step_done") == 3  # c1 before the kill, c2 and c3 after: none twice
+    parts = [m["payload"]["part_id"] for m in messages if m["type"] == "step_done"]
+    assert sorted(parts) == ["c1", "c2", "c3"]
+    assert [m["seq"] for m in messages] == list(range(1, len(messages) + 1))
+    assert before == types[: len(before)]  # nothing from before the kill was lost

@@ -70,7 +70,6 @@ from sdi.skills.builtin import default_registry
 from sdi.spec.structure_spec import Spec
 
 ACTIONS = ("shift", "flatten", "modify", "relax", "escalate")
-TERMINAL = ("failure", "rejected", "aborted", "success", "verified")
 
 
 class RoutingError(SDIError):
@@ -620,7 +619,7 @@ def _timed(name: str, fn: Node) -> Node:
 
 def _router(name: str, targets: tuple[str, ...]) -> Callable[[RunState], str]:
     def route(state: RunState) -> str:
-        phase = "end" if state.get("status") in TERMINAL else state.get("phase", "")
+        phase = state.get("phase", "")
         if phase not in targets:
             raise RoutingError(f"node {name!r} asked for route {phase!r}; it has {list(targets)}")
         return phase
