@@ -8,12 +8,14 @@ from __future__ import annotations
 
 import json
 import sys
+import time
 from contextlib import ExitStack
 from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 
 from sdi.errors import InputError, SDIError, SequencingError
 from sdi.inspector.analysis import Analysis
@@ -461,6 +463,47 @@ def _finish(status: Any, as_json: bool) -> None:
     raise typer.Exit(codes.get(status.status, 1))
 
 
+PHASES = {
+    "spec": "specified", "layout": "designed", "verification": "inspected",
+    "review": "design review answered", "record": "motion planned: record",
+    "confirm": "execution confirmed", "execution_started": "executing",
+    "motion_started": "robots moving", "step_done": "part set down",
+    "execution": "execution finished", "route": "replanning",
+    "execution_interrupted": "found an interrupted execution", "refused": "refused",
+    "edit_refused": "edit refused", "failure": "failure",
+}  # fmt: skip
+
+
+def _progress(orch: Any, as_json: bool) -> None:
+    """Show the run's progress by phase on stderr as its events are stored (not for --json)."""
+    if as_json:
+        return
+    start = time.monotonic()
+
+    def show(m: Any) -> None:
+        what = PHASES.get(m.type)
+        if what is None:
+            return
+        p = m.payload
+        detail = {
+            "verification": lambda: (
+                "passed" if p.get("passed") else f"{len(p.get('violations', []))} violation(s)"
+            ),
+            "record": lambda: f"{str(p.get('record_hash'))[:12]}, makespan {p.get('makespan_s')} s",
+            "step_done": lambda: (
+                f"{p.get('part_id')} by {p.get('robot')} ({p.get('completed')} done)"
+            ),
+            "route": lambda: str(p.get("action")),
+            "execution": lambda: f"{p.get('status')}, V_traj {p.get('v_traj')}",
+            "refused": lambda: str(p.get("error")),
+            "edit_refused": lambda: str(p.get("error")),
+        }.get(m.type, lambda: "")()
+        line = f"[dim]{time.monotonic() - start:7.1f} s[/dim]  {what}"
+        err.print(f"{line}  {escape(detail)}" if detail else line)
+
+    orch.bus.listeners.append(show)
+
+
 def _busy(exc: Exception, as_json: bool) -> NoReturn:
     if as_json:
         _emit({"status": "busy", "error": str(exc)})
@@ -499,6 +542,7 @@ def run_cmd(
                 db=db, cell=cell, model=model, arms=arms.split(",") if arms else None
             )
             stack.callback(orch.close)
+            _progress(orch, json_out)
             run_id = orch.new_run_id()
             if not json_out:
                 err.print(f"run {run_id}")
@@ -580,6 +624,7 @@ def resume_cmd(
                     field="--arms",
                 )
             orch.model = _model(info.backend, json_out, stack)
+            _progress(orch, json_out)
             with orch.owning(run_id):  # one process at a time, prompts included
                 if approve or approve_all:
                     pending = orch.status(run_id)

@@ -9,7 +9,8 @@
   by a constraint at its actual relative pose, so tracking errors carry through to placement.
 - Every Q_exec sample goes to the streaming monitor; execution pauses at the first breach.
 - Failure injection: a step whose target lies in a blocked region fails before it moves.
-- Progress: `progress` is told of every part set down (step, part, robot, its pose then), so
+- Progress: `progress` is told when motion starts (``kind: motion_started``) and of every part
+  set down (``kind: step_done``: step, part, robot, its pose then), so
   an interrupted execution leaves a record of what is built; `placed` starts an execution
   from such a record: those parts stand where they were set down, their steps are skipped,
   and the robots start where the first step still to do begins.
@@ -203,10 +204,13 @@ class SimDriver:
         n_steps = math.ceil(end / dt) + 1
         done_steps = len(placed)
         check_every = max(1, round(1.0 / dt))  # the phase's wall-clock limit, once a sim second
-        for k in range(math.ceil(t0 / dt - 1e-9) if todo else n_steps, n_steps):
+        first = math.ceil(t0 / dt - 1e-9) if todo else n_steps
+        for k in range(first, n_steps):
             if k % check_every == 0:
                 deadline.check()
             t = k * dt
+            if k == first and progress is not None:
+                progress({"kind": "motion_started", "t": round(t, 4)})
             # parts appear on the supply when their step begins; injected faults fire there
             for s, t_start in starts.items():
                 if s in spawned or t + 1e-12 < t_start:
@@ -255,9 +259,9 @@ class SimDriver:
                             parts[e.part_id], physicsClientId=c
                         )
                         progress({
-                            "step": step.step, "part_id": e.part_id, "robot": e.robot,
-                            "t": round(t, 4), "pose": list(pose_tuple(_pose_matrix(pos, orn))),
-                            "completed": done_steps,
+                            "kind": "step_done", "step": step.step, "part_id": e.part_id,
+                            "robot": e.robot, "t": round(t, 4), "completed": done_steps,
+                            "pose": list(pose_tuple(_pose_matrix(pos, orn))),
                         })  # fmt: skip
             if failure is not None:
                 break

@@ -55,18 +55,25 @@ class MessageBus:
         self._db.isolation_level = None  # autocommit: every send is its own transaction
         self._db.executescript(SCHEMA)
         self._lock = threading.Lock()
+        self.listeners: list[Callable[[Message], None]] = []
+        """Called with every event this process sends, after it is stored (progress display)."""
 
     def send(
         self, run_id: str, sender: str, receiver: str, type: str, payload: dict[str, Any]
     ) -> int:
         """Store one event; returns its sequence number."""
         body = json.dumps(plain(payload), sort_keys=True, default=str)
+        now = time.time()
         with self._lock:
             row = self._db.execute(
                 "INSERT INTO events SELECT ?, COALESCE(MAX(seq), 0) + 1, ?, ?, ?, ?, ? "
                 "FROM events WHERE run_id = ? RETURNING seq",
-                (run_id, time.time(), sender, receiver, type, body, run_id),
+                (run_id, now, sender, receiver, type, body, run_id),
             ).fetchone()
+        if self.listeners:
+            message = Message(run_id, int(row[0]), now, sender, receiver, type, json.loads(body))
+            for listener in self.listeners:
+                listener(message)
         return int(row[0])
 
     def history(self, run_id: str, *, after: int = 0) -> list[Message]:

@@ -445,7 +445,8 @@ def execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     crash_after = int(os.environ.get("SDI_CRASH_AFTER_STEPS", "0") or 0)
 
     def progress(event: dict[str, Any]) -> None:
-        say(state, ctx, "operator", "orchestrator", "step_done", event)
+        kind = str(event.pop("kind", "step_done"))
+        say(state, ctx, "operator", "orchestrator", kind, event)
         if crash_after and event.get("completed") == crash_after:
             os._exit(137)  # fault injection for the kill-during-execution test
 
