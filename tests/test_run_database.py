@@ -138,3 +138,24 @@ def test_log_and_resume_do_not_create_a_database(tmp_path):
         proc = sdi(*args, "--db", str(missing))
         assert proc.returncode == 2 and "abc" in proc.stderr, proc.stderr
     assert not missing.exists()
+
+
+@pytest.mark.parametrize(
+    ("values", "said"),
+    [
+        ({"faults": ["meteor"]}, "fault"),
+        ({"method": "Magic"}, "method"),
+        ({"cell": {"workspace": {"x_min": "far"}}}, "cell"),
+        ({"cell_hash": "0" * 64}, "hash"),
+        ({"arms": "irb120"}, "arms"),
+    ],
+)
+def test_plain_but_wrong_state_is_refused_naming_the_file(tmp_path, values, said):
+    db = tmp_path / "crafted.db"
+    run_id = paused_run(db)
+    orch = Orchestrator(db=db)
+    orch.graph.update_state({"configurable": {"thread_id": run_id}}, values)
+    orch.close()
+    proc = sdi("resume", run_id, "--approve", "--db", str(db))
+    assert proc.returncode == 2 and str(db) in proc.stderr and said in proc.stderr, proc.stderr
+    assert "Traceback" not in proc.stderr

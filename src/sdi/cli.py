@@ -390,11 +390,18 @@ def _show_record(waiting: dict[str, Any]) -> None:
         out.print("Continuing sets the arms to the start of the first step not done.")
 
 
-def _read_edits(path: str, as_json: bool) -> Any:
+def _edits_file(path: str) -> Any:
     try:
         return json.loads(Path(path).read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        _bad_input(InputError(f"cannot read edits from {path}: {exc}", field="--edit"), as_json)
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
+        raise InputError(f"cannot read edits from {path}: {exc}", field="--edit") from None
+
+
+def _read_edits(path: str, as_json: bool) -> Any:
+    try:
+        return _edits_file(path)
+    except InputError as exc:
+        _bad_input(exc, as_json)
 
 
 def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
@@ -421,11 +428,15 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
         question, default = "Failure report: [r]etry, [e]dit FILE.json, [x] abort", "x"
     while True:
         decision = _answer(typer.prompt(question, default=default), kind)
-        if decision is not None:
+        if decision is None:
+            err.print("please answer with one of the choices shown")
+            continue
+        if decision["action"] != "edit":
             break
-        err.print("please answer with one of the choices shown")
-    if decision["action"] == "edit":
-        return {"action": "edit", "edits": _read_edits(decision["file"], as_json)}
+        try:
+            return {"action": "edit", "edits": _edits_file(decision["file"])}
+        except InputError as exc:  # a typo in a file name: say so and ask again
+            err.print(f"[bold red]error:[/bold red] {escape(str(exc))}")
     if decision["action"] == "approve" and waiting.get("record_hash"):
         decision["record_hash"] = waiting["record_hash"]
     return decision

@@ -156,14 +156,33 @@ class Orchestrator:
                        str(v.get("cell_hash", "")), v.get("arms"))  # fmt: skip
 
     def _context(self, values: dict[str, Any]) -> RunContext:
-        method = str(values.get("method", "Hybrid"))
+        """The run's context from what it was started with; a stored value that is not what SDI
+        writes (a crafted or damaged database) is refused naming the file."""
+        from pydantic import ValidationError
+
+        from sdi.execute.faults import SCENARIOS
+
+        def bad(what: str) -> InputError:
+            return InputError(f"{self.db}: run {values.get('run_id')} holds {what}", field="--db")
+
+        method = values.get("method", "Hybrid")
         if method not in METHODS:
-            raise InputError(
-                f"unknown method {method!r}; choose from {sorted(METHODS)}", field="--method"
-            )
-        cell = CellConfig.model_validate(values["cell"]) if values.get("cell") else CellConfig()
-        return RunContext(cell, METHODS[method], self.model, self.bus, self.records,
-                          values.get("arms"))  # fmt: skip
+            raise bad(f"an unknown method {method!r}")
+        faults = values.get("faults") or []
+        if not isinstance(faults, list) or not all(f in SCENARIOS for f in faults):
+            raise bad(f"unknown fault scenarios {faults!r}")
+        arms = values.get("arms")
+        if arms is not None and not (
+            isinstance(arms, list) and all(isinstance(a, str) for a in arms)
+        ):
+            raise bad(f"malformed arms {arms!r}")
+        try:
+            cell = CellConfig.model_validate(values["cell"]) if values.get("cell") else CellConfig()
+        except (ValidationError, TypeError, ValueError) as exc:
+            raise bad(f"an invalid cell configuration ({str(exc).splitlines()[0]})") from None
+        if values.get("cell") and cell_hash(cell) != values.get("cell_hash"):
+            raise bad("a cell configuration that does not match its recorded hash")
+        return RunContext(cell, METHODS[method], self.model, self.bus, self.records, arms)
 
     def _status(self, run_id: str) -> RunStatus:
         snapshot = self._snapshot(run_id)
