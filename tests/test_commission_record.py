@@ -117,10 +117,11 @@ def test_a_layout_changed_after_approval_is_refused(orch):
 def test_a_cell_changed_after_approval_is_refused(orch):
     s = at_confirmation(orch)
     record = s.waiting_for["record_hash"]
-    other = CellConfig.model_validate({"workspace": {"z_max": 0.45}}).model_dump(mode="json")
+    other = CellConfig.model_validate({"workspace": {"z_max": 0.45}})
     config = {"configurable": {"thread_id": s.run_id}}
+    changed = {"cell": other.model_dump(mode="json"), "cell_hash": cell_hash(other)}
     orch.graph.update_state(
-        config, {"cell": other, "approved_hash": record, "phase": "execute"}, as_node="confirm"
+        config, {**changed, "approved_hash": record, "phase": "execute"}, as_node="confirm"
     )
     s = orch.resume(s.run_id)
     assert s.status == "failure" and "cell configuration changed" in s.state["failure"]["message"]
