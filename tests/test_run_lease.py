@@ -181,3 +181,6 @@ def test_log_follow_streams_a_run_live_until_it_stops(tmp_path):
     kinds = [e["type"] for e in events]
     assert kinds[-1] == "stopped" and events[-1]["payload"]["status"] == "success"
     assert kinds.count("step_done") == 2 and "execution" in kinds
+    samples = [e["payload"] for e in events if e["type"] == "samples"]  # Q_exec and δ, live
+    assert samples and all(s["delta_max_rad"] < 0.05 for s in samples)
+    assert len(samples[0]["q"]["irb120"][0]) == 1 + 6  # t and six joints

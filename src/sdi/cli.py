@@ -694,7 +694,9 @@ def log_cmd(
             else:
                 body = json.dumps(m.payload, default=str)
                 out.print(
-                    f"{m.seq:>5}  {m.sender} → {m.receiver}  {m.type}  {body[:160]}", markup=False
+                    f"{m.seq:>5}  {m.sender} → {m.receiver}  {m.type}  {body[:160]}",
+                    markup=False,
+                    soft_wrap=True,
                 )
     except KeyboardInterrupt:
         pass

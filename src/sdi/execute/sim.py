@@ -9,8 +9,9 @@
   by a constraint at its actual relative pose, so tracking errors carry through to placement.
 - Every Q_exec sample goes to the streaming monitor; execution pauses at the first breach.
 - Failure injection: a step whose target lies in a blocked region fails before it moves.
-- Progress: `progress` is told when motion starts (``kind: motion_started``) and of every part
-  set down (``kind: step_done``: step, part, robot, its pose then), so
+- Progress: `progress` is told when motion starts (``kind: motion_started``), of every part
+  set down (``kind: step_done``: step, part, robot, its pose then) and, once a simulated
+  second, of Q_exec and δ so far (``kind: samples``), so
   an interrupted execution leaves a record of what is built; `placed` starts an execution
   from such a record: those parts stand where they were set down, their steps are skipped,
   and the robots start where the first step still to do begins.
@@ -43,6 +44,11 @@ from sdi.tasks.task import TaskPlan
 
 DISTURBANCE = 0.003
 """A placed part that moves more than this (m) after settling was disturbed: execution stops."""
+
+SAMPLE_BATCH_S = 1.0
+"""Q_exec goes to `progress` in batches of this much simulated time, s ..."""
+SAMPLE_BATCH_HZ = 10.0
+"""... thinned to this rate, Hz (a live view; the full Q_exec is in the result)."""
 
 
 @dataclass
@@ -205,6 +211,8 @@ class SimDriver:
         done_steps = len(placed)
         check_every = max(1, round(1.0 / dt))  # the phase's wall-clock limit, once a sim second
         first = math.ceil(t0 / dt - 1e-9) if todo else n_steps
+        batch_every = max(1, round(SAMPLE_BATCH_S * self.physics_hz))
+        sent = dict.fromkeys(tasks.robots, 0)  # Q_exec samples already in a batch, per robot
         for k in range(first, n_steps):
             if k % check_every == 0:
                 deadline.check()
@@ -276,6 +284,8 @@ class SimDriver:
                     next_sample[name] += 1.0 / self.robots[name].controller_rate_hz
                     if monitor is not None:
                         breach = monitor.update(name, t, q) or breach  # type: ignore[attr-defined]
+            if progress is not None and k > first and k % batch_every == 0:
+                self._batch(progress, recorded, sent, monitor)
             # placed parts must stay where they were set down (checked every 50 ms, after
             # they had 0.2 s to settle)
             if k % max(1, int(0.05 * self.physics_hz)) == 0:
@@ -316,6 +326,8 @@ class SimDriver:
                     message=f"δ = {breach.deviation:.4f} rad exceeded ε at t = {breach.t:.3f} s",
                 )  # fmt: skip
                 break
+        if progress is not None:
+            self._batch(progress, recorded, sent, monitor)
         for _ in range(int(self.settle_seconds * self.physics_hz)):
             pb.stepSimulation(physicsClientId=c)
         as_built: dict[str, tuple[float, ...]] = {}
@@ -358,6 +370,27 @@ class SimDriver:
             simulated_seconds=min(end, n_steps * dt),
             scenario=scenario_name,
         )
+
+    def _batch(
+        self,
+        progress: Callable[[dict[str, Any]], None],
+        recorded: dict[str, list[tuple[float, np.ndarray]]],
+        sent: dict[str, int],
+        monitor: object | None,
+    ) -> None:
+        """One `samples` event: each robot's Q_exec since the last batch (t s, q rad) at
+        `SAMPLE_BATCH_HZ`, and the largest δ so far (rad)."""
+        q: dict[str, list[list[float]]] = {}
+        for name, rows in recorded.items():
+            every = max(1, round(self.robots[name].controller_rate_hz / SAMPLE_BATCH_HZ))
+            new = rows[sent[name] :]
+            q[name] = [[round(t, 4), *(round(float(v), 6) for v in qq)] for t, qq in new[::every]]
+            sent[name] = len(rows)
+        if not any(q.values()):
+            return
+        delta = getattr(monitor, "max_deviation", None)
+        progress({"kind": "samples", "q": q,
+                  "delta_max_rad": None if delta is None else round(float(delta), 6)})  # fmt: skip
 
     def _control(self, c: int, body: int, joints: list[int], tr: JointTrajectory, t: float) -> None:
         """Joint position control with velocity feed-forward from Q_plan."""
