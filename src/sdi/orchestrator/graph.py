@@ -1,7 +1,7 @@
 """The orchestrator: a LangGraph state machine over PLAN, DESIGN, INSPECT, HUMAN_REVIEW,
 PRE_EXECUTE, EXECUTE and REPLAN (paper §III-B, Alg. 1).
 
-The graph is built once (`GRAPH`) and drawn by LangGraph itself (`sdi graph`). Every node is a
+The graph comes from `build_graph()` and is drawn by LangGraph itself (`sdi graph`). Every node is a
 module-level function `node(state, runtime)` over the run's typed state and an explicit
 `RunContext` (the cell, the method, the model, the event stream, the record store). Edges:
 
@@ -30,7 +30,7 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Literal, TypedDict
+from typing import Any, TypedDict
 
 from langgraph.graph import END, START, StateGraph
 from langgraph.runtime import Runtime
@@ -116,7 +116,8 @@ class RunState(TypedDict, total=False):
     status: str
     phase: str  # the route out of the node that ran last
     notes: list[str]
-    approve: bool  # unattended: every review approved (`--approve-all`)
+    approve: bool  # unattended: every review approved (`--approve-all`), but never the
+    # confirmation after an interrupted execution nor a failure report
     design_only: bool  # stop once the design is verified (benchmarks): status "verified"
 
 
@@ -669,6 +670,3 @@ def llm_critic(ctx: RunContext, layout: Layout) -> dict[str, Any]:
     except (ValueError, AttributeError, LLMError, SDIError):
         ctx.model.usage.malformed += 1
         return {"passed": False, "problems": ["critic answer unusable"]}
-
-
-Kind = Literal["design_review", "pre_execute", "resume_execution", "failure_report"]

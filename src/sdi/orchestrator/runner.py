@@ -207,9 +207,11 @@ class Orchestrator:
         except UnsafeCheckpointError as exc:
             raise InputError(f"{self.db}: run {run_id}: {exc}", field="--db") from None
         status = self._status(run_id)
-        kind = (status.waiting_for or {}).get("kind")
-        self.bus.send(run_id, "orchestrator", "human", "stopped",
-                      {"status": status.status, "waiting_for": kind})  # fmt: skip
+        waiting = status.waiting_for or {}
+        stopped = {"status": status.status, "waiting_for": waiting.get("kind")}
+        if waiting.get("record_hash"):
+            stopped["record_hash"] = waiting["record_hash"]
+        self.bus.send(run_id, "orchestrator", "human", "stopped", stopped)
         return status
 
     # -- runs -------------------------------------------------------------------------------------
