@@ -150,3 +150,48 @@ def test_kill_during_execution_resumes_from_what_is_built(tmp_path):
     assert sorted(parts) == ["c1", "c2", "c3"]
     assert [m["seq"] for m in messages] == list(range(1, len(messages) + 1))
     assert before == types[: len(before)]  # nothing from before the kill was lost
+
+
+def test_kill_9_from_outside_during_execution_loses_and_repeats_nothing(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    proc = subprocess.Popen(
+        [*SDI, "run", "a 4-cube tower at x = 0.4", "--approve-all", "--db", str(db),
+         "--arms", "irb120", "--json"],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+    )  # fmt: skip
+    run_id = None
+    while proc.poll() is None:  # watch the real event stream; kill once a part is down
+        if db.exists():
+            bus = MessageBus(db)
+            runs = bus.runs()
+            if runs and "step_done" in [m.type for m in bus.history(runs[0])]:
+                run_id = runs[0]
+                proc.send_signal(signal.SIGKILL)
+            bus.close()
+        time.sleep(0.02)
+    proc.wait()
+    assert proc.returncode == -signal.SIGKILL and run_id is not None
+    before = history(db, run_id)
+    built = before.count("step_done")
+    assert 1 <= built < 4 and "execution" not in before
+    asked = subprocess.run(
+        [*SDI, "resume", run_id, "--db", str(db), "--json"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    waiting = json.loads(asked.stdout)["waiting_for"]
+    assert waiting["kind"] == "resume_execution" and len(waiting["as_built"]["placed"]) == built
+    done = subprocess.run(
+        [*SDI, "resume", run_id, "--approve", "--db", str(db), "--json"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    result = json.loads(done.stdout)
+    assert result["status"] == "success" and result["execution"]["completed_steps"] == 4
+    assert result["execution"]["record_hash"] == waiting["record_hash"]
+    bus = MessageBus(db)
+    messages = bus.history(run_id)
+    bus.close()
+    parts = [m.payload["part_id"] for m in messages if m.type == "step_done"]
+    assert sorted(parts) == ["c1", "c2", "c3", "c4"]  # every part set down exactly once
+    assert [m.type for m in messages].count("record") == 1  # planned once
+    assert [m.seq for m in messages] == list(range(1, len(messages) + 1))

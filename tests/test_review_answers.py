@@ -135,3 +135,23 @@ def test_concurrent_writers_get_contiguous_numbers(tmp_path):
     for n in range(3):  # each writer's events, all there, in its own order
         mine = [m.payload["k"] for m in history if m.sender == f"w{n}"]
         assert mine == list(range(150))
+
+
+def test_the_confirmation_shows_the_record_and_what_is_built(capsys):
+    from sdi.cli import _show_record
+
+    _show_record(
+        {
+            "record_hash": "ab" * 32,
+            "planning": {"makespan_s": 12.5, "steps": 3, "parallel": False, "notes": [],
+                         "parts_per_robot": {"irb120": ["c1", "c2", "c3"]}},
+            "as_built": {"placed": [{"part_id": "c1", "step": 0, "robot": "irb120",
+                                     "pose": [0.4, 0.3, 0.025, 1, 0, 0, 0]}]},
+        }
+    )  # fmt: skip
+    text = " ".join(capsys.readouterr().out.split())
+    assert "ab" * 32 in text and "makespan 12.5 s" in text and "irb120: 3 steps: c1 c2 c3" in text
+    assert (
+        "interrupted after 1 of 3 steps" in text
+        and "c1 (step 1, irb120) at (0.4, 0.3, 0.025)" in text
+    )
