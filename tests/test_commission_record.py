@@ -172,3 +172,16 @@ def test_replan_with_cell_inspects_and_plans_again(tmp_path):
     kinds = [m["type"] for m in json.loads(
         sdi("log", status["run_id"], "--json", "--db", str(db)).stdout)["messages"]]  # fmt: skip
     assert kinds.count("verification") == 2 and "cell_changed" in kinds
+
+
+def test_programs_can_be_written_from_the_stored_record(orch):
+    from sdi.export import rapid_module
+
+    s = at_confirmation(orch)
+    record = orch.record(s.run_id)
+    assert record.hash == s.waiting_for["record_hash"]
+    texts = []
+    for _ in range(2):
+        plan = record.commissioning(record.cell())
+        texts.append(rapid_module(plan.job, plan.tasks, plan.motion, plan.robots["irb120"]))
+    assert texts[0] == texts[1] and "MODULE" in texts[0]  # the same motion, every time

@@ -25,7 +25,7 @@ from langgraph.checkpoint.sqlite import SqliteSaver
 from langgraph.types import Command
 
 from sdi.errors import InputError
-from sdi.execute.record import cell_hash
+from sdi.execute.record import CommissioningRecord, cell_hash
 from sdi.llm.chat import ChatModel, Usage
 from sdi.model.cell import CellConfig
 from sdi.orchestrator.bus import MessageBus
@@ -322,6 +322,15 @@ class Orchestrator:
                 as_node="pre_execute",
             )
         return self._invoke(run_id, values, None)
+
+    def record(self, run_id: str) -> CommissioningRecord:
+        """The run's commissioning record — the approved one, else the one awaiting approval —
+        checked against its hash (for exporters, the twin, audits)."""
+        values = self._values(run_id)
+        record_hash = values.get("approved_hash") or values.get("record_hash")
+        if not record_hash:
+            raise InputError(f"run {run_id} has no commissioning record yet", field="RUN_ID")
+        return self.records.get(run_id, str(record_hash))
 
     def status(self, run_id: str) -> RunStatus:
         self._values(run_id)
