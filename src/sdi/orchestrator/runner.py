@@ -18,9 +18,8 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from langchain_core.runnables import RunnableConfig
 from langgraph.checkpoint.sqlite import SqliteSaver
 from langgraph.types import Command
 
@@ -35,6 +34,9 @@ from sdi.orchestrator.methods import METHODS
 from sdi.orchestrator.records import RecordStore
 from sdi.orchestrator.rundb import connect, default_db, prepare
 from sdi.orchestrator.serde import PlainSerializer, UnsafeCheckpointError
+
+if TYPE_CHECKING:
+    from langchain_core.runnables import RunnableConfig
 
 __all__ = ["Orchestrator", "RunInfo", "RunStatus", "default_db"]
 
