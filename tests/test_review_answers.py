@@ -155,3 +155,18 @@ def test_the_confirmation_shows_the_record_and_what_is_built(capsys):
         "interrupted after 1 of 3 steps" in text
         and "c1 (step 1, irb120) at (0.4, 0.3, 0.025)" in text
     )
+
+
+def test_a_failure_report_is_not_approved_blindly(tmp_path):
+    from scripted_model import ScriptedChat, cube
+
+    model = ScriptedChat(lambda msgs, opt: {"objects": [cube("a", 0.4, 0.3, 0.3)]})  # floats
+    db = tmp_path / "runs.sqlite"
+    orch = Orchestrator(db=db, model=model)
+    s = orch.start("zorblax", method="LGOrch", backend="rules")
+    orch.close()
+    assert s.waiting_for["kind"] == "failure_report"
+    proc = sdi("resume", s.run_id, "--approve", "--db", str(db))
+    assert proc.returncode == 2 and "failure report" in proc.stderr
+    proc = sdi("resume", s.run_id, "--reject", "--json", "--db", str(db))
+    assert json.loads(proc.stdout)["status"] == "failure"  # aborted, by a person's answer

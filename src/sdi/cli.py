@@ -639,6 +639,13 @@ def resume_cmd(
             with orch.owning(run_id):  # one process at a time, prompts included
                 if approve or approve_all:
                     pending = orch.status(run_id)
+                    if (pending.waiting_for or {}).get("kind") == "failure_report":
+                        raise InputError(
+                            f"run {run_id} waits on a failure report, which is not approved: "
+                            "answer it with --edit FILE, --reject (abort), or interactively "
+                            "(retry / edit / abort)",
+                            field=answers[0],
+                        )
                     decision = {"action": "approve", "by": answers[0]}
                     record_hash = (pending.waiting_for or {}).get("record_hash")
                     if record_hash:
