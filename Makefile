@@ -54,6 +54,7 @@ bench: $(STAMP) $(LOCAL_STAMP)
 	$(PY) benchmarks/methods.py --backend local --phase-seconds 60
 	$(PY) benchmarks/critic_ablation.py --backend local
 	$(PY) benchmarks/cell_motion.py
+	$(PY) benchmarks/approval_to_motion.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache

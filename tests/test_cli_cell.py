@@ -72,12 +72,30 @@ def test_run_waits_for_a_human_ok(tmp_path):
     assert status.get("execution") is None  # nothing moved
 
 
+def test_run_approve_answers_only_the_design_review(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    proc = run("run", "a 2-cube tower at x = 0.4", "--approve", "--arms", "irb120", "--json",
+               "--db", str(db))  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    status = json.loads(proc.stdout)
+    waiting = status["waiting_for"]
+    assert status["status"] == "paused" and waiting["kind"] == "pre_execute"
+    assert status.get("execution") is None  # nothing moved
+    record = waiting["record_hash"]
+    assert len(record) == 64 and waiting["planning"]["record_hash"] == record
+    proc = run("resume", status["run_id"], "--approve", "--json", "--db", str(db))
+    assert proc.returncode == 0, proc.stderr
+    done = json.loads(proc.stdout)
+    assert done["status"] == "success" and done["approved_hash"] == record
+    assert done["execution"]["record_hash"] == record  # what ran is what was approved
+
+
 def test_run_with_approval_executes(tmp_path):
     db = tmp_path / "runs.sqlite"
     proc = run(
         "run",
         "a 2-cube tower at x = 0.4",
-        "--approve",
+        "--approve-all",
         "--arms",
         "irb120",
         "--json",

@@ -13,12 +13,14 @@ import json
 import math
 import sqlite3
 import sys
+import time
 from contextlib import ExitStack
 from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.text import Text
 from typer.core import TyperGroup
 
@@ -506,38 +508,104 @@ def _model(backend: str, as_json: bool, stack: ExitStack, timeout: float | None 
         _bad_input(exc, as_json)
 
 
+APPROVE_WORDS = ("a", "approve", "y", "yes", "ok")
+REJECT_WORDS = ("r", "reject", "n", "no")
+
+
+def _answer(text: str, kind: str) -> dict[str, Any] | None:
+    """An operator's typed answer at a review, or None if it is not one (ask again)."""
+    words = text.strip().split(maxsplit=1)
+    word = words[0].lower() if words else ""
+    if word in ("e", "edit") and kind in ("design_review", "failure_report"):
+        if len(words) < 2:
+            return None
+        return {"action": "edit", "file": words[1]}
+    if kind == "failure_report":
+        if word in ("r", "retry"):
+            return {"action": "retry"}
+        if word in ("x", "abort", "n", "no"):
+            return {"action": "abort"}
+        return None
+    if word in APPROVE_WORDS:
+        return {"action": "approve"}
+    if word in REJECT_WORDS:
+        return {"action": "reject"}
+    return None
+
+
+def _show_record(waiting: dict[str, Any]) -> None:
+    planning = waiting.get("planning") or {}
+    out.print(
+        f"commissioning record [bold]{waiting.get('record_hash')}[/bold]\n"
+        f"  makespan {planning.get('makespan_s')} s, {planning.get('steps')} steps, "
+        f"{'two arms in parallel' if planning.get('parallel') else 'one arm at a time'}"
+    )
+    for robot, parts in (planning.get("parts_per_robot") or {}).items():
+        out.print(f"  {robot}: {len(parts)} steps: {' '.join(parts)}", markup=False)
+    for note in planning.get("notes") or []:
+        out.print(f"  note: {note}", markup=False)
+    built = waiting.get("as_built")
+    if built:
+        placed = built.get("placed") or []
+        out.print(
+            f"[yellow]an earlier execution of this record was interrupted[/yellow] after "
+            f"{len(placed)} of {planning.get('steps')} steps; already built:"
+        )
+        for p in placed:
+            x, y, z = (round(v, 4) for v in p["pose"][:3])
+            out.print(f"  {p['part_id']} (step {p['step'] + 1}, {p['robot']}) at ({x}, {y}, {z})")
+        out.print("Continuing sets the arms to the start of the first step not done.")
+
+
+def _edits_file(path: str | Path) -> Any:
+    return _read_edits(Path(str(path).strip()))
+
+
+def _edits_or_exit(path: str | Path, as_json: bool) -> Any:
+    try:
+        return _edits_file(path)
+    except InputError as exc:
+        _bad_input(exc, as_json)
+
+
 def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
     """Ask the operator at an interrupt; None when nobody can answer (non-interactive)."""
     waiting = status.waiting_for or {}
     if as_json or not sys.stdin.isatty():
         return None
-    kind = waiting.get("kind")
+    kind = str(waiting.get("kind"))
+    if waiting.get("refused"):
+        err.print(f"[bold red]edit refused:[/bold red] {waiting['refused']}", markup=True)
     if kind == "design_review":
         from sdi.model.layout import parse_layout
         from sdi.render import top_view
 
         layout, _ = parse_layout(waiting.get("layout") or {"objects": []})
         out.print(top_view(layout, CellConfig()))
-        out.print(f"sequence: {' → '.join(waiting.get('sequence') or [])}")
-        answer = typer.prompt("Design review: [a]pprove, [e]dit FILE.json, [r]eject", default="a")
-    elif kind == "pre_execute":
-        _line(out, "planned:", "bold", _describe_planning(waiting.get("planning")))
-        answer = typer.prompt("Execute on the robots (sim)? [a]pprove / [r]eject", default="r")
+        out.print(f"sequence: {' → '.join(waiting.get('sequence') or [])}", markup=False)
+        question, default = "Design review: [a]pprove, [e]dit FILE.json, [r]eject", "a"
+    elif kind in ("pre_execute", "resume_execution"):
+        _show_record(waiting)
+        question, default = "Execute this record on the robots (sim)? [a]pprove / [r]eject", "r"
     else:
         _line(out, "failure:", "red", _describe_failure(waiting.get("failure")))
         for v in waiting.get("violations") or []:
             _line(out, "  -", "", v)
-        answer = typer.prompt("Failure report: [r]etry, [e]dit FILE.json, [x] abort", default="x")
-    while answer.startswith("e"):
-        path = answer.split(maxsplit=1)[1] if " " in answer else typer.prompt("edits file")
+        question, default = "Failure report: [r]etry, [e]dit FILE.json, [x] abort", "x"
+    while True:
+        decision = _answer(typer.prompt(question, default=default), kind)
+        if decision is None:
+            err.print("please answer with one of the choices shown")
+            continue
+        if decision["action"] != "edit":
+            break
         try:
-            return {"action": "edit", "edits": _read_edits(Path(path.strip()))}
-        except InputError as exc:
+            return {"action": "edit", "edits": _edits_file(decision["file"])}
+        except InputError as exc:  # a typo in a file name: say so and ask again
             _line(err, "error:", "bold red", exc)
-            answer = typer.prompt("[e]dit FILE.json again, or another answer", default="e")
-    if kind == "failure_report":
-        return {"action": "retry" if answer.startswith("r") else "abort"}
-    return {"action": "approve" if answer.startswith("a") else "reject"}
+    if decision["action"] == "approve" and waiting.get("record_hash"):
+        decision["record_hash"] = waiting["record_hash"]
+    return decision
 
 
 def _describe_planning(summary: Any) -> str:
@@ -582,21 +650,81 @@ def _finish(status: Any, as_json: bool) -> None:
         _emit(data)
     else:
         out.print_json(data=data)
+        waiting = status.waiting_for or {}
+        if waiting.get("refused"):
+            err.print(f"[bold red]edit refused:[/bold red] {waiting['refused']}")
         if status.status == "paused":
-            kind = (status.waiting_for or {}).get("kind")
+            kind = waiting.get("kind")
+            what = f" record {waiting['record_hash'][:12]}" if waiting.get("record_hash") else ""
             err.print(
-                f"[yellow]paused at {kind}[/yellow]: nothing moves without a human OK. "
-                f"Continue with `sdi resume {status.run_id} --approve` (or --reject, --edit FILE)"
+                f"[yellow]paused at {kind}{what}[/yellow]: nothing moves without a human OK. "
+                f"Continue with `sdi resume {status.run_id} --approve` (or --reject, --edit "
+                "FILE; --approve-all for every later review too)"
             )
+    if status.status == "paused" and (status.waiting_for or {}).get("refused"):
+        raise typer.Exit(2)
     codes = {"success": 0, "paused": 0}
     raise typer.Exit(codes.get(status.status, 1))
+
+
+PHASES = {
+    "spec": "specified", "layout": "designed", "verification": "inspected",
+    "review": "design review answered", "record": "motion planned: record",
+    "confirm": "execution confirmed", "execution_started": "executing",
+    "motion_started": "robots moving", "step_done": "part set down",
+    "execution": "execution finished", "route": "replanning",
+    "execution_interrupted": "found an interrupted execution", "refused": "refused",
+    "edit_refused": "edit refused", "failure": "failure",
+}  # fmt: skip
+
+
+def _progress(orch: Any, as_json: bool) -> None:
+    """Show the run's progress by phase on stderr as its events are stored (not for --json)."""
+    if as_json:
+        return
+    start = time.monotonic()
+
+    def show(m: Any) -> None:
+        what = PHASES.get(m.type)
+        if what is None:
+            return
+        p = m.payload
+        detail = {
+            "verification": lambda: (
+                "passed" if p.get("passed") else f"{len(p.get('violations', []))} violation(s)"
+            ),
+            "record": lambda: f"{str(p.get('record_hash'))[:12]}, makespan {p.get('makespan_s')} s",
+            "step_done": lambda: (
+                f"{p.get('part_id')} by {p.get('robot')} ({p.get('completed')} done)"
+            ),
+            "route": lambda: str(p.get("action")),
+            "execution": lambda: f"{p.get('status')}, V_traj {p.get('v_traj')}",
+            "refused": lambda: str(p.get("error")),
+            "edit_refused": lambda: str(p.get("error")),
+        }.get(m.type, lambda: "")()
+        line = f"[dim]{time.monotonic() - start:7.1f} s[/dim]  {what}"
+        err.print(f"{line}  {escape(detail)}" if detail else line)
+
+    orch.bus.listeners.append(show)
+
+
+def _busy(exc: Exception, as_json: bool) -> NoReturn:
+    if as_json:
+        _emit({"status": "busy", "error": str(exc)})
+    else:
+        err.print(f"[bold red]busy:[/bold red] {exc}")
+    raise typer.Exit(1)
 
 
 @app.command("run")
 def run_cmd(
     command: Annotated[str, typer.Argument(help="what to build, in plain language")],
     approve: Annotated[
-        bool, typer.Option("--approve", help="approve design and execution (unattended runs)")
+        bool, typer.Option("--approve", help="approve the design review (execution still asks)")
+    ] = False,
+    approve_all: Annotated[
+        bool,
+        typer.Option("--approve-all", help="approve every review, execution included (unattended)"),
     ] = False,
     json_out: JsonOption = False,
     cell_path: CellOption = None,
@@ -608,7 +736,7 @@ def run_cmd(
     llm_timeout: LlmTimeoutOption = None,
 ) -> None:
     """Run the whole orchestrator graph: plan, design, inspect, review, confirm, execute (sim)."""
-    from sdi.orchestrator import Orchestrator
+    from sdi.orchestrator import Orchestrator, RunBusyError
 
     _check_faults(fault, json_out)
     cell = _cell(cell_path, json_out)
@@ -616,16 +744,26 @@ def run_cmd(
     db = _database(db)
     with ExitStack() as stack:
         model = _model(backend, json_out, stack, llm_timeout)
-        orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
         try:
-            status = orch.start(
-                command, method=method, backend=backend, faults=list(fault or []), approve=approve
-            )
+            orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
+            stack.callback(orch.close)
+            _progress(orch, json_out)
+            run_id = orch.new_run_id()
+            if not json_out:
+                err.print(f"run {run_id}")
+            with orch.owning(run_id):  # one process at a time, prompts included
+                status = orch.start(
+                    command, method=method, backend=backend, faults=list(fault or []),
+                    approve=approve_all, run_id=run_id,
+                )  # fmt: skip
+                waiting = status.waiting_for or {}
+                if approve and status.status == "paused" and waiting.get("kind") == "design_review":
+                    status = orch.resume(run_id, {"action": "approve", "by": "--approve"})
+                status = _drive(orch, status, json_out)
         except InputError as exc:
             _bad_input(exc, json_out)
-        if not json_out:
-            err.print(f"run {status.run_id}")
-        status = _drive(orch, status, json_out)
+        except RunBusyError as exc:
+            _busy(exc, json_out)
     _finish(status, json_out)
 
 
@@ -633,7 +771,10 @@ def run_cmd(
 def resume_cmd(
     run_id: Annotated[str, typer.Argument(help="the run to continue")],
     approve: Annotated[
-        bool, typer.Option("--approve", help="answer the pending review: approve")
+        bool, typer.Option("--approve", help="answer the pending review (only that one): approve")
+    ] = False,
+    approve_all: Annotated[
+        bool, typer.Option("--approve-all", help="approve the pending review and every later one")
     ] = False,
     reject: Annotated[
         bool, typer.Option("--reject", help="answer the pending review: reject")
@@ -641,71 +782,137 @@ def resume_cmd(
     edit: Annotated[
         Path | None, typer.Option("--edit", help="answer with edits from a JSON file")
     ] = None,
+    replan_with_cell: Annotated[
+        bool,
+        typer.Option(
+            "--replan-with-cell", help="continue with the --cell given now: inspect and plan again"
+        ),
+    ] = False,
     json_out: JsonOption = False,
     cell_path: CellOption = None,
     arms: ArmsOption = None,
-    backend: BackendOption = "rules",
+    backend: Annotated[
+        str | None, typer.Option("--backend", help="must match the run's backend (default: it)")
+    ] = None,
     db: DbOption = None,
     llm_timeout: LlmTimeoutOption = None,
 ) -> None:
-    """Continue a paused or interrupted run (after a review prompt, a crash or a kill)."""
-    from sdi.orchestrator import Orchestrator
+    """Continue a paused or interrupted run (after a review prompt, a crash or a kill), with the
+    method, backend, arms, faults and cell it was started with."""
+    from sdi.orchestrator import Orchestrator, RunBusyError
 
+    flags = {"--approve": approve, "--approve-all": approve_all, "--reject": reject,
+             "--edit": edit is not None}  # fmt: skip
+    answers = [name for name, given in flags.items() if given]
+    if len(answers) > 1:
+        _bad_input(InputError(f"give one answer, not {' and '.join(answers)}"), json_out)
     decision: dict[str, Any] | None = None
     if edit is not None:
-        decision = {"action": "edit", "edits": _read_edits(edit)}
-    elif approve:
-        decision = {"action": "approve"}
+        decision = {"action": "edit", "edits": _edits_or_exit(edit, json_out)}
     elif reject:
         decision = {"action": "reject"}
-    cell = _cell(cell_path, json_out)
-    robots = _arms(arms, cell, json_out)
+    cell = _cell(cell_path, json_out) if cell_path is not None else None
     db = _database(db, run_id=run_id)
     with ExitStack() as stack:
-        model = _model(backend, json_out, stack, llm_timeout)
-        orch = Orchestrator(db=db, cell=cell, model=model, arms=robots)
         try:
-            status = orch.resume(run_id, decision)
+            orch = Orchestrator(db=db, cell=cell, create=False)
+            stack.callback(orch.close)
+            info = orch.info(run_id)
+            if backend is not None and backend != info.backend:
+                raise InputError(
+                    f"run {run_id} was started with backend {info.backend!r}, not {backend!r}; "
+                    "a run continues with what it was started with (omit --backend)",
+                    field="--backend",
+                )
+            wanted = arms.split(",") if arms else None
+            if wanted is not None and wanted != info.arms:
+                raise InputError(
+                    f"run {run_id} was started with arms {info.arms or 'all'}, not {wanted}",
+                    field="--arms",
+                )
+            orch.model = _model(info.backend, json_out, stack, llm_timeout)
+            _progress(orch, json_out)
+            with orch.owning(run_id):  # one process at a time, prompts included
+                if approve or approve_all:
+                    pending = orch.status(run_id)
+                    if (pending.waiting_for or {}).get("kind") == "failure_report":
+                        raise InputError(
+                            f"run {run_id} waits on a failure report, which is not approved: "
+                            "answer it with --edit FILE, --reject (abort), or interactively "
+                            "(retry / edit / abort)",
+                            field=answers[0],
+                        )
+                    decision = {"action": "approve", "by": answers[0]}
+                    record_hash = (pending.waiting_for or {}).get("record_hash")
+                    if record_hash:
+                        decision["record_hash"] = record_hash
+                status = orch.resume(
+                    run_id, decision, approve_all=approve_all, replan_with_cell=replan_with_cell
+                )
+                if decision is None:
+                    status = _drive(orch, status, json_out)
         except InputError as exc:
+            if "no run database" in str(exc):
+                exc = InputError(f"no run {run_id!r}: {exc}")
             _bad_input(exc, json_out)
-        if decision is None:
-            status = _drive(orch, status, json_out)
-        elif approve:
-            while (
-                status.status == "paused"
-                and (status.waiting_for or {}).get("kind") != "failure_report"
-            ):
-                status = orch.resume(run_id, {"action": "approve"})
+        except RunBusyError as exc:
+            _busy(exc, json_out)
     _finish(status, json_out)
 
 
 @app.command("log")
 def log_cmd(
-    run_id: Annotated[str, typer.Argument(help="the run whose audit trail to show")],
+    run_id: Annotated[str, typer.Argument(help="the run whose event stream to show")],
     json_out: JsonOption = False,
+    follow: Annotated[
+        bool, typer.Option("--follow", "-f", help="keep printing events until the run stops")
+    ] = False,
+    after: Annotated[int, typer.Option("--after", help="only events after this number")] = 0,
     db: DbOption = None,
 ) -> None:
-    """The message-bus audit trail of a run: who told whom what, in order."""
+    """The run's event stream (audit trail): who told whom what, in order, one number each."""
     from sdi.orchestrator import MessageBus
+    from sdi.orchestrator.lease import RunLease
 
     path = _database(db, run_id=run_id)
-    bus = MessageBus(path)
-    history = bus.history(run_id)
-    if not history:
-        _fail(f"RUN_ID: no run {run_id!r} in {path}; `sdi run` prints the run id", json_out)
-    if json_out:
-        _emit({"run_id": run_id, "messages": [m.__dict__ for m in history]})
-        return
-    from rich.table import Table
+    try:
+        bus = MessageBus(path, create=False)
+    except InputError as exc:
+        _bad_input(InputError(f"no run {run_id!r}: {exc}"), json_out)
+    if not bus.history(run_id) and not follow:
+        _bad_input(InputError(f"no run {run_id!r} in {path}", field="RUN_ID"), json_out)
+    lease = RunLease(path, run_id)
 
-    table = Table(title=f"run {run_id}")
-    for col in ("#", "sender", "receiver", "type", "payload"):
-        table.add_column(col)
-    for m in history:
-        payload = json.dumps(m.payload, default=str, ensure_ascii=False)
-        cells = (str(m.seq), m.sender, m.receiver, m.type, payload[:120])
-        table.add_row(*(Text(c) for c in cells))
-    out.print(table)
+    def quiet(new: list[Any]) -> bool:
+        return not follow or (not new and lease.holder() is None)
+
+    if json_out and not follow:
+        history = bus.history(run_id, after=after)
+        _emit({"run_id": run_id, "messages": [m.to_json_dict() for m in history]})
+        return
+    try:
+        for m in bus.follow(run_id, after=after, done=quiet):
+            if json_out:
+                _emit(m.to_json_dict())
+            else:
+                body = json.dumps(m.payload, default=str)
+                out.print(
+                    f"{m.seq:>5}  {m.sender} → {m.receiver}  {m.type}  {body[:160]}",
+                    markup=False,
+                    soft_wrap=True,
+                )
+    except KeyboardInterrupt:
+        pass
+    finally:
+        bus.close()
+
+
+@app.command("graph")
+def graph_cmd() -> None:
+    """Print the orchestrator's graph as LangGraph draws it (Mermaid)."""
+    from sdi.orchestrator.graph import mermaid
+
+    sys.stdout.write(mermaid() + "\n")
 
 
 @app.command()

@@ -14,8 +14,9 @@ Paper eq. 18 (π from C* to Q_plan) and eq. 21 (π_exec): every stage is determi
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -234,11 +235,18 @@ def execute(
     epsilon: float = EPSILON,
     faults: tuple[FaultScenario, ...] = (),
     driver: Driver | None = None,
+    placed: Mapping[str, Sequence[float]] | None = None,
+    progress: Callable[[dict[str, Any]], None] | None = None,
 ) -> tuple[ExecutionResult, dict[str, object]]:
-    """Run a commissioned plan on a driver (default: PyBullet) with streaming monitoring."""
+    """Run a commissioned plan on a driver (default: PyBullet) with streaming monitoring.
+
+    `placed` (part id → pose) continues an interrupted execution from what is already built;
+    `progress` is told of every part set down."""
     driver = driver or SimDriver(plan.robots, faults=faults)
     monitor = StreamingMonitor(plan.motion.trajectories, epsilon)
-    result = driver.execute(plan.job, plan.tasks, plan.motion, monitor=monitor)
+    result = driver.execute(
+        plan.job, plan.tasks, plan.motion, monitor=monitor, placed=placed, progress=progress
+    )
     check = None
     if result.executed and set(result.executed) == set(plan.motion.trajectories):
         check = verify_trajectory(plan.motion.trajectories, result.executed, epsilon)
@@ -250,5 +258,6 @@ def execute(
         "epsilon_rad": epsilon,
         "v_traj": check.verdict if check else None,
         "failure": result.failure.to_json_dict() if result.failure else None,
+        "scenario": result.scenario,
     }
     return result, report

@@ -3,12 +3,15 @@
 A driver takes a `VerifiedJob` (the Inspector passed it), its task plan and Q_plan, executes,
 streams Q_exec samples to an optional monitor (`update(robot, t, q) -> breach | None`, and
 stops at the first breach), and reports an `ExecutionResult`: Q_exec, as-built poses and any
-failure event. Drivers must call `job.recheck()` before anything moves.
+failure event. Drivers must call `job.recheck()` before anything moves. `placed` (part id →
+pose) continues an interrupted execution from what is already built; `progress` is told of
+every part set down, so the run's event stream records what is built as it is built.
 """
 
 from __future__ import annotations
 
-from typing import Protocol, runtime_checkable
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any, Protocol, runtime_checkable
 
 from sdi.execute.job import VerifiedJob
 from sdi.execute.sim import ExecutionResult
@@ -27,4 +30,6 @@ class Driver(Protocol):
         motion: MotionPlan,
         *,
         monitor: object | None = None,
+        placed: Mapping[str, Sequence[float]] | None = None,
+        progress: Callable[[dict[str, Any]], None] | None = None,
     ) -> ExecutionResult: ...

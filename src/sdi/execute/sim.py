@@ -9,6 +9,12 @@
   by a constraint at its actual relative pose, so tracking errors carry through to placement.
 - Every Q_exec sample goes to the streaming monitor; execution pauses at the first breach.
 - Failure injection: a step whose target lies in a blocked region fails before it moves.
+- Progress: `progress` is told when motion starts (``kind: motion_started``), of every part
+  set down (``kind: step_done``: step, part, robot, its pose then) and, once a simulated
+  second, of Q_exec and δ so far (``kind: samples``), so
+  an interrupted execution leaves a record of what is built; `placed` starts an execution
+  from such a record: those parts stand where they were set down, their steps are skipped,
+  and the robots start where the first step still to do begins.
 
 Only a `VerifiedJob` is accepted, and it is re-verified before anything moves.
 """
@@ -17,8 +23,10 @@ from __future__ import annotations
 
 import math
 import tempfile
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pybullet as pb
@@ -37,6 +45,11 @@ from sdi.tasks.task import TaskPlan
 DISTURBANCE = 0.003
 """A placed part that moves more than this (m) after settling was disturbed: execution stops."""
 
+SAMPLE_BATCH_S = 1.0
+"""Q_exec goes to `progress` in batches of this much simulated time, s ..."""
+SAMPLE_BATCH_HZ = 10.0
+"""... thinned to this rate, Hz (a live view; the full Q_exec is in the result)."""
+
 
 @dataclass
 class ExecutionResult:
@@ -49,6 +62,7 @@ class ExecutionResult:
     failure: FailureEvent | None = None
     completed_steps: int = 0
     simulated_seconds: float = 0.0
+    scenario: str | None = None  # the injected fault scenario that stopped execution
 
     @property
     def max_placement_error(self) -> float:
@@ -97,8 +111,13 @@ class SimDriver:
         motion: MotionPlan,
         *,
         monitor: object | None = None,
+        placed: Mapping[str, Sequence[float]] | None = None,
+        progress: Callable[[dict[str, Any]], None] | None = None,
     ) -> ExecutionResult:
-        """Run the job; `monitor` is a streaming monitor with `update(robot, t, q)`."""
+        """Run the job; `monitor` is a streaming monitor with `update(robot, t, q)`.
+
+        `placed` maps parts already built to their poses (x, y, z m, qw, qx, qy, qz): the run
+        continues from there. `progress` receives one dict per part set down."""
         job.recheck()  # the safety gate, again, right before motion
         placed_ids = {s.part_id for s in tasks.steps}
         if placed_ids != set(job.layout.ids) or [s.part_id for s in tasks.steps] != list(
@@ -110,7 +129,9 @@ class SimDriver:
         c = pb.connect(pb.DIRECT)
         tmp = tempfile.TemporaryDirectory(prefix="sdi-sim-")
         try:
-            return self._run(c, Path(tmp.name), job, tasks, motion, monitor)
+            return self._run(
+                c, Path(tmp.name), job, tasks, motion, monitor, dict(placed or {}), progress
+            )
         finally:
             pb.disconnect(c)
             tmp.cleanup()
@@ -123,8 +144,17 @@ class SimDriver:
         tasks: TaskPlan,
         motion: MotionPlan,
         monitor: object | None,
+        placed: dict[str, Sequence[float]],
+        progress: Callable[[dict[str, Any]], None] | None,
     ) -> ExecutionResult:
         dt = 1.0 / self.physics_hz
+        unknown = set(placed) - {s.part_id for s in tasks.steps}
+        if unknown:
+            from sdi.errors import UnverifiedPlanError
+
+            raise UnverifiedPlanError(f"refused: parts {sorted(unknown)} are not in this job")
+        todo = [m for m in motion.steps if m.part_id not in placed]
+        t0 = min((m.start for m in todo), default=0.0)
         pb.setGravity(0, 0, -9.81, physicsClientId=c)
         pb.setTimeStep(dt, physicsClientId=c)
         pb.setPhysicsEngineParameter(numSolverIterations=self.solver_iterations, physicsClientId=c)
@@ -149,7 +179,7 @@ class SimDriver:
                     joints.append(j)
                 if info[12].decode() == "tcp":
                     tcp = j
-            q0 = motion.trajectories[name].q[0]
+            q0 = motion.trajectories[name].at(np.array([t0]))[0]
             for j, v in zip(joints, q0, strict=True):
                 pb.resetJointState(body, j, float(v), physicsClientId=c)
             bodies[name] = (body, joints, tcp)
@@ -163,18 +193,32 @@ class SimDriver:
         released: dict[str, float] = {}
         settled: dict[str, np.ndarray] = {}
         failure: FailureEvent | None = None
+        scenario_name: str | None = None
         status = "success"
+        for built in tasks.steps:  # what an earlier, interrupted execution built stays built
+            if built.part_id in placed:
+                pose = [float(v) for v in placed[built.part_id]]
+                T = _pose_matrix(tuple(pose[:3]), (pose[4], pose[5], pose[6], pose[3]))
+                parts[built.part_id] = self._spawn(c, T, built.part_size)
+                spawned.add(built.step)
+                released[built.part_id] = t0 - 1.0
         end = max(tr.t[-1] for tr in motion.trajectories.values())
         recorded: dict[str, list[tuple[float, np.ndarray]]] = {r: [] for r in tasks.robots}
         next_sample = dict.fromkeys(tasks.robots, 0.0)
+        events = [e for e in events if e.part_id not in placed]
         ev = 0
         n_steps = math.ceil(end / dt) + 1
-        done_steps = 0
+        done_steps = len(placed)
         check_every = max(1, round(1.0 / dt))  # the phase's wall-clock limit, once a sim second
-        for k in range(n_steps):
+        first = math.ceil(t0 / dt - 1e-9) if todo else n_steps
+        batch_every = max(1, round(SAMPLE_BATCH_S * self.physics_hz))
+        sent = dict.fromkeys(tasks.robots, 0)  # Q_exec samples already in a batch, per robot
+        for k in range(first, n_steps):
             if k % check_every == 0:
                 deadline.check()
             t = k * dt
+            if k == first and progress is not None:
+                progress({"kind": "motion_started", "t": round(t, 4)})
             # parts appear on the supply when their step begins; injected faults fire there
             for s, t_start in starts.items():
                 if s in spawned or t + 1e-12 < t_start:
@@ -185,6 +229,7 @@ class SimDriver:
                     event = scenario.check(step)
                     if event is not None:
                         failure, status = event, "failure"
+                        scenario_name = scenario.name
                         break
                 if failure is not None:
                     break
@@ -217,6 +262,15 @@ class SimDriver:
                     )  # fmt: skip
                     done_steps += 1
                     released[e.part_id] = t
+                    if progress is not None:
+                        pos, orn = pb.getBasePositionAndOrientation(
+                            parts[e.part_id], physicsClientId=c
+                        )
+                        progress({
+                            "kind": "step_done", "step": step.step, "part_id": e.part_id,
+                            "robot": e.robot, "t": round(t, 4), "completed": done_steps,
+                            "pose": list(pose_tuple(_pose_matrix(pos, orn))),
+                        })  # fmt: skip
             if failure is not None:
                 break
             for name, (body, joints, _) in bodies.items():
@@ -230,6 +284,8 @@ class SimDriver:
                     next_sample[name] += 1.0 / self.robots[name].controller_rate_hz
                     if monitor is not None:
                         breach = monitor.update(name, t, q) or breach  # type: ignore[attr-defined]
+            if progress is not None and k > first and k % batch_every == 0:
+                self._batch(progress, recorded, sent, monitor)
             # placed parts must stay where they were set down (checked every 50 ms, after
             # they had 0.2 s to settle)
             if k % max(1, int(0.05 * self.physics_hz)) == 0:
@@ -270,18 +326,20 @@ class SimDriver:
                     message=f"δ = {breach.deviation:.4f} rad exceeded ε at t = {breach.t:.3f} s",
                 )  # fmt: skip
                 break
+        if progress is not None:
+            self._batch(progress, recorded, sent, monitor)
         for _ in range(int(self.settle_seconds * self.physics_hz)):
             pb.stepSimulation(physicsClientId=c)
         as_built: dict[str, tuple[float, ...]] = {}
         errors: dict[str, float] = {}
-        for placed in tasks.steps:
-            if placed.part_id not in released:
+        for finished in tasks.steps:
+            if finished.part_id not in released:
                 continue  # never set down (execution stopped before its step)
-            pos, orn = pb.getBasePositionAndOrientation(parts[placed.part_id], physicsClientId=c)
+            pos, orn = pb.getBasePositionAndOrientation(parts[finished.part_id], physicsClientId=c)
             T = _pose_matrix(pos, orn)
-            as_built[placed.part_id] = pose_tuple(T)
-            errors[placed.part_id] = float(
-                np.linalg.norm(T[:3, 3] - placed.T_world_part_target[:3, 3])
+            as_built[finished.part_id] = pose_tuple(T)
+            errors[finished.part_id] = float(
+                np.linalg.norm(T[:3, 3] - finished.T_world_part_target[:3, 3])
             )
         if failure is None and errors:
             # the as-built check: every part must end where the design put it
@@ -310,7 +368,29 @@ class SimDriver:
             failure=failure,
             completed_steps=done_steps,
             simulated_seconds=min(end, n_steps * dt),
+            scenario=scenario_name,
         )
+
+    def _batch(
+        self,
+        progress: Callable[[dict[str, Any]], None],
+        recorded: dict[str, list[tuple[float, np.ndarray]]],
+        sent: dict[str, int],
+        monitor: object | None,
+    ) -> None:
+        """One `samples` event: each robot's Q_exec since the last batch (t s, q rad) at
+        `SAMPLE_BATCH_HZ`, and the largest δ so far (rad)."""
+        q: dict[str, list[list[float]]] = {}
+        for name, rows in recorded.items():
+            every = max(1, round(self.robots[name].controller_rate_hz / SAMPLE_BATCH_HZ))
+            new = rows[sent[name] :]
+            q[name] = [[round(t, 4), *(round(float(v), 6) for v in qq)] for t, qq in new[::every]]
+            sent[name] = len(rows)
+        if not any(q.values()):
+            return
+        delta = getattr(monitor, "max_deviation", None)
+        progress({"kind": "samples", "q": q,
+                  "delta_max_rad": None if delta is None else round(float(delta), 6)})  # fmt: skip
 
     def _control(self, c: int, body: int, joints: list[int], tr: JointTrajectory, t: float) -> None:
         """Joint position control with velocity feed-forward from Q_plan."""

@@ -1,16 +1,28 @@
 """The orchestrator: a LangGraph state machine over PLAN, DESIGN, INSPECT, HUMAN_REVIEW,
 PRE_EXECUTE, EXECUTE and REPLAN (paper §III-B, Alg. 1).
 
-Fixed edges where reliability matters: PLAN → DESIGN → INSPECT, and the Inspector gates every
-path to the robots. Routing is decided only at failure branch points (REPLAN): by the model when
-the method routes with LangGraph and a model is set, otherwise by deterministic rules. REPLAN
-tries the recovery skills first (shift, flatten) and sends their output straight to the
-Inspector, then the Designer's `modify`, then Specifier relaxation (the raw command), then the
-human. At most `method.replans` replans. The three human touch points are LangGraph
-`interrupt()`s: design review, pre-execution confirmation, failure report. State is
-checkpointed (SQLite), so a killed process resumes where it stopped. Every working phase runs
-under a wall-clock limit (`[limits] phase_seconds`, 300 s by default); a phase that runs past it
-stops at its next clean point and goes to the failure report.
+The graph comes from `build_graph()` and is drawn by LangGraph itself (`sdi graph`). Every node is a
+module-level function `node(state, runtime)` over the run's typed state and an explicit
+`RunContext` (the cell, the method, the model, the event stream, the record store). Edges:
+
+- fixed (`add_edge`) where the flow is fixed: START → PLAN, DESIGN → INSPECT (whatever the
+  Designer makes goes to the Inspector);
+- conditional, each with its `path_map`, only at branch points: the Inspector's verdict, the
+  review outcomes, REPLAN's choice, the failure report. A node that asks for a route its map
+  does not have raises `RoutingError` — a run never ends quietly on a typo.
+
+Every path to EXECUTE passes INSPECT, the design review, PRE_EXECUTE (which plans motion once
+and stores the commissioning record) and CONFIRM (the pre-execution approval, naming the
+record's hash); EXECUTE runs exactly that record (`tests/test_graph.py` checks the edges).
+Routing is decided only at failure branch points (REPLAN): by the model when the method routes
+with LangGraph and a model is set, otherwise by deterministic rules. REPLAN tries the recovery
+skills first (shift, flatten) and sends their output straight to the Inspector, then the
+Designer's `modify`, then Specifier relaxation (the raw command), then the human; at most
+`method.replans` replans. The human touch points are LangGraph `interrupt()`s, each first in its
+node (so nothing is sent twice when the node re-runs on resume): design review, pre-execution
+confirmation (and its repeat after an interrupted execution), failure report. Every working
+phase runs under a wall-clock limit (`[limits] phase_seconds`); a phase past it goes to the
+failure report.
 """
 
 from __future__ import annotations
@@ -21,6 +33,7 @@ from dataclasses import dataclass
 from typing import Any, TypedDict
 
 from langgraph.graph import END, START, StateGraph
+from langgraph.runtime import Runtime
 from langgraph.types import interrupt
 
 from sdi.agents.designer import (
@@ -41,6 +54,7 @@ from sdi.errors import (
     UnverifiedPlanError,
 )
 from sdi.execute.faults import SCENARIOS
+from sdi.execute.record import CommissioningRecord, RecordError, layout_hash
 from sdi.inspector.verifier import verify
 from sdi.jsonable import plain
 from sdi.llm.chat import ChatModel
@@ -50,6 +64,7 @@ from sdi.model.layout import Layout, parse_layout
 from sdi.orchestrator.bus import MessageBus
 from sdi.orchestrator.edits import apply_edits
 from sdi.orchestrator.methods import SAMS_SKILLS, SASS_SKILLS, Method
+from sdi.orchestrator.records import RecordStore
 from sdi.recovery import flatten, shift
 from sdi.skills.builtin import default_registry
 from sdi.spec.structure_spec import Spec
@@ -57,11 +72,32 @@ from sdi.spec.structure_spec import Spec
 ACTIONS = ("shift", "flatten", "modify", "relax", "escalate")
 
 
+class RoutingError(SDIError):
+    """A node asked for a route its edges do not have (a bug, never an operator's mistake)."""
+
+
+class Failure(TypedDict, total=False):
+    """A failure event: what failed, where, and which injected scenario (if any) caused it."""
+
+    error_type: str  # ik | collision | timeout | grip | deviation | placement | gate | …
+    scenario: str | None  # the fault scenario whose region blocked the step
+    phase: str  # the phase that failed
+    step: int | None
+    part_id: str | None
+    robot: str | None
+    target_pose: list[float] | None  # x, y, z (m), qw, qx, qy, qz
+    message: str
+
+
 class RunState(TypedDict, total=False):
     run_id: str
     command: str
     method: str
     backend: str
+    cell: dict[str, Any]  # the cell configuration the run was started with
+    cell_hash: str  # its sha256 (`sdi.execute.record.cell_hash`)
+    arms: list[str] | None
+    faults: list[str]  # injected fault scenarios (names in `SCENARIOS`)
     spec: dict[str, Any] | None
     spec_source: str
     relaxed: bool
@@ -70,32 +106,66 @@ class RunState(TypedDict, total=False):
     violations: list[dict[str, Any]]
     replans: int
     tried: list[str]
-    failure: dict[str, Any] | None
-    faults: list[str]
+    failure: Failure | None
     execution: dict[str, Any] | None
-    planning: dict[str, Any] | None
+    planning: dict[str, Any] | None  # the record's summary (hash, makespan, steps per robot)
+    record_hash: str | None  # the planned commissioning record
+    approved_hash: str | None  # the record the operator approved
+    resume_from: dict[str, Any] | None  # as-built state of an interrupted execution
+    review_note: str | None  # why the last edit was refused
     status: str
-    phase: str
+    phase: str  # the route out of the node that ran last
     notes: list[str]
-    approve: bool
+    approve: bool  # unattended: every review approved (`--approve-all`), but never the
+    # confirmation after an interrupted execution nor a failure report
     design_only: bool  # stop once the design is verified (benchmarks): status "verified"
 
 
 @dataclass
 class RunContext:
-    """What the nodes need that is not state: the cell, the model, the method, the bus."""
+    """What the nodes need that is not state: the cell, the model, the method, the stores."""
 
     cell: CellConfig
     method: Method
     model: ChatModel | None
     bus: MessageBus
+    records: RecordStore | None = None  # where PRE_EXECUTE stores the commissioning record
     arms: list[str] | None = None
+
+    @property
+    def store(self) -> RecordStore:
+        if self.records is None:
+            raise RoutingError("this context has no record store; it cannot plan motion")
+        return self.records
+
+
+Rt = Runtime[RunContext]
 
 
 def _crash_hook(node: str) -> None:
     """Fault injection for the crash/resume tests: SDI_CRASH_AT=<node> kills the process there."""
     if os.environ.get("SDI_CRASH_AT") == node:
         os._exit(137)
+
+
+def _hold_hook(node: str) -> None:
+    """For the concurrency tests: SDI_HOLD_AT=<node> with SDI_HOLD_FILE=<path> makes the process
+    write <path>.ready on entering the node and wait there until <path> exists."""
+    if os.environ.get("SDI_HOLD_AT") != node or not os.environ.get("SDI_HOLD_FILE"):
+        return
+    import time
+    from pathlib import Path
+
+    gate = Path(os.environ["SDI_HOLD_FILE"])
+    Path(f"{gate}.ready").write_text(str(os.getpid()))
+    while not gate.exists():
+        time.sleep(0.05)
+
+
+def say(
+    state: RunState, ctx: RunContext, sender: str, receiver: str, type: str, payload: dict[str, Any]
+) -> None:
+    ctx.bus.send(state["run_id"], sender, receiver, type, payload)
 
 
 def _layout(state: RunState, cell: CellConfig) -> Layout | None:
@@ -130,7 +200,7 @@ def rule_route(state: RunState, method: Method) -> str:
     tried = state.get("tried", [])
     failure = state.get("failure") or {}
     if failure and method.recovery:
-        scenario = SCENARIOS.get(failure.get("scenario", ""))
+        scenario = SCENARIOS.get(failure.get("scenario") or "")
         height = scenario is not None and any(r.z_min is not None for r in scenario.regions)
         for action in ("flatten", "shift") if height else ("shift", "flatten"):
             if action not in tried:
@@ -176,307 +246,409 @@ def phase_seconds(name: str, state: RunState, cell: CellConfig) -> float:
     return limit
 
 
-def build_graph(ctx: RunContext) -> StateGraph:
-    cell, method, bus = ctx.cell, ctx.method, ctx.bus
+def failure_of(event: dict[str, Any] | None, phase: str, **extra: Any) -> Failure:
+    """A typed failure from a driver's or planner's event dict."""
+    e = event or {}
+    return Failure(
+        error_type=str(extra.get("error_type") or e.get("error_type") or "unknown"),
+        scenario=extra.get("scenario"),
+        phase=phase,
+        step=e.get("step"),
+        part_id=e.get("part_id"),
+        robot=e.get("robot"),
+        target_pose=e.get("target_pose"),
+        message=str(extra.get("message") or e.get("message") or ""),
+    )
 
-    def say(
-        state: RunState, sender: str, receiver: str, type: str, payload: dict[str, Any]
-    ) -> None:
-        bus.send(state["run_id"], sender, receiver, type, payload, key=str(state.get("replans", 0)))
 
-    # -- PLAN ---------------------------------------------------------------------------------
-    def plan(state: RunState) -> dict[str, Any]:
-        _crash_hook("plan")
-        command = state["command"]
-        raw = ctx.model is not None and (not method.specifier or state.get("relaxed"))
-        if raw:  # raw command to the Designer (no Specifier, or Specifier relaxation)
-            say(
-                state,
-                "orchestrator",
-                "designer",
-                "command",
-                {"command": command, "relaxed": bool(state.get("relaxed"))},
-            )
-            return {"spec": None, "spec_source": "raw command", "phase": "design"}
-        try:
-            result = Specifier(ctx.model if method.specifier else None, cell).specify(command)
-        except SpecError as exc:
-            say(state, "orchestrator", "human", "error", {"error": str(exc)})
-            return {"status": "failure", "phase": "end", "notes": [str(exc)], "spec": None}
-        spec = result.spec.model_dump(mode="json", exclude_none=True)
-        say(state, "specifier", "designer", "spec", {"spec": spec, "source": result.source})
+# -- PLAN -------------------------------------------------------------------------------------
+def plan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    _crash_hook("plan")
+    command = state["command"]
+    raw = ctx.model is not None and (not ctx.method.specifier or state.get("relaxed"))
+    if raw:  # raw command to the Designer (no Specifier, or Specifier relaxation)
+        say(state, ctx, "orchestrator", "designer", "command",
+            {"command": command, "relaxed": bool(state.get("relaxed"))})  # fmt: skip
+        return {"spec": None, "spec_source": "raw command", "phase": "design"}
+    try:
+        result = Specifier(ctx.model if ctx.method.specifier else None, ctx.cell).specify(command)
+    except SpecError as exc:
+        say(state, ctx, "orchestrator", "human", "error", {"error": str(exc)})
+        return {"status": "failure", "phase": "end", "notes": [str(exc)], "spec": None}
+    spec = result.spec.model_dump(mode="json", exclude_none=True)
+    say(state, ctx, "specifier", "designer", "spec", {"spec": spec, "source": result.source})
+    return {
+        "spec": result.spec.model_dump(mode="json"),
+        "spec_source": result.source,
+        "phase": "design",
+    }
+
+
+# -- DESIGN -----------------------------------------------------------------------------------
+def design_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    _crash_hook("design")
+    spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
+    outcome: DesignOutcome = _designer(ctx).design(spec, state["command"])
+    parts = len(outcome.layout) if outcome.layout else 0
+    message = {"status": outcome.status, "parts": parts, "notes": outcome.notes}
+    say(state, ctx, "designer", "inspector", "layout", message)
+    if outcome.layout is None:
+        return {"layout": None, "violations": [], "notes": outcome.notes, "phase": "inspect"}
+    return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "notes": outcome.notes}
+
+
+# -- INSPECT (never an LLM, except the critic ablation) -------------------------------------
+def inspect_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    _crash_hook("inspect")
+    if state.get("phase") == "failure_report":  # DESIGN or MODIFY ran out of time
+        return {"phase": "failure_report"}
+    layout = _layout(state, ctx.cell)
+    if layout is None:
+        return {"violations": [{"constraint": "design", "message": "no layout"}], "phase": "replan"}
+    if ctx.method.critic == "llm" and ctx.model is not None:
+        verdict = llm_critic(ctx, layout)
+        say(state, ctx, "critic", "orchestrator", "verdict", verdict)
+        if verdict.get("passed"):
+            return {"violations": [], "sequence": list(layout.ids), "phase": "review"}
         return {
-            "spec": result.spec.model_dump(mode="json"),
-            "spec_source": result.source,
-            "phase": "design",
+            "violations": [{"constraint": "critic", "message": str(verdict.get("problems"))}],
+            "phase": "replan",
         }
+    report = verify(layout, ctx.cell, sequence=None)
+    violations = [v.to_json_dict() for v in report.violations]
+    say(state, ctx, "inspector", "orchestrator", "verification",
+        {"passed": report.passed, "violations": violations[:20],
+         "layout_hash": layout_hash(layout)})  # fmt: skip
+    return {
+        "violations": violations,
+        "sequence": list(report.sequence) if report.sequence else None,
+        "phase": "review" if report.passed else "replan",
+    }
 
-    # -- DESIGN -------------------------------------------------------------------------------
-    def design(state: RunState) -> dict[str, Any]:
-        _crash_hook("design")
-        spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
-        outcome: DesignOutcome = _designer(ctx).design(spec, state["command"])
-        parts = len(outcome.layout) if outcome.layout else 0
-        message = {"status": outcome.status, "parts": parts, "notes": outcome.notes}
-        say(state, "designer", "inspector", "layout", message)
-        if outcome.layout is None:
-            return {"layout": None, "violations": [], "notes": outcome.notes, "phase": "replan"}
-        return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "notes": outcome.notes}
 
-    # -- INSPECT (never an LLM, except the critic ablation) ------------------------------------
-    def inspect(state: RunState) -> dict[str, Any]:
-        _crash_hook("inspect")
-        layout = _layout(state, cell)
-        if layout is None:
-            return {
-                "violations": [{"constraint": "design", "message": "no layout"}],
-                "phase": "replan",
-            }
-        if method.critic == "llm" and ctx.model is not None:
-            verdict = llm_critic(ctx, layout)
-            say(state, "critic", "orchestrator", "verdict", verdict)
-            if verdict.get("passed"):
-                return {"violations": [], "sequence": list(layout.ids), "phase": "review"}
-            return {
-                "violations": [{"constraint": "critic", "message": str(verdict.get("problems"))}],
-                "phase": "replan",
-            }
-        report = verify(layout, cell, sequence=None)
-        violations = [v.to_json_dict() for v in report.violations]
-        say(
-            state,
-            "inspector",
-            "orchestrator",
-            "verification",
-            {"passed": report.passed, "violations": violations[:20]},
-        )
-        return {
-            "violations": violations,
-            "sequence": list(report.sequence) if report.sequence else None,
-            "phase": "review" if report.passed else "replan",
-        }
-
-    # -- HUMAN_REVIEW -------------------------------------------------------------------------
-    def human_review(state: RunState) -> dict[str, Any]:
-        if state.get("design_only"):
-            return {"status": "verified", "phase": "end"}
-        if state.get("approve"):
-            decision: dict[str, Any] = {"action": "approve"}
-        else:
-            decision = interrupt(
-                {
-                    "kind": "design_review",
-                    "layout": state.get("layout"),
-                    "sequence": state.get("sequence"),
-                }
-            )
-        say(state, "human", "orchestrator", "review", decision)
-        action = decision.get("action") if isinstance(decision, dict) else None
-        if action == "approve":
-            return {"phase": "pre_execute"}
-        if action == "edit":
-            layout = _layout(state, cell)
-            assert layout is not None
-            try:
-                edited = apply_edits(layout, decision.get("edits", []), cell)
-            except InputError as exc:
-                return {"notes": [f"edit refused: {exc}"], "phase": "review_again"}
-            return {"layout": edited.to_json_dict(), "phase": "inspect"}
-        return {"status": "rejected", "phase": "end"}
-
-    # -- PRE_EXECUTE --------------------------------------------------------------------------
-    def pre_execute(state: RunState) -> dict[str, Any]:
-        from sdi.commission import commission
-
-        _crash_hook("pre_execute")
-        layout = _layout(state, cell)
-        assert layout is not None
-        try:
-            planned = commission(layout, cell, sequence=state.get("sequence"), arms=ctx.arms)
-        except UnverifiedPlanError as exc:  # the symbolic gate (matters in the critic ablation)
-            say(state, "inspector", "orchestrator", "refused", {"error": str(exc)})
-            return {
-                "violations": [{"constraint": "gate", "message": m} for m in exc.violations],
-                "phase": "replan",
-            }
-        except MotionPlanningError as exc:
-            event = exc.event.to_json_dict()  # type: ignore[attr-defined]
-            say(state, "operator", "orchestrator", "failure", event)
-            return {"failure": event, "phase": "replan"}
-        summary = planned.summary()
-        say(
-            state,
-            "operator",
-            "human",
-            "preview",
-            {k: v for k, v in summary.items() if k != "planning_s_per_step"},
-        )
-        if not state.get("approve"):
-            decision = interrupt({"kind": "pre_execute", "planning": summary})
-            say(state, "human", "orchestrator", "confirm", decision)
-            if not (isinstance(decision, dict) and decision.get("action") == "approve"):
-                return {"status": "aborted", "phase": "end", "planning": summary}
-        return {"planning": summary, "phase": "execute"}
-
-    # -- EXECUTE ------------------------------------------------------------------------------
-    def execute(state: RunState) -> dict[str, Any]:
-        from sdi.commission import commission
-        from sdi.commission import execute as run
-
-        _crash_hook("execute")
-        layout = _layout(state, cell)
-        assert layout is not None
-        faults = tuple(SCENARIOS[f] for f in state.get("faults", []))
-        try:
-            planned = commission(layout, cell, sequence=state.get("sequence"), arms=ctx.arms)
-            _, report = run(planned, faults=faults)
-        except (MotionPlanningError, UnverifiedPlanError) as exc:
-            event = getattr(exc, "event", None)
-            report = {
-                "status": "failure",
-                "failure": event.to_json_dict() if event else {"message": str(exc)},
-            }
-        say(state, "operator", "orchestrator", "execution", report)
-        if report["status"] == "success" and report.get("v_traj") == "pass":
-            return {"execution": report, "status": "success", "phase": "end", "failure": None}
-        failure: dict[str, Any] = dict(report.get("failure") or {})  # type: ignore[call-overload]
-        for name in state.get("faults", []):
-            event_scenario = failure.get("message", "").split(":")[0]
-            if event_scenario == name:
-                failure["scenario"] = name
-        return {"execution": report, "failure": failure, "phase": "replan"}
-
-    # -- REPLAN -------------------------------------------------------------------------------
-    def replan(state: RunState) -> dict[str, Any]:
-        _crash_hook("replan")
-        replans = state.get("replans", 0) + 1
-        if method.orchestration == "none" or replans > method.replans:
-            action = "escalate" if method.orchestration in ("langgraph", "hybrid") else "fail"
-        elif method.orchestration in ("langgraph", "hybrid"):
-            action = llm_route(state, ctx)
-        else:
-            action = rule_route(state, method)
-            if method.orchestration == "pge" and action in ("shift", "flatten", "relax"):
-                action = "modify"
-        say(state, "orchestrator", "orchestrator", "route", {"action": action, "replan": replans})
-        tried = [*state.get("tried", []), action]
-        update: dict[str, Any] = {"replans": replans, "tried": tried}
-        layout = _layout(state, cell)
-        failure = state.get("failure") or {}
-        scenario = SCENARIOS.get(failure.get("scenario", ""))
-        blocked = scenario.regions if scenario else ()
-        if action in ("shift", "flatten") and layout is not None:
-            try:
-                if action == "shift":
-                    repaired = shift(layout, cell, blocked=blocked)
-                else:
-                    limits = [r.z_min for r in blocked if r.z_min is not None]
-                    repaired = flatten(
-                        layout, cell, z_max=min(limits) if limits else None, blocked=blocked
-                    )
-            except InfeasibleError as exc:
-                return {**update, "notes": [f"{action}: {exc}"], "phase": "replan"}
-            # recovery output goes straight to the Inspector; the injected obstacle stays
-            return {
-                **update,
-                "layout": repaired.to_json_dict(),
-                "failure": None,
-                "phase": "inspect",
-            }
-        if action == "modify":
-            return {**update, "phase": "modify"}
-        if action == "relax":
-            return {**update, "relaxed": True, "phase": "plan"}
-        if action == "escalate":
-            return {**update, "phase": "failure_report"}
-        return {**update, "status": "failure", "phase": "end"}
-
-    def modify(state: RunState) -> dict[str, Any]:
-        _crash_hook("modify")
-        layout = _layout(state, cell)
-        designer = _designer(ctx)
-        spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
-        if isinstance(designer, RuleDesigner) or layout is None:
-            outcome = designer.design(spec, state["command"])
-        else:
-            report = verify(layout, cell)
-            outcome = designer.design(
-                spec, state["command"], start=layout, violations=report.violations
-            )
-        say(state, "designer", "inspector", "layout", {"status": outcome.status, "modified": True})
-        if outcome.layout is None:
-            return {"phase": "replan", "notes": outcome.notes}
-        return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "failure": None}
-
-    def failure_report(state: RunState) -> dict[str, Any]:
-        if state.get("approve") or state.get("design_only"):
-            return {"status": "failure", "phase": "end"}
+# -- HUMAN_REVIEW -----------------------------------------------------------------------------
+def review_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    if state.get("design_only"):
+        return {"status": "verified", "phase": "end"}
+    if state.get("approve"):
+        decision: Any = {"action": "approve", "by": "--approve-all"}
+    else:
         decision = interrupt(
             {
-                "kind": "failure_report",
-                "failure": state.get("failure"),
-                "violations": state.get("violations", [])[:10],
+                "kind": "design_review",
+                "layout": state.get("layout"),
+                "sequence": state.get("sequence"),
+                "refused": state.get("review_note"),
             }
         )
-        say(state, "human", "orchestrator", "failure_decision", decision)
-        action = decision.get("action") if isinstance(decision, dict) else None
-        if action == "edit":
-            layout = _layout(state, cell)
-            if layout is not None:
-                try:
-                    edited = apply_edits(layout, decision.get("edits", []), cell)
-                except InputError as exc:
-                    return {"notes": [f"edit refused: {exc}"], "status": "failure", "phase": "end"}
-                return {
-                    "layout": edited.to_json_dict(),
-                    "phase": "inspect",
-                    "replans": 0,
-                    "tried": [],
-                    "failure": None,
-                }
-        if action == "retry":
-            return {"phase": "plan", "replans": 0, "tried": [], "failure": None, "relaxed": False}
-        return {"status": "failure", "phase": "end"}
+    say(state, ctx, "human", "orchestrator", "review", decision)
+    action = decision.get("action") if isinstance(decision, dict) else None
+    if action == "approve":
+        return {"phase": "pre_execute", "review_note": None}
+    if action == "edit":
+        layout = _layout(state, ctx.cell)
+        assert layout is not None
+        try:
+            edited = apply_edits(layout, decision.get("edits", []), ctx.cell)
+        except InputError as exc:
+            say(state, ctx, "orchestrator", "human", "edit_refused", {"error": str(exc)})
+            return {"notes": [f"edit refused: {exc}"], "review_note": str(exc), "phase": "review"}
+        return {"layout": edited.to_json_dict(), "phase": "inspect", "review_note": None}
+    return {"status": "rejected", "phase": "end"}
 
-    def limited(
-        name: str, fn: Callable[[RunState], dict[str, Any]]
-    ) -> Callable[[RunState], dict[str, Any]]:
-        def node(state: RunState) -> dict[str, Any]:
-            try:
-                with phase_limit(name, phase_seconds(name, state, cell)):
-                    return plain(fn(state))  # JSON-ready: checkpoints refuse numpy
-            except PhaseTimeout as exc:
-                failure = {"error_type": "timeout", "phase": name, "message": str(exc)}
-                say(state, "orchestrator", "human", "failure", failure)
-                return {"failure": failure, "notes": [str(exc)], "phase": "failure_report"}
 
-        return node
+# -- PRE_EXECUTE: plan motion once, store the record -----------------------------------------
+def pre_execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    from sdi.commission import commission
 
-    def route(state: RunState) -> str:
-        phase = state.get("phase", "end")
-        if state.get("status") in ("failure", "rejected", "aborted", "success", "verified"):
-            return END
+    ctx = runtime.context
+    _crash_hook("pre_execute")
+    layout = _layout(state, ctx.cell)
+    assert layout is not None
+    try:
+        planned = commission(layout, ctx.cell, sequence=state.get("sequence"), arms=ctx.arms)
+    except UnverifiedPlanError as exc:  # the symbolic gate (matters in the critic ablation)
+        say(state, ctx, "inspector", "orchestrator", "refused", {"error": str(exc)})
         return {
-            "design": "design", "inspect": "inspect", "review": "human_review",
-            "review_again": "human_review", "pre_execute": "pre_execute", "execute": "execute",
-            "replan": "replan", "modify": "modify", "plan": "plan",
-            "failure_report": "failure_report",
-        }.get(phase, END)  # fmt: skip
+            "violations": [{"constraint": "gate", "message": m} for m in exc.violations],
+            "phase": "replan",
+        }
+    except MotionPlanningError as exc:
+        event = exc.event.to_json_dict()  # type: ignore[attr-defined]
+        say(state, ctx, "operator", "orchestrator", "failure", event)
+        return {"failure": failure_of(event, "pre_execute"), "phase": "replan"}
+    record = CommissioningRecord.of(planned)
+    ctx.store.put(state["run_id"], record)
+    summary = record.summary()
+    say(state, ctx, "operator", "human", "record", summary)
+    return {"planning": summary, "record_hash": record.hash, "phase": "confirm"}
 
-    g = StateGraph(RunState)
-    nodes: dict[str, Callable[[RunState], dict[str, Any]]] = {
-        "plan": plan, "design": design, "inspect": inspect, "human_review": human_review,
-        "pre_execute": pre_execute, "execute": execute, "replan": replan, "modify": modify,
-        "failure_report": failure_report,
-    }  # fmt: skip
-    for name, fn in nodes.items():
-        if name not in ("human_review", "failure_report"):  # a person is not timed
-            fn = limited(name, fn)
-        g.add_node(name, fn)  # type: ignore[call-overload]
+
+# -- CONFIRM: the pre-execution approval names the record's hash -----------------------------
+def confirm_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    record_hash = state.get("record_hash")
+    interrupted = state.get("resume_from")
+    if state.get("approve") and not interrupted:
+        decision: Any = {"action": "approve", "record_hash": record_hash, "by": "--approve-all"}
+    else:
+        request: dict[str, Any] = {
+            "kind": "resume_execution" if interrupted else "pre_execute",
+            "record_hash": record_hash,
+            "planning": state.get("planning"),
+        }
+        if interrupted:
+            request["as_built"] = interrupted
+        decision = interrupt(request)
+    say(state, ctx, "human", "orchestrator", "confirm", decision)
+    if not (isinstance(decision, dict) and decision.get("action") == "approve"):
+        return {"status": "aborted", "phase": "end"}
+    named = decision.get("record_hash")
+    if named is not None and named != record_hash:
+        note = f"the approval names record {str(named)[:12]}, but the planned record is " \
+               f"{str(record_hash)[:12]}; nothing moves"  # fmt: skip
+        say(state, ctx, "orchestrator", "human", "refused", {"error": note})
+        return {"status": "aborted", "phase": "end", "notes": [note]}
+    return {"approved_hash": record_hash, "phase": "execute"}
+
+
+# -- EXECUTE: exactly the approved record ------------------------------------------------------
+def execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    from sdi.commission import execute as run
+
+    ctx = runtime.context
+    _crash_hook("execute")
+    _hold_hook("execute")
+    run_id, approved = state["run_id"], state.get("approved_hash")
+    try:
+        if not approved or approved != state.get("record_hash"):
+            raise RecordError("no approved commissioning record; nothing moves")
+        record = ctx.store.get(run_id, approved)
+        layout = _layout(state, ctx.cell)
+        if layout is None or layout_hash(layout) != record.body["layout_hash"]:
+            raise RecordError(
+                f"the run's layout changed since record {approved[:12]} was approved; nothing moves"
+            )
+        planned = record.commissioning(ctx.cell)
+    except (RecordError, UnverifiedPlanError) as exc:
+        say(state, ctx, "operator", "human", "refused", {"error": str(exc)})
+        failure = failure_of(None, "execute", error_type="record", message=str(exc))
+        return {"failure": failure, "status": "failure", "phase": "end", "notes": [str(exc)]}
+    resume_from = state.get("resume_from") or {}
+    already = list(resume_from.get("placed", []))
+    placed = {p["part_id"]: p["pose"] for p in already}
+    say(state, ctx, "operator", "orchestrator", "execution_started",
+        {"record_hash": approved, "already_placed": already})  # fmt: skip
+    crash_after = int(os.environ.get("SDI_CRASH_AFTER_STEPS", "0") or 0)
+
+    def progress(event: dict[str, Any]) -> None:
+        kind = str(event.pop("kind", "step_done"))
+        say(state, ctx, "operator", "orchestrator", kind, event)
+        if crash_after and event.get("completed") == crash_after:
+            os._exit(137)  # fault injection for the kill-during-execution test
+
+    faults = tuple(SCENARIOS[f] for f in state.get("faults", []))
+    try:
+        result, report = run(planned, faults=faults, placed=placed, progress=progress)
+    except UnverifiedPlanError as exc:
+        report = {"status": "failure", "failure": {"message": str(exc), "error_type": "gate"}}
+        result = None
+    report["record_hash"] = approved
+    say(state, ctx, "operator", "orchestrator", "execution", report)
+    update: dict[str, Any] = {"execution": report, "resume_from": None}
+    if report["status"] == "success" and report.get("v_traj") == "pass":
+        return {**update, "status": "success", "phase": "end", "failure": None}
+    raw = report.get("failure")
+    event = raw if isinstance(raw, dict) else None
+    scenario = getattr(result, "scenario", None)
+    failure = failure_of(event, "execute", scenario=scenario)
+    return {**update, "failure": failure, "phase": "replan"}
+
+
+# -- REPLAN -----------------------------------------------------------------------------------
+def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    method = ctx.method
+    _crash_hook("replan")
+    replans = state.get("replans", 0) + 1
+    if method.orchestration == "none" or replans > method.replans:
+        action = "escalate" if method.orchestration in ("langgraph", "hybrid") else "fail"
+    elif method.orchestration in ("langgraph", "hybrid"):
+        action = llm_route(state, ctx)
+    else:
+        action = rule_route(state, method)
+        if method.orchestration == "pge" and action in ("shift", "flatten", "relax"):
+            action = "modify"
+    say(state, ctx, "orchestrator", "orchestrator", "route", {"action": action, "replan": replans})
+    tried = [*state.get("tried", []), action]
+    update: dict[str, Any] = {"replans": replans, "tried": tried}
+    layout = _layout(state, ctx.cell)
+    failure = state.get("failure") or {}
+    scenario = SCENARIOS.get(failure.get("scenario") or "")
+    blocked = scenario.regions if scenario else ()
+    if action in ("shift", "flatten") and layout is not None:
+        try:
+            if action == "shift":
+                repaired = shift(layout, ctx.cell, blocked=blocked)
+            else:
+                limits = [r.z_min for r in blocked if r.z_min is not None]
+                repaired = flatten(
+                    layout, ctx.cell, z_max=min(limits) if limits else None, blocked=blocked
+                )
+        except InfeasibleError as exc:
+            return {**update, "notes": [f"{action}: {exc}"], "phase": "replan"}
+        # recovery output goes straight to the Inspector; the injected obstacle stays
+        return {**update, "layout": repaired.to_json_dict(), "failure": None, "phase": "inspect"}
+    if action in ("shift", "flatten"):
+        return {**update, "phase": "replan"}
+    if action == "modify":
+        return {**update, "phase": "modify"}
+    if action == "relax":
+        return {**update, "relaxed": True, "phase": "plan"}
+    if action == "escalate":
+        return {**update, "phase": "failure_report"}
+    return {**update, "status": "failure", "phase": "end"}
+
+
+def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    _crash_hook("modify")
+    layout = _layout(state, ctx.cell)
+    designer = _designer(ctx)
+    spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
+    if isinstance(designer, RuleDesigner) or layout is None:
+        outcome = designer.design(spec, state["command"])
+    else:
+        report = verify(layout, ctx.cell)
+        outcome = designer.design(
+            spec, state["command"], start=layout, violations=report.violations
+        )
+    say(state, ctx, "designer", "inspector", "layout",
+        {"status": outcome.status, "modified": True})  # fmt: skip
+    if outcome.layout is None:
+        return {"phase": "replan", "notes": outcome.notes}
+    return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "failure": None}
+
+
+def failure_report_node(state: RunState, runtime: Rt) -> dict[str, Any]:
+    ctx = runtime.context
+    if state.get("approve") or state.get("design_only"):
+        return {"status": "failure", "phase": "end"}
+    decision = interrupt(
+        {
+            "kind": "failure_report",
+            "failure": state.get("failure"),
+            "violations": state.get("violations", [])[:10],
+            "refused": state.get("review_note"),
+        }
+    )
+    say(state, ctx, "human", "orchestrator", "failure_decision", decision)
+    action = decision.get("action") if isinstance(decision, dict) else None
+    if action == "edit":
+        layout = _layout(state, ctx.cell)
+        if layout is not None:
+            try:
+                edited = apply_edits(layout, decision.get("edits", []), ctx.cell)
+            except InputError as exc:
+                say(state, ctx, "orchestrator", "human", "edit_refused", {"error": str(exc)})
+                return {"notes": [f"edit refused: {exc}"], "review_note": str(exc),
+                        "phase": "failure_report"}  # fmt: skip
+            return {
+                "layout": edited.to_json_dict(), "phase": "inspect", "replans": 0, "tried": [],
+                "failure": None, "review_note": None,
+            }  # fmt: skip
+    if action == "retry":
+        return {"phase": "plan", "replans": 0, "tried": [], "failure": None, "relaxed": False,
+                "review_note": None}  # fmt: skip
+    return {"status": "failure", "phase": "end"}
+
+
+Node = Callable[[RunState, Rt], dict[str, Any]]
+
+NODES: dict[str, Node] = {
+    "plan": plan_node,
+    "design": design_node,
+    "inspect": inspect_node,
+    "review": review_node,
+    "pre_execute": pre_execute_node,
+    "confirm": confirm_node,
+    "execute": execute_node,
+    "replan": replan_node,
+    "modify": modify_node,
+    "failure_report": failure_report_node,
+}
+"""The phases. HUMAN_REVIEW is `review`; CONFIRM is PRE_EXECUTE's human approval."""
+
+UNTIMED = ("review", "confirm", "failure_report")
+"""Nodes that wait for a person: not under a wall-clock limit."""
+
+FIXED: dict[str, str] = {"design": "inspect"}
+"""Fixed edges: whatever the Designer makes (or fails to make) goes to the Inspector, which
+passes an empty design on to REPLAN and a timed-out one to the failure report."""
+
+ROUTES: dict[str, tuple[str, ...]] = {
+    "plan": ("design", "end"),
+    "inspect": ("review", "replan"),
+    "review": ("pre_execute", "inspect", "review", "end"),
+    "pre_execute": ("confirm", "replan"),
+    "confirm": ("execute", "end"),
+    "execute": ("replan", "end"),
+    "replan": ("inspect", "modify", "plan", "replan", "failure_report", "end"),
+    "modify": ("inspect", "replan"),
+    "failure_report": ("inspect", "plan", "failure_report", "end"),
+}
+"""Each node's possible next phases; a timed node may also go to the failure report."""
+
+
+def _timed(name: str, fn: Node) -> Node:
+    def node(state: RunState, runtime: Rt) -> dict[str, Any]:
+        ctx = runtime.context
+        try:
+            with phase_limit(name, phase_seconds(name, state, ctx.cell)):
+                return plain(fn(state, runtime))
+        except PhaseTimeout as exc:
+            failure = Failure(error_type="timeout", scenario=None, phase=name, message=str(exc))
+            say(state, ctx, "orchestrator", "human", "failure", dict(failure))
+            return {"failure": failure, "notes": [str(exc)], "phase": "failure_report"}
+
+    node.__name__ = name
+    return node
+
+
+def _router(name: str, targets: tuple[str, ...]) -> Callable[[RunState], str]:
+    def route(state: RunState) -> str:
+        phase = state.get("phase", "")
+        if phase not in targets:
+            raise RoutingError(f"node {name!r} asked for route {phase!r}; it has {list(targets)}")
+        return phase
+
+    route.__name__ = f"route_{name}"
+    return route
+
+
+def build_graph() -> StateGraph[RunState, RunContext, RunState, RunState]:
+    """The orchestrator's graph (not compiled): nodes, fixed edges, mapped branch points."""
+    g = StateGraph(RunState, context_schema=RunContext)
+    for name, fn in NODES.items():
+        g.add_node(name, fn if name in UNTIMED else _timed(name, fn))  # type: ignore[call-overload]
     g.add_edge(START, "plan")
-    for name in nodes:
-        g.add_conditional_edges(name, route)
+    for name, target in FIXED.items():
+        g.add_edge(name, target)
+    for name, targets in ROUTES.items():
+        if name not in UNTIMED:
+            targets = (*targets, "failure_report") if "failure_report" not in targets else targets
+        path_map = {t: (END if t == "end" else t) for t in targets}
+        g.add_conditional_edges(name, _router(name, targets), path_map)  # type: ignore[arg-type]
     return g
+
+
+def mermaid() -> str:
+    """The graph as LangGraph draws it (Mermaid)."""
+    return str(build_graph().compile().get_graph().draw_mermaid())
 
 
 def llm_critic(ctx: RunContext, layout: Layout) -> dict[str, Any]:
