@@ -120,10 +120,20 @@ def test_a_transient_fault_is_retried_and_the_model_used():
     assert data["metrics"]["llm_calls"] == 1 and server.requests == 2
 
 
-def test_a_well_formed_spec_with_injected_coordinates_is_still_inspected():
+def test_a_model_cannot_override_a_coordinate_the_command_states():
     reply = json.dumps({"structures": [{"shape": "tower", "height": 3, "at_x": 5.0}]})
     with FaultServer(["ok:" + reply]) as server:
         code, data = plan_json(server.base_url)
+    assert code == 0 and data["spec_source"] == "grammar"  # the command says x = 0.4
+    assert {o["position"][0] for o in data["layout"]["objects"]} == {0.4}
+    assert any("at_x" in note and "5.0" in note for note in data["notes"])
+
+
+def test_a_well_formed_spec_with_injected_coordinates_is_still_inspected():
+    reply = json.dumps({"structures": [{"shape": "tower", "height": 3, "at_x": 5.0}]})
+    with FaultServer(["ok:" + reply]) as server:
+        code, stdout, _ = invoke("plan", "a 3-cube tower", "--json", base_url=server.base_url)
+    data = json.loads(stdout)
     assert code == 1 and data["status"] == "failure"  # x = 5 m is outside the workspace
     assert data["spec_source"] == "model"
 

@@ -152,7 +152,7 @@ def _database(path: Path | None, *, run_id: str | None = None) -> Path:
             conn.close()
     except sqlite3.Error as exc:
         raise InputError(f"{db}: {_sqlite_reason(exc)}", field="--db") from None
-    if tables and not tables & {"messages", "checkpoints"}:
+    if tables and not tables & {"events", "messages", "checkpoints", "leases", "records"}:
         raise InputError(
             f"{db} is another program's SQLite database, not SDI's; give another --db",
             field="--db",

@@ -511,7 +511,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\bin\s+(?:its|the)\s+(?:courtyard|inside|interior|middle|centre|center)\b(?!\s+of)",
+            r"\bin\s+(?:its\s+(?:courtyard|inside|interior|middle|centre|center)|the\s+"
+            r"(?:courtyard|interior))\b(?!\s+of)",
             re.I,
         ),
         " inside ",
