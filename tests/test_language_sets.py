@@ -1,7 +1,8 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second dev set (dev2) is held to the same checks and shares no command with either."""
+second and third dev sets (dev2, dev3) are held to the same checks and share no command with
+any other set."""
 
 from __future__ import annotations
 
@@ -16,6 +17,7 @@ from sdi.bench import language_checks as k
 from sdi.bench.language_checks import PHENOMENA, Case, score
 from sdi.bench.language_dev import CASES as DEV
 from sdi.bench.language_dev2 import CASES as DEV2
+from sdi.bench.language_dev3 import CASES as DEV3
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -283,7 +285,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *TEST):
+    for case in (*DEV, *DEV2, *DEV3, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -304,6 +306,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_checks.py",
         "language_dev.py",
         "language_dev2.py",
+        "language_dev3.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -405,5 +408,120 @@ _CROSS = [cube(0.40 + C * i, 0.30, 0.025) for i in range(3)] + [
 )
 def test_dev2_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev2(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev3
+
+
+def test_dev3_set_sizes_ids_and_phenomena():
+    assert len(DEV3) >= 180
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev3-") for c in DEV3)
+    per = {p: sum(c.phenomenon == p for c in DEV3) for p in PHENOMENA}
+    assert min(per.values()) >= 12, per
+    hard = ("relation", "sequence", "numbers", "dimensions", "negation", "word_order")
+    assert min(per[p] for p in hard) >= 18, per
+    assert {c.phenomenon for c in DEV3} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV3)
+
+
+def test_no_command_shared_between_dev3_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV3}) == len(DEV3)
+    for other in (DEV, DEV2, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV3 if _norm(c.text) in seen]
+
+
+def _dev3(case_id: str) -> Case:
+    return next(c for c in DEV3 if c.id == case_id)
+
+
+def _row_y(x, y0, n, z0=0.0):
+    return [cube(x, y0 + C * j, z0 + C / 2) for j in range(n)]
+
+
+def _row_x(x0, y, n, z0=0.0):
+    return [cube(x0 + C * i, y, z0 + C / 2) for i in range(n)]
+
+
+_BRIDGE3 = [*column(0.45, 0.25, 3), *column(0.45, 0.35, 3), beam(0.45, 0.30, 0.175, YAW90)]
+_PLUS3 = [*_row_x(0.40, 0.30, 3), cube(0.45, 0.25, 0.025), cube(0.45, 0.35, 0.025)]
+_PYR2 = [*grid(0.40, 0.25, 3, 3), *grid(0.425, 0.275, 2, 2, z0=C)]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev3-rel-21",  # a cube sitting on the middle of the beam of a 3-high bridge
+            res(*_BRIDGE3, cube(0.45, 0.30, 0.225)),
+            res(*_BRIDGE3, cube(0.45, 0.25, 0.225)),  # over a pillar, not the middle
+        ),
+        (
+            "dev3-seq-10",  # a plus sign 3 across with one cube on its centre
+            res(*_PLUS3, cube(0.45, 0.30, 0.075)),
+            res(*_PLUS3, cube(0.40, 0.30, 0.075)),  # on an arm
+        ),
+        (
+            "dev3-neg-11",  # two towers of 3, far apart
+            res(*column(0.45, 0.10, 3), *column(0.45, 0.50, 3)),
+            res(*column(0.45, 0.25, 3), *column(0.45, 0.35, 3)),  # one cube apart
+        ),
+        (
+            "dev3-neg-18",  # three cubes in a line, not touching
+            res(cube(0.45, 0.20, 0.025), cube(0.45, 0.30, 0.025), cube(0.45, 0.40, 0.025)),
+            res(cube(0.45, 0.20, 0.025), cube(0.55, 0.30, 0.025), cube(0.45, 0.40, 0.025)),
+        ),
+        (
+            "dev3-reg-03",  # row 4 right up against the back edge
+            res(*_row_y(0.775, 0.25, 4)),
+            res(*_row_y(0.60, 0.25, 4)),  # at the back, but not against the edge
+        ),
+        (
+            "dev3-reg-05",  # a 4-long wall hugging the right boundary
+            res(*_row_x(0.40, 0.075, 4), *_row_x(0.40, 0.075, 4, z0=C)),
+            res(*_row_x(0.40, 0.20, 4), *_row_x(0.40, 0.20, 4, z0=C)),
+        ),
+        (
+            "dev3-dim-20",  # a row across the whole width, left to right
+            res(*_row_y(0.45, 0.075, 10)),
+            res(*_row_x(0.25, 0.30, 10)),  # ten long, but front to back
+        ),
+        (
+            "dev3-reg-12",  # a row of 3 across the front, 5 cm in from the front edge
+            res(*_row_y(0.275, 0.25, 3)),
+            res(*_row_y(0.35, 0.25, 3)),
+        ),
+        (
+            "dev3-neg-16",  # a 3-level pyramid without its top cube
+            res(*_PYR2),
+            res(*_PYR2, cube(0.45, 0.30, 0.125)),  # the whole pyramid
+        ),
+        (
+            "dev3-neg-05",  # a 4x4 patch without the middle four
+            res(*ring(0.40, 0.25, 4)),
+            res(*grid(0.40, 0.25, 4, 4)),
+        ),
+        (
+            "dev3-seq-18",  # a 3x3 pad at the back, a tower of 4 in front of it
+            res(*grid(0.60, 0.25, 3, 3), *column(0.40, 0.30, 4)),
+            res(*grid(0.30, 0.25, 3, 3), *column(0.60, 0.30, 4)),
+        ),
+        (
+            "dev3-seq-06",  # a 5 x 2 wall with the middle top cube pulled out
+            res(*_row_y(0.45, 0.20, 5), *_row_y(0.45, 0.20, 2, z0=C), *_row_y(0.45, 0.35, 2, z0=C)),
+            res(*_row_y(0.45, 0.20, 5), *_row_y(0.45, 0.20, 4, z0=C)),
+        ),
+        ("dev3-open-03", res(*grid(0.40, 0.25, 3, 3, layers=2)), res(*grid(0.40, 0.25, 2, 2, 2))),
+        ("dev3-open-07", res(*ring(0.40, 0.25, 4)), res(*ring(0.40, 0.25, 3))),  # roomy pen
+        ("dev3-open-08", res(*_row_y(0.45, 0.20, 5)), res(*grid(0.40, 0.25, 4, 4))),
+        ("dev3-open-15", res(*grid(0.40, 0.25, 2, 3)), res(*_row_y(0.45, 0.20, 6))),  # pile
+    ],
+)
+def test_dev3_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev3(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
