@@ -98,6 +98,7 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
         and spec.width == (spec.length or spec.width)
     ):
         spec = spec.model_copy(update={"width": None, "length": spec.length or spec.width})
+    spec = _derive(spec, notes)
     implied = {
         k: None
         for k, v in spec.model_dump(exclude_none=True).items()
@@ -111,6 +112,32 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
         notes.append(f"ignored {values}: a {spec.shape} has no such parameter")
         material.extend(f"{k}={v}" for k, v in left.items())
         spec = spec.model_copy(update=dict.fromkeys(left))
+    return spec
+
+
+def _derive(spec: StructureSpec, notes: list[str]) -> StructureSpec:
+    """Slots the words imply for a family: one side of a square family, a pyramid's base
+    given as its width, a grid's missing side from its count, a table top's size."""
+    square = ("grid", "block", "enclosure", "castle")
+    one_side = spec.shape in square and spec.length is None and spec.width is None
+    if one_side and spec.width_m is not None and spec.length_m is None:
+        spec = spec.model_copy(update={"length_m": spec.width_m})
+    if one_side and spec.length_m is not None and spec.width_m is None:
+        spec = spec.model_copy(update={"width_m": spec.length_m})
+    if spec.shape == "pyramid" and spec.width is not None and spec.length is None:
+        spec = spec.model_copy(update={"length": spec.width, "width": None})
+    if spec.shape == "grid" and spec.count is not None:
+        sides = [s for s in (spec.length, spec.width) if s]
+        if len(sides) == 1 and spec.count % sides[0] == 0:
+            other = spec.count // sides[0]
+            key = "width" if spec.width is None else "length"
+            notes.append(f"{spec.count} parts in rows of {sides[0]}: {key} {other}")
+            spec = spec.model_copy(update={key: other, "count": None})
+    if spec.shape == "canopy" and spec.span is None and (spec.length or spec.width):
+        side = max(spec.length or 0, spec.width or 0)
+        if side >= 3:
+            notes.append(f"a table top {side} parts across: legs {side - 2} apart")
+            spec = spec.model_copy(update={"span": side - 2, "length": None, "width": None})
     return spec
 
 

@@ -96,6 +96,8 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("alongside",), "next", None),
     (("adjacent", "to"), "next", None),
     (("close", "to"), "next", None),
+    (("near", "to"), "next", None),
+    (("near",), "next", None),
     (("to", "the", "left", "of"), "next", "left"),
     (("on", "the", "left", "of"), "next", "left"),
     (("left", "of"), "next", "left"),
@@ -108,6 +110,10 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("joined", "at", "the", "top", "by"), "joined", None),
     (("connected", "at", "the", "top", "by"), "joined", None),
     (("joined", "on", "top", "by"), "joined", None),
+    (("joined", "on", "top", "with"), "joined", None),
+    (("joined", "at", "the", "top", "with"), "joined", None),
+    (("connected", "on", "top", "with"), "joined", None),
+    (("connected", "on", "top", "by"), "joined", None),
     (("joined", "together", "by"), "joined", None),
     (("joined", "by"), "joined", None),
     (("connected", "by"), "joined", None),
@@ -131,7 +137,7 @@ _MARKERS.sort(key=lambda m: -len(m[0]))
 _VERB_AROUND = {"surround", "encircle", "enclose", "ring", "circle", "fence", "wall"}
 _VERB_JOIN = {"join", "connect", "link", "bridge"}
 _VERB_TOP = {"top", "cap", "crown"}
-_PRONOUNS = {"it", "them", "this", "that", "these", "those", "one"}
+_PRONOUNS = {"it", "them", "this", "that", "these", "those", "one", "both"}
 # Nouns that name a structure in a relation but not a family of their own.
 _GENERIC = {"platform", "slab", "plinth", "pedestal", "layer", "floor", "level", "tier",
             "structure", "thing", "one", "first", "last", "other"}  # fmt: skip
@@ -528,6 +534,42 @@ _REWRITES += [
         "",
     ),
 ]
+_REWRITES += [
+    (
+        re.compile(
+            r"\b(\d+)\s+(?:cubes?|parts?|blocks?)\s+(?:as|in|into)\s+(two|three|four|five|\d+)\s+"
+            r"(?:equal\s+|identical\s+|even\s+)?(towers|stacks|columns|piles|rows|walls)"
+            r"(?:\s+of\s+(?:equal|the\s+same)\s+(?:height|size|length))?",
+            re.IGNORECASE,
+        ),
+        "{split}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(double|triple|quadruple)[- ](?:height|decker|deck|layer|level|tier|storey)\b", re.I
+        ),
+        "{layers}-layer",
+        "read '{0}' as that many layers",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five)[- ](?:pillar|post|column|leg|pier)s?\s+(bridge|gate)\b",
+            re.I,
+        ),
+        " {1} with {0} pillars ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(?:anywhere\s+)?(?:except|but|other\s+than|apart\s+from|away\s+from)\s+"
+            r"(?:near|close\s+to|next\s+to)\s+(?:the\s+)?robot\b",
+            re.IGNORECASE,
+        ),
+        " at the back ",
+        "read '{0}' as at the back (far from the robot)",
+    ),
+]
 _OPEN = re.compile(
     r"\b(?:(tall|high|big|large)\s+)?(structure|thing|something|shape|construction|object|"
     r"build|sculpture|monument)\s+(?:that\s+is\s+\w+\s+)?with\s+a\s+(wide|broad|big|large|"
@@ -653,6 +695,14 @@ _METRE_WORDS = [
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
 ]
+_LIST_ITEM = re.compile(r"(?:^|\n|(?<=[.;:]))\s*(?:\d+[.)]|[-*•])\s+(?=[A-Za-z])")
+_AXES_LABEL = re.compile(
+    r"\(\s*(?:length|width|height|depth|[lwdh])(?:\s*[x×*,/]\s*(?:length|width|height|depth|"
+    r"[lwdh]))+\s*\)|\b[lwdh]\s*[x×*]\s*[lwdh](?:\s*[x×*]\s*[lwdh])?\s*[=:]",
+    re.IGNORECASE,
+)
+_SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
+_SLASHES = re.compile(r"\b\d+(?:/\d+)+\b(?!\s*(?:mm|cm|m)\b)")
 # The largest number a command may carry; beyond it nothing SDI builds is meant.
 _LARGEST = 1e6
 
@@ -707,6 +757,17 @@ def _normalise(command: str, notes: list[str] | None = None) -> str:
                 f"numbers above {_LARGEST:g} are refused",
                 understood={"numbers": [m.group(0)]},
             )
+    text = _LIST_ITEM.sub(" then ", text)  # "1) a tower\n2) another one …"
+    text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
+
+    def plus(m: re.Match[str]) -> str:
+        total = int(m.group(1)) + int(m.group(2))
+        notes.append(f"read '{m.group(0)}' as {total}")
+        return str(total)
+
+    text = _SUM.sub(plus, text)
+    text = _SLASHES.sub(lambda m: ", ".join(m.group(0).split("/")[:-1]) + " and " +
+                        m.group(0).split("/")[-1], text)  # fmt: skip
     text = _DIMS.sub(" x ", text)
     return _SPACES.sub(" ", text).strip()
 
@@ -755,6 +816,19 @@ _MODIFY = [
     ),
     _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
     _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
+    _op(r"\b(?:cut|chop)\s+(?:it|them)\s+in\s+(half)\b|\bhalve\s+(?:it|them)\b", "/"),
+    _op(
+        r"\bmake\s+(?:it|them)\s+"
+        + _N
+        + r"\s+(?:steps|cubes?\s+(?:high|tall)|levels?|layers?|high|tall|storeys?)\b",
+        "=",
+    ),
+    _op(
+        r"\b(?:take|knock|lift|remove)\s+"
+        + _N
+        + r"\s+(?:cubes?\s+|levels?\s+)?(?:back\s+)?(?:off|away|from\s+the\s+top)\b",
+        "-",
+    ),
     _op(
         r"\b(?:take|knock|lift)\s+(?:off\s+)?(?:the\s+)?top\s+"
         + _N
@@ -816,7 +890,7 @@ def _modify(p: _Phrase, before: list[_Phrase], structures: list[StructureSpec], 
         else:
             word = re.sub(r"\s+", " ", (m.group(1) or "1").lower())
             word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
-                    "triple": "3"}.get(word, word)  # fmt: skip
+                    "triple": "3", "half": "2"}.get(word, word)  # fmt: skip
             value = words_to_numbers([word])[0]
             if not value.isdigit():
                 return False
@@ -830,7 +904,9 @@ def _modify(p: _Phrase, before: list[_Phrase], structures: list[StructureSpec], 
         last = structures[index]
         key = "steps" if last.shape == "staircase" else "height"
         now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
-        new = {"+": now + n, "-": now - n, "=": n, "*": now * n}[op]
+        if op == "/" and now % n:
+            return False
+        new = {"+": now + n, "-": now - n, "=": n, "*": now * n, "/": now // n}[op]
         if new < 1:
             return False
         shape = last.shape
@@ -842,6 +918,19 @@ def _modify(p: _Phrase, before: list[_Phrase], structures: list[StructureSpec], 
         p.modified = True
         return True
     return False
+
+
+def _split(m: re.Match[str], st: _State) -> str:
+    """ "twelve cubes in three equal stacks": three stacks of four."""
+    total = int(m.group(1))
+    count = int(words_to_numbers([m.group(2).lower()])[0])
+    noun = m.group(3).lower()
+    if count < 1 or total % count:
+        st.material.append(m.group(0))
+        st.notes.append(f"ignored '{m.group(0)}': {total} parts do not split into {count} equal")
+        return f" {count} {noun} "
+    st.notes.append(f"{total} parts as {count} {noun}: {total // count} each")
+    return f" {count} {noun} of {total // count} cubes "
 
 
 def _rewrite(text: str, st: _State) -> str:
@@ -861,6 +950,12 @@ def _rewrite(text: str, st: _State) -> str:
         def sub(m: re.Match[str], replacement: str = replacement, note: str = note) -> str:
             said = m.group(0).strip(" ,")
             groups = [g.lower() if g else "" for g in m.groups()]
+            if replacement == "{split}":
+                return _split(m, st)
+            if replacement == "{layers}-layer":
+                n = {"double": 2, "triple": 3, "quadruple": 4}[groups[0]]
+                st.notes.append(note.format(said))
+                return f"{n}-layer"
             opposite = _OPPOSITE.get(groups[0], "") if groups else ""
             if "stack" in note or "stacked" in note:
                 st.no_stack = True
@@ -948,6 +1043,10 @@ def _is_structure_noun(doc: Doc, k: int) -> bool:
         return True  # "around a single cube": one part is a structure too
     if w in lx.PART_WORDS and w not in ("block", "blocks"):
         return False
+    if w in ("shape", "shaped") and k > 0 and doc[k - 1].lower_ in ("l", "u", "t", "plus", "cross"):
+        return True  # "a U shape"
+    if w in lx.LETTER_SHAPES and k + 1 < len(doc) and doc[k + 1].lower_ in lx.LETTER_SHAPE_TAILS:
+        return True
     return w in lx.SHAPE_WORDS or w in _GENERIC or w in _BEAMS
 
 

@@ -67,7 +67,8 @@ HARMLESS = _words(
     complete continue repeat begin keep probably placed situated sited simple thats id isnt
     its im ive youre whats lets pls plz ty thx
     umm um uh er hmm basically actually honestly hand irb irb120 irb1600 straight anywhere
-    measuring measures measured outside outer external climbing ascending going
+    measuring measures measured outside outer external climbing ascending going deck length
+    width height depth equal equally even evenly same each
     """
 )
 

@@ -849,6 +849,7 @@ class _Parser:
             # words
             if w in QUANTITY_WORDS and (
                 nxt in ("of",)
+                or self.is_num(k + 1)
                 or nxt in lx.PART_WORDS
                 or nxt in lx.SHAPE_WORDS
                 or k + 1 == h.index
@@ -955,8 +956,12 @@ class _Parser:
                 p["dims"] = 2
                 take(k)
                 continue
-            if w in lx.BEAM_WORDS:
-                self.beam = True
+            if w in lx.BEAM_WORDS and (
+                prev in ("of", "from", "using", "with")
+                or nxt in lx.SHAPE_WORDS
+                or (w.endswith("s") and k < h.index)
+            ):
+                self.beam = True  # "a wall of beams", "a beam tower": made of beams
                 take(k)
         if self.word(h.index) in ("ziggurat", "ziggurats"):
             p.setdefault("dims", 3)
@@ -1179,10 +1184,23 @@ class _Parser:
                 # "a staircase of 10 cubes": the steps whose triangle holds that many
                 steps = int(((8 * count + 1) ** 0.5 - 1) / 2)
                 p["steps"] = max(1, steps)
-                self.notes.append(f"{count} parts make a staircase of {p['steps']} steps")
+                used = p["steps"] * (p["steps"] + 1) // 2
+                self.notes.append(
+                    f"{count} parts make a staircase of {p['steps']} steps"
+                    if used == count
+                    else f"ignored {count} parts: no staircase has exactly that many; built "
+                    f"{p['steps']} steps ({used} parts)"
+                )
             elif shape == "pyramid" and "length" not in p and count > 4:
                 p["length"] = _pyramid_base(count, p.get("dims") == 3)
-                self.notes.append(f"{count} parts read as a pyramid with a base of {p['length']}")
+                used = sum((p["length"] - k) ** (2 if p.get("dims") == 3 else 1)
+                           for k in range(p["length"]))  # fmt: skip
+                self.notes.append(
+                    f"{count} parts read as a pyramid with a base of {p['length']}"
+                    if used == count
+                    else f"ignored {count} parts: no pyramid has exactly that many; built a "
+                    f"base of {p['length']} ({used} parts)"
+                )
             elif shape in ("wall",) and "length" not in p:
                 p["count"] = count
             elif shape in (

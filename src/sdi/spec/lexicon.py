@@ -477,7 +477,7 @@ LEVEL_WORDS = {
     "stage",
     "stages",
 }
-STEP_WORDS = {"step", "steps", "stair", "stairs"}
+STEP_WORDS = {"step", "steps", "stair", "stairs", "tread", "treads"}
 SPAN_WORDS = {"span", "spans", "bay", "bays", "opening", "openings", "segment", "segments"}
 
 UNITS_M = {
@@ -485,6 +485,7 @@ UNITS_M = {
     "cm": 0.01, "centimetre": 0.01, "centimetres": 0.01, "centimeter": 0.01,
     "centimeters": 0.01, "cms": 0.01, "mm": 0.001, "millimetre": 0.001, "millimetres": 0.001,
     "millimeter": 0.001, "millimeters": 0.001, "dm": 0.1, "decimetre": 0.1, "decimeter": 0.1,
+    "inch": 0.0254, "inches": 0.0254, "foot": 0.3048, "feet": 0.3048, "ft": 0.3048,
 }  # fmt: skip
 
 # Vague sizes: adjective → (dimension or "all", size class).
