@@ -1242,7 +1242,15 @@ def _clause_phrases(
             continue
         after_toks = phrases[after].tokens
         named = bool(after_toks) and _object_head(doc, after_toks[0], after_toks[-1] + 1)[1]
-        if kind in ("on", "inside") and not named:
+        pronoun = bool(after_toks) and all(
+            doc[i].lower_ in ("it", "them", "its", "top", "of", "the", "middle", "centre")
+            for i in after_toks
+        )
+        if (
+            kind in ("on", "inside", "next")
+            and (not named or pronoun)
+            and (kind != "next" or pronoun)
+        ):
             # "a block with a single cube on top", "an enclosure with a pyramid inside":
             # the structure after "with" is the subject, the one before it the object
             toks = phrases[before].tokens
@@ -1251,12 +1259,16 @@ def _clause_phrases(
                 cut = withs[-1]
                 phrases[before].tokens = toks[:cut]
                 phrases[after].tokens = toks[cut + 1 :] + phrases[after].tokens
+                if pronoun:
+                    phrases[after].tokens = toks[cut + 1 :]  # the pronoun names the first
                 if kind == "on":
                     rels.append(_Rel("on", after, before))
+                elif kind == "next":
+                    rels.append(_Rel("next", after, before, side))
                 else:
                     rels.append(_Rel("around", before, after))
                 continue
-            if kind == "inside":
+            if kind == "inside" and not named:
                 continue  # "with a 2 by 2 space inside": the ring's own inside
         if kind == "v_around":
             rels.append(_Rel("around", after, before))
@@ -1322,7 +1334,11 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             spec, unused = _parse_or_base(p, st)
             spec = _copies(spec, p.text, st)
         except SpecError:
-            if _continues(p, phrases[:k]):
+            grown = _continues(p, phrases[:k])
+            if grown is not None:
+                before_count, prev = grown
+                assert prev.spec is not None
+                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
                 continue
             if not [q for q in phrases[:k] if q.spec is not None] and not _chatter(p.text):
                 pending.append(p.text)
@@ -1354,11 +1370,21 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
     return structures
 
 
+_ONE_CUBE = re.compile(
+    r"^(?:\w+\s+)?(?:a|an|one|single|a\s+single|another|1)\s+(?:more\s+)?(?:cube|block|brick|part)"
+    r"(?:\s+\w+)?$",
+    re.IGNORECASE,
+)
+
+
 def _parse_or_base(p: _Phrase, st: _State) -> tuple[Spec, list[str]]:
-    """The phrase grammar's reading; "a sturdy base" with nothing else named is a platform."""
+    """The phrase grammar's reading; "a sturdy base" with nothing else named is a platform,
+    "a cube" on its own one part."""
     try:
         return parse_phrase(p.text, st.cell)
     except SpecError:
+        if _ONE_CUBE.match(p.text.strip()):
+            return parse_phrase("a single cube", st.cell)[0], []
         base = re.search(r"\b(base|foundation|footing|plinth)\b", p.text, re.IGNORECASE)
         if not base:
             raise
@@ -1422,23 +1448,26 @@ def _target(phrases: list[_Phrase], j: int) -> int:
     return j
 
 
-def _continues(p: _Phrase, before: list[_Phrase]) -> bool:
-    """A phrase with no structure that modifies the one before ("Make it 5 cubes tall")."""
+def _continues(p: _Phrase, before: list[_Phrase]) -> tuple[int, _Phrase] | None:
+    """A phrase with no structure that modifies the one before ("Make it 5 cubes tall"):
+    the earlier phrase read again with it, and how many structures it had."""
     built = [q for q in before if q.spec is not None]
     if not built or p.ref is not None:
-        return False
+        return None
     prev = built[-1]
     try:
         spec, _ = parse_phrase(prev.text + " , " + p.text, CellConfig())
     except SpecError:
-        return False
-    if spec.structures == prev.spec.structures if prev.spec else True:
-        return False
+        return None
+    if prev.spec is not None and spec.structures == prev.spec.structures:
+        return None
+    count = prev.count
+    if len(spec.structures) != count:
+        return None  # the later words named a structure after all: not a continuation
     prev.text = prev.text + " , " + p.text
     prev.spec = spec
-    prev.count = len(spec.structures)
     p.count = 0
-    return True
+    return count, prev
 
 
 def _chatter(text: str) -> bool:

@@ -659,10 +659,11 @@ class _Parser:
                         key = "width" if wj in ("deep", "long", "tall", "high") else key
                     if wj == "thick" and "length" in p and "width" in p:
                         key = "height"  # "five across and three deep, one cube thick"
-                    elif key in p and p[key] != v:
+                    elif key in p and p[key] != v and p.get("_word_" + key) != wj:
                         other = {"width": "length", "length": "width"}.get(key)
                         if other and other not in p:
                             key = other  # "3 wide, 2 deep": two different sides
+                    p.setdefault("_word_" + key, wj)
                     p.setdefault(key, v)
                     for m in range(k, j + 1):
                         take(m)
