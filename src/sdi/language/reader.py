@@ -570,6 +570,39 @@ _REWRITES += [
         "read '{0}' as at the back (far from the robot)",
     ),
 ]
+_REWRITES += [
+    (
+        re.compile(
+            r"\bright\s+(?=(?:up|next|behind|in\s+front|beside|against|at\s+the|by\s+the|over|"
+            r"above|below|under|there|here|away|now)\b)",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(centred|centered)\s+(?:from\s+)?(?:left\s+to\s+right|side\s+to\s+side)", re.I
+        ),
+        " {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\bwith\s+(?:a|an)\s+(\d+\s*x\s*\d+|\d+)\s+(?:bottom|footprint|foot)\b", re.I),
+        " with a {0} base ",
+        "",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?(?:not\s+touching(?:\s+each\s+other)?|spaced\s+out|spread\s+out|"
+            r"with\s+gaps?\s+between\s+them)\b",
+            re.IGNORECASE,
+        ),
+        " spaced 5 cm apart ",
+        "read '{0}' as a part's width apart",
+    ),
+    (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
+]
 _OPEN = re.compile(
     r"\b(?:(tall|high|big|large)\s+)?(structure|thing|something|shape|construction|object|"
     r"build|sculpture|monument)\s+(?:that\s+is\s+\w+\s+)?with\s+a\s+(wide|broad|big|large|"
@@ -695,7 +728,27 @@ _METRE_WORDS = [
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
 ]
-_LIST_ITEM = re.compile(r"(?:^|\n|(?<=[.;:]))\s*(?:\d+[.)]|[-*•])\s+(?=[A-Za-z])")
+_LIST_ITEM = re.compile(r"(?:^|\n|(?<=[.;:]))\s*\d+[.)]\s+(?=[A-Za-z])")
+_BULLET = re.compile(r"(?:^|\n)\s*[-*•]\s+(?=[A-Za-z0-9])")
+_ROBOT_NAME = re.compile(r"\b(?:the\s+)?(?:abb\s+)?irb\s*-?\s*(?:120|1600)\b", re.IGNORECASE)
+_PAIR_UNIT = re.compile(
+    r"\(\s*(-?\d+(?:\.\d+)?)\s*,\s*(-?\d+(?:\.\d+)?)\s*\)\s*(mm|cm|m)\b", re.IGNORECASE
+)
+_SLASH_XY = re.compile(
+    r"\b(\d+(?:\.\d+)?)\s*/\s*(\d+(?:\.\d+)?)\s*(mm|cm|m)\b(?:\s*\(\s*x\s*/\s*y\s*\))?",
+    re.IGNORECASE,
+)
+_COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps|levels|layers)"
+_HOMOPHONES = [
+    (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d))", re.I), "two "),
+    (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
+    (re.compile(r"\bfor\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "four "),
+    (re.compile(r"(?<=\bof\s)for\s*$", re.I), "four"),
+    (re.compile(r"\bate\s+(?=" + _COUNTED + r"\b)", re.I), "eight "),
+    (re.compile(r"(?<=\d)\s+bye\s+(?=\d)", re.I), " by "),
+    (re.compile(r"\b(?:el|ell)\s+(?=shape|shaped)", re.I), "L "),
+    (re.compile(r"\btee\s+(?=shape|shaped)", re.I), "T "),
+]
 _AXES_LABEL = re.compile(
     r"\(\s*(?:length|width|height|depth|[lwdh])(?:\s*[x×*,/]\s*(?:length|width|height|depth|"
     r"[lwdh]))+\s*\)|\b[lwdh]\s*[x×*]\s*[lwdh](?:\s*[x×*]\s*[lwdh])?\s*[=:]",
@@ -758,6 +811,14 @@ def _normalise(command: str, notes: list[str] | None = None) -> str:
                 understood={"numbers": [m.group(0)]},
             )
     text = _LIST_ITEM.sub(" then ", text)  # "1) a tower\n2) another one …"
+    text = _BULLET.sub(" , ", text)  # "- tower / - 4 cubes / - left side": one thing's details
+    text = _ROBOT_NAME.sub(" the robot ", text)
+    text = _PAIR_UNIT.sub(lambda m: f"({m.group(1)} {m.group(3)}, {m.group(2)} {m.group(3)})", text)
+    text = _SLASH_XY.sub(
+        lambda m: f"x = {m.group(1)} {m.group(3)}, y = {m.group(2)} {m.group(3)}", text
+    )
+    for pattern, repl in _HOMOPHONES:
+        text = pattern.sub(repl, text)
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
 
     def plus(m: re.Match[str]) -> str:

@@ -68,7 +68,9 @@ HARMLESS = _words(
     its im ive youre whats lets pls plz ty thx
     umm um uh er hmm basically actually honestly hand irb irb120 irb1600 straight anywhere
     measuring measures measured outside outer external climbing ascending going deck length
-    width height depth equal equally even evenly same each
+    width height depth equal equally even evenly same each definitely certainly surely
+    absolutely precisely have has having had period comma stop u ur story stuff point work
+    working surface bench
     """
 )
 

@@ -195,6 +195,10 @@ _add(
 _add(
     "bridge",
     "bridge",
+    "footbridge",
+    "footbridges",
+    "overpass",
+    "viaduct",
     "bridges",
     "gate",
     "gates",
@@ -222,6 +226,9 @@ _add("arch", "arch", "arches", "archway", "archways", "vault", "vaults", "tunnel
 _add(
     "canopy",
     "canopy",
+    "gazebo",
+    "pergola",
+    "carport",
     "canopies",
     "table",
     "tables",
@@ -250,6 +257,8 @@ _add(
 _add(
     "enclosure",
     "enclosure",
+    "corral",
+    "paddock",
     "enclosures",
     "ring",
     "rings",
@@ -502,6 +511,7 @@ SIZE_WORDS: dict[str, tuple[str, str]] = {
     "sizable": ("all", "L"), "sizeable": ("all", "L"), "substantial": ("all", "L"),
     "impressive": ("all", "L"), "majestic": ("all", "L"), "monumental": ("all", "L"),
     "bigger": ("all", "L"), "larger": ("all", "L"), "generous": ("all", "L"),
+    "roomy": ("all", "L"), "spacious": ("all", "L"), "cosy": ("all", "S"), "cozy": ("all", "S"),
     "chunky": ("all", "L"), "hefty": ("all", "L"), "beefy": ("all", "L"), "stout": ("all", "L"),
     "tall": ("height", "L"), "high": ("height", "L"), "lofty": ("height", "L"),
     "towering": ("height", "L"), "taller": ("height", "L"), "higher": ("height", "L"),
@@ -519,6 +529,7 @@ SIZE_WORDS: dict[str, tuple[str, str]] = {
 REGION_WORDS = {
     "left": "left", "right": "right", "front": "front", "back": "back", "rear": "back",
     "behind": "back", "far": "back", "distant": "back", "near": "front", "close": "front",
+    "nearest": "front", "closest": "front", "furthest": "back", "farthest": "back",
     "nearby": "front", "centre": "centre", "center": "centre", "middle": "centre",
     "central": "centre", "centrally": "centre", "centred": "centre", "centered": "centre",
 }  # fmt: skip
