@@ -368,7 +368,16 @@ _REWRITES += [
     (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),
     (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
     (re.compile(r"\bnothing\s+(?:fancy|else|special|more)\b", re.IGNORECASE), " ", ""),
-    (re.compile(r"\bStep\s+\d+\s*[:.)-]", re.IGNORECASE), " then ", ""),
+    (
+        re.compile(
+            r"(?:\bStep\s+(?:\d+|one|two|three|four|five|six)\s*[:.)-]|(?:^|(?<=[.;]))\s*"
+            r"(?:one|two|three|four|five|six|first|second|third|fourth|fifth|last|finally)\s*[:,]"
+            r"(?=\s*(?:a|an|the|\d|one|put|add|place|lay|build|stack|make|then)\b))",
+            re.IGNORECASE,
+        ),
+        " then ",
+        "",
+    ),
     (
         re.compile(
             r",?\s*\b(?:with\s+|and\s+|then\s+build\s+)?(?:each|every)\s+(?:level|layer|row|tier)\s+"
@@ -537,8 +546,9 @@ _REWRITES += [
 _REWRITES += [
     (
         re.compile(
-            r"\b(\d+)\s+(?:cubes?|parts?|blocks?)\s+(?:as|in|into)\s+(two|three|four|five|\d+)\s+"
-            r"(?:equal\s+|identical\s+|even\s+)?(towers|stacks|columns|piles|rows|walls)"
+            r"\b(\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\s+(?:as|in|into|making|to\s+make)\s+"
+            r"(two|three|four|five|six|\d+)\s+(?:equal\s+|identical\s+|even\s+)?"
+            r"(towers|stacks|columns|piles|rows|walls)"
             r"(?:\s+of\s+(?:equal|the\s+same)\s+(?:height|size|length))?",
             re.IGNORECASE,
         ),
@@ -571,6 +581,22 @@ _REWRITES += [
     ),
 ]
 _REWRITES += [
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+single\s+(?=cubes|blocks)",
+            re.IGNORECASE,
+        ),
+        " {0} separate ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:cubes|parts|blocks)\s+in\s+(two|three|four|five|\d+)\s+rows\b",
+            re.IGNORECASE,
+        ),
+        "{rows}",
+        "",
+    ),
     (
         re.compile(
             r"\bright\s+(?=(?:up|next|behind|in\s+front|beside|against|at\s+the|by\s+the|over|"
@@ -983,8 +1009,10 @@ def _modify(p: _Phrase, before: list[_Phrase], structures: list[StructureSpec], 
 
 def _split(m: re.Match[str], st: _State) -> str:
     """ "twelve cubes in three equal stacks": three stacks of four."""
-    total = int(m.group(1))
-    count = int(words_to_numbers([m.group(2).lower()])[0])
+    said = [words_to_numbers([g.lower()])[0] for g in (m.group(1), m.group(2))]
+    if not all(v.isdigit() for v in said):
+        return m.group(0)
+    total, count = int(said[0]), int(said[1])
     noun = m.group(3).lower()
     if count < 1 or total % count:
         st.material.append(m.group(0))
@@ -1013,6 +1041,12 @@ def _rewrite(text: str, st: _State) -> str:
             groups = [g.lower() if g else "" for g in m.groups()]
             if replacement == "{split}":
                 return _split(m, st)
+            if replacement == "{rows}":
+                said_n = [words_to_numbers([g])[0] for g in groups[:2]]
+                if all(v.isdigit() for v in said_n) and int(said_n[0]) % int(said_n[1]) == 0:
+                    per = int(said_n[0]) // int(said_n[1])
+                    return f" {said_n[1]} rows of {per} "
+                return m.group(0)
             if replacement == "{layers}-layer":
                 n = {"double": 2, "triple": 3, "quadruple": 4}[groups[0]]
                 st.notes.append(note.format(said))

@@ -1277,7 +1277,12 @@ class _Parser:
             p["count"] = max(1, int(tower_height) - int(p.get("height", 1)))
         if shape in ("wall", "row") and "width" in p and "length" not in p:
             p["length"] = p.pop("width")  # a wall or a row is one part thick: "wide" is long
-        if shape in ("grid", "block", "enclosure", "castle") and "width" in p and "length" not in p:
+        if (
+            shape in ("grid", "block", "enclosure", "castle")
+            and "width" in p
+            and "length" not in p
+            and count is None
+        ):
             p["length"] = p["width"]  # one side given: make it square
         region = _region(regions)
         if region:
