@@ -1072,7 +1072,9 @@ def _rewrite(text: str, st: _State) -> str:
 
 
 # -- 3–4. clauses, phrases and relation markers ---------------------------------------------
-def _clauses(doc: Doc) -> list[list[int]]:
+def _clauses(doc: Doc) -> list[tuple[list[int], bool]]:
+    """The command's clauses (token indices), each with whether a sequence word ("then",
+    "finally", a step label) introduced it."""
     # Clauses end at sentence punctuation, not at the parser's sentence guesses (it splits
     # "a tower at x = 450 mm" at "=").
     clauses: list[list[int]] = []
@@ -1098,14 +1100,15 @@ def _clauses(doc: Doc) -> list[list[int]]:
     if current:
         clauses.append(current)
     # strip leading sequence words and trailing punctuation
-    out = []
+    out: list[tuple[list[int], bool]] = []
     for c in clauses:
+        sequenced = bool(c) and doc[c[0]].lower_ in _SEQUENCE | {"then", "finally", "lastly"}
         while c and doc[c[0]].lower_ in _LEADS | _SEQUENCE:
             c = c[1:]
         while c and doc[c[-1]].is_punct:
             c = c[:-1]
         if c:
-            out.append(c)
+            out.append((c, sequenced))
     return out
 
 
@@ -1211,8 +1214,16 @@ def _component(doc: Doc, clause: list[int], marker: int, head: int) -> bool:
 def _structure(doc: Doc) -> tuple[list[_Phrase], list[_Rel]]:
     phrases: list[_Phrase] = []
     rels: list[_Rel] = []
-    for ci, clause in enumerate(_clauses(doc)):
+    stacking = False
+    for ci, (clause, sequenced) in enumerate(_clauses(doc)):
+        first_phrase, first_rel = len(phrases), len(rels)
         _clause_phrases(doc, clause, ci, phrases, rels)
+        new = rels[first_rel:]
+        if not new and stacking and sequenced and len(phrases) == first_phrase + 1:
+            # "… a 4x1 row on it. Then 3x1. Then 2x1.": a step in a stack goes on top
+            rels.append(_Rel("on", first_phrase, None))
+            continue
+        stacking = any(r.kind == "on" for r in new)
     for p in phrases:
         p.text = "".join(doc[k].text_with_ws for k in p.tokens).strip()
     return phrases, rels
