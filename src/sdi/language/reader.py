@@ -148,6 +148,7 @@ _BEAMS = {"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "gi
           "slab", "bridge", "bridges", "arch", "roof", "deck", "span"}  # fmt: skip
 _FRONTED_VERBS = {"goes", "go", "stands", "sits", "comes", "is", "are", "put", "place", "build",
                   "add", "stack", "lies", "rests", "belongs", "should", "will", "must"}  # fmt: skip
+_ORDINALS = {"first", "second", "third", "fourth", "last", "other"}
 _QUANTITY_NOUNS = {"pair", "couple", "set", "group", "bunch", "handful", "trio"}
 _EMPTY = {"empty", "hollow", "open", "free", "blank"}
 _COPY = {"second", "another", "same", "identical", "matching", "similar", "twin", "copy"}
@@ -650,6 +651,7 @@ class _Phrase:
     ref: int | None = None  # a pure reference: the phrase it refers to
     side: str | None = None  # "it on the right": the side the reference names
     modified: bool = False  # "then add two more cubes to it": changed an earlier structure
+    structure: int | None = None  # "the first one", "the smaller one": which structure
     unused: list[str] = field(default_factory=list)
 
 
@@ -1158,6 +1160,10 @@ def _object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[i
         w = tok.lower_
         if w in _EMPTY:
             empty = True
+        if (w in _PRONOUNS or w in _ORDINALS) and (
+            k + 1 >= end or doc[k + 1].pos_ not in ("NOUN", "PROPN", "NUM", "ADJ")
+        ):
+            break  # "on the smaller one", "in front of the second"
         if tok.pos_ in ("DET", "NUM", "ADJ", "ADV", "PUNCT", "SYM") or w in ("x", "by", "-"):
             k += 1
             continue
@@ -1181,11 +1187,13 @@ def _object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[i
     w = doc[k].lower_
     if w in lx.REGION_WORDS or w in ("corner", "corners", "table", "edge", "side", "robot"):
         return k, False
-    if w in ("each", "other", "top"):
-        return k, False
+    if w in ("each", "top") or (w == "other" and k > 0 and doc[k - 1].lower_ == "each"):
+        return k, False  # "on top of each other"
     if empty:
         return k, False
     if w in _PRONOUNS and doc[k].pos_ in ("PRON", "DET", "NUM", "NOUN"):
+        return k, True
+    if w in _ORDINALS:
         return k, True
     if w in _BASES:
         return k, strong
@@ -1417,6 +1425,26 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             for w in re.findall(r"[a-z0-9.]+", p.text.lower())
             if w not in words.HARMLESS or w in lx.SHAPE_WORDS
         ]
+        earlier = [
+            i
+            for q in phrases[:k]
+            if q.clause < p.clause and q.count
+            for i in range(q.first, q.first + q.count)
+        ]
+        pick = _pick(p.text, structures, earlier)
+        if pick is not None and structures:
+            p.structure = pick
+            p.ref = next(
+                (
+                    j
+                    for j, q in enumerate(phrases[:k])
+                    if q.count and q.first <= pick < q.first + q.count
+                ),
+                None,
+            )
+            if p.ref is not None:
+                continue
+            p.structure = None
         ref = _reference(p, phrases[:k])
         if ref is not None:
             p.ref = ref
@@ -1546,6 +1574,43 @@ def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
             return _target(before, built[-1])  # "the structure", "the other one"
         return None  # "the tower" named for the first time: a structure of its own
     return None
+
+
+_PICK = re.compile(
+    r"^(?:\w+\s+)?the\s+(first|second|third|fourth|last|smaller|smallest|larger|largest|bigger|"
+    r"biggest|taller|tallest|shorter|shortest|lower|higher)(?:\s+(?:one|"
+    + "|".join(sorted(w for w in lx.SHAPE_WORDS if w.isalpha()))
+    + r"))?$",
+    re.IGNORECASE,
+)
+
+
+def _pick(text: str, structures: list[StructureSpec], among: list[int]) -> int | None:
+    """ "the first one", "the smaller one", "the taller tower": one of the structures named
+    in earlier clauses (`among`; all so far when empty)."""
+    m = _PICK.match(text.strip())
+    if not m or not structures:
+        return None
+    among = among or list(range(len(structures)))
+    word = m.group(1).lower()
+    order = {"first": 0, "second": 1, "third": 2, "fourth": 3}
+    if word in order:
+        return among[order[word]] if order[word] < len(among) else None
+    if word == "last":
+        return among[-1]
+
+    def size(s: StructureSpec) -> float:
+        tall = s.height or s.steps or (s.height_m or 0) / 0.05 or 1
+        wide = (s.length or 1) * (s.width or 1)
+        return float(tall if word in ("taller", "tallest", "shorter", "shortest", "lower",
+                                      "higher") else tall * wide)  # fmt: skip
+
+    sizes = [size(structures[i]) for i in among]
+    big = word in ("larger", "largest", "bigger", "biggest", "taller", "tallest", "higher")
+    target = max(sizes) if big else min(sizes)
+    if sizes.count(target) != 1:
+        return None
+    return among[sizes.index(target)]
 
 
 def _target(phrases: list[_Phrase], j: int) -> int:
@@ -1703,13 +1768,18 @@ def _relate(
         else:
             s_idx = s_last
             o_idx = phrases[obj].first + phrases[obj].count - 1
+        if phrases[r.subject].structure is not None:
+            s_idx = phrases[r.subject].structure  # type: ignore[assignment]
+        if r.object is not None and phrases[r.object].structure is not None:
+            o_idx = phrases[r.object].structure  # type: ignore[assignment]
         if o_idx < 0 or o_idx == s_idx:
             st.material.append(f"relation {r.kind}")
             st.notes.append(f"ignored '{r.kind}': no structure to relate '{phrases[subj].text}' to")
             continue
         if obj is None:
             obj = subj
-        if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1:
+        picked = r.object is not None and phrases[r.object].structure is not None
+        if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1 and not picked:
             _join(phrases, obj, subj, structures, replace, drop, st)
             continue
         subject = replace.get(s_idx, structures[s_idx])
