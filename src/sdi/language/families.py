@@ -99,6 +99,7 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
     ):
         spec = spec.model_copy(update={"width": None, "length": spec.length or spec.width})
     spec = _derive(spec, notes)
+    spec = _metres_and_parts(spec, notes, material)
     implied = {
         k: None
         for k, v in spec.model_dump(exclude_none=True).items()
@@ -138,6 +139,31 @@ def _derive(spec: StructureSpec, notes: list[str]) -> StructureSpec:
         if side >= 3:
             notes.append(f"a table top {side} parts across: legs {side - 2} apart")
             spec = spec.model_copy(update={"span": side - 2, "length": None, "width": None})
+    return spec
+
+
+CUBE_M = 0.05  # the default part edge; a cell with other parts states its own in the notes
+
+
+def _metres_and_parts(spec: StructureSpec, notes: list[str], material: list[str]) -> StructureSpec:
+    """A size given both in parts and in metres must agree; metres that are no whole number
+    of parts are rounded, and said so."""
+    for key in ("length", "width", "height"):
+        parts, metres = getattr(spec, key), getattr(spec, f"{key}_m")
+        if metres is None:
+            continue
+        whole = round(metres / CUBE_M)
+        if parts is not None and parts != whole:
+            notes.append(
+                f"ignored {key} {parts}: the command also says {metres:g} m ({whole} parts)"
+            )
+            material.append(f"{key}={parts}")
+            spec = spec.model_copy(update={key: None})
+        elif abs(metres / CUBE_M - whole) > 0.05 and whole >= 1:
+            notes.append(
+                f"{metres:g} m is {metres / CUBE_M:.1f} parts of {CUBE_M:g} m: built {whole} "
+                f"({whole * CUBE_M:g} m)"
+            )
     return spec
 
 

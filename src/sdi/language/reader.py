@@ -242,15 +242,27 @@ _REWRITES += [
 ]
 _SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
 _REWRITES += [
-    # "anywhere except the back", "anywhere but on the left"
+    # "anywhere except the back", "anywhere but on the left", "avoid the left side"
     (
         re.compile(
-            r"\b(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|away\s+from)\s+"
-            r"(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|middle|centre|center)\b",
+            r"\b(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|away\s+from|"
+            r"avoid(?:ing)?)\s+(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|middle|centre|"
+            r"center)(?:\s+side)?(?:\s+(?:or|and|nor)\s+(?:on\s+|in\s+|at\s+)?the\s+"
+            r"(left|right|front|back)(?:\s+side)?)?\b",
             re.IGNORECASE,
         ),
-        " on the {opposite} ",
-        "read '{0}' as on the {opposite}",
+        " on the {opposite} {opposite2} ",
+        "read '{0}' as on the {opposite} {opposite2}",
+    ),
+    (
+        re.compile(r"\bnot\s+(?:one|a\s+single)\s+but\s+(two|three|four|five|\d+)\b", re.I),
+        " {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\bon\s+(?:its|the)\s+(?:centre|center|middle|top)\b(?!\s+of)", re.I),
+        " on top ",
+        "",
     ),
     # "no taller than 2 cubes" → 2 cubes high; "no more than 3 steps" → 3 steps
     (
@@ -930,6 +942,13 @@ _MODIFY = [
         "-1",
     ),
 ]
+_REMOVAL = re.compile(
+    r"^(?:\w+\s+){0,2}?(?:take|takes|pull|pulls|remove|removes|push|pushes|move|moves|shift|"
+    r"slide|swap|delete|knock|cut|subtract|shove|merge|join\s+up)\b"
+    r"(?!.*\b(?:tower|wall|row|pyramid|staircase|bridge|grid|block|ring|castle|arch)s?\b.*\b"
+    r"(?:of|with)\s+\d)",
+    re.IGNORECASE,
+)
 _LEGS = re.compile(r"\blegs?\b", re.IGNORECASE)
 _TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
 
@@ -1054,11 +1073,16 @@ def _rewrite(text: str, st: _State) -> str:
                 st.notes.append(note.format(said))
                 return f"{n}-layer"
             opposite = _OPPOSITE.get(groups[0], "") if groups else ""
+            opposite2 = _OPPOSITE.get(groups[1], "") if len(groups) > 1 else ""
+            if opposite2 and opposite2 in ("left", "right") and opposite in ("front", "back"):
+                opposite, opposite2 = opposite2, opposite
             if "stack" in note or "stacked" in note:
                 st.no_stack = True
             if note:
-                st.notes.append(note.format(said, opposite=opposite))
-            return replacement.format(*groups, "", "", opposite=opposite)
+                st.notes.append(
+                    _SPACES.sub(" ", note.format(said, opposite=opposite, opposite2=opposite2))
+                )
+            return replacement.format(*groups, "", "", opposite=opposite, opposite2=opposite2)
 
         text = pattern.sub(sub, text)
     text = _LEVEL_ORDINAL.sub(" on top ", text)
@@ -1454,6 +1478,15 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
         if k in joiners and all(w in _BEAMS or w in lx.PART_WORDS or w == "top" for w in content):
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
         if _modify(p, phrases[:k], structures, st):
+            continue
+        if _REMOVAL.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
+            # "then pull out the middle cube", "push them together": a change SDI cannot
+            # make to a structure it built; never a new structure read from those words
+            st.material.append(p.text)
+            st.notes.append(
+                f"ignored '{p.text}': SDI builds structures whole and cannot take parts out, "
+                "move or merge them afterwards; describe the result instead"
+            )
             continue
         change = next((m for pattern, _ in _MODIFY if (m := pattern.search(p.text))), None)
         tail: _Phrase | None = None
@@ -1856,6 +1889,11 @@ def _join(
     towers = [replace.get(k, structures[k]) for k in idx]
     if len(towers) == 1 and towers[0].shape in ("bridge", "arch", "canopy"):
         return  # "a bridge: two pillars … with a beam across the top": the bridge's own beam
+    if len(towers) == 1 and towers[0].shape == "row" and (towers[0].length or 0) >= 2:
+        # "a beam spanning a pair of single cubes": each cube is a pillar one part high
+        n = towers[0].length or 2
+        towers = [towers[0].model_copy(update={"shape": "tower", "height": 1, "length": None,
+                                               "gap_m": None})] * n  # fmt: skip
     if len(towers) < 2 or any(t.shape != "tower" for t in towers):
         shapes = ", ".join(t.shape for t in towers)
         st.material.append("relation joined")

@@ -122,7 +122,7 @@ class _Slots(dict[str, Any]):
     def setdefault(self, key: str, default: Any = None) -> Any:
         if (
             key in self
-            and not key.startswith("_")
+            and (not key.startswith("_") or key == "_count")
             and isinstance(default, int | float)
             and isinstance(self[key], int | float)
             and self[key] != default
@@ -1068,7 +1068,8 @@ class _Parser:
             # tower at each corner", "a shelter with four legs and a roof", "a bridge with
             # three spans on pillars 3 high", "a courtyard with walls 2 high"
             parts = COMPONENTS.get(h.shape, set())
-            if nxt and nxt.shape in parts and between & LINKS:
+            regional = bool(between & set(lx.REGION_WORDS)) and "and" in between
+            if nxt and nxt.shape in parts and between & LINKS and not regional:
                 j = k + 1
                 while j < len(hits) and hits[j].shape in parts:
                     if j > k + 1 and self.between(hits[j - 1], hits[j]) & {
