@@ -255,6 +255,42 @@ _REWRITES += [
         "read '{0}' as on the {opposite} {opposite2}",
     ),
     (
+        re.compile(
+            r"(?:^|(?<=[.;,:]))\s*(?:no|not\s+an?)\s+(?:"
+            + _SHAPE_ALT
+            + r")s?\s+(?:this\s+time|today|"
+            r"now|please)\s*[,:;.-]*\s*(?:just|only|but|instead)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    (
+        re.compile(
+            r",?\s*\bnot\s+a\s+(?:square|round|big|small|tall|short|flat)\s+one\s*[:,;-]?", re.I
+        ),
+        " , ",
+        "'{0}': as the sizes say",
+    ),
+    (re.compile(r",?\s*-?\s*\b(?:cubes|blocks)\s+only\b|\bonly\s+cubes\b", re.I), " ", ""),
+    (
+        re.compile(
+            r"\b(?:does|do)\s+not\s+(?:go|rise|reach|get)\s+(?:any\s+)?(?:taller|higher)\s+than\s+"
+            r"(\d+|[a-z]+)(\s+(?:cubes?|parts?|blocks?|levels?|layers?|cm|mm|m))?",
+            re.IGNORECASE,
+        ),
+        " {0}{1} high ",
+        "read '{0}' as exactly that (the most allowed)",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:cubes?\s+)?(?:wide|across|long)\s+at\s+the\s+(?:bottom|base)\b",
+            re.IGNORECASE,
+        ),
+        " with a base of {0} ",
+        "",
+    ),
+    (
         re.compile(r"\bnot\s+(?:one|a\s+single)\s+but\s+(two|three|four|five|\d+)\b", re.I),
         " {0} ",
         "",
@@ -528,7 +564,11 @@ _REWRITES += [
         "",
     ),
     (
-        re.compile(r"(?:^|(?<=[,.;:(]))\s*(wide|deep|high|tall|long)\s*[:=]?\s*(\d+)\b", re.I),
+        re.compile(
+            r"(?:^|(?<=[,.;:(]))\s*(wide|deep|high|tall|long)\s*[:=]?\s*(\d+)"
+            r"(?:\s+(?:cubes?|parts?|blocks?))?\b",
+            re.I,
+        ),
         " {1} {0} ",
         "",
     ),
@@ -762,7 +802,11 @@ _CONTRACTIONS = [
 _SCIENTIFIC = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?|\.\d+)[eE]([+-]?\d+)\b")
 _NOT_A_NUMBER = re.compile(r"(?<![\w])(nan|inf|infinity)(?![\w])", re.IGNORECASE)
 _DECIMAL_COMMA = re.compile(r"(?<=[=:])\s*(-?\d+),(\d+)\b(?!\s*(?:,|and)\s*\d)")
-_REFERENCE_NO = re.compile(r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b", re.IGNORECASE)
+_REFERENCE_NO = re.compile(
+    r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell)\s*"
+    r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b",
+    re.IGNORECASE,
+)
 _METRE_WORDS = [
     (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
@@ -807,6 +851,8 @@ def _normalise(command: str, notes: list[str] | None = None) -> str:
     for a, b in _SYMBOLS.items():
         text = text.replace(a, b)
     text = text.replace("@", " at ")
+    text = re.sub(r"\((?![\d\s.,-]+\))", " , ", text)  # "(two pillars, …)" but not "(0.4, 0.3)"
+    text = re.sub(r"(?<![\d\s])\)", " , ", text)
     for pattern, repl in _CONTRACTIONS:
         text = pattern.sub(repl, text)
     bad = _NOT_A_NUMBER.search(text)
@@ -873,7 +919,12 @@ def _normalise(command: str, notes: list[str] | None = None) -> str:
     return _SPACES.sub(" ", text).strip()
 
 
-_ANOTHER = re.compile(r"\b(another|one\s+more|a\s+second)\s+one\b", re.IGNORECASE)
+_ANOTHER = re.compile(
+    r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+one\b|a\s+(?:third|fourth|fifth)\b"
+    r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)one(?=\s+(?:on|at|in|to)\s+the\b)|"
+    r"(?<=\band\s)one(?=\s+(?:on|at|in|to)\s+the\b))",
+    re.IGNORECASE,
+)
 _SIZES = ("count", "length", "width", "height", "steps", "span", "spans", "dims",
           "length_m", "width_m", "height_m", "gap_m", "part")  # fmt: skip
 _N = r"(\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|another|one\s+more)"
@@ -919,7 +970,7 @@ _MODIFY = [
     _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
     _op(r"\b(?:cut|chop)\s+(?:it|them)\s+in\s+(half)\b|\bhalve\s+(?:it|them)\b", "/"),
     _op(
-        r"\bmake\s+(?:it|them)\s+"
+        r"\bmake\s+(?:it|them|the\s+\w+)\s+"
         + _N
         + r"\s+(?:steps|cubes?\s+(?:high|tall)|levels?|layers?|high|tall|storeys?)\b",
         "=",
@@ -1378,10 +1429,13 @@ def _clause_phrases(
         before, after = base + j, base + j + 1
         if kind.endswith("_verb"):
             continue
+        if kind == "inside" and any(doc[i].lower_ in _SPACES_WORDS for i in phrases[before].tokens):
+            continue  # "an enclosure with a 2 by 2 space inside it": its own inside
         after_toks = phrases[after].tokens
         named = bool(after_toks) and _object_head(doc, after_toks[0], after_toks[-1] + 1)[1]
         pronoun = bool(after_toks) and all(
-            doc[i].lower_ in ("it", "them", "its", "top", "of", "the", "middle", "centre")
+            doc[i].lower_ in ("it", "them", "its", "top", "of", "the", "middle", "centre", "and")
+            or doc[i].is_punct
             for i in after_toks
         )
         if (

@@ -533,7 +533,9 @@ class _Parser:
             if (
                 h.shape == "tower"
                 and self.word(h.index) in ("pile", "piles", "heap")
-                and (self.word(h.index - 1) in ("compact", "dense", "tight", "neat", "close"))
+                and (
+                    self.word(h.index - 1) in ("compact", "dense", "tight", "neat", "close", "tidy")
+                )
             ):
                 h.shape = "pack"  # "a compact pile of 8 cubes"
             if h.shape == "grid" and self.word(h.index - 1) in ("hollow", "empty", "open"):
@@ -1140,8 +1142,11 @@ class _Parser:
 
     def build(self, h: Hit) -> list[StructureSpec]:
         for key, kept, other in getattr(h.params, "conflicts", []):
+            if key == "_count" and min(kept, other) <= 1:
+                continue  # "a single cube", "one of": an article, not a count
+            name = "parts" if key == "_count" else key
             self.notes.append(
-                f"ignored {key} {other:g}: the command also says {key} {kept:g} for the "
+                f"ignored {name} {other:g}: the command also says {name} {kept:g} for the "
                 f"{h.shape}; used {kept:g}"
             )
         p = dict(h.params)
