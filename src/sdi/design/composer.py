@@ -315,6 +315,22 @@ def _ring_for(ring: StructureSpec, inner: _Placed, cell: CellConfig) -> Structur
     return ring.model_copy(update={"length": side, "width": side, "axis": None})
 
 
+def _beside(base: _Placed, sub: _Placed, side: str | None, cell: CellConfig) -> _Placed:
+    """`sub` one structure gap from `base` on `side`; with no side, to the left if the pair
+    fits across the workspace that way, else behind."""
+    ws = cell.workspace
+    extent = np.array([ws.x_max - ws.x_min, ws.y_max - ws.y_min])
+    gap = cell.design.structure_gap
+    for name in [side] if side else ["left", "back"]:
+        d, sign = _SIDES[name]
+        dxy = np.zeros(2)
+        dxy[d] = sign * (base.half[d] + sub.half[d] + gap)
+        unit = _merge(base, sub, dxy, 0.0)
+        if side or bool(np.all(2 * unit.half <= extent + 1e-9)):
+            return unit
+    return unit
+
+
 def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[_Placed]:
     """Fold related structures into units: a subject joins its object's unit.
 
@@ -353,10 +369,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                     bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
                     base = _merge(base, sub, centre, top - bottom)
                 else:
-                    d, sign = _SIDES[rel.side or "left"]
-                    dxy = np.zeros(2)
-                    dxy[d] = sign * (base.half[d] + sub.half[d] + cell.design.structure_gap)
-                    base = _merge(base, sub, dxy, 0.0)
+                    base = _beside(base, sub, rel.side, cell)
         units[k] = base
         return base
 
@@ -405,7 +418,12 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
     if spec.relations:
         placed = _relate(spec, list(placed), cell)
         for p in placed:
-            _check_fits(p, cell)
+            try:
+                _check_fits(p, cell)
+            except InfeasibleError as exc:
+                raise InfeasibleError(
+                    f"{exc} — counting the structures related to it", parameter=exc.parameter
+                ) from None
     centres = _place_all(placed, cell)
     parts: list[Part] = []
     counters: dict[str, int] = {}

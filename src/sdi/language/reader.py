@@ -148,6 +148,7 @@ _BEAMS = {"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "gi
           "slab", "bridge", "bridges", "arch", "roof", "deck", "span"}  # fmt: skip
 _FRONTED_VERBS = {"goes", "go", "stands", "sits", "comes", "is", "are", "put", "place", "build",
                   "add", "stack", "lies", "rests", "belongs", "should", "will", "must"}  # fmt: skip
+_LEAD_VERBS = {"put", "place", "set", "add", "make", "build", "stack", "lay", "position", "move"}
 _ORDINALS = {"first", "second", "third", "fourth", "last", "other"}
 _QUANTITY_NOUNS = {"pair", "couple", "set", "group", "bunch", "handful", "trio"}
 _EMPTY = {"empty", "hollow", "open", "free", "blank"}
@@ -1627,7 +1628,12 @@ def _beam_only(text: str) -> bool:
 
 def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
     """A phrase that only points at an earlier one ("it", "them", "the base")."""
-    words_ = [w for w in p.text.lower().replace(",", " ").split() if w not in ("the", "of")]
+    said = p.text.lower().replace(",", " ").split()
+    led = False
+    while said and said[0] in _LEAD_VERBS:
+        said, led = said[1:], True  # "put the cube": the cube named before
+    rest = " ".join(said)
+    words_ = [w for w in said if w not in ("the", "of")]
     if not words_ or len(words_) > 6:
         return None
     built = [j for j, q in enumerate(before) if q.spec is not None or q.ref is not None]
@@ -1638,7 +1644,7 @@ def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
         w in lx.REGION_WORDS or w in ("on", "to", "at", "in", "its", "side", "hand", "of")
         for w in words_[1:]
     )
-    if words_[0] in _PRONOUNS and (len(words_) <= 2 or trailing) and len(words_) <= 6:
+    if words_[0] in _PRONOUNS and (len(words_) <= 2 or trailing) and len(words_) <= 6 and not led:
         p.side = sides[0] if sides else None
         if words_[0] in ("them", "these", "those"):
             many = [j for j in built if before[j].count > 1]
@@ -1646,12 +1652,22 @@ def _reference(p: _Phrase, before: list[_Phrase]) -> int | None:
         return _target(before, built[-1])
     if (
         len(words_) <= 2
-        and words_[-1] in _GENERIC | _BASES | set(lx.SHAPE_WORDS)
-        and p.text.lower().startswith(("the", "its"))
+        and words_[-1] in _GENERIC | _BASES | set(lx.SHAPE_WORDS) | {"cube", "block", "brick"}
+        and rest.startswith(("the", "its"))
     ):
         noun = words_[-1]
         if noun in ("base", "foundation", "bottom", "first", "platform", "plinth"):
             return _target(before, built[0])
+        if noun in ("cube", "block", "brick", "part"):
+            # "the cube": the structure of one part named before
+            for j in reversed(built):
+                spec = before[_target(before, j)].spec
+                if spec is not None and any(
+                    (s.shape == "tower" and s.height == 1) or (s.shape == "row" and s.length == 1)
+                    for s in spec.structures
+                ):
+                    return _target(before, j)
+            return None
         family = lx.SHAPE_WORDS.get(noun)
         for j in reversed(built):
             spec = before[_target(before, j)].spec
@@ -1816,10 +1832,15 @@ def _relate(
             continue  # "joined by a bridge on top": the joining beam lies on top anyway
         obj = built(r.object, r.subject)
         if r.kind == "joined":
-            pillars = built(r.subject, r.subject) if r.kind == "joined" else None
+            pillars = built(r.subject, r.subject)
             pillars = (
                 _target(phrases, r.subject) if phrases[r.subject].ref is not None else (pillars)
             )
+            between = _between(phrases, pillars, r.object, structures)
+            if between:
+                relations.extend(between)
+                st.notes.append("placed between the two, side by side")
+                continue
             _join(phrases, pillars, r.object, structures, replace, drop, st)
             continue
         s_ref = phrases[subj].ref is not None
@@ -1922,6 +1943,33 @@ def _copy_if_asked(
         st.notes.append(f"'{p.text}': the same {other.shape} as the one it stands on or beside")
         return other.model_copy(update={"at_x": None, "at_y": None, "region": None})
     return subject
+
+
+def _between(
+    phrases: list[_Phrase], pillars: int | None, middle: int | None, structures: list[StructureSpec]
+) -> list[Relation]:
+    """ "a 2x2 block between a wall and a tower": the three in a row, the middle one between
+    (empty when the middle one is a beam or bridge that joins them instead)."""
+    if pillars is None or middle is None or phrases[pillars].count != 2:
+        return []
+    m = phrases[middle]
+    target = _target(phrases, middle)
+    spec = phrases[target].spec
+    if spec is None or _beam_only(m.text):
+        return []
+    if m.structure is not None:
+        x = m.structure
+    else:
+        x = phrases[target].first + phrases[target].count - 1
+    if structures[x].shape in ("bridge", "arch"):
+        return []
+    a, b = phrases[pillars].first, phrases[pillars].first + 1
+    if x in (a, b):
+        return []
+    return [
+        Relation(kind="next_to", subject=x, object=a, side="back"),
+        Relation(kind="next_to", subject=b, object=x, side="back"),
+    ]
 
 
 def _join(
