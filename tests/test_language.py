@@ -289,3 +289,62 @@ def test_a_model_that_agrees_on_every_stated_slot_is_used():
     result = Specifier(ScriptedChat([missing])).specify("a 2-high column on top of a 3x3 layer")
     assert result.source == "rules (llm disagreed)"
     assert len(result.spec.relations) == 1
+
+
+# -- sequences, references and numbers -----------------------------------------------------------
+@pytest.mark.parametrize(
+    "command, shape, key, value",
+    [
+        ("put up a column of 3. afterwards add two more cubes on it", "tower", "height", 5),
+        ("start a 4-step staircase, then extend it by one more step", "staircase", "steps", 5),
+        ("make a pillar of 8 and then halve it", "tower", "height", 4),
+        ("a 2 by 4 slab; after that, triple its height", "block", "height", 3),
+    ],
+)
+def test_a_later_clause_changes_the_structure_it_refers_to(command, shape, key, value):
+    reading = read(command)
+    [s] = reading.spec.structures
+    assert (s.shape, getattr(s, key)) == (shape, value), reading.notes
+    assert reading.complete
+
+
+def test_removing_parts_afterwards_is_reported_not_built():
+    r = plan("lay a row of 5, then pull the middle one out")
+    assert r.status == "partial"
+    assert len(r.layout) == 5
+    assert any("cannot take parts out" in n for n in r.notes)
+
+
+def test_between_puts_the_three_in_a_line():
+    reading = read("a 2-cube stack between a 3-long wall and a 2x2 pad")
+    shapes = [s.shape for s in reading.spec.structures]
+    middle = shapes.index("tower")
+    assert {(r.subject, r.object) for r in reading.spec.relations} >= {
+        (middle, shapes.index("wall"))
+    }
+    r = plan("a 2-cube stack between a 3-long wall and a 2x2 pad")
+    xs = sorted({round(p.position[0], 3) for p in r.layout if p.position[2] > 0.06})
+    assert r.status == "success" and xs
+
+
+def test_ordinal_and_comparative_references_pick_one_structure():
+    reading = read("a tower of 2 and a tower of 5. put a ring around the taller one")
+    [rel] = reading.spec.relations
+    tall = [k for k, s in enumerate(reading.spec.structures) if s.height == 5]
+    assert rel.kind == "around" and rel.object == tall[0]
+
+
+@pytest.mark.parametrize(
+    "command, error",
+    [("a tower at x = 2e9", "too large"), ("a row of inf cubes", "not a number")],
+)
+def test_numbers_sdi_cannot_use_are_refused(command, error):
+    r = plan(command).to_json_dict()
+    assert r["status"] == "error" and error in r["error"] and "understood" in r
+
+
+def test_number_forms_are_read_and_stated():
+    reading = read("a tower at x = 3.5e-1 and y = 0,2")
+    [s] = reading.spec.structures
+    assert (s.at_x, s.at_y) == (0.35, 0.2)
+    assert len([n for n in reading.notes if n.startswith("read")]) == 2

@@ -1048,7 +1048,7 @@ def _modify(p: _Phrase, before: list[_Phrase], structures: list[StructureSpec], 
         if op in ("+1", "-1"):
             n, op = 1, op[0]
         else:
-            word = re.sub(r"\s+", " ", (m.group(1) or "1").lower())
+            word = re.sub(r"\s+", " ", (m.group(1) or ("2" if op == "/" else "1")).lower())
             word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
                     "triple": "3", "half": "2"}.get(word, word)  # fmt: skip
             value = words_to_numbers([word])[0]
