@@ -318,13 +318,16 @@ def test_removing_parts_afterwards_is_reported_not_built():
 def test_between_puts_the_three_in_a_line():
     reading = read("a 2-cube stack between a 3-long wall and a 2x2 pad")
     shapes = [s.shape for s in reading.spec.structures]
-    middle = shapes.index("tower")
-    assert {(r.subject, r.object) for r in reading.spec.relations} >= {
-        (middle, shapes.index("wall"))
-    }
-    r = plan("a 2-cube stack between a 3-long wall and a 2x2 pad")
-    xs = sorted({round(p.position[0], 3) for p in r.layout if p.position[2] > 0.06})
-    assert r.status == "success" and xs
+    middle, wall = shapes.index("tower"), shapes.index("wall")
+    assert (middle, wall) in {(r.subject, r.object) for r in reading.spec.relations}
+    r = plan("a 2-cube stack between a wall 3 long and 1 high and a 2x2 pad")
+    assert r.status == "success", r.notes
+    upper = [p for p in r.layout if p.position[2] > 0.06]
+    column = {(p.position[0], p.position[1]) for p in upper}
+    assert len(column) == 1  # only the stack has a second level
+    ((x, y),) = column
+    others = [p for p in r.layout if (p.position[0], p.position[1]) != (x, y)]
+    assert min(p.position[0] for p in others) < x < max(p.position[0] for p in others)
 
 
 def test_ordinal_and_comparative_references_pick_one_structure():
