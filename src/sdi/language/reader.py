@@ -273,7 +273,29 @@ _REWRITES += [
         " , ",
         "'{0}': as the sizes say",
     ),
-    (re.compile(r",?\s*-?\s*\b(?:cubes|blocks)\s+only\b|\bonly\s+cubes\b", re.I), " ", ""),
+    (
+        re.compile(r",?\s*-?\s*\b(?:cubes|blocks)\s+only\b|\bonly\s+cubes\b", re.I),
+        " ",
+        "'{0}': built of cubes only",
+    ),
+    (
+        re.compile(
+            r"\b(one|a)\s+(\w+)(\s+of\s+\d+)?\s+on\s+each\s+side(?:\s*,?\s*(?:the\s+)?left\s+and\s+"
+            r"(?:the\s+)?right)?\b",
+            re.IGNORECASE,
+        ),
+        " {0} {1}{2} on the left and another {1}{2} on the right ",
+        "",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:climbing|rising|ascending|going\s+up|stepping\s+up)\s+(?:to(?:wards)?|toward|"
+            r"to\s+the)\s+(?:the\s+)?(left|right|front|back)\b",
+            re.IGNORECASE,
+        ),
+        "{climb}",
+        "",
+    ),
     (
         re.compile(
             r"\b(?:does|do)\s+not\s+(?:go|rise|reach|get)\s+(?:any\s+)?(?:taller|higher)\s+than\s+"
@@ -724,6 +746,7 @@ class _State:
     ignored: list[str] = field(default_factory=list)
     material: list[str] = field(default_factory=list)
     no_stack: bool = False
+    no_beams: bool = False
 
 
 def read(command: str, cell: CellConfig | None = None) -> Reading:
@@ -767,6 +790,11 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     structures = [check_family(s, st.notes, st.material) for s in structures]
     if st.no_stack:
         structures = [_unstack(s, st) for s in structures]
+    if st.no_beams:
+        for s in structures:
+            if s.shape in ("bridge", "arch", "canopy") or s.part == "beam":
+                st.material.append("no beams")
+                st.notes.append(f"ignored 'no beams': a {s.shape} here is built with beams")
     if len(structures) > 50:
         raise SpecError(
             f"{len(structures)} structures is more than 50", understood=_understood(doc)
@@ -1114,11 +1142,19 @@ def _rewrite(text: str, st: _State) -> str:
             groups = [g.lower() if g else "" for g in m.groups()]
             if replacement == "{split}":
                 return _split(m, st)
+            if replacement == "{climb}":
+                # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
+                return {
+                    "back": " along x ",
+                    "left": " along y ",
+                    "front": " along x rotated 180 degrees ",
+                    "right": " along y rotated 180 degrees ",
+                }[groups[0]]
             if replacement == "{rows}":
                 said_n = [words_to_numbers([g])[0] for g in groups[:2]]
                 if all(v.isdigit() for v in said_n) and int(said_n[0]) % int(said_n[1]) == 0:
                     per = int(said_n[0]) // int(said_n[1])
-                    return f" {said_n[1]} rows of {per} "
+                    return f" {per} by {said_n[1]} "
                 return m.group(0)
             if replacement == "{layers}-layer":
                 n = {"double": 2, "triple": 3, "quadruple": 4}[groups[0]]
@@ -1130,6 +1166,10 @@ def _rewrite(text: str, st: _State) -> str:
                 opposite, opposite2 = opposite2, opposite
             if "stack" in note or "stacked" in note:
                 st.no_stack = True
+            if "cubes only" in note:
+                st.no_beams = True
+            if note.startswith("ignored"):
+                st.material.append(said)
             if note:
                 st.notes.append(
                     _SPACES.sub(" ", note.format(said, opposite=opposite, opposite2=opposite2))

@@ -70,7 +70,7 @@ HARMLESS = _words(
     measuring measures measured outside outer external climbing ascending going deck length
     width height depth equal equally even evenly same each definitely certainly surely
     absolutely precisely have has having had period comma stop u ur story stuff point work
-    working surface bench heights lengths widths sizes plus
+    working surface bench heights lengths widths sizes plus tidy
     """
 )
 

@@ -1275,6 +1275,9 @@ class _Parser:
                 applies = dim == "all" or key == dim or key in related
                 if applies and key not in p and f"{key}_m" not in p:
                     p[key] = values[index]
+        if shape == "block" and cube_word and "length" in p:
+            p.setdefault("width", p["length"])  # "a compact cube of cubes": equal sides
+            p.setdefault("height", p["length"])
         if shape == "block" and flat and "height" not in p and "height_m" not in p:
             p["height"] = 1
         if shape == "castle" and relative is not None:
