@@ -477,6 +477,11 @@ class _Parser:
             "plate",
             "sheet",
             "field",
+            "pads",
+            "decks",
+            "panels",
+            "plates",
+            "layers",
         ):
             return (
                 prev in ("a", "an", "one", "single", "flat")
@@ -825,7 +830,7 @@ class _Parser:
                             "standing",
                             "freestanding",
                         )
-                        or (m == h.index and m < len(self.toks) and self.toks[m].used)
+                        or (m < len(self.toks) and self.toks[m].used)  # "two 2 x 2 pads"
                         for m in range(k + 1, min(h.index + 1, len(self.toks)))
                     )
                     and h.plural
