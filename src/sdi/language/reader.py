@@ -314,6 +314,15 @@ _REWRITES += [
         "",
     ),
     (
+        re.compile(
+            r"\b(?:a|one)\s+(?:single|lone|solitary)\s+(?:cube|block|brick)\b"
+            r"(?!\s*(?:-|tower|stack|column|wall|row|high|tall))",
+            re.IGNORECASE,
+        ),
+        " a 1-cube tower ",
+        "",
+    ),
+    (
         re.compile(r"\bnot\s+(?:one|a\s+single)\s+but\s+(two|three|four|five|\d+)\b", re.I),
         " {0} ",
         "",
@@ -1257,6 +1266,11 @@ def _is_structure_noun(doc: Doc, k: int) -> bool:
     w = doc[k].lower_
     if w in ("cube", "block", "brick", "box") and doc[k - 1].lower_ in _ONE and k > 0:
         return True  # "around a single cube": one part is a structure too
+    if w in ("cubes", "blocks", "bricks") and any(
+        doc[j].like_num or doc[j].lower_ in ("pair", "couple", "both")
+        for j in range(max(0, k - 4), k)
+    ):
+        return True  # "a beam across two cubes": counted parts stand as pillars
     if w in lx.PART_WORDS and w not in ("block", "blocks"):
         return False
     if w in ("shape", "shaped") and k > 0 and doc[k - 1].lower_ in ("l", "u", "t", "plus", "cross"):
