@@ -1,4 +1,4 @@
-"""The language front end on the unseen evaluation sets (dev, dev2, dev3 and frozen test).
+"""The language front end on the unseen evaluation sets (dev, dev2, dev3, dev4 and frozen test).
 
 Every case is planned in-process with `sdi.pipeline.plan` and scored:
 
@@ -8,11 +8,11 @@ Every case is planned in-process with `sdi.pipeline.plan` and scored:
 * honest miss       — not correct, but the status is not ``success``;
 * silent misreading — status ``success`` but the predicate fails (the worst outcome).
 
-Writes `benchmarks/results/language_dev.json`, `language_dev2.json`, `language_dev3.json` and
-`language_test.json`.
+Writes `benchmarks/results/language_dev.json`, `language_dev2.json`, `language_dev3.json`,
+`language_dev4.json` and `language_test.json`.
 
-Run: `python benchmarks/language.py [--set dev|dev2|dev3|test|both|all]` (`both` = dev and test,
-`all` = dev, dev2, dev3 and test).
+Run: `python benchmarks/language.py [--set dev|dev2|dev3|dev4|test|both|all]` (`both` = dev and
+test, `all` = dev, dev2, dev3, dev4 and test).
 """
 
 from __future__ import annotations
@@ -91,7 +91,9 @@ def table(name: str, res: dict[str, Any]) -> str:
 
 def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--set", choices=("dev", "dev2", "dev3", "test", "both", "all"), default="both")
+    ap.add_argument(
+        "--set", choices=("dev", "dev2", "dev3", "dev4", "test", "both", "all"), default="both"
+    )
     args = ap.parse_args(argv)
     sets: list[tuple[str, Sequence[Case]]] = []
     if args.set in ("dev", "both", "all"):
@@ -106,6 +108,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from sdi.bench.language_dev3 import CASES as DEV3
 
         sets.append(("dev3", DEV3))
+    if args.set in ("dev4", "all"):
+        from sdi.bench.language_dev4 import CASES as DEV4
+
+        sets.append(("dev4", DEV4))
     if args.set in ("test", "both", "all"):
         from sdi.bench.language_test import CASES as TEST
 

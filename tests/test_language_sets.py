@@ -1,8 +1,8 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second and third dev sets (dev2, dev3) are held to the same checks and share no command with
-any other set."""
+second, third and fourth dev sets (dev2, dev3, dev4) are held to the same checks and share
+no command with any other set."""
 
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ from sdi.bench.language_checks import PHENOMENA, Case, score
 from sdi.bench.language_dev import CASES as DEV
 from sdi.bench.language_dev2 import CASES as DEV2
 from sdi.bench.language_dev3 import CASES as DEV3
+from sdi.bench.language_dev4 import CASES as DEV4
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -285,7 +286,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *DEV3, *TEST):
+    for case in (*DEV, *DEV2, *DEV3, *DEV4, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -307,6 +308,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev.py",
         "language_dev2.py",
         "language_dev3.py",
+        "language_dev4.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -523,5 +525,92 @@ _PYR2 = [*grid(0.40, 0.25, 3, 3), *grid(0.425, 0.275, 2, 2, z0=C)]
 )
 def test_dev3_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev3(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev4
+
+
+def test_dev4_set_sizes_ids_and_phenomena():
+    assert len(DEV4) >= 150
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev4-") for c in DEV4)
+    per = {p: sum(c.phenomenon == p for c in DEV4) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 12, per
+    assert {c.phenomenon for c in DEV4} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV4)
+
+
+def test_no_command_shared_between_dev4_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV4}) == len(DEV4)
+    for other in (DEV, DEV2, DEV3, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV4 if _norm(c.text) in seen]
+
+
+def _dev4(case_id: str) -> Case:
+    return next(c for c in DEV4 if c.id == case_id)
+
+
+def _slab_without_corners(x0, y0, n):
+    return [
+        cube(x0 + C * i, y0 + C * j, C / 2)
+        for i in range(n)
+        for j in range(n)
+        if not (i in (0, n - 1) and j in (0, n - 1))
+    ]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        ("dev4-rel-01", res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 3, z0=C)), TOWER3),
+        (
+            "dev4-rel-14",  # a row of 4 with a cube stacked on each end
+            res(*grid(0.40, 0.25, 4, 1), cube(0.40, 0.25, 0.075), cube(0.55, 0.25, 0.075)),
+            res(*grid(0.40, 0.25, 4, 1), cube(0.45, 0.25, 0.075), cube(0.50, 0.25, 0.075)),
+        ),
+        (
+            "dev4-seq-04",  # a 3x3 grid with one cube on its centre
+            res(*grid(0.40, 0.25, 3, 3), cube(0.45, 0.30, 0.075)),
+            res(*grid(0.40, 0.25, 3, 3), cube(0.40, 0.25, 0.075)),
+        ),
+        (
+            "dev4-seq-13",
+            res(*grid(0.40, 0.25, 2, 1), *grid(0.55, 0.25, 2, 1)),
+            res(*grid(0.40, 0.25, 4, 1)),
+        ),
+        (
+            "dev4-neg-15",  # a 4x4 slab without its corners
+            res(*_slab_without_corners(0.40, 0.25, 4)),
+            res(*grid(0.40, 0.25, 4, 4)),
+        ),
+        (
+            "dev4-reg-11",  # a row of 5 left to right across the back
+            res(*grid(0.65, 0.20, 1, 5)),
+            res(*grid(0.50, 0.30, 5, 1)),
+        ),
+        (
+            "dev4-reg-13",  # a row of 4 going away from the robot, on the left
+            res(*grid(0.40, 0.45, 4, 1)),
+            res(*grid(0.40, 0.40, 1, 4)),
+        ),
+        (
+            "dev4-wo-14",  # a U 4 wide: a 4 × 4 ring with two middle cubes of one side gone
+            res(
+                *[
+                    c
+                    for c in ring(0.40, 0.25, 4)
+                    if c["position"][0] < 0.5 or c["position"][1] in (0.25, 0.40)
+                ]
+            ),
+            res(*grid(0.40, 0.25, 3, 1)),
+        ),
+    ],
+)
+def test_dev4_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev4(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
