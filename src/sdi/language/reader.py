@@ -541,11 +541,20 @@ _REWRITES += [
     (
         re.compile(
             r",?\s*\b(?:with\s*out|with\s+no|and\s+no|no)\s+(?:a\s+|any\s+)?(?:beam|bridge|lintel|"
-            r"connection|link)s?(?:\s+(?:between|across|joining|connecting)\s+them)?\b",
+            r"connection|link)s?\s+(?:between|across|joining|connecting)\s+them\b",
             re.IGNORECASE,
         ),
         " ",
         "'{0}': left separate",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s*out|with\s+no|and\s+no|no)\s+(?:a\s+|any\s+)?(?:beam|lintel|plank)s?"
+            r"(?:\s*,?\s*(?:just|only)\s+cubes)?\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': built of cubes only",
     ),
     (
         re.compile(
@@ -684,7 +693,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\bright\s+(?=(?:up|next|behind|in\s+front|beside|against|at\s+the|by\s+the|over|"
+            r"\bright\s+(?=(?:up|next|behind|in\s+front|in\s+the\s+(?:centre|center|middle)|beside|"
+            r"against|at\s+the|by\s+the|over|"
             r"above|below|under|there|here|away|now)\b)",
             re.IGNORECASE,
         ),
@@ -713,6 +723,17 @@ _REWRITES += [
         "read '{0}' as a part's width apart",
     ),
     (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
+    (
+        re.compile(r"(?<!by\s)\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+square\b", re.IGNORECASE),
+        " {0} by {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(steps|levels|layers|storeys|floors|tiers|spans)\s*[:=]\s*(\d+)\b", re.I),
+        " {1} {0} ",
+        "",
+    ),
+    (re.compile(r"\b(?:shape|structure|type|kind)\s*[:=]\s*", re.IGNORECASE), " a ", ""),
 ]
 _OPEN = re.compile(
     r"\b(?:(tall|high|big|large)\s+)?(structure|thing|something|shape|construction|object|"
@@ -850,7 +871,9 @@ _METRE_WORDS = [
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
 ]
-_LIST_ITEM = re.compile(r"(?:^|\n|(?<=[.;:]))\s*\d+[.)]\s+(?=[A-Za-z])")
+_LIST_ITEM = re.compile(
+    r"(?:^|\n|(?<=[.;]))\s*\d+\)\s+(?=[A-Za-z])|(?:^|\n)\s*\d+\.\s+(?=[A-Za-z])"
+)
 _BULLET = re.compile(r"(?:^|\n)\s*[-*•]\s+(?=[A-Za-z0-9])")
 _ROBOT_NAME = re.compile(r"\b(?:the\s+)?(?:abb\s+)?irb\s*-?\s*(?:120|1600)\b", re.IGNORECASE)
 _PAIR_UNIT = re.compile(
@@ -1267,10 +1290,10 @@ def _is_structure_noun(doc: Doc, k: int) -> bool:
     if w in ("cube", "block", "brick", "box") and doc[k - 1].lower_ in _ONE and k > 0:
         return True  # "around a single cube": one part is a structure too
     if w in ("cubes", "blocks", "bricks") and any(
-        doc[j].like_num or doc[j].lower_ in ("pair", "couple", "both")
+        doc[j].lower_ in ("pair", "couple", "both", "single", "separate", "individual", "loose")
         for j in range(max(0, k - 4), k)
     ):
-        return True  # "a beam across two cubes": counted parts stand as pillars
+        return True  # "a beam across a pair of single cubes": the cubes stand as pillars
     if w in lx.PART_WORDS and w not in ("block", "blocks"):
         return False
     if w in ("shape", "shaped") and k > 0 and doc[k - 1].lower_ in ("l", "u", "t", "plus", "cross"):
@@ -1626,6 +1649,10 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             st.material.append(p.text)
             st.notes.append(f"ignored '{p.text}': no structure named there")
             continue
+        same = _same_as_before(p, spec, phrases[:k])
+        if same is not None:
+            st.notes.append(f"'{p.text}' names the {same} described before")
+            continue
         p.spec = spec
         p.first = len(structures)
         p.count = len(spec.structures)
@@ -1651,6 +1678,28 @@ _ONE_CUBE = re.compile(
     r"(?:\s+\w+)?$",
     re.IGNORECASE,
 )
+
+
+def _same_as_before(p: _Phrase, spec: Spec, before: list[_Phrase]) -> str | None:
+    """ "Steps: 5. Shape: staircase.": a bare family name in a later clause names the one
+    structure described before, not a second one."""
+    if len(spec.structures) != 1 or spec.structures[0].model_dump(
+        include=set(_SIZES) - {"part"}, exclude_defaults=True
+    ):
+        return None
+    said = set(re.findall(r"[a-z]+", p.text.lower()))
+    if said & (_COPY | {"and", "also", "more", "two", "three", "other", "plus", "then"}):
+        return None
+    built = [q for q in before if q.spec is not None and q.count]
+    if not built or built[-1].clause == p.clause or built[-1].count != 1:
+        return None
+    prev = built[-1].spec
+    assert prev is not None
+    shape = spec.structures[0].shape
+    described = prev.structures[-1].model_dump(
+        include=set(_SIZES) - {"part"}, exclude_defaults=True
+    )
+    return shape if prev.structures[-1].shape == shape and described else None
 
 
 def _parse_or_base(p: _Phrase, st: _State) -> tuple[Spec, list[str]]:
