@@ -171,6 +171,12 @@ def _block_from_count(spec: StructureSpec, notes: list[str], material: list[str]
     count = spec.count or 0
     length, w, h = spec.length, spec.width, spec.height
     known = [v for v in (length, w, h) if v]
+    if len(known) == 3 and length and w and count % (length * w) == 0 and h == 1:
+        spec = spec.model_copy(update={"height": count // (length * w)})
+        notes.append(f"{count} parts in a {length} by {w} block: height {count // (length * w)}")
+        return spec.model_copy(update={"count": None})
+    if len(known) == 3 and (length or 1) * (w or 1) * (h or 1) == count:
+        return spec.model_copy(update={"count": None})
     if len(known) == 2:
         area = known[0] * known[1]
         if count % area == 0:

@@ -98,6 +98,12 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("close", "to"), "next", None),
     (("near", "to"), "next", None),
     (("near",), "next", None),
+    (("to", "its", "left"), "next_implicit", "left"),
+    (("to", "its", "right"), "next_implicit", "right"),
+    (("on", "its", "left"), "next_implicit", "left"),
+    (("on", "its", "right"), "next_implicit", "right"),
+    (("in", "front", "of", "it"), "next_implicit", "front"),
+    (("behind", "it"), "next_implicit", "back"),
     (("to", "the", "left", "of"), "next", "left"),
     (("on", "the", "left", "of"), "next", "left"),
     (("left", "of"), "next", "left"),
@@ -724,6 +730,64 @@ _REWRITES += [
     ),
     (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
     (
+        re.compile(r"\bon\s+top\s+off\b", re.IGNORECASE),
+        " on top of ",
+        "corrected 'top off' to 'top of'",
+    ),
+    (
+        re.compile(
+            r"\b(?:that\s+|which\s+)?(?:do|does)\s+not\s+touch(?:\s+each\s+other)?\b", re.IGNORECASE
+        ),
+        " spaced 5 cm apart ",
+        "read '{0}' as a part's width apart",
+    ),
+    (
+        re.compile(
+            r"\b(?:but\s+)?(?:do\s+not|never)\s+(?:put|place|build|set)\s+(?:it|them)\s+(?:near|close\s+to|"
+            r"next\s+to)\s+(?:the\s+)?robot\b",
+            re.IGNORECASE,
+        ),
+        " at the back ",
+        "read '{0}' as at the back (far from the robot)",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+an?\s+(?:l|u|t|"
+            + _SHAPE_ALT
+            + r")(?:[- ]shape[d]?)?\s*(?=$|[,.;:!])",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    (
+        re.compile(r"\b(?:actually|sorry|oops|wait)\s*,?\s*(?:no\s*,?)?", re.IGNORECASE),
+        " then ",
+        "",
+    ),
+    (
+        re.compile(r",?\s*\bnothing\s+(?:big|large|huge|tall|fancy|special)\b", re.IGNORECASE),
+        " ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(twice|double|three\s+times|thrice|half)\s+as\s+(tall|high|long|wide)\s+as\s+(?:a\s+)?"
+            r"(\d+|[a-z]+)(?:[- ](?:cubes?|parts?|blocks?)(?:[- ](?:tower|stack|column|one))?)?\b",
+            re.IGNORECASE,
+        ),
+        "{times}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:cubes?|parts?)\s+(?:per|in\s+each|each|a)\s+(?:course|level|layer|row|tier)\b",
+            re.IGNORECASE,
+        ),
+        " {0} long ",
+        "",
+    ),
+    (
         re.compile(r"(?<!by\s)\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+square\b", re.IGNORECASE),
         " {0} by {0} ",
         "",
@@ -981,7 +1045,8 @@ def _normalise(command: str, notes: list[str] | None = None) -> str:
 
 
 _ANOTHER = re.compile(
-    r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+one\b|a\s+(?:third|fourth|fifth)\b"
+    r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+(?:identical\s+|similar\s+|"
+    r"matching\s+)?one\b|a\s+(?:third|fourth|fifth)\b"
     r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)one(?=\s+(?:on|at|in|to)\s+the\b)|"
     r"(?<=\band\s)one(?=\s+(?:on|at|in|to)\s+the\b))",
     re.IGNORECASE,
@@ -1021,6 +1086,12 @@ _MODIFY = [
         "=",
     ),
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
+    _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "="),
+    _op(
+        r"\b(?:move|shift|put|place|slide)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|at|on)\s+(?:the\s+)?"
+        r"(left|right|front|back|middle|centre|center)\b",
+        "region",
+    ),
     _op(
         r"\buntil\s+(?:it|they)\s+(?:is|are|stands?)\s+"
         + _N
@@ -1105,6 +1176,18 @@ def _modify(p: _Phrase, before: list[_Phrase], structures: list[StructureSpec], 
         m = pattern.search(p.text)
         if not m:
             continue
+        if op == "region":
+            place = m.group(1).lower()
+            place = {"middle": "centre", "center": "centre"}.get(place, place)
+            target = built[-1]
+            index = target.first + target.count - 1
+            structures[index] = structures[index].model_copy(
+                update={"region": place, "at_x": None, "at_y": None}
+            )
+            st.notes.append(f"'{m.group(0).strip()}': the {structures[index].shape} goes {place}")
+            p.count = 0
+            p.modified = True
+            return True
         if op in ("+1", "-1"):
             n, op = 1, op[0]
         else:
@@ -1174,6 +1257,15 @@ def _rewrite(text: str, st: _State) -> str:
             groups = [g.lower() if g else "" for g in m.groups()]
             if replacement == "{split}":
                 return _split(m, st)
+            if replacement == "{times}":
+                factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
+                base_n = words_to_numbers([groups[2]])[0]
+                k_ = factor.get(re.sub(r"\s+", " ", groups[0]), 0)
+                if not base_n.isdigit() or not k_ or (int(base_n) * k_) % 1:
+                    return m.group(0)
+                value = int(int(base_n) * k_)
+                st.notes.append(f"read '{said}' as {value} {groups[1]}")
+                return f" {value} {groups[1]} "
             if replacement == "{climb}":
                 # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
                 return {
@@ -1234,6 +1326,8 @@ def _clauses(doc: Doc) -> list[tuple[list[int], bool]]:
         spaced_dash = (
             w in ("-", "--") and tok.i > 0 and doc[tok.i - 1].whitespace_ and tok.whitespace_
         )
+        if spaced_dash and any(doc[i].lower_ in lx.SHAPE_WORDS for i in current):
+            spaced_dash = False  # "a table - four legs and a flat top": the same structure
         if (
             (w in (";", ".", "!", "?") or spaced_dash)
             and tok.i != len(doc) - 1
@@ -1317,6 +1411,8 @@ def _object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[i
             k + 1 >= end or doc[k + 1].pos_ not in ("NOUN", "PROPN", "NUM", "ADJ")
         ):
             break  # "on the smaller one", "in front of the second"
+        if w in (",", ";", ":"):
+            break  # "a ring 20 cm across, one cube high": no object after a comma
         if tok.pos_ in ("DET", "NUM", "ADJ", "ADV", "PUNCT", "SYM") or w in ("x", "by", "-"):
             k += 1
             continue
@@ -1443,8 +1539,10 @@ def _clause_phrases(
             or (lower[k - 1] in lx.PART_WORDS and k - 2 >= 0 and doc[k - 2].like_num)
         )
         implicit = (
-            kind == "on" and words_[-1] == "top" and (head is None or not is_structure)
-        ) or (kind == "inside" and head is None)
+            (kind == "on" and words_[-1] == "top" and (head is None or not is_structure))
+            or (kind == "inside" and head is None)
+            or kind == "next_implicit"
+        )
         if numeric_before and kind == "on" and words_[0] in ("above", "over"):
             k += n
             continue
@@ -1560,6 +1658,8 @@ def _clause_phrases(
             rels.append(_Rel("around", after, before))
         elif kind == "next":
             rels.append(_Rel("next", before, after, side))
+        elif kind == "next_implicit":
+            rels.append(_Rel("next", before, None, side))  # "to its right": the one before
         elif kind == "joined":
             rels.append(_Rel("joined", before, after))
         elif kind == "join":
@@ -1710,6 +1810,16 @@ def _parse_or_base(p: _Phrase, st: _State) -> tuple[Spec, list[str]]:
     except SpecError:
         if _ONE_CUBE.match(p.text.strip()):
             return parse_phrase("a single cube", st.cell)[0], []
+        lone = re.sub(
+            r"^(\W*(?:\w+\s+)?)(?:a|an|one|a\s+single|single)\s+(?:cube|block|brick)\b",
+            r"\1a 1-cube tower",
+            p.text,
+            flags=re.IGNORECASE,
+        )
+        if lone != p.text:  # "a cube in the front left corner"
+            spec, unused = parse_phrase(lone, st.cell)
+            p.text = lone
+            return spec, unused
         base = re.search(r"\b(base|foundation|footing|plinth)\b", p.text, re.IGNORECASE)
         if not base:
             raise

@@ -70,7 +70,8 @@ HARMLESS = _words(
     measuring measures measured outside outer external climbing ascending going deck length
     width height depth equal equally even evenly same each definitely certainly surely
     absolutely precisely have has having had period comma stop u ur story stuff point work
-    working surface bench heights lengths widths sizes plus tidy
+    working surface bench heights lengths widths sizes plus tidy task running runs actually
+    sorry oops wait
     """
 )
 
@@ -92,6 +93,7 @@ CORRECTABLE = frozenset(
         "millimetres", "millimeters", "corner", "pyramid", "staircase", "enclosure",
         "column", "bridge", "tower", "castle", "canopy", "please", "build", "place", "the",
         "shape", "shaped", "with", "make", "put", "and", "high", "long", "wide", "cubes",
+        "next", "behind", "front",
     }
 )  # fmt: skip
 

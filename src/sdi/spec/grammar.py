@@ -302,6 +302,8 @@ class _Parser:
             ):
                 self.axes.append((k, "y"))
                 t[k].used = True
+                if w == "left":  # "left to right": an axis, not a region
+                    t[k + 1].used = t[k + 2].used = True
                 continue
             if (w == "away" and self.word(k + 1) == "from") or (
                 w == "towards" and self.word(k + 1) in ("the", "robot")
@@ -487,6 +489,7 @@ class _Parser:
                 prev in ("a", "an", "one", "single", "flat")
                 or prev in lx.SIZE_WORDS
                 or (self.is_num(k - 1) and self.toks[k - 1].used)
+                or (prev in lx.UNITS_M and self.toks[k - 1].used)  # "a 10 x 10 cm pad"
             )
         if w in ("group", "arrangement", "formation"):
             return prev in lx.SIZE_WORDS or prev in ("compact", "dense", "tight", "close")

@@ -514,6 +514,8 @@ SIZE_WORDS: dict[str, tuple[str, str]] = {
     "sizable": ("all", "L"), "sizeable": ("all", "L"), "substantial": ("all", "L"),
     "impressive": ("all", "L"), "majestic": ("all", "L"), "monumental": ("all", "L"),
     "bigger": ("all", "L"), "larger": ("all", "L"), "generous": ("all", "L"),
+    "smallish": ("all", "S"), "biggish": ("all", "L"), "largish": ("all", "L"),
+    "tallish": ("height", "L"), "shortish": ("height", "S"),
     "roomy": ("all", "L"), "spacious": ("all", "L"), "cosy": ("all", "S"), "cozy": ("all", "S"),
     "chunky": ("all", "L"), "hefty": ("all", "L"), "beefy": ("all", "L"), "stout": ("all", "L"),
     "tall": ("height", "L"), "high": ("height", "L"), "lofty": ("height", "L"),

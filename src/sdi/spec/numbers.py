@@ -16,8 +16,8 @@ SCALES = {"hundred": 100, "thousand": 1000}
 # Quantity words and the count they stand for.
 QUANTITY_WORDS = {
     "dozen": 12, "couple": 2, "pair": 2, "twin": 2, "double": 2, "triple": 3, "trio": 3,
-    "quad": 4, "handful": 5, "few": 3, "several": 4, "some": 3, "many": 8, "lots": 8,
-    "bunch": 6, "multiple": 3, "both": 2,
+    "quad": 4, "quadruple": 4, "handful": 5, "few": 3, "several": 4, "some": 3, "many": 8,
+    "lots": 8, "bunch": 6, "multiple": 3, "both": 2,
 }  # fmt: skip
 ORDINAL_STEPS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
 MULTIPLIERS = {"once": 1, "twice": 2, "thrice": 3}
