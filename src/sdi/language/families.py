@@ -108,6 +108,11 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
     if implied:
         spec = spec.model_copy(update=implied)
     left = unused_slots(spec)
+    if "gap_m" in left and spec.shape == "tower":
+        # "two towers that do not touch": separate structures stand apart anyway
+        notes.append(f"separate structures stand apart: no gap to set inside a {spec.shape}")
+        spec = spec.model_copy(update={"gap_m": None})
+        left.pop("gap_m")
     if left:
         values = ", ".join(f"{k}={v}" for k, v in left.items())
         notes.append(f"ignored {values}: a {spec.shape} has no such parameter")

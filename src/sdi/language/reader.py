@@ -863,6 +863,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text, corrected = typos.correct(text)
     st.notes += corrected
     text = _rewrite(text, st)
+    text = text.strip()
     doc = parse(text)
     phrases, rels = _structure(doc)
     structures = _fill(phrases, rels, st, doc)
@@ -1574,16 +1575,17 @@ def _clause_phrases(
             continue
         cur.append(i)
     segments.append(cur)
-    if len(markers) == 1 and not [i for i in segments[0] if doc[i].lower_ not in words.HARMLESS]:
-        # "On top of two 2-cube towers, a beam.": the subject follows the object
-        commas = [n for n, i in enumerate(segments[1]) if doc[i].lower_ == ","]
-        verbs = [n for n, i in enumerate(segments[1]) if doc[i].lower_ in _FRONTED_VERBS and n]
-        if commas:
-            cut = commas[0]
-            segments = [segments[1][cut + 1 :], segments[1][:cut]]
-        elif verbs:
-            cut = verbs[0]  # "To the right of a tower goes a row of 3."
-            segments = [segments[1][cut + 1 :], segments[1][:cut]]
+    lead = [i for i in segments[0] if doc[i].lower_ not in words.HARMLESS and not doc[i].is_space]
+    if markers and not lead:
+        # "On top of two 2-cube towers, a beam.": the subject follows the object, after the
+        # first comma of the last segment (or the verb: "To the right of a tower goes a row")
+        last = segments[-1]
+        commas = [n for n, i in enumerate(last) if doc[i].lower_ == ","]
+        verbs = [n for n, i in enumerate(last) if doc[i].lower_ in _FRONTED_VERBS and n]
+        cut = commas[0] if commas else (verbs[0] if verbs and len(markers) == 1 else None)
+        if cut is not None and _names_structure(doc, last[cut + 1 :]):
+            segments[0] = last[cut + 1 :]
+            segments[-1] = last[:cut]
     for j in range(len(markers)):
         tail = segments[j + 1]
         commas = [n for n, i in enumerate(tail) if doc[i].lower_ == ","]
@@ -1594,7 +1596,10 @@ def _clause_phrases(
             and _names_structure(doc, tail[commas[0] + 1 :])
             and not markers[j][2].endswith("_verb")
         ):
-            # "a T shape and, left of it, an L shape": the subject follows the pronoun
+            # "a T shape and, left of it, an L shape": the subject follows the pronoun; what
+            # stood before the marker is a phrase of its own
+            if _names_structure(doc, segments[j]):
+                phrases.append(_Phrase(tokens=segments[j], clause=ci))
             segments[j] = tail[commas[0] + 1 :]
             segments[j + 1] = tail[: commas[0]]
     base = len(phrases)
@@ -1753,6 +1758,14 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
         if same is not None:
             st.notes.append(f"'{p.text}' names the {same} described before")
             continue
+        named = _definite(p, spec, phrases[:k], structures)
+        if named is not None:
+            # "…; the staircase has 3 steps": more about the staircase named before
+            said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
+            structures[named] = structures[named].model_copy(update=said)
+            st.notes.append(f"'{p.text}': more about the {spec.structures[0].shape} named before")
+            p.count = 0
+            continue
         p.spec = spec
         p.first = len(structures)
         p.count = len(spec.structures)
@@ -1778,6 +1791,34 @@ _ONE_CUBE = re.compile(
     r"(?:\s+\w+)?$",
     re.IGNORECASE,
 )
+
+
+def _definite(
+    p: _Phrase, spec: Spec, before: list[_Phrase], structures: list[StructureSpec]
+) -> int | None:
+    """ "the staircase has 3 steps" after a staircase was named: the index of that one."""
+    m = re.match(r"^\W*(?:the|that|this)\s+(\w+)(?:\s+(\w+))?", p.text, re.IGNORECASE)
+    if not m or len(spec.structures) != 1:
+        return None
+    family = lx.SHAPE_WORDS.get(m.group(1).lower()) or lx.SHAPE_WORDS.get(
+        (m.group(2) or "").lower()
+    )
+    if family is None or family != spec.structures[0].shape:
+        return None
+    matches = [
+        i for q in before if q.count and q.spec is not None
+        for i in range(q.first, q.first + q.count) if structures[i].shape == family
+    ]  # fmt: skip
+    if len(matches) != 1:
+        return None
+    said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
+    known = structures[matches[0]].model_dump(exclude_defaults=True, exclude={"shape"})
+    words_ = set(re.findall(r"[a-z]+", p.text.lower()))
+    if any(known.get(k) not in (None, v) for k, v in said.items()) or words_ & (
+        set(lx.REGION_WORDS) | _COPY | {"other", "first", "second", "third", "last"}
+    ):
+        return None  # "then the right tower of 2": another tower
+    return matches[0]
 
 
 def _same_as_before(p: _Phrase, spec: Spec, before: list[_Phrase]) -> str | None:
