@@ -39,7 +39,7 @@ class InterlockPlan:
 
     @property
     def active(self) -> bool:
-        return self.signals.enabled and len(set(self.robot_of.values())) > 1
+        return self.signals.enabled and len(set(self.robot_of.values())) > 1 and bool(self.waits)
 
     def signalled(self, robot: str) -> list[int]:
         """Steps of `robot` after which it sets its done output (someone waits for them)."""

@@ -104,8 +104,12 @@ def rapid_module(
     With steps on more than one robot, the module keeps the schedule's order with I/O
     interlocks (`interlocks`; default: the cell's signals, every step of the other robots
     exclusive, i.e. one arm at a time): `WaitDI` before a step for the other robots' steps it
-    needs, `SetDO` after a step another robot waits for, a start handshake, and
-    `sdi_reset` to clear this robot's interlock outputs.
+    needs, `SetDO` after a step another robot waits for, and a start handshake: clear this
+    robot's outputs (`sdi_reset`), wait until the done inputs it reads are clear (the other
+    robot has started too, so nothing left from the last run is taken for new), set ready,
+    wait for the others' ready. Ready goes off at the end; done outputs stay on (the other
+    robot may not have read them yet) until the next start. After an aborted run, run
+    `sdi_reset` on every controller before starting again.
     """
     job.recheck()
     if interlocks is None:
@@ -181,7 +185,10 @@ def rapid_module(
         if step.step in signalled:
             assert io is not None
             lines.append(f"        SetDO {io.done_output(step.step)}, 1;")
-    lines += [f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};", "    ENDPROC"]
+    lines += ["        ! all steps done", f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};"]
+    if io:
+        lines.append(f"        SetDO {ready}, 0;")
+    lines.append("    ENDPROC")
     if io:
         lines += ["", "    PROC sdi_reset()", "        ! this robot's interlock outputs off"]
         lines += [f"        SetDO {name}, 0;" for name in outputs]

@@ -1,0 +1,425 @@
+"""Exported programs keep the schedule's order across the two controllers.
+
+The RAPID modules of both robots are run by a small interpreter of what they emit (`MoveAbsJ`,
+`MoveJ`, `MoveL`, `WaitTime`, `SetDO`, `WaitDI`, procedure calls) as two concurrent processes in
+a discrete-event simulation, with the controllers' done/ready outputs wired to the other's
+inputs as the cell's `[interlocks]` names them, random motion durations and start offsets, from
+clear I/O and from the I/O a finished run leaves. Every run must finish (no deadlock), no step
+may start before the steps it depends on (its supports) are placed, and no two steps that share
+space (the scheduler's own conflict test, or every pair once the job fell back to one arm at a
+time) may overlap. The Python program's coordinator runs against two fake controllers with the
+same checks. `rapidchecker` (a RAPID grammar checker by others) accepts every module.
+"""
+
+from __future__ import annotations
+
+import random
+import re
+import threading
+import time
+import warnings
+from dataclasses import dataclass, field
+
+import pytest
+
+from sdi.errors import InputError
+from sdi.execute.job import VerifiedJob
+from sdi.export import interlock_plan, python_program, rapid_module
+from sdi.export.rapid import SIGNALS
+from sdi.model.cell import CellConfig, Interlocks
+from sdi.motion.planner import MotionPlan
+from sdi.pipeline import plan as plan_command
+from sdi.robot import robots_for
+from sdi.tasks.generator import TaskGenerator, steps_conflict
+from sdi.tasks.task import TaskPlan
+
+COMMANDS = [
+    "a bridge at x = 0.35",
+    "a tower of 3 at x = 0.3 and a tower of 3 at x = 0.7",  # Table VI, dual-arm
+    "a row of 3 at x = 0.3 and a row of 3 at x = 0.7",  # Table VI, dual-arm
+    "a 2 by 2 grid at x = 0.3 and a tower of 2 at x = 0.7",  # Table VI, dual-arm: grid + tower
+]
+
+
+@dataclass
+class Job:
+    cell: CellConfig
+    job: VerifiedJob
+    tasks: TaskPlan
+    parallel: bool
+
+    def modules(self, signals: Interlocks | None = None) -> dict[str, str]:
+        robots = robots_for(self.cell)
+        interlocks = interlock_plan(
+            self.tasks,
+            robots,
+            parallel=self.parallel,
+            signals=signals or self.cell.interlocks,
+        )
+        motion = MotionPlan({})  # no via points: the interlocks do not depend on them
+        return {
+            name: rapid_module(self.job, self.tasks, motion, robots[name], interlocks=interlocks)
+            for name in self.tasks.robots
+            if self.tasks.for_robot(name)
+        }
+
+    def exclusive(self, later: int, earlier: int) -> bool:
+        a, b = self.tasks.steps[later], self.tasks.steps[earlier]
+        if a.robot == b.robot:
+            return False
+        return not self.parallel or steps_conflict(a, b, robots_for(self.cell))
+
+
+def make_job(command: str, cell: CellConfig | None = None, *, parallel: bool = True) -> Job:
+    cell = cell or CellConfig()
+    result = plan_command(command, cell)
+    assert result.layout is not None and result.sequence is not None, result.error
+    job = VerifiedJob.inspect(result.layout, cell, result.sequence)
+    tasks, _ = TaskGenerator(cell).generate(result.layout, job.sequence)
+    return Job(cell, job, tasks, parallel)
+
+
+@pytest.fixture(scope="module")
+def jobs() -> dict[str, Job]:
+    return {c: make_job(c) for c in COMMANDS}
+
+
+# -- the interpreter ----------------------------------------------------------------------------
+
+
+def parse(text: str) -> list[tuple[str, list[str]]]:
+    """`main`'s instructions with procedure calls inlined; `("#step", [k])` marks step k."""
+    procs: dict[str, list[tuple[str, list[str]]]] = {}
+    current = None
+    for line in text.splitlines():
+        s = line.strip()
+        if m := re.fullmatch(r"PROC (\w+)\(\)", s):
+            current = m.group(1)
+            procs[current] = []
+        elif s == "ENDPROC":
+            current = None
+        elif current is None or not s:
+            continue
+        elif m := re.match(r"! step (\d+):", s):
+            procs[current].append(("#step", [str(int(m.group(1)) - 1)]))
+        elif s == "! all steps done":
+            procs[current].append(("#step", []))
+        elif not s.startswith("!"):
+            assert s.endswith(";"), s
+            word, _, rest = s[:-1].partition(" ")
+            procs[current].append((word, [a.strip() for a in rest.split(",")] if rest else []))
+
+    def expand(name: str) -> list[tuple[str, list[str]]]:
+        out = []
+        for word, args in procs[name]:
+            out += expand(word) if word in procs and not args else [(word, args)]
+        return out
+
+    return expand("main")
+
+
+class Deadlock(AssertionError):
+    pass
+
+
+@dataclass
+class Run:
+    start: dict[int, float] = field(default_factory=dict)
+    end: dict[int, float] = field(default_factory=dict)
+    released: dict[int, float] = field(default_factory=dict)
+    io: dict[object, int] = field(default_factory=dict)
+
+
+def simulate(
+    modules: dict[str, str],
+    signals: Interlocks,
+    steps: int,
+    rng: random.Random,
+    io: dict[object, int] | None = None,
+) -> Run:
+    """Run the modules as concurrent controllers (discrete events); raise Deadlock if stuck."""
+    outputs: dict[tuple[str, str], object] = {}
+    inputs: dict[tuple[str, str], object] = {}
+    for robot in modules:
+        for other in modules:
+            if other == robot:
+                continue
+            inputs[(robot, signals.signal("ready_input", other))] = ("ready", other)
+            for n in range(1, steps + 1):
+                inputs[(robot, signals.signal("done_input", other, n))] = ("done", other, n)
+        outputs[(robot, signals.signal("ready_output", robot))] = ("ready", robot)
+        for n in range(1, steps + 1):
+            outputs[(robot, signals.signal("done_output", robot, n))] = ("done", robot, n)
+
+    values = dict(io or {})
+    set_at: dict[object, float] = {}
+    run = Run()
+    programs = {r: parse(text) for r, text in modules.items()}
+    pc = dict.fromkeys(modules, 0)
+    clock = {r: rng.uniform(0.0, 20.0) for r in modules}  # controllers start when they start
+    step: dict[str, int | None] = dict.fromkeys(modules)
+    while True:
+        ready = []
+        for r, program in programs.items():
+            if pc[r] == len(program):
+                continue
+            word, args = program[pc[r]]
+            t = clock[r]
+            if word == "WaitDI":
+                wire = inputs.get((r, args[0]), (r, args[0]))
+                if values.get(wire, 0) != int(args[1]):
+                    continue
+                t = max(t, set_at.get(wire, 0.0))
+            ready.append((t, r))
+        if not ready:
+            stuck = {r: programs[r][pc[r]] for r in programs if pc[r] < len(programs[r])}
+            if stuck:
+                raise Deadlock(f"the controllers wait for each other: {stuck}")
+            run.io = values
+            return run
+        t, r = min(ready)
+        clock[r] = t
+        word, args = programs[r][pc[r]]
+        pc[r] += 1
+        k = step[r]
+        if word == "#step":
+            step[r] = int(args[0]) if args else None
+        elif word in ("MoveAbsJ", "MoveJ", "MoveL"):
+            if k is not None:
+                run.start.setdefault(k, clock[r])
+            clock[r] += rng.uniform(0.05, 3.0)
+            if k is not None:
+                run.end[k] = clock[r]
+        elif word == "WaitTime":
+            clock[r] += float(args[0])
+        elif word == "SetDO":
+            wire = outputs.get((r, args[0]), (r, args[0]))
+            values[wire] = int(args[1])
+            set_at[wire] = clock[r]
+            if args[0] in SIGNALS.values() and int(args[1]) == 0 and k is not None:
+                run.released[k] = clock[r]
+        elif word != "WaitDI":
+            raise AssertionError(f"unknown instruction {word} {args}")
+
+
+def check_order(job: Job, run: Run) -> None:
+    """Supports placed before a step starts; steps sharing space never overlap in time."""
+    steps = job.tasks.steps
+    assert set(run.start) == set(run.end) == set(run.released) == {s.step for s in steps}
+    for s in steps:
+        for d in s.depends_on:
+            assert run.released[d] <= run.start[s.step], (
+                f"step {s.step + 1} ({s.part_id}) starts before step {d + 1} "
+                f"({steps[d].part_id}) has placed its part"
+            )
+        for o in steps[: s.step]:
+            if job.exclusive(s.step, o.step):
+                apart = run.end[o.step] <= run.start[s.step] or run.end[s.step] <= run.start[o.step]
+                assert apart, f"steps {o.step + 1} and {s.step + 1} are in a shared zone at once"
+
+
+def replay(job: Job, seeds: range = range(12)) -> None:
+    modules = job.modules()
+    n = len(job.tasks.steps)
+    for seed in seeds:
+        rng = random.Random(seed)
+        first = simulate(modules, job.cell.interlocks, n, rng)
+        check_order(job, first)
+        # again, from the I/O the finished run left on the controllers
+        check_order(job, simulate(modules, job.cell.interlocks, n, rng, first.io))
+
+
+# -- tests --------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_rapid_modules_keep_the_schedule_order(jobs, command):
+    job = jobs[command]
+    assert len({s.robot for s in job.tasks.steps}) == 2, "a dual-arm job"
+    replay(job)
+
+
+def test_the_bridge_waits_for_the_second_pillar(jobs):
+    job = jobs["a bridge at x = 0.35"]
+    beam = next(s for s in job.tasks.steps if s.part_id.startswith("b"))
+    pillars = [d for d in beam.depends_on if job.tasks.steps[d].robot != beam.robot]
+    assert pillars, "the other arm places a pillar under the beam"
+    modules = job.modules()
+    text = modules[beam.robot]
+    before_beam = text[text.index(f"! step {beam.step + 1}:") :].splitlines()[1]
+    assert before_beam.strip().startswith("WaitDI diSDI_")
+    # without interlocks the replay finds the fault the issue describes
+    off = job.cell.interlocks.model_copy(update={"enabled": False})
+    early = 0
+    for seed in range(30):
+        run = simulate(job.modules(off), job.cell.interlocks, 5, random.Random(seed))
+        early += any(run.start[beam.step] < run.released[d] for d in pillars)
+        with pytest.raises(AssertionError):
+            check_order(job, run)
+    assert early, "the beam goes down before the other arm's pillar in some run"
+
+
+def test_one_arm_at_a_time_serialises_every_step(jobs):
+    job = jobs["a tower of 3 at x = 0.3 and a tower of 3 at x = 0.7"]
+    serial = Job(job.cell, job.job, job.tasks, parallel=False)
+    replay(serial, range(6))
+    # the towers are far apart: in parallel, the arms do not wait for each other at all
+    assert "WaitDI" not in "".join(job.modules().values())
+
+
+def test_signal_names_come_from_the_cell(jobs):
+    base = jobs["a bridge at x = 0.35"]
+    signals = Interlocks(
+        done_output="DO_{robot}_S{step}",
+        done_input="DI_{robot}_S{step}",
+        ready_output="DO_{robot}_Rdy",
+        ready_input="DI_{robot}_Rdy",
+    )
+    cell = base.cell.model_copy(update={"interlocks": signals})
+    job = Job(cell, VerifiedJob.inspect(base.job.layout, cell, base.job.sequence), base.tasks, True)
+    modules = job.modules()
+    assert "SetDO DO_irb1600_S2, 1;" in modules["irb1600"]
+    assert "WaitDI DI_irb1600_S2, 1;" in modules["irb120"]
+    assert "WaitDI DI_irb120_Rdy, 1;" in modules["irb1600"]
+    rng = random.Random(1)
+    check_order(job, simulate(modules, signals, len(job.tasks.steps), rng))
+
+
+@pytest.mark.parametrize(
+    ("toml", "message"),
+    [
+        ('[interlocks]\ndone_output = "doDone{step}"\n', "placeholders {robot}, {step}"),
+        ('[interlocks]\nready_input = "di{robot}{step}"\n', "placeholders {robot}"),
+        ('[interlocks]\ndone_input = "1di{robot}{step}"\n', "not a RAPID signal name"),
+        ('[interlocks]\ndone_input = "doSDI_{robot}_Done{step}"\n', "four different"),
+        ('[interlocks]\nwait_input = "x"\n', "interlocks.wait_input"),
+        (
+            '[interlocks]\ndone_output = "doSDI_{robot}_Done_of_the_step_{step}"\n',
+            "at most 32 characters",
+        ),
+    ],
+)
+def test_interlock_names_are_validated(tmp_path, toml, message):
+    path = tmp_path / "cell.toml"
+    path.write_text(toml)
+    with pytest.raises(InputError, match=re.escape(message)):
+        CellConfig.load(path)
+
+
+def test_interlocks_section_loads(tmp_path):
+    path = tmp_path / "cell.toml"
+    path.write_text('[interlocks]\ndone_output = "do{robot}Step{step}"\nenabled = true\n')
+    cell = CellConfig.load(path)
+    assert cell.interlocks.signal("done_output", "irb120", 3) == "doirb120Step3"
+    assert cell.interlocks.signal("done_input", "irb120", 3) == "diSDI_irb120_Done3"
+
+
+def rapidchecker_errors(text: str) -> list[str]:
+    with warnings.catch_warnings():  # rapidchecker 0.1.5 uses pyparsing's pre-3.0 names
+        warnings.simplefilter("ignore", DeprecationWarning)
+        pytest.importorskip("rapidchecker")
+        from rapidchecker import config
+        from rapidchecker.cli import check_file
+
+        before = config.CONFIG.indentation_size
+        config.CONFIG.indentation_size = 4  # SDI's modules indent by 4 spaces
+        try:
+            return [str(e) for e in check_file(text)]
+        finally:
+            config.CONFIG.indentation_size = before
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_rapidchecker_accepts_every_module(jobs, command):
+    job = jobs[command]
+    for parallel in (True, False):
+        for name, text in Job(job.cell, job.job, job.tasks, parallel).modules().items():
+            assert rapidchecker_errors(text) == [], (command, name)
+
+
+def test_rapidchecker_is_a_real_check():
+    text = "MODULE M\n    PROC main()\n      SetDO doX, 1;\n    ENDPROC\nENDMODULE\n"
+    assert rapidchecker_errors(text)  # 6 spaces: bad indentation
+    assert rapidchecker_errors("MODULE M\n    PROC main()\n        WaitDI x 1;\n    ENDPROC\n")
+
+
+# -- the Python program's coordinator ----------------------------------------------------------
+
+
+class FakeController:
+    """A MotionProgramExecClient stand-in: each motion program takes a little while."""
+
+    def __init__(self, name: str, rng: random.Random, calls: list, fail_at: int | None = None):
+        self.name, self.rng, self.calls, self.fail_at = name, rng, calls, fail_at
+        self.abb_client = self
+        self.count = 0
+        self.lock = threading.Lock()
+        self.io: list[tuple[str, int]] = []
+
+    def execute_motion_program(self, mp):
+        self.count += 1
+        if self.count == self.fail_at:
+            raise ConnectionError("controller unreachable")
+        t0 = time.perf_counter()
+        time.sleep(self.rng.uniform(0.0, 0.004))
+        self.calls.append((self.name, self.count - 1, t0, time.perf_counter()))
+
+    def set_digital_io(self, signal, value):
+        self.io.append((signal, value))
+
+
+def program(job: Job) -> dict:
+    robots = robots_for(job.cell)
+    interlocks = interlock_plan(
+        job.tasks, robots, parallel=job.parallel, signals=job.cell.interlocks
+    )
+    source = python_program(
+        job.job, job.tasks, MotionPlan({}), robots, command="test", interlocks=interlocks
+    )
+    namespace: dict = {"__name__": "sdi_program"}
+    exec(compile(source, "sdi_program.py", "exec"), namespace)
+    return namespace
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_python_coordinator_keeps_the_order(jobs, command):
+    pytest.importorskip("abb_motion_program_exec")
+    job = jobs[command]
+    ns = program(job)
+    for seed in range(3):
+        rng = random.Random(seed)
+        calls: list = []
+        clients = {n: FakeController(n, random.Random(rng.random()), calls) for n in ns["ROBOTS"]}
+        ns["run"](clients, log=lambda _: None)
+        run = Run()
+        for name in clients:
+            # segment index → step: one home move, then three segments per step
+            numbers = [number for number, _, segs in ns["build_steps"](name) for _ in segs]
+            for robot, index, t0, t1 in calls:
+                if robot == name and numbers[index] is not None:
+                    k = numbers[index] - 1
+                    run.start.setdefault(k, t0)
+                    run.end[k] = t1
+                    if index % 3 == 2:  # the segment after the release
+                        run.released[k] = t0
+            signal = ns["ROBOTS"][name]["signal"]
+            steps = len(ns["ROBOTS"][name]["steps"])
+            assert clients[name].io == [(signal, 1), (signal, 0)] * steps
+        check_order(job, run)
+
+
+def test_python_coordinator_stops_both_robots_on_a_failure(jobs):
+    pytest.importorskip("abb_motion_program_exec")
+    job = jobs["a bridge at x = 0.35"]
+    ns = program(job)
+    calls: list = []
+    clients = {
+        "irb120": FakeController("irb120", random.Random(0), calls),
+        "irb1600": FakeController("irb1600", random.Random(1), calls, fail_at=3),
+    }
+    with pytest.raises(RuntimeError, match="irb1600 stopped: controller unreachable"):
+        ns["run"](clients, log=lambda _: None)
+    # the IRB120 waits for the IRB1600's step 2 before its step 3: it never gets there
+    assert clients["irb120"].count <= 4
+    with pytest.raises(SystemExit, match="run them together"):
+        ns["run"]({"irb120": clients["irb120"]}, log=lambda _: None)
