@@ -204,7 +204,7 @@ class Interlocks(_Frozen):
                     f"interlocks.{name}: {template!r} must use exactly the placeholders "
                     f"{', '.join('{' + w + '}' for w in sorted(wanted))}"
                 )
-            self._check(name, self.signal(name, "r", 9999))
+            self._check(name, self.signal(name, "r", 99999))
         names = [self.signal(n, "r", 1) for n in fields]
         if len(set(names)) < len(names):
             raise ValueError(
@@ -300,7 +300,7 @@ class CellConfig(_Frozen):
         if self.interlocks.enabled and len(self.robots) > 1:
             for r in self.robots:
                 for name in ("done_output", "done_input", "ready_output", "ready_input"):
-                    Interlocks._check(name, self.interlocks.signal(name, r.name, 9999))
+                    Interlocks._check(name, self.interlocks.signal(name, r.name, 99999))
         return self
 
     @classmethod
