@@ -159,6 +159,11 @@ def test_signal_names_come_from_the_cell(jobs):
         ('[interlocks]\ndone_input = "doSDI_{robot}_Done{step}"\n', "four different"),
         ('[interlocks]\nwait_input = "x"\n', "interlocks.wait_input"),
         (
+            '[[robots]]\nname = "irb-120"\nmodel = "irb120"\nbase_xy = [0.0, 0.3]\n'
+            '[[robots]]\nname = "b"\nmodel = "irb1600"\nbase_xy = [1.3, 0.3]\n',
+            "'doSDI_irb-120_Done99999' is not a RAPID signal name",
+        ),
+        (
             '[interlocks]\ndone_output = "doSDI_{robot}_Done_of_pick_and_place_{step}"\n',
             "at most 32 characters",
         ),

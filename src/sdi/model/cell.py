@@ -198,27 +198,27 @@ class Interlocks(_Frozen):
             try:
                 found = {f for _, f, _, _ in string.Formatter().parse(template) if f is not None}
             except ValueError as exc:
-                raise ValueError(f"interlocks.{name}: {exc} in {template!r}") from None
+                raise ValueError(f"{name}: {exc} in {template!r}") from None
             if found != wanted:
                 raise ValueError(
-                    f"interlocks.{name}: {template!r} must use exactly the placeholders "
+                    f"{name}: {template!r} must use exactly the placeholders "
                     f"{', '.join('{' + w + '}' for w in sorted(wanted))}"
                 )
             self._check(name, self.signal(name, "r", 99999))
         names = [self.signal(n, "r", 1) for n in fields]
         if len(set(names)) < len(names):
             raise ValueError(
-                "interlocks: done_output, done_input, ready_output and ready_input must give "
-                "four different signal names"
+                "done_output, done_input, ready_output and ready_input must give four "
+                "different signal names"
             )
         return self
 
     @staticmethod
-    def _check(field: str, name: str) -> None:
+    def _check(field: str, name: str, robot: str = "") -> None:
         if not _IDENTIFIER.fullmatch(name):
             raise ValueError(
-                f"interlocks.{field}: {name!r} is not a RAPID signal name (a letter, then "
-                "letters, digits or _, at most 32 characters)"
+                f"{field}: {name!r} is not a RAPID signal name (a letter, then letters, digits "
+                f"or _, at most 32 characters){f'; rename robot {robot!r}' if robot else ''}"
             )
 
 
@@ -300,7 +300,8 @@ class CellConfig(_Frozen):
         if self.interlocks.enabled and len(self.robots) > 1:
             for r in self.robots:
                 for name in ("done_output", "done_input", "ready_output", "ready_input"):
-                    Interlocks._check(name, self.interlocks.signal(name, r.name, 99999))
+                    signal = self.interlocks.signal(name, r.name, 99999)
+                    Interlocks._check(f"interlocks.{name}", signal, r.name)
         return self
 
     @classmethod
@@ -388,6 +389,7 @@ _SECTIONS: dict[str, type[BaseModel]] = {
     "tolerances": Tolerances,
     "limits": Limits,
     "design": DesignDefaults,
+    "interlocks": Interlocks,
     "robots": RobotPlacement,
     "supply_areas": SupplyArea,
 }
