@@ -10,6 +10,7 @@ import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
 import pytest
 
 from sdi.export.rapid import SIGNALS
@@ -131,14 +132,32 @@ def simulate(
             raise AssertionError(f"unknown instruction {word} {args}")
 
 
+def supports(tasks: Any) -> dict[int, list[int]]:
+    """Steps whose part a step's part rests on, from the target poses alone (not depends_on)."""
+    boxes = {}
+    for s in tasks.steps:
+        T = s.T_world_part_target
+        half = 0.5 * np.abs(T[:3, :3]) @ np.array(s.part_size)
+        boxes[s.step] = (T[:3, 3] - half, T[:3, 3] + half)
+    out: dict[int, list[int]] = {}
+    for k, (lo, _) in boxes.items():
+        out[k] = []
+        for j, (lo2, hi2) in boxes.items():
+            overlap = np.minimum(boxes[k][1][:2], hi2[:2]) - np.maximum(lo[:2], lo2[:2])
+            if j != k and abs(hi2[2] - lo[2]) < 2e-3 and bool(np.all(overlap > 1e-3)):
+                out[k].append(j)
+    return out
+
+
 def check_order(job: Any, run: Run) -> None:
     """Supports placed before a step starts; steps sharing space never overlap in time.
 
     `job` has `tasks` (a TaskPlan) and `exclusive(later, earlier)` (steps sharing space)."""
     steps = job.tasks.steps
     assert set(run.start) == set(run.end) == set(run.released) == {s.step for s in steps}
+    below = supports(job.tasks)
     for s in steps:
-        for d in s.depends_on:
+        for d in sorted({*s.depends_on, *below[s.step]}):
             assert run.released[d] <= run.start[s.step], (
                 f"step {s.step + 1} ({s.part_id}) starts before step {d + 1} "
                 f"({steps[d].part_id}) has placed its part"

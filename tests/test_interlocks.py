@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import pytest
 
-from rapid_replay import Run, check_order, rapidchecker_errors, simulate
+from rapid_replay import Run, check_order, rapidchecker_errors, simulate, supports
 from sdi.errors import InputError
 from sdi.execute.job import VerifiedJob
 from sdi.export import interlock_plan, python_program, rapid_module
@@ -107,7 +107,8 @@ def test_rapid_modules_keep_the_schedule_order(jobs, command):
 def test_the_bridge_waits_for_the_second_pillar(jobs):
     job = jobs["a bridge at x = 0.35"]
     beam = next(s for s in job.tasks.steps if s.part_id.startswith("b"))
-    pillars = [d for d in beam.depends_on if job.tasks.steps[d].robot != beam.robot]
+    assert len(supports(job.tasks)[beam.step]) == 2, "the beam rests on two pillars"
+    pillars = [d for d in supports(job.tasks)[beam.step] if job.tasks.steps[d].robot != beam.robot]
     assert pillars, "the other arm places a pillar under the beam"
     modules = job.modules()
     text = modules[beam.robot]
@@ -210,6 +211,7 @@ class FakeController:
         self.count = 0
         self.lock = threading.Lock()
         self.io: list[tuple[str, int]] = []
+        self.io_at: list[float] = []
 
     def execute_motion_program(self, mp):
         self.count += 1
@@ -221,6 +223,7 @@ class FakeController:
 
     def set_digital_io(self, signal, value):
         self.io.append((signal, value))
+        self.io_at.append(time.perf_counter())
 
 
 def program(job: Job) -> dict:
@@ -255,11 +258,11 @@ def test_python_coordinator_keeps_the_order(jobs, command):
                     k = numbers[index] - 1
                     run.start.setdefault(k, t0)
                     run.end[k] = t1
-                    if index % 3 == 2:  # the segment after the release
-                        run.released[k] = t0
             signal = ns["ROBOTS"][name]["signal"]
-            steps = len(ns["ROBOTS"][name]["steps"])
-            assert clients[name].io == [(signal, 1), (signal, 0)] * steps
+            mine = [s["number"] - 1 for s in ns["ROBOTS"][name]["steps"]]
+            assert clients[name].io == [(signal, 1), (signal, 0)] * len(mine)
+            for k, t in zip(mine, clients[name].io_at[1::2], strict=True):
+                run.released[k] = t  # the gripper lets go
         check_order(job, run)
 
 
