@@ -2,9 +2,12 @@
 
 It uses `abb-motion-program-exec` (motion programs over Robot Web Services, with joint logs):
 one motion program per segment between gripper actions, and the gripper's digital output set
-over RWS in between. The same program runs against RobotStudio (default URL) or a real
-controller (`--url`). Building it needs no robot: `build_programs()` returns the motion
-programs, and `--dry-run` prints their RAPID.
+over RWS in between. The same program runs against RobotStudio (default URLs) or real
+controllers (`--url NAME=URL`). It is also the coordinator between the controllers: `run()`
+drives every robot in its own thread and starts a step only when the other robots' steps it
+waits for (`sdi.export.interlocks`: supports, shared space) are done. Building it needs no
+robot: `build_steps()` / `build_programs()` return the motion programs, and `--dry-run`
+prints their RAPID.
 """
 
 from __future__ import annotations

@@ -5,7 +5,9 @@ joint via points (`MoveAbsJ`, joint-interpolated like the planned segments), app
 `MoveJ` to a robtarget, descents, grasps and retreats are `MoveL` stop points, and the gripper
 is switched with `SetDO` and given `WaitTime` for its 2 Hz Modbus I/O. Targets are in the
 robot's base frame (wobj0), millimetres, quaternions w first, with the configuration data of
-the planned joint solution. Only a `VerifiedJob` is exported.
+the planned joint solution. Only a `VerifiedJob` is exported. With two robots the modules
+keep the schedule's order with digital I/O between the controllers (`WaitDI`/`SetDO`, signal
+names from the cell's `[interlocks]`; see `sdi.export.interlocks`).
 """
 
 from __future__ import annotations
@@ -179,8 +181,9 @@ def rapid_module(
         # back home over the supply through the checked via points
         for q in to_home[:-1]:
             lines.append(f"        MoveAbsJ {jointtarget(q)}, {FREE_SPEED}, z10, {tool};")
-        following = steps[n + 1].step if n + 1 < len(steps) else None
-        stop = step.step in signalled or bool(io and io.waits.get(following, ()))  # type: ignore[arg-type]
+        # a stop point before setting a done output or waiting for the other robot
+        waits_next = bool(io and n + 1 < len(steps) and io.waits.get(steps[n + 1].step))
+        stop = step.step in signalled or waits_next
         lines.append(f"        MoveAbsJ jHome, {FREE_SPEED}, {'fine' if stop else 'z10'}, {tool};")
         if step.step in signalled:
             assert io is not None
