@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from rapid_replay import rapidchecker_errors
+
 pytestmark = pytest.mark.slow
 SDI = [sys.executable, "-m", "sdi.cli"]
 
@@ -61,6 +63,26 @@ def test_export_writes_rapid_and_python(tower_file, tmp_path):
     )
     assert check.returncode == 0, check.stderr
     assert "MoveL" in check.stdout
+
+
+def test_export_interlocks_a_dual_arm_job(tmp_path):
+    layout = tmp_path / "bridge.json"
+    proc = run("plan", "a bridge at x = 0.35", "--out", str(layout))
+    assert proc.returncode == 0, proc.stderr
+    proc = run("export", str(layout), "--rapid", str(tmp_path / "rapid"),
+               "--python", str(tmp_path / "prog.py"))  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    modules = {p.stem: p.read_text() for p in (tmp_path / "rapid").glob("SDI_*.mod")}
+    assert sorted(modules) == ["SDI_IRB120", "SDI_IRB1600"]
+    for text in modules.values():
+        assert "WaitDI diSDI_" in text and "SetDO doSDI_" in text and "PROC sdi_reset()" in text
+        assert rapidchecker_errors(text) == []
+    source = (tmp_path / "prog.py").read_text()
+    assert "def run(clients" in source and "'after': [['irb" in source
+    check = subprocess.run(
+        [sys.executable, str(tmp_path / "prog.py"), "--dry-run"], capture_output=True, text=True
+    )
+    assert check.returncode == 0, check.stderr
 
 
 def test_run_waits_for_a_human_ok(tmp_path):

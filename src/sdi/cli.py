@@ -465,14 +465,17 @@ def export_cmd(
     if python is not None:
         outputs.file(python, "--python")
     plan = _commission(layout_file, cell_path, arms, False)
-    from sdi.export import python_program, rapid_module
+    from sdi.export import interlock_plan, python_program, rapid_module
 
+    interlocks = interlock_plan(
+        plan.tasks, plan.robots, parallel=plan.parallel, signals=plan.job.cell.interlocks
+    )
     files: dict[Path, bytes | str] = {}
     if rapid is not None:
         for name in plan.tasks.robots:
             if plan.tasks.for_robot(name):
                 files[rapid / f"SDI_{name.upper()}.mod"] = rapid_module(
-                    plan.job, plan.tasks, plan.motion, plan.robots[name]
+                    plan.job, plan.tasks, plan.motion, plan.robots[name], interlocks=interlocks
                 )
     if python is not None:
         files[python] = python_program(
@@ -482,6 +485,7 @@ def export_cmd(
             plan.robots,
             command=str(layout_file),
             filename=python.name,
+            interlocks=interlocks,
         )
     for path in outputs.commit(files):
         _line(out, "wrote", "", path)

@@ -5,7 +5,9 @@ joint via points (`MoveAbsJ`, joint-interpolated like the planned segments), app
 `MoveJ` to a robtarget, descents, grasps and retreats are `MoveL` stop points, and the gripper
 is switched with `SetDO` and given `WaitTime` for its 2 Hz Modbus I/O. Targets are in the
 robot's base frame (wobj0), millimetres, quaternions w first, with the configuration data of
-the planned joint solution. Only a `VerifiedJob` is exported.
+the planned joint solution. Only a `VerifiedJob` is exported. With two robots the modules
+keep the schedule's order with digital I/O between the controllers (`WaitDI`/`SetDO`, signal
+names from the cell's `[interlocks]`; see `sdi.export.interlocks`).
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from sdi.execute.job import VerifiedJob
+from sdi.export.interlocks import InterlockPlan, interlock_plan
 from sdi.motion.planner import MotionPlan
 from sdi.robot import RobotModel
 from sdi.tasks.generator import pose_tuple
@@ -90,9 +93,30 @@ def _targets(robot: RobotModel, step: PickPlace) -> list[RapidTarget]:
     return out
 
 
-def rapid_module(job: VerifiedJob, tasks: TaskPlan, motion: MotionPlan, robot: RobotModel) -> str:
-    """The RAPID module that runs `robot`'s share of the verified job."""
+def rapid_module(
+    job: VerifiedJob,
+    tasks: TaskPlan,
+    motion: MotionPlan,
+    robot: RobotModel,
+    *,
+    interlocks: InterlockPlan | None = None,
+) -> str:
+    """The RAPID module that runs `robot`'s share of the verified job.
+
+    With steps on more than one robot, the module keeps the schedule's order with I/O
+    interlocks (`interlocks`; default: the cell's signals, every step of the other robots
+    exclusive, i.e. one arm at a time): `WaitDI` before a step for the other robots' steps it
+    needs, `SetDO` after a step another robot waits for, and a start handshake: clear this
+    robot's outputs (`sdi_reset`), wait until the done inputs it reads are clear (the other
+    robot has started too, so nothing left from the last run is taken for new), set ready,
+    wait for the others' ready. Ready goes off at the end; done outputs stay on (the other
+    robot may not have read them yet) until the next start. After an aborted run, run
+    `sdi_reset` on every controller before starting again.
+    """
     job.recheck()
+    if interlocks is None:
+        interlocks = interlock_plan(tasks, {}, parallel=False, signals=job.cell.interlocks)
+    io = interlocks if interlocks.active else None
     tool = f"t{robot.tool.name}"
     signal = SIGNALS[robot.tool.kind]
     wait = _num(GRASP_SECONDS[robot.tool.kind])
@@ -107,11 +131,35 @@ def rapid_module(job: VerifiedJob, tasks: TaskPlan, motion: MotionPlan, robot: R
     ]
     for step in steps:
         lines += [f"    {t.robtarget()}" for t in _targets(robot, step)]
-    lines += ["", "    PROC main()", f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};"]
-    for step in steps:
+    signalled = set(io.signalled(robot.name)) if io else set()
+    outputs = [io.done_output(k) for k in sorted(signalled)] if io else []
+    if io:
+        ready = io.signals.signal("ready_output", robot.name)
+        outputs.append(ready)
+        lines += [
+            f"    ! Interlocks with {', '.join(io.peers(robot.name))} on other controllers: "
+            "WaitDI before a step waits",
+            "    ! for their steps it needs; SetDO after a step they wait for "
+            "(cell configuration [interlocks]).",
+        ]
+    lines += ["", "    PROC main()"]
+    if io:
+        lines.append("        ! start: own interlock outputs off, wait until the others are off")
+        lines.append("        sdi_reset;")
+        lines += [f"        WaitDI {name}, 0;" for name in io.inputs_of(robot.name)]
+        lines.append(f"        SetDO {ready}, 1;")
+        lines += [
+            f"        WaitDI {io.signals.signal('ready_input', peer)}, 1;"
+            for peer in io.peers(robot.name)
+        ]
+    lines.append(f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};")
+    for n, step in enumerate(steps):
         to_pick, to_place, to_home = motion.via.get(step.step, ([], [], []))
         p = f"p{step.step + 1}"
         lines.append(f"        ! step {step.step + 1}: {step.part_id}")
+        if io:
+            for d in io.waits.get(step.step, ()):
+                lines.append(f"        WaitDI {io.done_input(d)}, 1;")
         for q in to_pick[:-1]:
             lines.append(f"        MoveAbsJ {jointtarget(q)}, {FREE_SPEED}, z10, {tool};")
         lines += [
@@ -133,11 +181,20 @@ def rapid_module(job: VerifiedJob, tasks: TaskPlan, motion: MotionPlan, robot: R
         # back home over the supply through the checked via points
         for q in to_home[:-1]:
             lines.append(f"        MoveAbsJ {jointtarget(q)}, {FREE_SPEED}, z10, {tool};")
-        lines.append(f"        MoveAbsJ jHome, {FREE_SPEED}, z10, {tool};")
-    lines += [
-        f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};",
-        "    ENDPROC",
-        "ENDMODULE",
-        "",
-    ]
+        # a stop point before setting a done output or waiting for the other robot
+        waits_next = bool(io and n + 1 < len(steps) and io.waits.get(steps[n + 1].step))
+        stop = step.step in signalled or waits_next
+        lines.append(f"        MoveAbsJ jHome, {FREE_SPEED}, {'fine' if stop else 'z10'}, {tool};")
+        if step.step in signalled:
+            assert io is not None
+            lines.append(f"        SetDO {io.done_output(step.step)}, 1;")
+    lines += ["        ! all steps done", f"        MoveAbsJ jHome, {FREE_SPEED}, fine, {tool};"]
+    if io:
+        lines.append(f"        SetDO {ready}, 0;")
+    lines.append("    ENDPROC")
+    if io:
+        lines += ["", "    PROC sdi_reset()", "        ! this robot's interlock outputs off"]
+        lines += [f"        SetDO {name}, 0;" for name in outputs]
+        lines.append("    ENDPROC")
+    lines += ["ENDMODULE", ""]
     return "\n".join(lines)

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import os
 import re
+import string
 import tomllib
 from functools import cached_property
 from pathlib import Path
@@ -162,6 +163,65 @@ class Limits(_Frozen):
     )
 
 
+_IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
+"""A RAPID identifier (signal names too): a letter, then letters, digits or _; 32 at most."""
+
+
+class Interlocks(_Frozen):
+    """Digital I/O that keeps two controllers in the schedule's order (exported programs).
+
+    The arms sit on separate controllers (RobotWare 5 and 6), so MultiMove's `WaitSyncTask`
+    does not apply. After a step another robot waits for, its robot sets
+    `done_output` (placeholders {robot}: the robot that set it, {step}: the step number, from
+    1); the other controller reads the same wire as `done_input`. `ready_output`/`ready_input`
+    are the start handshake. Wire every robot's outputs to the other controllers' inputs of
+    the same {robot} and {step} (EIO configuration, cross-connections or a PLC).
+    """
+
+    enabled: bool = Field(True, description="emit interlocks (off: each robot runs alone)")
+    done_output: str = Field("doSDI_{robot}_Done{step}", description="set after a step, DO")
+    done_input: str = Field("diSDI_{robot}_Done{step}", description="read before a step, DI")
+    ready_output: str = Field("doSDI_{robot}_Ready", description="start handshake, DO")
+    ready_input: str = Field("diSDI_{robot}_Ready", description="start handshake, DI")
+
+    def signal(self, which: str, robot: str, step: int | None = None) -> str:
+        """The signal `which` ("done_output", …) of `robot` (and 1-based `step`)."""
+        template: str = getattr(self, which)
+        return template.format(robot=robot, step=step)
+
+    @model_validator(mode="after")
+    def _names(self) -> Interlocks:
+        fields = ("done_output", "done_input", "ready_output", "ready_input")
+        for name in fields:
+            template = getattr(self, name)
+            wanted = {"robot", "step"} if name.startswith("done") else {"robot"}
+            try:
+                found = {f for _, f, _, _ in string.Formatter().parse(template) if f is not None}
+            except ValueError as exc:
+                raise ValueError(f"{name}: {exc} in {template!r}") from None
+            if found != wanted:
+                raise ValueError(
+                    f"{name}: {template!r} must use exactly the placeholders "
+                    f"{', '.join('{' + w + '}' for w in sorted(wanted))}"
+                )
+            self._check(name, self.signal(name, "r", 99999))
+        names = [self.signal(n, "r", 1) for n in fields]
+        if len(set(names)) < len(names):
+            raise ValueError(
+                "done_output, done_input, ready_output and ready_input must give four "
+                "different signal names"
+            )
+        return self
+
+    @staticmethod
+    def _check(field: str, name: str, robot: str = "") -> None:
+        if not _IDENTIFIER.fullmatch(name):
+            raise ValueError(
+                f"{field}: {name!r} is not a RAPID signal name (a letter, then letters, digits "
+                f"or _, at most 32 characters){f'; rename robot {robot!r}' if robot else ''}"
+            )
+
+
 class DesignDefaults(_Frozen):
     """Where and how generators place structures when the command does not say."""
 
@@ -217,6 +277,7 @@ class CellConfig(_Frozen):
     tolerances: Tolerances = Tolerances()
     limits: Limits = Limits()
     design: DesignDefaults = DesignDefaults()
+    interlocks: Interlocks = Interlocks()
 
     @cached_property
     def cube(self) -> Vec3:
@@ -236,6 +297,11 @@ class CellConfig(_Frozen):
                     f"supply_areas[{i}].robot: no robot named {area.robot!r}; "
                     f"the cell has {sorted(robots)}"
                 )
+        if self.interlocks.enabled and len(self.robots) > 1:
+            for r in self.robots:
+                for name in ("done_output", "done_input", "ready_output", "ready_input"):
+                    signal = self.interlocks.signal(name, r.name, 99999)
+                    Interlocks._check(f"interlocks.{name}", signal, r.name)
         return self
 
     @classmethod
@@ -323,6 +389,7 @@ _SECTIONS: dict[str, type[BaseModel]] = {
     "tolerances": Tolerances,
     "limits": Limits,
     "design": DesignDefaults,
+    "interlocks": Interlocks,
     "robots": RobotPlacement,
     "supply_areas": SupplyArea,
 }

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -100,6 +100,25 @@ def joint_move_seconds(robot: RobotModel, qa: np.ndarray, qb: np.ndarray) -> flo
         t = 2 * math.sqrt(d / a) if d < v * v / a else d / v + v / a
         worst = max(worst, t)
     return worst
+
+
+def steps_conflict(a: PickPlace, b: PickPlace, robots: Mapping[str, RobotModel]) -> bool:
+    """Whether steps of two different arms share space and so must never overlap in time.
+
+    Their targets are closer than CONFLICT_DISTANCE, or one arm would reach past the other
+    (a's target is not clearly on a's side of b's, along the line between the bases). The
+    scheduler keeps such steps apart in σ* order; the exported programs interlock them.
+    """
+    pa, pb = a.T_world_part_target[:2, 3], b.T_world_part_target[:2, 3]
+    if float(np.linalg.norm(pa - pb)) < CONFLICT_DISTANCE:
+        return True
+    ra, rb = robots[a.robot], robots[b.robot]
+    axis = rb.T_world_base[:2, 3] - ra.T_world_base[:2, 3]
+    norm = float(np.linalg.norm(axis))
+    if norm < 1e-9:
+        return True
+    axis /= norm
+    return float((pa - pb) @ axis) > -0.10
 
 
 class TaskGenerator:
@@ -257,7 +276,7 @@ class TaskGenerator:
             T_part[:3, 3] += self._clearance(a, i, rank)
             half = 0.5 * np.array(part.size)
             options = self._options(a, i, rank)
-            depends = tuple(sorted(rank[j] for j in interacts.get(i, ()) if rank[j] < k))
+            depends = tuple(sorted(int(rank[j]) for j in interacts.get(i, ()) if rank[j] < k))
             best: tuple[float, PickPlace, float] | None = None
             for name, robot in self.robots.items():
                 if name not in self.areas:
@@ -446,18 +465,7 @@ class TaskGenerator:
             return self._estimate(robot, q0, [w.q for w in s.pick], [w.q for w in s.place])
 
         def conflict(k: int, other: int) -> bool:
-            a, b = by_step[k], by_step[other]
-            pa, pb = a.T_world_part_target[:2, 3], b.T_world_part_target[:2, 3]
-            if float(np.linalg.norm(pa - pb)) < CONFLICT_DISTANCE:
-                return True
-            # arms reaching past each other: compare positions along the line between the bases
-            ra, rb = self.robots[a.robot], self.robots[b.robot]
-            axis = rb.T_world_base[:2, 3] - ra.T_world_base[:2, 3]
-            norm = float(np.linalg.norm(axis))
-            if norm < 1e-9:
-                return True
-            axis /= norm
-            return float((pa - pb) @ axis) > -0.10  # a's target is not clearly on a's side
+            return steps_conflict(by_step[k], by_step[other], self.robots)
 
         return list_schedule(
             [s.step for s in plan.steps],
