@@ -1,4 +1,4 @@
-"""The language front end on the unseen evaluation sets (dev, dev2, dev3, dev4 and frozen test).
+"""The language front end on the unseen evaluation sets (dev, dev2 … dev5 and frozen test).
 
 Every case is planned in-process with `sdi.pipeline.plan` and scored:
 
@@ -9,10 +9,10 @@ Every case is planned in-process with `sdi.pipeline.plan` and scored:
 * silent misreading — status ``success`` but the predicate fails (the worst outcome).
 
 Writes `benchmarks/results/language_dev.json`, `language_dev2.json`, `language_dev3.json`,
-`language_dev4.json` and `language_test.json`.
+`language_dev4.json`, `language_dev5.json` and `language_test.json`.
 
-Run: `python benchmarks/language.py [--set dev|dev2|dev3|dev4|test|both|all]` (`both` = dev and
-test, `all` = dev, dev2, dev3, dev4 and test).
+Run: `python benchmarks/language.py [--set dev|dev2|dev3|dev4|dev5|test|both|all]` (`both` = dev
+and test, `all` = dev, dev2, dev3, dev4, dev5 and test).
 """
 
 from __future__ import annotations
@@ -92,7 +92,9 @@ def table(name: str, res: dict[str, Any]) -> str:
 def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument(
-        "--set", choices=("dev", "dev2", "dev3", "dev4", "test", "both", "all"), default="both"
+        "--set",
+        choices=("dev", "dev2", "dev3", "dev4", "dev5", "test", "both", "all"),
+        default="both",
     )
     args = ap.parse_args(argv)
     sets: list[tuple[str, Sequence[Case]]] = []
@@ -112,6 +114,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from sdi.bench.language_dev4 import CASES as DEV4
 
         sets.append(("dev4", DEV4))
+    if args.set in ("dev5", "all"):
+        from sdi.bench.language_dev5 import CASES as DEV5
+
+        sets.append(("dev5", DEV5))
     if args.set in ("test", "both", "all"):
         from sdi.bench.language_test import CASES as TEST
 

@@ -1,8 +1,8 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second, third and fourth dev sets (dev2, dev3, dev4) are held to the same checks and share
-no command with any other set."""
+second to fifth dev sets (dev2, dev3, dev4, dev5) are held to the same checks and share no
+command with any other set."""
 
 from __future__ import annotations
 
@@ -19,6 +19,7 @@ from sdi.bench.language_dev import CASES as DEV
 from sdi.bench.language_dev2 import CASES as DEV2
 from sdi.bench.language_dev3 import CASES as DEV3
 from sdi.bench.language_dev4 import CASES as DEV4
+from sdi.bench.language_dev5 import CASES as DEV5
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -286,7 +287,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *DEV3, *DEV4, *TEST):
+    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -309,6 +310,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev2.py",
         "language_dev3.py",
         "language_dev4.py",
+        "language_dev5.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -612,5 +614,102 @@ def _slab_without_corners(x0, y0, n):
 )
 def test_dev4_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev4(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev5
+
+
+def test_dev5_set_sizes_ids_and_phenomena():
+    assert len(DEV5) >= 150
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev5-") for c in DEV5)
+    per = {p: sum(c.phenomenon == p for c in DEV5) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 12, per
+    assert {c.phenomenon for c in DEV5} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV5)
+
+
+def test_no_command_shared_between_dev5_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV5}) == len(DEV5)
+    for other in (DEV, DEV2, DEV3, DEV4, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV5 if _norm(c.text) in seen]
+
+
+def _dev5(case_id: str) -> Case:
+    return next(c for c in DEV5 if c.id == case_id)
+
+
+_WALL5X3 = [cube(0.45, 0.20 + C * j, C / 2 + C * h) for h in range(3) for j in range(5)]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev5-rel-06",  # a 4 x 2 wall with a cube on top of one end
+            res(*_row_y(0.45, 0.20, 4), *_row_y(0.45, 0.20, 4, z0=C), cube(0.45, 0.20, 0.125)),
+            res(*_row_y(0.45, 0.20, 4), *_row_y(0.45, 0.20, 4, z0=C), cube(0.45, 0.25, 0.125)),
+        ),
+        (
+            "dev5-rel-03",  # a cube inside a 4x4 enclosure
+            res(*ring(0.30, 0.20, 6), cube(0.425, 0.325, 0.025)),
+            res(*ring(0.30, 0.20, 6), cube(0.70, 0.30, 0.025)),  # outside the ring
+        ),
+        (
+            "dev5-seq-07",  # a 3x3 slab without its corners: a plus
+            res(*_PLUS3),
+            res(*grid(0.40, 0.25, 3, 3)),
+        ),
+        (
+            "dev5-seq-13",  # a row of 3 with a row of 2 on top
+            res(*_row_y(0.45, 0.20, 3), *_row_y(0.45, 0.20, 2, z0=C)),
+            res(*_row_y(0.45, 0.20, 3), *_row_y(0.45, 0.20, 3, z0=C)),
+        ),
+        (
+            "dev5-neg-08",  # a row of 5 without its second cube
+            res(cube(0.45, 0.20, 0.025), *_row_y(0.45, 0.30, 3)),
+            res(*_row_y(0.45, 0.20, 5)),
+        ),
+        (
+            "dev5-neg-10",  # a 5 x 3 wall with a doorway in the middle of the bottom course
+            res(
+                *[
+                    c
+                    for c in _WALL5X3
+                    if (round(c["position"][1], 3), c["position"][2]) != (0.30, C / 2)
+                ]
+            ),
+            res(*_WALL5X3),
+        ),
+        (
+            "dev5-reg-04",  # a 4-long wall along the right edge
+            res(*_row_x(0.40, 0.075, 4), *_row_x(0.40, 0.075, 4, z0=C)),
+            res(*_row_y(0.45, 0.075, 4), *_row_y(0.45, 0.075, 4, z0=C)),  # across, not along
+        ),
+        (
+            "dev5-reg-10",  # a 2x2x2 block 0.3 m straight out from the robot
+            res(*grid(0.275, 0.275, 2, 2, layers=2)),
+            res(*grid(0.475, 0.275, 2, 2, layers=2)),
+        ),
+        (
+            "dev5-dim-13",  # tabletop 20 x 15 cm on 10 cm legs
+            res(
+                *column(0.40, 0.25, 2),
+                *column(0.55, 0.25, 2),
+                *column(0.40, 0.35, 2),
+                *column(0.55, 0.35, 2),
+                *grid(0.40, 0.25, 4, 3, z0=2 * C),
+            ),
+            res(*grid(0.40, 0.25, 4, 3)),
+        ),
+        ("dev5-open-15", res(*ring(0.40, 0.25, 4)), res(*ring(0.40, 0.25, 3))),
+    ],
+)
+def test_dev5_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev5(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
