@@ -93,6 +93,7 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("next", "to"), "next", None),
     (("beside",), "next", None),
     (("besides",), "next", None),
+    (("alongside", "it"), "next_implicit", None),
     (("alongside",), "next", None),
     (("adjacent", "to"), "next", None),
     (("close", "to"), "next", None),
@@ -730,6 +731,55 @@ _REWRITES += [
     ),
     (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
     (
+        re.compile(
+            r"\bnear\s+(?:to\s+)?the\s+(back|front|left|right)(?:\s+(?:edge|side|end|wall))?\b",
+            re.I,
+        ),
+        " at the {0} ",
+        "",
+    ),
+    (re.compile(r",?\s*\bnear\s+the\s+edge\b", re.IGNORECASE), " ", ""),
+    (
+        re.compile(
+            r"\balong\s+the\s+(left|right)\s+(?:edge|side|boundary|border)\b", re.IGNORECASE
+        ),
+        " along x on the {0} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\balong\s+the\s+(front|back)\s+(?:edge|side|boundary|border)\b", re.IGNORECASE
+        ),
+        " along y at the {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(towers|rows|walls|stacks|columns|pyramids|pads)\s*[:=]\s*(\w+)\b", re.I),
+        " {1} {0} ",
+        "",
+    ),
+    (re.compile(r"\bheight\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} high ", ""),
+    (
+        re.compile(
+            r",?\s*\b(?:none\s+of\s+(?:them|the\s+\w+)|no\s+\w+|not|never)\s+(?:any\s+)?(?:wider|broader)\s+"
+            r"than\s+(\w+)\s+(?:cubes?|parts?)\b",
+            re.IGNORECASE,
+        ),
+        " {0} wide ",
+        "read '{0}' as exactly that (the most allowed)",
+    ),
+    (re.compile(r"\b(?:length|long)\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} long ", ""),
+    (re.compile(r"\bwidth\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} wide ", ""),
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five)\s+rows\s+(?:with|of)\s+(\d+|[a-z]+)\s+(?:cubes?\s+)?"
+            r"(?:in\s+each|each|apiece)\b",
+            re.IGNORECASE,
+        ),
+        " {0} rows of {1} ",
+        "",
+    ),
+    (
         re.compile(r"\bon\s+top\s+off\b", re.IGNORECASE),
         " on top of ",
         "corrected 'top off' to 'top of'",
@@ -1133,6 +1183,9 @@ _REMOVAL = re.compile(
     r"(?:of|with)\s+\d)",
     re.IGNORECASE,
 )
+_COUNT_ONLY = re.compile(
+    r"^\W*(?:\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)(?:\s+(?:tall|high|long))?\W*$", re.I
+)
 _LEGS = re.compile(r"\blegs?\b", re.IGNORECASE)
 _TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
 
@@ -1142,7 +1195,9 @@ def _another(text: str) -> str:
 
     def sub(m: re.Match[str]) -> str:
         before = [
-            w for w in re.findall(r"[a-z]+", text[: m.start()].lower()) if w in lx.SHAPE_WORDS
+            w
+            for w in re.findall(r"[a-z]+", text[: m.start()].lower())
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES
         ]
         if not before:
             return m.group(0)
@@ -1153,15 +1208,19 @@ def _another(text: str) -> str:
     return _ANOTHER.sub(sub, text)
 
 
-def _copies(spec: Spec, text: str, st: _State) -> Spec:
-    """ "another tower", "a second row": the sizes of the one named before."""
+def _copies(spec: Spec, text: str, st: _State, earlier: list[StructureSpec] | None = None) -> Spec:
+    """ "another tower", "a second row": the sizes of the one named before (in this phrase,
+    or the last of that family named earlier)."""
     if not set(re.findall(r"[a-z]+", text.lower())) & _COPY:
         return spec
     out = list(spec.structures)
     for k, s in enumerate(out):
-        if k == 0 or s.model_dump(include=set(_SIZES), exclude_defaults=True):
+        if s.model_dump(include=set(_SIZES), exclude_defaults=True):
             continue
-        first = next((o for o in out[:k] if o.shape == s.shape), None)
+        pool = [*(earlier or []), *out[:k]]
+        first = next((o for o in reversed(pool) if o.shape == s.shape), None)
+        if k == 0 and first is None:
+            continue
         if first is not None:
             out[k] = s.model_copy(update=first.model_dump(include=set(_SIZES)))
             st.notes.append(f"another {s.shape}: the same size as the first")
@@ -1544,6 +1603,8 @@ def _clause_phrases(
             or (kind == "inside" and head is None)
             or kind == "next_implicit"
         )
+        if kind == "next" and head is None and words_[0] in ("alongside", "beside", "besides"):
+            kind, implicit = "next_implicit", True  # "… then a second row alongside"
         if numeric_before and kind == "on" and words_[0] in ("above", "over"):
             k += n
             continue
@@ -1716,6 +1777,13 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
         if _modify(p, phrases[:k], structures, st):
             continue
+        if _COUNT_ONLY.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
+            grown = _continues(p, phrases[:k])  # "make a tower? 4 cubes?"
+            if grown is not None:
+                before_count, prev = grown
+                assert prev.spec is not None
+                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
+                continue
         if _REMOVAL.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
             # "then pull out the middle cube", "push them together": a change SDI cannot
             # make to a structure it built; never a new structure read from those words
@@ -1736,7 +1804,7 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             pending.clear()
         try:
             spec, unused = _parse_or_base(p, st)
-            spec = _copies(spec, p.text, st)
+            spec = _copies(spec, p.text, st, structures)
         except SpecError:
             grown = _continues(p, phrases[:k])
             if grown is not None:

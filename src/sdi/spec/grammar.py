@@ -42,7 +42,7 @@ SIZE_TABLE: dict[str, dict[str, tuple[int, int, int]]] = {
     "block": {"length": (2, 3, 3), "width": (2, 3, 3), "height": (1, 2, 3)},
     "pack": {"count": (4, 8, 12)},
     "pyramid": {"length": (2, 3, 4)},
-    "staircase": {"steps": (2, 3, 5)},
+    "staircase": {"steps": (2, 3, 5), "width": (1, 2, 3)},
     "bridge": {"height": (1, 2, 3), "spans": (1, 1, 2)},
     "arch": {"height": (1, 2, 3)},
     "canopy": {"height": (2, 3, 4)},
@@ -297,6 +297,18 @@ class _Parser:
                     if after in ("axis", "direction", "wise", "dir"):
                         t[k + 1].used = True
                     continue
+            if (
+                w in ("front", "back")
+                and self.word(k + 1) == "to"
+                and self.word(k + 2)
+                in (
+                    "back",
+                    "front",
+                )
+            ):
+                self.axes.append((k, "x"))  # "front to back": an axis, not a region
+                t[k].used = t[k + 1].used = t[k + 2].used = True
+                continue
             if w in ("sideways", "lengthwise", "crosswise") or (
                 w == "left" and self.word(k + 1) == "to" and self.word(k + 2) == "right"
             ):
@@ -1277,6 +1289,9 @@ class _Parser:
                 "height": {"height", "steps"},
                 "width": {"width"},
             }.get(dim, set())
+            if dim == "width" and shape in ("wall", "row"):
+                dim = "length"  # "a wide wall": walls and rows are one part thick
+                related = {"length", "steps", "count", "spans"}
             if dim != "all" and not related & set(table):
                 dim = "all"  # "a short row", "a long tower": the size word applies overall
             for key, values in table.items():
