@@ -730,6 +730,24 @@ _REWRITES += [
         "read '{0}' as a part's width apart",
     ),
     (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
+    (re.compile(r"\b(?:underneath|beneath|below)\s*(?=[,;.]|$)", re.IGNORECASE), " ", ""),
+    (
+        re.compile(
+            r"\b(\d+|one|two|three|four|five)\s+(more|less|fewer)\s+(?:cubes?\s+|parts?\s+)?than\s+"
+            r"(\d+|[a-z]+)\b",
+            re.IGNORECASE,
+        ),
+        "{arith}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five)\s+more\s+(?:just\s+)?(?:like|of)\s+(?:it|them|that|those)\b",
+            re.IGNORECASE,
+        ),
+        "{more_like}",
+        "",
+    ),
     (
         re.compile(
             r"\bnear\s+(?:to\s+)?the\s+(back|front|left|right)(?:\s+(?:edge|side|end|wall))?\b",
@@ -776,7 +794,7 @@ _REWRITES += [
             r"(?:in\s+each|each|apiece)\b",
             re.IGNORECASE,
         ),
-        " {0} rows of {1} ",
+        "{rows_of}",
         "",
     ),
     (
@@ -1027,8 +1045,14 @@ def _normalise(command: str, notes: list[str] | None = None) -> str:
     for a, b in _SYMBOLS.items():
         text = text.replace(a, b)
     text = text.replace("@", " at ")
-    text = re.sub(r"\((?![\d\s.,-]+\))", " , ", text)  # "(two pillars, …)" but not "(0.4, 0.3)"
-    text = re.sub(r"(?<![\d\s])\)", " , ", text)
+    text = re.sub(r"\bontop\b", "on top", text, flags=re.IGNORECASE)
+
+    # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
+    text = re.sub(
+        r"\(([^()]*[A-Za-z][^()]*)\)",
+        lambda m: " " + m.group(1).replace(",", " and ") + " ",
+        text,
+    )
     for pattern, repl in _CONTRACTIONS:
         text = pattern.sub(repl, text)
     bad = _NOT_A_NUMBER.search(text)
@@ -1082,6 +1106,16 @@ def _normalise(command: str, notes: list[str] | None = None) -> str:
     for pattern, repl in _HOMOPHONES:
         text = pattern.sub(repl, text)
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
+    text = re.sub(
+        r"\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",
+        lambda m: (
+            f" {m.group(2)} {m.group(3) or ''} "
+            + {"L": "long", "H": "high", "W": "wide"}[m.group(1).upper()]
+            + " "
+        ),
+        text,
+        flags=re.IGNORECASE,
+    )
 
     def plus(m: re.Match[str]) -> str:
         total = int(m.group(1)) + int(m.group(2))
@@ -1317,6 +1351,20 @@ def _rewrite(text: str, st: _State) -> str:
             groups = [g.lower() if g else "" for g in m.groups()]
             if replacement == "{split}":
                 return _split(m, st)
+            if replacement == "{arith}":
+                a_, b_ = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
+                if not (a_.isdigit() and b_.isdigit()):
+                    return m.group(0)
+                value = int(b_) + (int(a_) if groups[1] == "more" else -int(a_))
+                st.notes.append(f"read '{said}' as {value}")
+                return f" {value} "
+            if replacement == "{more_like}":
+                shapes = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+                          if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+                if not shapes:
+                    return m.group(0)
+                noun = shapes[-1] if shapes[-1].endswith("s") else shapes[-1] + "s"
+                return f" {groups[0]} identical {noun} "
             if replacement == "{times}":
                 factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
                 base_n = words_to_numbers([groups[2]])[0]
@@ -1340,6 +1388,10 @@ def _rewrite(text: str, st: _State) -> str:
                     per = int(said_n[0]) // int(said_n[1])
                     return f" {per} by {said_n[1]} "
                 return m.group(0)
+            if replacement == "{rows_of}":
+                walls = re.search(r"\b(?:wall|walls|fence)\b", m.string[: m.start()], re.IGNORECASE)
+                unit = "levels" if walls else "rows"
+                return f" {groups[0]} {unit} of {groups[1]} "
             if replacement == "{layers}-layer":
                 n = {"double": 2, "triple": 3, "quadruple": 4}[groups[0]]
                 st.notes.append(note.format(said))
@@ -1644,6 +1696,23 @@ def _clause_phrases(
         commas = [n for n, i in enumerate(last) if doc[i].lower_ == ","]
         verbs = [n for n, i in enumerate(last) if doc[i].lower_ in _FRONTED_VERBS and n]
         cut = commas[0] if commas else (verbs[0] if verbs and len(markers) == 1 else None)
+        if cut is None and last and doc[last[0]].lower_ in ("it", "them", "that", "this"):
+            cut = 0  # "on it a tower of 3": the pronoun is the object
+        if cut is None:
+            # "behind the wall 3 long and 2 high a 3-cube tower": a second noun phrase
+            articles = [
+                n
+                for n, i in enumerate(last)
+                if n > 0
+                and doc[i].lower_ in ("a", "an")
+                and _names_structure(doc, last[n : n + 5])
+                and _names_structure(doc, last[:n])
+            ]
+            cut = articles[0] - 1 if articles else None
+            if cut is not None:
+                segments[0] = last[cut + 1 :]
+                segments[-1] = last[: cut + 1]
+                cut = None
         if cut is not None and _names_structure(doc, last[cut + 1 :]):
             segments[0] = last[cut + 1 :]
             segments[-1] = last[:cut]

@@ -502,6 +502,7 @@ class _Parser:
                 or prev in lx.SIZE_WORDS
                 or (self.is_num(k - 1) and self.toks[k - 1].used)
                 or (prev in lx.UNITS_M and self.toks[k - 1].used)  # "a 10 x 10 cm pad"
+                or (k == 0 and self.is_num(k + 1))  # "pad 150 x 100 mm"
             )
         if w in ("group", "arrangement", "formation"):
             return prev in lx.SIZE_WORDS or prev in ("compact", "dense", "tight", "close")
@@ -770,7 +771,7 @@ class _Parser:
                     continue
                 # "height of N", "length: N", "span of N", "base of N", "with N steps"
                 role: str | None = None
-                for back in (prev, prev2):
+                for back in (prev,) if prev in (",", ";", ":") else (prev, prev2):
                     if back in (
                         "height",
                         "tall",
