@@ -733,6 +733,16 @@ _REWRITES += [
     (re.compile(r"\b(?:underneath|beneath|below)\s*(?=[,;.]|$)", re.IGNORECASE), " ", ""),
     (
         re.compile(
+            r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at)\s+(?:top\s+of\s+)?(?:each|both|"
+            r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:end|ends|side|sides|corner|corners)"
+            r"(?:\s+of\s+(?:it|them|the\s+\w+))?",
+            re.IGNORECASE,
+        ),
+        "{placement}",
+        "",
+    ),
+    (
+        re.compile(
             r"\b(\d+|one|two|three|four|five)\s+(more|less|fewer)\s+(?:cubes?\s+|parts?\s+)?than\s+"
             r"(\d+|[a-z]+)\b",
             re.IGNORECASE,
@@ -1351,6 +1361,19 @@ def _rewrite(text: str, st: _State) -> str:
             groups = [g.lower() if g else "" for g in m.groups()]
             if replacement == "{split}":
                 return _split(m, st)
+            if replacement == "{placement}":
+                if re.search(r"\b(?:castle|fort|fortress|citadel)s?\b", m.string, re.IGNORECASE):
+                    return m.group(0)  # "a castle with a tower at each corner": the family's own
+                if re.search(
+                    r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]
+                ):
+                    return m.group(0)  # "a courtyard 5 cubes on each side": a size
+                st.material.append(said)
+                st.notes.append(
+                    f"ignored '{said}': parts cannot be placed on a chosen end, side or corner "
+                    "of a structure yet"
+                )
+                return " "
             if replacement == "{arith}":
                 a_, b_ = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
                 if not (a_.isdigit() and b_.isdigit()):
