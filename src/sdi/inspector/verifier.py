@@ -16,6 +16,7 @@ from pydantic import BaseModel, ConfigDict
 
 from sdi.errors import InputError
 from sdi.inspector.analysis import Analysis, Precedence
+from sdi.inspector.equilibrium import alone, robust, solve
 from sdi.inspector.sequencer import disassemble
 from sdi.inspector.stability import find_toppling
 from sdi.inspector.violation import Constraint, Violation, fmt, fmt_point
@@ -189,10 +190,19 @@ def _free(a: Analysis, centre: np.ndarray, half: np.ndarray, *, skip: int) -> bo
 
 
 def check_stability(a: Analysis) -> list[Violation]:
-    """Beyond the paper: each sub-structure's centre of mass is over its support polygon."""
+    """Beyond the paper: the layout stands.
+
+    Three tests, each part reported once: every sub-structure's centre of mass is over its
+    support polygon (with a fix that moves it there); every part stands on its own supports
+    when it is placed (nothing rests on it yet); and static equilibrium of the whole layout by
+    LP (`equilibrium.solve`): contacts only push, so parts on top cannot hold up the part
+    they rest on."""
     ids = a.layout.ids
+    margin = a.cell.tolerances.stability_margin
     out = []
-    for t in find_toppling(a.graph, a.cell.tolerances.stability_margin):
+    covered: set[int] = set()
+    for t in find_toppling(a.graph, margin):
+        covered.update(t.parts)
         names = [ids[i] for i in t.parts]
         movers = [ids[i] for i in t.movers]
         suggestion: dict[str, object] | None = None
@@ -215,7 +225,122 @@ def check_stability(a: Analysis) -> list[Violation]:
                 suggestion=suggestion,
             )
         )
+    lonely = [i for i in alone(a.graph, margin).tolist() if i not in covered]
+    for i in lonely:
+        out.append(_unbalanced(a, i, placed=True))
+    covered.update(lonely)
+    if not out:  # the LP only when the cheaper tests found nothing (a failing layout is refused)
+        for i in solve(a.graph, margin, friction=STABILITY_FRICTION).unbalanced:
+            if i not in covered:
+                out.append(_unbalanced(a, i, placed=False))
     return out
+
+
+STABILITY_FRICTION = 0.0
+"""Friction coefficient the equilibrium LP may rely on. Zero: loads are gravity only and
+contacts horizontal, so a layout that stands needs no friction, and friction in a rigid-body
+LP also admits self-stressed force states a real (or simulated) stack does not reach."""
+
+PREFIX_LP_LIMIT = 200
+"""At most this many intermediate assembly states are checked by LP per verify."""
+
+
+def _supports_of(a: Analysis, i: int) -> list[int]:
+    edges = a.graph.support_edges
+    return edges[edges[:, 1] == i, 0].tolist()
+
+
+def _support_spot(a: Analysis, i: int) -> np.ndarray:
+    """Where a part under `i` would hold it: the cube-sized cell of its footprint farthest
+    from its present supports, one cube below its bottom."""
+    c, h = a.layout.centres, a.layout.half_extents
+    cube = np.array(a.cell.cube) / 2
+    patches = a.graph.support_patches[a.graph.support_edges[:, 1] == i]
+    anchor = np.array([patches[:, :2].mean(), patches[:, 2:].mean()]) if len(patches) else c[i, :2]
+    reach = np.maximum(h[i, :2] - cube[:2], 0.0)
+    best = c[i, :2]
+    for sx in (-1.0, 0.0, 1.0):
+        for sy in (-1.0, 0.0, 1.0):
+            p = c[i, :2] + np.array([sx, sy]) * reach
+            if np.linalg.norm(p - anchor) > np.linalg.norm(best - anchor) + 1e-9:
+                best = p
+    return np.array([best[0], best[1], c[i, 2] - h[i, 2] - cube[2]])
+
+
+def _unbalanced(a: Analysis, i: int, *, placed: bool, when: str = "") -> Violation:
+    """Part `i` cannot be held still: alone on its supports (`placed`), or under its load."""
+    ids = a.layout.ids
+    pid = ids[i]
+    supports = [ids[k] for k in _supports_of(a, i)]
+    on = _names(supports) if supports else "the table"
+    edges = a.graph.support_edges
+    above = [ids[k] for k in edges[edges[:, 0] == i, 1].tolist()]
+    com = (float(a.layout.centres[i, 0]), float(a.layout.centres[i, 1]))
+    if placed:
+        message = (
+            f"{pid} cannot stand on {on}: its centre of mass {fmt_point(com)} is not over "
+            f"its support ({fmt(a.cell.tolerances.stability_margin)} m margin)"
+        )
+        if above:
+            message += f"; {_names(above)} on top of it press it down but cannot hold it up"
+    else:
+        message = (
+            f"no contact forces hold {pid} still{when}: resting on {on}, it cannot carry "
+            f"{'the parts on it (' + _names(above) + ')' if above else 'its own weight'} "
+            "without tipping"
+        )
+    spot = _support_spot(a, i)
+    suggestion: dict[str, object] | None = None
+    if spot[2] > 0 and _free(a, spot, np.array(a.cell.cube) / 2, skip=i):
+        hint = f"add a part under {pid} at {fmt_point(tuple(spot))}, or shorten the overhang"
+        suggestion = {"add_part_at": [round(float(v), 6) for v in spot]}
+    else:
+        hint = f"move {pid} back over {on}, or shorten the overhang"
+    objects = (pid, *[s for s in supports if s != pid][:4])
+    return Violation(
+        constraint=Constraint.STABILITY,
+        objects=objects,
+        message=message,
+        hint=hint,
+        suggestion=suggestion,
+    )
+
+
+def check_assembly_states(a: Analysis, sequence: Sequence[str]) -> list[Violation]:
+    """Stability of the intermediate states: after each step, the parts placed so far stand.
+
+    A part that could tip only carries its own weight and what rests on it; a state can fall
+    only when some placed part is not `robust` (its supports do not span its footprint) and
+    a later part was its counterweight. Only the steps that load such a part are solved, at
+    most `PREFIX_LP_LIMIT` of them."""
+    margin = a.cell.tolerances.stability_margin
+    index = a.layout.index
+    order = [index[pid] for pid in sequence]
+    weak = ~robust(a.graph)
+    if not weak.any():
+        return []
+    edges = a.graph.support_edges
+    n = len(a.layout)
+    ptr_sorted = edges[np.argsort(edges[:, 1], kind="stable")]
+    ptr = np.searchsorted(ptr_sorted[:, 1], np.arange(n + 1))
+    risky = np.zeros(n, dtype=bool)  # rests, at some depth, on a weak part
+    placed = np.zeros(n, dtype=bool)
+    checks = 0
+    for step, i in enumerate(order[:-1], start=1):
+        below = ptr_sorted[ptr[i] : ptr[i + 1], 0]
+        risky[i] = bool(np.any(weak[below] | risky[below]))
+        placed[i] = True
+        if not risky[i] or not weak[placed].any():
+            continue
+        checks += 1
+        if checks > PREFIX_LP_LIMIT:
+            break
+        eq = solve(a.graph, margin, members=np.nonzero(placed)[0], friction=STABILITY_FRICTION)
+        if not eq.stands:
+            ids = a.layout.ids
+            when = f" after step {step} (placing {ids[i]})"
+            return [_unbalanced(a, k, placed=False, when=when) for k in eq.unbalanced]
+    return []
 
 
 def _rank(a: Analysis, sequence: Sequence[str]) -> np.ndarray:
@@ -424,6 +549,12 @@ def verify(
         violations.extend(check(a))
     order_v, order = order_violations(a, sequence)
     violations.extend(order_v)
+    if (
+        order is not None
+        and not order_v
+        and not any(v.constraint == Constraint.STABILITY for v in violations)
+    ):
+        violations.extend(check_assembly_states(a, order))
     return Report(
         passed=not violations,
         violations=tuple(violations),
