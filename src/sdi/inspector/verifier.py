@@ -13,10 +13,12 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
 
 from sdi.errors import InputError
 from sdi.inspector.analysis import Analysis, Precedence
-from sdi.inspector.equilibrium import alone, robust, solve
+from sdi.inspector.equilibrium import alone, robust, solve, solve_many, upward_closure
 from sdi.inspector.sequencer import disassemble
 from sdi.inspector.stability import find_toppling
 from sdi.inspector.violation import Constraint, Violation, fmt, fmt_point
@@ -229,8 +231,13 @@ def check_stability(a: Analysis) -> list[Violation]:
     for i in lonely:
         out.append(_unbalanced(a, i, placed=True))
     covered.update(lonely)
-    if not out:  # the LP only when the cheaper tests found nothing (a failing layout is refused)
-        for i in solve(a.graph, margin, friction=STABILITY_FRICTION).unbalanced:
+    # The LP only when the cheaper tests found nothing (the layout is refused anyway), and
+    # only over the parts that could tip: those not `robust` and everything resting on them.
+    # A robust part balances any load on its top, so the rest needs no forces solved.
+    weak = np.nonzero(~robust(a.graph))[0]
+    if not out and weak.size:
+        members = upward_closure(a.graph, weak)
+        for i in solve(a.graph, margin, members=members, friction=STABILITY_FRICTION).unbalanced:
             if i not in covered:
                 out.append(_unbalanced(a, i, placed=False))
     return out
@@ -241,8 +248,9 @@ STABILITY_FRICTION = 0.0
 contacts horizontal, so a layout that stands needs no friction, and friction in a rigid-body
 LP also admits self-stressed force states a real (or simulated) stack does not reach."""
 
-PREFIX_LP_LIMIT = 200
-"""At most this many intermediate assembly states are checked by LP per verify."""
+PREFIX_LP_BUDGET = 20_000
+"""Intermediate assembly states are solved (in one LP) until their groups hold this many
+parts in all; later states of a layout that needs more go unchecked."""
 
 
 def _supports_of(a: Analysis, i: int) -> list[int]:
@@ -267,7 +275,9 @@ def _support_spot(a: Analysis, i: int) -> np.ndarray:
     return np.array([best[0], best[1], c[i, 2] - h[i, 2] - cube[2]])
 
 
-def _unbalanced(a: Analysis, i: int, *, placed: bool, when: str = "") -> Violation:
+def _unbalanced(
+    a: Analysis, i: int, *, placed: bool, when: str = "", first: Sequence[str] = ()
+) -> Violation:
     """Part `i` cannot be held still: alone on its supports (`placed`), or under its load."""
     ids = a.layout.ids
     pid = ids[i]
@@ -296,6 +306,11 @@ def _unbalanced(a: Analysis, i: int, *, placed: bool, when: str = "") -> Violati
         suggestion = {"add_part_at": [round(float(v), 6) for v in spot]}
     else:
         hint = f"move {pid} back over {on}, or shorten the overhang"
+    if first:  # an intermediate state: a part put on later holds it
+        hint = (
+            f"place {_names(list(first), 3)} earlier (before {when.split('placing ')[-1][:-1]}); "
+            + hint
+        )
     objects = (pid, *[s for s in supports if s != pid][:4])
     return Violation(
         constraint=Constraint.STABILITY,
@@ -311,35 +326,54 @@ def check_assembly_states(a: Analysis, sequence: Sequence[str]) -> list[Violatio
 
     A part that could tip only carries its own weight and what rests on it; a state can fall
     only when some placed part is not `robust` (its supports do not span its footprint) and
-    a later part was its counterweight. Only the steps that load such a part are solved, at
-    most `PREFIX_LP_LIMIT` of them."""
+    a later part was its counterweight. Only the steps that load such a part are solved, each
+    over the group the new part joins, all in one block-diagonal LP, up to `PREFIX_LP_BUDGET`
+    parts in all (the first states along the sequence; later ones go unchecked)."""
     margin = a.cell.tolerances.stability_margin
     index = a.layout.index
     order = [index[pid] for pid in sequence]
     weak = ~robust(a.graph)
     if not weak.any():
         return []
+    closure = upward_closure(a.graph, np.nonzero(weak)[0])
     edges = a.graph.support_edges
     n = len(a.layout)
+    # Only the new part's group can change: the weak parts and what rests on them, joined by
+    # support edges (parts outside the group hold it as fixed ground).
+    inside = np.zeros(n, dtype=bool)
+    inside[closure] = True
+    e = edges[inside[edges[:, 0]] & inside[edges[:, 1]]]
+    joined = coo_matrix((np.ones(len(e)), (e[:, 0], e[:, 1])), shape=(n, n))
+    _, label = connected_components(joined, directed=False)
     ptr_sorted = edges[np.argsort(edges[:, 1], kind="stable")]
     ptr = np.searchsorted(ptr_sorted[:, 1], np.arange(n + 1))
     risky = np.zeros(n, dtype=bool)  # rests, at some depth, on a weak part
     placed = np.zeros(n, dtype=bool)
-    checks = 0
+    states: list[tuple[int, int, np.ndarray]] = []  # (step, new part, the group to solve)
+    budget = PREFIX_LP_BUDGET
     for step, i in enumerate(order[:-1], start=1):
         below = ptr_sorted[ptr[i] : ptr[i + 1], 0]
         risky[i] = bool(np.any(weak[below] | risky[below]))
         placed[i] = True
-        if not risky[i] or not weak[placed].any():
-            continue
-        checks += 1
-        if checks > PREFIX_LP_LIMIT:
-            break
-        eq = solve(a.graph, margin, members=np.nonzero(placed)[0], friction=STABILITY_FRICTION)
+        if risky[i]:
+            group = np.nonzero(placed & (label == label[i]))[0]
+            budget -= group.size
+            if budget < 0:
+                break
+            states.append((step, i, group))
+    if not states:
+        return []
+    answers = solve_many(a.graph, margin, [g for _, _, g in states], friction=STABILITY_FRICTION)
+    for (step, i, _), eq in zip(states, answers, strict=True):
         if not eq.stands:
             ids = a.layout.ids
             when = f" after step {step} (placing {ids[i]})"
-            return [_unbalanced(a, k, placed=False, when=when) for k in eq.unbalanced]
+            rank = _rank(a, sequence)
+            edges_all = a.graph.support_edges
+            on_them = edges_all[np.isin(edges_all[:, 0], eq.unbalanced), 1]
+            later = [ids[k] for k in on_them.tolist() if rank[k] >= step]
+            tipping = [k for k in eq.unbalanced if weak[k]] or eq.unbalanced
+            return [_unbalanced(a, k, placed=False, when=when, first=later) for k in tipping]
     return []
 
 
