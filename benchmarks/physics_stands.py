@@ -157,7 +157,7 @@ def tricky(seeds: int) -> dict[str, Any]:
 
     rows = []
     for case in cases():
-        rep = verify(case.layout)
+        rep = verify(case.layout, sequence=case.sequence)
         a = Analysis(case.layout, CellConfig())
         others = [v for v in rep.violations if v.constraint != Constraint.STABILITY]
         com_only = not others and not find_toppling(a.graph, a.cell.tolerances.stability_margin)

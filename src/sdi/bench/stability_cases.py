@@ -1,9 +1,10 @@
 """Hand-made layouts that are hard for a stability check: cantilevers, overhangs, a canopy with
 a pillar missing, beams on one support, counterweights, loads on a tip, a stepped overhang.
 
-Each case carries the answer physics gives (assembled in PyBullet in the Inspector's order,
-`sdi.execute.physics_check.assemble`): `stands`. The Inspector must refuse every case that
-falls; `tests/test_stability.py` and `benchmarks/physics_stands.py` hold it to that.
+Each case carries the answer physics gives (`sdi.execute.physics_check.assemble`, in the
+case's `sequence` when it gives one, else in the Inspector's order): `stands`. The Inspector
+must refuse every case that falls; `tests/test_stability.py` and `benchmarks/physics_stands.py`
+hold it to that.
 Units are metres; 5 cm cubes and 15 × 5 × 5 cm beams; the table top is z = 0.
 """
 
@@ -25,6 +26,8 @@ class Case:
     stands: bool
     """What physics says (PyBullet, 1 mm jitter, the Inspector's order)."""
     note: str
+    sequence: tuple[str, ...] | None = None
+    """The order to check and assemble in (None: the Inspector's own)."""
 
 
 def _cube(pid: str, x: float, y: float, level: int) -> Part:
@@ -56,6 +59,18 @@ def _canopy(drop_pillar: bool) -> Layout:
     if drop_pillar:
         parts = parts[1:]
     return Layout(objects=tuple(parts))
+
+
+def _counterweighted() -> Layout:
+    y = 0.3
+    return Layout(
+        objects=(
+            _cube("p", 0.45, y, 0),
+            _beam("beam", 0.43, y, 0.075),
+            _cube("tip", 0.38, y, 2),
+            _cube("weight", 0.48, y, 2),
+        )
+    )
 
 
 def cases() -> list[Case]:
@@ -176,17 +191,18 @@ def cases() -> list[Case]:
         ),
         Case(
             "counterweight_after_the_load",
-            Layout(
-                objects=(
-                    _cube("p", 0.45, y, 0),
-                    _beam("beam", 0.43, y, 0.075),
-                    _cube("tip", 0.38, y, 2),
-                    _cube("weight", 0.48, y, 2),
-                )
-            ),
+            _counterweighted(),
             False,
-            "a beam 2 cm off its one support; the load on the long end goes on before the "
-            "counterweight (the preferred order is by x), so the beam tips in between",
+            "a beam 2 cm off its one support; the operator's order puts the load on the long end "
+            "before the counterweight, so the beam tips in between",
+            sequence=("p", "beam", "tip", "weight"),
+        ),
+        Case(
+            "counterweight_order_by_the_inspector",
+            _counterweighted(),
+            True,
+            "the same layout in the Inspector's order: the preferred order (by x) puts the load "
+            "first and falls, so the Inspector moves the counterweight before it",
         ),
         Case(
             "counterweight_before_the_load",

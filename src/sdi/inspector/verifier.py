@@ -322,7 +322,51 @@ def _unbalanced(
 
 
 def check_assembly_states(a: Analysis, sequence: Sequence[str]) -> list[Violation]:
-    """Stability of the intermediate states: after each step, the parts placed so far stand.
+    """Stability of the intermediate states: after each step, the parts placed so far stand
+    (see `_falling_state`)."""
+    fall = _falling_state(a, sequence)
+    if fall is None:
+        return []
+    step, i, tipping, later = fall
+    ids = a.layout.ids
+    when = f" after step {step} (placing {ids[i]})"
+    first = [ids[k] for k in later]
+    return [_unbalanced(a, k, placed=False, when=when, first=first) for k in tipping]
+
+
+MAX_REORDERS = 8
+"""Counterweights moved earlier, at most this many times, when the Inspector picks the order."""
+
+
+def stable_order(a: Analysis, sequence: Sequence[str]) -> list[str] | None:
+    """`sequence` with counterweights moved earlier until every assembly state stands, or None.
+
+    When a state falls, the parts that rest on the tipping part and come later (its
+    counterweights) move to just before the part whose placement tipped it; the new order must
+    still satisfy gravity, sequence and gripping."""
+    order = list(sequence)
+    ids = a.layout.ids
+    for _ in range(MAX_REORDERS):
+        fall = _falling_state(a, order)
+        if fall is None:
+            return order
+        _, i, _, later = fall
+        if not later:
+            return None
+        moved = [ids[k] for k in later]
+        rest = [p for p in order if p not in set(moved)]
+        at = rest.index(ids[i])
+        order = rest[:at] + moved + rest[at:]
+        if check_order(a, order) or check_gripping_order(a, order):
+            return None
+    return None
+
+
+def _falling_state(
+    a: Analysis, sequence: Sequence[str]
+) -> tuple[int, int, list[int], list[int]] | None:
+    """The first assembly state that falls: (step, the part placed then, the parts that tip,
+    the parts resting on those that come later), or None.
 
     A part that could tip only carries its own weight and what rests on it; a state can fall
     only when some placed part is not `robust` (its supports do not span its footprint) and
@@ -334,7 +378,7 @@ def check_assembly_states(a: Analysis, sequence: Sequence[str]) -> list[Violatio
     order = [index[pid] for pid in sequence]
     weak = ~robust(a.graph)
     if not weak.any():
-        return []
+        return None
     closure = upward_closure(a.graph, np.nonzero(weak)[0])
     edges = a.graph.support_edges
     n = len(a.layout)
@@ -362,19 +406,16 @@ def check_assembly_states(a: Analysis, sequence: Sequence[str]) -> list[Violatio
                 break
             states.append((step, i, group))
     if not states:
-        return []
+        return None
     answers = solve_many(a.graph, margin, [g for _, _, g in states], friction=STABILITY_FRICTION)
     for (step, i, _), eq in zip(states, answers, strict=True):
         if not eq.stands:
-            ids = a.layout.ids
-            when = f" after step {step} (placing {ids[i]})"
             rank = _rank(a, sequence)
-            edges_all = a.graph.support_edges
-            on_them = edges_all[np.isin(edges_all[:, 0], eq.unbalanced), 1]
-            later = [ids[k] for k in on_them.tolist() if rank[k] >= step]
             tipping = [k for k in eq.unbalanced if weak[k]] or eq.unbalanced
-            return [_unbalanced(a, k, placed=False, when=when, first=later) for k in tipping]
-    return []
+            on_them = edges[np.isin(edges[:, 0], tipping), 1]
+            later = sorted({k for k in on_them.tolist() if rank[k] >= step}, key=lambda k: rank[k])
+            return step, i, tipping, later
+    return None
 
 
 def _rank(a: Analysis, sequence: Sequence[str]) -> np.ndarray:
@@ -588,7 +629,11 @@ def verify(
         and not order_v
         and not any(v.constraint == Constraint.STABILITY for v in violations)
     ):
-        violations.extend(check_assembly_states(a, order))
+        states = check_assembly_states(a, order)
+        better = stable_order(a, order) if states and sequence is None else None
+        if better is not None:  # the Inspector chose the order: put counterweights first
+            order, states = better, []
+        violations.extend(states)
     return Report(
         passed=not violations,
         violations=tuple(violations),
