@@ -9,14 +9,16 @@
    canopy, beams on one support, counterweights. For each: the Inspector's verdict now, the
    centre-of-mass test alone (the check before the equilibrium LP), and physics in the
    Inspector's order over the seeds (stands = stands for every seed).
-3. Verify time (best of 5, one process) on the suite's group E layouts (13–24 parts) and on
+3. Perturbed layouts (`--perturbed`, default 150): a suite layout or one of a few other
+   commands' with one part removed or moved; those the Inspector passes must stand.
+4. Verify time (best of 5, one process) on the suite's group E layouts (13–24 parts) and on
    1 000-part layouts: a field of 4-level columns, 334 bridges, and 250 beams balanced on one
    cube with a cube on each end (every beam could tip: the LP and the intermediate-state
    check have work to do). `--timing-only` runs just this part,
    importing nothing new, so it also runs on an older tree for a before/after comparison.
 
 Writes `benchmarks/results/physics_stands.json`.
-Run: `python benchmarks/physics_stands.py [--seeds 3] [--timing-only]`.
+Run: `python benchmarks/physics_stands.py [--seeds 3] [--perturbed 150] [--timing-only]`.
 """
 
 from __future__ import annotations
@@ -194,10 +196,67 @@ def tricky(seeds: int) -> dict[str, Any]:
     }
 
 
+EXTRA = (
+    "a canopy 2 high",
+    "an arch",
+    "a bridge 3 high",
+    "a staircase of 5 steps",
+    "a pyramid 4 wide",
+    "a bridge with 2 spans",
+    "a castle",
+)
+"""Commands outside the suite whose layouts join the perturbation pool."""
+
+
+def perturbed(n: int, seed: int = 1) -> dict[str, Any]:
+    """Layouts nobody designed: a suite layout (≤ 16 parts) or one of `EXTRA`, with one part
+    removed (40 %) or one part moved by up to 4 cm in x and y. Those the Inspector passes are
+    assembled in its order; all should stand."""
+    import random
+
+    from sdi.bench.suite import SUITE
+    from sdi.execute.physics_check import assemble
+    from sdi.pipeline import plan
+
+    rng = random.Random(seed)
+    pool = []
+    for text in [c.text for c in SUITE] + list(EXTRA):
+        r = plan(text)
+        if r.status == "success" and r.layout is not None and len(r.layout) <= 16:
+            pool.append(r.layout)
+    passed = refused = 0
+    fell: list[dict[str, Any]] = []
+    for k in range(n):
+        objs = list(rng.choice(pool).objects)
+        if rng.random() < 0.4 and len(objs) > 2:
+            objs.pop(rng.randrange(len(objs)))
+        else:
+            i = rng.randrange(len(objs))
+            if objs[i].bottom > 0.001 or rng.random() < 0.3:
+                objs[i] = objs[i].moved(rng.uniform(-0.04, 0.04), rng.uniform(-0.04, 0.04))
+        lay = Layout(objects=tuple(objs))
+        rep = verify(lay)
+        if not rep.passed:
+            refused += 1
+            continue
+        passed += 1
+        stood = assemble(lay, rep.sequence, seed=k)
+        if not stood.stands:
+            fell.append({"k": k, **stood.to_json_dict(), "layout": lay.model_dump(mode="json")})
+    return {
+        "layouts": n,
+        "seed": seed,
+        "passed": passed,
+        "refused": refused,
+        "passed_and_fell": fell,
+    }
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--timing-only", action="store_true")
+    ap.add_argument("--perturbed", type=int, default=150, help="perturbed layouts to try")
     args = ap.parse_args()
     if args.timing_only:
         print(json.dumps(timing(), indent=1))
@@ -210,6 +269,7 @@ def main() -> None:
         "physics": {"jitter_m": 0.001, "tolerance_m": 0.005, "max_tilt_deg": 3.0},
         "suite": suite_physics(args.seeds),
         "tricky": tricky(args.seeds),
+        "perturbed": perturbed(args.perturbed),
         "verify_time": timing(),
     }
     result["seconds"] = round(time.perf_counter() - t0, 1)
@@ -220,7 +280,9 @@ def main() -> None:
         f"suite: {s['verified_and_stand']}/{s['verified']} verified layouts stand "
         f"({s['commands']} commands); tricky: Inspector and physics agree on "
         f"{t['agree']}/{t['cases']} (centre-of-mass test alone: {t['com_test_agreed']}); "
-        f"passed but fell: {t['inspector_passes_and_falls']}"
+        f"passed but fell: {t['inspector_passes_and_falls']}; perturbed: "
+        f"{len(result['perturbed']['passed_and_fell'])} of {result['perturbed']['passed']} "
+        "passed fell"
     )
 
 
