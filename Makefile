@@ -47,6 +47,7 @@ test: $(STAMP) $(LOCAL_STAMP)
 
 bench: $(STAMP) $(LOCAL_STAMP)
 	$(PY) benchmarks/inspector_scaling.py
+	$(PY) benchmarks/physics_stands.py
 	$(PY) benchmarks/plan_latency.py
 	$(PY) benchmarks/language.py --set all
 	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json --force

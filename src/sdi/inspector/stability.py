@@ -7,6 +7,11 @@ sub-structures; each one rests on the contact patches of the support edges that 
 centre of mass (uniform density) lies inside the convex hull of those patches, by a margin. A
 part on its own is checked at the cut through its own bottom face, together with everything it
 carries. Cost: O(H·N) for H distinct bottom heights, vectorised per cut.
+
+Treating the sub-structure as rigid is optimistic — contacts only push, so a part on top cannot
+hold up the part it rests on (a canopy with a pillar removed passes here). The verifier
+therefore also runs `sdi.inspector.equilibrium` (each part its own body, forces by LP); this
+module stays for the fixes it computes (which parts to move, by how much).
 """
 
 from __future__ import annotations

@@ -13,9 +13,12 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
 
 from sdi.errors import InputError
 from sdi.inspector.analysis import Analysis, Precedence
+from sdi.inspector.equilibrium import alone, robust, solve, solve_many, upward_closure
 from sdi.inspector.sequencer import disassemble
 from sdi.inspector.stability import find_toppling
 from sdi.inspector.violation import Constraint, Violation, fmt, fmt_point
@@ -189,10 +192,19 @@ def _free(a: Analysis, centre: np.ndarray, half: np.ndarray, *, skip: int) -> bo
 
 
 def check_stability(a: Analysis) -> list[Violation]:
-    """Beyond the paper: each sub-structure's centre of mass is over its support polygon."""
+    """Beyond the paper: the layout stands.
+
+    Three tests, each part reported once: every sub-structure's centre of mass is over its
+    support polygon (with a fix that moves it there); every part stands on its own supports
+    when it is placed (nothing rests on it yet); and static equilibrium of the whole layout by
+    LP (`equilibrium.solve`): contacts only push, so parts on top cannot hold up the part
+    they rest on."""
     ids = a.layout.ids
+    margin = a.cell.tolerances.stability_margin
     out = []
-    for t in find_toppling(a.graph, a.cell.tolerances.stability_margin):
+    covered: set[int] = set()
+    for t in find_toppling(a.graph, margin):
+        covered.update(t.parts)
         names = [ids[i] for i in t.parts]
         movers = [ids[i] for i in t.movers]
         suggestion: dict[str, object] | None = None
@@ -215,7 +227,195 @@ def check_stability(a: Analysis) -> list[Violation]:
                 suggestion=suggestion,
             )
         )
+    lonely = [i for i in alone(a.graph, margin).tolist() if i not in covered]
+    for i in lonely:
+        out.append(_unbalanced(a, i, placed=True))
+    covered.update(lonely)
+    # The LP only when the cheaper tests found nothing (the layout is refused anyway), and
+    # only over the parts that could tip: those not `robust` and everything resting on them.
+    # A robust part balances any load on its top, so the rest needs no forces solved.
+    weak = np.nonzero(~robust(a.graph))[0]
+    if not out and weak.size:
+        members = upward_closure(a.graph, weak)
+        for i in solve(a.graph, margin, members=members, friction=STABILITY_FRICTION).unbalanced:
+            if i not in covered:
+                out.append(_unbalanced(a, i, placed=False))
     return out
+
+
+STABILITY_FRICTION = 0.0
+"""Friction coefficient the equilibrium LP may rely on. Zero: loads are gravity only and
+contacts horizontal, so a layout that stands needs no friction, and friction in a rigid-body
+LP also admits self-stressed force states a real (or simulated) stack does not reach."""
+
+PREFIX_LP_BUDGET = 20_000
+"""Intermediate assembly states are solved (in one LP) until their groups hold this many
+parts in all; later states of a layout that needs more go unchecked."""
+
+
+def _supports_of(a: Analysis, i: int) -> list[int]:
+    edges = a.graph.support_edges
+    return edges[edges[:, 1] == i, 0].tolist()
+
+
+def _support_spot(a: Analysis, i: int) -> np.ndarray:
+    """Where a part under `i` would hold it: the cube-sized cell of its footprint farthest
+    from its present supports, one cube below its bottom."""
+    c, h = a.layout.centres, a.layout.half_extents
+    cube = np.array(a.cell.cube) / 2
+    patches = a.graph.support_patches[a.graph.support_edges[:, 1] == i]
+    anchor = np.array([patches[:, :2].mean(), patches[:, 2:].mean()]) if len(patches) else c[i, :2]
+    reach = np.maximum(h[i, :2] - cube[:2], 0.0)
+    best = c[i, :2]
+    for sx in (-1.0, 0.0, 1.0):
+        for sy in (-1.0, 0.0, 1.0):
+            p = c[i, :2] + np.array([sx, sy]) * reach
+            if np.linalg.norm(p - anchor) > np.linalg.norm(best - anchor) + 1e-9:
+                best = p
+    return np.array([best[0], best[1], c[i, 2] - h[i, 2] - cube[2]])
+
+
+def _unbalanced(
+    a: Analysis, i: int, *, placed: bool, when: str = "", first: Sequence[str] = ()
+) -> Violation:
+    """Part `i` cannot be held still: alone on its supports (`placed`), or under its load."""
+    ids = a.layout.ids
+    pid = ids[i]
+    supports = [ids[k] for k in _supports_of(a, i)]
+    on = _names(supports) if supports else "the table"
+    edges = a.graph.support_edges
+    above = [ids[k] for k in edges[edges[:, 0] == i, 1].tolist()]
+    com = (float(a.layout.centres[i, 0]), float(a.layout.centres[i, 1]))
+    if placed:
+        message = (
+            f"{pid} cannot stand on {on}: its centre of mass {fmt_point(com)} is not over "
+            f"its support ({fmt(a.cell.tolerances.stability_margin)} m margin)"
+        )
+        if above:
+            message += f"; {_names(above)} on top of it press it down but cannot hold it up"
+    else:
+        message = (
+            f"no contact forces hold {pid} still{when}: resting on {on}, it cannot carry "
+            f"{'the parts on it (' + _names(above) + ')' if above else 'its own weight'} "
+            "without tipping"
+        )
+    spot = _support_spot(a, i)
+    suggestion: dict[str, object] | None = None
+    if spot[2] > 0 and _free(a, spot, np.array(a.cell.cube) / 2, skip=i):
+        hint = f"add a part under {pid} at {fmt_point(tuple(spot))}, or shorten the overhang"
+        suggestion = {"add_part_at": [round(float(v), 6) for v in spot]}
+    else:
+        hint = f"move {pid} back over {on}, or shorten the overhang"
+    if first:  # an intermediate state: a part put on later holds it
+        hint = (
+            f"place {_names(list(first), 3)} earlier (before {when.split('placing ')[-1][:-1]}); "
+            + hint
+        )
+    objects = (pid, *[s for s in supports if s != pid][:4])
+    return Violation(
+        constraint=Constraint.STABILITY,
+        objects=objects,
+        message=message,
+        hint=hint,
+        suggestion=suggestion,
+    )
+
+
+def check_assembly_states(a: Analysis, sequence: Sequence[str]) -> list[Violation]:
+    """Stability of the intermediate states: after each step, the parts placed so far stand
+    (see `_falling_state`)."""
+    fall = _falling_state(a, sequence)
+    if fall is None:
+        return []
+    step, i, tipping, later = fall
+    ids = a.layout.ids
+    when = f" after step {step} (placing {ids[i]})"
+    first = [ids[k] for k in later]
+    return [_unbalanced(a, k, placed=False, when=when, first=first) for k in tipping]
+
+
+MAX_REORDERS = 8
+"""Counterweights moved earlier, at most this many times, when the Inspector picks the order."""
+
+
+def stable_order(a: Analysis, sequence: Sequence[str]) -> list[str] | None:
+    """`sequence` with counterweights moved earlier until every assembly state stands, or None.
+
+    When a state falls, the parts that rest on the tipping part and come later (its
+    counterweights) move to just before the part whose placement tipped it; the new order must
+    still satisfy gravity, sequence and gripping."""
+    order = list(sequence)
+    ids = a.layout.ids
+    for _ in range(MAX_REORDERS):
+        fall = _falling_state(a, order)
+        if fall is None:
+            return order
+        _, i, _, later = fall
+        if not later:
+            return None
+        moved = [ids[k] for k in later]
+        rest = [p for p in order if p not in set(moved)]
+        at = rest.index(ids[i])
+        order = rest[:at] + moved + rest[at:]
+        if check_order(a, order) or check_gripping_order(a, order):
+            return None
+    return None
+
+
+def _falling_state(
+    a: Analysis, sequence: Sequence[str]
+) -> tuple[int, int, list[int], list[int]] | None:
+    """The first assembly state that falls: (step, the part placed then, the parts that tip,
+    the parts resting on those that come later), or None.
+
+    A part that could tip only carries its own weight and what rests on it; a state can fall
+    only when some placed part is not `robust` (its supports do not span its footprint) and
+    a later part was its counterweight. Only the steps that load such a part are solved, each
+    over the group the new part joins, all in one block-diagonal LP, up to `PREFIX_LP_BUDGET`
+    parts in all (the first states along the sequence; later ones go unchecked)."""
+    margin = a.cell.tolerances.stability_margin
+    index = a.layout.index
+    order = [index[pid] for pid in sequence]
+    weak = ~robust(a.graph)
+    if not weak.any():
+        return None
+    closure = upward_closure(a.graph, np.nonzero(weak)[0])
+    edges = a.graph.support_edges
+    n = len(a.layout)
+    # Only the new part's group can change: the weak parts and what rests on them, joined by
+    # support edges (parts outside the group hold it as fixed ground).
+    inside = np.zeros(n, dtype=bool)
+    inside[closure] = True
+    e = edges[inside[edges[:, 0]] & inside[edges[:, 1]]]
+    joined = coo_matrix((np.ones(len(e)), (e[:, 0], e[:, 1])), shape=(n, n))
+    _, label = connected_components(joined, directed=False)
+    ptr_sorted = edges[np.argsort(edges[:, 1], kind="stable")]
+    ptr = np.searchsorted(ptr_sorted[:, 1], np.arange(n + 1))
+    risky = np.zeros(n, dtype=bool)  # rests, at some depth, on a weak part
+    placed = np.zeros(n, dtype=bool)
+    states: list[tuple[int, int, np.ndarray]] = []  # (step, new part, the group to solve)
+    budget = PREFIX_LP_BUDGET
+    for step, i in enumerate(order[:-1], start=1):
+        below = ptr_sorted[ptr[i] : ptr[i + 1], 0]
+        risky[i] = bool(np.any(weak[below] | risky[below]))
+        placed[i] = True
+        if risky[i]:
+            group = np.nonzero(placed & (label == label[i]))[0]
+            budget -= group.size
+            if budget < 0:
+                break
+            states.append((step, i, group))
+    if not states:
+        return None
+    answers = solve_many(a.graph, margin, [g for _, _, g in states], friction=STABILITY_FRICTION)
+    for (step, i, _), eq in zip(states, answers, strict=True):
+        if not eq.stands:
+            rank = _rank(a, sequence)
+            tipping = [k for k in eq.unbalanced if weak[k]] or eq.unbalanced
+            on_them = edges[np.isin(edges[:, 0], tipping), 1]
+            later = sorted({k for k in on_them.tolist() if rank[k] >= step}, key=lambda k: rank[k])
+            return step, i, tipping, later
+    return None
 
 
 def _rank(a: Analysis, sequence: Sequence[str]) -> np.ndarray:
@@ -424,6 +624,16 @@ def verify(
         violations.extend(check(a))
     order_v, order = order_violations(a, sequence)
     violations.extend(order_v)
+    if (
+        order is not None
+        and not order_v
+        and not any(v.constraint == Constraint.STABILITY for v in violations)
+    ):
+        states = check_assembly_states(a, order)
+        better = stable_order(a, order) if states and sequence is None else None
+        if better is not None:  # the Inspector chose the order: put counterweights first
+            order, states = better, []
+        violations.extend(states)
     return Report(
         passed=not violations,
         violations=tuple(violations),

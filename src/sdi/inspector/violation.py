@@ -30,7 +30,8 @@ class Constraint(StrEnum):
     SUPPORT = "support"
     """Stricter C4: a part off the table rests on a top face with positive footprint overlap."""
     STABILITY = "stability"
-    """Beyond the paper: each sub-structure's centre of mass lies over its support polygon."""
+    """Beyond the paper: the layout and each state of its assembly stand (centre of mass over
+    the support polygon, each part balanced when placed, static equilibrium by LP)."""
 
 
 PAPER_CONSTRAINTS = (
