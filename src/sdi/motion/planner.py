@@ -31,6 +31,7 @@ from ruckig import InputParameter, Result, Ruckig, Synchronization, Trajectory
 
 from sdi import deadline
 from sdi.errors import MotionPlanningError
+from sdi.execute.job import VerifiedJob
 from sdi.motion.scene import Scene
 from sdi.motion.trajectory import JointTrajectory
 from sdi.robot import RobotModel, ik, ik_nearest
@@ -386,9 +387,12 @@ class MotionPlanner:
         return near
 
     # -- the whole job -----------------------------------------------------------------------
-    def plan(self, tasks: TaskPlan) -> MotionPlan:
-        """Q_plan for every step in σ* order, each arm one step after another (`retime` in
-        `sdi.commission` moves the steps to a two-arm schedule)."""
+    def plan(self, job: VerifiedJob, tasks: TaskPlan) -> MotionPlan:
+        """Q_plan for every step of the verified job's task plan in σ* order, each arm one step
+        after another (`retime` in `sdi.commission` moves the steps to a two-arm schedule).
+        The job is trusted; `VerifiedJob.admit` only checks it is the one the Inspector passed
+        and that `tasks` are its steps."""
+        job.admit(tasks)
         with Scene(self.robots, margin=self.margin) as scene:
             q_now = {r: tasks.home[r].copy() for r in tasks.robots}
             for r, q in q_now.items():
