@@ -22,6 +22,7 @@ import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 from ompl import base as ob
@@ -31,7 +32,6 @@ from ruckig import InputParameter, Result, Ruckig, Synchronization, Trajectory
 
 from sdi import deadline
 from sdi.errors import MotionPlanningError
-from sdi.execute.job import VerifiedJob
 from sdi.motion.scene import Scene
 from sdi.motion.trajectory import JointTrajectory
 from sdi.robot import RobotModel, ik, ik_nearest
@@ -39,6 +39,9 @@ from sdi.robot.kinematics import frame_reach, link_frames_batch, sweep_bound
 from sdi.tasks.events import FailureEvent
 from sdi.tasks.generator import pose_tuple
 from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
+
+if TYPE_CHECKING:
+    from sdi.execute.job import VerifiedJob
 
 ou.setLogLevel(ou.LOG_ERROR)
 

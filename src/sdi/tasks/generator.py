@@ -21,12 +21,11 @@ import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from sdi.errors import InputError, MotionPlanningError, UnverifiedPlanError
-from sdi.execute.job import VerifiedJob
-from sdi.execute.record import cell_hash
 from sdi.inspector.analysis import Analysis
 from sdi.model.cell import CellConfig, ParallelGripper, SupplyArea
 from sdi.model.layout import Layout
@@ -35,6 +34,9 @@ from sdi.robot import RobotModel, ik, ik_nearest, robots_for
 from sdi.tasks.events import FailureEvent
 from sdi.tasks.schedule import Schedule, list_schedule
 from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
+
+if TYPE_CHECKING:
+    from sdi.execute.job import VerifiedJob
 
 APPROACH_HEIGHT = 0.10
 """Approach and retreat waypoints sit this far above the grasp, m."""
@@ -245,6 +247,8 @@ class TaskGenerator:
         """Steps for every part of a verified job in its order σ*, with robots, waypoints and a
         schedule. The job is trusted (no second Inspector run); it must be a job `inspect`
         passed (`VerifiedJob.check`) for this generator's cell."""
+        from sdi.execute.record import cell_hash
+
         job.check()
         if job.cell != self.cell and cell_hash(job.cell) != cell_hash(self.cell):
             raise UnverifiedPlanError(
