@@ -39,16 +39,22 @@ def calls(monkeypatch):
 
 
 def test_one_run_verifies_the_layout_once(tmp_path, calls):
-    """`sdi run "a 3-cube tower at x = 0.4" --approve-all` (sim driver): one verification,
-    in `VerifiedJob.inspect` (the Designer's gate; INSPECT, PRE_EXECUTE and EXECUTE take that
-    job). Before the job flowed it was six: Designer, INSPECT, commission, task generation,
-    the record's rebuild and the driver's re-check."""
-    orch = Orchestrator(db=tmp_path / "runs.sqlite")
-    try:
-        s = orch.start("a 3-cube tower at x = 0.4", approve=True)
-    finally:
-        orch.close()
-    assert s.status == "success" and s.state["execution"]["v_traj"] == "pass"
+    """`sdi run "a 3-cube tower at x = 0.4" --approve-all` (sim driver, both arms): one
+    verification, in `VerifiedJob.inspect` (the Designer's gate; INSPECT, PRE_EXECUTE and
+    EXECUTE take that job). Before the job flowed it was six: the Designer, INSPECT,
+    `commission`, task generation, the record's rebuild and the driver's re-check."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from sdi.cli import app
+
+    db = tmp_path / "runs.sqlite"
+    command = ["run", "a 3-cube tower at x = 0.4", "--approve-all", "--db", str(db), "--json"]
+    result = CliRunner().invoke(app, command)
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.output[result.output.index("{") :])
+    assert out["status"] == "success" and out["execution"]["v_traj"] == "pass"
     assert dict(calls) == {"job.inspect": 1}
 
 
