@@ -58,6 +58,7 @@ from sdi.execute.faults import SCENARIOS
 from sdi.execute.job import VerifiedJob
 from sdi.execute.record import CommissioningRecord, RecordError, cell_hash, layout_hash
 from sdi.inspector.verifier import verify
+from sdi.inspector.violation import Violation
 from sdi.jsonable import plain
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
@@ -565,6 +566,15 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     return {**update, "status": "failure", "phase": "end"}
 
 
+def _inspected(state: RunState) -> tuple[Violation, ...] | None:
+    """The Inspector's violations of the run's layout, as INSPECT stored them (all of them), or
+    None if what is stored is not the Inspector's (the critic, a missing layout)."""
+    try:
+        return tuple(Violation.model_validate(v) for v in state.get("violations") or [])
+    except ValueError:
+        return None
+
+
 def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
     _crash_hook("modify")
@@ -574,14 +584,16 @@ def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     if isinstance(designer, RuleDesigner) or layout is None:
         outcome = designer.design(spec, state["command"])
     else:
-        report = verify(layout, ctx.cell)
-        outcome = designer.design(
-            spec, state["command"], start=layout, violations=report.violations
-        )
+        violations = _inspected(state)  # what INSPECT found in this very layout
+        if violations is None:  # not the Inspector's own findings (critic ablation, gate)
+            violations = verify(layout, ctx.cell).violations
+        outcome = designer.design(spec, state["command"], start=layout, violations=violations)
     say(state, ctx, "designer", "inspector", "layout",
         {"status": outcome.status, "modified": True})  # fmt: skip
     if outcome.layout is None:
         return {"phase": "replan", "notes": outcome.notes}
+    if outcome.job is not None:  # the Designer's gate passed it: INSPECT need not run again
+        ctx.jobs.put(outcome.job)
     return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "failure": None}
 
 
