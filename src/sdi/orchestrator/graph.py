@@ -11,9 +11,13 @@ module-level function `node(state, runtime)` over the run's typed state and an e
   review outcomes, REPLAN's choice, the failure report. A node that asks for a route its map
   does not have raises `RoutingError` — a run never ends quietly on a typo.
 
-Every path to EXECUTE passes INSPECT, the design review, PRE_EXECUTE (which plans motion once
-and stores the commissioning record) and CONFIRM (the pre-execution approval, naming the
-record's hash); EXECUTE runs exactly that record (`tests/test_graph.py` checks the edges).
+The gate is a type: a layout is verified once, by `VerifiedJob.inspect` (in the Designer's own
+gate or in INSPECT), and the `VerifiedJob` is what PRE_EXECUTE plans and EXECUTE runs — held in
+`RunContext.jobs` by cell and layout hash, since the checkpointed state is plain JSON; a miss
+(another process, the critic ablation) inspects again. Every path to EXECUTE passes INSPECT,
+the design review, PRE_EXECUTE (which plans motion once and stores the commissioning record)
+and CONFIRM (the pre-execution approval, naming the record's hash); EXECUTE runs exactly that
+record (`tests/test_graph.py` checks the edges).
 Routing is decided only at failure branch points (REPLAN): by the model when the method routes
 with LangGraph and a model is set, otherwise by deterministic rules. REPLAN tries the recovery
 skills first (shift, flatten) and sends their output straight to the Inspector, then the
