@@ -44,7 +44,12 @@ def test_execute_refuses_an_unverified_layout(tmp_path):
     proc = run("execute", str(path), "--json")
     assert proc.returncode == 1
     out = json.loads(proc.stdout)
-    assert out["status"] == "refused" and any("contact" in v for v in out["violations"])
+    assert out["status"] == "refused"
+    # the Inspector's violations as objects: constraint, the parts, message, hint
+    contact = [v for v in out["violations"] if v["constraint"] == "contact"]
+    assert contact and contact[0]["objects"] == ["a"] and contact[0]["hint"]
+    proc = run("execute", str(path))  # the table: the part and the hint
+    assert proc.returncode == 1 and "contact" in proc.stderr and "a" in proc.stderr
 
 
 def test_execute_unknown_fault_is_bad_input(tower_file):

@@ -74,7 +74,7 @@ def make_job(command: str, cell: CellConfig | None = None, *, parallel: bool = T
     result = plan_command(command, cell)
     assert result.layout is not None and result.sequence is not None, result.error
     job = VerifiedJob.inspect(result.layout, cell, result.sequence)
-    tasks, _ = TaskGenerator(cell).generate(result.layout, job.sequence)
+    tasks, _ = TaskGenerator(cell).generate(job)
     return Job(cell, job, tasks, parallel)
 
 

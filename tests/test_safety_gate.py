@@ -9,6 +9,7 @@ import pytest
 from sdi.commission import commission
 from sdi.errors import UnverifiedPlanError
 from sdi.execute import VerifiedJob
+from sdi.inspector import Violation
 from sdi.model.layout import Layout
 from sdi.model.part import Part
 from sdi.tasks import TaskGenerator
@@ -31,15 +32,32 @@ ADVERSARIAL = {
 def test_inspect_refuses(name):
     with pytest.raises(UnverifiedPlanError) as info:
         VerifiedJob.inspect(ADVERSARIAL[name])
-    assert info.value.violations
+    error = info.value
+    assert error.violations and all(isinstance(v, Violation) for v in error.violations)
+    assert error.report is not None and error.violations == error.report.violations
+    for v, d in zip(error.violations, error.violations_json(), strict=True):
+        assert d["objects"] == list(v.objects) and d["hint"] == v.hint and v.objects
+
+
+def forged(job: VerifiedJob, **changes: object) -> VerifiedJob:
+    """A job assembled by hand: the fields of `job`, some replaced, never through `inspect`."""
+    bad = object.__new__(VerifiedJob)
+    for f in dataclasses.fields(VerifiedJob):
+        object.__setattr__(bad, f.name, changes.get(f.name, getattr(job, f.name)))
+    return bad
 
 
 @pytest.mark.parametrize("name", sorted(ADVERSARIAL))
 def test_task_generation_and_commissioning_refuse(name):
     with pytest.raises(UnverifiedPlanError):
-        TaskGenerator().generate(ADVERSARIAL[name])
-    with pytest.raises(UnverifiedPlanError):
         commission(ADVERSARIAL[name])
+    # the stages take a job; a forged one holding an unverified layout is refused by all
+    genuine = VerifiedJob.inspect(Layout(objects=(cube("a", 0.4, 0.3, 0.025),)))
+    bad = forged(genuine, layout=ADVERSARIAL[name], sequence=ADVERSARIAL[name].ids)
+    with pytest.raises(UnverifiedPlanError):
+        TaskGenerator(arms=["irb120"]).generate(bad)
+    with pytest.raises(UnverifiedPlanError):
+        commission(bad, arms=["irb120"])
 
 
 def test_wrong_sequence_is_refused():
@@ -54,11 +72,41 @@ def test_a_job_cannot_be_forged_or_altered():
     job = VerifiedJob.inspect(tower)
     with pytest.raises(UnverifiedPlanError):
         VerifiedJob(job.layout, job.sequence, job.cell, job.report)
-    # replacing the layout after inspection is caught by the re-check drivers run
-    bad = object.__new__(VerifiedJob)
-    for f in dataclasses.fields(VerifiedJob):
-        object.__setattr__(bad, f.name, getattr(job, f.name))
-    object.__setattr__(bad, "layout", ADVERSARIAL["floating"])
-    object.__setattr__(bad, "sequence", ("a",))
+    job.check()  # the genuine job passes the identity check
+    # replacing the layout after inspection is caught by the identity check every stage runs
+    bad = forged(job, layout=ADVERSARIAL["floating"], sequence=("a",))
     with pytest.raises(UnverifiedPlanError):
-        bad.recheck()
+        bad.check()
+    # so is a forged hash claiming content the Inspector never passed
+    bad = forged(job, layout=ADVERSARIAL["floating"], sequence=("a",), hash=bad.content_hash())
+    with pytest.raises(UnverifiedPlanError):
+        bad.check()
+    # and altering a genuine job in place
+    altered = forged(job)
+    object.__setattr__(altered, "layout", ADVERSARIAL["outside"])
+    with pytest.raises(UnverifiedPlanError):
+        altered.check()
+
+
+def test_drivers_and_exporters_refuse_a_forged_job():
+    """Nothing moves or is exported unless the job came from `VerifiedJob.inspect`."""
+    from sdi.execute import SimDriver
+    from sdi.export import python_program, rapid_module
+
+    plan = commission(Layout(objects=(cube("c0", 0.4, 0.3, 0.025),)), arms=["irb120"])
+    bad = forged(plan.job, layout=ADVERSARIAL["under the table"], sequence=("a",))
+    robot = plan.robots["irb120"]
+    with pytest.raises(UnverifiedPlanError):
+        SimDriver(plan.robots).execute(bad, plan.tasks, plan.motion)
+    with pytest.raises(UnverifiedPlanError):
+        rapid_module(bad, plan.tasks, plan.motion, robot)
+    with pytest.raises(UnverifiedPlanError):
+        python_program(bad, plan.tasks, plan.motion, plan.robots)
+    # the genuine job with a task plan that is not its own is refused too
+    other = commission(
+        Layout(objects=(cube("x", 0.4, 0.3, 0.025), cube("y", 0.4, 0.3, 0.075))), arms=["irb120"]
+    )
+    with pytest.raises(UnverifiedPlanError):
+        rapid_module(plan.job, other.tasks, other.motion, robot)
+    with pytest.raises(UnverifiedPlanError):
+        SimDriver(plan.robots).execute(plan.job, other.tasks, other.motion)

@@ -375,16 +375,18 @@ def _commission(
     robots = _arms(arms, cell, as_json)
     layout, sequence = _load(layout_file, cell, as_json)
     from sdi.commission import commission
+    from sdi.execute.job import VerifiedJob
 
     try:
-        return commission(layout, cell, sequence=sequence, arms=robots)
+        job = VerifiedJob.inspect(layout, cell, sequence)  # the one verification
+        return commission(job, arms=robots)
     except UnverifiedPlanError as exc:
         if as_json:
-            _emit({"status": "refused", "error": str(exc), "violations": exc.violations})
+            _emit({"status": "refused", "error": str(exc), "violations": exc.violations_json()})
         else:
             _line(err, "refused:", "bold red", str(exc).removeprefix("refused: "))
-            for v in exc.violations:
-                _line(err, "  -", "", v)
+            if exc.violations:
+                err.print(violations_table(exc.violations))
         raise typer.Exit(1) from None
     except InputError as exc:
         _bad_input(exc, as_json)

@@ -2,7 +2,8 @@
 
 Paper eq. 18 (π from C* to Q_plan) and eq. 21 (π_exec): every stage is deterministic.
 
-1. The safety gate: `VerifiedJob.inspect` (the Inspector must pass the layout and sequence).
+1. The safety gate: `VerifiedJob.inspect` (the Inspector must pass the layout and sequence) —
+   once; every later stage takes the job and trusts it.
 2. τ_task assigns robots and waypoints (`TaskGenerator`).
 3. ρ_motion plans every step in σ* order (`MotionPlanner`), one arm after the other.
 4. The steps are scheduled with their real durations (two arms work in parallel where the
@@ -21,6 +22,7 @@ from typing import Any
 import numpy as np
 
 from sdi import deadline
+from sdi.errors import InputError
 from sdi.execute.driver import Driver
 from sdi.execute.faults import FaultScenario
 from sdi.execute.job import VerifiedJob
@@ -189,7 +191,7 @@ def order_clear(
 
 
 def commission(
-    layout: Layout,
+    job: VerifiedJob | Layout,
     cell: CellConfig | None = None,
     *,
     sequence: Sequence[str] | None = None,
@@ -197,14 +199,22 @@ def commission(
     robots: dict[str, RobotModel] | None = None,
     planner: MotionPlanner | None = None,
 ) -> Commissioning:
-    """Plan a verified layout for the cell (one or two arms); refuses unverified layouts."""
-    cell = cell or CellConfig()
+    """Plan a verified job for its cell (one or two arms).
+
+    `job` is the `VerifiedJob` from the Inspector, trusted as it is (no second verification).
+    A bare `Layout` (with `cell` and `sequence`) is shorthand for `VerifiedJob.inspect(layout,
+    cell, sequence)` first — the one verification — and is refused if it does not pass.
+    """
+    if isinstance(job, Layout):
+        job = VerifiedJob.inspect(job, cell, sequence)
+    elif (cell is not None and cell is not job.cell) or sequence is not None:
+        raise InputError("commission(job) takes the job's own cell and sequence; pass no others")
+    cell = job.cell
     robots = robots or robots_for(cell)
-    job = VerifiedJob.inspect(layout, cell, sequence)
     generator = TaskGenerator(cell, robots, arms=arms)
-    tasks, _ = generator.generate(layout, job.sequence)
+    tasks, _ = generator.generate(job)
     planner = planner or MotionPlanner({n: robots[n] for n in tasks.robots})
-    sequential = planner.plan(tasks)
+    sequential = planner.plan(job, tasks)
     if sequential.revised:
         steps = tuple(sequential.revised.get(st.step, st) for st in tasks.steps)
         tasks = TaskPlan(steps, tasks.robots, tasks.home)

@@ -7,6 +7,13 @@ with code 2, never a stack trace.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from sdi.inspector.verifier import Report
+    from sdi.inspector.violation import Violation
+
 
 class SDIError(Exception):
     """Root of every error SDI raises on purpose."""
@@ -58,12 +65,25 @@ class UnverifiedPlanError(SDIError):
     """A layout or sequence that did not pass the Inspector was offered to the robot side.
 
     The safety gate: nothing reaches task generation, motion planning, a driver or an exporter
-    unless `verify` passed it. `violations` lists what the Inspector found.
+    unless `VerifiedJob.inspect` passed it. `violations` are the Inspector's `Violation`
+    objects (constraint, parts, message, hint, suggestion); `report` is its whole answer
+    when the Inspector ran (None for a refusal that is not the Inspector's, e.g. a forged job).
     """
 
-    def __init__(self, message: str, *, violations: list[str] | None = None) -> None:
-        self.violations = violations or []
+    def __init__(
+        self,
+        message: str,
+        *,
+        violations: Sequence[Violation] = (),
+        report: Report | None = None,
+    ) -> None:
+        self.violations: tuple[Violation, ...] = tuple(violations)
+        self.report = report
         super().__init__(message)
+
+    def violations_json(self) -> list[dict[str, object]]:
+        """The violations as plain JSON objects (`Violation.to_json_dict`)."""
+        return [v.to_json_dict() for v in self.violations]
 
 
 class MotionPlanningError(SDIError):

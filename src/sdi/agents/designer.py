@@ -31,8 +31,9 @@ from sdi.agents.prompts import (
     system_prompt,
 )
 from sdi.design.composer import compose
-from sdi.errors import InfeasibleError, InputError
-from sdi.inspector.verifier import Report, verify
+from sdi.errors import InfeasibleError, InputError, UnverifiedPlanError
+from sdi.execute.job import VerifiedJob
+from sdi.inspector.verifier import Report
 from sdi.llm.chat import ChatModel, Message
 from sdi.llm.openai_backend import LLMError, parse_json
 from sdi.model.cell import CellConfig
@@ -51,6 +52,7 @@ class DesignOutcome:
     report: Report | None
     attempts: int = 0
     notes: list[str] = field(default_factory=list)
+    job: VerifiedJob | None = None  # the Inspector's pass of `layout` (status "success")
 
 
 def task_text(spec: Spec | None, command: str) -> str:
@@ -66,9 +68,13 @@ def safety_gate(
     """C_final = C if V(C, K) passes, else FAILURE (paper eq. 17)."""
     if layout is None:
         return DesignOutcome("failure", None, None, attempts, [*notes, "no layout produced"])
-    report = verify(layout, cell)
-    if report.passed:
-        return DesignOutcome("success", layout, report, attempts, notes)
+    try:
+        job = VerifiedJob.inspect(layout, cell)
+    except UnverifiedPlanError as exc:
+        report = exc.report
+        assert report is not None
+    else:
+        return DesignOutcome("success", layout, job.report, attempts, notes, job)
     return DesignOutcome(
         "failure",
         layout,
@@ -210,9 +216,13 @@ class LoopDesigner:
                 ]
                 layout = None
                 continue
-            report = verify(layout, self.cell)
-            if report.passed:
-                return DesignOutcome("success", layout, report, attempt, notes)
+            try:
+                job = VerifiedJob.inspect(layout, self.cell)
+            except UnverifiedPlanError as exc:
+                assert exc.report is not None
+                report = exc.report
+            else:
+                return DesignOutcome("success", layout, job.report, attempt, notes, job)
             notes.append(f"attempt {attempt}: {len(report.violations)} violation(s)")
             prompt = self._minimal(spec, command) + self._retry(layout, report.violations, report)
         return safety_gate(layout, self.cell, self.t_max, notes)

@@ -3,7 +3,8 @@
 A driver takes a `VerifiedJob` (the Inspector passed it), its task plan and Q_plan, executes,
 streams Q_exec samples to an optional monitor (`update(robot, t, q) -> breach | None`, and
 stops at the first breach), and reports an `ExecutionResult`: Q_exec, as-built poses and any
-failure event. Drivers must call `job.recheck()` before anything moves. `placed` (part id →
+failure event. Drivers must call `job.admit(tasks)` before anything moves (an identity check
+against what `VerifiedJob.inspect` passed; the verifier does not run again). `placed` (part id →
 pose) continues an interrupted execution from what is already built; `progress` is told of
 every part set down, so the run's event stream records what is built as it is built.
 """

@@ -24,6 +24,7 @@ from sdi.model.layout import Layout, parse_layout
 
 if TYPE_CHECKING:
     from sdi.commission import Commissioning
+    from sdi.execute.job import VerifiedJob
 
 
 class RecordError(SDIError):
@@ -148,13 +149,25 @@ class CommissioningRecord:
     def cell(self) -> CellConfig:
         return CellConfig.model_validate(self.body["cell"])
 
-    def commissioning(self, cell: CellConfig) -> Commissioning:
+    @property
+    def job_hash(self) -> str:
+        """The identity of the verified job this record was planned from (`VerifiedJob.hash`)."""
+        from sdi.execute.job import job_hash
+
+        body = self.body
+        return job_hash(body["cell_hash"], body["layout_hash"], body["sequence"])
+
+    def commissioning(self, cell: CellConfig, job: VerifiedJob | None = None) -> Commissioning:
         """Rebuild the planned job for a driver or exporter; refuses another cell.
 
-        The layout and sequence pass the Inspector again (`VerifiedJob.inspect`): a record
-        is never a way around the safety gate.
+        `job` is the verified job the record was planned from, when the caller still holds it
+        (the orchestrator within one process): it must be that job (same hash, and it passes
+        `VerifiedJob.check`), and the Inspector does not run again. Without it (a record read
+        in another process, `sdi export` from a stored run) the layout and sequence pass
+        `VerifiedJob.inspect` once: a record is never a way around the safety gate.
         """
         from sdi.commission import Commissioning
+        from sdi.errors import UnverifiedPlanError
         from sdi.execute.job import VerifiedJob
         from sdi.motion.planner import GripEvent, MotionPlan, StepMotion
         from sdi.motion.trajectory import JointTrajectory
@@ -169,8 +182,16 @@ class CommissioningRecord:
                 f"the cell configuration changed since record {self.hash[:12]} was planned "
                 f"(cell {body['cell_hash'][:12]} then, {now[:12]} now); nothing moves"
             )
-        layout, _ = parse_layout(body["layout"], max_parts=cell.limits.max_parts)
-        job = VerifiedJob.inspect(layout, cell, body["sequence"])
+        if job is None:
+            layout, _ = parse_layout(body["layout"], max_parts=cell.limits.max_parts)
+            job = VerifiedJob.inspect(layout, cell, body["sequence"])
+        else:
+            job.check()
+            if job.hash != self.job_hash:
+                raise UnverifiedPlanError(
+                    f"refused: record {self.hash[:12]} was planned from job {self.job_hash[:12]}, "
+                    f"not from job {job.hash[:12]}; nothing moves"
+                )
 
         def waypoint(w: dict[str, Any]) -> Any:
             return Waypoint(w["name"], _arr(w["T_world_tcp"]), _arr(w["q"]))

@@ -16,7 +16,8 @@
   from such a record: those parts stand where they were set down, their steps are skipped,
   and the robots start where the first step still to do begins.
 
-Only a `VerifiedJob` is accepted, and it is re-verified before anything moves.
+Only a `VerifiedJob` is accepted, and it is checked (`VerifiedJob.admit`: the job the Inspector
+passed, unaltered, and the task plan is its steps) before anything moves.
 """
 
 from __future__ import annotations
@@ -118,14 +119,7 @@ class SimDriver:
 
         `placed` maps parts already built to their poses (x, y, z m, qw, qx, qy, qz): the run
         continues from there. `progress` receives one dict per part set down."""
-        job.recheck()  # the safety gate, again, right before motion
-        placed_ids = {s.part_id for s in tasks.steps}
-        if placed_ids != set(job.layout.ids) or [s.part_id for s in tasks.steps] != list(
-            job.sequence
-        ):
-            from sdi.errors import UnverifiedPlanError
-
-            raise UnverifiedPlanError("refused: the task plan does not match the verified job")
+        job.admit(tasks)  # the safety gate: the job the Inspector passed, and its steps
         c = pb.connect(pb.DIRECT)
         tmp = tempfile.TemporaryDirectory(prefix="sdi-sim-")
         try:

@@ -245,7 +245,7 @@ def python_program(
     Its coordinator keeps `interlocks`' order between the robots (default: the other robots'
     steps all exclusive, i.e. one arm at a time).
     """
-    job.recheck()
+    job.admit(tasks)
     if interlocks is None:
         interlocks = interlock_plan(tasks, {}, parallel=False, signals=job.cell.interlocks)
     data = {

@@ -113,7 +113,7 @@ def rapid_module(
     robot may not have read them yet) until the next start. After an aborted run, run
     `sdi_reset` on every controller before starting again.
     """
-    job.recheck()
+    job.admit(tasks)
     if interlocks is None:
         interlocks = interlock_plan(tasks, {}, parallel=False, signals=job.cell.interlocks)
     io = interlocks if interlocks.active else None

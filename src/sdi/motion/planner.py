@@ -22,6 +22,7 @@ import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 from ompl import base as ob
@@ -38,6 +39,9 @@ from sdi.robot.kinematics import frame_reach, link_frames_batch, sweep_bound
 from sdi.tasks.events import FailureEvent
 from sdi.tasks.generator import pose_tuple
 from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
+
+if TYPE_CHECKING:
+    from sdi.execute.job import VerifiedJob
 
 ou.setLogLevel(ou.LOG_ERROR)
 
@@ -386,9 +390,12 @@ class MotionPlanner:
         return near
 
     # -- the whole job -----------------------------------------------------------------------
-    def plan(self, tasks: TaskPlan) -> MotionPlan:
-        """Q_plan for every step in σ* order, each arm one step after another (`retime` in
-        `sdi.commission` moves the steps to a two-arm schedule)."""
+    def plan(self, job: VerifiedJob, tasks: TaskPlan) -> MotionPlan:
+        """Q_plan for every step of the verified job's task plan in σ* order, each arm one step
+        after another (`retime` in `sdi.commission` moves the steps to a two-arm schedule).
+        The job is trusted; `VerifiedJob.admit` only checks it is the one the Inspector passed
+        and that `tasks` are its steps."""
+        job.admit(tasks)
         with Scene(self.robots, margin=self.margin) as scene:
             q_now = {r: tasks.home[r].copy() for r in tasks.robots}
             for r, q in q_now.items():

@@ -11,9 +11,13 @@ module-level function `node(state, runtime)` over the run's typed state and an e
   review outcomes, REPLAN's choice, the failure report. A node that asks for a route its map
   does not have raises `RoutingError` — a run never ends quietly on a typo.
 
-Every path to EXECUTE passes INSPECT, the design review, PRE_EXECUTE (which plans motion once
-and stores the commissioning record) and CONFIRM (the pre-execution approval, naming the
-record's hash); EXECUTE runs exactly that record (`tests/test_graph.py` checks the edges).
+The gate is a type: a layout is verified once, by `VerifiedJob.inspect` (in the Designer's own
+gate or in INSPECT), and the `VerifiedJob` is what PRE_EXECUTE plans and EXECUTE runs — held in
+`RunContext.jobs` by cell and layout hash, since the checkpointed state is plain JSON; a miss
+(another process, the critic ablation) inspects again. Every path to EXECUTE passes INSPECT,
+the design review, PRE_EXECUTE (which plans motion once and stores the commissioning record)
+and CONFIRM (the pre-execution approval, naming the record's hash); EXECUTE runs exactly that
+record (`tests/test_graph.py` checks the edges).
 Routing is decided only at failure branch points (REPLAN): by the model when the method routes
 with LangGraph and a model is set, otherwise by deterministic rules. REPLAN tries the recovery
 skills first (shift, flatten) and sends their output straight to the Inspector, then the
@@ -28,8 +32,9 @@ failure report.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections import OrderedDict
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
 from typing import Any, TypedDict
 
 from langgraph.graph import END, START, StateGraph
@@ -54,8 +59,10 @@ from sdi.errors import (
     UnverifiedPlanError,
 )
 from sdi.execute.faults import SCENARIOS
-from sdi.execute.record import CommissioningRecord, RecordError, layout_hash
+from sdi.execute.job import VerifiedJob
+from sdi.execute.record import CommissioningRecord, RecordError, cell_hash, layout_hash
 from sdi.inspector.verifier import verify
+from sdi.inspector.violation import Violation
 from sdi.jsonable import plain
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
@@ -121,6 +128,45 @@ class RunState(TypedDict, total=False):
     design_only: bool  # stop once the design is verified (benchmarks): status "verified"
 
 
+class Jobs:
+    """The verified jobs of this process's runs, by cell and layout hash, newest last.
+
+    The run state is plain JSON (it is checkpointed), so it cannot hold a `VerifiedJob`; this is
+    where the one INSPECT made (or the Designer's own gate made, for the very layout INSPECT
+    receives) waits for PRE_EXECUTE and EXECUTE. A miss (another process resumed the run, or
+    the critic ablation skipped the Inspector) means `VerifiedJob.inspect` runs again.
+    """
+
+    def __init__(self, size: int = 32) -> None:
+        self.size = size
+        self._jobs: OrderedDict[tuple[str, str], VerifiedJob] = OrderedDict()
+
+    def put(self, job: VerifiedJob) -> VerifiedJob:
+        key = (cell_hash(job.cell), layout_hash(job.layout))
+        self._jobs[key] = job
+        self._jobs.move_to_end(key)
+        while len(self._jobs) > self.size:
+            self._jobs.popitem(last=False)
+        return job
+
+    def get(
+        self, cell: CellConfig, layout: Layout, sequence: Sequence[str] | None = None
+    ) -> VerifiedJob | None:
+        """The job for exactly this cell and layout (and sequence, when given), if held."""
+        job = self._jobs.get((cell_hash(cell), layout_hash(layout)))
+        if job is None or (sequence is not None and tuple(sequence) != job.sequence):
+            return None
+        return job
+
+    def job(
+        self, cell: CellConfig, layout: Layout, sequence: Sequence[str] | None = None
+    ) -> VerifiedJob:
+        """The held job, else `VerifiedJob.inspect` (raises `UnverifiedPlanError`)."""
+        return self.get(cell, layout, sequence) or self.put(
+            VerifiedJob.inspect(layout, cell, sequence)
+        )
+
+
 @dataclass
 class RunContext:
     """What the nodes need that is not state: the cell, the model, the method, the stores."""
@@ -131,6 +177,7 @@ class RunContext:
     bus: MessageBus
     records: RecordStore | None = None  # where PRE_EXECUTE stores the commissioning record
     arms: list[str] | None = None
+    jobs: Jobs = field(default_factory=Jobs)  # the verified jobs INSPECT hands on
 
     @property
     def store(self) -> RecordStore:
@@ -296,6 +343,8 @@ def design_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     say(state, ctx, "designer", "inspector", "layout", message)
     if outcome.layout is None:
         return {"layout": None, "violations": [], "notes": outcome.notes, "phase": "inspect"}
+    if outcome.job is not None:  # the Designer's own gate passed it: INSPECT need not run again
+        ctx.jobs.put(outcome.job)
     return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "notes": outcome.notes}
 
 
@@ -317,15 +366,21 @@ def inspect_node(state: RunState, runtime: Rt) -> dict[str, Any]:
             "violations": [{"constraint": "critic", "message": str(verdict.get("problems"))}],
             "phase": "replan",
         }
-    report = verify(layout, ctx.cell, sequence=None)
+    try:  # the one verification of this layout; PRE_EXECUTE and EXECUTE take the job
+        job = ctx.jobs.job(ctx.cell, layout)
+        report = job.report
+    except UnverifiedPlanError as exc:
+        job = None
+        assert exc.report is not None
+        report = exc.report
     violations = [v.to_json_dict() for v in report.violations]
     say(state, ctx, "inspector", "orchestrator", "verification",
-        {"passed": report.passed, "violations": violations[:20],
+        {"passed": job is not None, "violations": violations[:20],
          "layout_hash": layout_hash(layout)})  # fmt: skip
     return {
         "violations": violations,
-        "sequence": list(report.sequence) if report.sequence else None,
-        "phase": "review" if report.passed else "replan",
+        "sequence": list(job.sequence) if job is not None else None,
+        "phase": "review" if job is not None else "replan",
     }
 
 
@@ -369,14 +424,14 @@ def pre_execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     _crash_hook("pre_execute")
     layout = _layout(state, ctx.cell)
     assert layout is not None
-    try:
-        planned = commission(layout, ctx.cell, sequence=state.get("sequence"), arms=ctx.arms)
-    except UnverifiedPlanError as exc:  # the symbolic gate (matters in the critic ablation)
-        say(state, ctx, "inspector", "orchestrator", "refused", {"error": str(exc)})
-        return {
-            "violations": [{"constraint": "gate", "message": m} for m in exc.violations],
-            "phase": "replan",
-        }
+    try:  # the job INSPECT verified; the gate runs here only if it did not (critic ablation)
+        job = ctx.jobs.job(ctx.cell, layout, state.get("sequence"))
+        planned = commission(job, arms=ctx.arms)
+    except UnverifiedPlanError as exc:
+        say(state, ctx, "inspector", "orchestrator", "refused",
+            {"error": str(exc), "violations": exc.violations_json()[:20]})  # fmt: skip
+        violations = exc.violations_json() or [{"constraint": "gate", "message": str(exc)}]
+        return {"violations": violations, "phase": "replan"}
     except MotionPlanningError as exc:
         event = exc.event.to_json_dict()  # type: ignore[attr-defined]
         say(state, ctx, "operator", "orchestrator", "failure", event)
@@ -433,7 +488,8 @@ def execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
             raise RecordError(
                 f"the run's layout changed since record {approved[:12]} was approved; nothing moves"
             )
-        planned = record.commissioning(ctx.cell)
+        held = ctx.jobs.get(ctx.cell, layout, record.body["sequence"])
+        planned = record.commissioning(ctx.cell, held)  # no second verification if held
     except (RecordError, UnverifiedPlanError) as exc:
         say(state, ctx, "operator", "human", "refused", {"error": str(exc)})
         failure = failure_of(None, "execute", error_type="record", message=str(exc))
@@ -514,6 +570,15 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     return {**update, "status": "failure", "phase": "end"}
 
 
+def _inspected(state: RunState) -> tuple[Violation, ...] | None:
+    """The Inspector's violations of the run's layout, as INSPECT stored them (all of them), or
+    None if what is stored is not the Inspector's (the critic, a missing layout)."""
+    try:
+        return tuple(Violation.model_validate(v) for v in state.get("violations") or [])
+    except ValueError:
+        return None
+
+
 def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
     _crash_hook("modify")
@@ -523,14 +588,16 @@ def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     if isinstance(designer, RuleDesigner) or layout is None:
         outcome = designer.design(spec, state["command"])
     else:
-        report = verify(layout, ctx.cell)
-        outcome = designer.design(
-            spec, state["command"], start=layout, violations=report.violations
-        )
+        violations = _inspected(state)  # what INSPECT found in this very layout
+        if violations is None:  # not the Inspector's own findings (critic ablation, gate)
+            violations = verify(layout, ctx.cell).violations
+        outcome = designer.design(spec, state["command"], start=layout, violations=violations)
     say(state, ctx, "designer", "inspector", "layout",
         {"status": outcome.status, "modified": True})  # fmt: skip
     if outcome.layout is None:
         return {"phase": "replan", "notes": outcome.notes}
+    if outcome.job is not None:  # the Designer's gate passed it: INSPECT need not run again
+        ctx.jobs.put(outcome.job)
     return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "failure": None}
 
 

@@ -28,7 +28,7 @@ from sdi.execute.record import CommissioningRecord, cell_hash
 from sdi.llm.chat import ChatModel, Usage
 from sdi.model.cell import CellConfig
 from sdi.orchestrator.bus import MessageBus
-from sdi.orchestrator.graph import RunContext, RunState, build_graph
+from sdi.orchestrator.graph import Jobs, RunContext, RunState, build_graph
 from sdi.orchestrator.lease import RunLease
 from sdi.orchestrator.methods import METHODS
 from sdi.orchestrator.records import RecordStore
@@ -108,6 +108,7 @@ class Orchestrator:
         self.records = RecordStore(self.db)
         self.graph = build_graph().compile(checkpointer=self.saver)
         self._owned: set[str] = set()
+        self.jobs = Jobs()  # verified jobs, handed from INSPECT to PRE_EXECUTE and EXECUTE
 
     @contextmanager
     def owning(self, run_id: str) -> Iterator[None]:
@@ -184,7 +185,9 @@ class Orchestrator:
             raise bad(f"an invalid cell configuration ({str(exc).splitlines()[0]})") from None
         if values.get("cell") and cell_hash(cell) != values.get("cell_hash"):
             raise bad("a cell configuration that does not match its recorded hash")
-        return RunContext(cell, METHODS[method], self.model, self.bus, self.records, arms)
+        return RunContext(
+            cell, METHODS[method], self.model, self.bus, self.records, arms, self.jobs
+        )
 
     def _status(self, run_id: str) -> RunStatus:
         snapshot = self._snapshot(run_id)

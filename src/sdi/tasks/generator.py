@@ -11,7 +11,8 @@ For each part in σ*, in order:
 3. among the robots that can do it, the one that would finish it earliest (estimated from
    joint distances under velocity and acceleration limits) gets it.
 
-The safety gate: the layout and sequence must pass the Inspector first, or nothing is made.
+The safety gate: steps are made only for a `VerifiedJob` (the Inspector passed its layout and
+sequence once, in `VerifiedJob.inspect`); the generator trusts the job and does not re-verify.
 """
 
 from __future__ import annotations
@@ -20,12 +21,12 @@ import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from sdi.errors import InputError, MotionPlanningError, UnverifiedPlanError
 from sdi.inspector.analysis import Analysis
-from sdi.inspector.verifier import verify
 from sdi.model.cell import CellConfig, ParallelGripper, SupplyArea
 from sdi.model.layout import Layout
 from sdi.model.part import quat_from_matrix, rotation_matrix
@@ -33,6 +34,9 @@ from sdi.robot import RobotModel, ik, ik_nearest, robots_for
 from sdi.tasks.events import FailureEvent
 from sdi.tasks.schedule import Schedule, list_schedule
 from sdi.tasks.task import GRASP_SECONDS, PickPlace, TaskPlan, Waypoint
+
+if TYPE_CHECKING:
+    from sdi.execute.job import VerifiedJob
 
 APPROACH_HEIGHT = 0.10
 """Approach and retreat waypoints sit this far above the grasp, m."""
@@ -239,18 +243,20 @@ class TaskGenerator:
                 best = (cost, T_part_tcp, pick, place)
         return None if best is None else (best[1], best[2], best[3])
 
-    def generate(
-        self, layout: Layout, sequence: Sequence[str] | None = None
-    ) -> tuple[TaskPlan, Schedule]:
-        """Steps for every part in σ*, with robots, waypoints and a schedule."""
-        report = verify(layout, self.cell, sequence=sequence)
-        if not report.passed or report.sequence is None:
+    def generate(self, job: VerifiedJob) -> tuple[TaskPlan, Schedule]:
+        """Steps for every part of a verified job in its order σ*, with robots, waypoints and a
+        schedule. The job is trusted (no second Inspector run); it must be a job `inspect`
+        passed (`VerifiedJob.check`) for this generator's cell."""
+        from sdi.execute.record import cell_hash
+
+        job.check()
+        if job.cell != self.cell and cell_hash(job.cell) != cell_hash(self.cell):
             raise UnverifiedPlanError(
-                f"the layout did not pass the Inspector ({len(report.violations)} violation(s)); "
-                "nothing goes to the robots",
-                violations=[f"{v.constraint.value}: {v.message}" for v in report.violations[:10]],
+                "refused: the job was verified for another cell configuration than this "
+                "generator's; inspect it for this cell"
             )
-        order = list(report.sequence)
+        layout = job.layout
+        order = list(job.sequence)
         a = Analysis(layout, self.cell)
         index = layout.index
         rank = np.empty(len(layout), dtype=np.intp)
