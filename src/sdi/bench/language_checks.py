@@ -650,3 +650,42 @@ def score(case: Case, result: Mapping[str, Any]) -> tuple[str, Reason]:
     if status != "success":
         return "honest_miss", reason or f"status {status}"
     return "silent_misreading", reason
+
+
+# -- shared by the development sets ----------------------------------------------------------
+
+REL, SEQ, NUM, DIM, NEG, TYP = "relation", "sequence", "numbers", "dimensions", "negation", "typo"
+WO, FIL, REG, OPEN, BAD = "word_order", "filler", "region", "open", "bad_input"
+SIDES = ("left", "right", "front", "back")
+
+
+def solid(a: int, b: int) -> Check:
+    """A full a×b footprint of any number of layers ("a 2x2 block")."""
+    return all_of(dims(a, b), full)
+
+
+def runs(axis: str) -> Check:
+    """The longer plan side runs along `axis`: "x" (front–back) or "y" (left–right)."""
+
+    def f(bs: Boxes) -> Reason:
+        fx, fy = bx.footprint_cubes(bs)
+        if axis == "y":
+            return None if fy > fx else "runs front–back, not left–right"
+        return None if fx > fy else "runs left–right, not front–back"
+
+    return f
+
+
+def low(n: int) -> Check:
+    """At most n cubes high."""
+
+    def f(bs: Boxes) -> Reason:
+        h = bx.thickness_cubes(bs)
+        return None if h <= n else f"{h} high, want ≤ {n}"
+
+    return f
+
+
+def few(n_lo: int, n_hi: int, check: Check) -> Pred:
+    """Between n_lo and n_hi separate structures, each passing `check`."""
+    return any_of(*[each(n, check) for n in range(n_lo, n_hi + 1)])

@@ -21,19 +21,9 @@ from sdi.bench import boxes as bx
 from sdi.bench import language_checks as k
 from sdi.bench.language_checks import Case
 
-_L, _R, _F, _B = "left", "right", "front", "back"
-
-REL = "relation"
-SEQ = "sequence"
-NUM = "numbers"
-DIM = "dimensions"
-NEG = "negation"
-TYP = "typo"
-WO = "word_order"
-FIL = "filler"
-REG = "region"
-OPEN = "open"
-BAD = "bad_input"
+_L, _R, _F, _B = k.SIDES
+REL, SEQ, NUM, DIM, NEG, TYP = k.REL, k.SEQ, k.NUM, k.DIM, k.NEG, k.TYP
+WO, FIL, REG, OPEN, BAD = k.WO, k.FIL, k.REG, k.OPEN, k.BAD
 
 
 def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
@@ -43,9 +33,7 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks (open wording)
 
 
-def _block_any_height(a: int, b: int) -> k.Check:
-    """A full a×b footprint of any number of layers ("a 2x2 block")."""
-    return k.all_of(k.dims(a, b), k.full)
+_block_any_height = k.solid
 
 
 def _chunky(bs: k.Boxes) -> k.Reason:
@@ -106,9 +94,7 @@ def _pack(n: int, tight: bool = False) -> k.Check:
     return f
 
 
-def _few(n_lo: int, n_hi: int, check: k.Check) -> k.Pred:
-    """Between n_lo and n_hi separate structures, each passing `check`."""
-    return k.any_of(*[k.each(n, check) for n in range(n_lo, n_hi + 1)])
+_few = k.few
 
 
 T = k.tower

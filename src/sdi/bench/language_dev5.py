@@ -23,19 +23,9 @@ from sdi.bench import boxes as bx
 from sdi.bench import language_checks as k
 from sdi.bench.language_checks import Case
 
-_L, _R, _F, _B = "left", "right", "front", "back"
-
-REL = "relation"
-SEQ = "sequence"
-NUM = "numbers"
-DIM = "dimensions"
-NEG = "negation"
-TYP = "typo"
-WO = "word_order"
-FIL = "filler"
-REG = "region"
-OPEN = "open"
-BAD = "bad_input"
+_L, _R, _F, _B = k.SIDES
+REL, SEQ, NUM, DIM, NEG, TYP = k.REL, k.SEQ, k.NUM, k.DIM, k.NEG, k.TYP
+WO, FIL, REG, OPEN, BAD = k.WO, k.FIL, k.REG, k.OPEN, k.BAD
 
 
 def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
@@ -45,31 +35,13 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks (on boxes)
 
 
-def _solid(a: int, b: int) -> k.Check:
-    """A full a×b footprint of any number of layers."""
-    return k.all_of(k.dims(a, b), k.full)
+_solid = k.solid
 
 
-def _runs(axis: str) -> k.Check:
-    """The longer plan side runs along `axis`: "x" (front–back) or "y" (left–right)."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        fx, fy = bx.footprint_cubes(bs)
-        if axis == "y":
-            return None if fy > fx else "runs front–back, not left–right"
-        return None if fx > fy else "runs left–right, not front–back"
-
-    return f
+_runs = k.runs
 
 
-def _low(n: int) -> k.Check:
-    """At most n cubes high."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        h = bx.thickness_cubes(bs)
-        return None if h <= n else f"{h} high, want ≤ {n}"
-
-    return f
+_low = k.low
 
 
 def _room(cells: int) -> k.Check:
