@@ -185,3 +185,20 @@ def test_programs_can_be_written_from_the_stored_record(orch):
         plan = record.commissioning(record.cell())
         texts.append(rapid_module(plan.job, plan.tasks, plan.motion, plan.robots["irb120"]))
     assert texts[0] == texts[1] and "MODULE" in texts[0]  # the same motion, every time
+
+
+def test_sdi_export_writes_the_stored_record_of_a_run(orch, tmp_path):
+    from sdi.export import rapid_module
+
+    s = at_confirmation(orch)
+    record = orch.record(s.run_id)
+    plan = record.commissioning(record.cell())
+    expected = rapid_module(plan.job, plan.tasks, plan.motion, plan.robots["irb120"])
+    out = tmp_path / "rapid"
+    proc = sdi("export", "--run", s.run_id, "--db", str(orch.db), "--rapid", str(out))
+    assert proc.returncode == 0, proc.stderr
+    assert (out / "SDI_IRB120.mod").read_text(encoding="utf-8") == expected
+    both = sdi("export", "layout.json", "--run", s.run_id, "--rapid", str(tmp_path / "x"))
+    assert both.returncode == 2 and "one of them" in both.stderr + both.stdout
+    missing = sdi("export", "--run", "nope", "--db", str(orch.db), "--rapid", str(tmp_path / "y"))
+    assert missing.returncode == 2 and "Traceback" not in missing.stderr

@@ -447,7 +447,9 @@ def execute_cmd(
 
 @app.command("export")
 def export_cmd(
-    layout_file: Annotated[Path, typer.Argument(help="layout JSON or a saved plan result")],
+    layout_file: Annotated[
+        Path | None, typer.Argument(help="layout JSON or a saved plan result (or use --run)")
+    ] = None,
     rapid: Annotated[
         Path | None, typer.Option("--rapid", help="directory for one RAPID module per robot")
     ] = None,
@@ -457,16 +459,37 @@ def export_cmd(
     cell_path: CellOption = None,
     arms: ArmsOption = None,
     force: ForceOption = False,
+    run_id: Annotated[
+        str | None,
+        typer.Option("--run", help="export the stored commissioning record of this run"),
+    ] = None,
+    db: Annotated[
+        Path | None, typer.Option("--db", help="run database (with --run; default: $SDI_DB)")
+    ] = None,
 ) -> None:
-    """Export robot programs (ABB RAPID, abb-motion-program-exec Python) for a verified layout."""
+    """Export robot programs (ABB RAPID, abb-motion-program-exec Python) for a verified layout,
+    or for a run's stored commissioning record (`--run`: the approved motion, not a new plan)."""
     if rapid is None and python is None:
         _fail("give --rapid DIR and/or --python FILE", False)
+    if (layout_file is None) == (run_id is None):
+        _fail("give a LAYOUT_FILE or --run RUN_ID (one of them)", False)
     outputs = Outputs(force=force)
     if rapid is not None:
         outputs.folder(rapid, "--rapid", patterns=("SDI_*.mod",))
     if python is not None:
         outputs.file(python, "--python")
-    plan = _commission(layout_file, cell_path, arms, False)
+    if run_id is not None:
+        from sdi.orchestrator import Orchestrator
+
+        orch = Orchestrator(db=_database(db, run_id=run_id), create=False)
+        try:
+            record = orch.record(run_id)
+            plan = record.commissioning(record.cell())
+        finally:
+            orch.close()
+    else:
+        assert layout_file is not None
+        plan = _commission(layout_file, cell_path, arms, False)
     from sdi.export import interlock_plan, python_program, rapid_module
 
     interlocks = interlock_plan(
@@ -485,7 +508,7 @@ def export_cmd(
             plan.tasks,
             plan.motion,
             plan.robots,
-            command=str(layout_file),
+            command=str(layout_file) if layout_file is not None else f"run {run_id}",
             filename=python.name,
             interlocks=interlocks,
         )
