@@ -351,3 +351,30 @@ def test_number_forms_are_read_and_stated():
     [s] = reading.spec.structures
     assert (s.at_x, s.at_y) == (0.35, 0.2)
     assert len([n for n in reading.notes if n.startswith("read")]) == 2
+
+
+# -- no command crashes the front end -----------------------------------------------------------
+_SALAD = sorted(
+    {
+        *("tower", "towers", "row", "grid", "wall", "bridge", "ring", "pyramid", "staircase"),
+        *("castle", "canopy", "arch", "L", "U", "pad", "slab", "base", "layer", "beam", "cube"),
+        *("on", "top", "of", "it", "them", "then", "and", "with", "a", "the", "not", "no"),
+        *("between", "around", "inside", "next", "to", "beside", "behind", "joined", "by"),
+        *("each", "one", "two", "three", "10", "cm", "x", "=", "0.4", "(", ")", ",", ".", ";"),
+        *("-", "another", "second", "first", "more", "than", "half", "twice", "make", "put"),
+        *("take", "off", "add", "until", "@", "#12", "1e3", "5/6", "2+3", "L=4", "left", "back"),
+        *("tall", "wide", "small", "high", "long", "steps", "levels", "don't", "isn't", "\n"),
+    }
+)
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.sampled_from(_SALAD), min_size=1, max_size=18))
+def test_no_word_salad_crashes_the_front_end(tokens):
+    result = plan(" ".join(tokens))
+    data = result.to_json_dict()
+    assert data["status"] in ("success", "partial", "failure", "error")
+    if data["status"] == "error":
+        assert "understood" in data and data["error"]
+    if data["status"] == "success":
+        assert result.reading is not None and result.reading.complete
