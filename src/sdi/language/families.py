@@ -130,6 +130,10 @@ def _derive(spec: StructureSpec, notes: list[str]) -> StructureSpec:
         spec = spec.model_copy(update={"length_m": spec.width_m})
     if one_side and spec.length_m is not None and spec.width_m is None:
         spec = spec.model_copy(update={"width_m": spec.length_m})
+    if spec.shape in ("bridge", "arch", "canopy") and spec.gap_m is not None:
+        # "a bridge over a gap of one cube": the gap between pillars is the span
+        span = max(1, round(spec.gap_m / CUBE_M))
+        spec = spec.model_copy(update={"span": spec.span or span, "gap_m": None})
     if spec.shape == "pyramid" and spec.width is not None and spec.length is None:
         spec = spec.model_copy(update={"length": spec.width, "width": None})
     if spec.shape == "grid" and spec.count is not None:

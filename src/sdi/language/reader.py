@@ -98,6 +98,8 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("adjacent", "to"), "next", None),
     (("close", "to"), "next", None),
     (("near", "to"), "next", None),
+    (("leading", "up", "to"), "next", None),
+    (("leading", "to"), "next", None),
     (("near",), "next", None),
     (("to", "its", "left"), "next_implicit", "left"),
     (("to", "its", "right"), "next_implicit", "right"),
@@ -142,7 +144,7 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
 ]
 _MARKERS.sort(key=lambda m: -len(m[0]))
 _VERB_AROUND = {"surround", "encircle", "enclose", "ring", "circle", "fence", "wall"}
-_VERB_JOIN = {"join", "connect", "link", "bridge"}
+_VERB_JOIN = {"join", "connect", "link", "bridge", "span"}
 _VERB_TOP = {"top", "cap", "crown"}
 _PRONOUNS = {"it", "them", "this", "that", "these", "those", "one", "both"}
 # Nouns that name a structure in a relation but not a family of their own.
@@ -556,7 +558,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r",?\s*\b(?:with\s*out|with\s+no|and\s+no|no)\s+(?:a\s+|any\s+)?(?:beam|lintel|plank)s?"
+            r",?\s*\b(?:with\s*out|with\s+no|and\s+no|no)\s+(?:using\s+)?(?:a\s+|any\s+)?(?:beam|lintel|"
+            r"plank)s?"
             r"(?:\s*,?\s*(?:just|only)\s+cubes)?\b",
             re.IGNORECASE,
         ),
@@ -730,6 +733,37 @@ _REWRITES += [
         "read '{0}' as a part's width apart",
     ),
     (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
+    (re.compile(r",?\s*\ball\s+touching(?:\s+each\s+other)?\b", re.IGNORECASE), " ", ""),
+    (
+        re.compile(
+            r"\b(?:do\s+not|never)\s+(?:build|put|place)\s+anything\s+(?:at|on|in)\s+the\s+"
+            r"(?:left|right|front|back)(?:\s+side)?\b\s*[;,.]?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': nothing is built there",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:and\s+)?(?:no|not)\s+(?:shorter|lower|smaller)\s+than\s+\w+(?:\s+cubes?)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': the larger number is within the range",
+    ),
+    (
+        re.compile(r",?\s*\bneither\s+(?:one\s+)?touching\s+the\s+other\b", re.IGNORECASE),
+        " spaced 5 cm apart ",
+        "read '{0}' as a part's width apart",
+    ),
+    (
+        re.compile(
+            r"\b(square|rectangle|ring|grid)\b(\s+of\s+cubes)?\s*,?\s*hollow\b", re.IGNORECASE
+        ),
+        " hollow {0}{1} ",
+        "",
+    ),
+    (re.compile(r",?\s*\bnot\s+filled(?:\s+in)?\b", re.IGNORECASE), " ", ""),
     (re.compile(r"\b(?:underneath|beneath|below)\s*(?=[,;.]|$)", re.IGNORECASE), " ", ""),
     (
         re.compile(
@@ -1195,6 +1229,11 @@ _MODIFY = [
     ),
     _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
     _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
+    _op(r"\b(double|triple)\s+(?:it|them)\s+in\s+height\b", "*"),
+    _op(r"\b(?:take|knock|lift)\s+(?:away|off)\s+" + _N + r"\s+(?:cubes?|levels?|layers?)\b", "-"),
+    _op(
+        r"\b(?:take|knock|lift)\s+off\s+(?:its|the)\s+top\s+(?:row|level|layer|course|tier)\b", "-1"
+    ),
     _op(r"\b(?:cut|chop)\s+(?:it|them)\s+in\s+(half)\b|\bhalve\s+(?:it|them)\b", "/"),
     _op(
         r"\bmake\s+(?:it|them|the\s+\w+)\s+"

@@ -71,7 +71,8 @@ HARMLESS = _words(
     width height depth equal equally even evenly same each definitely certainly surely
     absolutely precisely have has having had period comma stop u ur story stuff point work
     working surface bench heights lengths widths sizes plus tidy task running runs actually
-    sorry oops wait req fyi thx asap kindly
+    sorry oops wait req fyi thx asap kindly ta lonely sturdy sign slide visual deck mock
+    mockup
     """
 )
 
