@@ -47,6 +47,19 @@ def _sizes(cell: CellConfig, part: str) -> Sizes:
     )
 
 
+def _footprint_half(
+    yaws: list[float] | np.ndarray, dims: list[tuple[float, float, float]]
+) -> np.ndarray:
+    """Footprint of boxes turned by `yaws` (rad) about z: AABB half extents (n, 2), m."""
+    return np.array(
+        [
+            [abs(math.cos(a)) * d[0] / 2 + abs(math.sin(a)) * d[1] / 2,
+             abs(math.sin(a)) * d[0] / 2 + abs(math.cos(a)) * d[1] / 2]
+            for a, d in zip(yaws, dims, strict=True)
+        ]
+    ).reshape(-1, 2)  # fmt: skip
+
+
 def _orient(spec: StructureSpec, boxes: list[Box], sizes: Sizes) -> _Placed:
     yaw0 = math.pi / 2 if (spec.axis or "y") == "y" else 0.0
     yaw = yaw0 + math.radians(spec.yaw_deg)
@@ -62,14 +75,7 @@ def _orient(spec: StructureSpec, boxes: list[Box], sizes: Sizes) -> _Placed:
     local = np.array(uv, dtype=float).reshape(-1, 2)
     xy = local @ np.array([[cos, sin], [-sin, cos]])
     xy[np.abs(xy) < 1e-12] = 0.0
-    # Footprint of the rotated boxes: AABB half extents per box.
-    half = np.array(
-        [
-            [abs(math.cos(a)) * d[0] / 2 + abs(math.sin(a)) * d[1] / 2,
-             abs(math.sin(a)) * d[0] / 2 + abs(math.cos(a)) * d[1] / 2]
-            for a, d in zip(yaws, dims, strict=True)
-        ]
-    ).reshape(-1, 2)  # fmt: skip
+    half = _footprint_half(yaws, dims)
     lo, hi = (xy - half).min(axis=0), (xy + half).max(axis=0)
     centre = (lo + hi) / 2
     return _Placed(
@@ -281,23 +287,12 @@ def _merge(base: _Placed, other: _Placed, dxy: np.ndarray, dz: float) -> _Placed
     )
 
 
-def _box_half(p: _Placed) -> np.ndarray:
-    """Per-part footprint half extents (n, 2), m."""
-    return np.array(
-        [
-            [abs(math.cos(a)) * d[0] / 2 + abs(math.sin(a)) * d[1] / 2,
-             abs(math.sin(a)) * d[0] / 2 + abs(math.cos(a)) * d[1] / 2]
-            for a, d in zip(p.yaws, p.sizes, strict=True)
-        ]
-    ).reshape(-1, 2)  # fmt: skip
-
-
 def _top(p: _Placed) -> tuple[float, np.ndarray]:
     """Height of the unit's top face, m, and the footprint centre of the parts that reach it."""
     tops = p.z + np.array([d[2] for d in p.sizes]) / 2
     top = float(tops.max())
     high = tops > top - 1e-6
-    half = _box_half(p)[high]
+    half = _footprint_half(p.yaws, p.sizes)[high]
     lo, hi = (p.xy[high] - half).min(axis=0), (p.xy[high] + half).max(axis=0)
     return top, (lo + hi) / 2
 

@@ -70,9 +70,12 @@ def unused_slots(spec: StructureSpec) -> dict[str, object]:
     }
 
 
-def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> StructureSpec:
+def check_family(
+    spec: StructureSpec, notes: list[str], material: list[str], *, part_m: float = 0.05
+) -> StructureSpec:
     """`spec` with every value placed where its family uses it, or reported in `notes`
-    (and, when it changes what is built, in `material`)."""
+    (and, when it changes what is built, in `material`). `part_m` is the edge of the cell's
+    cube, m: sizes in metres are compared with it."""
     flat = spec.shape in ("grid",)
     if flat and ((spec.height or 1) > 1 or spec.height_m is not None):
         notes.append(
@@ -98,8 +101,8 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
         and spec.width == (spec.length or spec.width)
     ):
         spec = spec.model_copy(update={"width": None, "length": spec.length or spec.width})
-    spec = _derive(spec, notes)
-    spec = _metres_and_parts(spec, notes, material)
+    spec = _derive(spec, notes, part_m)
+    spec = _metres_and_parts(spec, notes, material, part_m)
     implied = {
         k: None
         for k, v in spec.model_dump(exclude_none=True).items()
@@ -121,7 +124,7 @@ def check_family(spec: StructureSpec, notes: list[str], material: list[str]) -> 
     return spec
 
 
-def _derive(spec: StructureSpec, notes: list[str]) -> StructureSpec:
+def _derive(spec: StructureSpec, notes: list[str], part_m: float) -> StructureSpec:
     """Slots the words imply for a family: one side of a square family, a pyramid's base
     given as its width, a grid's missing side from its count, a table top's size."""
     square = ("grid", "block", "enclosure", "castle")
@@ -132,7 +135,7 @@ def _derive(spec: StructureSpec, notes: list[str]) -> StructureSpec:
         spec = spec.model_copy(update={"width_m": spec.length_m})
     if spec.shape in ("bridge", "arch", "canopy") and spec.gap_m is not None:
         # "a bridge over a gap of one cube": the gap between pillars is the span
-        span = max(1, round(spec.gap_m / CUBE_M))
+        span = max(1, round(spec.gap_m / part_m))
         spec = spec.model_copy(update={"span": spec.span or span, "gap_m": None})
     if spec.shape == "pyramid" and spec.width is not None and spec.length is None:
         spec = spec.model_copy(update={"length": spec.width, "width": None})
@@ -151,27 +154,26 @@ def _derive(spec: StructureSpec, notes: list[str]) -> StructureSpec:
     return spec
 
 
-CUBE_M = 0.05  # the default part edge; a cell with other parts states its own in the notes
-
-
-def _metres_and_parts(spec: StructureSpec, notes: list[str], material: list[str]) -> StructureSpec:
+def _metres_and_parts(
+    spec: StructureSpec, notes: list[str], material: list[str], part_m: float
+) -> StructureSpec:
     """A size given both in parts and in metres must agree; metres that are no whole number
     of parts are rounded, and said so."""
     for key in ("length", "width", "height"):
         parts, metres = getattr(spec, key), getattr(spec, f"{key}_m")
         if metres is None:
             continue
-        whole = round(metres / CUBE_M)
+        whole = round(metres / part_m)
         if parts is not None and parts != whole:
             notes.append(
                 f"ignored {key} {parts}: the command also says {metres:g} m ({whole} parts)"
             )
             material.append(f"{key}={parts}")
             spec = spec.model_copy(update={key: None})
-        elif abs(metres / CUBE_M - whole) > 0.05 and whole >= 1:
+        elif abs(metres / part_m - whole) > 0.05 and whole >= 1:
             notes.append(
-                f"{metres:g} m is {metres / CUBE_M:.1f} parts of {CUBE_M:g} m: built {whole} "
-                f"({whole * CUBE_M:g} m)"
+                f"{metres:g} m is {metres / part_m:.1f} parts of {part_m:g} m: built {whole} "
+                f"({whole * part_m:g} m)"
             )
     return spec
 

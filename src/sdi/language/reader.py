@@ -25,6 +25,7 @@ The command is read in stages:
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -208,12 +209,12 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
             r"(?:\s+(?:up|on\s+top(?:\s+of\s+each\s+other)?))?",
             re.IGNORECASE,
         ),
-        " ",
+        "{no_stack}",
         "'{0}': laid side by side, not stacked",
     ),
     (
         re.compile(r"(?:,\s*)?\b(?:with\s+)?no\s+stacking\b", re.IGNORECASE),
-        " ",
+        "{no_stack}",
         "'{0}': laid side by side, not stacked",
     ),
     (
@@ -284,7 +285,7 @@ _REWRITES += [
     ),
     (
         re.compile(r",?\s*-?\s*\b(?:cubes|blocks)\s+only\b|\bonly\s+cubes\b", re.I),
-        " ",
+        "{no_beams}",
         "'{0}': built of cubes only",
     ),
     (
@@ -371,7 +372,7 @@ _REWRITES += [
             r",?\s*\b(?:just|only)\s+cubes\b",
             re.IGNORECASE,
         ),
-        " ",
+        "{no_beams}",
         "'{0}': built of cubes only",
     ),
     # "a 3x3 grid without the middle cube": a ring
@@ -563,7 +564,7 @@ _REWRITES += [
             r"(?:\s*,?\s*(?:just|only)\s+cubes)?\b",
             re.IGNORECASE,
         ),
-        " ",
+        "{no_beams}",
         "'{0}': built of cubes only",
     ),
     (
@@ -663,7 +664,7 @@ _REWRITES += [
         re.compile(
             r"\b(double|triple|quadruple)[- ](?:height|decker|deck|layer|level|tier|storey)\b", re.I
         ),
-        "{layers}-layer",
+        "{layers}",
         "read '{0}' as that many layers",
     ),
     (
@@ -994,7 +995,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     if not structures:
         _no_structure(st, doc, command)
     relations, structures = _relate(phrases, rels, structures, st)
-    structures = [check_family(s, st.notes, st.material) for s in structures]
+    structures = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in structures]
     if st.no_stack:
         structures = [_unstack(s, st) for s in structures]
     if st.no_beams:
@@ -1381,6 +1382,116 @@ def _split(m: re.Match[str], st: _State) -> str:
     return f" {count} {noun} of {total // count} cubes "
 
 
+Handler = Callable[[re.Match[str], _State, str], str]
+
+
+def _said(m: re.Match[str]) -> tuple[str, list[str]]:
+    return m.group(0).strip(" ,"), [g.lower() if g else "" for g in m.groups()]
+
+
+def _no_stack(m: re.Match[str], st: _State, note: str) -> str:
+    st.no_stack = True
+    st.notes.append(note.format(_said(m)[0]))
+    return " "
+
+
+def _no_beams(m: re.Match[str], st: _State, note: str) -> str:
+    st.no_beams = True
+    st.notes.append(note.format(_said(m)[0]))
+    return " "
+
+
+def _placement(m: re.Match[str], st: _State, note: str) -> str:
+    if re.search(r"\b(?:castle|fort|fortress|citadel)s?\b", m.string, re.IGNORECASE):
+        return m.group(0)  # "a castle with a tower at each corner": the family's own
+    if re.search(r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]):
+        return m.group(0)  # "a courtyard 5 cubes on each side": a size
+    said = _said(m)[0]
+    st.material.append(said)
+    st.notes.append(
+        f"ignored '{said}': parts cannot be placed on a chosen end, side or corner of a "
+        "structure yet"
+    )
+    return " "
+
+
+def _arith(m: re.Match[str], st: _State, note: str) -> str:
+    said, groups = _said(m)
+    a_, b_ = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
+    if not (a_.isdigit() and b_.isdigit()):
+        return m.group(0)
+    value = int(b_) + (int(a_) if groups[1] == "more" else -int(a_))
+    st.notes.append(f"read '{said}' as {value}")
+    return f" {value} "
+
+
+def _more_like(m: re.Match[str], st: _State, note: str) -> str:
+    shapes = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+              if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    if not shapes:
+        return m.group(0)
+    noun = shapes[-1] if shapes[-1].endswith("s") else shapes[-1] + "s"
+    return f" {_said(m)[1][0]} identical {noun} "
+
+
+def _times(m: re.Match[str], st: _State, note: str) -> str:
+    said, groups = _said(m)
+    factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
+    base_n = words_to_numbers([groups[2]])[0]
+    k_ = factor.get(re.sub(r"\s+", " ", groups[0]), 0)
+    if not base_n.isdigit() or not k_ or (int(base_n) * k_) % 1:
+        return m.group(0)
+    value = int(int(base_n) * k_)
+    st.notes.append(f"read '{said}' as {value} {groups[1]}")
+    return f" {value} {groups[1]} "
+
+
+def _climb(m: re.Match[str], st: _State, note: str) -> str:
+    # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
+    return {
+        "back": " along x ",
+        "left": " along y ",
+        "front": " along x rotated 180 degrees ",
+        "right": " along y rotated 180 degrees ",
+    }[_said(m)[1][0]]
+
+
+def _rows(m: re.Match[str], st: _State, note: str) -> str:
+    said_n = [words_to_numbers([g])[0] for g in _said(m)[1][:2]]
+    if all(v.isdigit() for v in said_n) and int(said_n[0]) % int(said_n[1]) == 0:
+        return f" {int(said_n[0]) // int(said_n[1])} by {said_n[1]} "
+    return m.group(0)
+
+
+def _rows_of(m: re.Match[str], st: _State, note: str) -> str:
+    groups = _said(m)[1]
+    walls = re.search(r"\b(?:wall|walls|fence)\b", m.string[: m.start()], re.IGNORECASE)
+    return f" {groups[0]} {'levels' if walls else 'rows'} of {groups[1]} "
+
+
+def _layers(m: re.Match[str], st: _State, note: str) -> str:
+    said, groups = _said(m)
+    st.notes.append(note.format(said))
+    layers = {"double": 2, "triple": 3, "quadruple": 4}[groups[0]]
+    return f"{layers}-layer"
+
+
+# Rewrites whose replacement is computed: the `_REWRITES` entry names one of these.
+_HANDLERS: dict[str, Handler] = {
+    "{split}": lambda m, st, note: _split(m, st),
+    "{no_stack}": _no_stack,
+    "{no_beams}": _no_beams,
+    "{placement}": _placement,
+    "{arith}": _arith,
+    "{more_like}": _more_like,
+    "{times}": _times,
+    "{climb}": _climb,
+    "{rows}": _rows,
+    "{rows_of}": _rows_of,
+    "{layers}": _layers,
+}
+
+
 def _rewrite(text: str, st: _State) -> str:
     text = _another(text)
     if (
@@ -1396,78 +1507,15 @@ def _rewrite(text: str, st: _State) -> str:
     for pattern, replacement, note in _REWRITES:
 
         def sub(m: re.Match[str], replacement: str = replacement, note: str = note) -> str:
+            handler = _HANDLERS.get(replacement)
+            if handler is not None:
+                return handler(m, st, note)
             said = m.group(0).strip(" ,")
             groups = [g.lower() if g else "" for g in m.groups()]
-            if replacement == "{split}":
-                return _split(m, st)
-            if replacement == "{placement}":
-                if re.search(r"\b(?:castle|fort|fortress|citadel)s?\b", m.string, re.IGNORECASE):
-                    return m.group(0)  # "a castle with a tower at each corner": the family's own
-                if re.search(
-                    r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]
-                ):
-                    return m.group(0)  # "a courtyard 5 cubes on each side": a size
-                st.material.append(said)
-                st.notes.append(
-                    f"ignored '{said}': parts cannot be placed on a chosen end, side or corner "
-                    "of a structure yet"
-                )
-                return " "
-            if replacement == "{arith}":
-                a_, b_ = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
-                if not (a_.isdigit() and b_.isdigit()):
-                    return m.group(0)
-                value = int(b_) + (int(a_) if groups[1] == "more" else -int(a_))
-                st.notes.append(f"read '{said}' as {value}")
-                return f" {value} "
-            if replacement == "{more_like}":
-                shapes = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
-                          if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
-                if not shapes:
-                    return m.group(0)
-                noun = shapes[-1] if shapes[-1].endswith("s") else shapes[-1] + "s"
-                return f" {groups[0]} identical {noun} "
-            if replacement == "{times}":
-                factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
-                base_n = words_to_numbers([groups[2]])[0]
-                k_ = factor.get(re.sub(r"\s+", " ", groups[0]), 0)
-                if not base_n.isdigit() or not k_ or (int(base_n) * k_) % 1:
-                    return m.group(0)
-                value = int(int(base_n) * k_)
-                st.notes.append(f"read '{said}' as {value} {groups[1]}")
-                return f" {value} {groups[1]} "
-            if replacement == "{climb}":
-                # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
-                return {
-                    "back": " along x ",
-                    "left": " along y ",
-                    "front": " along x rotated 180 degrees ",
-                    "right": " along y rotated 180 degrees ",
-                }[groups[0]]
-            if replacement == "{rows}":
-                said_n = [words_to_numbers([g])[0] for g in groups[:2]]
-                if all(v.isdigit() for v in said_n) and int(said_n[0]) % int(said_n[1]) == 0:
-                    per = int(said_n[0]) // int(said_n[1])
-                    return f" {per} by {said_n[1]} "
-                return m.group(0)
-            if replacement == "{rows_of}":
-                walls = re.search(r"\b(?:wall|walls|fence)\b", m.string[: m.start()], re.IGNORECASE)
-                unit = "levels" if walls else "rows"
-                return f" {groups[0]} {unit} of {groups[1]} "
-            if replacement == "{layers}-layer":
-                n = {"double": 2, "triple": 3, "quadruple": 4}[groups[0]]
-                st.notes.append(note.format(said))
-                return f"{n}-layer"
             opposite = _OPPOSITE.get(groups[0], "") if groups else ""
             opposite2 = _OPPOSITE.get(groups[1], "") if len(groups) > 1 else ""
             if opposite2 and opposite2 in ("left", "right") and opposite in ("front", "back"):
                 opposite, opposite2 = opposite2, opposite
-            if "stack" in note or "stacked" in note:
-                st.no_stack = True
-            if "cubes only" in note:
-                st.no_beams = True
-            if note.startswith("ignored"):
-                st.material.append(said)
             if note:
                 st.notes.append(
                     _SPACES.sub(" ", note.format(said, opposite=opposite, opposite2=opposite2))
@@ -1685,7 +1733,7 @@ def _clause_phrases(
         prep = next(
             (i for i in clause if i > v and lower[i] in ("with", "by", "using", "in")), None
         )
-        if prep is not None and any(_object_head(doc, prep + 1, end)[1] for _ in (0,)):
+        if prep is not None and _object_head(doc, prep + 1, end)[1]:
             markers.append((v, v + 1, kind + "_verb", None))
             markers.append((prep, prep + 1, kind, None))
     while k < end:
@@ -1909,7 +1957,7 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
         if _modify(p, phrases[:k], structures, st):
             continue
         if _COUNT_ONLY.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
-            grown = _continues(p, phrases[:k])  # "make a tower? 4 cubes?"
+            grown = _continues(p, phrases[:k], st.cell)  # "make a tower? 4 cubes?"
             if grown is not None:
                 before_count, prev = grown
                 assert prev.spec is not None
@@ -1937,7 +1985,7 @@ def _fill(phrases: list[_Phrase], rels: list[_Rel], st: _State, doc: Doc) -> lis
             spec, unused = _parse_or_base(p, st)
             spec = _copies(spec, p.text, st, structures)
         except SpecError:
-            grown = _continues(p, phrases[:k])
+            grown = _continues(p, phrases[:k], st.cell)
             if grown is not None:
                 before_count, prev = grown
                 assert prev.spec is not None
@@ -2175,7 +2223,7 @@ def _target(phrases: list[_Phrase], j: int) -> int:
     return j
 
 
-def _continues(p: _Phrase, before: list[_Phrase]) -> tuple[int, _Phrase] | None:
+def _continues(p: _Phrase, before: list[_Phrase], cell: CellConfig) -> tuple[int, _Phrase] | None:
     """A phrase with no structure that modifies the one before ("Make it 5 cubes tall"):
     the earlier phrase read again with it, and how many structures it had."""
     built = [q for q in before if q.spec is not None]
@@ -2183,7 +2231,7 @@ def _continues(p: _Phrase, before: list[_Phrase]) -> tuple[int, _Phrase] | None:
         return None
     prev = built[-1]
     try:
-        spec, _ = parse_phrase(prev.text + " , " + p.text, CellConfig())
+        spec, _ = parse_phrase(prev.text + " , " + p.text, cell)
     except SpecError:
         return None
     if prev.spec is not None and spec.structures == prev.spec.structures:
@@ -2197,19 +2245,21 @@ def _continues(p: _Phrase, before: list[_Phrase]) -> tuple[int, _Phrase] | None:
     return count, prev
 
 
+# Words that make a clause more than chatter (ambiguous shape nouns like "well" do not).
+_USABLE = (
+    set(lx.SHAPE_WORDS) | set(lx.SIZE_WORDS) | set(lx.DIMENSION_WORDS) | set(lx.REGION_WORDS)
+    | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | _BEAMS
+) - lx.AMBIGUOUS_SHAPES - {"well", "item", "items", "object", "objects", "unit"}  # fmt: skip
+
+
 def _chatter(text: str) -> bool:
     """A clause with nothing the Specifier could use ("The visitors arrive at 10")."""
-    known = (
-        set(lx.SHAPE_WORDS) | set(lx.SIZE_WORDS) | set(lx.DIMENSION_WORDS) | set(lx.REGION_WORDS)
-        | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | _BEAMS
-    )  # fmt: skip
     said = re.findall(r"[a-z]+|\d+", text.lower())
     if any(w.isdigit() for w in said) and not any(w in lx.PART_WORDS for w in said):
         return bool(
             re.search(r"\b(?:item|order|ticket|job|room|at|by|until|before|after)\b", text, re.I)
         )
-    strong = known - lx.AMBIGUOUS_SHAPES - {"well", "item", "items", "object", "objects", "unit"}
-    return not any(w in strong for w in said)
+    return not any(w in _USABLE for w in said)
 
 
 def _attached(tok: Token) -> bool:

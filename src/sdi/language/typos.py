@@ -9,7 +9,6 @@ correction is reported ("corrected 'brige' to 'bridge'").
 from __future__ import annotations
 
 import re
-from functools import lru_cache
 
 from rapidfuzz import fuzz, process
 from rapidfuzz.distance import DamerauLevenshtein
@@ -23,9 +22,8 @@ _SHAPES = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES)
 _SUFFIXES = {"y", "ed", "ing", "er", "est", "ly", "ish", "ie", "ies"}
 
 
-@lru_cache(maxsize=1)
-def _known() -> frozenset[str]:
-    return frozenset(words.VOCABULARY)
+_KNOWN = frozenset(words.VOCABULARY)
+_CHOICES = sorted(words.CORRECTABLE)  # what a word may be corrected to
 
 
 def _vocab_has(word: str) -> bool:
@@ -36,12 +34,11 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     """`text` with typos replaced, and a note per correction. `aggressive` also corrects
     words the English vocabulary knows ("wal"), for a command nothing else could read."""
     notes: list[str] = []
-    choices = sorted(words.CORRECTABLE)
 
     def fix(m: re.Match[str]) -> str:
         raw = m.group(0)
         w = raw.lower()
-        if len(w) < 3 or w in _known():
+        if len(w) < 3 or w in _KNOWN:
             return raw
         if len(w) == 3:  # three letters: only a swap of two neighbours ("teh")
             swaps = {w[:i] + w[i + 1] + w[i] + w[i + 2 :] for i in range(2)}
@@ -51,9 +48,9 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
                 return hit[0]
             if not aggressive:
                 return raw
-            choices_here = [c for c in choices if c in _SHAPES and len(c) > len(w)]
+            choices_here = [c for c in _CHOICES if c in _SHAPES and len(c) > len(w)]
         else:
-            choices_here = choices
+            choices_here = _CHOICES
         if _vocab_has(w) and not aggressive:
             return raw
         limit = 1 if len(w) <= 5 else 2
