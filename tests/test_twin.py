@@ -1,0 +1,235 @@
+"""The twin without a browser: edit operations, snapping, undo/redo, the run service on a real
+run database and orchestrator, the HTTP API and its token gate, and the bind refusal."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from fastapi.testclient import TestClient
+
+from conftest import cube, layout
+from sdi.errors import InputError
+from sdi.execute.record import layout_hash
+from sdi.model.cell import CellConfig
+from sdi.model.layout import Layout
+from sdi.twin.review import ReviewSession, snap, yaw_deg
+from sdi.twin.server import check_bind, create_app, is_loopback
+from sdi.twin.service import LockedError, Twin
+
+CELL = CellConfig()
+
+
+def row3() -> Layout:
+    return layout(cube("c1", 0.45, 0.25, 0.025), cube("c2", 0.45, 0.30, 0.025),
+                  cube("c3", 0.45, 0.35, 0.025))  # fmt: skip
+
+
+# -- snapping and edit operations --------------------------------------------------------------
+def test_snap_puts_centres_on_the_half_cube_grid_and_resting_levels():
+    assert snap([0.4612, 0.2901, 0.031], (0.05, 0.05, 0.05), CELL) == [0.45, 0.3, 0.025]
+    assert snap([0.4, 0.3, 0.09], (0.05, 0.05, 0.05), CELL) == [0.4, 0.3, 0.075]
+    assert snap([0.4, 0.3, -0.2], (0.15, 0.05, 0.05), CELL) == [0.4, 0.3, 0.025]
+
+
+def test_a_drag_onto_a_neighbour_is_a_collision_on_both_and_undo_clears_it():
+    s = ReviewSession(CELL, row3())
+    assert s.report().passed
+    s.apply({"op": "move", "id": "c3", "position": [0.452, 0.303, 0.02]})  # snapped onto c2
+    view = s.to_json_dict()
+    collision = [v for v in view["violations"] if v["constraint"] == "collision"]
+    assert collision and set(collision[0]["objects"]) == {"c2", "c3"}
+    states = {p["id"]: p["state"] for p in view["parts"]}
+    assert states["c2"] == states["c3"] == "violating" and states["c1"] != "violating"
+    assert s.undo() and s.report().passed and s.to_json_dict()["can_redo"]
+    assert s.redo() and not s.report().passed
+    assert s.undo() and not s.undo()  # nothing more to undo
+
+
+def test_free_move_is_not_snapped():
+    s = ReviewSession(CELL, row3())
+    s.apply({"op": "move", "id": "c1", "position": [0.4612, 0.2, 0.025], "free": True})
+    assert s.layout().objects[0].position == (0.4612, 0.2, 0.025)
+
+
+def test_a_new_edit_clears_redo_and_each_finished_edit_is_one_step():
+    s = ReviewSession(CELL, row3())
+    s.apply({"op": "insert", "part": "beam", "position": [0.45, 0.30, 0.08], "yaw_deg": 90})
+    assert len(s.steps) == 1 and len(s.edits) == 2  # insert + its turn: one undo step
+    beam = s.layout().objects[-1]
+    assert beam.size == (0.15, 0.05, 0.05) and round(yaw_deg(beam.orientation)) == 90
+    assert beam.position == (0.45, 0.3, 0.075)
+    s.undo()
+    s.apply({"op": "rotate", "id": "c1", "by_deg": -90})
+    assert not s.undone and round(yaw_deg(s.layout().objects[0].orientation)) == -90
+
+
+def test_hints_apply_the_inspectors_suggestion():
+    s = ReviewSession(CELL, row3())
+    s.apply({"op": "move", "id": "c3", "position": [0.1, 0.3, 0.025]})
+    k = next(i for i, v in enumerate(s.report().violations) if v.constraint == "workspace")
+    s.apply({"op": "hint", "index": k})
+    assert s.report().passed
+    assert s.layout().objects[2].position[0] >= CELL.workspace.x_min + 0.025 - 1e-9
+    # a floating part: the hint adds the missing support under it
+    s.apply({"op": "move", "id": "c3", "position": [0.6, 0.3, 0.125]})
+    k = next(i for i, v in enumerate(s.report().violations) if v.constraint == "contact")
+    s.apply({"op": "hint", "index": k})
+    assert len(s.layout()) == 4
+
+
+def test_reorder_sets_the_assembly_order_and_the_inspector_checks_it():
+    s = ReviewSession(CELL, layout(cube("a", 0.45, 0.3, 0.025), cube("b", 0.45, 0.3, 0.075)))
+    s.apply({"op": "reorder", "id": "b", "before": "a"})  # the top before its support
+    assert s.order == ["b", "a"]
+    assert any(v.constraint in ("sequence", "gravity") for v in s.report().violations)
+    s.undo()
+    assert s.report().passed and s.report().sequence == ("a", "b")
+
+
+@pytest.mark.parametrize(
+    ("op", "field"),
+    [
+        ({"op": "fly", "id": "c1"}, "op"),
+        ({"op": "move", "id": "zz", "position": [0.4, 0.3, 0.025]}, "id"),
+        ({"op": "move", "id": "c1", "position": [0.4, "a", 0.025]}, "position"),
+        ({"op": "move", "id": "c1", "position": [0.4, float("nan"), 0.025]}, "position"),
+        ({"op": "rotate", "id": "c1", "by_deg": 45}, "by_deg"),
+        ({"op": "insert", "part": "brick", "position": [0.4, 0.3, 0.025]}, "part"),
+        ({"op": "hint", "index": 0}, "index"),
+        ({"op": "reorder", "id": "c1", "before": "nope"}, "before"),
+    ],
+)
+def test_bad_operations_name_their_field_and_change_nothing(op, field):
+    s = ReviewSession(CELL, row3())
+    with pytest.raises(InputError) as info:
+        s.apply(op)
+    assert info.value.field == field
+    assert s.steps == [] and s.version == 0 and s.layout() == row3()
+
+
+# -- the service on a real run database --------------------------------------------------------
+@pytest.fixture
+def twin(tmp_path: Path):
+    t = Twin(tmp_path / "runs.sqlite")
+    yield t
+    t.close()
+
+
+def _review_run(twin: Twin, command: str = "a row of 3 cubes") -> str:
+    run_id = twin.start(command)
+    twin.wait()
+    assert twin.view(run_id)["waiting_for"]["kind"] == "design_review"
+    return run_id
+
+
+def test_edits_survive_a_restart_of_the_server(tmp_path: Path):
+    first = Twin(tmp_path / "runs.sqlite")
+    run_id = _review_run(first)
+    first.edit(run_id, "tab-a", {"op": "remove", "id": "c3"})
+    first.close()
+    second = Twin(tmp_path / "runs.sqlite")
+    try:
+        view = second.view(run_id)
+        assert [p["id"] for p in view["review"]["parts"]] == ["c1", "c2"]
+        assert view["review"]["can_undo"]
+    finally:
+        second.close()
+
+
+def test_one_tab_holds_the_edit_lock(twin: Twin):
+    run_id = _review_run(twin)
+    twin.edit(run_id, "tab-a", {"op": "remove", "id": "c3"})
+    with pytest.raises(LockedError):
+        twin.edit(run_id, "tab-b", {"op": "undo"})
+    twin.release(run_id, "tab-a")
+    twin.edit(run_id, "tab-b", {"op": "undo"})
+    assert len(twin.view(run_id)["review"]["parts"]) == 3
+
+
+def test_accept_executes_exactly_the_edited_layout_and_revise_goes_back(twin: Twin):
+    run_id = _review_run(twin)
+    twin.edit(run_id, "t", {"op": "move", "id": "c3", "position": [0.55, 0.35, 0.025]})
+    session = twin.session(run_id)
+    assert session is not None
+    seen = layout_hash(session.layout())
+    with pytest.raises(InputError, match="changed"):
+        twin.accept(run_id, "t", "0" * 64)
+    twin.accept(run_id, "t", seen)
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "pre_execute", view
+    record = twin._orch.record(run_id)
+    assert record.body["layout_hash"] == seen
+    timeline = twin.timeline(run_id)
+    assert {s["part_id"] for s in timeline["steps"]} == {"c1", "c2", "c3"}
+    assert all(s["release"] is not None and s["release"] <= timeline["makespan_s"]
+               for s in timeline["steps"])  # fmt: skip
+    with pytest.raises(InputError, match="record on screen"):
+        twin.confirm(run_id, "t", "approve", "f" * 64)
+    twin.confirm(run_id, "t", "revise", None)
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "design_review"
+    assert view["record_hash"] is None
+    assert layout_hash(Layout.model_validate(twin._orch.status(run_id).waiting_for["layout"])) \
+        == seen  # fmt: skip
+
+
+def test_accept_is_refused_while_violations_remain(twin: Twin):
+    run_id = _review_run(twin)
+    twin.edit(run_id, "t", {"op": "move", "id": "c3", "position": [0.45, 0.3, 0.025]})
+    session = twin.session(run_id)
+    assert session is not None
+    with pytest.raises(InputError, match="violations"):
+        twin.accept(run_id, "t", layout_hash(session.layout()))
+
+
+# -- the HTTP API ------------------------------------------------------------------------------
+def test_api_errors_name_the_field(twin: Twin):
+    client = TestClient(create_app(twin))
+    r = client.post("/api/runs", json={"command": "   "})
+    assert r.status_code == 400 and r.json()["field"] == "command"
+    r = client.post("/api/runs", content=b"not json", headers={"content-type": "application/json"})
+    assert r.status_code == 400 and r.json()["field"] == "body"
+    r = client.get("/api/runs/nope")
+    assert r.status_code == 404
+    assert client.get("/api/scene").json()["robots"][0]["chain"][0]["type"] == "revolute"
+
+
+def test_the_token_gate(twin: Twin):
+    client = TestClient(create_app(twin, token="s3cret"))
+    assert client.get("/api/runs").status_code == 401
+    assert client.get("/").status_code == 401
+    assert client.get("/api/runs", headers={"authorization": "Bearer wrong"}).status_code == 401
+    assert client.get("/api/runs", headers={"authorization": "Bearer s3cret"}).status_code == 200
+    page = client.get("/?token=s3cret")  # the URL the CLI prints: sets the cookie
+    assert page.status_code == 200 and "sdi_token" in page.cookies
+    assert client.get("/api/runs").status_code == 200  # the cookie now carries it
+    fresh = TestClient(create_app(twin, token="s3cret"))
+    with pytest.raises(Exception), fresh.websocket_connect("/ws/runs/x") as ws:  # noqa: B017
+        ws.receive_json()
+
+
+def test_binding_beyond_loopback_needs_a_token():
+    assert is_loopback("127.0.0.1") and is_loopback("::1") and is_loopback("localhost")
+    assert not is_loopback("0.0.0.0")
+    with pytest.raises(InputError) as info:
+        check_bind("0.0.0.0", None)
+    assert info.value.field == "--host"
+    check_bind("0.0.0.0", "s3cret")
+    check_bind("127.0.0.1", None)
+
+
+def test_cli_refuses_a_public_bind_without_a_token(tmp_path: Path):
+    proc = subprocess.run(
+        [sys.executable, "-m", "sdi.cli", "twin", "--host", "0.0.0.0", "--db",
+         str(tmp_path / "r.sqlite")],
+        capture_output=True, text=True, timeout=120, env={"SDI_TWIN_TOKEN": "", "PATH": ""},
+    )  # fmt: skip
+    lines = [x for x in proc.stderr.splitlines() if not x.startswith("pybullet build")]
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert len(lines) == 1 and "--host" in lines[0] and "--token" in lines[0]
+    assert not (tmp_path / "r.sqlite").exists()
