@@ -1,4 +1,4 @@
-"""The language front end on the unseen evaluation sets (dev, dev2 … dev5 and frozen test).
+"""The language front end on the unseen evaluation sets (dev, dev2 … dev7 and frozen test).
 
 Every case is planned in-process with `sdi.pipeline.plan` and scored:
 
@@ -9,10 +9,11 @@ Every case is planned in-process with `sdi.pipeline.plan` and scored:
 * silent misreading — status ``success`` but the predicate fails (the worst outcome).
 
 Writes `benchmarks/results/language_dev.json`, `language_dev2.json`, `language_dev3.json`,
-`language_dev4.json`, `language_dev5.json` and `language_test.json`.
+`language_dev4.json`, `language_dev5.json`, `language_dev6.json`, `language_dev7.json` and
+`language_test.json`.
 
-Run: `python benchmarks/language.py [--set dev|dev2|dev3|dev4|dev5|test|both|all]` (`both` = dev
-and test, `all` = dev, dev2, dev3, dev4, dev5 and test).
+Run: `python benchmarks/language.py [--set dev|dev2|…|dev7|test|both|all]` (`both` = dev and
+test, `all` = dev, dev2 … dev7 and test).
 """
 
 from __future__ import annotations
@@ -93,7 +94,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument(
         "--set",
-        choices=("dev", "dev2", "dev3", "dev4", "dev5", "test", "both", "all"),
+        choices=("dev", "dev2", "dev3", "dev4", "dev5", "dev6", "dev7", "test", "both", "all"),
         default="both",
     )
     args = ap.parse_args(argv)
@@ -118,6 +119,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         from sdi.bench.language_dev5 import CASES as DEV5
 
         sets.append(("dev5", DEV5))
+    if args.set in ("dev6", "all"):
+        from sdi.bench.language_dev6 import CASES as DEV6
+
+        sets.append(("dev6", DEV6))
+    if args.set in ("dev7", "all"):
+        from sdi.bench.language_dev7 import CASES as DEV7
+
+        sets.append(("dev7", DEV7))
     if args.set in ("test", "both", "all"):
         from sdi.bench.language_test import CASES as TEST
 

@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to fifth dev sets (dev2, dev3, dev4, dev5) are held to the same checks and share no
+second to seventh dev sets (dev2 … dev7) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -20,6 +20,8 @@ from sdi.bench.language_dev2 import CASES as DEV2
 from sdi.bench.language_dev3 import CASES as DEV3
 from sdi.bench.language_dev4 import CASES as DEV4
 from sdi.bench.language_dev5 import CASES as DEV5
+from sdi.bench.language_dev6 import CASES as DEV6
+from sdi.bench.language_dev7 import CASES as DEV7
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -287,7 +289,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *TEST):
+    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -311,6 +313,8 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev3.py",
         "language_dev4.py",
         "language_dev5.py",
+        "language_dev6.py",
+        "language_dev7.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -711,5 +715,214 @@ _WALL5X3 = [cube(0.45, 0.20 + C * j, C / 2 + C * h) for h in range(3) for j in r
 )
 def test_dev5_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev5(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev6
+
+
+def test_dev6_set_sizes_ids_and_phenomena():
+    assert len(DEV6) >= 120
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev6-") for c in DEV6)
+    per = {p: sum(c.phenomenon == p for c in DEV6) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
+    assert {c.phenomenon for c in DEV6} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV6)
+
+
+def test_no_command_shared_between_dev6_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV6}) == len(DEV6)
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV6 if _norm(c.text) in seen]
+
+
+def _dev6(case_id: str) -> Case:
+    return next(c for c in DEV6 if c.id == case_id)
+
+
+def _slab_with_corner_columns(x0, y0, n, high):
+    corners = [(x0 + C * i, y0 + C * j) for i in (0, n - 1) for j in (0, n - 1)]
+    return [*grid(x0, y0, n, n), *[c for x, y in corners for c in column(x, y, high, z0=C)]]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev6-rel-07",  # a row of 5 with one more cube on each end
+            res(*_row_y(0.45, 0.20, 5), cube(0.45, 0.20, 0.075), cube(0.45, 0.40, 0.075)),
+            res(*_row_y(0.45, 0.20, 5), cube(0.45, 0.25, 0.075), cube(0.45, 0.35, 0.075)),
+        ),
+        (
+            "dev6-rel-08",  # two towers, the left one taller
+            res(*column(0.45, 0.40, 4), *column(0.45, 0.20, 2)),
+            res(*column(0.45, 0.40, 2), *column(0.45, 0.20, 4)),
+        ),
+        (
+            "dev6-rel-12",  # a 3 tower at the front, a 6 tower right behind it (touching)
+            res(*column(0.40, 0.30, 3), *column(0.45, 0.30, 6)),
+            res(*column(0.40, 0.30, 6), *column(0.45, 0.30, 3)),
+        ),
+        (
+            "dev6-rel-13",  # a 4x4 slab with a 3-high tower on each corner
+            res(*_slab_with_corner_columns(0.40, 0.25, 4, 3)),
+            res(
+                *grid(0.40, 0.25, 4, 4),
+                *[c for x in (0.45, 0.50) for y in (0.30, 0.35) for c in column(x, y, 3, z0=C)],
+            ),
+        ),
+        (
+            "dev6-rel-04",  # a 2-cube tower dead centre on a 3x3 slab
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 2, z0=C)),
+            res(*grid(0.40, 0.25, 3, 3), *column(0.40, 0.25, 2, z0=C)),
+        ),
+        (
+            "dev6-seq-08",  # a 4x4 ring with a cube on each corner on top
+            res(
+                *ring(0.40, 0.25, 4),
+                *[cube(x, y, 0.075) for x in (0.40, 0.55) for y in (0.25, 0.40)],
+            ),
+            res(
+                *ring(0.40, 0.25, 4),
+                *[cube(x, y, 0.075) for x in (0.40, 0.55) for y in (0.30, 0.35)],
+            ),
+        ),
+        (
+            "dev6-neg-10",  # a 6 x 2 wall without the two top end cubes
+            res(*_row_y(0.45, 0.20, 6), *_row_y(0.45, 0.25, 4, z0=C)),
+            res(*_row_y(0.45, 0.20, 6), *_row_y(0.45, 0.20, 6, z0=C)),
+        ),
+        (
+            "dev6-dim-09",  # 15 cm wide (y) and 25 cm deep (x)
+            res(*grid(0.40, 0.25, 5, 3)),
+            res(*grid(0.40, 0.25, 3, 5)),
+        ),
+        (
+            "dev6-reg-06",  # a 2-level pyramid 150 mm left of the centre
+            res(*grid(0.45, 0.425, 2, 2), cube(0.475, 0.45, 0.075)),
+            res(*grid(0.45, 0.275, 2, 2), cube(0.475, 0.30, 0.075)),
+        ),
+        (
+            "dev6-open-10",  # a podium: three columns of different heights
+            res(*column(0.45, 0.25, 2), *column(0.45, 0.30, 3), *column(0.45, 0.35, 1)),
+            res(*_row_y(0.45, 0.25, 3), *_row_y(0.45, 0.25, 3, z0=C)),
+        ),
+    ],
+)
+def test_dev6_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev6(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev7
+
+
+def test_dev7_set_sizes_ids_and_phenomena():
+    assert len(DEV7) >= 120
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev7-") for c in DEV7)
+    per = {p: sum(c.phenomenon == p for c in DEV7) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
+    assert {c.phenomenon for c in DEV7} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV7)
+
+
+def test_no_command_shared_between_dev7_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV7}) == len(DEV7)
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV7 if _norm(c.text) in seen]
+
+
+def _dev7(case_id: str) -> Case:
+    return next(c for c in DEV7 if c.id == case_id)
+
+
+_RING4 = ring(0.40, 0.25, 4)
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev7-rel-01",  # a 5 x 2 wall with a 4-tall tower at both ends
+            res(
+                *column(0.45, 0.20, 4),
+                *[c for y in (0.25, 0.30, 0.35) for c in column(0.45, y, 2)],
+                *column(0.45, 0.40, 4),
+            ),
+            res(*_row_y(0.45, 0.20, 5), *_row_y(0.45, 0.20, 5, z0=C)),
+        ),
+        (
+            "dev7-rel-02",  # left tower 3, right tower twice as tall
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.20, 6)),
+            res(*column(0.45, 0.40, 6), *column(0.45, 0.20, 3)),
+        ),
+        (
+            "dev7-rel-03",  # a cube on every corner of a 4x4 slab
+            res(*_slab_with_corner_columns(0.40, 0.25, 4, 1)),
+            res(*grid(0.40, 0.25, 4, 4), *[cube(0.45, y, 0.075) for y in (0.25, 0.30, 0.35, 0.40)]),
+        ),
+        (
+            "dev7-rel-08",  # two left-to-right rows of 5, a one-cube gap between them
+            res(*_row_y(0.40, 0.20, 5), *_row_y(0.50, 0.20, 5)),
+            res(*_row_y(0.40, 0.20, 5), *_row_y(0.60, 0.20, 5)),
+        ),
+        (
+            "dev7-rel-10",  # a 3x3 pad with a 3 x 2 wall on its back edge
+            res(
+                *grid(0.40, 0.25, 3, 3), *_row_y(0.50, 0.25, 3, z0=C), *_row_y(0.50, 0.25, 3, 2 * C)
+            ),
+            res(
+                *grid(0.40, 0.25, 3, 3), *_row_y(0.40, 0.25, 3, z0=C), *_row_y(0.40, 0.25, 3, 2 * C)
+            ),
+        ),
+        (
+            "dev7-seq-08",  # an L with 3-cube arms, its corner at the back left
+            res(*_row_x(0.40, 0.40, 3), cube(0.50, 0.35, 0.025), cube(0.50, 0.30, 0.025)),
+            res(*_row_x(0.40, 0.30, 3), cube(0.40, 0.35, 0.025), cube(0.40, 0.40, 0.025)),
+        ),
+        (
+            "dev7-seq-13",  # two 2x2 pads, the second one cube to the right, not touching
+            res(*grid(0.45, 0.35, 2, 2), *grid(0.45, 0.20, 2, 2)),
+            res(*grid(0.45, 0.35, 2, 2), *grid(0.45, 0.10, 2, 2)),  # two cubes apart
+        ),
+        (
+            "dev7-neg-02",  # a 4x4 ring left open on the side facing the robot
+            res(
+                *[
+                    c
+                    for c in _RING4
+                    if not (c["position"][0] == 0.40 and 0.27 < c["position"][1] < 0.38)
+                ]
+            ),
+            res(
+                *[
+                    c
+                    for c in _RING4
+                    if not (c["position"][0] == 0.55 and 0.27 < c["position"][1] < 0.38)
+                ]
+            ),
+        ),
+        (
+            "dev7-wo-05",  # a cube inside a 4 by 4 ring, free in its 2x2 floor
+            res(*_RING4, cube(0.475, 0.325, 0.025)),
+            res(*_RING4, cube(0.70, 0.30, 0.025)),
+        ),
+        (
+            "dev7-open-12",  # a few towers of different heights
+            res(*column(0.40, 0.20, 2), *column(0.40, 0.30, 3), *column(0.40, 0.40, 4)),
+            res(*column(0.40, 0.20, 2), *column(0.40, 0.30, 2), *column(0.40, 0.40, 4)),
+        ),
+    ],
+)
+def test_dev7_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev7(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
