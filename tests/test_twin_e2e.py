@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from twin_harness import browser, drag, need_browser, page_errors, served, state, wait
+from twin_harness import browser, drag, need_browser, page_errors, served, shot, state, wait
 
 pytestmark = pytest.mark.slow
 
@@ -40,7 +40,7 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         wait(page, "T.phase === 'design_review' && T.partIds.length === 3")
         reading = page.inner_text("#reading")
         assert "row" in reading
-        page.screenshot(path=shots / "1-review.png")
+        shot(page, shots / "1-review.png")
         parts = state(page, "T.view.review.parts")
         pos = {p["id"]: p["position"] for p in parts}
         assert state(page, "T.view.review.passed") is True
@@ -53,7 +53,7 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         assert state(page, "T.partStates.c2") == "violating"
         assert state(page, "T.partStates.c3") == "violating"
         assert page.is_disabled("#accept")
-        page.screenshot(path=shots / "2-collision.png")
+        shot(page, shots / "2-collision.png")
 
         # undo → clears, the cube is back where the Designer put it
         page.click("#undo")
@@ -64,7 +64,7 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         outside = [0.1, pos["c3"][1], pos["c3"][2]]
         drag(page, pos["c3"], outside)
         wait(page, "T.view.review.violations.some(v => v.constraint === 'workspace')")
-        page.screenshot(path=shots / "3-workspace.png")
+        shot(page, shots / "3-workspace.png")
         page.click("#violations button.hint")
         wait(page, "T.view.review.violations.length === 0 && T.view.review.edits.length === 2")
         moved = state(page, "T.view.review.parts.find(p => p.id === 'c3').position")
@@ -93,7 +93,7 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         wait(page, "Object.values(T.partStates).filter(s => s === 'hidden').length === 3")
         page.locator("#slider").fill(str(first_release + 0.5))
         wait(page, "Object.values(T.partStates).filter(s => s === 'hidden').length === 2")
-        page.screenshot(path=shots / "4-preview.png")
+        shot(page, shots / "4-preview.png")
 
         # approve (naming the record's hash) → execution, watched live
         page.click("#approve")
@@ -101,7 +101,7 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         assert set(state(page, "Object.values(T.placed)")) == {"placed"}
         assert state(page, "T.view.status") == "success"
         assert state(page, "T.deltaPoints.length") > 0
-        page.screenshot(path=shots / "5-executed.png")
+        shot(page, shots / "5-executed.png")
 
         # reload → the run is still there, finished, and replays from its event stream
         run_id = state(page, "T.runId")
@@ -110,7 +110,7 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         assert run_id in page.inner_text("#runs")
         page.click("#replay")
         wait(page, "Object.keys(T.placed).length === 3 && T.deltaPoints.length > 0")
-        page.screenshot(path=shots / "6-replay.png")
+        shot(page, shots / "6-replay.png")
         assert errors == []
 
 
@@ -132,3 +132,38 @@ def test_second_tab_sees_the_run_but_cannot_edit_while_the_first_holds_the_lock(
         two.click("#undo")
         wait(two, "T.lastError && T.lastError.includes('another tab')")
         assert state(one, "T.view.review.parts.length") == 3
+
+
+def test_a_failure_the_recovery_cannot_fix_raises_the_failure_report(
+    tmp_path: Path, shots: Path
+) -> None:
+    need_browser()
+    with served(tmp_path / "runs.sqlite") as (url, twin), browser() as b:
+        # a row across two blocked regions: every recovery the budget allows fails too
+        run_id = twin.start("a row of 8 cubes", ["workspace_boundary", "env_collision"])
+        twin.wait()
+        page = b.new_page(viewport={"width": 1280, "height": 800})
+        errors = page_errors(page)
+        page.goto(f"{url}#{run_id}")
+        wait(page, "T.phase === 'design_review' && T.partIds.length === 8")
+        # the operator accepts each design and record the recovery proposes, until it gives up
+        for _ in range(8):
+            wait(page, "['design_review', 'pre_execute', 'failure_report'].includes(T.phase)", 600)
+            phase = state(page, "T.phase")
+            if phase == "failure_report":
+                break
+            if phase == "design_review":
+                page.click("#accept")
+            else:
+                wait(
+                    page, "T.timeline && T.timeline.record_hash === T.view.waiting_for.record_hash"
+                )
+                page.click("#approve")
+            wait(page, f"T.phase !== '{phase}'")
+        assert state(page, "T.phase") == "failure_report"
+        assert page.is_visible("#failure-panel")
+        assert "blocked region" in page.inner_text("#failure")
+        shot(page, shots / "7-failure-report.png")
+        page.click("#fail-abort")
+        wait(page, "T.phase === 'failure'")
+        assert errors == []

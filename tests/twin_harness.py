@@ -105,6 +105,13 @@ def top(position: list[float], size: float = 0.05) -> list[float]:
     return [position[0], position[1], position[2] + size / 2 - 1e-4]
 
 
+def shot(page: Any, path: Path) -> None:
+    """A screenshot once the page has drawn two more frames (what it shows is current)."""
+    n = state(page, "T.frames")
+    wait(page, f"T.frames >= {n + 2}")
+    page.screenshot(path=path)
+
+
 def drag(page: Any, src: list[float], dst: list[float], *, shift: bool = False) -> None:
     """A real mouse drag of the part whose top face is at `src` to put it under `dst`."""
     a = state(page, f"T.screenOf({top(src)})")

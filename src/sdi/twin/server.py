@@ -141,7 +141,10 @@ def create_app(twin: Twin, *, token: str | None = None) -> FastAPI:
     @app.post("/api/runs")
     async def start_run(request: Request) -> dict[str, Any]:
         data = await body(request)
-        return {"run_id": twin.start(text(data, "command"))}
+        faults = data.get("faults") or []
+        if not (isinstance(faults, list) and all(isinstance(f, str) for f in faults)):
+            raise InputError("must be a list of fault scenario names", field="faults")
+        return {"run_id": twin.start(text(data, "command"), faults)}
 
     @app.get("/api/runs/{run_id}")
     async def get_run(run_id: str) -> dict[str, Any]:

@@ -108,13 +108,20 @@ class Twin:
             t.join(timeout=max(0.0, end - time.monotonic()))
 
     # -- runs -------------------------------------------------------------------------------------
-    def start(self, command: str) -> str:
+    def start(self, command: str, faults: list[str] | None = None) -> str:
+        """Start a run of `command` (with injected `faults`, for demonstrations and tests)."""
+        from sdi.execute.faults import SCENARIOS
+
         command = command.strip()
         if not command:
             raise InputError("type a command first", field="command")
+        unknown = [f for f in faults or [] if f not in SCENARIOS]
+        if unknown:
+            raise InputError(f"unknown fault scenarios {unknown}; choose from {sorted(SCENARIOS)}",
+                             field="faults")  # fmt: skip
         run_id = Orchestrator.new_run_id()
         self.bus.send(run_id, "twin", "orchestrator", "twin_command", {"command": command})
-        self._work(run_id, "plan", lambda o: o.start(command, run_id=run_id))
+        self._work(run_id, "plan", lambda o: o.start(command, run_id=run_id, faults=faults))
         return run_id
 
     def runs(self, limit: int = 50) -> list[dict[str, Any]]:

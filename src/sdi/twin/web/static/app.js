@@ -19,6 +19,7 @@ const T = {
   samples: {}, execClock: 0, lastSeq: 0, frames: 0, ready: false, busyRefresh: false,
 };
 window.sdiTwin = T;
+T.edit = (op) => edit(op);
 
 // ---------------------------------------------------------------------------- three.js scene
 const container = $("view");
@@ -29,7 +30,7 @@ const scene3 = new THREE.Scene();
 scene3.background = new THREE.Color(0xeef1f4);
 const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 20);
 camera.up.set(0, 0, 1);
-camera.position.set(0.55, -1.25, 1.45);
+camera.position.set(0.62, -0.62, 1.3);
 const orbit = new OrbitControls(camera, renderer.domElement);
 orbit.target.set(0.5, 0.3, 0.05);
 orbit.update();
@@ -688,5 +689,9 @@ async function main() {
   if (first) await openRun(first);
   T.ready = true;
   setInterval(refreshRuns, 5000);
+  window.addEventListener("hashchange", () => {
+    const id = location.hash.slice(1);
+    if (id && id !== T.runId) openRun(id);
+  });
 }
 main();
