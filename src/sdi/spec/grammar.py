@@ -1450,9 +1450,9 @@ def _region(regions: list[str]) -> str | None:
 def parse_phrase(text: str, cell: CellConfig) -> tuple[Spec, list[str]]:
     """Slot filling for one phrase of a command: its `Spec` and the words it left unused.
 
-    The language front end (`sdi.language.reader`) cuts a command into clauses and phrases
-    and relates them; each phrase is read here. Raises `SpecError` when the phrase names no
-    structure.
+    The language front end (`sdi.language`: `clauses`, `markers`) cuts a command into clauses
+    and phrases and relates them; each phrase is read here. Raises `SpecError` when the phrase
+    names no structure.
     """
     parser = _Parser(text, cell)
     spec = parser.parse()
