@@ -8,7 +8,14 @@ from __future__ import annotations
 from sdi.language.nouns import COPY_WORDS, beam_only
 from sdi.language.references import resolve
 from sdi.language.state import Phrase, PhraseRelation, ReadState
-from sdi.spec.structure_spec import Relation, RelationKind, StructureSpec
+from sdi.spec.structure_spec import (
+    Relation,
+    RelationKind,
+    RowSpec,
+    StructureDraft,
+    StructureSpec,
+    TowerSpec,
+)
 
 _KINDS: dict[str, RelationKind] = {"on": "on_top_of", "around": "around", "next": "next_to"}
 
@@ -16,12 +23,12 @@ _KINDS: dict[str, RelationKind] = {"on": "on_top_of", "around": "around", "next"
 def relate(
     phrases: list[Phrase],
     rels: list[PhraseRelation],
-    structures: list[StructureSpec],
+    structures: list[StructureDraft],
     st: ReadState,
-) -> tuple[list[Relation], list[StructureSpec]]:
+) -> tuple[list[Relation], list[StructureDraft]]:
     relations: list[Relation] = []
     drop: set[int] = set()
-    replace: dict[int, StructureSpec] = {}
+    replace: dict[int, StructureDraft] = {}
 
     def built(j: int | None, fallback: int) -> int | None:
         if j is None:
@@ -106,7 +113,7 @@ def relate(
             s_idx, o_idx = o_idx, s_idx
         if r.kind == "around" and subject.shape not in ("enclosure", "castle"):
             st.notes.append(f"a {subject.shape} around another structure: built as a ring")
-            subject = StructureSpec(shape="enclosure", height=subject.height, part=subject.part)
+            subject = StructureDraft(shape="enclosure", height=subject.height, part=subject.part)
         replace[s_idx] = subject
         if any(rel.subject == s_idx for rel in relations):
             st.material.append(f"relation {r.kind}")
@@ -142,8 +149,8 @@ def relate(
 
 
 def _copy_if_asked(
-    p: Phrase, subject: StructureSpec, other: StructureSpec, st: ReadState
-) -> StructureSpec:
+    p: Phrase, subject: StructureDraft, other: StructureDraft, st: ReadState
+) -> StructureDraft:
     """ "a second row", "another one like it": the same parameters as the structure referred to."""
     said = set(p.text.lower().split())
     explicit = subject.model_dump(exclude_defaults=True, exclude={"shape"})
@@ -154,7 +161,7 @@ def _copy_if_asked(
 
 
 def _between(
-    phrases: list[Phrase], pillars: int | None, middle: int | None, structures: list[StructureSpec]
+    phrases: list[Phrase], pillars: int | None, middle: int | None, structures: list[StructureDraft]
 ) -> list[Relation]:
     """ "a 2x2 block between a wall and a tower": the three in a row, the middle one between
     (empty when the middle one is a beam or bridge that joins them instead)."""
@@ -184,8 +191,8 @@ def _join(
     phrases: list[Phrase],
     pillars: int | None,
     joiner: int | None,
-    structures: list[StructureSpec],
-    replace: dict[int, StructureSpec],
+    structures: list[StructureDraft],
+    replace: dict[int, StructureDraft],
     drop: set[int],
     st: ReadState,
 ) -> None:
@@ -218,7 +225,7 @@ def _join(
         st.notes.append("ignored 'joined by': towers of different heights cannot carry one beam")
         return
     first = towers[0]
-    bridge = StructureSpec(
+    bridge = StructureDraft(
         shape="bridge",
         height=first.height,
         height_m=first.height_m,
@@ -250,8 +257,7 @@ def _join(
 
 
 def unstack(s: StructureSpec, st: ReadState) -> StructureSpec:
-    if s.shape == "tower":
-        return StructureSpec(
-            shape="row", length=s.height or 3, at_x=s.at_x, at_y=s.at_y, region=s.region
-        )
+    """ "side by side, don't stack them": a tower's parts laid in a row."""
+    if isinstance(s, TowerSpec):
+        return RowSpec(shape="row", length=s.height or 3, at_x=s.at_x, at_y=s.at_y, region=s.region)
     return s

@@ -11,7 +11,7 @@ from sdi.language.state import Phrase, ReadState
 from sdi.model.cell import CellConfig
 from sdi.spec.grammar import parse_phrase
 from sdi.spec.numbers import words_to_numbers
-from sdi.spec.structure_spec import StructureSpec
+from sdi.spec.structure_spec import StructureDraft
 
 _N = r"(\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|another|one\s+more)"
 
@@ -105,7 +105,9 @@ REMOVAL = re.compile(
 )
 
 
-def modify(p: Phrase, before: list[Phrase], structures: list[StructureSpec], st: ReadState) -> bool:
+def modify(
+    p: Phrase, before: list[Phrase], structures: list[StructureDraft], st: ReadState
+) -> bool:
     """ "then add two more cubes to it", "make it two taller": change an earlier structure."""
     built = [q for q in before if q.spec is not None and q.count]
     if not built:

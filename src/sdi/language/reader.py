@@ -94,22 +94,22 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             structures = fill_slots(phrases, rels, st, doc)
     if not structures:
         no_structure(st, doc, command)
-    relations, structures = relate(phrases, rels, structures, st)
-    structures = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in structures]
+    relations, drafts = relate(phrases, rels, structures, st)
+    specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
-        structures = [unstack(s, st) for s in structures]
+        specs = [unstack(s, st) for s in specs]
     if st.no_beams:
-        for s in structures:
+        for s in specs:
             if s.shape in ("bridge", "arch", "canopy") or s.part == "beam":
                 st.material.append("no beams")
                 st.notes.append(f"ignored 'no beams': a {s.shape} here is built with beams")
-    if len(structures) > 50:
+    if len(specs) > 50:
         raise SpecError(
-            f"{len(structures)} structures is more than 50", understood=understood_summary(doc)
+            f"{len(specs)} structures is more than 50", understood=understood_summary(doc)
         )
     try:
         spec = Spec(
-            structures=tuple(structures),
+            structures=tuple(specs),
             relations=tuple(relations),
             notes=tuple(dict.fromkeys(st.notes)),
         )

@@ -9,15 +9,15 @@ import re
 from sdi.language.nouns import BASES, COPY_WORDS, GENERIC, LEAD_VERBS, PRONOUNS
 from sdi.language.state import Phrase, ReadState
 from sdi.spec import lexicon as lx
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import SpecDraft, StructureDraft
 
 _SIZES = ("count", "length", "width", "height", "steps", "span", "spans", "dims",
           "length_m", "width_m", "height_m", "gap_m", "part")  # fmt: skip
 
 
 def copies(
-    spec: Spec, text: str, st: ReadState, earlier: list[StructureSpec] | None = None
-) -> Spec:
+    spec: SpecDraft, text: str, st: ReadState, earlier: list[StructureDraft] | None = None
+) -> SpecDraft:
     """ "another tower", "a second row": the sizes of the one named before (in this phrase,
     or the last of that family named earlier)."""
     if not set(re.findall(r"[a-z]+", text.lower())) & COPY_WORDS:
@@ -37,7 +37,7 @@ def copies(
 
 
 def definite(
-    p: Phrase, spec: Spec, before: list[Phrase], structures: list[StructureSpec]
+    p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
 ) -> int | None:
     """ "the staircase has 3 steps" after a staircase was named: the index of that one."""
     m = re.match(r"^\W*(?:the|that|this)\s+(\w+)(?:\s+(\w+))?", p.text, re.IGNORECASE)
@@ -64,7 +64,7 @@ def definite(
     return matches[0]
 
 
-def same_as_before(p: Phrase, spec: Spec, before: list[Phrase]) -> str | None:
+def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | None:
     """ "Steps: 5. Shape: staircase.": a bare family name in a later clause names the one
     structure described before, not a second one."""
     if len(spec.structures) != 1 or spec.structures[0].model_dump(
@@ -148,7 +148,7 @@ _PICK = re.compile(
 )
 
 
-def pick_structure(text: str, structures: list[StructureSpec], among: list[int]) -> int | None:
+def pick_structure(text: str, structures: list[StructureDraft], among: list[int]) -> int | None:
     """ "the first one", "the smaller one", "the taller tower": one of the structures named
     in earlier clauses (`among`; all so far when empty)."""
     m = _PICK.match(text.strip())
@@ -162,7 +162,7 @@ def pick_structure(text: str, structures: list[StructureSpec], among: list[int])
     if word == "last":
         return among[-1]
 
-    def size(s: StructureSpec) -> float:
+    def size(s: StructureDraft) -> float:
         tall = s.height or s.steps or (s.height_m or 0) / 0.05 or 1
         wide = (s.length or 1) * (s.width or 1)
         return float(tall if word in ("taller", "tallest", "shorter", "shortest", "lower",

@@ -16,7 +16,7 @@ from sdi.language.references import copies, definite, pick_structure, refers_to,
 from sdi.language.state import Phrase, PhraseRelation, ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.grammar import parse_phrase
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import SpecDraft, StructureDraft
 
 if TYPE_CHECKING:
     from spacy.tokens import Doc
@@ -29,8 +29,8 @@ _COUNT_ONLY = re.compile(
 
 def fill_slots(
     phrases: list[Phrase], rels: list[PhraseRelation], st: ReadState, doc: Doc
-) -> list[StructureSpec]:
-    structures: list[StructureSpec] = []
+) -> list[StructureDraft]:
+    structures: list[StructureDraft] = []
     pending: list[str] = []
     joiners = {r.object for r in rels if r.kind == "joined"} | {
         r.subject for r in rels if r.kind == "on" and beam_only(phrases[r.subject].text)
@@ -155,7 +155,7 @@ _ONE_CUBE = re.compile(
 )
 
 
-def _parse_or_base(p: Phrase, st: ReadState) -> tuple[Spec, list[str]]:
+def _parse_or_base(p: Phrase, st: ReadState) -> tuple[SpecDraft, list[str]]:
     """The phrase grammar's reading; "a sturdy base" with nothing else named is a platform,
     "a cube" on its own one part."""
     try:

@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from sdi.model.cell import CellConfig
-from sdi.spec.structure_spec import Spec
+from sdi.spec.structure_spec import SpecDraft
 
 
 @dataclass
@@ -16,7 +16,7 @@ class Phrase:
     tokens: list[int]
     clause: int
     text: str = ""
-    spec: Spec | None = None
+    spec: SpecDraft | None = None
     first: int = 0  # index of its first structure in the reading
     count: int = 0  # how many structures it produced
     ref: int | None = None  # a pure reference: the phrase it refers to
