@@ -218,9 +218,9 @@ def test_a_family_spec_refuses_a_slot_it_cannot_use_naming_it():
 
 
 def test_the_registry_slots_are_the_spec_types_fields():
-    from sdi.spec.structure_spec import STRUCTURE_TYPES, family_slots
+    from sdi.spec.structure_spec import SHAPES, STRUCTURE_TYPES, family_slots
 
-    assert set(FAMILIES) == set(STRUCTURE_TYPES)
+    assert set(FAMILIES) == set(STRUCTURE_TYPES) == set(SHAPES)
     for name, family in FAMILIES.items():
         assert family.spec_type is STRUCTURE_TYPES[name]
         assert family.slots == set(family_slots(family.spec_type))
