@@ -13,15 +13,13 @@ from sdi.design import compose
 from sdi.execute import SCENARIOS, SimDriver, VerifiedJob
 from sdi.model.layout import Layout
 from sdi.model.part import Part
-from sdi.spec import Spec, StructureSpec
+from sdi.spec import Spec, structure
 
 pytestmark = pytest.mark.slow
 
 
 def towers(*specs: tuple[int, float]) -> Layout:
-    return compose(
-        Spec(structures=tuple(StructureSpec(shape="tower", height=h, at_x=x) for h, x in specs))
-    )
+    return compose(Spec(structures=tuple(structure("tower", height=h, at_x=x) for h, x in specs)))
 
 
 @pytest.fixture(scope="module")

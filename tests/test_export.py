@@ -15,7 +15,7 @@ from sdi.design import compose
 from sdi.export import confdata, interlock_plan, python_program, rapid_module
 from sdi.export.rapid import SIGNALS
 from sdi.robot import fk
-from sdi.spec import Spec, StructureSpec
+from sdi.spec import Spec, structure
 from sdi.tasks.generator import steps_conflict
 
 pytestmark = pytest.mark.slow
@@ -26,8 +26,8 @@ def plan():
     layout = compose(
         Spec(
             structures=(
-                StructureSpec(shape="tower", height=2, at_x=0.3),
-                StructureSpec(shape="tower", height=2, at_x=0.7),
+                structure("tower", height=2, at_x=0.3),
+                structure("tower", height=2, at_x=0.7),
             )
         )
     )

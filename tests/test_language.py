@@ -14,7 +14,14 @@ from hypothesis import strategies as st
 from sdi.errors import SpecError
 from sdi.language import FAMILIES, check_family, read
 from sdi.pipeline import plan
-from sdi.spec.structure_spec import Relation, Spec, StructureSpec
+from sdi.spec.structure_spec import (
+    BlockSpec,
+    Relation,
+    Spec,
+    StructureDraft,
+    TowerSpec,
+    structure,
+)
 
 
 def boxes(result):
@@ -180,26 +187,59 @@ def test_every_family_has_an_entry_and_a_value_it_cannot_use_is_reported():
     assert set(FAMILIES) == set(GENERATORS)
     notes: list[str] = []
     material: list[str] = []
-    out = check_family(StructureSpec(shape="tower", height=3, width=4), notes, material)
-    assert out.width is None and material == ["width=4"]
+    out = check_family(StructureDraft(shape="tower", height=3, width=4), notes, material)
+    assert isinstance(out, TowerSpec) and "width" not in TowerSpec.model_fields
+    assert material == ["width=4"]
     assert notes and "ignored width=4" in notes[0]
 
 
 def test_a_grid_given_a_height_becomes_a_block():
     notes: list[str] = []
-    out = check_family(StructureSpec(shape="grid", length=2, width=3, height=2), notes, [])
+    out = check_family(StructureDraft(shape="grid", length=2, width=3, height=2), notes, [])
+    assert isinstance(out, BlockSpec)
     assert (out.shape, out.length, out.width, out.height) == ("block", 2, 3, 2)
 
 
 def test_a_block_of_a_count_with_two_sides_gets_its_height():
     notes: list[str] = []
-    spec = StructureSpec(shape="block", count=18, length=3, width=3)
-    assert check_family(spec, notes, []).height == 2
+    spec = StructureDraft(shape="block", count=18, length=3, width=3)
+    out = check_family(spec, notes, [])
+    assert isinstance(out, BlockSpec) and out.height == 2
+
+
+def test_a_family_spec_refuses_a_slot_it_cannot_use_naming_it():
+    with pytest.raises(ValueError, match=r"a grid has no slot height; its slots are count, length"):
+        structure("grid", length=2, height=2)
+    with pytest.raises(ValueError, match="has no slot count"):
+        Spec.model_validate({"structures": [{"shape": "block", "count": 18}]})
+    with pytest.raises(ValueError, match="shape"):
+        Spec.model_validate({"structures": [{"shape": "dome", "height": 2}]})
+    assert structure("grid", length=2, width=3).describe() == "grid length=2 width=3"
+
+
+def test_the_registry_slots_are_the_spec_types_fields():
+    from sdi.spec.structure_spec import SHAPES, STRUCTURE_TYPES, family_slots
+
+    assert set(FAMILIES) == set(STRUCTURE_TYPES) == set(SHAPES)
+    for name, family in FAMILIES.items():
+        assert family.spec_type is STRUCTURE_TYPES[name]
+        assert family.slots == set(family_slots(family.spec_type))
+    assert FAMILIES["castle"].slots >= {"count", "length", "width", "height"}
+    assert "height" not in FAMILIES["grid"].slots and "count" not in FAMILIES["block"].slots
+
+
+def test_the_model_schema_is_one_type_per_family():
+    schema = Spec.model_json_schema()
+    items = schema["properties"]["structures"]["items"]
+    assert set(items["discriminator"]["mapping"]) == set(FAMILIES)
+    grid = schema["$defs"]["GridSpec"]
+    assert grid["additionalProperties"] is False and "height" not in grid["properties"]
+    assert grid["required"] == ["shape"]
 
 
 # -- relations in the spec ----------------------------------------------------------------------
 def test_relations_must_form_a_forest():
-    t = StructureSpec(shape="tower")
+    t = structure("tower")
     with pytest.raises(ValueError, match="cycle"):
         Spec(
             structures=(t, t),

@@ -9,11 +9,11 @@ from sdi.errors import InfeasibleError
 from sdi.inspector import verify
 from sdi.model.region import Region
 from sdi.recovery import flatten, shift
-from sdi.spec import Spec, StructureSpec
+from sdi.spec import Spec, structure
 
 
 def build(shape: str, **kw):
-    return compose(Spec(structures=(StructureSpec(shape=shape, **kw),)))
+    return compose(Spec(structures=(structure(shape, **kw),)))
 
 
 @pytest.mark.parametrize(

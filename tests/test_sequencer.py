@@ -15,22 +15,22 @@ from sdi.design import compose
 from sdi.errors import SequencingError
 from sdi.inspector import Analysis, Constraint, sequence, verify
 from sdi.model import CellConfig, Layout
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import Spec, StructureSpec, structure
 
 ORDER = {Constraint.GRAVITY, Constraint.SEQUENCE, Constraint.GRIPPING}
 
 SHAPES = [
-    StructureSpec(shape="tower", height=6),
-    StructureSpec(shape="wall", length=4, height=3),
-    StructureSpec(shape="block", length=3, width=3, height=3),
-    StructureSpec(shape="pyramid", length=4, dims=3),
-    StructureSpec(shape="staircase", steps=4, width=2),
-    StructureSpec(shape="bridge", spans=2, span=2),
-    StructureSpec(shape="arch"),
-    StructureSpec(shape="canopy"),
-    StructureSpec(shape="castle", height=2),
-    StructureSpec(shape="enclosure", length=4, width=3, height=2),
-    StructureSpec(shape="grid", length=4, width=3, gap_m=0.02),
+    structure("tower", height=6),
+    structure("wall", length=4, height=3),
+    structure("block", length=3, width=3, height=3),
+    structure("pyramid", length=4, dims=3),
+    structure("staircase", steps=4, width=2),
+    structure("bridge", spans=2, span=2),
+    structure("arch"),
+    structure("canopy"),
+    structure("castle", height=2),
+    structure("enclosure", length=4, width=3, height=2),
+    structure("grid", length=4, width=3, gap_m=0.02),
 ]
 
 
@@ -81,7 +81,7 @@ def test_bridge_pillars_before_the_beam():
 
 def test_layers_are_finished_before_the_next_starts_in_a_block():
     # Preference is lowest bottom first, so a block is built level by level.
-    lay = gen(StructureSpec(shape="block", length=3, width=3, height=3))
+    lay = gen(structure("block", length=3, width=3, height=3))
     order = seq(lay)
     bottoms = [lay.part(pid).bottom for pid in order]
     assert bottoms == sorted(bottoms)
@@ -97,10 +97,10 @@ SCRIPT = """
 import json
 from sdi.design import compose
 from sdi.inspector import Analysis, sequence
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import Spec, StructureSpec, structure
 out = {}
 for shape in ("canopy", "block", "castle", "pyramid"):
-    lay = compose(Spec(structures=(StructureSpec(shape=shape),)))
+    lay = compose(Spec(structures=(structure(shape),)))
     out[shape] = sequence(Analysis(lay))
 print(json.dumps(out))
 """
@@ -109,8 +109,7 @@ print(json.dumps(out))
 def test_deterministic_across_processes_and_hash_seeds():
     # Part ids are strings: any set/dict iteration leaking into the order would differ here.
     expected = {
-        shape: seq(gen(StructureSpec(shape=shape)))
-        for shape in ("canopy", "block", "castle", "pyramid")
+        shape: seq(gen(structure(shape))) for shape in ("canopy", "block", "castle", "pyramid")
     }
     for seed in ("0", "4242"):
         env = {**os.environ, "PYTHONHASHSEED": seed}

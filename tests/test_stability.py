@@ -19,7 +19,7 @@ from sdi.inspector import Analysis, Constraint, verify
 from sdi.inspector.equilibrium import alone, robust, solve, solve_many
 from sdi.model import CellConfig, Layout, Part
 from sdi.pipeline import plan
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import Spec, structure
 
 CASES = {c.name: c for c in cases()}
 
@@ -74,7 +74,7 @@ def test_layouts_that_stand_pass(name):
     "shape", ["tower", "wall", "pyramid", "staircase", "bridge", "arch", "canopy", "castle"]
 )
 def test_generated_structures_still_pass(shape):
-    assert verify(compose(Spec(structures=(StructureSpec(shape=shape),)))).passed
+    assert verify(compose(Spec(structures=(structure(shape),)))).passed
 
 
 def test_counterweight_order_matters():

@@ -13,7 +13,7 @@ from sdi.design import compose
 from sdi.errors import InputError
 from sdi.inspector import Analysis, Constraint, Report, Violation, sequence, verify
 from sdi.model import CellConfig, Layout, Part, Workspace, quat_from_yaw
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import Spec, structure
 
 ORDER = {Constraint.GRAVITY, Constraint.SEQUENCE, Constraint.GRIPPING}
 
@@ -381,7 +381,7 @@ class TestStability:
 
     def test_generated_pyramid_and_bridge_pass(self):
         for shape in ("pyramid", "bridge", "arch", "canopy"):
-            lay = compose(Spec(structures=(StructureSpec(shape=shape),)))
+            lay = compose(Spec(structures=(structure(shape),)))
             assert check(lay).passed, shape
 
 
@@ -565,7 +565,7 @@ class TestReport:
 
 
 def gen(shape: str, **kw: object) -> Layout:
-    lay = compose(Spec(structures=(StructureSpec(shape=shape, **kw),)))
+    lay = compose(Spec(structures=(structure(shape, **kw),)))
     r = check(lay)
     assert r.passed, (shape, r.violations)
     return lay

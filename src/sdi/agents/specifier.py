@@ -151,7 +151,12 @@ def _why(exc: Exception) -> str:
     if isinstance(exc, LLMError):
         return exc.reason
     if isinstance(exc, ValidationError):
-        return f"not a valid spec: {exc.error_count()} validation error(s)"
+        first = exc.errors()[0]
+        where = ".".join(str(x) for x in first["loc"])
+        return (
+            f"not a valid spec: {exc.error_count()} validation error(s), first at {where}: "
+            f"{first['msg']}"[:240]
+        )
     return f"not a JSON spec: {str(exc)[:80]}"
 
 

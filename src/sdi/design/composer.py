@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sdi.design.shapes import FAMILIES, MAX_PARTS_PER_STRUCTURE, Box, Sizes
+from sdi.design.shapes import MAX_PARTS_PER_STRUCTURE, Box, Sizes, generate
 from sdi.errors import InfeasibleError, InputError, LimitError
 from sdi.inspector.contacts import ContactGraph
 from sdi.inspector.verifier import Report, verify
@@ -304,10 +304,12 @@ def _ring_for(ring: StructureSpec, inner: _Placed, cell: CellConfig) -> Structur
     """The ring's size: as stated, else one part of room around `inner` on every side."""
     unit = cell.cube[0]
     need = [round(2 * float(h) / unit + 0.499) + 2 for h in inner.half]  # inside, in parts
-    if ring.length is not None or ring.length_m is not None:
+    if getattr(ring, "length", None) is not None or getattr(ring, "length_m", None) is not None:
         return ring
     side = max(need) + 2
-    return ring.model_copy(update={"length": side, "width": side, "axis": None})
+    # the sides its family has (an enclosure or a castle has both; a model may name another)
+    sides: dict[str, int] = {k: side for k in ("length", "width") if k in type(ring).model_fields}
+    return ring.model_copy(update={**sides, "axis": None})
 
 
 def _beside(base: _Placed, sub: _Placed, side: str | None, cell: CellConfig) -> _Placed:
@@ -347,7 +349,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
             if rel.kind == "around":
                 sub_spec = _ring_for(spec.structures[c], base, cell)
                 sizes = _sizes(cell, sub_spec.part)
-                sub = _orient(sub_spec, FAMILIES[sub_spec.shape](sub_spec, sizes), sizes)
+                sub = _orient(sub_spec, generate(sub_spec, sizes), sizes)
                 inside = sub.half - 2 * cell.cube[0] * 0.999
                 if np.any(inside + 1e-9 < base.half):
                     raise InfeasibleError(
@@ -383,7 +385,7 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
     total = 0
     for s in spec.structures:
         sizes = _sizes(cell, s.part)
-        boxes = FAMILIES[s.shape](s, sizes)
+        boxes = generate(s, sizes)
         if len(boxes) > MAX_PARTS_PER_STRUCTURE:
             raise LimitError(
                 f"a {s.shape} of {len(boxes)} parts exceeds "

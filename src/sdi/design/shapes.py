@@ -1,9 +1,9 @@
 """Parametric structure families in a local frame.
 
-Each family turns a `StructureSpec` into boxes in the structure's own frame: u is the main axis,
-v across it, z up from the table; the footprint is centred later. Sizes come from the cell's
-part types, so the same code builds with other cube sizes. A family raises `InfeasibleError`
-naming the parameter it cannot satisfy.
+Each family turns its spec type (`TowerSpec`, `GridSpec`, …) into boxes in the structure's own
+frame: u is the main axis, v across it, z up from the table; the footprint is centred later.
+Sizes come from the cell's part types, so the same code builds with other cube sizes. A family
+raises `InfeasibleError` naming the parameter it cannot satisfy.
 """
 
 from __future__ import annotations
@@ -11,9 +11,29 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 from sdi.errors import InfeasibleError
-from sdi.spec.structure_spec import StructureSpec
+from sdi.spec.structure_spec import (
+    ArchSpec,
+    BlockSpec,
+    BridgeSpec,
+    CanopySpec,
+    CastleSpec,
+    CrossSpec,
+    EnclosureSpec,
+    GridSpec,
+    LShapeSpec,
+    PackSpec,
+    PyramidSpec,
+    RowSpec,
+    StaircaseSpec,
+    StructureSpec,
+    TowerSpec,
+    TShapeSpec,
+    UShapeSpec,
+    WallSpec,
+)
 
 MAX_PARTS_PER_STRUCTURE = 2_000
 
@@ -64,18 +84,18 @@ def _check_at_least(value: int, low: int, name: str, why: str) -> None:
         raise InfeasibleError(f"{name}: {value} is too small; {why}", parameter=name)
 
 
-def tower(sp: StructureSpec, z: Sizes) -> list[Box]:
+def tower(sp: TowerSpec, z: Sizes) -> list[Box]:
     n = _resolve(sp.height or sp.count, sp.height_m, z.h, 3, "height")
     return [Box(0.0, 0.0, zc) for zc in _levels(0.0, n, z.h)]
 
 
-def row(sp: StructureSpec, z: Sizes) -> list[Box]:
+def row(sp: RowSpec, z: Sizes) -> list[Box]:
     n = _resolve(sp.length or sp.count, sp.length_m, z.s, 5, "length")
     pitch = z.s + (sp.gap_m or 0.0)
     return [Box(i * pitch, 0.0, z.h / 2) for i in range(n)]
 
 
-def grid(sp: StructureSpec, z: Sizes) -> list[Box]:
+def grid(sp: GridSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 3, "length")
     nv = _resolve(sp.width, sp.width_m, z.s, nu, "width")
     if sp.count and not (sp.length or sp.width or sp.length_m or sp.width_m):
@@ -88,7 +108,7 @@ def grid(sp: StructureSpec, z: Sizes) -> list[Box]:
     return [Box(i * pitch, j * pitch, z.h / 2) for i, j in cells]
 
 
-def wall(sp: StructureSpec, z: Sizes) -> list[Box]:
+def wall(sp: WallSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 4, "length")
     nh = _resolve(sp.height, sp.height_m, z.h, 2, "height")
     if sp.count and not (sp.length or sp.length_m):
@@ -96,7 +116,7 @@ def wall(sp: StructureSpec, z: Sizes) -> list[Box]:
     return [Box(i * z.s, 0.0, zc) for zc in _levels(0.0, nh, z.h) for i in range(nu)]
 
 
-def block(sp: StructureSpec, z: Sizes) -> list[Box]:
+def block(sp: BlockSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 2, "length")
     nv = _resolve(sp.width, sp.width_m, z.s, nu, "width")
     nh = _resolve(sp.height, sp.height_m, z.h, nu, "height")
@@ -108,7 +128,7 @@ def block(sp: StructureSpec, z: Sizes) -> list[Box]:
     ]
 
 
-def pack(sp: StructureSpec, z: Sizes) -> list[Box]:
+def pack(sp: PackSpec, z: Sizes) -> list[Box]:
     """`count` parts as compact as possible, filled bottom-up.
 
     Among bounding boxes at least 75 % full, take the one with the least surface (the most
@@ -134,7 +154,7 @@ def pack(sp: StructureSpec, z: Sizes) -> list[Box]:
     return [Box(i * z.s, j * z.s, z.h / 2 + k * z.h) for i, j, k in cells]
 
 
-def pyramid(sp: StructureSpec, z: Sizes) -> list[Box]:
+def pyramid(sp: PyramidSpec, z: Sizes) -> list[Box]:
     base = _resolve(sp.length or sp.width, sp.length_m, z.s, 0, "length")
     levels = _resolve(sp.height, sp.height_m, z.h, 0, "height")
     if not base:
@@ -160,7 +180,7 @@ def pyramid(sp: StructureSpec, z: Sizes) -> list[Box]:
     return out
 
 
-def staircase(sp: StructureSpec, z: Sizes) -> list[Box]:
+def staircase(sp: StaircaseSpec, z: Sizes) -> list[Box]:
     steps = _resolve(sp.steps or sp.height or sp.length, sp.height_m, z.h, 3, "steps")
     width = _resolve(sp.width, sp.width_m, z.s, 1, "width")
     return [
@@ -177,7 +197,7 @@ def _beam(z: Sizes, name: str) -> tuple[float, float, float]:
     return z.beam
 
 
-def bridge(sp: StructureSpec, z: Sizes) -> list[Box]:
+def bridge(sp: BridgeSpec, z: Sizes) -> list[Box]:
     """Pillars joined by beams; `spans` beams end to end over `spans + 1` pillars."""
     beam = _beam(z, "span")
     height = _resolve(sp.height, sp.height_m, z.h, 2, "height")
@@ -209,7 +229,7 @@ def bridge(sp: StructureSpec, z: Sizes) -> list[Box]:
     return out
 
 
-def arch(sp: StructureSpec, z: Sizes) -> list[Box]:
+def arch(sp: ArchSpec, z: Sizes) -> list[Box]:
     """Two pillars, corbels stepping in by a quarter part per level, and a beam on top."""
     beam = _beam(z, "span")
     height = _resolve(sp.height, sp.height_m, z.h, 2, "height")
@@ -233,7 +253,7 @@ def arch(sp: StructureSpec, z: Sizes) -> list[Box]:
     return out
 
 
-def canopy(sp: StructureSpec, z: Sizes) -> list[Box]:
+def canopy(sp: CanopySpec, z: Sizes) -> list[Box]:
     """Four pillars and a two-layer roof of beams (along u, then across along v)."""
     beam = _beam(z, "span")
     height = _resolve(sp.height, sp.height_m, z.h, 3, "height")
@@ -270,7 +290,7 @@ def _ring(nu: int, nv: int) -> list[tuple[int, int]]:
     return [(i, j) for j in range(nv) for i in range(nu) if i in (0, nu - 1) or j in (0, nv - 1)]
 
 
-def enclosure(sp: StructureSpec, z: Sizes) -> list[Box]:
+def enclosure(sp: EnclosureSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 4, "length")
     nv = _resolve(sp.width, sp.width_m, z.s, nu, "width")
     height = _resolve(sp.height, sp.height_m, z.h, 1, "height")
@@ -279,7 +299,7 @@ def enclosure(sp: StructureSpec, z: Sizes) -> list[Box]:
     return _footprint(_ring(nu, nv), height, z)
 
 
-def castle(sp: StructureSpec, z: Sizes) -> list[Box]:
+def castle(sp: CastleSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 4, "length")
     nv = _resolve(sp.width, sp.width_m, z.s, nu, "width")
     height = _resolve(sp.height, sp.height_m, z.h, 1, "height")
@@ -292,7 +312,7 @@ def castle(sp: StructureSpec, z: Sizes) -> list[Box]:
     return out
 
 
-def l_shape(sp: StructureSpec, z: Sizes) -> list[Box]:
+def l_shape(sp: LShapeSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 3, "length")
     nv = _resolve(sp.width, sp.width_m, z.s, nu, "width")
     height = _resolve(sp.height, sp.height_m, z.h, 1, "height")
@@ -300,7 +320,7 @@ def l_shape(sp: StructureSpec, z: Sizes) -> list[Box]:
     return _footprint(cells, height, z)
 
 
-def u_shape(sp: StructureSpec, z: Sizes) -> list[Box]:
+def u_shape(sp: UShapeSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 3, "length")
     nv = _resolve(sp.width, sp.width_m, z.s, nu, "width")
     height = _resolve(sp.height, sp.height_m, z.h, 1, "height")
@@ -310,7 +330,7 @@ def u_shape(sp: StructureSpec, z: Sizes) -> list[Box]:
     return _footprint(cells, height, z)
 
 
-def t_shape(sp: StructureSpec, z: Sizes) -> list[Box]:
+def t_shape(sp: TShapeSpec, z: Sizes) -> list[Box]:
     nu = _resolve(sp.length, sp.length_m, z.s, 3, "length")
     nv = _resolve(sp.width, sp.width_m, z.s, nu, "width")
     height = _resolve(sp.height, sp.height_m, z.h, 1, "height")
@@ -323,7 +343,7 @@ def t_shape(sp: StructureSpec, z: Sizes) -> list[Box]:
     return _footprint(cells, height, z)
 
 
-def cross(sp: StructureSpec, z: Sizes) -> list[Box]:
+def cross(sp: CrossSpec, z: Sizes) -> list[Box]:
     n = _resolve(sp.length, sp.length_m, z.s, 3, "length")
     if n % 2 == 0:
         n += 1
@@ -333,7 +353,8 @@ def cross(sp: StructureSpec, z: Sizes) -> list[Box]:
     return _footprint(cells, height, z)
 
 
-FAMILIES: dict[str, Callable[[StructureSpec, Sizes], list[Box]]] = {
+# Keyed by `shape`: the generator of a family takes that family's spec type.
+FAMILIES: dict[str, Callable[[Any, Sizes], list[Box]]] = {
     "tower": tower,
     "row": row,
     "grid": grid,
@@ -352,3 +373,8 @@ FAMILIES: dict[str, Callable[[StructureSpec, Sizes], list[Box]]] = {
     "t_shape": t_shape,
     "cross": cross,
 }
+
+
+def generate(sp: StructureSpec, z: Sizes) -> list[Box]:
+    """The boxes of any structure, by its family's generator."""
+    return FAMILIES[sp.shape](sp, z)

@@ -1,56 +1,44 @@
 """The family registry: which slots each structure family uses, and what a value it cannot use
 becomes.
 
-Each generator in `sdi.design.shapes` reads a fixed set of `StructureSpec` fields; a value
-in any other field would be silently dropped. `check_family` turns such a value into the
-family that can hold it (a grid two high is a block), derives a slot from the others where
-the words imply it (eighteen cubes in a block three by three are two layers), or reports it
-in the notes — never drops it silently.
+Each family's spec type (`sdi.spec.structure_spec`, e.g. `GridSpec`) declares the slots its
+generator in `sdi.design.shapes` reads; the registry takes them from there. The phrase
+grammar fills a flat `StructureDraft`, which may hold a value its family has no slot for;
+`check_family` turns such a value into the family that can hold it (a grid two high is a
+block), derives a slot from the others where the words imply it (eighteen cubes in a block
+three by three are two layers), or reports it in the notes — never drops it silently — and
+returns the family's spec.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from sdi.spec.structure_spec import StructureSpec
+from sdi.spec.structure_spec import (
+    STRUCTURE_TYPES,
+    AnyStructure,
+    StructureDraft,
+    StructureSpec,
+    family_slots,
+)
 
 COMMON = frozenset({"shape", "axis", "yaw_deg", "at_x", "at_y", "region", "part"})
 
 
 @dataclass(frozen=True)
 class Family:
-    """One structure family: its slots (the `StructureSpec` fields its generator reads)."""
+    """One structure family: its spec type and its slots (the fields of that type its
+    generator reads, besides the placement common to all)."""
 
     name: str
+    spec_type: type[AnyStructure]
     slots: frozenset[str]
     summary: str
 
 
-def _f(name: str, slots: str, summary: str) -> Family:
-    return Family(name, frozenset(slots.split()), summary)
-
-
 FAMILIES: dict[str, Family] = {
-    f.name: f
-    for f in (
-        _f("tower", "count height height_m", "one column of parts"),
-        _f("row", "count length length_m gap_m", "parts in a line on the table"),
-        _f("grid", "count length length_m width width_m gap_m", "one layer of rows"),
-        _f("wall", "count length length_m height height_m", "a row stacked in levels"),
-        _f("block", "length length_m width width_m height height_m", "a solid box of parts"),
-        _f("pack", "count height height_m", "a compact cluster of a given count"),
-        _f("pyramid", "dims length length_m width height height_m", "levels shrinking upwards"),
-        _f("staircase", "steps length width width_m height height_m", "rising steps"),
-        _f("bridge", "height height_m span spans width width_m", "pillars with beams"),
-        _f("arch", "height height_m span width_m", "a corbelled arch"),
-        _f("canopy", "height height_m span", "four pillars with a roof"),
-        _f("enclosure", "length length_m width width_m height height_m", "a ring of walls"),
-        _f("castle", "count length length_m width width_m height height_m", "ring + towers"),
-        _f("l_shape", "length length_m width width_m height height_m", "an L"),
-        _f("u_shape", "length length_m width width_m height height_m", "a U"),
-        _f("t_shape", "length length_m width width_m height height_m", "a T"),
-        _f("cross", "length length_m height height_m", "a plus sign"),
-    )
+    name: Family(name, t, frozenset(family_slots(t)), (t.__doc__ or name).strip().rstrip("."))
+    for name, t in STRUCTURE_TYPES.items()
 }
 
 
@@ -58,7 +46,7 @@ FAMILIES: dict[str, Family] = {
 IMPLIED = {"height": 1, "width": 1, "count": 1}
 
 
-def unused_slots(spec: StructureSpec) -> dict[str, object]:
+def unused_slots(spec: StructureDraft) -> dict[str, object]:
     """Fields set on `spec` that its family's generator does not read (and that differ
     from what the family is anyway: a row is one part high)."""
     family = FAMILIES[spec.shape]
@@ -71,11 +59,11 @@ def unused_slots(spec: StructureSpec) -> dict[str, object]:
 
 
 def check_family(
-    spec: StructureSpec, notes: list[str], material: list[str], *, part_m: float = 0.05
+    spec: StructureDraft, notes: list[str], material: list[str], *, part_m: float = 0.05
 ) -> StructureSpec:
-    """`spec` with every value placed where its family uses it, or reported in `notes`
-    (and, when it changes what is built, in `material`). `part_m` is the edge of the cell's
-    cube, m: sizes in metres are compared with it."""
+    """The family spec of draft `spec`, with every value placed where its family uses it, or
+    reported in `notes` (and, when it changes what is built, in `material`). `part_m` is the
+    edge of the cell's cube, m: sizes in metres are compared with it."""
     flat = spec.shape in ("grid",)
     if flat and ((spec.height or 1) > 1 or spec.height_m is not None):
         notes.append(
@@ -121,10 +109,12 @@ def check_family(
         notes.append(f"ignored {values}: a {spec.shape} has no such parameter")
         material.extend(f"{k}={v}" for k, v in left.items())
         spec = spec.model_copy(update=dict.fromkeys(left))
-    return spec
+    return FAMILIES[spec.shape].spec_type.model_validate(
+        spec.model_dump(exclude_none=True, exclude_defaults=True) | {"shape": spec.shape}
+    )
 
 
-def _derive(spec: StructureSpec, notes: list[str], part_m: float) -> StructureSpec:
+def _derive(spec: StructureDraft, notes: list[str], part_m: float) -> StructureDraft:
     """Slots the words imply for a family: one side of a square family, a pyramid's base
     given as its width, a grid's missing side from its count, a table top's size."""
     square = ("grid", "block", "enclosure", "castle")
@@ -155,8 +145,8 @@ def _derive(spec: StructureSpec, notes: list[str], part_m: float) -> StructureSp
 
 
 def _metres_and_parts(
-    spec: StructureSpec, notes: list[str], material: list[str], part_m: float
-) -> StructureSpec:
+    spec: StructureDraft, notes: list[str], material: list[str], part_m: float
+) -> StructureDraft:
     """A size given both in parts and in metres must agree; metres that are no whole number
     of parts are rounded, and said so."""
     for key in ("length", "width", "height"):
@@ -178,7 +168,9 @@ def _metres_and_parts(
     return spec
 
 
-def _block_from_count(spec: StructureSpec, notes: list[str], material: list[str]) -> StructureSpec:
+def _block_from_count(
+    spec: StructureDraft, notes: list[str], material: list[str]
+) -> StructureDraft:
     count = spec.count or 0
     length, w, h = spec.length, spec.width, spec.height
     known = [v for v in (length, w, h) if v]

@@ -21,7 +21,7 @@ from sdi.recovery import flatten, shift
 from sdi.skills.registry import SkillRegistry
 from sdi.skills.skill import Skill, SkillResult
 from sdi.spec import parse_command
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import STRUCTURE_TYPES, Spec, StructureSpec, structure
 
 
 class _Args(BaseModel):
@@ -244,7 +244,8 @@ def default_registry(cell: CellConfig | None = None) -> SkillRegistry:
 
 
 def _generator(shape: str, cell: CellConfig) -> Skill[Any]:
-    fields = {k: v for k, v in StructureSpec.model_fields.items() if k != "shape"}
+    """`generate_<shape>`: its arguments are the family's own slots and placement."""
+    fields = {k: v for k, v in STRUCTURE_TYPES[shape].model_fields.items() if k != "shape"}
     from pydantic import create_model
 
     params = create_model(  # type: ignore[call-overload]
@@ -254,7 +255,7 @@ def _generator(shape: str, cell: CellConfig) -> Skill[Any]:
     )
 
     def run(args: BaseModel) -> SkillResult:
-        spec = StructureSpec(shape=shape, **args.model_dump(exclude_unset=True))
+        spec = structure(shape, **args.model_dump(exclude_unset=True))
         return _checked(compose(Spec(structures=(spec,)), cell), cell)
 
     return Skill(

@@ -6,7 +6,7 @@
 from __future__ import annotations
 
 from sdi.model.cell import CellConfig
-from sdi.spec.structure_spec import SHAPES, Relation, Spec, StructureSpec
+from sdi.spec.structure_spec import SHAPES, Relation, Spec, StructureSpec, structure
 
 
 def parse_command(command: str, cell: CellConfig | None = None) -> Spec:
@@ -16,4 +16,4 @@ def parse_command(command: str, cell: CellConfig | None = None) -> Spec:
     return read(command, cell).spec
 
 
-__all__ = ["SHAPES", "Relation", "Spec", "StructureSpec", "parse_command"]
+__all__ = ["SHAPES", "Relation", "Spec", "StructureSpec", "parse_command", "structure"]

@@ -1,4 +1,5 @@
-"""The rule-based Specifier: a plain-language command → a structured `Spec`, with no model.
+"""The phrase grammar: one phrase of a command → its structures as drafts (`SpecDraft`), with
+no model; the family check (`sdi.language.families`) turns each draft into its family's spec.
 
 The command is tokenised (numbers in words become digits, units and symbols split off), then
 read in passes, each marking the tokens it explains:
@@ -28,12 +29,12 @@ from sdi.errors import SpecError
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import QUANTITY_WORDS, words_to_numbers
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import SpecDraft, StructureDraft
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|\.\d+|[a-z]+|[=:(),;°×*+&\-/]")
 _SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "", "'": "", "°": " deg ", "\u00a0": " "}
 
-# Default parameters of each family by vague size class (S, M, L). Keys are StructureSpec fields.
+# Default parameters of each family by vague size class (S, M, L). Keys are StructureDraft fields.
 SIZE_TABLE: dict[str, dict[str, tuple[int, int, int]]] = {
     "tower": {"height": (2, 3, 6)},
     "row": {"length": (3, 5, 8)},
@@ -1161,7 +1162,7 @@ class _Parser:
         for key, value in pp.items():
             cp.setdefault(key, value)
 
-    def build(self, h: Hit) -> list[StructureSpec]:
+    def build(self, h: Hit) -> list[StructureDraft]:
         for key, kept, other in getattr(h.params, "conflicts", []):
             if key == "_count" and min(kept, other) <= 1:
                 continue  # "a single cube", "one of": an article, not a count
@@ -1322,9 +1323,9 @@ class _Parser:
             p["region"] = region
         if self.beam and shape in ("tower", "row", "grid", "wall"):
             p["part"] = "beam"
-        kwargs = {k: v for k, v in p.items() if k in StructureSpec.model_fields}
+        kwargs = {k: v for k, v in p.items() if k in StructureDraft.model_fields}
         try:
-            spec = StructureSpec(shape=shape, **kwargs)
+            spec = StructureDraft(shape=shape, **kwargs)
         except ValidationError as exc:
             first = exc.errors()[0]
             raise SpecError(
@@ -1395,7 +1396,7 @@ class _Parser:
             return hit
         return None
 
-    def parse(self) -> Spec:
+    def parse(self) -> SpecDraft:
         if not self.toks:
             raise SpecError("the command is empty; say what to build, e.g. 'a 3-cube tower'")
         self.scan_geometry()
@@ -1416,13 +1417,13 @@ class _Parser:
             self.attributes(h)
         self.merge_compounds()
         # Coordinates and regions that fell outside every segment go to the only structure.
-        structures: list[StructureSpec] = []
+        structures: list[StructureDraft] = []
         for h in self.hits:
             structures.extend(self.build(h))
         total = len(structures)
         if total > 50:
             raise SpecError(f"{total} structures is more than 50", understood=self.understood())
-        return Spec(structures=tuple(structures), notes=tuple(dict.fromkeys(self.notes)))
+        return SpecDraft(structures=tuple(structures), notes=tuple(dict.fromkeys(self.notes)))
 
 
 def _pyramid_base(count: int, three_d: bool) -> int:
@@ -1447,12 +1448,12 @@ def _region(regions: list[str]) -> str | None:
     return depth or side or ("centre" if "centre" in names else None)
 
 
-def parse_phrase(text: str, cell: CellConfig) -> tuple[Spec, list[str]]:
-    """Slot filling for one phrase of a command: its `Spec` and the words it left unused.
+def parse_phrase(text: str, cell: CellConfig) -> tuple[SpecDraft, list[str]]:
+    """Slot filling for one phrase of a command: its `SpecDraft` and the words it left unused.
 
-    The language front end (`sdi.language.reader`) cuts a command into clauses and phrases
-    and relates them; each phrase is read here. Raises `SpecError` when the phrase names no
-    structure.
+    The language front end (`sdi.language`: `clauses`, `markers`) cuts a command into clauses
+    and phrases and relates them; each phrase is read here. Raises `SpecError` when the phrase
+    names no structure.
     """
     parser = _Parser(text, cell)
     spec = parser.parse()

@@ -1,0 +1,124 @@
+"""Accounting (during slot filling). Every word of a command is used or reported: words the
+reading left unused go to `ReadState.ignored`, and material ones (`sdi.language.words`) to
+`ReadState.material`, which makes the reading incomplete. When nothing buildable is found,
+the error says what was understood."""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+from sdi.errors import SpecError
+from sdi.language import words
+from sdi.language.nouns import BEAMS
+from sdi.language.state import ReadState
+from sdi.spec import lexicon as lx
+from sdi.spec.grammar import parse_phrase
+
+if TYPE_CHECKING:
+    from spacy.tokens import Doc, Token
+
+
+# Words that make a clause more than chatter (ambiguous shape nouns like "well" do not).
+_USABLE = (
+    set(lx.SHAPE_WORDS) | set(lx.SIZE_WORDS) | set(lx.DIMENSION_WORDS) | set(lx.REGION_WORDS)
+    | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | BEAMS
+) - lx.AMBIGUOUS_SHAPES - {"well", "item", "items", "object", "objects", "unit"}  # fmt: skip
+
+
+def is_chatter(text: str) -> bool:
+    """A clause with nothing the Specifier could use ("The visitors arrive at 10")."""
+    said = re.findall(r"[a-z]+|\d+", text.lower())
+    if any(w.isdigit() for w in said) and not any(w in lx.PART_WORDS for w in said):
+        return bool(
+            re.search(r"\b(?:item|order|ticket|job|room|at|by|until|before|after)\b", text, re.I)
+        )
+    return not any(w in _USABLE for w in said)
+
+
+def _attached(tok: Token) -> bool:
+    """`tok` modifies a structure (or a part) in the parse, not the chatter around it."""
+    seen = 0
+    t = tok
+    while seen < 8:
+        if t.lower_ in lx.SHAPE_WORDS or t.lower_ in lx.PART_WORDS:
+            return t.i != tok.i or tok.pos_ != "NOUN"
+        if t.lower_ in ("for",) and t.dep_ == "prep":
+            return False  # "for the demo", "for a teddy bear": a purpose
+        if t.head.i == t.i:
+            return False
+        if t.dep_ in ("advcl", "intj", "parataxis", "discourse", "ccomp", "mark"):
+            return False
+        if t.dep_ == "relcl" and any(
+            c.lower_ in ("could", "can", "would", "might") for c in t.children
+        ):
+            return False  # "a gateway a cube could pass under"
+        t = t.head
+        seen += 1
+    return False
+
+
+def account(word: str, tok: Token | None, st: ReadState) -> None:
+    if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
+        return
+    pos = tok.pos_ if tok is not None else None
+    numeric = word[:1].isdigit()
+    if tok is None and not numeric and word not in words.CORRECTABLE | words.NEGATIONS:
+        return  # a piece of a contraction ("we've" → "weve") or a symbol
+    known = (
+        word in words.CORRECTABLE or word in words.NEGATIONS or numeric
+    ) and word not in words.HARMLESS
+    if tok is not None and not known and not _attached(tok):
+        if word not in words.HARMLESS and word not in words.CONSULTED:
+            st.ignored.append(word)
+            st.notes.append(f"ignored '{word}': not about the structure")
+        return
+    if tok is not None and word in words.NEGATIONS and not _attached(tok):
+        st.ignored.append(word)
+        return
+    if words.is_material(word, pos):
+        st.material.append(word)
+        st.ignored.append(word)
+        st.notes.append(f"ignored '{word}': not used by the reading")
+    elif word not in words.HARMLESS and word not in words.CONSULTED and word not in lx.FILLER:
+        st.ignored.append(word)
+
+
+def understood_summary(doc: Doc) -> dict[str, object]:
+    out: dict[str, object] = {}
+    shapes = [lx.SHAPE_WORDS[t.lower_] for t in doc if t.lower_ in lx.SHAPE_WORDS]
+    if shapes:
+        out["structures"] = shapes
+    nums = [t.text for t in doc if t.like_num]
+    if nums:
+        out["numbers"] = nums
+    parts = [t.lower_ for t in doc if t.lower_ in lx.PART_WORDS]
+    if parts:
+        out["parts"] = parts
+    regions = [lx.REGION_WORDS[t.lower_] for t in doc if t.lower_ in lx.REGION_WORDS]
+    if regions:
+        out["regions"] = regions
+    unknown = [
+        t.text for t in doc if t.is_alpha and t.lower_ not in words.VOCABULARY and not t.is_stop
+    ]
+    if unknown:
+        out["unknown_words"] = unknown[:20]
+    return out
+
+
+def no_structure(st: ReadState, doc: Doc, command: str) -> None:
+    known = ", ".join(sorted(set(lx.SHAPE_WORDS.values())))
+    understood = understood_summary(doc)
+    try:
+        parse_phrase(doc.text, st.cell)
+    except SpecError as exc:
+        if exc.understood and "not a usable count" not in str(exc):
+            understood = {**understood, **exc.understood}
+        elif "not a usable count" in str(exc):
+            raise SpecError(str(exc), understood=understood) from None
+    raise SpecError(
+        "no structure recognised in the command; name one of: "
+        + known
+        + " (e.g. 'a tower of 4 cubes', 'a 3 by 3 grid on the left')",
+        understood=understood,
+    )

@@ -1,0 +1,72 @@
+"""Stage 4: cut a parsed command into clauses at sentence punctuation and sequence words
+("then", "after that", "finally"), and say which clauses a sequence word introduced."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from sdi.spec import lexicon as lx
+
+if TYPE_CHECKING:
+    from spacy.tokens import Doc, Token
+
+
+# Sequence words that start a new clause.
+_SEQUENCE = {"then", "afterwards", "finally", "lastly", "next", "after"}
+
+
+_LEADS = {"first", "firstly", "and", ",", "after", "that", "then", "next", "finally", "also"}
+
+
+def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:
+    """The command's clauses (token indices), each with whether a sequence word ("then",
+    "finally", a step label) introduced it."""
+    # Clauses end at sentence punctuation, not at the parser's sentence guesses (it splits
+    # "a tower at x = 450 mm" at "=").
+    clauses: list[list[int]] = []
+    current: list[int] = []
+    for tok in doc:
+        w = tok.lower_
+        spaced_dash = (
+            w in ("-", "--") and tok.i > 0 and doc[tok.i - 1].whitespace_ and tok.whitespace_
+        )
+        if spaced_dash and any(doc[i].lower_ in lx.SHAPE_WORDS for i in current):
+            spaced_dash = False  # "a table - four legs and a flat top": the same structure
+        if (
+            (w in (";", ".", "!", "?") or spaced_dash)
+            and tok.i != len(doc) - 1
+            and not tok.like_num
+        ):
+            if current:
+                clauses.append(current)
+                current = []
+            continue
+        if w in _SEQUENCE and _starts_clause(doc, tok) and current:
+            clauses.append(current)
+            current = []
+        current.append(tok.i)
+    if current:
+        clauses.append(current)
+    # strip leading sequence words and trailing punctuation
+    out: list[tuple[list[int], bool]] = []
+    for c in clauses:
+        sequenced = bool(c) and doc[c[0]].lower_ in _SEQUENCE | {"then", "finally", "lastly"}
+        while c and doc[c[0]].lower_ in _LEADS | _SEQUENCE:
+            c = c[1:]
+        while c and doc[c[-1]].is_punct:
+            c = c[:-1]
+        if c:
+            out.append((c, sequenced))
+    return out
+
+
+def _starts_clause(doc: Doc, tok: Token) -> bool:
+    """`tok` ("then", "next", "after") begins a new step of the description."""
+    w = tok.lower_
+    if w == "next":
+        nxt = doc[tok.i + 1].lower_ if tok.i + 1 < len(doc) else ""
+        return nxt in (",", "add", "put", "place", "build", "stack", "make", "lay")
+    if w == "after":
+        nxt = doc[tok.i + 1].lower_ if tok.i + 1 < len(doc) else ""
+        return nxt in ("that", "this")
+    return True

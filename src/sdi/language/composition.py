@@ -1,0 +1,263 @@
+"""Stage 7: composition. Relations between phrases become `Relation`s between structures:
+pronouns resolve to the structures they name, a ring "around" something becomes an
+enclosure, towers "joined by" a beam become a bridge standing on them, and a structure
+"between" two others stands in a row with them."""
+
+from __future__ import annotations
+
+from sdi.language.nouns import COPY_WORDS, beam_only
+from sdi.language.references import resolve
+from sdi.language.state import Phrase, PhraseRelation, ReadState
+from sdi.spec.structure_spec import (
+    Relation,
+    RelationKind,
+    RowSpec,
+    StructureDraft,
+    StructureSpec,
+    TowerSpec,
+)
+
+_KINDS: dict[str, RelationKind] = {"on": "on_top_of", "around": "around", "next": "next_to"}
+
+
+def relate(
+    phrases: list[Phrase],
+    rels: list[PhraseRelation],
+    structures: list[StructureDraft],
+    st: ReadState,
+) -> tuple[list[Relation], list[StructureDraft]]:
+    relations: list[Relation] = []
+    drop: set[int] = set()
+    replace: dict[int, StructureDraft] = {}
+
+    def built(j: int | None, fallback: int) -> int | None:
+        if j is None:
+            # "on top" with no object: the phrase before the subject
+            cands = [q for q in range(fallback) if phrases[q].count and phrases[q].spec]
+            return cands[-1] if cands else None
+        j = resolve(phrases, j)
+        return j if phrases[j].count and phrases[j].spec is not None else None
+
+    joiners = {r.object for r in rels if r.kind == "joined"}
+    for r in rels:
+        subj = r.subject
+        if phrases[subj].modified or (r.object is not None and phrases[r.object].modified):
+            continue  # "add a third layer on it": already a change of that structure
+        if r.kind == "on" and subj in joiners:
+            continue  # "joined by a bridge on top": the joining beam lies on top anyway
+        obj = built(r.object, r.subject)
+        if r.kind == "joined":
+            pillars = built(r.subject, r.subject)
+            pillars = (
+                resolve(phrases, r.subject) if phrases[r.subject].ref is not None else (pillars)
+            )
+            between = _between(phrases, pillars, r.object, structures)
+            if between:
+                relations.extend(between)
+                st.notes.append("placed between the two, side by side")
+                continue
+            _join(phrases, pillars, r.object, structures, replace, drop, st)
+            continue
+        s_ref = phrases[subj].ref is not None
+        subj = resolve(phrases, subj)
+        if not phrases[subj].count or phrases[subj].spec is None:
+            if phrases[subj].tokens and r.kind == "on" and obj is not None:
+                # "a beam on top of the two towers": the beam joins them
+                _join(phrases, obj, subj, structures, replace, drop, st)
+                continue
+            st.material.append(f"relation {r.kind}")
+            st.notes.append(f"ignored a relation '{r.kind}': its subject is not a structure")
+            continue
+        s_first, s_last = phrases[subj].first, phrases[subj].first + phrases[subj].count - 1
+        o_ref = r.object is not None and phrases[r.object].ref is not None
+        if r.object is None:
+            # "X with Y on top", "on top" alone: the structure before the subject
+            s_idx = s_last
+            o_idx = (
+                s_last - 1
+                if phrases[subj].count > 1
+                else (phrases[obj].first + phrases[obj].count - 1 if obj is not None else -1)
+            )
+        elif obj is None:
+            o_idx = -1
+            s_idx = s_last
+        elif obj == subj:
+            # "a staircase with a tower next to it", "a ring with a tower inside it": the
+            # pronoun's side takes the first structure of the phrase, the other the last
+            s_idx = s_first if s_ref else s_last
+            o_idx = s_first if o_ref or not s_ref else s_last
+            if phrases[subj].count == 1:
+                o_idx = s_first - 1
+        else:
+            s_idx = s_last
+            o_idx = phrases[obj].first + phrases[obj].count - 1
+        if phrases[r.subject].structure is not None:
+            s_idx = phrases[r.subject].structure  # type: ignore[assignment]
+        if r.object is not None and phrases[r.object].structure is not None:
+            o_idx = phrases[r.object].structure  # type: ignore[assignment]
+        if o_idx < 0 or o_idx == s_idx:
+            st.material.append(f"relation {r.kind}")
+            st.notes.append(f"ignored '{r.kind}': no structure to relate '{phrases[subj].text}' to")
+            continue
+        if obj is None:
+            obj = subj
+        picked = r.object is not None and phrases[r.object].structure is not None
+        if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1 and not picked:
+            _join(phrases, obj, subj, structures, replace, drop, st)
+            continue
+        subject = replace.get(s_idx, structures[s_idx])
+        obj_spec = replace.get(o_idx, structures[o_idx])
+        subject = _copy_if_asked(phrases[subj], subject, obj_spec, st)
+        if r.kind == "around" and obj_spec.shape in ("enclosure", "castle"):
+            subject, obj_spec = obj_spec, subject
+            s_idx, o_idx = o_idx, s_idx
+        if r.kind == "around" and subject.shape not in ("enclosure", "castle"):
+            st.notes.append(f"a {subject.shape} around another structure: built as a ring")
+            subject = StructureDraft(shape="enclosure", height=subject.height, part=subject.part)
+        replace[s_idx] = subject
+        if any(rel.subject == s_idx for rel in relations):
+            st.material.append(f"relation {r.kind}")
+            st.notes.append(f"ignored a second relation of '{phrases[subj].text}'")
+            continue
+        kind: RelationKind = _KINDS[r.kind]
+        placed = {"at_x": subject.at_x, "at_y": subject.at_y, "region": subject.region}
+        if kind != "around" and any(v is not None for v in placed.values()):
+            # the unit stands where the object stands: a position said of the subject moves
+            # to the object when the object has none
+            if obj_spec.at_x is None and obj_spec.at_y is None and obj_spec.region is None:
+                replace[o_idx] = obj_spec.model_copy(update=placed)
+            else:
+                st.notes.append(
+                    f"the position of the {subject.shape} follows the {obj_spec.shape} it is "
+                    f"{kind.replace('_', ' ')}"
+                )
+            replace[s_idx] = subject.model_copy(update=dict.fromkeys(placed))
+        side = r.side or (phrases[r.object].side if r.object is not None else None)
+        relations.append(Relation(kind=kind, subject=s_idx, object=o_idx, side=side))
+    for k, s in replace.items():
+        structures[k] = s
+    if drop:
+        keep = [k for k in range(len(structures)) if k not in drop]
+        index = {old: new for new, old in enumerate(keep)}
+        relations = [
+            r.model_copy(update={"subject": index[r.subject], "object": index[r.object]})
+            for r in relations
+            if r.subject in index and r.object in index
+        ]
+        structures = [structures[k] for k in keep]
+    return relations, structures
+
+
+def _copy_if_asked(
+    p: Phrase, subject: StructureDraft, other: StructureDraft, st: ReadState
+) -> StructureDraft:
+    """ "a second row", "another one like it": the same parameters as the structure referred to."""
+    said = set(p.text.lower().split())
+    explicit = subject.model_dump(exclude_defaults=True, exclude={"shape"})
+    if said & COPY_WORDS and not explicit and subject.shape == other.shape:
+        st.notes.append(f"'{p.text}': the same {other.shape} as the one it stands on or beside")
+        return other.model_copy(update={"at_x": None, "at_y": None, "region": None})
+    return subject
+
+
+def _between(
+    phrases: list[Phrase], pillars: int | None, middle: int | None, structures: list[StructureDraft]
+) -> list[Relation]:
+    """ "a 2x2 block between a wall and a tower": the three in a row, the middle one between
+    (empty when the middle one is a beam or bridge that joins them instead)."""
+    if pillars is None or middle is None or phrases[pillars].count != 2:
+        return []
+    m = phrases[middle]
+    target = resolve(phrases, middle)
+    spec = phrases[target].spec
+    if spec is None or beam_only(m.text):
+        return []
+    if m.structure is not None:
+        x = m.structure
+    else:
+        x = phrases[target].first + phrases[target].count - 1
+    if structures[x].shape in ("bridge", "arch"):
+        return []
+    a, b = phrases[pillars].first, phrases[pillars].first + 1
+    if x in (a, b):
+        return []
+    return [
+        Relation(kind="next_to", subject=x, object=a, side="back"),
+        Relation(kind="next_to", subject=b, object=x, side="back"),
+    ]
+
+
+def _join(
+    phrases: list[Phrase],
+    pillars: int | None,
+    joiner: int | None,
+    structures: list[StructureDraft],
+    replace: dict[int, StructureDraft],
+    drop: set[int],
+    st: ReadState,
+) -> None:
+    """Towers "joined by" a beam or bridge: a bridge standing on them as its pillars."""
+    if pillars is None or not phrases[pillars].count:
+        st.material.append("relation joined")
+        st.notes.append("ignored 'joined by': no towers to join")
+        return
+    p = phrases[pillars]
+    idx = list(range(p.first, p.first + p.count))
+    towers = [replace.get(k, structures[k]) for k in idx]
+    if len(towers) == 1 and towers[0].shape in ("bridge", "arch", "canopy"):
+        return  # "a bridge: two pillars … with a beam across the top": the bridge's own beam
+    if len(towers) == 1 and towers[0].shape == "row" and (towers[0].length or 0) >= 2:
+        # "a beam spanning a pair of single cubes": each cube is a pillar one part high
+        n = towers[0].length or 2
+        towers = [towers[0].model_copy(update={"shape": "tower", "height": 1, "length": None,
+                                               "gap_m": None})] * n  # fmt: skip
+    if len(towers) < 2 or any(t.shape != "tower" for t in towers):
+        shapes = ", ".join(t.shape for t in towers)
+        st.material.append("relation joined")
+        st.notes.append(
+            f"ignored 'joined by': only two or more towers can carry a beam (got {shapes})"
+        )
+        return
+    heights = {t.height or (3 if t.height_m is None else None) for t in towers}
+    metres = {t.height_m for t in towers if t.height_m is not None}
+    if len(heights) > 1 or len(metres) > 1:
+        st.material.append("relation joined")
+        st.notes.append("ignored 'joined by': towers of different heights cannot carry one beam")
+        return
+    first = towers[0]
+    bridge = StructureDraft(
+        shape="bridge",
+        height=first.height,
+        height_m=first.height_m,
+        spans=len(towers) - 1,
+        at_x=first.at_x,
+        at_y=first.at_y,
+        region=first.region,
+        axis=first.axis,
+    )
+    if joiner is not None and phrases[joiner].spec is not None:
+        j = phrases[joiner]
+        own = [x.shape for x in j.spec.structures] if j.spec else []
+        if any(shape not in ("bridge", "arch") for shape in own):
+            st.material.append("relation between")
+            st.notes.append(
+                f"ignored 'between': only a beam or bridge can join towers, not a "
+                f"{own[0]}; built them side by side"
+            )
+            return
+        extra = j.spec.structures[0] if j.spec else None
+        if extra is not None and extra.shape == "bridge" and extra.span is not None:
+            bridge = bridge.model_copy(update={"span": extra.span})
+        drop.update(range(j.first, j.first + j.count))
+    st.notes.append(
+        f"{len(towers)} towers joined by a beam: a bridge with {len(towers) - 1} span(s) on them"
+    )
+    replace[idx[0]] = bridge
+    drop.update(idx[1:])
+
+
+def unstack(s: StructureSpec, st: ReadState) -> StructureSpec:
+    """ "side by side, don't stack them": a tower's parts laid in a row."""
+    if isinstance(s, TowerSpec):
+        return RowSpec(shape="row", length=s.height or 3, at_x=s.at_x, at_y=s.at_y, region=s.region)
+    return s

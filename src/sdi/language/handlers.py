@@ -1,0 +1,137 @@
+"""Computed rewrites: replacements that need arithmetic or context ("twelve cubes in three
+equal stacks" → three stacks of four) or that set a flag on the reading ("don't stack them",
+"no beams"). The rewrite table (`sdi.language.rewrites`) names each by its key in `HANDLERS`."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from sdi.language.state import ReadState
+from sdi.spec import lexicon as lx
+from sdi.spec.numbers import words_to_numbers
+
+
+def _split(m: re.Match[str], st: ReadState) -> str:
+    """ "twelve cubes in three equal stacks": three stacks of four."""
+    said = [words_to_numbers([g.lower()])[0] for g in (m.group(1), m.group(2))]
+    if not all(v.isdigit() for v in said):
+        return m.group(0)
+    total, count = int(said[0]), int(said[1])
+    noun = m.group(3).lower()
+    if count < 1 or total % count:
+        st.material.append(m.group(0))
+        st.notes.append(f"ignored '{m.group(0)}': {total} parts do not split into {count} equal")
+        return f" {count} {noun} "
+    st.notes.append(f"{total} parts as {count} {noun}: {total // count} each")
+    return f" {count} {noun} of {total // count} cubes "
+
+
+Handler = Callable[[re.Match[str], ReadState, str], str]
+
+
+def _said(m: re.Match[str]) -> tuple[str, list[str]]:
+    return m.group(0).strip(" ,"), [g.lower() if g else "" for g in m.groups()]
+
+
+def _no_stack(m: re.Match[str], st: ReadState, note: str) -> str:
+    st.no_stack = True
+    st.notes.append(note.format(_said(m)[0]))
+    return " "
+
+
+def _no_beams(m: re.Match[str], st: ReadState, note: str) -> str:
+    st.no_beams = True
+    st.notes.append(note.format(_said(m)[0]))
+    return " "
+
+
+def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
+    if re.search(r"\b(?:castle|fort|fortress|citadel)s?\b", m.string, re.IGNORECASE):
+        return m.group(0)  # "a castle with a tower at each corner": the family's own
+    if re.search(r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]):
+        return m.group(0)  # "a courtyard 5 cubes on each side": a size
+    said = _said(m)[0]
+    st.material.append(said)
+    st.notes.append(
+        f"ignored '{said}': parts cannot be placed on a chosen end, side or corner of a "
+        "structure yet"
+    )
+    return " "
+
+
+def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
+    said, groups = _said(m)
+    a_, b_ = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
+    if not (a_.isdigit() and b_.isdigit()):
+        return m.group(0)
+    value = int(b_) + (int(a_) if groups[1] == "more" else -int(a_))
+    st.notes.append(f"read '{said}' as {value}")
+    return f" {value} "
+
+
+def _more_like(m: re.Match[str], st: ReadState, note: str) -> str:
+    shapes = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+              if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    if not shapes:
+        return m.group(0)
+    noun = shapes[-1] if shapes[-1].endswith("s") else shapes[-1] + "s"
+    return f" {_said(m)[1][0]} identical {noun} "
+
+
+def _times(m: re.Match[str], st: ReadState, note: str) -> str:
+    said, groups = _said(m)
+    factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
+    base_n = words_to_numbers([groups[2]])[0]
+    k_ = factor.get(re.sub(r"\s+", " ", groups[0]), 0)
+    if not base_n.isdigit() or not k_ or (int(base_n) * k_) % 1:
+        return m.group(0)
+    value = int(int(base_n) * k_)
+    st.notes.append(f"read '{said}' as {value} {groups[1]}")
+    return f" {value} {groups[1]} "
+
+
+def _climb(m: re.Match[str], st: ReadState, note: str) -> str:
+    # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
+    return {
+        "back": " along x ",
+        "left": " along y ",
+        "front": " along x rotated 180 degrees ",
+        "right": " along y rotated 180 degrees ",
+    }[_said(m)[1][0]]
+
+
+def _rows(m: re.Match[str], st: ReadState, note: str) -> str:
+    said_n = [words_to_numbers([g])[0] for g in _said(m)[1][:2]]
+    if all(v.isdigit() for v in said_n) and int(said_n[0]) % int(said_n[1]) == 0:
+        return f" {int(said_n[0]) // int(said_n[1])} by {said_n[1]} "
+    return m.group(0)
+
+
+def _rows_of(m: re.Match[str], st: ReadState, note: str) -> str:
+    groups = _said(m)[1]
+    walls = re.search(r"\b(?:wall|walls|fence)\b", m.string[: m.start()], re.IGNORECASE)
+    return f" {groups[0]} {'levels' if walls else 'rows'} of {groups[1]} "
+
+
+def _layers(m: re.Match[str], st: ReadState, note: str) -> str:
+    said, groups = _said(m)
+    st.notes.append(note.format(said))
+    layers = {"double": 2, "triple": 3, "quadruple": 4}[groups[0]]
+    return f"{layers}-layer"
+
+
+# Rewrites whose replacement is computed: the `_REWRITES` entry names one of these.
+HANDLERS: dict[str, Handler] = {
+    "{split}": lambda m, st, note: _split(m, st),
+    "{no_stack}": _no_stack,
+    "{no_beams}": _no_beams,
+    "{placement}": _placement,
+    "{arith}": _arith,
+    "{more_like}": _more_like,
+    "{times}": _times,
+    "{climb}": _climb,
+    "{rows}": _rows,
+    "{rows_of}": _rows_of,
+    "{layers}": _layers,
+}

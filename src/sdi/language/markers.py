@@ -1,0 +1,356 @@
+"""Stage 5: relation markers. Each clause is cut into noun phrases at markers ("on top of",
+"around", "next to", "joined by", "surround … with") and each marker becomes a relation
+between the phrase before it and the one after — when its object names a structure."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from sdi.language import words
+from sdi.language.clauses import split_clauses
+from sdi.language.nouns import SPACE_WORDS, is_component, names_structure, object_head
+from sdi.language.state import Phrase, PhraseRelation
+from sdi.spec import lexicon as lx
+
+if TYPE_CHECKING:
+    from spacy.tokens import Doc
+
+
+# Relation markers: words → (kind, side). Kinds: on (subject on object), around (subject
+# encloses object), inside (object encloses subject), next (beside, `side`), join (subject
+# joins the object's pillars), joined (the object joins the subject's pillars).
+_MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
+    (("on", "the", "middle", "of"), "on", None),
+    (("on", "the", "centre", "of"), "on", None),
+    (("on", "the", "center", "of"), "on", None),
+    (("across", "the", "top", "of"), "on", None),
+    (("across",), "on", None),
+    (("on", "top", "of"), "on", None),
+    (("on", "the", "top", "of"), "on", None),
+    (("on", "top"), "on", None),
+    (("onto",), "on", None),
+    (("atop",), "on", None),
+    (("upon",), "on", None),
+    (("above",), "on", None),
+    (("over",), "on", None),
+    (("on",), "on", None),
+    (("underneath",), "under", None),
+    (("beneath",), "under", None),
+    (("below",), "under", None),
+    (("under",), "under", None),
+    (("around",), "around", None),
+    (("round",), "around", None),
+    (("surrounding",), "around", None),
+    (("enclosing",), "around", None),
+    (("encircling",), "around", None),
+    (("in",), "inside_ref", None),
+    (("into",), "inside_ref", None),
+    (("inside", "of"), "inside", None),
+    (("inside",), "inside", None),
+    (("within",), "inside", None),
+    (("in", "the", "middle", "of"), "inside", None),
+    (("in", "the", "centre", "of"), "inside", None),
+    (("in", "the", "center", "of"), "inside", None),
+    (("surrounded", "by"), "inside", None),
+    (("enclosed", "by"), "inside", None),
+    (("enclosed", "in"), "inside", None),
+    (("encircled", "by"), "inside", None),
+    (("ringed", "by"), "inside", None),
+    (("next", "to"), "next", None),
+    (("beside",), "next", None),
+    (("besides",), "next", None),
+    (("alongside", "it"), "next_implicit", None),
+    (("alongside",), "next", None),
+    (("adjacent", "to"), "next", None),
+    (("close", "to"), "next", None),
+    (("near", "to"), "next", None),
+    (("leading", "up", "to"), "next", None),
+    (("leading", "to"), "next", None),
+    (("near",), "next", None),
+    (("to", "its", "left"), "next_implicit", "left"),
+    (("to", "its", "right"), "next_implicit", "right"),
+    (("on", "its", "left"), "next_implicit", "left"),
+    (("on", "its", "right"), "next_implicit", "right"),
+    (("in", "front", "of", "it"), "next_implicit", "front"),
+    (("behind", "it"), "next_implicit", "back"),
+    (("to", "the", "left", "of"), "next", "left"),
+    (("on", "the", "left", "of"), "next", "left"),
+    (("left", "of"), "next", "left"),
+    (("to", "the", "right", "of"), "next", "right"),
+    (("on", "the", "right", "of"), "next", "right"),
+    (("right", "of"), "next", "right"),
+    (("in", "front", "of"), "next", "front"),
+    (("behind",), "next", "back"),
+    (("at", "the", "back", "of"), "next", "back"),
+    (("joined", "at", "the", "top", "by"), "joined", None),
+    (("connected", "at", "the", "top", "by"), "joined", None),
+    (("joined", "on", "top", "by"), "joined", None),
+    (("joined", "on", "top", "with"), "joined", None),
+    (("joined", "at", "the", "top", "with"), "joined", None),
+    (("connected", "on", "top", "with"), "joined", None),
+    (("connected", "on", "top", "by"), "joined", None),
+    (("joined", "together", "by"), "joined", None),
+    (("joined", "by"), "joined", None),
+    (("connected", "by"), "joined", None),
+    (("linked", "by"), "joined", None),
+    (("bridged", "by"), "joined", None),
+    (("spanned", "by"), "joined", None),
+    (("joined", "with"), "joined", None),
+    (("connected", "with"), "joined", None),
+    (("topped", "by"), "topped", None),
+    (("topped", "with"), "topped", None),
+    (("capped", "by"), "topped", None),
+    (("capped", "with"), "topped", None),
+    (("joining",), "join", None),
+    (("connecting",), "join", None),
+    (("linking",), "join", None),
+    (("bridging",), "join", None),
+    (("spanning",), "join", None),
+    (("between",), "join", None),
+]
+
+
+_MARKERS.sort(key=lambda m: -len(m[0]))
+
+
+_VERB_AROUND = {"surround", "encircle", "enclose", "ring", "circle", "fence", "wall"}
+
+
+_VERB_JOIN = {"join", "connect", "link", "bridge", "span"}
+
+
+_VERB_TOP = {"top", "cap", "crown"}
+
+
+_FRONTED_VERBS = {"goes", "go", "stands", "sits", "comes", "is", "are", "put", "place", "build",
+                  "add", "stack", "lies", "rests", "belongs", "should", "will", "must"}  # fmt: skip
+
+
+def find_phrases(doc: Doc) -> tuple[list[Phrase], list[PhraseRelation]]:
+    phrases: list[Phrase] = []
+    rels: list[PhraseRelation] = []
+    stacking = False
+    for ci, (clause, sequenced) in enumerate(split_clauses(doc)):
+        first_phrase, first_rel = len(phrases), len(rels)
+        _clause_phrases(doc, clause, ci, phrases, rels)
+        new = rels[first_rel:]
+        if not new and stacking and sequenced and len(phrases) == first_phrase + 1:
+            # "… a 4x1 row on it. Then 3x1. Then 2x1.": a step in a stack goes on top
+            rels.append(PhraseRelation("on", first_phrase, None))
+            continue
+        stacking = any(r.kind == "on" for r in new)
+    for p in phrases:
+        p.text = "".join(doc[k].text_with_ws for k in p.tokens).strip()
+    return phrases, rels
+
+
+def _clause_phrases(
+    doc: Doc, clause: list[int], ci: int, phrases: list[Phrase], rels: list[PhraseRelation]
+) -> None:
+    end = clause[-1] + 1
+    lower = [t.lower_ for t in doc]
+    markers: list[tuple[int, int, str, str | None]] = []  # (start, end, kind, side)
+    k = clause[0]
+    # verbs: "surround X with Y", "join X and Y with Z", "top it with a beam"
+    verb: tuple[int, str] | None = None
+    for i in clause:
+        lemma = doc[i].lemma_.lower()
+        if doc[i].tag_ in ("VB", "VBP") or (i == clause[0] and doc[i].tag_ != "VBN"):
+            if lemma in _VERB_AROUND or lower[i] in _VERB_AROUND:
+                verb = (i, "v_around")
+            elif lemma in _VERB_JOIN or lower[i] in _VERB_JOIN:
+                verb = (i, "v_join")
+            elif lemma in _VERB_TOP and lower[i] in _VERB_TOP:
+                verb = (i, "v_top")
+            if verb:
+                break
+    if verb is not None:
+        v, kind = verb
+        prep = next(
+            (i for i in clause if i > v and lower[i] in ("with", "by", "using", "in")), None
+        )
+        if prep is not None and object_head(doc, prep + 1, end)[1]:
+            markers.append((v, v + 1, kind + "_verb", None))
+            markers.append((prep, prep + 1, kind, None))
+    while k < end:
+        if markers and any(s <= k < e for s, e, _, _ in markers):
+            k += 1
+            continue
+        found = None
+        for words_, kind, side in _MARKERS:
+            n = len(words_)
+            if tuple(lower[k : k + n]) == words_ and k + n <= end:
+                found = (words_, kind, side)
+                break
+        if found is None:
+            k += 1
+            continue
+        words_, kind, side = found
+        n = len(words_)
+        strong = words_ in (("on", "top", "of"), ("on", "the", "top", "of"), ("atop",))
+        head, is_structure = object_head(doc, k + n, end, strong)
+        if (
+            is_structure
+            and head is not None
+            and kind == "on"
+            and is_component(doc, clause, k, head)
+        ):
+            k += n
+            continue  # "a bridge on pillars 3 high": the bridge's own pillars
+        numeric_before = k > clause[0] and (
+            doc[k - 1].like_num
+            or (lower[k - 1] in lx.PART_WORDS and k - 2 >= 0 and doc[k - 2].like_num)
+        )
+        implicit = (
+            (kind == "on" and words_[-1] == "top" and (head is None or not is_structure))
+            or (kind == "inside" and head is None)
+            or kind == "next_implicit"
+        )
+        if kind == "next" and head is None and words_[0] in ("alongside", "beside", "besides"):
+            kind, implicit = "next_implicit", True  # "… then a second row alongside"
+        if numeric_before and kind == "on" and words_[0] in ("above", "over"):
+            k += n
+            continue
+        if kind == "inside_ref":
+            if head is None or doc[head].lower_ not in ("it", "them"):
+                k += n
+                continue
+            kind = "inside"
+        overlaps = any(a < k + n and k < b for a, b, _, _ in markers)
+        if (is_structure or implicit) and not overlaps:
+            markers.append((k, k + n, kind, side))
+        k += n
+    if not markers:
+        phrases.append(Phrase(tokens=list(clause), clause=ci))
+        return
+    markers.sort()
+    # cut the clause into segments between markers
+    segments: list[list[int]] = []
+    cur: list[int] = []
+    bounds = iter(markers)
+    m = next(bounds, None)
+    for i in clause:
+        while m is not None and i >= m[1]:
+            m = next(bounds, None)
+        if m is not None and m[0] <= i < m[1]:
+            if i == m[0]:
+                segments.append(cur)
+                cur = []
+            continue
+        cur.append(i)
+    segments.append(cur)
+    lead = [i for i in segments[0] if doc[i].lower_ not in words.HARMLESS and not doc[i].is_space]
+    if markers and not lead:
+        # "On top of two 2-cube towers, a beam.": the subject follows the object, after the
+        # first comma of the last segment (or the verb: "To the right of a tower goes a row")
+        last = segments[-1]
+        commas = [n for n, i in enumerate(last) if doc[i].lower_ == ","]
+        verbs = [n for n, i in enumerate(last) if doc[i].lower_ in _FRONTED_VERBS and n]
+        cut = commas[0] if commas else (verbs[0] if verbs and len(markers) == 1 else None)
+        if cut is None and last and doc[last[0]].lower_ in ("it", "them", "that", "this"):
+            cut = 0  # "on it a tower of 3": the pronoun is the object
+        if cut is None:
+            # "behind the wall 3 long and 2 high a 3-cube tower": a second noun phrase
+            articles = [
+                n
+                for n, i in enumerate(last)
+                if n > 0
+                and doc[i].lower_ in ("a", "an")
+                and names_structure(doc, last[n : n + 5])
+                and names_structure(doc, last[:n])
+            ]
+            cut = articles[0] - 1 if articles else None
+            if cut is not None:
+                segments[0] = last[cut + 1 :]
+                segments[-1] = last[: cut + 1]
+                cut = None
+        if cut is not None and names_structure(doc, last[cut + 1 :]):
+            segments[0] = last[cut + 1 :]
+            segments[-1] = last[:cut]
+    for j in range(len(markers)):
+        tail = segments[j + 1]
+        commas = [n for n, i in enumerate(tail) if doc[i].lower_ == ","]
+        if (
+            commas
+            and commas[0] <= 2
+            and doc[tail[0]].lower_ in ("it", "them", "this", "that")
+            and names_structure(doc, tail[commas[0] + 1 :])
+            and not markers[j][2].endswith("_verb")
+        ):
+            # "a T shape and, left of it, an L shape": the subject follows the pronoun; what
+            # stood before the marker is a phrase of its own
+            if names_structure(doc, segments[j]):
+                phrases.append(Phrase(tokens=segments[j], clause=ci))
+            segments[j] = tail[commas[0] + 1 :]
+            segments[j + 1] = tail[: commas[0]]
+    base = len(phrases)
+    for seg in segments:
+        phrases.append(Phrase(tokens=seg, clause=ci))
+    # relate the segments: marker j sits between segment j and j + 1
+    for j, (_, _, kind, side) in enumerate(markers):
+        before, after = base + j, base + j + 1
+        if kind.endswith("_verb"):
+            continue
+        if kind == "inside" and any(doc[i].lower_ in SPACE_WORDS for i in phrases[before].tokens):
+            continue  # "an enclosure with a 2 by 2 space inside it": its own inside
+        after_toks = phrases[after].tokens
+        named = bool(after_toks) and object_head(doc, after_toks[0], after_toks[-1] + 1)[1]
+        pronoun = bool(after_toks) and all(
+            doc[i].lower_ in ("it", "them", "its", "top", "of", "the", "middle", "centre", "and")
+            or doc[i].is_punct
+            for i in after_toks
+        )
+        if (
+            kind in ("on", "inside", "next")
+            and (not named or pronoun)
+            and (kind != "next" or pronoun)
+        ):
+            # "a block with a single cube on top", "an enclosure with a pyramid inside":
+            # the structure after "with" is the subject, the one before it the object
+            toks = phrases[before].tokens
+            withs = [n for n, i in enumerate(toks) if doc[i].lower_ == "with"]
+            if withs and names_structure(doc, toks[withs[-1] + 1 :]):
+                cut = withs[-1]
+                phrases[before].tokens = toks[:cut]
+                phrases[after].tokens = toks[cut + 1 :] + phrases[after].tokens
+                if pronoun:
+                    phrases[after].tokens = toks[cut + 1 :]  # the pronoun names the first
+                if kind == "on":
+                    rels.append(PhraseRelation("on", after, before))
+                elif kind == "next":
+                    rels.append(PhraseRelation("next", after, before, side))
+                else:
+                    rels.append(PhraseRelation("around", before, after))
+                continue
+            if kind == "inside" and not named:
+                continue  # "with a 2 by 2 space inside": the ring's own inside
+        if kind == "v_around":
+            rels.append(PhraseRelation("around", after, before))
+        elif kind == "v_join":
+            rels.append(PhraseRelation("joined", before, after))
+        elif kind == "v_top":
+            rels.append(PhraseRelation("on", after, before))
+        elif kind == "on":
+            implicit = (
+                not phrases[after].tokens
+                or not object_head(doc, phrases[after].tokens[0], phrases[after].tokens[-1] + 1)[1]
+            )
+            rels.append(PhraseRelation("on", before, None if implicit else after))
+        elif kind == "under":
+            rels.append(PhraseRelation("on", after, before))
+        elif kind == "around":
+            rels.append(PhraseRelation("around", before, after))
+        elif kind == "inside":
+            rels.append(PhraseRelation("around", after, before))
+        elif kind == "next":
+            rels.append(PhraseRelation("next", before, after, side))
+        elif kind == "next_implicit":
+            rels.append(
+                PhraseRelation("next", before, None, side)
+            )  # "to its right": the one before
+        elif kind == "joined":
+            rels.append(PhraseRelation("joined", before, after))
+        elif kind == "join":
+            rels.append(PhraseRelation("joined", after, before))
+        elif kind == "topped":
+            rels.append(PhraseRelation("on", after, before))

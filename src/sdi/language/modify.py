@@ -1,0 +1,185 @@
+"""Clauses that change a structure already read: "then add two more cubes to it", "make it 5
+high", "move it to the left", or words that continue the phrase before ("Make a tower. 4
+cubes."); and changes SDI cannot make (taking parts out), which are reported."""
+
+from __future__ import annotations
+
+import re
+
+from sdi.errors import SpecError
+from sdi.language.state import Phrase, ReadState
+from sdi.model.cell import CellConfig
+from sdi.spec.grammar import parse_phrase
+from sdi.spec.numbers import words_to_numbers
+from sdi.spec.structure_spec import StructureDraft
+
+_N = r"(\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|another|one\s+more)"
+
+
+_UNIT = (
+    r"(?:\s+(?:more|extra|additional|further))?"
+    r"(?:\s+(?:cubes?|levels?|layers?|parts?|blocks?|steps?|storeys?|tiers?))?"
+)
+
+
+_REF = r"(?:it|them|the\s+\w+(?:\s+one)?)"
+
+
+def _op(pattern: str, op: str) -> tuple[re.Pattern[str], str]:
+    return re.compile(pattern, re.IGNORECASE), op
+
+
+# (pattern, operation on the height of the structure referred to)
+MODIFY = [
+    _op(r"\b(?:add|put|stack|place|pile)\s+" + _N + r"\s+(?:more|extra|additional)" + _UNIT, "+"),
+    _op(r"\b(?:add|put|stack|place)\s+" + _N + _UNIT + r"\s+(?:to|on|onto)\s+" + _REF + r"\b", "+"),
+    _op(
+        r"\badd\s+(?:a|one|another)\s+(?:second|third|fourth|fifth|new|further|extra|more)?"
+        r"\s*(?:layer|level|tier|storey|course)\b",
+        "+1",
+    ),
+    _op(
+        r"\bmake\s+(?:it|them)\s+" + _N + r"\s+(?:more\s+)?(?:cubes?\s+|levels?\s+|layers?\s+)?"
+        r"(?:taller|higher)\b",
+        "+",
+    ),
+    _op(r"\b(?:raise|extend|grow)\s+(?:it|them)\s+by\s+" + _N + _UNIT, "+"),
+    _op(
+        r"\b(?:keep\s+adding|add)\s+(?:steps|levels|layers|cubes)\s+until\s+(?:it|there)\s+"
+        r"(?:has|is|are)\s+" + _N,
+        "=",
+    ),
+    _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
+    _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "="),
+    _op(
+        r"\b(?:move|shift|put|place|slide)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|at|on)\s+(?:the\s+)?"
+        r"(left|right|front|back|middle|centre|center)\b",
+        "region",
+    ),
+    _op(
+        r"\buntil\s+(?:it|they)\s+(?:is|are|stands?)\s+"
+        + _N
+        + r"\s+(?:cubes?\s+|levels?\s+|layers?\s+)?(?:high|tall)\b",
+        "=",
+    ),
+    _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
+    _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
+    _op(r"\b(double|triple)\s+(?:it|them)\s+in\s+height\b", "*"),
+    _op(r"\b(?:take|knock|lift)\s+(?:away|off)\s+" + _N + r"\s+(?:cubes?|levels?|layers?)\b", "-"),
+    _op(
+        r"\b(?:take|knock|lift)\s+off\s+(?:its|the)\s+top\s+(?:row|level|layer|course|tier)\b", "-1"
+    ),
+    _op(r"\b(?:cut|chop)\s+(?:it|them)\s+in\s+(half)\b|\bhalve\s+(?:it|them)\b", "/"),
+    _op(
+        r"\bmake\s+(?:it|them|the\s+\w+)\s+"
+        + _N
+        + r"\s+(?:steps|cubes?\s+(?:high|tall)|levels?|layers?|high|tall|storeys?)\b",
+        "=",
+    ),
+    _op(
+        r"\b(?:take|knock|lift|remove)\s+"
+        + _N
+        + r"\s+(?:cubes?\s+|levels?\s+)?(?:back\s+)?(?:off|away|from\s+the\s+top)\b",
+        "-",
+    ),
+    _op(
+        r"\b(?:take|knock|lift)\s+(?:off\s+)?(?:the\s+)?top\s+"
+        + _N
+        + r"?\s*(?:cubes?\s+|levels?\s+)?off\b",
+        "-",
+    ),
+    _op(
+        r"\b(?:take|knock|lift|remove)\s+(?:off\s+)?the\s+top\s+(cube|one|level|layer)\b"
+        r"(?:\s+off)?",
+        "-1",
+    ),
+]
+
+
+REMOVAL = re.compile(
+    r"^(?:\w+\s+){0,2}?(?:take|takes|pull|pulls|remove|removes|push|pushes|move|moves|shift|"
+    r"slide|swap|delete|knock|cut|subtract|shove|merge|join\s+up)\b"
+    r"(?!.*\b(?:tower|wall|row|pyramid|staircase|bridge|grid|block|ring|castle|arch)s?\b.*\b"
+    r"(?:of|with)\s+\d)",
+    re.IGNORECASE,
+)
+
+
+def modify(
+    p: Phrase, before: list[Phrase], structures: list[StructureDraft], st: ReadState
+) -> bool:
+    """ "then add two more cubes to it", "make it two taller": change an earlier structure."""
+    built = [q for q in before if q.spec is not None and q.count]
+    if not built:
+        return False
+    for pattern, op in MODIFY:
+        m = pattern.search(p.text)
+        if not m:
+            continue
+        if op == "region":
+            place = m.group(1).lower()
+            place = {"middle": "centre", "center": "centre"}.get(place, place)
+            target = built[-1]
+            index = target.first + target.count - 1
+            structures[index] = structures[index].model_copy(
+                update={"region": place, "at_x": None, "at_y": None}
+            )
+            st.notes.append(f"'{m.group(0).strip()}': the {structures[index].shape} goes {place}")
+            p.count = 0
+            p.modified = True
+            return True
+        if op in ("+1", "-1"):
+            n, op = 1, op[0]
+        else:
+            word = re.sub(r"\s+", " ", (m.group(1) or ("2" if op == "/" else "1")).lower())
+            word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
+                    "triple": "3", "half": "2"}.get(word, word)  # fmt: skip
+            value = words_to_numbers([word])[0]
+            if not value.isdigit():
+                return False
+            n = int(value)
+        target = built[-1]
+        index = target.first + target.count - 1
+        ordinal = re.search(r"\bthe\s+(first|second|third|last)\b", p.text, re.I)
+        if ordinal and target.count > 1:
+            pick = {"first": 0, "second": 1, "third": 2, "last": target.count - 1}
+            index = target.first + min(pick[ordinal.group(1).lower()], target.count - 1)
+        last = structures[index]
+        key = "steps" if last.shape == "staircase" else "height"
+        now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
+        if op == "/" and now % n:
+            return False
+        new = {"+": now + n, "-": now - n, "=": n, "*": now * n, "/": now // n}[op]
+        if new < 1:
+            return False
+        shape = last.shape
+        if key == "height" and new > 1 and shape in ("grid", "row"):
+            shape = "block" if shape == "grid" else "wall"
+        structures[index] = last.model_copy(update={key: new, "shape": shape})
+        st.notes.append(f"'{m.group(0).strip()}': the {last.shape} now has {key} {new}")
+        p.count = 0
+        p.modified = True
+        return True
+    return False
+
+
+def continues(p: Phrase, before: list[Phrase], cell: CellConfig) -> tuple[int, Phrase] | None:
+    """A phrase with no structure that modifies the one before ("Make it 5 cubes tall"):
+    the earlier phrase read again with it, and how many structures it had."""
+    built = [q for q in before if q.spec is not None]
+    if not built or p.ref is not None:
+        return None
+    prev = built[-1]
+    try:
+        spec, _ = parse_phrase(prev.text + " , " + p.text, cell)
+    except SpecError:
+        return None
+    if prev.spec is not None and spec.structures == prev.spec.structures:
+        return None
+    count = prev.count
+    if len(spec.structures) != count:
+        return None  # the later words named a structure after all: not a continuation
+    prev.text = prev.text + " , " + p.text
+    prev.spec = spec
+    p.count = 0
+    return count, prev

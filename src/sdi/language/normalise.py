@@ -1,0 +1,191 @@
+"""Stage 1: normalise a command's text — symbols, contractions, lists, homophones and number
+forms — before anything reads it. Numbers SDI cannot use (not finite, past 10⁶) are refused."""
+
+from __future__ import annotations
+
+import re
+
+from sdi.errors import SpecError
+
+_SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "\u00a0": " "}
+
+
+_DIMS = re.compile(r"(?<=\d)\s*[x*]\s*(?=\d)", re.IGNORECASE)
+
+
+SPACES = re.compile(r"\s+")
+
+
+_CONTRACTIONS = [
+    (re.compile(r"\b(can)'?t\b", re.IGNORECASE), r"\1 not"),
+    (re.compile(r"\bwon'?t\b", re.IGNORECASE), "will not"),
+    (re.compile(r"\b(is|are|was|were|do|does|did|should|must|could|would)n'?t\b", re.I), r"\1 not"),
+]
+
+
+_SCIENTIFIC = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?|\.\d+)[eE]([+-]?\d+)\b")
+
+
+_NOT_A_NUMBER = re.compile(r"(?<![\w])(nan|inf|infinity)(?![\w])", re.IGNORECASE)
+
+
+_DECIMAL_COMMA = re.compile(r"(?<=[=:])\s*(-?\d+),(\d+)\b(?!\s*(?:,|and)\s*\d)")
+
+
+_REFERENCE_NO = re.compile(
+    r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell)\s*"
+    r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b",
+    re.IGNORECASE,
+)
+
+
+_METRE_WORDS = [
+    (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
+    (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
+    (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
+]
+
+
+_LIST_ITEM = re.compile(
+    r"(?:^|\n|(?<=[.;]))\s*\d+\)\s+(?=[A-Za-z])|(?:^|\n)\s*\d+\.\s+(?=[A-Za-z])"
+)
+
+
+_BULLET = re.compile(r"(?:^|\n)\s*[-*•]\s+(?=[A-Za-z0-9])")
+
+
+_ROBOT_NAME = re.compile(r"\b(?:the\s+)?(?:abb\s+)?irb\s*-?\s*(?:120|1600)\b", re.IGNORECASE)
+
+
+_PAIR_UNIT = re.compile(
+    r"\(\s*(-?\d+(?:\.\d+)?)\s*,\s*(-?\d+(?:\.\d+)?)\s*\)\s*(mm|cm|m)\b", re.IGNORECASE
+)
+
+
+_SLASH_XY = re.compile(
+    r"\b(\d+(?:\.\d+)?)\s*/\s*(\d+(?:\.\d+)?)\s*(mm|cm|m)\b(?:\s*\(\s*x\s*/\s*y\s*\))?",
+    re.IGNORECASE,
+)
+
+
+_COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps|levels|layers)"
+
+
+_HOMOPHONES = [
+    (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d))", re.I), "two "),
+    (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
+    (re.compile(r"\bfor\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "four "),
+    (re.compile(r"(?<=\bof\s)for\s*$", re.I), "four"),
+    (re.compile(r"\bate\s+(?=" + _COUNTED + r"\b)", re.I), "eight "),
+    (re.compile(r"(?<=\d)\s+bye\s+(?=\d)", re.I), " by "),
+    (re.compile(r"\b(?:el|ell)\s+(?=shape|shaped)", re.I), "L "),
+    (re.compile(r"\btee\s+(?=shape|shaped)", re.I), "T "),
+]
+
+
+_AXES_LABEL = re.compile(
+    r"\(\s*(?:length|width|height|depth|[lwdh])(?:\s*[x×*,/]\s*(?:length|width|height|depth|"
+    r"[lwdh]))+\s*\)|\b[lwdh]\s*[x×*]\s*[lwdh](?:\s*[x×*]\s*[lwdh])?\s*[=:]",
+    re.IGNORECASE,
+)
+
+
+_SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
+
+
+_SLASHES = re.compile(r"\b\d+(?:/\d+)+\b(?!\s*(?:mm|cm|m)\b)")
+
+
+# The largest number a command may carry; beyond it nothing SDI builds is meant.
+_LARGEST = 1e6
+
+
+def normalise(command: str, notes: list[str] | None = None) -> str:
+    """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
+    notes = notes if notes is not None else []
+    text = command
+    for a, b in _SYMBOLS.items():
+        text = text.replace(a, b)
+    text = text.replace("@", " at ")
+    text = re.sub(r"\bontop\b", "on top", text, flags=re.IGNORECASE)
+
+    # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
+    text = re.sub(
+        r"\(([^()]*[A-Za-z][^()]*)\)",
+        lambda m: " " + m.group(1).replace(",", " and ") + " ",
+        text,
+    )
+    for pattern, repl in _CONTRACTIONS:
+        text = pattern.sub(repl, text)
+    bad = _NOT_A_NUMBER.search(text)
+    if bad:
+        raise SpecError(
+            f"'{bad.group(0)}' is not a number SDI can use; give a finite value (e.g. 'x = 0.4')",
+            understood={},
+        )
+
+    def scientific(m: re.Match[str]) -> str:
+        value = float(m.group(0))
+        if abs(value) > _LARGEST:
+            raise SpecError(
+                f"{m.group(0)} is too large for any count or position in the cell; "
+                f"numbers above {_LARGEST:g} are refused",
+                understood={"numbers": [m.group(0)]},
+            )
+        plain = f"{value:.6f}".rstrip("0").rstrip(".")
+        notes.append(f"read {m.group(0)} as {plain}")
+        return plain
+
+    text = _SCIENTIFIC.sub(scientific, text)
+
+    def comma(m: re.Match[str]) -> str:
+        notes.append(f"read '{m.group(1)},{m.group(2)}' as {m.group(1)}.{m.group(2)}")
+        return f" {m.group(1)}.{m.group(2)}"
+
+    text = _DECIMAL_COMMA.sub(comma, text)
+
+    def reference(m: re.Match[str]) -> str:
+        notes.append(f"ignored '{m.group(0)}': a reference number, not a size")
+        return " "
+
+    text = _REFERENCE_NO.sub(reference, text)
+    for pattern, repl in _METRE_WORDS:
+        text = pattern.sub(repl, text)
+    for m in re.finditer(r"\d+(?:\.\d+)?", text):
+        if float(m.group(0)) > _LARGEST:
+            raise SpecError(
+                f"{m.group(0)} is too large for any count or position in the cell; "
+                f"numbers above {_LARGEST:g} are refused",
+                understood={"numbers": [m.group(0)]},
+            )
+    text = _LIST_ITEM.sub(" then ", text)  # "1) a tower\n2) another one …"
+    text = _BULLET.sub(" , ", text)  # "- tower / - 4 cubes / - left side": one thing's details
+    text = _ROBOT_NAME.sub(" the robot ", text)
+    text = _PAIR_UNIT.sub(lambda m: f"({m.group(1)} {m.group(3)}, {m.group(2)} {m.group(3)})", text)
+    text = _SLASH_XY.sub(
+        lambda m: f"x = {m.group(1)} {m.group(3)}, y = {m.group(2)} {m.group(3)}", text
+    )
+    for pattern, repl in _HOMOPHONES:
+        text = pattern.sub(repl, text)
+    text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
+    text = re.sub(
+        r"\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",
+        lambda m: (
+            f" {m.group(2)} {m.group(3) or ''} "
+            + {"L": "long", "H": "high", "W": "wide"}[m.group(1).upper()]
+            + " "
+        ),
+        text,
+        flags=re.IGNORECASE,
+    )
+
+    def plus(m: re.Match[str]) -> str:
+        total = int(m.group(1)) + int(m.group(2))
+        notes.append(f"read '{m.group(0)}' as {total}")
+        return str(total)
+
+    text = _SUM.sub(plus, text)
+    text = _SLASHES.sub(lambda m: ", ".join(m.group(0).split("/")[:-1]) + " and " +
+                        m.group(0).split("/")[-1], text)  # fmt: skip
+    text = _DIMS.sub(" x ", text)
+    return SPACES.sub(" ", text).strip()

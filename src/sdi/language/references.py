@@ -1,0 +1,182 @@
+"""References to structures named before: pronouns and definite nouns ("it", "them", "the
+base"), picks ("the first one", "the smaller tower"), copies ("another tower", "a second row")
+and later clauses that say more about an earlier structure ("the staircase has 3 steps")."""
+
+from __future__ import annotations
+
+import re
+
+from sdi.language.nouns import BASES, COPY_WORDS, GENERIC, LEAD_VERBS, PRONOUNS
+from sdi.language.state import Phrase, ReadState
+from sdi.spec import lexicon as lx
+from sdi.spec.structure_spec import SpecDraft, StructureDraft
+
+_SIZES = ("count", "length", "width", "height", "steps", "span", "spans", "dims",
+          "length_m", "width_m", "height_m", "gap_m", "part")  # fmt: skip
+
+
+def copies(
+    spec: SpecDraft, text: str, st: ReadState, earlier: list[StructureDraft] | None = None
+) -> SpecDraft:
+    """ "another tower", "a second row": the sizes of the one named before (in this phrase,
+    or the last of that family named earlier)."""
+    if not set(re.findall(r"[a-z]+", text.lower())) & COPY_WORDS:
+        return spec
+    out = list(spec.structures)
+    for k, s in enumerate(out):
+        if s.model_dump(include=set(_SIZES), exclude_defaults=True):
+            continue
+        pool = [*(earlier or []), *out[:k]]
+        first = next((o for o in reversed(pool) if o.shape == s.shape), None)
+        if k == 0 and first is None:
+            continue
+        if first is not None:
+            out[k] = s.model_copy(update=first.model_dump(include=set(_SIZES)))
+            st.notes.append(f"another {s.shape}: the same size as the first")
+    return spec.model_copy(update={"structures": tuple(out)})
+
+
+def definite(
+    p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
+) -> int | None:
+    """ "the staircase has 3 steps" after a staircase was named: the index of that one."""
+    m = re.match(r"^\W*(?:the|that|this)\s+(\w+)(?:\s+(\w+))?", p.text, re.IGNORECASE)
+    if not m or len(spec.structures) != 1:
+        return None
+    family = lx.SHAPE_WORDS.get(m.group(1).lower()) or lx.SHAPE_WORDS.get(
+        (m.group(2) or "").lower()
+    )
+    if family is None or family != spec.structures[0].shape:
+        return None
+    matches = [
+        i for q in before if q.count and q.spec is not None
+        for i in range(q.first, q.first + q.count) if structures[i].shape == family
+    ]  # fmt: skip
+    if len(matches) != 1:
+        return None
+    said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
+    known = structures[matches[0]].model_dump(exclude_defaults=True, exclude={"shape"})
+    words_ = set(re.findall(r"[a-z]+", p.text.lower()))
+    if any(known.get(k) not in (None, v) for k, v in said.items()) or words_ & (
+        set(lx.REGION_WORDS) | COPY_WORDS | {"other", "first", "second", "third", "last"}
+    ):
+        return None  # "then the right tower of 2": another tower
+    return matches[0]
+
+
+def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | None:
+    """ "Steps: 5. Shape: staircase.": a bare family name in a later clause names the one
+    structure described before, not a second one."""
+    if len(spec.structures) != 1 or spec.structures[0].model_dump(
+        include=set(_SIZES) - {"part"}, exclude_defaults=True
+    ):
+        return None
+    said = set(re.findall(r"[a-z]+", p.text.lower()))
+    if said & (COPY_WORDS | {"and", "also", "more", "two", "three", "other", "plus", "then"}):
+        return None
+    built = [q for q in before if q.spec is not None and q.count]
+    if not built or built[-1].clause == p.clause or built[-1].count != 1:
+        return None
+    prev = built[-1].spec
+    assert prev is not None
+    shape = spec.structures[0].shape
+    described = prev.structures[-1].model_dump(
+        include=set(_SIZES) - {"part"}, exclude_defaults=True
+    )
+    return shape if prev.structures[-1].shape == shape and described else None
+
+
+def refers_to(p: Phrase, before: list[Phrase]) -> int | None:
+    """A phrase that only points at an earlier one ("it", "them", "the base")."""
+    said = p.text.lower().replace(",", " ").split()
+    led = False
+    while said and said[0] in LEAD_VERBS:
+        said, led = said[1:], True  # "put the cube": the cube named before
+    rest = " ".join(said)
+    words_ = [w for w in said if w not in ("the", "of")]
+    if not words_ or len(words_) > 6:
+        return None
+    built = [j for j, q in enumerate(before) if q.spec is not None or q.ref is not None]
+    if not built:
+        return None
+    sides = [w for w in words_[1:] if w in ("left", "right", "front", "back")]
+    trailing = all(
+        w in lx.REGION_WORDS or w in ("on", "to", "at", "in", "its", "side", "hand", "of")
+        for w in words_[1:]
+    )
+    if words_[0] in PRONOUNS and (len(words_) <= 2 or trailing) and len(words_) <= 6 and not led:
+        p.side = sides[0] if sides else None
+        if words_[0] in ("them", "these", "those"):
+            many = [j for j in built if before[j].count > 1]
+            return resolve(before, many[-1] if many else built[-1])
+        return resolve(before, built[-1])
+    if (
+        len(words_) <= 2
+        and words_[-1] in GENERIC | BASES | set(lx.SHAPE_WORDS) | {"cube", "block", "brick"}
+        and rest.startswith(("the", "its"))
+    ):
+        noun = words_[-1]
+        if noun in ("base", "foundation", "bottom", "first", "platform", "plinth"):
+            return resolve(before, built[0])
+        if noun in ("cube", "block", "brick", "part"):
+            # "the cube": the structure of one part named before
+            for j in reversed(built):
+                spec = before[resolve(before, j)].spec
+                if spec is not None and any(
+                    (s.shape == "tower" and s.height == 1) or (s.shape == "row" and s.length == 1)
+                    for s in spec.structures
+                ):
+                    return resolve(before, j)
+            return None
+        family = lx.SHAPE_WORDS.get(noun)
+        for j in reversed(built):
+            spec = before[resolve(before, j)].spec
+            if spec is not None and any(s.shape == family for s in spec.structures):
+                return resolve(before, j)
+        if family is None:
+            return resolve(before, built[-1])  # "the structure", "the other one"
+        return None  # "the tower" named for the first time: a structure of its own
+    return None
+
+
+_PICK = re.compile(
+    r"^(?:\w+\s+)?the\s+(first|second|third|fourth|last|smaller|smallest|larger|largest|bigger|"
+    r"biggest|taller|tallest|shorter|shortest|lower|higher)(?:\s+(?:one|"
+    + "|".join(sorted(w for w in lx.SHAPE_WORDS if w.isalpha()))
+    + r"))?$",
+    re.IGNORECASE,
+)
+
+
+def pick_structure(text: str, structures: list[StructureDraft], among: list[int]) -> int | None:
+    """ "the first one", "the smaller one", "the taller tower": one of the structures named
+    in earlier clauses (`among`; all so far when empty)."""
+    m = _PICK.match(text.strip())
+    if not m or not structures:
+        return None
+    among = among or list(range(len(structures)))
+    word = m.group(1).lower()
+    order = {"first": 0, "second": 1, "third": 2, "fourth": 3}
+    if word in order:
+        return among[order[word]] if order[word] < len(among) else None
+    if word == "last":
+        return among[-1]
+
+    def size(s: StructureDraft) -> float:
+        tall = s.height or s.steps or (s.height_m or 0) / 0.05 or 1
+        wide = (s.length or 1) * (s.width or 1)
+        return float(tall if word in ("taller", "tallest", "shorter", "shortest", "lower",
+                                      "higher") else tall * wide)  # fmt: skip
+
+    sizes = [size(structures[i]) for i in among]
+    big = word in ("larger", "largest", "bigger", "biggest", "taller", "tallest", "higher")
+    target = max(sizes) if big else min(sizes)
+    if sizes.count(target) != 1:
+        return None
+    return among[sizes.index(target)]
+
+
+def resolve(phrases: list[Phrase], j: int) -> int:
+    while phrases[j].ref is not None:
+        j = phrases[j].ref  # type: ignore[assignment]
+    return j

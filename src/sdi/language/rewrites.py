@@ -1,0 +1,864 @@
+"""Stage 2: the rewrite table. Negations, hedges and idioms with one clear reading become the
+words the grammar reads ("not too tall" → medium, "not on the left" → on the right, "don't
+stack them" → side by side), each with a note when it changes the meaning.
+
+Each entry of `REWRITES` is ``(pattern, replacement, note)``: the replacement is a format
+string over the match's groups (``{opposite}`` names the opposite side), or the key of a
+computed handler in `sdi.language.handlers`."""
+
+from __future__ import annotations
+
+import re
+
+from sdi.language.handlers import HANDLERS
+from sdi.language.normalise import SPACES
+from sdi.language.state import ReadState
+from sdi.spec import lexicon as lx
+
+_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front",
+             "middle": "left", "centre": "left", "center": "left"}  # fmt: skip
+
+
+_LEVEL_ORDINAL = re.compile(
+    r"\b(?:as|for|on|to form)\s+(?:the|a)\s+(?:second|third|fourth|fifth|next|top|final|last|"
+    r"upper|new)\s+(?:level|layer|tier|storey|story|floor|row)\b",
+    re.IGNORECASE,
+)
+
+
+# Negations and hedges with one clear reading: (pattern, replacement, note).
+_REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+|and\s+)?(?:(?:that|which)\s+is\s+|that's\s+)?not\s+"
+            r"(?:too|very|so|overly|that|excessively|all\s+that)\s+"
+            r"(?:tall|high|big|large|long|wide|huge|massive)\b",
+            re.IGNORECASE,
+        ),
+        " medium ",
+        "read '{0}' as a medium size",
+    ),
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+|and\s+)?not\s+(?:too|very|so)\s+"
+            r"(?:small|short|low|tiny|little)\b",
+            re.IGNORECASE,
+        ),
+        " medium ",
+        "read '{0}' as a medium size",
+    ),
+    (
+        re.compile(
+            r"\b(?:(?:that|which)\s+(?:is|are)\s+|that's\s+|but\s+|and\s+|is\s+)?not\s+"
+            r"(?:on|in|at|to)\s+the\s+(left|right|front|back|middle|centre|center)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+|and\s+)?(?:please\s+)?(?:do\s+not|don't|dont|never|no\s+need\s+"
+            r"to)\s+(?:stack|pile|put\s+\w+\s+on\s+top)\b(?:\s+(?:them|it|the\s+cubes|anything))?"
+            r"(?:\s+(?:up|on\s+top(?:\s+of\s+each\s+other)?))?",
+            re.IGNORECASE,
+        ),
+        "{no_stack}",
+        "'{0}': laid side by side, not stacked",
+    ),
+    (
+        re.compile(r"(?:,\s*)?\b(?:with\s+)?no\s+stacking\b", re.IGNORECASE),
+        "{no_stack}",
+        "'{0}': laid side by side, not stacked",
+    ),
+    (
+        re.compile(
+            r"\bwith\s+(?:a|one|an)\s+(bridge|beam|lintel|plank|slab|arch|girder)\s+"
+            r"(?:between\s+them|across(?:\s+the\s+top|\s+them)?|on\s+top|connecting\s+them|"
+            r"joining\s+them|linking\s+them|spanning\s+them)\b",
+            re.IGNORECASE,
+        ),
+        " joined by a {0} ",
+        "",
+    ),
+]
+
+
+_REWRITES += [
+    (
+        re.compile(
+            r"\b(?:whose|with\s+(?:a|the|its))\s+(?:bottom|base|lowest|first|ground)\s+"
+            r"(?:row|layer|level|tier|course)\s+(?:has|having|of|with|is|containing|holds|"
+            r"holding|made\s+of)?\s*(\d+|[a-z]+)",
+            re.IGNORECASE,
+        ),
+        " with a base of {0} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(?:with\s+)?one\s+(?:leg|arm|side|wing|branch)\s+(\d+|[a-z]+)(?:\s+\w+)?\s+"
+            r"long\s*,?\s+and\s+the\s+other(?:\s+(?:leg|arm|side|wing|one|branch))?\s+"
+            r"(\d+|[a-z]+)(?:\s+\w+)?\s+long\b",
+            re.IGNORECASE,
+        ),
+        " {0} long and {1} wide ",
+        "",
+    ),
+    (re.compile(r"\bside\s+by\s+side\b", re.IGNORECASE), " ", ""),
+]
+
+
+_SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
+
+
+_REWRITES += [
+    # "anywhere except the back", "anywhere but on the left", "avoid the left side"
+    (
+        re.compile(
+            r"\b(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|away\s+from|"
+            r"avoid(?:ing)?)\s+(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|middle|centre|"
+            r"center)(?:\s+side)?(?:\s+(?:or|and|nor)\s+(?:on\s+|in\s+|at\s+)?the\s+"
+            r"(left|right|front|back)(?:\s+side)?)?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} {opposite2} ",
+        "read '{0}' as on the {opposite} {opposite2}",
+    ),
+    (
+        re.compile(
+            r"(?:^|(?<=[.;,:]))\s*(?:no|not\s+an?)\s+(?:"
+            + _SHAPE_ALT
+            + r")s?\s+(?:this\s+time|today|"
+            r"now|please)\s*[,:;.-]*\s*(?:just|only|but|instead)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    (
+        re.compile(
+            r",?\s*\bnot\s+a\s+(?:square|round|big|small|tall|short|flat)\s+one\s*[:,;-]?", re.I
+        ),
+        " , ",
+        "'{0}': as the sizes say",
+    ),
+    (
+        re.compile(r",?\s*-?\s*\b(?:cubes|blocks)\s+only\b|\bonly\s+cubes\b", re.I),
+        "{no_beams}",
+        "'{0}': built of cubes only",
+    ),
+    (
+        re.compile(
+            r"\b(one|a)\s+(\w+)(\s+of\s+\d+)?\s+on\s+each\s+side(?:\s*,?\s*(?:the\s+)?left\s+and\s+"
+            r"(?:the\s+)?right)?\b",
+            re.IGNORECASE,
+        ),
+        " {0} {1}{2} on the left and another {1}{2} on the right ",
+        "",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:climbing|rising|ascending|going\s+up|stepping\s+up)\s+(?:to(?:wards)?|toward|"
+            r"to\s+the)\s+(?:the\s+)?(left|right|front|back)\b",
+            re.IGNORECASE,
+        ),
+        "{climb}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(?:does|do)\s+not\s+(?:go|rise|reach|get)\s+(?:any\s+)?(?:taller|higher)\s+than\s+"
+            r"(\d+|[a-z]+)(\s+(?:cubes?|parts?|blocks?|levels?|layers?|cm|mm|m))?",
+            re.IGNORECASE,
+        ),
+        " {0}{1} high ",
+        "read '{0}' as exactly that (the most allowed)",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:cubes?\s+)?(?:wide|across|long)\s+at\s+the\s+(?:bottom|base)\b",
+            re.IGNORECASE,
+        ),
+        " with a base of {0} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(?:a|one)\s+(?:single|lone|solitary)\s+(?:cube|block|brick)\b"
+            r"(?!\s*(?:-|tower|stack|column|wall|row|high|tall))",
+            re.IGNORECASE,
+        ),
+        " a 1-cube tower ",
+        "",
+    ),
+    (
+        re.compile(r"\bnot\s+(?:one|a\s+single)\s+but\s+(two|three|four|five|\d+)\b", re.I),
+        " {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\bon\s+(?:its|the)\s+(?:centre|center|middle|top)\b(?!\s+of)", re.I),
+        " on top ",
+        "",
+    ),
+    # "no taller than 2 cubes" → 2 cubes high; "no more than 3 steps" → 3 steps
+    (
+        re.compile(
+            r"\b(?:no|not)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
+            r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
+            re.IGNORECASE,
+        ),
+        " {0}{1} high ",
+        "read '{0}' as exactly that many (the most allowed)",
+    ),
+    (
+        re.compile(r"\b(?:no|not)\s+(?:more|longer|wider|bigger)\s+than\s+|\bat\s+most\s+", re.I),
+        " ",
+        "read '{0}' as exactly that many (the most allowed)",
+    ),
+    # "a tower of 4, not 5": the number that is not wanted
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+(\d+)\b(?!\s*(?:cm|mm|m\b|high|tall|long|wide))", re.I
+        ),
+        " ",
+        "'{0}': kept the other number",
+    ),
+    # "no beams, only cubes": cubes are the default part
+    (
+        re.compile(
+            r",?\s*\b(?:no|without)\s+beams?\b,?(?:\s*(?:just|only)\s+cubes)?|"
+            r",?\s*\b(?:just|only)\s+cubes\b",
+            re.IGNORECASE,
+        ),
+        "{no_beams}",
+        "'{0}': built of cubes only",
+    ),
+    # "a 3x3 grid without the middle cube": a ring
+    (
+        re.compile(
+            r"\b(grid|square|layer|slab|pad|patch|platform)\s+(?:of\s+cubes\s+)?without\s+"
+            r"(?:the\s+|a\s+)?(?:middle|centre|center|inner|central)(?:\s+(?:cube|one|part|piece))?",
+            re.IGNORECASE,
+        ),
+        " hollow {0} ",
+        "read '{0}' as a hollow ring",
+    ),
+    # "an enclosure with no roof and nothing inside": what an enclosure is anyway
+    (
+        re.compile(
+            r"\b(?:with\s+)?(?:no|without\s+a|without)\s+roof\b|\b(?:and\s+)?nothing\s+(?:else\s+)?"
+            r"inside\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': as an enclosure is",
+    ),
+    # "a castle without the corner towers": a ring
+    (
+        re.compile(
+            r"\bcastle\s+without\s+(?:the\s+|any\s+)?(?:corner\s+)?towers\b(?:,?\s*just\s+the\s+"
+            r"walls?(?:\s+around)?)?",
+            re.IGNORECASE,
+        ),
+        " enclosure ",
+        "read '{0}' as an enclosure (a castle is a ring with corner towers)",
+    ),
+    # "not a 3-D one, just flat" for pyramids
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+(?:a\s+)?3-?d(?:\s+one)?,?(?:\s+just)?(?:\s+flat)?", re.I
+        ),
+        " 2-D ",
+        "read '{0}' as a flat (2-D) one",
+    ),
+    # "not a tower: a flat 2 by 2 patch", "no bridge, just two pillars"
+    (
+        re.compile(
+            r"(?:^|(?<=[.;,:]))\s*(?:no|not\s+an?|not|without\s+an?)\s+(?:" + _SHAPE_ALT + r")\b"
+            r"\s*[,:;.-]+\s*(?:just|only|but|instead)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    # "as tall as the cell allows" → the tallest
+    (
+        re.compile(
+            r"\bas\s+(tall|high)\s+as\s+(?:the\s+(?:cell|workspace|space|robot|room)\s+"
+            r"(?:allows|permits|can\s+\w+)|possible|it\s+can\s+(?:go|get|be)|you\s+can(?:\s+\w+)?|"
+            r"allowed)",
+            re.IGNORECASE,
+        ),
+        " tallest ",
+        "read '{0}' as the tallest that fits",
+    ),
+    # "3 stacks: one of 1, one of 2 and one of 3 cubes" → of 1, 2 and 3 cubes
+    (
+        re.compile(
+            r"[:,]?\s*\bone\s+of\s+(\w+)(?:\s+(?:cubes?|parts?|blocks?))?\s*(?:,|and)\s*(?:the\s+other\s+|one\s+)of"
+            r"\s+(\w+)(?:\s+(?:cubes?|parts?|blocks?))?"
+            r"(?:\s*(?:,|and)\s*(?:one\s+of\s+)?(\w+)(?:\s+(?:cubes?|parts?|blocks?))?)?",
+            re.IGNORECASE,
+        ),
+        " of {0}, {1} and {2} ",
+        "",
+    ),
+    # "stack a row of four on top": the verb names no tower when a structure follows
+    (
+        re.compile(
+            r"\b(?:stack|pile)\s+(?=(?:a|an|the|another|one|\d+|two|three|four)\s+(?:[\w-]+\s+){0,3}"
+            r"(?:row|rows|grid|wall|layer|slab|pyramid|staircase|bridge|arch|ring|enclosure|pad|"
+            r"square|platform)\b)",
+            re.IGNORECASE,
+        ),
+        "put ",
+        "",
+    ),
+    (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),
+    (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
+    (re.compile(r"\bnothing\s+(?:fancy|else|special|more)\b", re.IGNORECASE), " ", ""),
+    (
+        re.compile(
+            r"(?:\bStep\s+(?:\d+|one|two|three|four|five|six)\s*[:.)-]|(?:^|(?<=[.;]))\s*"
+            r"(?:one|two|three|four|five|six|first|second|third|fourth|fifth|last|finally)\s*[:,]"
+            r"(?=\s*(?:a|an|the|\d|one|put|add|place|lay|build|stack|make|then)\b))",
+            re.IGNORECASE,
+        ),
+        " then ",
+        "",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s+|and\s+|then\s+build\s+)?(?:each|every)\s+(?:level|layer|row|tier)\s+"
+            r"(?:exactly\s+)?(?:like|the\s+same\s+as|identical\s+to|matching)\s+the\s+one\s+"
+            r"(?:below|under(?:neath)?|beneath)(?:\s+it)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': every level the same",
+    ),
+]
+
+
+_REWRITES += [
+    (
+        re.compile(
+            r"\b(?:but\s+|and\s+)?(?:do\s+not|never)\s+(?:put|place|build|set)\s+(?:it|them)\s+"
+            r"(?:on|in|at|to)\s+the\s+(left|right|front|back|middle|centre|center)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (
+        re.compile(
+            r"\b(?:(?:and\s+)?keep\s+(?:it|them)\s+)away\s+from\s+the\s+"
+            r"(left|right|front|back)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (
+        re.compile(
+            r"\bneither\s+(?:on|in|at)\s+the\s+(?:left|right|front|back)\s+nor\s+(?:on|in|at)\s+"
+            r"the\s+(?:left|right|front|back)\b",
+            re.IGNORECASE,
+        ),
+        " in the centre ",
+        "read '{0}' as in the centre",
+    ),
+    (
+        re.compile(
+            r"\b(?:never|not\s+ever)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
+            r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
+            re.IGNORECASE,
+        ),
+        " {0}{1} high ",
+        "read '{0}' as exactly that many (the most allowed)",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:and\s+)?(?:no|not)\s+(?:fewer|less)\s+than\s+\w+|,?\s*\bat\s+least\s+\w+\s+and\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': the larger number is within the range",
+    ),
+    (
+        re.compile(r",?\s*\b(?:or\s+)?(?:maybe|perhaps|possibly)\s+(\d+|[a-z]+)\b", re.IGNORECASE),
+        " ",
+        "'{0}': used the first number",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+(one|two|three|four|five|six|seven|eight|nine|ten)\b"
+            r"(?!\s*(?:cm|mm|high|tall|long|wide|cubes?\s+(?:high|tall|long|wide)))",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': kept the other number",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s+)?(?:no|without)\s+(?:any\s+)?(?:windows|gaps|holes|openings)"
+            r"(?:\s+(?:or|and)\s+(?:windows|gaps|holes|openings))*\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': solid, as built",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s*out|with\s+no|and\s+no|no)\s+(?:a\s+|any\s+)?(?:beam|bridge|lintel|"
+            r"connection|link)s?\s+(?:between|across|joining|connecting)\s+them\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': left separate",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:with\s*out|with\s+no|and\s+no|no)\s+(?:using\s+)?(?:a\s+|any\s+)?(?:beam|lintel|"
+            r"plank)s?"
+            r"(?:\s*,?\s*(?:just|only)\s+cubes)?\b",
+            re.IGNORECASE,
+        ),
+        "{no_beams}",
+        "'{0}': built of cubes only",
+    ),
+    (
+        re.compile(
+            r"\b(?:i\s+)?(?:do\s+not|dont)\s+want\s+(?:a|an|the|any)?\s*(?:"
+            + _SHAPE_ALT
+            + r")\b\s*[,;:.]*\s*(?:(?:i\s+)?(?:want|need|would\s+like)\s+)?"
+            r"(?:just\s+|only\s+|but\s+)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    (
+        re.compile(r"\bnot\s+too\s+many\s+(steps|levels|layers|cubes|stairs)\b", re.IGNORECASE),
+        " 3 {0} ",
+        "read '{0}' as a few (3)",
+    ),
+    (
+        re.compile(r"\b(pyramid|ziggurat)(\s+that\s+is|\s*,)?\s+not\s+flat\b", re.IGNORECASE),
+        " 3-D {0} ",
+        "read '{0}' as a 3-D pyramid",
+    ),
+    # dimensions
+    (
+        re.compile(
+            r"\b(?:each|both|every)\s+(?:arm|leg|side|wing|branch)s?\s+(?:is\s+|are\s+)?(\d+|[a-z]+)"
+            r"(?:\s+(?:cubes?|parts?|blocks?))?(?:\s+long)?",
+            re.IGNORECASE,
+        ),
+        " {0} long and {0} wide ",
+        "",
+    ),
+    (
+        re.compile(r"\b(\d+|[a-z]+)\s+(?:down|along|up)\s+the\s+(stem|leg|arm|base|bar)\b", re.I),
+        " {0} {1} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:columns|cols)\s+(?:by|x|and)\s+(\d+|[a-z]+)\s+rows\b", re.I
+        ),
+        " {0} by {1} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(\d+|[a-z]+)\s+rows\s+(?:by|x)\s+(\d+|[a-z]+)\s+(?:columns|cols)\b", re.I),
+        " {0} by {1} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"(?:^|(?<=[,.;:(]))\s*(wide|deep|high|tall|long)\s*[:=]?\s*(\d+)"
+            r"(?:\s+(?:cubes?|parts?|blocks?))?\b",
+            re.I,
+        ),
+        " {1} {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(?:held\s+up|supported|carried|borne|propped\s+up)\s+by\b", re.IGNORECASE),
+        " with ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\bin\s+(?:its\s+(?:courtyard|inside|interior|middle|centre|center)|the\s+"
+            r"(?:courtyard|interior))\b(?!\s+of)",
+            re.I,
+        ),
+        " inside ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(beside|next\s+to)\s+((?:a|an|the)\s+[\w\s-]{1,40}?)\s*,\s*on\s+(?:the\s+\w+'s|its)\s+"
+            r"(left|right|front|back)(?:\s+side)?\b",
+            re.IGNORECASE,
+        ),
+        " to the {2} of {1} ",
+        "",
+    ),
+]
+
+
+_REWRITES += [
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\s+(?:as|in|into|making|to\s+make)\s+"
+            r"(two|three|four|five|six|\d+)\s+(?:equal\s+|identical\s+|even\s+)?"
+            r"(towers|stacks|columns|piles|rows|walls)"
+            r"(?:\s+of\s+(?:equal|the\s+same)\s+(?:height|size|length))?",
+            re.IGNORECASE,
+        ),
+        "{split}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(double|triple|quadruple)[- ](?:height|decker|deck|layer|level|tier|storey)\b", re.I
+        ),
+        "{layers}",
+        "read '{0}' as that many layers",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five)[- ](?:pillar|post|column|leg|pier)s?\s+(bridge|gate)\b",
+            re.I,
+        ),
+        " {1} with {0} pillars ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(?:anywhere\s+)?(?:except|but|other\s+than|apart\s+from|away\s+from)\s+"
+            r"(?:near|close\s+to|next\s+to)\s+(?:the\s+)?robot\b",
+            re.IGNORECASE,
+        ),
+        " at the back ",
+        "read '{0}' as at the back (far from the robot)",
+    ),
+]
+
+
+_REWRITES += [
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+single\s+(?=cubes|blocks)",
+            re.IGNORECASE,
+        ),
+        " {0} separate ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:cubes|parts|blocks)\s+in\s+(two|three|four|five|\d+)\s+rows\b",
+            re.IGNORECASE,
+        ),
+        "{rows}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\bright\s+(?=(?:up|next|behind|in\s+front|in\s+the\s+(?:centre|center|middle)|beside|"
+            r"against|at\s+the|by\s+the|over|"
+            r"above|below|under|there|here|away|now)\b)",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(centred|centered)\s+(?:from\s+)?(?:left\s+to\s+right|side\s+to\s+side)", re.I
+        ),
+        " {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\bwith\s+(?:a|an)\s+(\d+\s*x\s*\d+|\d+)\s+(?:bottom|footprint|foot)\b", re.I),
+        " with a {0} base ",
+        "",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?(?:not\s+touching(?:\s+each\s+other)?|spaced\s+out|spread\s+out|"
+            r"with\s+gaps?\s+between\s+them)\b",
+            re.IGNORECASE,
+        ),
+        " spaced 5 cm apart ",
+        "read '{0}' as a part's width apart",
+    ),
+    (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
+    (re.compile(r",?\s*\ball\s+touching(?:\s+each\s+other)?\b", re.IGNORECASE), " ", ""),
+    (
+        re.compile(
+            r"\b(?:do\s+not|never)\s+(?:build|put|place)\s+anything\s+(?:at|on|in)\s+the\s+"
+            r"(?:left|right|front|back)(?:\s+side)?\b\s*[;,.]?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': nothing is built there",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:and\s+)?(?:no|not)\s+(?:shorter|lower|smaller)\s+than\s+\w+(?:\s+cubes?)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': the larger number is within the range",
+    ),
+    (
+        re.compile(r",?\s*\bneither\s+(?:one\s+)?touching\s+the\s+other\b", re.IGNORECASE),
+        " spaced 5 cm apart ",
+        "read '{0}' as a part's width apart",
+    ),
+    (
+        re.compile(
+            r"\b(square|rectangle|ring|grid)\b(\s+of\s+cubes)?\s*,?\s*hollow\b", re.IGNORECASE
+        ),
+        " hollow {0}{1} ",
+        "",
+    ),
+    (re.compile(r",?\s*\bnot\s+filled(?:\s+in)?\b", re.IGNORECASE), " ", ""),
+    (re.compile(r"\b(?:underneath|beneath|below)\s*(?=[,;.]|$)", re.IGNORECASE), " ", ""),
+    (
+        re.compile(
+            r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at)\s+(?:top\s+of\s+)?(?:each|both|"
+            r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:end|ends|side|sides|corner|corners)"
+            r"(?:\s+of\s+(?:it|them|the\s+\w+))?",
+            re.IGNORECASE,
+        ),
+        "{placement}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|one|two|three|four|five)\s+(more|less|fewer)\s+(?:cubes?\s+|parts?\s+)?than\s+"
+            r"(\d+|[a-z]+)\b",
+            re.IGNORECASE,
+        ),
+        "{arith}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five)\s+more\s+(?:just\s+)?(?:like|of)\s+(?:it|them|that|those)\b",
+            re.IGNORECASE,
+        ),
+        "{more_like}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\bnear\s+(?:to\s+)?the\s+(back|front|left|right)(?:\s+(?:edge|side|end|wall))?\b",
+            re.I,
+        ),
+        " at the {0} ",
+        "",
+    ),
+    (re.compile(r",?\s*\bnear\s+the\s+edge\b", re.IGNORECASE), " ", ""),
+    (
+        re.compile(
+            r"\balong\s+the\s+(left|right)\s+(?:edge|side|boundary|border)\b", re.IGNORECASE
+        ),
+        " along x on the {0} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\balong\s+the\s+(front|back)\s+(?:edge|side|boundary|border)\b", re.IGNORECASE
+        ),
+        " along y at the {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(towers|rows|walls|stacks|columns|pyramids|pads)\s*[:=]\s*(\w+)\b", re.I),
+        " {1} {0} ",
+        "",
+    ),
+    (re.compile(r"\bheight\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} high ", ""),
+    (
+        re.compile(
+            r",?\s*\b(?:none\s+of\s+(?:them|the\s+\w+)|no\s+\w+|not|never)\s+(?:any\s+)?(?:wider|broader)\s+"
+            r"than\s+(\w+)\s+(?:cubes?|parts?)\b",
+            re.IGNORECASE,
+        ),
+        " {0} wide ",
+        "read '{0}' as exactly that (the most allowed)",
+    ),
+    (re.compile(r"\b(?:length|long)\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} long ", ""),
+    (re.compile(r"\bwidth\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} wide ", ""),
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five)\s+rows\s+(?:with|of)\s+(\d+|[a-z]+)\s+(?:cubes?\s+)?"
+            r"(?:in\s+each|each|apiece)\b",
+            re.IGNORECASE,
+        ),
+        "{rows_of}",
+        "",
+    ),
+    (
+        re.compile(r"\bon\s+top\s+off\b", re.IGNORECASE),
+        " on top of ",
+        "corrected 'top off' to 'top of'",
+    ),
+    (
+        re.compile(
+            r"\b(?:that\s+|which\s+)?(?:do|does)\s+not\s+touch(?:\s+each\s+other)?\b", re.IGNORECASE
+        ),
+        " spaced 5 cm apart ",
+        "read '{0}' as a part's width apart",
+    ),
+    (
+        re.compile(
+            r"\b(?:but\s+)?(?:do\s+not|never)\s+(?:put|place|build|set)\s+(?:it|them)\s+(?:near|close\s+to|"
+            r"next\s+to)\s+(?:the\s+)?robot\b",
+            re.IGNORECASE,
+        ),
+        " at the back ",
+        "read '{0}' as at the back (far from the robot)",
+    ),
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+)?not\s+an?\s+(?:l|u|t|"
+            + _SHAPE_ALT
+            + r")(?:[- ]shape[d]?)?\s*(?=$|[,.;:!])",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    (
+        re.compile(r"\b(?:actually|sorry|oops|wait)\s*,?\s*(?:no\s*,?)?", re.IGNORECASE),
+        " then ",
+        "",
+    ),
+    (
+        re.compile(r",?\s*\bnothing\s+(?:big|large|huge|tall|fancy|special)\b", re.IGNORECASE),
+        " ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(twice|double|three\s+times|thrice|half)\s+as\s+(tall|high|long|wide)\s+as\s+(?:a\s+)?"
+            r"(\d+|[a-z]+)(?:[- ](?:cubes?|parts?|blocks?)(?:[- ](?:tower|stack|column|one))?)?\b",
+            re.IGNORECASE,
+        ),
+        "{times}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(?:cubes?|parts?)\s+(?:per|in\s+each|each|a)\s+(?:course|level|layer|row|tier)\b",
+            re.IGNORECASE,
+        ),
+        " {0} long ",
+        "",
+    ),
+    (
+        re.compile(r"(?<!by\s)\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+square\b", re.IGNORECASE),
+        " {0} by {0} ",
+        "",
+    ),
+    (
+        re.compile(r"\b(steps|levels|layers|storeys|floors|tiers|spans)\s*[:=]\s*(\d+)\b", re.I),
+        " {1} {0} ",
+        "",
+    ),
+    (re.compile(r"\b(?:shape|structure|type|kind)\s*[:=]\s*", re.IGNORECASE), " a ", ""),
+]
+
+
+_OPEN = re.compile(
+    r"\b(?:(tall|high|big|large)\s+)?(structure|thing|something|shape|construction|object|"
+    r"build|sculpture|monument)\s+(?:that\s+is\s+\w+\s+)?with\s+a\s+(wide|broad|big|large|"
+    r"wider|broader|heavy|solid)\s+(base|bottom|foot|footing|foundation)\b",
+    re.IGNORECASE,
+)
+
+
+_ANOTHER = re.compile(
+    r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+(?:identical\s+|similar\s+|"
+    r"matching\s+)?one\b|a\s+(?:third|fourth|fifth)\b"
+    r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)one(?=\s+(?:on|at|in|to)\s+the\b)|"
+    r"(?<=\band\s)one(?=\s+(?:on|at|in|to)\s+the\b))",
+    re.IGNORECASE,
+)
+
+
+_LEGS = re.compile(r"\blegs?\b", re.IGNORECASE)
+
+
+_TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
+
+
+def _another(text: str) -> str:
+    """ "a tower on the left and another one on the right": another tower."""
+
+    def sub(m: re.Match[str]) -> str:
+        before = [
+            w
+            for w in re.findall(r"[a-z]+", text[: m.start()].lower())
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES
+        ]
+        if not before:
+            return m.group(0)
+        noun = before[-1]
+        noun = noun[:-1] if noun.endswith("s") and noun[:-1] in lx.SHAPE_WORDS else noun
+        return f"another {noun}"
+
+    return _ANOTHER.sub(sub, text)
+
+
+def rewrite(text: str, st: ReadState) -> str:
+    text = _another(text)
+    if (
+        _LEGS.search(text)
+        and _TOP.search(text)
+        and not any(
+            lx.SHAPE_WORDS.get(w) in ("canopy", "bridge", "arch")
+            for w in re.findall(r"[a-z]+", text.lower())
+        )
+    ):
+        st.notes.append("legs with a top: read as a table")
+        text = "a table with " + text
+    for pattern, replacement, note in _REWRITES:
+
+        def sub(m: re.Match[str], replacement: str = replacement, note: str = note) -> str:
+            handler = HANDLERS.get(replacement)
+            if handler is not None:
+                return handler(m, st, note)
+            said = m.group(0).strip(" ,")
+            groups = [g.lower() if g else "" for g in m.groups()]
+            opposite = _OPPOSITE.get(groups[0], "") if groups else ""
+            opposite2 = _OPPOSITE.get(groups[1], "") if len(groups) > 1 else ""
+            if opposite2 and opposite2 in ("left", "right") and opposite in ("front", "back"):
+                opposite, opposite2 = opposite2, opposite
+            if note:
+                st.notes.append(
+                    SPACES.sub(" ", note.format(said, opposite=opposite, opposite2=opposite2))
+                )
+            return replacement.format(*groups, "", "", opposite=opposite, opposite2=opposite2)
+
+        text = pattern.sub(sub, text)
+    text = _LEVEL_ORDINAL.sub(" on top ", text)
+    m = _OPEN.search(text)
+    if m and not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", text.lower())
+                     if w not in ("base", "bottom") and w not in lx.AMBIGUOUS_SHAPES):  # fmt: skip
+        size = "big " if m.group(1) else ""
+        st.notes.append(
+            f"read '{m.group(0)}' as a {size}3-D pyramid (wide at the base, rising to a point)"
+        )
+        text = text[: m.start()] + f"{size}3-D pyramid" + text[m.end() :]
+    return SPACES.sub(" ", text)

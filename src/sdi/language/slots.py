@@ -1,0 +1,183 @@
+"""Stage 6: slot filling. Each noun phrase is read by the phrase grammar (`sdi.spec.grammar`)
+into structures with their slots filled; references, modifications and continuations are
+resolved on the way, and the words the grammar did not use go to the account."""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+from sdi.errors import SpecError
+from sdi.language import words
+from sdi.language.accounting import account, is_chatter
+from sdi.language.modify import MODIFY, REMOVAL, continues, modify
+from sdi.language.nouns import BEAMS, beam_only
+from sdi.language.references import copies, definite, pick_structure, refers_to, same_as_before
+from sdi.language.state import Phrase, PhraseRelation, ReadState
+from sdi.spec import lexicon as lx
+from sdi.spec.grammar import parse_phrase
+from sdi.spec.structure_spec import SpecDraft, StructureDraft
+
+if TYPE_CHECKING:
+    from spacy.tokens import Doc
+
+
+_COUNT_ONLY = re.compile(
+    r"^\W*(?:\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)(?:\s+(?:tall|high|long))?\W*$", re.I
+)
+
+
+def fill_slots(
+    phrases: list[Phrase], rels: list[PhraseRelation], st: ReadState, doc: Doc
+) -> list[StructureDraft]:
+    structures: list[StructureDraft] = []
+    pending: list[str] = []
+    joiners = {r.object for r in rels if r.kind == "joined"} | {
+        r.subject for r in rels if r.kind == "on" and beam_only(phrases[r.subject].text)
+    }
+    for k, p in enumerate(phrases):
+        content = [
+            w
+            for w in re.findall(r"[a-z0-9.]+", p.text.lower())
+            if w not in words.HARMLESS or w in lx.SHAPE_WORDS
+        ]
+        earlier = [
+            i
+            for q in phrases[:k]
+            if q.clause < p.clause and q.count
+            for i in range(q.first, q.first + q.count)
+        ]
+        pick = pick_structure(p.text, structures, earlier)
+        if pick is not None and structures:
+            p.structure = pick
+            p.ref = next(
+                (
+                    j
+                    for j, q in enumerate(phrases[:k])
+                    if q.count and q.first <= pick < q.first + q.count
+                ),
+                None,
+            )
+            if p.ref is not None:
+                continue
+            p.structure = None
+        ref = refers_to(p, phrases[:k])
+        if ref is not None:
+            p.ref = ref
+            continue
+        if not content:
+            continue
+        if k in joiners and all(w in BEAMS or w in lx.PART_WORDS or w == "top" for w in content):
+            continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
+        if modify(p, phrases[:k], structures, st):
+            continue
+        if _COUNT_ONLY.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
+            grown = continues(p, phrases[:k], st.cell)  # "make a tower? 4 cubes?"
+            if grown is not None:
+                before_count, prev = grown
+                assert prev.spec is not None
+                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
+                continue
+        if REMOVAL.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
+            # "then pull out the middle cube", "push them together": a change SDI cannot
+            # make to a structure it built; never a new structure read from those words
+            st.material.append(p.text)
+            st.notes.append(
+                f"ignored '{p.text}': SDI builds structures whole and cannot take parts out, "
+                "move or merge them afterwards; describe the result instead"
+            )
+            continue
+        change = next((m for pattern, _ in MODIFY if (m := pattern.search(p.text))), None)
+        tail: Phrase | None = None
+        if change is not None and change.start() > 0:
+            # "begin with a 2-step staircase and keep adding steps until it has 4"
+            tail = Phrase(tokens=[], clause=p.clause, text=p.text[change.start() :])
+            p.text = re.sub(r"(?:,|\band\b|\bthen\b|\s)+$", "", p.text[: change.start()])
+        if pending and not [q for q in phrases[:k] if q.spec is not None]:
+            p.text = " , ".join([*pending, p.text])  # "High: 3. Long: 5. Wall."
+            pending.clear()
+        try:
+            spec, unused = _parse_or_base(p, st)
+            spec = copies(spec, p.text, st, structures)
+        except SpecError:
+            grown = continues(p, phrases[:k], st.cell)
+            if grown is not None:
+                before_count, prev = grown
+                assert prev.spec is not None
+                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
+                continue
+            if not [q for q in phrases[:k] if q.spec is not None] and not is_chatter(p.text):
+                pending.append(p.text)
+                continue
+            if is_chatter(p.text):
+                st.ignored.append(p.text)
+                st.notes.append(f"ignored '{p.text}': no structure, size or place in it")
+                continue
+            st.material.append(p.text)
+            st.notes.append(f"ignored '{p.text}': no structure named there")
+            continue
+        same = same_as_before(p, spec, phrases[:k])
+        if same is not None:
+            st.notes.append(f"'{p.text}' names the {same} described before")
+            continue
+        named = definite(p, spec, phrases[:k], structures)
+        if named is not None:
+            # "…; the staircase has 3 steps": more about the staircase named before
+            said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
+            structures[named] = structures[named].model_copy(update=said)
+            st.notes.append(f"'{p.text}': more about the {spec.structures[0].shape} named before")
+            p.count = 0
+            continue
+        p.spec = spec
+        p.first = len(structures)
+        p.count = len(spec.structures)
+        structures.extend(spec.structures)
+        if tail is not None:
+            modify(tail, [p], structures, st)
+        st.notes.extend(spec.notes)
+        st.material.extend(n for n in spec.notes if n.startswith("ignored"))
+        free = list(p.tokens)
+        for w in unused:
+            tok = next((doc[i] for i in free if doc[i].lower_.replace("'", "") == w), None)
+            if tok is not None:
+                free.remove(tok.i)
+            account(w, tok, st)
+    for text in pending:
+        st.material.append(text)
+        st.notes.append(f"ignored '{text}': no structure named there")
+    return structures
+
+
+_ONE_CUBE = re.compile(
+    r"^(?:\w+\s+)?(?:a|an|one|single|a\s+single|another|1)\s+(?:more\s+)?(?:cube|block|brick|part)"
+    r"(?:\s+\w+)?$",
+    re.IGNORECASE,
+)
+
+
+def _parse_or_base(p: Phrase, st: ReadState) -> tuple[SpecDraft, list[str]]:
+    """The phrase grammar's reading; "a sturdy base" with nothing else named is a platform,
+    "a cube" on its own one part."""
+    try:
+        return parse_phrase(p.text, st.cell)
+    except SpecError:
+        if _ONE_CUBE.match(p.text.strip()):
+            return parse_phrase("a single cube", st.cell)[0], []
+        lone = re.sub(
+            r"^(\W*(?:\w+\s+)?)(?:a|an|one|a\s+single|single)\s+(?:cube|block|brick)\b",
+            r"\1a 1-cube tower",
+            p.text,
+            flags=re.IGNORECASE,
+        )
+        if lone != p.text:  # "a cube in the front left corner"
+            spec, unused = parse_phrase(lone, st.cell)
+            p.text = lone
+            return spec, unused
+        base = re.search(r"\b(base|foundation|footing|plinth)\b", p.text, re.IGNORECASE)
+        if not base:
+            raise
+        text = p.text[: base.start()] + "platform" + p.text[base.end() :]
+        spec, unused = parse_phrase(text, st.cell)
+        st.notes.append(f"read '{base.group(0)}' as a platform (one layer)")
+        p.text = text
+        return spec, unused

@@ -1,0 +1,49 @@
+"""The reading in progress: the noun phrases found in a command, the relations between them,
+and the account (notes, ignored and material words) that every stage adds to."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from sdi.model.cell import CellConfig
+from sdi.spec.structure_spec import SpecDraft
+
+
+@dataclass
+class Phrase:
+    """A noun phrase that names one or more structures (or refers to earlier ones)."""
+
+    tokens: list[int]
+    clause: int
+    text: str = ""
+    spec: SpecDraft | None = None
+    first: int = 0  # index of its first structure in the reading
+    count: int = 0  # how many structures it produced
+    ref: int | None = None  # a pure reference: the phrase it refers to
+    side: str | None = None  # "it on the right": the side the reference names
+    modified: bool = False  # "then add two more cubes to it": changed an earlier structure
+    structure: int | None = None  # "the first one", "the smaller one": which structure
+    unused: list[str] = field(default_factory=list)
+
+
+@dataclass
+class PhraseRelation:
+    """A relation marker between two phrases, before the phrases are structures."""
+
+    kind: str
+    subject: int  # phrase index
+    object: int | None  # phrase index; None: "on top" with no object (the phrase before)
+    side: str | None = None
+
+
+@dataclass
+class ReadState:
+    """The account every stage adds to, and the flags the rewrites set."""
+
+    command: str
+    cell: CellConfig
+    notes: list[str] = field(default_factory=list)
+    ignored: list[str] = field(default_factory=list)
+    material: list[str] = field(default_factory=list)
+    no_stack: bool = False
+    no_beams: bool = False
