@@ -30,9 +30,8 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).parents[1] / "tests"))
 
-from twin_harness import browser, served, state, wait  # noqa: E402
-
-from sdi.inspector.verifier import verify  # noqa: E402
+from sdi.inspector.verifier import verify
+from twin_harness import browser, served, state, wait
 
 OUT = Path(__file__).parent / "results" / "twin.json"
 SIZES = {25: "a 5 by 5 grid", 200: "a 10 by 10 block 2 high"}
