@@ -15,7 +15,7 @@ keeps the other choices (undo the edit, replan).
 from __future__ import annotations
 
 import heapq
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 from sdi.inspector.analysis import Analysis
@@ -52,12 +52,29 @@ class Repair:
 
 
 def nearest_order(layout: Layout, cell: CellConfig, wanted: Sequence[str]) -> list[str] | None:
-    """The valid order closest to `wanted`: the operator's order, each part placed as early as
-    its supports allow (Kahn's algorithm over the support graph, ties broken by the operator's
-    rank), verified; else the Inspector's own order; None if the layout has none."""
+    """The valid order closest to `wanted`: the operator's order with each part placed as soon
+    as its supports allow (Kahn's algorithm over the support graph, ties broken by the
+    operator's rank); if the gripper cannot place that one, the same level by level (lower
+    levels first, the operator's order within a level); else the Inspector's own order; None if
+    the layout has none. Each is verified."""
     a = Analysis(layout, cell)
     ids = layout.ids
     rank = {pid: k for k, pid in enumerate(wanted)}
+    level = {pid: round(layout.part(pid).bottom / cell.cube[2]) for pid in ids}
+    for key in (
+        lambda i: (rank.get(ids[i], len(ids) + i),),
+        lambda i: (level[ids[i]], rank.get(ids[i], len(ids) + i)),
+    ):
+        order = _kahn(a, key)
+        if order is not None and verify(layout, cell, sequence=order).passed:
+            return order
+    report = verify(layout, cell)
+    return list(report.sequence) if report.passed and report.sequence else None
+
+
+def _kahn(a: Analysis, key: Callable[[int], tuple[int, ...]]) -> list[str] | None:
+    """A topological order of the support graph (supports first), smallest `key` first."""
+    ids = a.layout.ids
     n = len(ids)
     below: list[set[int]] = [set() for _ in range(n)]
     for lo, up in a.graph.support_edges.tolist():
@@ -67,7 +84,7 @@ def nearest_order(layout: Layout, cell: CellConfig, wanted: Sequence[str]) -> li
         for lo in below[up]:
             above[lo].append(up)
     waiting = [len(below[i]) for i in range(n)]
-    ready = [(rank.get(ids[i], n + i), i) for i in range(n) if waiting[i] == 0]
+    ready = [(key(i), i) for i in range(n) if waiting[i] == 0]
     heapq.heapify(ready)
     order: list[str] = []
     while ready:
@@ -76,11 +93,8 @@ def nearest_order(layout: Layout, cell: CellConfig, wanted: Sequence[str]) -> li
         for up in above[i]:
             waiting[up] -= 1
             if waiting[up] == 0:
-                heapq.heappush(ready, (rank.get(ids[up], n + up), up))
-    if len(order) == n and verify(layout, cell, sequence=order).passed:
-        return order
-    report = verify(layout, cell)
-    return list(report.sequence) if report.passed and report.sequence else None
+                heapq.heappush(ready, (key(up), up))
+    return order if len(order) == n else None
 
 
 def _free_bottom(layout: Layout, i: int, x: float, y: float) -> float:
