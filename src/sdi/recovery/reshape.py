@@ -39,12 +39,14 @@ class Reshaped:
     survival: float
     parts_before: int
     parts_after: int
+    moved: str | None = None  # how it was then moved clear of the blocked regions, if it was
 
     def describe(self) -> str:
-        return (
+        text = (
             f"flattened from {self.before} → {self.after} "
             f"({round(100 * self.survival)} % of the command kept)"
         )
+        return f"{text}, then {self.moved}" if self.moved else text
 
 
 def _levels_of(s: StructureSpec) -> int | None:
@@ -147,11 +149,13 @@ def reshape(
     options.sort(key=lambda o: -o[0])
     margin = default_margin(cell)
     for score, candidate, before, after in options:
-        placed = _clear(candidate, cell, blocked, margin)
-        if placed is None or max(p.top for p in placed) > z_max + eps:
+        cleared = _clear(candidate, cell, blocked, margin)
+        if cleared is None:
             continue
-        if verify(placed, cell).passed:
-            return Reshaped(placed, before, after, round(score, 3), n_before, len(placed))
+        placed, moved = cleared
+        if max(p.top for p in placed) > z_max + eps or not verify(placed, cell).passed:
+            continue
+        return Reshaped(placed, before, after, round(score, 3), n_before, len(placed), moved)
     raise InfeasibleError(
         f"z_max: no shape of the command fits under {z_max:g} m clear of the blocked regions; "
         "allow a higher limit or a smaller structure",
@@ -161,9 +165,11 @@ def reshape(
 
 def _clear(
     layout: Layout, cell: CellConfig, blocked: tuple[Region, ...], margin: float
-) -> Layout | None:
-    """The layout itself if it keeps `margin` clear of `blocked`, else shifted clear, else None."""
+) -> tuple[Layout, str | None] | None:
+    """The layout itself if it keeps `margin` clear of `blocked`, else shifted clear (with how
+    it was moved), else None."""
     try:
-        return shift_search(layout, cell, blocked=blocked, margin=margin).layout
+        shifted = shift_search(layout, cell, blocked=blocked, margin=margin)
     except InfeasibleError as exc:
-        return layout if exc.parameter == "layout" else None
+        return (layout, None) if exc.parameter == "layout" else None
+    return shifted.layout, shifted.describe()

@@ -39,9 +39,13 @@ class Shifted:
     margin: float = 0.0
 
     def describe(self) -> str:
-        moved = f"moved by ({self.dx:.3f}, {self.dy:.3f}) m"
-        turned = f", turned by {self.yaw_deg:g}° about its centre" if self.yaw_deg else ""
-        return f"{moved}{turned}, {self.margin * 1000:.1f} mm clear of the blocked region"
+        words = []
+        if self.dx or self.dy:
+            words.append(f"moved by ({self.dx:.3f}, {self.dy:.3f}) m")
+        if self.yaw_deg:
+            words.append(f"turned by {self.yaw_deg:g}° about its centre")
+        clear = f"{self.margin * 1000:.1f} mm clear of the blocked region"
+        return f"{', '.join(words)}, {clear}"
 
 
 def default_margin(cell: CellConfig) -> float:
