@@ -24,7 +24,10 @@ skills first (shift, flatten) and sends their output straight to the Inspector, 
 Designer's `modify`, then Specifier relaxation (the raw command), then the human; at most
 `method.replans` replans. The human touch points are LangGraph `interrupt()`s, each first in its
 node (so nothing is sent twice when the node re-runs on resume): design review, pre-execution
-confirmation (and its repeat after an interrupted execution), failure report. Every working
+confirmation (and its repeat after an interrupted execution), failure report; and two that
+only a person answers, never `--approve-all`: an edit the Inspector refused (`edit_review`:
+repair, undo, replan — edits never spend the replan budget) and a recovery that changed the
+shape (`recovery_review`). Every recovery states what it changed (`recoveries`). Every working
 phase runs under a wall-clock limit (`[limits] phase_seconds`); a phase past it goes to the
 failure report.
 """
@@ -371,7 +374,9 @@ def inspect_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     layout = _layout(state, ctx.cell)
     if layout is None:
         return {"violations": [{"constraint": "design", "message": "no layout"}], "phase": "replan"}
-    if ctx.method.critic == "llm" and ctx.model is not None:
+    checking = (state.get("edit") or {}).get("status") == "checking"
+    if ctx.method.critic == "llm" and ctx.model is not None and not checking:  # an operator's
+        # edit is always judged by the Inspector: its violations and repair go back to them
         verdict = llm_critic(ctx, layout)
         say(state, ctx, "critic", "orchestrator", "verdict", verdict)
         if verdict.get("passed"):
