@@ -469,10 +469,10 @@ def _refused_edit(
     return out
 
 
-def _outcome_notes(choice: str, changes: list[dict[str, Any]]) -> str:
+def _outcome_notes(choice: str, changes: list[dict[str, Any]], summary: str | None = None) -> str:
     from sdi.model.diff import PartChange, describe_diff
 
-    text = describe_diff([PartChange.model_validate(c) for c in changes])
+    text = summary or describe_diff([PartChange.model_validate(c) for c in changes])
     return f"your edit → {choice}: {'your layout kept' if text == 'unchanged' else text}"
 
 
@@ -517,7 +517,7 @@ def _edit_review(state: RunState, ctx: RunContext, pending: dict[str, Any]) -> d
         return {"review_note": note, "phase": "review"}
     notes = list(state.get("notes", []))
     if "changes" in outcome:
-        notes.append(_outcome_notes(action, outcome["changes"]))
+        notes.append(_outcome_notes(action, outcome["changes"], outcome.get("summary")))
     say(state, ctx, "orchestrator", "human", "edit_resolved", outcome)
     return {**update, "edit": None, "edit_outcome": outcome, "notes": notes, "review_note": None,
             "phase": "modify" if action == "replan" else "inspect"}  # fmt: skip
