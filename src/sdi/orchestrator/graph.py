@@ -690,6 +690,7 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         action = rule_route(state, method)
         if method.orchestration == "pge" and action in ("shift", "flatten", "relax"):
             action = "modify"
+    by_rules = ctx.model is None or method.orchestration not in ("langgraph", "hybrid")
     say(state, ctx, "orchestrator", "orchestrator", "route", {"action": action, "replan": replans})
     tried = [*state.get("tried", []), action]
     update: dict[str, Any] = {"replans": replans, "tried": tried}
@@ -702,8 +703,10 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         try:
             repaired, recovery = recover(action, layout, ctx.cell, blocked, spec)
         except InfeasibleError as exc:
-            return {**update, "notes": [*state.get("notes", []), f"{action}: {exc}"],
-                    "phase": "replan"}  # fmt: skip
+            update["notes"] = [*state.get("notes", []), f"{action}: {exc}"]
+            if by_rules:  # not tried, so not counted: the rules never choose it twice
+                update["replans"] = state.get("replans", 0)
+            return {**update, "phase": "replan"}
         return {**update, **_recovered(state, ctx, layout, repaired, recovery), "phase": "inspect"}
     if action in ("shift", "flatten"):
         return {**update, "phase": "replan"}
