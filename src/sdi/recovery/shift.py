@@ -192,7 +192,8 @@ def shift_search(
     if best is None:
         names = ", ".join(r.describe() for r in blocked)
         raise InfeasibleError(
-            f"blocked: no move or quarter turn keeps the structure inside the workspace and "
+            f"blocked: no move{' or quarter turn' if len(yaws) > 1 else ''} keeps the "
+            "structure inside the workspace and "
             f"{margin * 1000:.1f} mm clear of {names}; try flatten or a smaller structure",
             parameter="blocked",
         )
