@@ -219,3 +219,20 @@ def test_a_refused_edit_is_answered_with_choose(tmp_path):
 def test_typed_answers_to_a_refused_edit(typed, action):
     assert _answer(typed, "edit_review")["action"] == action
     assert _answer("yes", "edit_review") is None  # an invalid layout is not approved
+
+
+def test_a_review_says_what_changed():
+    from sdi.cli import _review_lines
+
+    lines = _review_lines({
+        "kind": "edit_review",
+        "violations": [{"constraint": "workspace", "message": "c3 leaves the workspace",
+                        "hint": "move c3 to x=0.775"}],
+        "repair": {"summary": "c3 moved by (-0.225, 0, -0.1) m to (0.775, 0.3, 0.025)"},
+        "nearest_order": ["c1", "c2", "c3"],
+    })  # fmt: skip
+    text = "\n".join(lines)
+    assert "workspace: c3 leaves the workspace — move c3 to x=0.775" in text
+    assert "repair: c3 moved by (-0.225, 0, -0.1) m" in text and "c1 → c2 → c3" in text
+    shown = _review_lines({"kind": "recovery_review", "recovery": {"summary": "flatten: x → y"}})
+    assert shown == ["recovery: flatten: x → y"]
