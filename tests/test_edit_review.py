@@ -4,6 +4,7 @@ their layout is stated, and no edit spends the replan budget. Order edits and in
 
 from __future__ import annotations
 
+import itertools
 import json
 
 import pytest
@@ -12,6 +13,7 @@ from scripted_model import tower
 from sdi.design import compose
 from sdi.errors import InputError
 from sdi.inspector import verify
+from sdi.model.cell import CellConfig
 from sdi.model.layout import parse_layout
 from sdi.orchestrator import Orchestrator
 from sdi.orchestrator.edits import edit
@@ -189,3 +191,17 @@ def test_repair_of_a_collision_keeps_the_operators_x_and_y():
     moved = fix.layout.part(b.id)
     assert moved.position[:2] == a.position[:2] and moved.bottom == pytest.approx(a.top)
     assert len(fix.changes) == 1
+
+
+def test_parts_moved_together_come_back_inside_together():
+    layout = build("wall", length=3, height=3, at_x=0.45, at_y=0.3)
+    top = [p for p in layout if p.top > 0.15 - 1e-9]
+    y0 = min(p.position[1] for p in top)
+    moved = edit(layout, [{"op": "translate", "id": p.id, "by": [0.0, 0.01 - y0, 0.0]}
+                          for p in top])  # fmt: skip
+    fix = repair_edit(moved.layout, touched=moved.touched, original=layout)
+    assert fix is not None and verify(fix.layout).passed and len(fix.layout) == 9
+    rows = sorted(fix.layout.part(p.id).position[1] for p in top)
+    gaps = [b - a for a, b in itertools.pairwise(rows)]
+    assert gaps == pytest.approx([0.05, 0.05])  # still a row, as the operator moved it
+    assert rows[0] - 0.025 == pytest.approx(CellConfig().workspace.y_min)  # as close as it can

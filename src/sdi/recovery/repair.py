@@ -177,6 +177,39 @@ def _support_column(layout: Layout, i: int, cell: CellConfig) -> Layout | None:
     return out
 
 
+def _group_inside(layout: Layout, group: list[int], cell: CellConfig) -> Layout | None:
+    """The parts of `group` moved rigidly by the least x/y that brings them all inside the
+    workspace, then lowered together as far as nothing under any of them stops them."""
+    ws = cell.workspace
+    c, h = layout.centres, layout.half_extents
+    lo = (c[group] - h[group]).min(axis=0)
+    hi = (c[group] + h[group]).max(axis=0)
+    delta = [0.0, 0.0]
+    for d, (low, high) in enumerate(((ws.x_min, ws.x_max), (ws.y_min, ws.y_max))):
+        if hi[d] - lo[d] > high - low:
+            return None  # the group is wider than the workspace
+        delta[d] = max(0.0, low - lo[d]) - max(0.0, hi[d] - high)
+    inside = set(group)
+    drop = float("inf")
+    for i in group:
+        x, y = c[i, 0] + delta[0], c[i, 1] + delta[1]
+        bottom = float(c[i, 2] - h[i, 2])
+        below = [
+            float(c[j, 2] + h[j, 2]) for j in range(len(layout))
+            if j not in inside and c[j, 2] + h[j, 2] <= bottom + 1e-6
+            and abs(c[j, 0] - x) < h[j, 0] + h[i, 0] - 1e-6
+            and abs(c[j, 1] - y) < h[j, 1] + h[i, 1] - 1e-6
+        ]  # fmt: skip
+        drop = min(drop, bottom - max(below, default=0.0))
+    parts = list(layout.objects)
+    for i in group:
+        p = parts[i]
+        x, y, z = p.position
+        parts[i] = Part(id=p.id, position=(round(x + delta[0], 6), round(y + delta[1], 6),
+                        round(z - drop, 6)), orientation=p.orientation, size=p.size)  # fmt: skip
+    return layout.replaced(parts)
+
+
 def _fix(layout: Layout, v: Violation, touched: set[str], cell: CellConfig) -> Layout | None:
     """One step towards a valid layout for violation `v`, or None if there is none to take."""
     ids = [i for i in v.objects if i in layout.index]
@@ -184,6 +217,8 @@ def _fix(layout: Layout, v: Violation, touched: set[str], cell: CellConfig) -> L
         return None
     s = v.suggestion or {}
     if v.constraint == Constraint.WORKSPACE:
+        if ids[0] in touched:  # what the operator moved together moves back together
+            return _group_inside(layout, [layout.index[pid] for pid in sorted(touched)], cell)
         i = layout.index[ids[0]]
         pos = s.get("position")
         if not isinstance(pos, list):
