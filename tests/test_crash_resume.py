@@ -82,6 +82,14 @@ def test_crash_during_replan_then_resume(tmp_path):
     )  # fmt: skip
     assert resumed.returncode == 0, resumed.stderr
     result = json.loads(resumed.stdout)
+    # flattening changed the shape: a person approves it, even in an --approve-all run
+    assert result["status"] == "paused" and result["waiting_for"]["kind"] == "recovery_review"
+    approved = subprocess.run(
+        [*SDI, "resume", run_id, "--approve", "--db", str(db), "--json"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert approved.returncode == 0, approved.stderr
+    result = json.loads(approved.stdout)
     assert result["status"] == "success" and result["tried"][0] == "flatten"
     log = subprocess.run(
         [*SDI, "log", run_id, "--db", str(db), "--json"], capture_output=True, text=True

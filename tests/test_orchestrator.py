@@ -41,13 +41,14 @@ def test_rejecting_the_design_moves_nothing(orch):
 
 def test_human_edits_are_reverified(orch):
     s = orch.start("a 2-cube tower at x = 0.4")
-    # move the top cube into the air: the Inspector must catch it, then the Designer repairs
-    s = orch.resume(
-        s.run_id,
-        {"action": "edit", "edits": [{"op": "move", "id": "c2", "position": [0.4, 0.3, 0.3]}]},
-    )
+    # move the top cube into the air: the Inspector must catch it, and the operator decides
+    edited = [{"op": "move", "id": "c2", "position": [0.4, 0.3, 0.3]}]
+    s = orch.resume(s.run_id, {"action": "edit", "edits": edited})
     msgs = [m for m in orch.bus.history(s.run_id) if m.type == "verification"]
     assert msgs[0].payload["passed"] and not msgs[1].payload["passed"]
+    assert s.status == "paused" and s.waiting_for["kind"] == "edit_review"
+    assert s.waiting_for["layout"]["objects"][1]["position"] == [0.4, 0.3, 0.3]  # theirs, shown
+    s = orch.resume(s.run_id, {"action": "repair"})
     assert s.status == "paused" and s.waiting_for["kind"] == "design_review"
     layout, _ = parse_layout(s.waiting_for["layout"])
     from sdi.inspector import verify
@@ -74,8 +75,13 @@ def test_execution_failure_is_recovered_by_a_skill(orch, fault, recovery):
         "a 3-cube tower at x = 0.4" if fault == "low_ceiling" else "a 2-cube tower at x = 0.45"
     )
     s = orch.start(command, faults=[fault], approve=True)
+    if recovery == "flatten":  # a changed shape is the operator's to approve, even unattended
+        assert s.status == "paused" and s.waiting_for["kind"] == "recovery_review"
+        assert s.waiting_for["recovery"]["shape_changed"] is True
+        s = orch.resume(s.run_id, {"action": "approve"}, approve_all=True)
     assert s.status == "success", s.state.get("notes")
     assert s.state["tried"][0] == recovery
+    assert s.state["notes"][-1].startswith(f"recovery: {recovery}: ")  # what changed, stated
     routes = [m.payload["action"] for m in orch.bus.history(s.run_id) if m.type == "route"]
     assert routes[0] == recovery
 

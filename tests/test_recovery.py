@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from sdi.design import compose
 from sdi.errors import InfeasibleError
 from sdi.inspector import verify
+from sdi.model.cell import CellConfig
 from sdi.model.region import Region
 from sdi.recovery import flatten, shift
 from sdi.spec import Spec, structure
@@ -84,3 +86,99 @@ def test_region_half_space_and_box():
     ]
     with pytest.raises(ValueError):
         Region(normal=(1.0, 0.0, 0.0))
+
+
+# -- the smallest change, with a margin, stated --------------------------------------------------
+def boxes(layout):
+    return layout.centres - layout.half_extents, layout.centres + layout.half_extents
+
+
+def test_shift_keeps_a_margin_from_the_blocked_region():
+    from sdi.execute.faults import SCENARIOS
+    from sdi.recovery.shift import default_margin, shift_search
+
+    layout = build("grid", length=2, width=2, at_x=0.45, at_y=0.3)  # the 2×2 grid of Table V
+    region = SCENARIOS["singular_centre"].regions
+    out = shift_search(layout, blocked=region)
+    lo, hi = boxes(out.layout)
+    pad = default_margin(CellConfig())
+    assert pad >= 0.0008 + CellConfig().tolerances.contact  # placement gap + tolerance
+    grown = np.array([pad, pad, 0.0]) - 1e-6
+    assert not any(r.blocks(lo - grown, hi + grown).any() for r in region)
+    assert (out.dx, out.dy) != (0.0, 0.0) and "mm clear" in out.describe()
+
+
+def test_shift_never_reruns_a_clear_layout():
+    from sdi.recovery.shift import shift_search
+
+    layout = build("tower", height=2, at_x=0.3, at_y=0.3)
+    with pytest.raises(InfeasibleError) as info:
+        shift_search(layout, blocked=(Region(x_min=0.7),))
+    assert info.value.parameter == "layout"
+
+
+def test_shift_turns_when_only_a_turn_fits():
+    from sdi.recovery.shift import shift_search
+
+    row = build("row", length=3, axis="y", at_x=0.5, at_y=0.3)  # 0.15 m along y
+    band = (Region(y_max=0.23), Region(y_min=0.37))  # only 0.14 m of y is free
+    out = shift_search(row, blocked=band)
+    assert out.yaw_deg in (90.0, 270.0) and "turned by" in out.describe()
+    lo, hi = boxes(out.layout)
+    assert lo[:, 1].min() > 0.23 and hi[:, 1].max() < 0.37
+    assert verify(out.layout).passed
+
+
+def test_flatten_keeps_the_command_structure_first():
+    from sdi.recovery import reshape
+
+    spec = Spec(structures=(StructureSpec(shape="tower", height=4, at_x=0.45, at_y=0.3),))
+    out = reshape(spec, compose(spec), z_max=0.15, blocked=(Region(z_min=0.15),))
+    assert len(out.layout) == 4  # every commanded part is still there
+    assert "→ 2 towers of 2+2 levels" in out.describe() and out.before == "tower (height 4)"
+    assert max(p.top for p in out.layout) <= 0.15 + 1e-9 and verify(out.layout).passed
+
+
+def test_flatten_that_changes_nothing_is_not_tried():
+    from sdi.recovery import reshape
+
+    spec = Spec(structures=(StructureSpec(shape="tower", height=2),))
+    with pytest.raises(InfeasibleError) as info:
+        reshape(spec, compose(spec), z_max=0.15)
+    assert info.value.parameter == "z_max" and "same layout" in str(info.value)
+
+
+def test_rule_replan_moves_away_from_a_collision_region():
+    from sdi.recovery.outcome import rule_replan
+
+    layout = build("tower", height=3, at_x=0.5, at_y=0.45)
+    out, outcome = rule_replan(layout, CellConfig(), (Region(y_min=0.4),))
+    _, hi = boxes(out)
+    assert hi[:, 1].max() < 0.4 and verify(out).passed
+    assert outcome.moved_by_m is not None and outcome.moved_by_m[0] == 0.0  # no turn, no x
+    assert not outcome.shape_changed and len(outcome.changes) == 3
+
+
+def test_recovery_states_what_changed_and_a_new_shape_waits(tmp_path):
+    from sdi.orchestrator import Orchestrator
+
+    orch = Orchestrator(db=tmp_path / "r.sqlite")
+    s = orch.start("a 4-cube tower at x = 0.45", faults=["height_limit"], approve=True)
+    assert s.status == "paused" and s.waiting_for["kind"] == "recovery_review"
+    recovery = s.state["recoveries"][-1]
+    assert recovery["flattened_from"] == "tower (height 4)" and recovery["shape_changed"]
+    assert any(m.type == "recovery" for m in orch.bus.history(s.run_id))
+    assert s.to_json_dict()["recoveries"][-1]["summary"].startswith("flatten: flattened from")
+    orch.close()
+
+
+@pytest.mark.parametrize("method", ["MultiAgent-RuleOrch", "PGEOrch", "LGOrch"])
+def test_rule_based_baselines_replan_away_from_the_region(tmp_path, method):
+    from sdi.orchestrator import Orchestrator
+
+    orch = Orchestrator(db=tmp_path / "b.sqlite")
+    s = orch.start("a 3-cube tower at x = 0.5, y = 0.45", method=method,
+                   faults=["env_collision"], approve=True)  # fmt: skip
+    assert s.status == "success", s.state.get("notes")
+    assert s.state["recoveries"][0]["action"] == "rule-replan"
+    orch.close()

@@ -170,3 +170,69 @@ def test_a_failure_report_is_not_approved_blindly(tmp_path):
     assert proc.returncode == 2 and "failure report" in proc.stderr
     proc = sdi("resume", s.run_id, "--reject", "--json", "--db", str(db))
     assert json.loads(proc.stdout)["status"] == "failure"  # aborted, by a person's answer
+
+
+def test_a_failure_report_can_be_retried_from_the_command_line(tmp_path):
+    from scripted_model import ScriptedChat, cube
+
+    model = ScriptedChat(lambda msgs, opt: {"objects": [cube("a", 0.4, 0.3, 0.3)]})  # floats
+    db = tmp_path / "runs.sqlite"
+    orch = Orchestrator(db=db, model=model)
+    s = orch.start("zorblax", method="LGOrch", backend="rules")
+    orch.close()
+    assert s.waiting_for["kind"] == "failure_report"
+    proc = sdi("resume", s.run_id, "--approve", "--db", str(db))
+    assert proc.returncode == 2 and "--retry" in proc.stderr
+    proc = sdi("resume", s.run_id, "--retry", "--json", "--db", str(db))
+    assert proc.returncode != 2, proc.stderr
+    bus = MessageBus(db)
+    answers = [m.payload for m in bus.history(s.run_id) if m.type == "failure_decision"]
+    kinds = [m.type for m in bus.history(s.run_id)]
+    bus.close()
+    assert answers[-1]["action"] == "retry"
+    assert kinds[kinds.index("failure_decision") + 1 :].count("error") == 1  # planned again
+
+
+def test_a_refused_edit_is_answered_with_choose(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    status = json.loads(sdi("run", "a 3-cube tower at x = 0.45", "--arms", "irb120", "--json",
+                            "--db", str(db)).stdout)  # fmt: skip
+    edits = tmp_path / "edits.json"
+    edits.write_text(json.dumps([{"op": "move", "id": "c3", "position": [1.0, 0.3, 0.125]}]))
+    run_id = status["run_id"]
+    after = json.loads(
+        sdi("resume", run_id, "--edit", str(edits), "--json", "--db", str(db)).stdout
+    )
+    assert after["waiting_for"]["kind"] == "edit_review" and after["waiting_for"]["repair"]
+    proc = sdi("resume", run_id, "--approve", "--db", str(db))
+    assert proc.returncode == 2 and "--choose" in proc.stderr  # not approved blindly
+    proc = sdi("resume", run_id, "--choose", "repair", "--json", "--db", str(db))
+    done = json.loads(proc.stdout)
+    assert done["waiting_for"]["kind"] == "design_review"
+    assert done["edit_outcome"]["choice"] == "repair" and done["edit_outcome"]["changes"]
+    assert any("your edit → repair" in n for n in done["notes"])
+
+
+@pytest.mark.parametrize(
+    ("typed", "action"), [("f", "repair"), ("undo", "undo"), ("p", "replan"), ("r", "reject")]
+)
+def test_typed_answers_to_a_refused_edit(typed, action):
+    assert _answer(typed, "edit_review")["action"] == action
+    assert _answer("yes", "edit_review") is None  # an invalid layout is not approved
+
+
+def test_a_review_says_what_changed():
+    from sdi.cli import _review_lines
+
+    lines = _review_lines({
+        "kind": "edit_review",
+        "violations": [{"constraint": "workspace", "message": "c3 leaves the workspace",
+                        "hint": "move c3 to x=0.775"}],
+        "repair": {"summary": "c3 moved by (-0.225, 0, -0.1) m to (0.775, 0.3, 0.025)"},
+        "nearest_order": ["c1", "c2", "c3"],
+    })  # fmt: skip
+    text = "\n".join(lines)
+    assert "workspace: c3 leaves the workspace — move c3 to x=0.775" in text
+    assert "repair: c3 moved by (-0.225, 0, -0.1) m" in text and "c1 → c2 → c3" in text
+    shown = _review_lines({"kind": "recovery_review", "recovery": {"summary": "flatten: x → y"}})
+    assert shown == ["recovery: flatten: x → y"]

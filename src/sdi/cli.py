@@ -538,6 +538,8 @@ def _model(backend: str, as_json: bool, stack: ExitStack, timeout: float | None 
 
 
 APPROVE_WORDS = ("a", "approve", "y", "yes", "ok")
+EDITABLE = ("design_review", "recovery_review", "edit_review", "failure_report")
+"""The reviews an edits file may answer."""
 REJECT_WORDS = ("r", "reject", "n", "no")
 
 
@@ -545,10 +547,23 @@ def _answer(text: str, kind: str) -> dict[str, Any] | None:
     """An operator's typed answer at a review, or None if it is not one (ask again)."""
     words = text.strip().split(maxsplit=1)
     word = words[0].lower() if words else ""
-    if word in ("e", "edit") and kind in ("design_review", "failure_report"):
+    if word in ("e", "edit") and kind in EDITABLE:
         if len(words) < 2:
             return None
         return {"action": "edit", "file": words[1]}
+    if kind == "edit_review":
+        choice = {
+            "f": "repair",
+            "fix": "repair",
+            "repair": "repair",
+            "u": "undo",
+            "undo": "undo",
+            "p": "replan",
+            "replan": "replan",
+            "r": "reject",
+            "reject": "reject",
+        }.get(word)
+        return {"action": choice} if choice else None  # fmt: skip
     if kind == "failure_report":
         if word in ("r", "retry"):
             return {"action": "retry"}
@@ -605,14 +620,28 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
     kind = str(waiting.get("kind"))
     if waiting.get("refused"):
         err.print(f"[bold red]edit refused:[/bold red] {waiting['refused']}", markup=True)
-    if kind == "design_review":
+    if kind in ("design_review", "recovery_review", "edit_review"):
         from sdi.model.layout import parse_layout
         from sdi.render import top_view
 
         layout, _ = parse_layout(waiting.get("layout") or {"objects": []})
         out.print(top_view(layout, CellConfig()))
-        out.print(f"sequence: {' → '.join(waiting.get('sequence') or [])}", markup=False)
-        question, default = "Design review: [a]pprove, [e]dit FILE.json, [r]eject", "a"
+        if waiting.get("sequence"):
+            out.print(f"sequence: {' → '.join(waiting.get('sequence') or [])}", markup=False)
+        for line in _review_lines(waiting):
+            out.print(line, markup=False)
+        question, default = {
+            "design_review": ("Design review: [a]pprove, [e]dit FILE.json, [r]eject", "a"),
+            "recovery_review": (
+                "The recovery changed the shape: [a]pprove, [e]dit FILE.json, [r]eject",
+                "r",
+            ),
+            "edit_review": (
+                "Your edit breaks constraints: [f]ix (the repair), [u]ndo, re[p]lan, "
+                "[e]dit FILE.json, [r]eject",
+                "f" if waiting.get("repair") else "u",
+            ),
+        }[kind]
     elif kind in ("pre_execute", "resume_execution"):
         _show_record(waiting)
         question, default = "Execute this record on the robots (sim)? [a]pprove / [r]eject", "r"
@@ -635,6 +664,29 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
     if decision["action"] == "approve" and waiting.get("record_hash"):
         decision["record_hash"] = waiting["record_hash"]
     return decision
+
+
+def _review_lines(waiting: dict[str, Any]) -> list[str]:
+    """What a review must say besides the layout: a recovery's change, an edit's violations,
+    its repair and the nearest valid order, what became of the operator's last edit."""
+    lines = []
+    recovery = waiting.get("recovery")
+    if isinstance(recovery, dict):
+        lines.append(f"recovery: {recovery.get('summary')}")
+    for v in (waiting.get("violations") or [])[:10]:
+        if isinstance(v, dict):
+            lines.append(f"  ✗ {v.get('constraint')}: {v.get('message')} — {v.get('hint')}")
+    repair = waiting.get("repair")
+    if waiting.get("kind") == "edit_review":
+        lines.append(f"repair: {repair.get('summary')}" if isinstance(repair, dict)
+                     else "repair: none keeps this edit valid")  # fmt: skip
+    if waiting.get("nearest_order"):
+        lines.append(f"nearest valid order: {' → '.join(waiting['nearest_order'])}")
+    outcome = waiting.get("edit_outcome")
+    if isinstance(outcome, dict) and outcome.get("choice") not in (None, "kept"):
+        count = len(outcome.get("changes") or [])
+        lines.append(f"your edit → {outcome['choice']}: {count} part(s) differ from your layout")
+    return lines
 
 
 def _describe_planning(summary: Any) -> str:
@@ -685,10 +737,16 @@ def _finish(status: Any, as_json: bool) -> None:
         if status.status == "paused":
             kind = waiting.get("kind")
             what = f" record {waiting['record_hash'][:12]}" if waiting.get("record_hash") else ""
+            how = {
+                "failure_report": "--retry (or --edit FILE, --reject)",
+                "edit_review": "--choose repair|undo|replan (or --edit FILE, --reject)",
+            }.get(str(kind), "--approve (or --reject, --edit FILE; --approve-all for every "
+                             "later review too)")  # fmt: skip
+            for line in _review_lines(waiting):
+                err.print(line, markup=False)
             err.print(
                 f"[yellow]paused at {kind}{what}[/yellow]: nothing moves without a human OK. "
-                f"Continue with `sdi resume {status.run_id} --approve` (or --reject, --edit "
-                "FILE; --approve-all for every later review too)"
+                f"Continue with `sdi resume {status.run_id} {how}`"
             )
     if status.status == "paused" and (status.waiting_for or {}).get("refused"):
         raise typer.Exit(2)
@@ -703,7 +761,8 @@ PHASES = {
     "motion_started": "robots moving", "step_done": "part set down",
     "execution": "execution finished", "route": "replanning",
     "execution_interrupted": "found an interrupted execution", "refused": "refused",
-    "edit_refused": "edit refused", "failure": "failure",
+    "edit_refused": "edit refused", "failure": "failure", "recovery": "recovered",
+    "edit_check": "your edit breaks constraints", "edit_resolved": "your edit",
 }  # fmt: skip
 
 
@@ -730,6 +789,12 @@ def _progress(orch: Any, as_json: bool) -> None:
             "execution": lambda: f"{p.get('status')}, V_traj {p.get('v_traj')}",
             "refused": lambda: str(p.get("error")),
             "edit_refused": lambda: str(p.get("error")),
+            "recovery": lambda: str(p.get("summary")),
+            "edit_check": lambda: (
+                f"{len(p.get('violations') or [])} violation(s); repair: "
+                f"{(p.get('repair') or {}).get('summary', 'none')}"
+            ),
+            "edit_resolved": lambda: str(p.get("choice")),
         }.get(m.type, lambda: "")()
         line = f"[dim]{time.monotonic() - start:7.1f} s[/dim]  {what}"
         err.print(f"{line}  {escape(detail)}" if detail else line)
@@ -808,6 +873,15 @@ def resume_cmd(
     reject: Annotated[
         bool, typer.Option("--reject", help="answer the pending review: reject")
     ] = False,
+    retry: Annotated[
+        bool, typer.Option("--retry", help="answer a failure report: plan the command again")
+    ] = False,
+    choose: Annotated[
+        str | None,
+        typer.Option(
+            "--choose", help="answer an edit the Inspector refused: repair, undo or replan"
+        ),
+    ] = None,
     edit: Annotated[
         Path | None, typer.Option("--edit", help="answer with edits from a JSON file")
     ] = None,
@@ -831,7 +905,8 @@ def resume_cmd(
     from sdi.orchestrator import Orchestrator, RunBusyError
 
     flags = {"--approve": approve, "--approve-all": approve_all, "--reject": reject,
-             "--edit": edit is not None}  # fmt: skip
+             "--edit": edit is not None, "--retry": retry,
+             "--choose": choose is not None}  # fmt: skip
     answers = [name for name, given in flags.items() if given]
     if len(answers) > 1:
         _bad_input(InputError(f"give one answer, not {' and '.join(answers)}"), json_out)
@@ -840,6 +915,13 @@ def resume_cmd(
         decision = {"action": "edit", "edits": _edits_or_exit(edit, json_out)}
     elif reject:
         decision = {"action": "reject"}
+    elif retry:
+        decision = {"action": "retry"}
+    elif choose is not None:
+        if choose not in ("repair", "undo", "replan"):
+            _bad_input(InputError(f"{choose!r}: choose repair, undo or replan",
+                                  field="--choose"), json_out)  # fmt: skip
+        decision = {"action": choose}
     cell = _cell(cell_path, json_out) if cell_path is not None else None
     db = _database(db, run_id=run_id)
     with ExitStack() as stack:
@@ -862,13 +944,26 @@ def resume_cmd(
             orch.model = _model(info.backend, json_out, stack, llm_timeout)
             _progress(orch, json_out)
             with orch.owning(run_id):  # one process at a time, prompts included
+                kind = (orch.status(run_id).waiting_for or {}).get("kind")
+                if (retry and kind != "failure_report") or (choose and kind != "edit_review"):
+                    raise InputError(
+                        f"run {run_id} waits on {kind or 'nothing'}, which {answers[0]} does "
+                        "not answer",
+                        field=answers[0],
+                    )
                 if approve or approve_all:
                     pending = orch.status(run_id)
-                    if (pending.waiting_for or {}).get("kind") == "failure_report":
+                    if kind == "failure_report":
                         raise InputError(
                             f"run {run_id} waits on a failure report, which is not approved: "
-                            "answer it with --edit FILE, --reject (abort), or interactively "
-                            "(retry / edit / abort)",
+                            "answer it with --retry (plan the command again), --edit FILE, "
+                            "--reject (abort), or interactively (retry / edit / abort)",
+                            field=answers[0],
+                        )
+                    if kind == "edit_review":
+                        raise InputError(
+                            f"run {run_id} waits on your edit, which the Inspector refused: "
+                            "answer it with --choose repair|undo|replan, --edit FILE or --reject",
                             field=answers[0],
                         )
                     decision = {"action": "approve", "by": answers[0]}

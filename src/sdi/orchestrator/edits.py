@@ -2,13 +2,19 @@
 
 An edit is a JSON object: {"op": "move", "id", "position": [x, y, z]}, {"op": "translate",
 "id", "by": [dx, dy, dz]}, {"op": "rotate", "id", "yaw_deg"}, {"op": "insert", "id",
-"position", "size"?}, {"op": "remove", "id"}. Edits are all-or-nothing: a bad one refuses the
-whole batch with a message naming it, and the layout stays as it was.
+"position", "size"?, "yaw_deg"?}, {"op": "remove", "id"}, and the order edit {"op":
+"sequence", …} with one of "order": [ids] (the whole order), "reverse": true, or "move": id or
+[ids] with "before": id (those parts placed just before that one). Edits are all-or-nothing: a
+bad one refuses the whole batch with a message naming it, and the layout stays as it was.
+`edit` also says which parts the operator touched and the order they asked for (None if they
+gave no order edit); `apply_edits` is its layout.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from sdi.errors import InputError
@@ -31,19 +37,89 @@ def _vec(edit: dict[str, Any], key: str, k: int) -> tuple[float, float, float]:
     return (float(value[0]), float(value[1]), float(value[2]))
 
 
-def apply_edits(
-    layout: Layout, edits: list[dict[str, Any]], cell: CellConfig | None = None
-) -> Layout:
+@dataclass(frozen=True)
+class Edited:
+    """An edit batch's result: the operator's layout, their order (None: the Inspector's), the
+    parts they moved, turned or inserted, and the parts they removed."""
+
+    layout: Layout
+    sequence: tuple[str, ...] | None
+    touched: tuple[str, ...]
+    removed: tuple[str, ...]
+
+
+def _ids(edit: dict[str, Any], key: str, k: int, known: list[str]) -> list[str]:
+    value = edit.get(key)
+    names = [value] if isinstance(value, str) else value
+    if not isinstance(names, list) or not names or not all(isinstance(n, str) for n in names):
+        raise InputError(f"needs {key} as a part id or a list of part ids",
+                         field=f"edits[{k}].{key}")  # fmt: skip
+    unknown = [n for n in names if n not in known]
+    if unknown:
+        raise InputError(f"unknown part id(s) {unknown}; the order holds {known[:12]}",
+                         field=f"edits[{k}].{key}")  # fmt: skip
+    if len(set(names)) != len(names):
+        raise InputError("names a part twice", field=f"edits[{k}].{key}")
+    return list(names)
+
+
+def _reordered(edit: dict[str, Any], k: int, order: list[str]) -> list[str]:
+    """The order edit applied to `order`: a whole order, reverse, or move-before."""
+    given = [key for key in ("order", "reverse", "move") if key in edit]
+    if len(given) != 1:
+        raise InputError(
+            'give exactly one of "order": [ids], "reverse": true, or "move": ids with '
+            f'"before": id (got {given or "none"})',
+            field=f"edits[{k}]",
+        )
+    if given[0] == "order":
+        new = _ids(edit, "order", k, order)
+        if sorted(new) != sorted(order):
+            missing = [pid for pid in order if pid not in new]
+            raise InputError(f"must name every part once; missing {missing[:12]}",
+                             field=f"edits[{k}].order")  # fmt: skip
+        return new
+    if given[0] == "reverse":
+        if edit["reverse"] is not True:
+            raise InputError("must be true (or leave it out)", field=f"edits[{k}].reverse")
+        return order[::-1]
+    moving = _ids(edit, "move", k, order)
+    before = _ids(edit, "before", k, order)
+    if len(before) != 1 or before[0] in moving:
+        raise InputError("needs one part id that is not being moved", field=f"edits[{k}].before")
+    rest = [pid for pid in order if pid not in moving]
+    at = rest.index(before[0])
+    return rest[:at] + moving + rest[at:]
+
+
+def edit(
+    layout: Layout,
+    edits: list[dict[str, Any]],
+    cell: CellConfig | None = None,
+    *,
+    sequence: Sequence[str] | None = None,
+) -> Edited:
+    """C ⊕ I_h with what the operator touched; `sequence` is the order an order edit starts
+    from (default: the layout's part order)."""
     cell = cell or CellConfig()
     if not isinstance(edits, list):
         raise InputError("must be a list of edit objects", field="edits")
     parts = {p.id: p for p in layout.objects}
     order = list(layout.ids)
-    for k, edit in enumerate(edits):
-        if not isinstance(edit, dict):
+    placing = list(sequence) if sequence is not None and sorted(sequence) == sorted(order) \
+        else list(order)  # fmt: skip
+    ordered = False
+    touched: list[str] = []
+    removed: list[str] = []
+    for k, item in enumerate(edits):
+        if not isinstance(item, dict):
             raise InputError("must be an object with an 'op'", field=f"edits[{k}]")
-        op = edit.get("op")
-        raw = edit.get("id")
+        op = item.get("op")
+        if op == "sequence":
+            placing = _reordered(item, k, placing)
+            ordered = True
+            continue
+        raw = item.get("id")
         pid = raw if isinstance(raw, str) else ""
         if op != "insert" and pid not in parts:
             raise InputError(f"unknown part id {pid!r}", field=f"edits[{k}].id")
@@ -52,21 +128,18 @@ def apply_edits(
                 p = parts[pid]
                 parts[pid] = Part(
                     id=pid,
-                    position=_vec(edit, "position", k),
+                    position=_vec(item, "position", k),
                     orientation=p.orientation,
                     size=p.size,
                 )
             elif op == "translate":
-                parts[pid] = parts[pid].moved(*_vec(edit, "by", k))
+                parts[pid] = parts[pid].moved(*_vec(item, "by", k))
             elif op == "rotate":
-                yaw = edit.get("yaw_deg")
-                if not isinstance(yaw, int | float) or not math.isfinite(yaw):
-                    raise InputError("needs yaw_deg as a number", field=f"edits[{k}].yaw_deg")
                 p = parts[pid]
                 parts[pid] = Part(
                     id=pid,
                     position=p.position,
-                    orientation=quat_from_yaw(math.radians(yaw)),
+                    orientation=quat_from_yaw(math.radians(_yaw(item, k))),
                     size=p.size,
                 )
             elif op == "insert":
@@ -74,19 +147,45 @@ def apply_edits(
                     raise InputError(
                         f"needs a new, unused id (got {pid!r})", field=f"edits[{k}].id"
                     )
-                size = _vec(edit, "size", k) if "size" in edit else cell.cube
-                parts[pid] = Part(id=pid, position=_vec(edit, "position", k), size=size)
+                size = _vec(item, "size", k) if "size" in item else cell.cube
+                yaw = _yaw(item, k) if "yaw_deg" in item else 0.0
+                parts[pid] = Part(id=pid, position=_vec(item, "position", k), size=size,
+                                  orientation=quat_from_yaw(math.radians(yaw)))  # fmt: skip
                 order.append(pid)
+                placing.append(pid)
             elif op == "remove":
                 del parts[pid]
                 order.remove(pid)
+                placing.remove(pid)
+                removed.append(pid)
             else:
                 raise InputError(
-                    f"unknown op {op!r}; use move, translate, rotate, insert or remove",
+                    f"unknown op {op!r}; use move, translate, rotate, insert, remove or sequence",
                     field=f"edits[{k}].op",
                 )
         except ValueError as exc:  # pydantic validation of the new part
             raise InputError(str(exc).splitlines()[0], field=f"edits[{k}]") from None
+        if op != "remove" and pid not in touched:
+            touched.append(pid)
     if len(order) > cell.limits.max_parts:
         raise InputError(f"more than {cell.limits.max_parts} parts", field="edits")
-    return Layout(objects=tuple(parts[i] for i in order))
+    return Edited(
+        layout=Layout(objects=tuple(parts[i] for i in order)),
+        sequence=tuple(placing) if ordered else None,
+        touched=tuple(pid for pid in touched if pid in parts),
+        removed=tuple(removed),
+    )
+
+
+def _yaw(item: dict[str, Any], k: int) -> float:
+    yaw = item.get("yaw_deg")
+    if isinstance(yaw, bool) or not isinstance(yaw, int | float) or not math.isfinite(yaw):
+        raise InputError("needs yaw_deg as a number (degrees)", field=f"edits[{k}].yaw_deg")
+    return float(yaw)
+
+
+def apply_edits(
+    layout: Layout, edits: list[dict[str, Any]], cell: CellConfig | None = None
+) -> Layout:
+    """The operator's layout C ⊕ I_h (`edit` without what was touched)."""
+    return edit(layout, edits, cell).layout

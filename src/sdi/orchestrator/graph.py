@@ -24,7 +24,10 @@ skills first (shift, flatten) and sends their output straight to the Inspector, 
 Designer's `modify`, then Specifier relaxation (the raw command), then the human; at most
 `method.replans` replans. The human touch points are LangGraph `interrupt()`s, each first in its
 node (so nothing is sent twice when the node re-runs on resume): design review, pre-execution
-confirmation (and its repeat after an interrupted execution), failure report. Every working
+confirmation (and its repeat after an interrupted execution), failure report; and two that
+only a person answers, never `--approve-all`: an edit the Inspector refused (`edit_review`:
+repair, undo, replan — edits never spend the replan budget) and a recovery that changed the
+shape (`recovery_review`). Every recovery states what it changed (`recoveries`). Every working
 phase runs under a wall-clock limit (`[limits] phase_seconds`); a phase past it goes to the
 failure report.
 """
@@ -67,12 +70,15 @@ from sdi.jsonable import plain
 from sdi.llm.chat import ChatModel
 from sdi.llm.openai_backend import LLMError, parse_json
 from sdi.model.cell import CellConfig
+from sdi.model.diff import layout_diff
 from sdi.model.layout import Layout, parse_layout
+from sdi.model.region import Region
 from sdi.orchestrator.bus import MessageBus
-from sdi.orchestrator.edits import apply_edits
+from sdi.orchestrator.edits import edit
 from sdi.orchestrator.methods import SAMS_SKILLS, SASS_SKILLS, Method
 from sdi.orchestrator.records import RecordStore
-from sdi.recovery import flatten, shift
+from sdi.recovery.outcome import RecoveryOutcome, recover, rule_replan
+from sdi.recovery.repair import repair_edit
 from sdi.skills.builtin import default_registry
 from sdi.spec.structure_spec import Spec
 
@@ -126,6 +132,14 @@ class RunState(TypedDict, total=False):
     approve: bool  # unattended: every review approved (`--approve-all`), but never the
     # confirmation after an interrupted execution nor a failure report
     design_only: bool  # stop once the design is verified (benchmarks): status "verified"
+    recoveries: list[dict[str, Any]]  # each recovery's outcome (`RecoveryOutcome`), in order
+    pending_approval: dict[str, Any] | None  # a recovery that changed the shape: a person
+    # approves the next design review, whatever `--approve-all` says
+    avoid: list[dict[str, Any]]  # places learned to avoid (`Region`s), e.g. unreachable targets
+    operator_sequence: list[str] | None  # the order the operator gave (an order edit)
+    edit: dict[str, Any] | None  # the operator's edit being checked, or refused by the
+    # Inspector with its repair (`status` checking | invalid); see `EDIT_CHOICES`
+    edit_outcome: dict[str, Any] | None  # what became of the last edit, and the diff from it
 
 
 class Jobs:
@@ -250,7 +264,10 @@ def rule_route(state: RunState, method: Method) -> str:
         scenario = SCENARIOS.get(failure.get("scenario") or "")
         height = scenario is not None and any(r.z_min is not None for r in scenario.regions)
         for action in ("flatten", "shift") if height else ("shift", "flatten"):
-            if action not in tried:
+            # a second shift only after a new failure taught it a place to avoid
+            if action not in tried or (action == "shift" and tried.count(action) < 2
+                                       and failure.get("error_type") == "ik"
+                                       and not failure.get("scenario")):  # fmt: skip
                 return action
     if "modify" not in tried or tried.count("modify") < 2:
         return "modify"
@@ -357,7 +374,9 @@ def inspect_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     layout = _layout(state, ctx.cell)
     if layout is None:
         return {"violations": [{"constraint": "design", "message": "no layout"}], "phase": "replan"}
-    if ctx.method.critic == "llm" and ctx.model is not None:
+    checking = (state.get("edit") or {}).get("status") == "checking"
+    if ctx.method.critic == "llm" and ctx.model is not None and not checking:  # an operator's
+        # edit is always judged by the Inspector: its violations and repair go back to them
         verdict = llm_critic(ctx, layout)
         say(state, ctx, "critic", "orchestrator", "verdict", verdict)
         if verdict.get("passed"):
@@ -366,8 +385,11 @@ def inspect_node(state: RunState, runtime: Rt) -> dict[str, Any]:
             "violations": [{"constraint": "critic", "message": str(verdict.get("problems"))}],
             "phase": "replan",
         }
+    wanted = state.get("operator_sequence")
+    if wanted is not None and sorted(wanted) != sorted(layout.ids):
+        wanted = None  # a recovery changed the parts: the Inspector orders them
     try:  # the one verification of this layout; PRE_EXECUTE and EXECUTE take the job
-        job = ctx.jobs.job(ctx.cell, layout)
+        job = ctx.jobs.job(ctx.cell, layout, wanted)
         report = job.report
     except UnverifiedPlanError as exc:
         job = None
@@ -377,43 +399,172 @@ def inspect_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     say(state, ctx, "inspector", "orchestrator", "verification",
         {"passed": job is not None, "violations": violations[:20],
          "layout_hash": layout_hash(layout)})  # fmt: skip
-    return {
+    update: dict[str, Any] = {
         "violations": violations,
         "sequence": list(job.sequence) if job is not None else None,
         "phase": "review" if job is not None else "replan",
     }
+    pending = state.get("edit")
+    if pending and pending.get("status") == "checking":  # the operator's edit: theirs to judge
+        update["phase"] = "review"
+        if job is not None:
+            update["edit"] = None
+            update["edit_outcome"] = {"choice": "kept", "changes": []}
+        else:
+            update["edit"] = _refused_edit(pending, layout, report.violations, ctx.cell)
+            shown = {k: v for k, v in update["edit"].items() if k not in ("before", "operator")}
+            say(state, ctx, "orchestrator", "human", "edit_check", shown)
+    return update
 
 
 # -- HUMAN_REVIEW -----------------------------------------------------------------------------
+EDIT_CHOICES = ("repair", "undo", "replan", "edit", "reject")
+"""The answers to an edit the Inspector refused: take the minimal repair, undo the edit,
+replan from the edited layout, edit again, or reject the design."""
+
+
+def _start_edit(
+    state: RunState, ctx: RunContext, layout: Layout, edits: Any, base: dict[str, Any] | None
+) -> dict[str, Any]:
+    """Apply the operator's edits; their layout goes to INSPECT and comes back to them.
+
+    `base` is the edit being answered (its layout before the first edit stays the one an undo
+    returns to). A malformed batch is refused with a note, and nothing changes."""
+    try:
+        edited = edit(layout, edits, ctx.cell, sequence=state.get("sequence"))
+    except InputError as exc:
+        say(state, ctx, "orchestrator", "human", "edit_refused", {"error": str(exc)})
+        return {"notes": [f"edit refused: {exc}"], "review_note": str(exc)}
+    before = (base or {}).get("before") or layout.to_json_dict()
+    touched = sorted({*((base or {}).get("touched") or []), *edited.touched})
+    operator = edited.layout.to_json_dict()
+    return {
+        "layout": operator,
+        "operator_sequence": list(edited.sequence) if edited.sequence is not None else None,
+        "edit": {"status": "checking", "before": before, "operator": operator,
+                 "touched": touched, "removed": list(edited.removed),
+                 "sequence": list(edited.sequence) if edited.sequence is not None else None},
+        "edit_outcome": None, "review_note": None, "phase": "inspect",
+    }  # fmt: skip
+
+
+def _refused_edit(
+    pending: dict[str, Any], layout: Layout, violations: Sequence[Violation], cell: CellConfig
+) -> dict[str, Any]:
+    """The refused edit as the operator sees it: its violations, and the minimal repair (or
+    None), with the diff from their layout; for an order edit, the nearest valid order."""
+    wanted = pending.get("sequence")
+    before, _ = parse_layout(pending["before"], max_parts=cell.limits.max_parts)
+    touched = pending.get("touched") or ()
+    fix = repair_edit(layout, cell, touched=touched, sequence=wanted, original=before)
+    repair: dict[str, Any] | None = None
+    if fix is not None:
+        repair = {"layout": fix.layout.to_json_dict(), "sequence": list(fix.sequence),
+                  "changes": [c.model_dump(mode="json") for c in fix.changes],
+                  "kept": list(fix.kept), "summary": fix.describe()}  # fmt: skip
+    shown = [v.to_json_dict() for v in violations][:20]
+    out = {**pending, "status": "invalid", "violations": shown, "repair": repair}
+    if wanted is not None:
+        out["nearest_order"] = fix and list(fix.sequence)
+    return out
+
+
+def _outcome_notes(choice: str, changes: list[dict[str, Any]], summary: str | None = None) -> str:
+    from sdi.model.diff import PartChange, describe_diff
+
+    text = summary or describe_diff([PartChange.model_validate(c) for c in changes])
+    return f"your edit → {choice}: {'your layout kept' if text == 'unchanged' else text}"
+
+
+def _edit_review(state: RunState, ctx: RunContext, pending: dict[str, Any]) -> dict[str, Any]:
+    """An edit the Inspector refused: the operator chooses; nothing is approved unseen."""
+    request = {
+        "kind": "edit_review",
+        "layout": pending.get("operator"),
+        "violations": pending.get("violations"),
+        "repair": pending.get("repair"),
+        "nearest_order": pending.get("nearest_order"),
+        "choices": list(EDIT_CHOICES),
+        "refused": state.get("review_note"),
+    }
+    decision = interrupt(request)
+    say(state, ctx, "human", "orchestrator", "review", decision)
+    action = decision.get("action") if isinstance(decision, dict) else None
+    operator, _ = parse_layout(pending["operator"], max_parts=ctx.cell.limits.max_parts)
+    if action == "repair":
+        repair = pending.get("repair")
+        if not repair:
+            note = "no repair keeps this edit valid; answer undo, replan, edit or reject"
+            return {"review_note": note, "phase": "review"}
+        outcome = {"choice": "repair", "changes": repair["changes"], "summary": repair["summary"]}
+        update = {"layout": repair["layout"], "operator_sequence": repair["sequence"]}
+    elif action == "undo":
+        before, _ = parse_layout(pending["before"], max_parts=ctx.cell.limits.max_parts)
+        changes = [c.model_dump(mode="json") for c in layout_diff(operator, before)]
+        outcome = {"choice": "undo", "changes": changes}
+        update = {"layout": pending["before"], "operator_sequence": None}
+    elif action == "replan":
+        outcome = {"choice": "replan", "operator": pending["operator"]}  # diff once designed
+        update = {"operator_sequence": None}
+    elif action == "edit":
+        started = _start_edit(state, ctx, operator, decision.get("edits", []), pending)
+        return {**started, "phase": started.get("phase", "review")}
+    elif action == "reject":
+        return {"status": "rejected", "phase": "end", "edit": None}
+    else:
+        note = (f"the edited layout breaks {len(pending.get('violations') or [])} constraint(s); "
+                f"answer one of {', '.join(EDIT_CHOICES)}")  # fmt: skip
+        return {"review_note": note, "phase": "review"}
+    notes = list(state.get("notes", []))
+    if "changes" in outcome:
+        notes.append(_outcome_notes(action, outcome["changes"], outcome.get("summary")))
+    say(state, ctx, "orchestrator", "human", "edit_resolved", outcome)
+    return {**update, "edit": None, "edit_outcome": outcome, "notes": notes, "review_note": None,
+            "phase": "modify" if action == "replan" else "inspect"}  # fmt: skip
+
+
 def review_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
+    pending_edit = state.get("edit")
+    if pending_edit and pending_edit.get("status") == "invalid":
+        return _edit_review(state, ctx, pending_edit)
     if state.get("design_only"):
         return {"status": "verified", "phase": "end"}
-    if state.get("approve"):
+    update: dict[str, Any] = {}
+    outcome = state.get("edit_outcome")
+    if outcome and "changes" not in outcome and outcome.get("operator"):  # a replanned edit
+        operator, _ = parse_layout(outcome["operator"], max_parts=ctx.cell.limits.max_parts)
+        current = _layout(state, ctx.cell)
+        changes = [c.model_dump(mode="json") for c in layout_diff(operator, current or operator)]
+        outcome = {"choice": outcome.get("choice"), "changes": changes}
+        update["edit_outcome"] = outcome
+        update["notes"] = [*state.get("notes", []), _outcome_notes("replan", changes)]
+    pending = state.get("pending_approval")
+    if state.get("approve") and not pending:
         decision: Any = {"action": "approve", "by": "--approve-all"}
     else:
-        decision = interrupt(
-            {
-                "kind": "design_review",
-                "layout": state.get("layout"),
-                "sequence": state.get("sequence"),
-                "refused": state.get("review_note"),
-            }
-        )
+        request = {
+            "kind": "recovery_review" if pending else "design_review",
+            "layout": state.get("layout"),
+            "sequence": state.get("sequence"),
+            "refused": state.get("review_note"),
+        }
+        if pending:
+            request["recovery"] = pending
+        if outcome:
+            request["edit_outcome"] = outcome
+        decision = interrupt(request)
     say(state, ctx, "human", "orchestrator", "review", decision)
     action = decision.get("action") if isinstance(decision, dict) else None
     if action == "approve":
-        return {"phase": "pre_execute", "review_note": None}
+        return {**update, "phase": "pre_execute", "review_note": None, "pending_approval": None}
     if action == "edit":
         layout = _layout(state, ctx.cell)
         assert layout is not None
-        try:
-            edited = apply_edits(layout, decision.get("edits", []), ctx.cell)
-        except InputError as exc:
-            say(state, ctx, "orchestrator", "human", "edit_refused", {"error": str(exc)})
-            return {"notes": [f"edit refused: {exc}"], "review_note": str(exc), "phase": "review"}
-        return {"layout": edited.to_json_dict(), "phase": "inspect", "review_note": None}
-    return {"status": "rejected", "phase": "end"}
+        started = _start_edit(state, ctx, layout, decision.get("edits", []), None)
+        return {**update, "pending_approval": None, **started,
+                "phase": started.get("phase", "review")}  # fmt: skip
+    return {**update, "status": "rejected", "phase": "end"}
 
 
 # -- PRE_EXECUTE: plan motion once, store the record -----------------------------------------
@@ -541,26 +692,24 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         action = rule_route(state, method)
         if method.orchestration == "pge" and action in ("shift", "flatten", "relax"):
             action = "modify"
+    by_rules = ctx.model is None or method.orchestration not in ("langgraph", "hybrid")
     say(state, ctx, "orchestrator", "orchestrator", "route", {"action": action, "replan": replans})
     tried = [*state.get("tried", []), action]
     update: dict[str, Any] = {"replans": replans, "tried": tried}
     layout = _layout(state, ctx.cell)
-    failure = state.get("failure") or {}
-    scenario = SCENARIOS.get(failure.get("scenario") or "")
-    blocked = scenario.regions if scenario else ()
+    avoid = _avoid(state, ctx.cell)
+    update["avoid"] = avoid
+    blocked = _blocked(state, avoid)
     if action in ("shift", "flatten") and layout is not None:
+        spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
         try:
-            if action == "shift":
-                repaired = shift(layout, ctx.cell, blocked=blocked)
-            else:
-                limits = [r.z_min for r in blocked if r.z_min is not None]
-                repaired = flatten(
-                    layout, ctx.cell, z_max=min(limits) if limits else None, blocked=blocked
-                )
+            repaired, recovery = recover(action, layout, ctx.cell, blocked, spec)
         except InfeasibleError as exc:
-            return {**update, "notes": [f"{action}: {exc}"], "phase": "replan"}
-        # recovery output goes straight to the Inspector; the injected obstacle stays
-        return {**update, "layout": repaired.to_json_dict(), "failure": None, "phase": "inspect"}
+            update["notes"] = [*state.get("notes", []), f"{action}: {exc}"]
+            if by_rules:  # not tried, so not counted: the rules never choose it twice
+                update["replans"] = state.get("replans", 0)
+            return {**update, "phase": "replan"}
+        return {**update, **_recovered(state, ctx, layout, repaired, recovery), "phase": "inspect"}
     if action in ("shift", "flatten"):
         return {**update, "phase": "replan"}
     if action == "modify":
@@ -570,6 +719,47 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     if action == "escalate":
         return {**update, "phase": "failure_report"}
     return {**update, "status": "failure", "phase": "end"}
+
+
+def _avoid(state: RunState, cell: CellConfig) -> list[dict[str, Any]]:
+    """The places learned to avoid: the run's earlier ones, and the target of an IK failure no
+    injected region explains (one part's footprint there, for every height)."""
+    avoid = list(state.get("avoid") or [])
+    failure = state.get("failure") or {}
+    pose = failure.get("target_pose")
+    if failure.get("error_type") == "ik" and not failure.get("scenario") and pose:
+        x, y, half = float(pose[0]), float(pose[1]), cell.cube[0] / 2
+        region = Region(name=f"unreachable near ({x:.3f}, {y:.3f})", x_min=x - half,
+                        x_max=x + half, y_min=y - half, y_max=y + half)  # fmt: skip
+        data = region.model_dump(mode="json", exclude_none=True)
+        if data not in avoid:
+            avoid.append(data)
+    return avoid
+
+
+def _blocked(state: RunState, avoid: list[dict[str, Any]]) -> tuple[Region, ...]:
+    """Every region the run must keep out of: each injected fault's (they stay while the run
+    recovers, whichever one failed last) and the places learned to avoid."""
+    regions = [r for name in state.get("faults", []) for r in SCENARIOS[name].regions]
+    return (*regions, *(Region.model_validate(r) for r in avoid))
+
+
+def _recovered(
+    state: RunState, ctx: RunContext, before: Layout, after: Layout, outcome: RecoveryOutcome
+) -> dict[str, Any]:
+    """The state update of a recovery: the new layout, what changed (notes, `recoveries`, a
+    `recovery` event), and — when the shape changed — a review no `--approve-all` answers."""
+    data = outcome.model_dump(mode="json")
+    say(state, ctx, "orchestrator", "human", "recovery", data)
+    update: dict[str, Any] = {
+        "layout": after.to_json_dict(),
+        "failure": None,
+        "recoveries": [*(state.get("recoveries") or []), data],
+        "notes": [*state.get("notes", []), f"recovery: {outcome.summary}"],
+    }
+    if outcome.shape_changed:
+        update["pending_approval"] = data
+    return update
 
 
 def _inspected(state: RunState) -> tuple[Violation, ...] | None:
@@ -587,6 +777,17 @@ def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     layout = _layout(state, ctx.cell)
     designer = _designer(ctx)
     spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
+    failure = state.get("failure") or {}
+    if isinstance(designer, RuleDesigner) and layout is not None and failure:
+        # the rule-based replan (MultiAgent-RuleOrch): away from the regions that failed
+        avoid = _avoid(state, ctx.cell)
+        try:
+            repaired, recovery = rule_replan(layout, ctx.cell, _blocked(state, avoid))
+        except InfeasibleError as exc:
+            note = f"rule-based replan: {exc}"
+            return {"phase": "replan", "notes": [*state.get("notes", []), note], "avoid": avoid}
+        return {**_recovered(state, ctx, layout, repaired, recovery), "avoid": avoid,
+                "phase": "inspect"}  # fmt: skip
     if isinstance(designer, RuleDesigner) or layout is None:
         outcome = designer.design(spec, state["command"])
     else:
@@ -620,16 +821,10 @@ def failure_report_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     if action == "edit":
         layout = _layout(state, ctx.cell)
         if layout is not None:
-            try:
-                edited = apply_edits(layout, decision.get("edits", []), ctx.cell)
-            except InputError as exc:
-                say(state, ctx, "orchestrator", "human", "edit_refused", {"error": str(exc)})
-                return {"notes": [f"edit refused: {exc}"], "review_note": str(exc),
-                        "phase": "failure_report"}  # fmt: skip
-            return {
-                "layout": edited.to_json_dict(), "phase": "inspect", "replans": 0, "tried": [],
-                "failure": None, "review_note": None,
-            }  # fmt: skip
+            started = _start_edit(state, ctx, layout, decision.get("edits", []), None)
+            if "edit" not in started:  # refused as malformed: the report waits again
+                return {**started, "phase": "failure_report"}
+            return {**started, "replans": 0, "tried": [], "failure": None}
     if action == "retry":
         return {"phase": "plan", "replans": 0, "tried": [], "failure": None, "relaxed": False,
                 "review_note": None}  # fmt: skip
@@ -662,7 +857,7 @@ passes an empty design on to REPLAN and a timed-out one to the failure report.""
 ROUTES: dict[str, tuple[str, ...]] = {
     "plan": ("design", "end"),
     "inspect": ("review", "replan"),
-    "review": ("pre_execute", "inspect", "review", "end"),
+    "review": ("pre_execute", "inspect", "modify", "review", "end"),
     "pre_execute": ("confirm", "replan"),
     "confirm": ("execute", "review", "end"),
     "execute": ("replan", "end"),
