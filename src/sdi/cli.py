@@ -420,7 +420,11 @@ def bench(
     if out_file is not None:
         outputs.file(out_file, "--out")
     if report_dir is not None:
-        outputs.folder(report_dir, "--report", patterns=tuple(f"{s}.*" for s in suites))
+        outputs.folder(
+            report_dir,
+            "--report",
+            patterns=tuple(f"{s}.{ext}" for s in suites for ext in ("json", "md", "png")),
+        )
     all_jobs = plan_jobs(suites, methods, seeds, wanted)
     if not all_jobs:
         bad(f"no case of {suites} has an id in {wanted}", "--only")
