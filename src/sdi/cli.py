@@ -325,8 +325,9 @@ def bench(
         list[str] | None,
         typer.Option(
             "--method",
-            help="a method to run (repeatable; 'paper' = Rule, PGE, LG, Hybrid; 'all'); "
-            "default: the pipeline on commands, the paper's four on human-mods and failures",
+            help="a method to run (repeatable; 'pipeline' = no orchestrator; 'paper' = Rule, "
+            "PGE, LG, Hybrid; 'all'); default: the pipeline on commands, the paper's four on "
+            "human-mods and failures",
         ),
     ] = None,
     backend: Annotated[

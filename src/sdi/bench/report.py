@@ -28,39 +28,48 @@ def resolve_suites(name: str) -> list[str]:
     return [name]
 
 
-def resolve_methods(names: Sequence[str] | None) -> list[str] | None:
-    """``all`` → every method, ``paper`` → the four of Tables IV/V; unknown names refused."""
+PIPELINE = "pipeline"
+"""The method name of the plain pipeline (`sdi.pipeline.plan`, no orchestrator)."""
+
+
+def resolve_methods(names: Sequence[str] | None) -> list[str | None] | None:
+    """``all`` → every method, ``paper`` → the four of Tables IV/V, ``pipeline`` → None (the
+    plain pipeline); unknown names refused."""
     if not names:
         return None
-    out: list[str] = []
+    out: list[str | None] = []
     for name in names:
-        expanded = (
-            list(METHODS) if name == "all" else list(PAPER_METHODS) if name == "paper" else [name]
-        )
-        for m in expanded:
-            if m not in METHODS:
-                raise ValueError(f"unknown method {m!r}; choose from {[*METHODS, 'paper', 'all']}")
-            if m not in out:
-                out.append(m)
+        expanded: list[str | None]
+        if name == PIPELINE:
+            expanded = [None]
+        elif name in ("all", "paper"):
+            expanded = list(METHODS) if name == "all" else list(PAPER_METHODS)
+        elif name in METHODS:
+            expanded = [name]
+        else:
+            choices = [PIPELINE, *METHODS, "paper", "all"]
+            raise ValueError(f"unknown method {name!r}; choose from {choices}")
+        out += [m for m in expanded if m not in out]
     return out
 
 
 def plan_jobs(
     suites: Sequence[str],
-    methods: Sequence[str] | None,
+    methods: Sequence[str | None] | None,
     seeds: int,
     only: Sequence[str] | None = None,
 ) -> list[Job]:
-    """Every (case, method, seed) of the suites; `only` keeps the named case ids."""
+    """Every (case, method, seed) of the suites; `only` keeps the named case ids. The plain
+    pipeline has no review or recovery, so it is not run on human-mods and failures."""
     jobs = []
     for suite in suites:
         ms: list[str | None]
         if suite == "motion":
             ms = [None]
-        elif methods:
-            ms = list(methods)
+        elif suite == "commands":
+            ms = list(methods) if methods else [None]
         else:
-            ms = [None] if suite == "commands" else list(PAPER_METHODS)
+            ms = [m for m in methods or PAPER_METHODS if m is not None] or list(PAPER_METHODS)
         for case in load(suite):
             if only and case.id not in only:
                 continue
