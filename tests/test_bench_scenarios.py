@@ -358,3 +358,12 @@ def test_bench_writes_the_report_and_a_rerun_is_served_from_the_cache(tmp_path):
     assert "Remove middle cube from tower" in (report / "human-mods.md").read_text()
     again = CliRunner().invoke(cli.app, args)
     assert again.exit_code == 0 and "cached: 1 of 1 runs" in again.output
+
+
+def test_a_cache_that_cannot_be_written_does_not_stop_the_sweep(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("not a folder")
+    cache = ResultCache(blocker / "cache")
+    (r,) = sweep.sweep(_cheap_jobs(1), RULES, cache=cache)
+    assert r.outcome == "done" and r.fields["success"]
+    assert cache.error and "file" in cache.error

@@ -443,8 +443,9 @@ def bench(
             cached["n"] += from_cache
             progress.update(task, advance=1, description=f"{job.describe()}: {result.outcome}")
 
+        store = ResultCache(folder)
         results = sweep(all_jobs, config, workers=jobs, timeout=timeout,
-                        cache=ResultCache(folder), fresh=fresh, ray_address=ray,
+                        cache=store, fresh=fresh, ray_address=ray,
                         progress=tick)  # fmt: skip
     reports: dict[str, dict[str, Any]] = {}
     files: dict[Path, bytes | str] = {}
@@ -475,6 +476,8 @@ def bench(
                 _line(
                     out, r["outcome"], "red", f"{r['case']} {r['method'] or ''} {r['error'] or ''}"
                 )
+    if store.error:
+        _line(err, "warning:", "yellow", f"--cache: results not stored ({store.error})")
     if cached["n"]:
         _line(err, "cached:", "dim", f"{cached['n']} of {len(all_jobs)} runs read from {folder}")
 

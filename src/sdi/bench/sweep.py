@@ -54,12 +54,19 @@ class Job:
         return f"{self.suite} {self.case.id} {self.method or 'pipeline'} seed {self.seed}"
 
 
+PRESENTATION = ("cli.py", "bench/sweep.py", "bench/report.py", "bench/tables.py", "bench/charts.py")
+"""Modules that run, tabulate or draw results but do not make them: not in the code key."""
+
+
 @cache
 def code_key() -> str:
-    """A hash of SDI's source and suite files: results of other code are not reused."""
+    """A hash of SDI's source and suite files (all but `PRESENTATION`): results of other code
+    are not reused."""
     root = Path(__file__).resolve().parents[1]
     h = hashlib.sha256()
     for path in sorted([*root.rglob("*.py"), *root.rglob("*.toml")]):
+        if path.relative_to(root).as_posix() in PRESENTATION:
+            continue
         h.update(str(path.relative_to(root)).encode())
         h.update(path.read_bytes())
     return h.hexdigest()[:16]
@@ -82,6 +89,8 @@ class ResultCache:
 
     def __init__(self, folder: Path) -> None:
         self.folder = folder
+        self.error: str | None = None
+        """Why results could not be stored (the sweep goes on without the cache)."""
 
     def get(self, key: str) -> CaseResult | None:
         path = self.folder / f"{key}.json"
@@ -92,12 +101,17 @@ class ResultCache:
         return result if result.outcome in ("done", "n/a") else None
 
     def put(self, result: CaseResult) -> None:
-        if result.outcome not in ("done", "n/a"):
+        if result.outcome not in ("done", "n/a") or self.error is not None:
             return
-        self.folder.mkdir(parents=True, exist_ok=True)
         tmp = self.folder / f".{result.key}.{time.monotonic_ns()}.tmp"
-        tmp.write_text(result.model_dump_json(), encoding="utf-8")
-        tmp.replace(self.folder / f"{result.key}.json")
+        try:
+            self.folder.mkdir(parents=True, exist_ok=True)
+            tmp.write_text(result.model_dump_json(), encoding="utf-8")
+            tmp.replace(self.folder / f"{result.key}.json")
+        except OSError as exc:
+            self.error = f"{exc.filename or self.folder}: {exc.strerror or exc}"
+            with contextlib.suppress(OSError):
+                tmp.unlink()
 
 
 @contextlib.contextmanager
