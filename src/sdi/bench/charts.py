@@ -21,7 +21,8 @@ from sdi.bench.tables import SHORT
 def _bars(
     title: str, categories: list[str], series: dict[str, list[float]], ylabel: str, top: float
 ) -> bytes:
-    fig, ax = plt.subplots(figsize=(max(5.0, 0.9 * len(categories) * max(1, len(series))), 3.4))
+    width_in = min(10.0, max(5.0, 0.3 * len(categories) * max(1, len(series)) + 2.5))
+    fig, ax = plt.subplots(figsize=(width_in, 3.4))
     width = 0.8 / max(1, len(series))
     for k, (name, values) in enumerate(series.items()):
         xs = [i + (k - (len(series) - 1) / 2) * width for i in range(len(categories))]
@@ -32,7 +33,7 @@ def _bars(
     ax.set_ylabel(ylabel)
     ax.set_title(title)
     if len(series) > 1:
-        ax.legend(fontsize=8, loc="lower right")
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     fig.tight_layout()
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, metadata={"Software": None})
