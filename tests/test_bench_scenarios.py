@@ -335,6 +335,7 @@ def test_default_methods_per_suite_and_flag_values():
         (["--suite", "all", "--out", "x.json"], "--out"),
         (["--only", "Z99"], "--only"),
         (["--ray", " "], "--ray"),
+        (["--ray", "local", "--jobs", "2"], "--jobs"),
     ],
 )
 def test_bad_bench_flags_are_one_line_and_exit_2(args, field, tmp_path):
@@ -367,3 +368,14 @@ def test_a_cache_that_cannot_be_written_does_not_stop_the_sweep(tmp_path):
     (r,) = sweep.sweep(_cheap_jobs(1), RULES, cache=cache)
     assert r.outcome == "done" and r.fields["success"]
     assert cache.error and "file" in cache.error
+
+
+def test_ray_without_the_extra_is_a_one_line_error(tmp_path, monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "ray", None)  # as if the extra were not installed
+    args = ["bench", "--only", "A01", "--ray", "local", "--cache", str(tmp_path)]
+    result = CliRunner().invoke(cli.app, args)
+    assert result.exit_code == 2, result.output
+    assert "--ray" in result.output and "sdi[ray]" in result.output
+    assert "Traceback" not in result.output

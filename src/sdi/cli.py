@@ -413,6 +413,8 @@ def bench(
         bad(f"must be a number of seconds > 0, got {phase_seconds:g}", "--phase-seconds")
     if ray is not None and not ray.strip():
         bad("needs an address (host:port, ray://host:port or 'local')", "--ray")
+    if ray is not None and jobs > 1:
+        bad("runs on the Ray cluster's workers; drop --jobs (the local pool) or --ray", "--jobs")
     if out_file is not None and len(suites) > 1:
         bad("writes one suite's JSON; with --suite all use --report DIR", "--out")
     wanted = [c.strip() for c in only.split(",") if c.strip()] if only else None
