@@ -68,11 +68,15 @@ bench: $(STAMP) $(LOCAL_STAMP) $(TWIN_STAMP) browser
 	$(PY) benchmarks/plan_latency.py
 	$(PY) benchmarks/language.py --set all
 	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json --force
+	$(VENV)/bin/sdi bench --suite all --method pipeline --method paper --physics --jobs 2 \
+	  --report benchmarks/results/suites
 	$(PY) benchmarks/methods.py --backend rules
 	$(PY) benchmarks/methods.py --backend local --phase-seconds 60
 	$(PY) benchmarks/critic_ablation.py --backend local
 	$(PY) benchmarks/cell_motion.py
 	$(PY) benchmarks/approval_to_motion.py
+	$(PY) benchmarks/twin.py
+	$(PY) benchmarks/readme_tables.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache .mypy_cache .ruff_cache

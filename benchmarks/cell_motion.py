@@ -17,31 +17,17 @@ import sys
 import time
 from pathlib import Path
 
+from sdi.bench.scenarios import load
 from sdi.commission import commission, execute
 from sdi.errors import SDIError
 from sdi.pipeline import plan
 
 OUT = Path(__file__).parent / "results" / "cell_motion.json"
 
-TABLE_VI = [
-    ("simple single-arm", "single", "a 3-cube tower at x = 0.35"),
-    ("simple single-arm", "single", "a row of 3 cubes at x = 0.35"),
-    ("simple single-arm", "single", "a 4-cube tower at x = 0.4"),
-    ("simple single-arm", "single", "a 2 by 2 grid at x = 0.35"),
-    ("simple single-arm", "single", "a small pyramid at x = 0.35"),
-    ("simple single-arm", "single", "a row of 5 cubes along y at x = 0.3"),
-    ("complex single-arm", "single", "a 3-step staircase at x = 0.35"),
-    ("complex single-arm", "single", "a bridge at x = 0.35"),
-    ("complex single-arm", "single", "an L shape at x = 0.35"),
-    ("dual-arm", "dual", "a tower of 3 at x = 0.3 and a tower of 3 at x = 0.7"),
-    ("dual-arm", "dual", "a row of 3 at x = 0.3 and a row of 3 at x = 0.7"),
-    ("dual-arm", "dual", "a 2 by 2 grid at x = 0.3 and a tower of 2 at x = 0.7"),
-]
-LARGE = (
-    "25-step dual-arm",
-    "dual",
-    "a wall 5 long and 3 high at x = 0.3 and a wall 5 long and 2 high at x = 0.7",
-)
+TABLE_VI = [(c.category, c.mode, c.command) for c in load("motion") if not c.extra]
+"""The paper's 12 commands (`sdi/bench/suites/motion.toml`, also run by `sdi bench --suite
+motion`)."""
+LARGE = next((c.category, c.mode, c.command) for c in load("motion") if c.extra)
 
 
 def single_arm(layout):  # the IRB120 where it reaches everything, else the IRB1600

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from sdi.bench import shape_checks
 from sdi.bench import signatures as sg
 from sdi.bench import suite as suite_module
 from sdi.bench.runner import SuiteResult, run_suite
@@ -119,7 +120,7 @@ def test_suite_ids_and_texts_are_unique_and_well_formed():
 # What the judging modules may take from the judged code: the Layout and Part classes as
 # containers of raw poses, nothing else (no geometry helpers, no cell tables, no Designer or
 # Inspector). Their cached geometry attributes must not be read either.
-_JUDGES = (sg, suite_module)
+_JUDGES = (sg, suite_module, shape_checks)
 _FORBIDDEN_MODULES = ("sdi.design", "sdi.inspector", "sdi.model.cell")
 _CONTAINERS = {
     "sdi.model": {"Layout", "Part"},

@@ -455,7 +455,8 @@ def test_fuzz_every_subcommand(data):
     with tempfile.TemporaryDirectory() as tmp:
         base = Path(tmp)
         args = data.draw(invocations(base), label="args")
-        result = runner.invoke(cli.app, args, env={"SDI_DB": str(base / "default.sqlite")})
+        env = {"SDI_DB": str(base / "default.sqlite"), "SDI_BENCH_CACHE": str(base / "cache")}
+        result = runner.invoke(cli.app, args, env=env)
     FUZZ["examples"] += 1
     text = result.output + (result.stderr or "")
     crashed = result.exception is not None and not isinstance(result.exception, SystemExit)

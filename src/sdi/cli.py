@@ -310,35 +310,178 @@ def sequence_cmd(
 @app.command()
 def bench(
     out_file: Annotated[
-        Path | None, typer.Option("--out", help="write the results JSON here")
+        Path | None, typer.Option("--out", help="write the results JSON here (one suite)")
     ] = None,
     json_out: JsonOption = False,
     cell_path: CellOption = None,
     force: ForceOption = False,
+    suite: Annotated[
+        str,
+        typer.Option(
+            "--suite", help="commands | human-mods | failures | motion | all (default: commands)"
+        ),
+    ] = "commands",
+    method: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--method",
+            help="a method to run (repeatable; 'pipeline' = no orchestrator; 'paper' = Rule, "
+            "PGE, LG, Hybrid; 'all'); default: the pipeline on commands, the paper's four on "
+            "human-mods and failures",
+        ),
+    ] = None,
+    backend: Annotated[
+        str, typer.Option("--backend", help="rules (default; no model), local or openai")
+    ] = "rules",
+    jobs: Annotated[int, typer.Option("--jobs", help="local worker processes")] = 1,
+    ray: Annotated[
+        str | None,
+        typer.Option(
+            "--ray", metavar="ADDRESS", help="run on a Ray cluster ('local': a local instance)"
+        ),
+    ] = None,
+    seeds: Annotated[int, typer.Option("--seeds", help="seeds per case (0, 1, …)")] = 1,
+    timeout: Annotated[
+        float, typer.Option("--timeout", metavar="SECONDS", help="wall-clock limit per run")
+    ] = 600.0,
+    phase_seconds: Annotated[
+        float | None,
+        typer.Option("--phase-seconds", help="the orchestrator's per-phase limit, s"),
+    ] = None,
+    physics: Annotated[
+        bool,
+        typer.Option(
+            "--physics", help="assemble every successful layout in PyBullet: does it stand?"
+        ),
+    ] = False,
+    only: Annotated[
+        str | None, typer.Option("--only", help="comma-separated case ids (e.g. A01,H3)")
+    ] = None,
+    report_dir: Annotated[
+        Path | None,
+        typer.Option("--report", help="write <suite>.json, .md and .png into this folder"),
+    ] = None,
+    cache_dir: Annotated[
+        Path | None,
+        typer.Option(
+            "--cache",
+            help="cached results (default: $SDI_BENCH_CACHE or the user cache folder)",
+        ),
+    ] = None,
+    fresh: Annotated[
+        bool, typer.Option("--fresh", help="run every case again, ignoring cached results")
+    ] = False,
 ) -> None:
-    """Run the 70-command evaluation suite on the offline front end."""
-    from rich.progress import Progress
+    """Run evaluation suites (the paper's Tables II–VI) and print their tables."""
+    import os
 
-    from sdi.bench.runner import run_suite
-    from sdi.bench.suite import SUITE
+    from platformdirs import user_cache_dir
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
+    from sdi.bench.cases import RunConfig
+    from sdi.bench.charts import chart
+    from sdi.bench.report import (
+        plan_jobs,
+        resolve_methods,
+        resolve_suites,
+        suite_json,
+        suite_markdown,
+    )
+    from sdi.bench.sweep import ResultCache, sweep
+    from sdi.llm.backends import BACKENDS
+
+    def bad(message: str, option: str) -> NoReturn:
+        _bad_input(InputError(message, field=option), json_out)
+
+    try:
+        suites = resolve_suites(suite)
+    except ValueError as exc:
+        bad(str(exc), "--suite")
+    try:
+        methods = resolve_methods(method)
+    except ValueError as exc:
+        bad(str(exc), "--method")
+    if backend not in BACKENDS:
+        bad(f"unknown backend {backend!r}; choose from {sorted(BACKENDS)}", "--backend")
+    if jobs < 1:
+        bad(f"must be ≥ 1, got {jobs}", "--jobs")
+    if seeds < 1:
+        bad(f"must be ≥ 1, got {seeds}", "--seeds")
+    if not (math.isfinite(timeout) and timeout > 0):
+        bad(f"must be a number of seconds > 0, got {timeout:g}", "--timeout")
+    if phase_seconds is not None and not (math.isfinite(phase_seconds) and phase_seconds > 0):
+        bad(f"must be a number of seconds > 0, got {phase_seconds:g}", "--phase-seconds")
+    if ray is not None and not ray.strip():
+        bad("needs an address (host:port, ray://host:port or 'local')", "--ray")
+    if ray is not None and jobs > 1:
+        bad("runs on the Ray cluster's workers; drop --jobs (the local pool) or --ray", "--jobs")
+    if out_file is not None and len(suites) > 1:
+        bad("writes one suite's JSON; with --suite all use --report DIR", "--out")
+    wanted = [c.strip() for c in only.split(",") if c.strip()] if only else None
     cell = _cell(cell_path, json_out)
     outputs = Outputs(force=force)
     if out_file is not None:
         outputs.file(out_file, "--out")
-    with Progress(console=err, transient=True) as progress:
-        task = progress.add_task("commands", total=len(SUITE))
-        result = run_suite(cell, progress=lambda *_: progress.advance(task))
-    data = result.to_json_dict()
-    if out_file is not None:
-        outputs.commit({out_file: json.dumps(data, indent=2) + "\n"})
+    if report_dir is not None:
+        outputs.folder(
+            report_dir,
+            "--report",
+            patterns=tuple(f"{s}.{ext}" for s in suites for ext in ("json", "md", "png")),
+        )
+    all_jobs = plan_jobs(suites, methods, seeds, wanted)
+    if not all_jobs:
+        bad(f"no case of {suites} has an id in {wanted}", "--only")
+    folder = cache_dir or Path(
+        os.environ.get("SDI_BENCH_CACHE") or Path(user_cache_dir("sdi")) / "bench"
+    )
+    config = RunConfig(backend=backend, physics=physics, phase_seconds=phase_seconds, cell=cell)
+    columns = (TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+               TimeElapsedColumn())  # fmt: skip
+    cached = {"n": 0}
+    with Progress(*columns, console=err, transient=True) as progress:
+        task = progress.add_task("bench", total=len(all_jobs))
+
+        def tick(job: Any, result: Any, from_cache: bool) -> None:
+            cached["n"] += from_cache
+            progress.update(task, advance=1, description=f"{job.describe()}: {result.outcome}")
+
+        store = ResultCache(folder)
+        results = sweep(all_jobs, config, workers=jobs, timeout=timeout,
+                        cache=store, fresh=fresh, ray_address=ray,
+                        progress=tick)  # fmt: skip
+    reports: dict[str, dict[str, Any]] = {}
+    files: dict[Path, bytes | str] = {}
+    for name in suites:
+        mine = [r for r in results if r.suite == name]
+        data = suite_json(name, mine, config, seeds)
+        reports[name] = data
+        if report_dir is not None:
+            files[report_dir / f"{name}.json"] = json.dumps(data, indent=2) + "\n"
+            files[report_dir / f"{name}.md"] = suite_markdown(name, data) + "\n"
+            files[report_dir / f"{name}.png"] = chart(name, data["summary"])
+        if out_file is not None:
+            files[out_file] = json.dumps(data, indent=2) + "\n"
+    if files:
+        outputs.commit(files)
     if json_out:
-        _emit(data)
-    else:
-        out.print(result.markdown_table())
-        for record in data["commands"]:
-            if not record["accepted"]:
-                _line(out, "✗", "red", f"{record['id']} {record['text']!r}: {record['reason']}")
+        _emit(reports[suites[0]] if len(suites) == 1 else {"suites": reports})
+        return
+    for name, data in reports.items():
+        out.print(Text(f"{name} ({data['backend']}, {seeds} seed(s))", style="bold"))
+        out.print(Text(suite_markdown(name, data)), soft_wrap=True)
+        for r in data["results"]:
+            f = r["fields"]
+            if name == "commands" and r["outcome"] == "done" and not f.get("success"):
+                who = f" [{r['method']}]" if r["method"] else ""
+                _line(out, "✗", "red", f"{r['case']}{who} {f.get('text')!r}: {f.get('reason')}")
+            elif r["outcome"] in ("timeout", "error"):
+                _line(
+                    out, r["outcome"], "red", f"{r['case']} {r['method'] or ''} {r['error'] or ''}"
+                )
+    if store.error:
+        _line(err, "warning:", "yellow", f"--cache: results not stored ({store.error})")
+    if cached["n"]:
+        _line(err, "cached:", "dim", f"{cached['n']} of {len(all_jobs)} runs read from {folder}")
 
 
 FaultOption = Annotated[

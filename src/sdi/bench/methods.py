@@ -21,7 +21,7 @@ from sdi.llm.chat import ChatModel
 from sdi.model.cell import CellConfig
 from sdi.model.layout import parse_layout
 from sdi.orchestrator.methods import METHODS
-from sdi.orchestrator.runner import Orchestrator
+from sdi.orchestrator.runner import Orchestrator, RunStatus
 
 
 @dataclass(frozen=True)
@@ -77,6 +77,18 @@ def _one(
     model: ChatModel | None,
     cell: CellConfig,
 ) -> MethodRecord:
+    return run_one(orch, method, command, model, cell)[0]
+
+
+def run_one(
+    orch: Orchestrator,
+    method: str,
+    command: BenchCommand,
+    model: ChatModel | None,
+    cell: CellConfig,
+) -> tuple[MethodRecord, RunStatus]:
+    """Run one command through `orch` as `method` up to the verified design; the record and
+    the run's final status (its state holds the layout and sequence)."""
     before = model.usage.to_json_dict() if model is not None else {}
     start = time.perf_counter()
     status = orch.start(command.text, method=method, design_only=True)
@@ -99,7 +111,7 @@ def _one(
         except Exception as exc:  # a predicate crash is a failed check, not a crashed run
             reason = f"predicate raised {type(exc).__name__}: {exc}"
         accepted = reason is None
-    return MethodRecord(
+    record = MethodRecord(
         method=method,
         id=command.id,
         group=command.group,
@@ -114,6 +126,7 @@ def _one(
         reason=reason,
         spec_source=status.state.get("spec_source"),
     )
+    return record, status
 
 
 def summarise(records: Sequence[MethodRecord]) -> dict[str, Any]:

@@ -12,7 +12,7 @@ from typing import Any
 
 from sdi.bench.suite import GROUPS, SUITE, BenchCommand
 from sdi.model.cell import CellConfig
-from sdi.pipeline import plan
+from sdi.pipeline import PlanResult, plan
 
 
 @dataclass(frozen=True)
@@ -110,7 +110,11 @@ class SuiteResult:
 
 def run_command(command: BenchCommand, cell: CellConfig | None = None) -> CommandRecord:
     """Plan one command and judge its layout."""
-    result = plan(command.text, cell)
+    return judge(command, plan(command.text, cell))
+
+
+def judge(command: BenchCommand, result: PlanResult) -> CommandRecord:
+    """The record of a command planned as `result`: its status and the predicate's verdict."""
     reason: str | None
     if result.status != "success" or result.layout is None:
         reason = f"plan {result.status}: {result.error or 'no layout'}"
