@@ -18,7 +18,7 @@ from sdi.model.layout import parse_layout
 from sdi.orchestrator import Orchestrator
 from sdi.orchestrator.edits import edit
 from sdi.recovery.repair import nearest_order, repair_edit
-from sdi.spec import Spec, StructureSpec
+from sdi.spec import Spec, structure
 
 
 @pytest.fixture
@@ -29,7 +29,7 @@ def orch(tmp_path):
 
 
 def build(shape: str, **kw):
-    return compose(Spec(structures=(StructureSpec(shape=shape, **kw),)))
+    return compose(Spec(structures=(structure(shape, **kw),)))
 
 
 def positions(layout: dict) -> dict[str, list[float]]:

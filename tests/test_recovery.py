@@ -132,7 +132,7 @@ def test_shift_turns_when_only_a_turn_fits():
 def test_flatten_keeps_the_command_structure_first():
     from sdi.recovery import reshape
 
-    spec = Spec(structures=(StructureSpec(shape="tower", height=4, at_x=0.45, at_y=0.3),))
+    spec = Spec(structures=(structure("tower", height=4, at_x=0.45, at_y=0.3),))
     out = reshape(spec, compose(spec), z_max=0.15, blocked=(Region(z_min=0.15),))
     assert len(out.layout) == 4  # every commanded part is still there
     assert "→ 2 towers of 2+2 levels" in out.describe() and out.before == "tower (height 4)"
@@ -142,7 +142,7 @@ def test_flatten_keeps_the_command_structure_first():
 def test_flatten_that_changes_nothing_is_not_tried():
     from sdi.recovery import reshape
 
-    spec = Spec(structures=(StructureSpec(shape="tower", height=2),))
+    spec = Spec(structures=(structure("tower", height=2),))
     with pytest.raises(InfeasibleError) as info:
         reshape(spec, compose(spec), z_max=0.15)
     assert info.value.parameter == "z_max" and "same layout" in str(info.value)

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 from sdi.design.composer import compose
 from sdi.errors import InfeasibleError, SDIError
@@ -23,7 +24,7 @@ from sdi.model.layout import Layout
 from sdi.model.region import Region
 from sdi.recovery.flatten import flatten
 from sdi.recovery.shift import default_margin, shift_search
-from sdi.spec.structure_spec import Spec, StructureSpec
+from sdi.spec.structure_spec import Spec, StructureSpec, structure
 
 PARTS, FAMILY, HEIGHT = 0.5, 0.3, 0.2
 """Weights of the survival score: parts kept, shape family kept, height kept."""
@@ -50,16 +51,24 @@ class Reshaped:
 
 
 def _levels_of(s: StructureSpec) -> int | None:
+    height: int | None = getattr(s, "height", None)
     if s.shape == "tower":
-        return s.height or s.count
+        return height or getattr(s, "count", None)
     if s.shape == "staircase":
-        return s.steps
-    return s.height
+        return getattr(s, "steps", None)
+    return height
+
+
+def _with(s: StructureSpec, **update: Any) -> StructureSpec:
+    """`s` with slots changed (None: unset), validated as the family it then is."""
+    data = {**s.model_dump(exclude_none=True), **update}
+    shape = data.pop("shape")
+    return structure(shape, **{k: v for k, v in data.items() if v is not None})
 
 
 def _name(s: StructureSpec) -> str:
     dims = [f"{k} {v}" for k in ("count", "length", "width", "height", "steps") if
-            (v := getattr(s, k)) is not None]  # fmt: skip
+            (v := getattr(s, k, None)) is not None]  # fmt: skip
     return f"{s.shape} ({', '.join(dims)})" if dims else s.shape
 
 
@@ -68,32 +77,32 @@ def _candidates(s: StructureSpec, levels: int) -> list[tuple[list[StructureSpec]
     n = _levels_of(s)
     if n is None or n <= levels:
         return []
-    base = s.model_copy(update={"count": None, "height_m": None})
+    base = _with(s, count=None, height_m=None)
     out: list[tuple[list[StructureSpec], str, bool]] = []
     if s.shape == "tower":
         k = math.ceil(n / levels)
         heights = [n // k + (1 if i < n % k else 0) for i in range(k)]
-        towers = [base.model_copy(update={"height": h}) for h in heights]
+        towers = [_with(base, height=h) for h in heights]
         for i, t in enumerate(towers[1:], start=1):  # beside the first, one structure gap apart
-            towers[i] = t.model_copy(update={"at_x": None, "at_y": None, "region": None})
+            towers[i] = _with(t, at_x=None, at_y=None, region=None)
         out.append((towers, f"{k} towers of {'+'.join(map(str, heights))} levels beside each "
                             f"other ({n} parts)", True))  # fmt: skip
-        out.append(([base.model_copy(update={"height": levels})], f"a tower of {levels} levels "
+        out.append(([_with(base, height=levels)], f"a tower of {levels} levels "
                     f"({levels} parts)", True))  # fmt: skip
         if n % k == 0:
-            wall = base.model_copy(update={"shape": "wall", "length": k, "height": n // k})
+            wall = _with(base, shape="wall", length=k, height=n // k)
             out.append(([wall], f"a wall {k} long and {n // k} high ({n} parts)", False))
     elif s.shape == "wall" and s.length:
         length = math.ceil(s.length * n / levels)
-        out.append(([base.model_copy(update={"length": length, "height": levels})],
+        out.append(([_with(base, length=length, height=levels)],
                     f"a wall {length} long and {levels} high", True))  # fmt: skip
-        out.append(([base.model_copy(update={"height": levels})],
+        out.append(([_with(base, height=levels)],
                     f"a wall {s.length} long and {levels} high", True))  # fmt: skip
     elif s.shape == "staircase":
-        out.append(([base.model_copy(update={"steps": levels})],
+        out.append(([_with(base, steps=levels)],
                     f"a staircase of {levels} steps", True))  # fmt: skip
-    else:
-        out.append(([base.model_copy(update={"height": levels})],
+    elif "height" in type(s).model_fields:
+        out.append(([_with(base, height=levels)],
                     f"a {s.shape} {levels} levels high", True))  # fmt: skip
     return out
 
