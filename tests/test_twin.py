@@ -233,3 +233,30 @@ def test_cli_refuses_a_public_bind_without_a_token(tmp_path: Path):
     assert proc.returncode == 2 and "Traceback" not in proc.stderr
     assert len(lines) == 1 and "--host" in lines[0] and "--token" in lines[0]
     assert not (tmp_path / "r.sqlite").exists()
+
+
+def test_an_edit_refused_elsewhere_is_answered_in_the_twin(twin: Twin):
+    """The CLI and the twin share the run database: an invalid edit sent from the command
+    line pauses the run at `edit_review`, which the twin shows and answers."""
+    from sdi.orchestrator import Orchestrator
+
+    run_id = _review_run(twin)
+    cli = Orchestrator(db=twin.db)
+    try:
+        outside = [{"op": "move", "id": "c3", "position": [1.0, 0.3, 0.025]}]
+        status = cli.resume(run_id, {"action": "edit", "edits": outside})
+    finally:
+        cli.close()
+    assert status.waiting_for["kind"] == "edit_review"
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "edit_review" and view["review"] is None
+    assert {p["id"]: p["position"] for p in view["layout"]}["c3"] == [1.0, 0.3, 0.025]
+    assert any(v["constraint"] == "workspace" for v in view["waiting_for"]["violations"])
+    with pytest.raises(InputError) as info:
+        twin.resolve_edit(run_id, "t", "maybe")
+    assert info.value.field == "action"
+    twin.resolve_edit(run_id, "t", "undo")
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "design_review"
+    assert {p["id"]: p["position"] for p in view["review"]["parts"]}["c3"] == [0.45, 0.35, 0.025]

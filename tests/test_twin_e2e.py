@@ -148,11 +148,12 @@ def test_a_failure_the_recovery_cannot_fix_raises_the_failure_report(
         wait(page, "T.phase === 'design_review' && T.partIds.length === 8")
         # the operator accepts each design and record the recovery proposes, until it gives up
         for _ in range(8):
-            wait(page, "['design_review', 'pre_execute', 'failure_report'].includes(T.phase)", 600)
+            wait(page, "['design_review', 'recovery_review', 'pre_execute', 'failure_report']"
+                       ".includes(T.phase)", 600)  # fmt: skip
             phase = state(page, "T.phase")
             if phase == "failure_report":
                 break
-            if phase == "design_review":
+            if phase in ("design_review", "recovery_review"):
                 page.click("#accept")
             else:
                 wait(

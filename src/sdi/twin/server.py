@@ -8,7 +8,8 @@ database that the CLI shares, and be driven by end-to-end tests through the page
 - ``GET /api/scene`` the fixed scene; ``GET/POST /api/runs`` list runs / start one.
 - ``GET /api/runs/{id}`` the run's view; ``/timeline`` its commissioning record for the
   preview; ``/events?after=N`` its event stream.
-- ``POST /api/runs/{id}/lock|edit|accept|reject|confirm|failure`` the touch points.
+- ``POST /api/runs/{id}/lock|edit|accept|reject|confirm|edit-review|failure`` the touch
+  points.
 - ``WS /ws/runs/{id}`` new events as they are stored (samples of Q_exec at 10 Hz, never whole
   trajectories); the page answers with heartbeats that keep its edit lock.
 
@@ -194,6 +195,12 @@ def create_app(twin: Twin, *, token: str | None = None) -> FastAPI:
             twin.confirm, run_id, text(data, "tab"), text(data, "action"),
             record if isinstance(record, str) else None,
         )  # fmt: skip
+        return {"ok": True}
+
+    @app.post("/api/runs/{run_id}/edit-review")
+    async def edit_review(run_id: str, request: Request) -> dict[str, Any]:
+        data = await body(request)
+        twin.resolve_edit(run_id, text(data, "tab"), text(data, "action"))
         return {"ok": True}
 
     @app.post("/api/runs/{run_id}/failure")

@@ -39,6 +39,11 @@ CREATE TABLE IF NOT EXISTS twin_reviews (
 """
 
 
+REVIEWED = ("design_review", "recovery_review")
+"""Pauses that show a layout the operator may edit and accept (a recovery that changed the
+shape comes back as `recovery_review`, with what it changed)."""
+
+
 class LockedError(InputError):
     """Another tab holds the run's edit lock."""
 
@@ -151,7 +156,7 @@ class Twin:
         """The review session of a run waiting at design review (made or reloaded on demand)."""
         status = status or self._status(run_id)
         waiting = status.waiting_for or {}
-        if waiting.get("kind") != "design_review" or not waiting.get("layout"):
+        if waiting.get("kind") not in REVIEWED or not waiting.get("layout"):
             return None
         base = Layout.model_validate(waiting["layout"])
         base_hash = layout_hash(base)
@@ -218,6 +223,20 @@ class Twin:
             raise InputError(f"run {run_id} is not waiting at design review", field="run")
         return s
 
+    def resolve_edit(self, run_id: str, tab: str, action: str) -> None:
+        """Answer an edit the run's Inspector refused (made outside the twin, e.g. by
+        `sdi resume --edit`): take the minimal repair, undo it, replan, or reject."""
+        from sdi.orchestrator.graph import EDIT_CHOICES
+
+        self.lock(run_id, tab)
+        status = self._status(run_id)
+        if (status.waiting_for or {}).get("kind") != "edit_review":
+            raise InputError(f"run {run_id} has no refused edit to answer", field="run")
+        if action not in EDIT_CHOICES or action == "edit":
+            raise InputError("use repair, undo, replan or reject", field="action")
+        decision = {"action": action, "by": "twin"}
+        self._work(run_id, f"edit-{action}", lambda o: o.resume(run_id, decision))
+
     def edit(self, run_id: str, tab: str, op: dict[str, Any]) -> dict[str, Any]:
         s = self._review(run_id, tab)
         with self._lock:
@@ -254,7 +273,7 @@ class Twin:
             waiting = status.waiting_for or {}
             layout = waiting.get("layout")
             if (
-                waiting.get("kind") == "design_review"
+                waiting.get("kind") in REVIEWED
                 and layout is not None
                 and layout_hash(Layout.model_validate(layout)) == current
             ):
@@ -314,11 +333,9 @@ class Twin:
         session = self.session(run_id, status)
         layout = None
         if session is None and state.get("layout"):
-            layout = [
-                {"id": p["id"], "position": p["position"], "size": p["size"],
-                 "yaw_deg": round(yaw_deg(tuple(p.get("orientation", (1, 0, 0, 0)))), 3)}
-                for p in state["layout"]["objects"]
-            ]  # fmt: skip
+            layout = _parts(state["layout"])
+        if waiting.get("kind") == "edit_review" and session is None:
+            layout = _parts(waiting.get("layout"))
         waiting.pop("layout", None)
         history = self.bus.history(run_id)
         return {
@@ -372,6 +389,16 @@ class Twin:
 
     def events(self, run_id: str, after: int = 0) -> list[dict[str, Any]]:
         return [m.to_json_dict() for m in self.bus.history(run_id, after=after)]
+
+
+def _parts(layout: dict[str, Any] | None) -> list[dict[str, Any]] | None:
+    if not layout:
+        return None
+    return [
+        {"id": p["id"], "position": p["position"], "size": p["size"],
+         "yaw_deg": round(yaw_deg(tuple(p.get("orientation", (1, 0, 0, 0)))), 3)}
+        for p in layout["objects"]
+    ]  # fmt: skip
 
 
 def reading(state: dict[str, Any]) -> dict[str, Any] | None:

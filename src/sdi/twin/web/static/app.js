@@ -309,6 +309,8 @@ function phaseText(v) {
   if (v.busy) return `working: ${v.busy}…`;
   const k = v.waiting_for?.kind;
   if (k === "design_review") return "touch point 1 — design review";
+  if (k === "recovery_review") return "touch point 1 — a recovery changed the shape: review it";
+  if (k === "edit_review") return "touch point 1 — the edit breaks constraints: choose";
   if (k === "pre_execute") return "touch point 2 — approve the commissioning record";
   if (k === "resume_execution") return "execution was interrupted — approve to continue";
   if (k === "failure_report") return "touch point 3 — failure report";
@@ -340,6 +342,17 @@ function render() {
   $("failure-panel").hidden = v.waiting_for?.kind !== "failure_report" || !!v.busy;
   $("plan").disabled = false;
   if (review) renderReview(v.review);
+  const rec = v.waiting_for?.recovery;
+  $("recovery").hidden = !rec;
+  $("recovery").textContent = rec ? `recovery: ${rec.summary || JSON.stringify(rec)}` : "";
+  const er = v.waiting_for?.kind === "edit_review" && !v.busy;
+  $("edit-review-panel").hidden = !er;
+  if (er) {
+    const w = v.waiting_for;
+    $("edit-review").textContent = (w.violations || []).map((x) => `[${x.constraint}] ${x.message}`).join("; ") +
+      (w.repair ? ` — repair: ${w.repair.summary}` : " — no repair keeps it");
+    $("edit-repair").disabled = !w.repair;
+  }
   if (T.timeline) renderRecord();
   if (v.waiting_for?.kind === "failure_report") {
     const f = v.failure || {};
@@ -575,6 +588,9 @@ $("approve").onclick = async () => {
 };
 $("revise").onclick = async () => { await api(`/api/runs/${T.runId}/confirm`, { tab: TAB, action: "revise" }); T.timeline = null; await refresh(); };
 $("abort").onclick = async () => { await api(`/api/runs/${T.runId}/confirm`, { tab: TAB, action: "abort" }); await refresh(); };
+for (const a of ["repair", "undo", "replan", "reject"]) {
+  $(`edit-${a}`).onclick = async () => { await api(`/api/runs/${T.runId}/edit-review`, { tab: TAB, action: a }); await refresh(); };
+}
 $("retry").onclick = async () => { await api(`/api/runs/${T.runId}/failure`, { tab: TAB, action: "retry" }); await refresh(); };
 $("fail-abort").onclick = async () => { await api(`/api/runs/${T.runId}/failure`, { tab: TAB, action: "abort" }); await refresh(); };
 
