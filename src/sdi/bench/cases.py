@@ -256,7 +256,7 @@ on offer (the repair that keeps the edit), else the first offered."""
 
 
 def _choose(waiting: dict[str, Any]) -> dict[str, Any] | None:
-    options = waiting.get("options")
+    options = waiting.get("choices") or waiting.get("options")
     if not isinstance(options, list) or not options:
         return None
     names = [o.get("action") if isinstance(o, dict) else o for o in options]
@@ -301,7 +301,7 @@ def _human_mods(
             for _ in range(3):  # answer the choices a review offers after the edit, if any
                 waiting = s.waiting_for or {}
                 choice = _choose(waiting) if s.status == "paused" else None
-                if waiting.get("kind") != "design_review" or choice is None:
+                if waiting.get("kind") != "edit_review" or choice is None:
                     break
                 s = orch.resume(s.run_id, choice)
             waiting = s.waiting_for or {}
@@ -344,6 +344,10 @@ def _failures(
         orch = Orchestrator(db=Path(tmp) / "bench.sqlite", cell=cell, model=model)
         try:
             s = orch.start(case.command, method=method, faults=[case.scenario], approve=True)
+            asked = 0  # a recovery that changed the shape waits for the operator: approve it
+            while s.status == "paused" and (s.waiting_for or {}).get("kind") == "recovery_review":
+                asked += 1
+                s = orch.resume(s.run_id, {"action": "approve", "by": "bench"}, approve_all=True)
             events = orch.bus.history(s.run_id)
         finally:
             orch.close()
@@ -370,6 +374,7 @@ def _failures(
         "shape_kept": bool(recovered and final is not None and signature(final) is None),
         "changed": changed,
         "stated": bool(not changed or notes),
+        "asked_operator": asked,
         "tried": list(s.state.get("tried") or []),
         "notes": notes,
         "status": s.status,
