@@ -179,21 +179,31 @@ function drawParts(list, states) {
   drawLabels(list, states);
 }
 
+// Labels: each violating part names its broken constraints (always); with "order labels",
+// every part shows its place in the assembly order and its id.
 function drawLabels(list, states) {
   for (const l of labels) scene3.remove(l);
   labels = [];
-  if (!$("labels").checked) return;
+  T.labels = {};
+  const broken = {};
+  for (const v of (T.view?.review && !T.view.busy ? T.view.review.violations : [])) {
+    for (const id of v.objects) (broken[id] = broken[id] || new Set()).add(v.constraint);
+  }
   const order = (T.view && (T.view.review?.sequence || T.view.sequence)) || T.partIds;
   list.forEach((p) => {
     if (states[p.id] === "hidden") return;
-    const k = order.indexOf(p.id) + 1;
+    let text = $("labels").checked ? `${order.indexOf(p.id) + 1} · ${p.id}` : "";
+    if (broken[p.id]) text = `${text ? text + " · " : ""}${[...broken[p.id]].join(", ")}`;
+    if (!text) return;
+    T.labels[p.id] = text;
     const c = document.createElement("canvas");
-    c.width = 64; c.height = 32;
+    c.width = 256; c.height = 40;
     const g = c.getContext("2d");
-    g.fillStyle = "#222"; g.font = "bold 22px sans-serif"; g.textAlign = "center";
-    g.fillText(`${k}`, 32, 24);
+    g.fillStyle = broken[p.id] ? "#b71c1c" : "#222";
+    g.font = "bold 24px sans-serif"; g.textAlign = "center";
+    g.fillText(text, 128, 30);
     const sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map: new THREE.CanvasTexture(c), depthTest: false }));
-    sprite.scale.set(0.05, 0.025, 1);
+    sprite.scale.set(0.16, 0.025, 1);
     sprite.position.set(p.position[0], p.position[1], p.position[2] + p.size[2] / 2 + 0.02);
     scene3.add(sprite);
     labels.push(sprite);
