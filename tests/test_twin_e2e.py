@@ -52,7 +52,9 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         assert sorted(v["objects"]) == ["c2", "c3"]
         assert state(page, "T.partStates.c2") == "violating"
         assert state(page, "T.partStates.c3") == "violating"
-        assert "collision" in state(page, "T.labels.c2") and "collision" in state(page, "T.labels.c3")
+        assert "collision" in state(page, "T.labels.c2") and "collision" in state(
+            page, "T.labels.c3"
+        )
         assert state(page, "T.labels.c1") is None  # no label on a part that breaks nothing
         assert page.is_disabled("#accept")
         shot(page, shots / "2-collision.png")

@@ -362,8 +362,17 @@ class Twin:
 
     def timeline(self, run_id: str, rate_hz: float = 20.0) -> dict[str, Any]:
         """The commissioning record as the page plays it: each arm's Q_plan thinned to
-        `rate_hz`, when each part is gripped and released, the schedule and the makespan."""
-        record = self._orch.record(run_id)
+        `rate_hz`, when each part is gripped and released, the schedule and the makespan. The
+        record is the one awaiting approval, if any, else the last one approved."""
+        status = self._status(run_id)
+        waiting = status.waiting_for or {}
+        if waiting.get("kind") in ("pre_execute", "resume_execution"):
+            wanted = waiting.get("record_hash")
+        else:
+            wanted = status.state.get("approved_hash") or status.state.get("record_hash")
+        if not wanted:
+            raise InputError(f"run {run_id} has no commissioning record yet", field="run")
+        record = self._orch.records.get(run_id, str(wanted))
         body = record.body
         robots: dict[str, Any] = {}
         for name, tr in body["motion"]["trajectories"].items():

@@ -199,12 +199,15 @@ function drawLabels(list, states) {
     const c = document.createElement("canvas");
     c.width = 256; c.height = 40;
     const g = c.getContext("2d");
-    g.fillStyle = broken[p.id] ? "#b71c1c" : "#222";
     g.font = "bold 24px sans-serif"; g.textAlign = "center";
+    const w = Math.min(256, g.measureText(text).width + 12);
+    g.fillStyle = "rgba(255,255,255,0.85)";
+    g.fillRect(128 - w / 2, 4, w, 34);
+    g.fillStyle = broken[p.id] ? "#b71c1c" : "#222";
     g.fillText(text, 128, 30);
     const sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map: new THREE.CanvasTexture(c), depthTest: false }));
-    sprite.scale.set(0.16, 0.025, 1);
-    sprite.position.set(p.position[0], p.position[1], p.position[2] + p.size[2] / 2 + 0.02);
+    sprite.scale.set(0.24, 0.0375, 1);
+    sprite.position.set(p.position[0], p.position[1], p.position[2] + p.size[2] / 2 + 0.03);
     scene3.add(sprite);
     labels.push(sprite);
   });
@@ -291,8 +294,10 @@ async function refresh() {
   T.view = view;
   if (changed) refreshRuns();
   const kind = view.waiting_for?.kind;
-  if ((kind === "pre_execute" || kind === "resume_execution" || view.approved_hash) &&
-      (!T.timeline || T.timeline.record_hash !== (view.approved_hash || view.record_hash))) {
+  const confirming = kind === "pre_execute" || kind === "resume_execution";
+  // the record on screen: the one awaiting approval, else the one approved (and executed)
+  const wanted = confirming ? view.waiting_for.record_hash : view.approved_hash;
+  if (wanted && (!T.timeline || T.timeline.record_hash !== wanted)) {
     try { T.timeline = await api(`/api/runs/${T.runId}/timeline`); } catch (e) { T.timeline = null; }
     setupSlider();
   }
