@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import SpecError
+from sdi.spec import lexicon as lx
 
 _SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "\u00a0": " "}
 
@@ -40,6 +41,14 @@ _REFERENCE_NO = re.compile(
 
 
 _METRE_WORDS = [
+    # "6 in tall", "a row 10 in long": "in" after a number and before a dimension is inches
+    (
+        re.compile(
+            r"\b(\d+(?:\.\d+)?)\s*in\b(?=\.?\s*(?:tall|high|wide|long|deep|across|thick)\b)",
+            re.I,
+        ),
+        r"\1 inches",
+    ),
     (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
@@ -94,6 +103,16 @@ _SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
 
 
 _SLASHES = re.compile(r"\b\d+(?:/\d+)+\b(?!\s*(?:mm|cm|m)\b)")
+
+
+_COUNTED = "|".join(
+    sorted((w for w in {*lx.SHAPE_WORDS, *lx.PART_WORDS} if w.isalpha()), key=len, reverse=True)
+)
+# "build -2 towers": a count below zero (a coordinate "x = -0.2" is not a count)
+_NEGATIVE_COUNT = re.compile(
+    r"(?:^|(?<=[\s,;:(]))[-−](\d+)\s+(?:[a-z]+[- ])?(?:" + _COUNTED + r")s?\b",
+    re.IGNORECASE,
+)
 
 
 # The largest number a command may carry; beyond it nothing SDI builds is meant.
@@ -158,6 +177,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
                 f"numbers above {_LARGEST:g} are refused",
                 understood={"numbers": [m.group(0)]},
             )
+    neg = _NEGATIVE_COUNT.search(text)
+    if neg:
+        raise SpecError(
+            f"'{neg.group(0).strip()}': a count cannot be negative; say how many to build "
+            "(e.g. '2 towers')",
+            understood={"numbers": [neg.group(1)]},
+        )
     text = _LIST_ITEM.sub(" then ", text)  # "1) a tower\n2) another one …"
     text = _BULLET.sub(" , ", text)  # "- tower / - 4 cubes / - left side": one thing's details
     text = _ROBOT_NAME.sub(" the robot ", text)
