@@ -109,6 +109,9 @@ _REWRITES += [
 ]
 
 
+_ENCLOSURES = "|".join(
+    sorted((w for w, f in lx.SHAPE_WORDS.items() if f == "enclosure" and w.isalpha()), key=len)
+)
 _SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
 
 
@@ -116,8 +119,9 @@ _REWRITES += [
     # "anywhere except the back", "anywhere but on the left", "avoid the left side"
     (
         re.compile(
-            r"\b(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|away\s+from|"
-            r"avoid(?:ing)?)\s+(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|middle|centre|"
+            r"\b(?:anywhere\s+but|(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|"
+            r"away\s+from|avoid(?:ing)?))\s+(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|"
+            r"middle|centre|"
             r"center)(?:\s+side)?(?:\s+(?:or|and|nor)\s+(?:on\s+|in\s+|at\s+)?the\s+"
             r"(left|right|front|back)(?:\s+side)?)?\b",
             re.IGNORECASE,
@@ -238,8 +242,9 @@ _REWRITES += [
     # "a 3x3 grid without the middle cube": a ring
     (
         re.compile(
-            r"\b(grid|square|layer|slab|pad|patch|platform)\s+(?:of\s+cubes\s+)?without\s+"
-            r"(?:the\s+|a\s+)?(?:middle|centre|center|inner|central)(?:\s+(?:cube|one|part|piece))?",
+            r"\b(grid|square|layer|slab|pad|patch|platform)\s+(?:of\s+cubes\s+)?(?:without|minus|"
+            r"but\s+not|except(?:\s+for)?)\s+(?:the\s+|a\s+|its\s+)?(?:middle|centre|center|inner|"
+            r"central)(?:\s+(?:cube|one|part|piece))?",
             re.IGNORECASE,
         ),
         " hollow {0} ",
@@ -560,6 +565,16 @@ _REWRITES += [
         " {0} separate ",
         "",
     ),
+    # "4 separate single cubes in a line": each cube on its own, a part's width apart
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:separate|individual|"
+            r"loose)\s+(?:single\s+)?(cubes|blocks)\b(?!\s*,?\s*(?:spread|spaced|\d))",
+            re.IGNORECASE,
+        ),
+        " {0} {1} spaced 5 cm apart ",
+        "read '{0}' as each standing alone, a part's width apart",
+    ),
     (
         re.compile(
             r"\b(\d+|[a-z]+)\s+(?:cubes|parts|blocks)\s+in\s+(two|three|four|five|\d+)\s+rows\b",
@@ -585,8 +600,22 @@ _REWRITES += [
         " {0} ",
         "",
     ),
+    # "a pen that has a 3 by 3 floor": an enclosure's floor is its inside
     (
-        re.compile(r"\bwith\s+(?:a|an)\s+(\d+\s*x\s*\d+|\d+)\s+(?:bottom|footprint|foot)\b", re.I),
+        re.compile(
+            r"\b(" + _ENCLOSURES + r")\s+(?:with|(?:that|which)\s+has|having)\s+(?:a|an)\s+"
+            r"(\d+\s*(?:x|by)\s*\d+)\s+(?:floor|courtyard|yard)\b",
+            re.I,
+        ),
+        " {0} with a {1} space inside ",
+        "read '{0}' as the size of the inside",
+    ),
+    (
+        re.compile(
+            r"\b(?:with|(?:that|which)\s+has|having)\s+(?:a|an)\s+(\d+\s*(?:x|by)\s*\d+|\d+)\s+"
+            r"(?:bottom|footprint|foot|floor)\b",
+            re.I,
+        ),
         " with a {0} base ",
         "",
     ),
@@ -821,7 +850,29 @@ def _another(text: str) -> str:
     return _ANOTHER.sub(sub, text)
 
 
+# "two towers of 3, one at the far left, one at the far right" (handler: one item per copy)
+_DISTRIBUTE = re.compile(
+    r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
+    r"((?:\s+(?:of|with)\s+[\w\s-]+?)?)\s*[:,]\s*(one\s+[^.;]*)",
+    re.IGNORECASE,
+)
+
+
+_COMPARISON = re.compile(
+    r"\b(?:taller|shorter|higher|lower|bigger|smaller|wider|narrower|longer|larger|thicker|"
+    r"deeper|more|fewer|less)\s+(?:\w+\s+)?than\s+(?:the\s+|that\s+|those\s+|a\s+)?\w+",
+    re.IGNORECASE,
+)
+
+
+_BY_HOW_MUCH = re.compile(
+    r"\b(?:\d+|two|three|four|five|six)\s+(?:cubes?|parts?|blocks?|levels?|layers?)?\s*$",
+    re.IGNORECASE,
+)
+
+
 def rewrite(text: str, st: ReadState) -> str:
+    text = _DISTRIBUTE.sub(lambda m: HANDLERS["{distribute}"](m, st, ""), text)
     text = _another(text)
     if (
         _LEGS.search(text)
@@ -853,6 +904,15 @@ def rewrite(text: str, st: ReadState) -> str:
 
         text = pattern.sub(sub, text)
     text = _LEVEL_ORDINAL.sub(" on top ", text)
+    for c in _COMPARISON.finditer(text):
+        # "the left one taller than the right one": a comparison no rewrite turned into a value
+        # ("two cubes taller than the walls" is a difference the grammar reads, or whose
+        # number it reports unused)
+        if _BY_HOW_MUCH.search(text[: c.start()]):
+            continue
+        said = c.group(0).strip()
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': SDI did not read this comparison into a size")
     m = _OPEN.search(text)
     if m and not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", text.lower())
                      if w not in ("base", "bottom") and w not in lx.AMBIGUOUS_SHAPES):  # fmt: skip
