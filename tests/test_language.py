@@ -6,6 +6,8 @@ layout's geometry or the reading's account, not only the family names.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -418,3 +420,103 @@ def test_no_word_salad_crashes_the_front_end(tokens):
         assert "understood" in data and data["error"]
     if data["status"] == "success":
         assert result.reading is not None and result.reading.complete
+
+
+# -- constructions that must be read, or refused honestly ------------------------------------
+def test_a_negative_count_is_refused_but_a_negative_coordinate_is_not_a_count():
+    with pytest.raises(SpecError, match="cannot be negative"):
+        read("please make -3 walls")
+    assert read("a 2-cube tower at x = -0.1 m").spec.structures[0].at_x == pytest.approx(-0.1)
+    bullets = read("- row\n- 4 cubes\n- front side")  # list bullets are not minus signs
+    assert bullets.spec.structures[0].length == 4
+
+
+def test_anywhere_but_a_side_is_the_other_side():
+    r = read("anywhere but the left: a row of 3")
+    assert r.spec.structures[0].region == "right"
+
+
+def test_in_after_a_number_before_a_dimension_is_inches():
+    r = plan("a row, 8 in long")  # 8 inches = 0.2032 m: four 5 cm cubes
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 4
+
+
+def test_an_unread_comparison_is_never_a_silent_success():
+    r = plan("two rows, the front one longer than the back one")
+    assert r.status == "partial"
+    assert any("longer than" in n for n in r.notes)
+
+
+def test_a_difference_from_the_number_said_before_is_computed():
+    r = read("two stacks: one of 4, the other 2 more than that")
+    assert sorted(s.height for s in r.spec.structures) == [4, 6]
+
+
+def test_one_item_per_copy_shares_the_description_out():
+    r = read("three rows of 4, one on the left, one in the middle, one on the right")
+    assert [s.length for s in r.spec.structures] == [4, 4, 4]
+    assert [s.region for s in r.spec.structures] == ["left", "centre", "right"]
+
+
+def test_a_restated_value_in_a_later_clause_is_kept_and_a_different_one_reported():
+    assert read("a wall 3 long. THREE").spec.structures[0].length == 3
+    r = plan("a row of 6. 2")
+    assert r.status == "partial"
+
+
+def test_an_english_word_is_not_corrected_into_a_structure_with_another_first_letter():
+    with pytest.raises(SpecError):
+        read("shut the robot down")
+
+
+def test_spaced_out_with_several_structures_keeps_each_structure_whole():
+    r = read("a 2x2 pad and a row of 4, spaced out")
+    assert [s.shape for s in r.spec.structures] == ["grid", "row"]
+    assert all(getattr(s, "gap_m", None) is None for s in r.spec.structures)
+    one = read("a row of 4, spaced out")  # one structure: its parts apart
+    assert one.spec.structures[0].gap_m == pytest.approx(0.05)
+
+
+def test_separate_cubes_stand_apart():
+    r = plan("put three separate cubes in a row")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    xs = sorted(zip(lo[:, 0], hi[:, 0], strict=True))
+    ys = sorted(zip(lo[:, 1], hi[:, 1], strict=True))
+    assert len(lo) == 3
+    apart_x = all(b[0] - a[1] > 0.01 for a, b in itertools.pairwise(xs))
+    apart_y = all(b[0] - a[1] > 0.01 for a, b in itertools.pairwise(ys))
+    assert apart_x or apart_y
+
+
+def test_two_sizes_in_metres_go_to_two_sides_or_are_reported():
+    s = read("a slab 10 cm wide and 20 cm deep").spec.structures[0]
+    assert (s.width_m, s.length_m) == (pytest.approx(0.10), pytest.approx(0.20))
+    w = read("wall, height 10cm, length 30cm").spec.structures[0]
+    assert (w.height_m, w.length_m) == (pytest.approx(0.10), pytest.approx(0.30))
+
+
+def test_which_side_runs_left_to_right_is_read():
+    s = read("a 2 by 4 slab, long side left to right").spec.structures[0]
+    assert (s.length, s.width, s.axis) == (4, 2, "y")
+    t = read("a slab 10 cm wide (left to right) and 20 cm deep").spec.structures[0]
+    assert t.axis == "x"
+
+
+def test_a_slab_minus_its_middle_is_a_ring():
+    assert read("a 4x4 slab minus its middle").spec.structures[0].shape == "enclosure"
+
+
+def test_a_pens_floor_is_its_inside():
+    r = read("a 2-cube tower inside a pen that has a 2 by 2 floor")
+    pen = next(s for s in r.spec.structures if s.shape == "enclosure")
+    assert (pen.length, pen.width) == (4, 4)
+    assert len(r.spec.structures) == 2
+
+
+def test_one_behind_the_other_places_the_second_copy():
+    r = read("two rows of 3, one in front of the other")
+    assert [s.length for s in r.spec.structures] == [3, 3]
+    (rel,) = r.spec.relations
+    assert (rel.kind, rel.side) == ("next_to", "front")
