@@ -55,6 +55,17 @@ _METRE_WORDS = [
 ]
 
 
+# "a third of a metre", "3/10 of a metre", "two fifths of a meter"
+_FRACTION_TOP = {"a": "1", "an": "1", "one": "1", "two": "2", "three": "3", "four": "4"}
+_FRACTION_BOTTOM = {"half": "2", "halve": "2", "third": "3", "quarter": "4", "fourth": "4",
+                    "fifth": "5", "tenth": "10"}  # fmt: skip
+_FRACTION_OF_METRE = re.compile(
+    r"\b(\d+|an?|one|two|three|four)\s*(?:/\s*|\s)(\d+|halves|half|thirds?|quarters?|fourths?|"
+    r"fifths?|tenths?)\s+of\s+a\s+(?:metre|meter)\b",
+    re.IGNORECASE,
+)
+
+
 _LIST_ITEM = re.compile(
     r"(?:^|\n|(?<=[.;]))\s*\d+\)\s+(?=[A-Za-z])|(?:^|\n)\s*\d+\.\s+(?=[A-Za-z])"
 )
@@ -168,6 +179,18 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return " "
 
     text = _REFERENCE_NO.sub(reference, text)
+
+    def fraction(m: re.Match[str]) -> str:
+        top, bottom = m.group(1).lower(), m.group(2).lower()
+        num = float(_FRACTION_TOP.get(top, top))
+        den = float(_FRACTION_BOTTOM.get(bottom.rstrip("s"), bottom))
+        if den == 0:
+            return m.group(0)
+        metres = round(num / den, 4)
+        notes.append(f"read '{m.group(0).strip()}' as {metres:g} m")
+        return f" {metres:g} m "
+
+    text = _FRACTION_OF_METRE.sub(fraction, text)
     for pattern, repl in _METRE_WORDS:
         text = pattern.sub(repl, text)
     for m in re.finditer(r"\d+(?:\.\d+)?", text):
