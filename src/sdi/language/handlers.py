@@ -75,6 +75,13 @@ def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} "
 
 
+def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
+    said, groups = _said(m)
+    other = "front to back" if groups[0].split()[0] in ("left", "side") else "left to right"
+    st.notes.append(f"read '{said}' as running {other}")
+    return f" running {other} "
+
+
 _NEXT_ONE = re.compile(
     r"(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:one|the\s+other|another|the\s+(?:second|third|fourth|"
     r"last))\b",
@@ -167,6 +174,7 @@ HANDLERS: dict[str, Handler] = {
     "{arith}": _arith,
     "{more_like}": _more_like,
     "{distribute}": _distribute,
+    "{not_axis}": _not_axis,
     "{times}": _times,
     "{climb}": _climb,
     "{rows}": _rows,

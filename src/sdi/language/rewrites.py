@@ -851,6 +851,48 @@ def _another(text: str) -> str:
 
 
 # "two towers of 3, one at the far left, one at the far right" (handler: one item per copy)
+_REWRITES += [
+    # "directly behind it", "dead centre", "right next to": an intensifier of a place
+    (
+        re.compile(
+            r"\b(?:directly|immediately|dead|exactly|right|just|squarely)\s+(?=(?:behind|in\s+front|"
+            r"next\s+to|beside|to\s+(?:the\s+|its\s+)?(?:left|right)|on\s+top|above|atop|"
+            r"(?:in\s+the\s+)?(?:centre|center|middle))\b)",
+            re.IGNORECASE,
+        ),
+        "",
+        "",
+    ),
+    # "after that, the same again at the back right": another of the one before
+    (re.compile(r"\bapiece\b", re.IGNORECASE), " each ", ""),
+    # "a row that does not run left to right": the other horizontal direction
+    (
+        re.compile(
+            r"\b(?:that\s+|which\s+)?(?:does|do)\s+not\s+(?:run|go|extend|point|lie)\s+"
+            r"(?:from\s+)?(left\s+to\s+right|side\s+to\s+side|front\s+to\s+back|back\s+to\s+front)\b",
+            re.IGNORECASE,
+        ),
+        "{not_axis}",
+        "",
+    ),
+]
+
+
+_BEAMED = "|".join(
+    sorted(
+        (w for w, f in lx.SHAPE_WORDS.items() if f in ("bridge", "arch") and w.isalpha()),
+        key=len,
+        reverse=True,
+    )
+)
+# "gate with two posts 4 high and a beam over them": the beam is the gate's own
+_OWN_BEAM = re.compile(
+    r"\b(" + _BEAMED + r")\b([^.;]*?)\s*,?\s*\band\s+(?:a|one|the)\s+(?:beam|lintel|slab)\s+"
+    r"(?:on\s+top(?:\s+of\s+(?:them|the\s+\w+))?|over\s+(?:them|the\s+top)|across\s+"
+    r"(?:them|the\s+top)|spanning\s+them|resting\s+on\s+them)",
+    re.IGNORECASE,
+)
+_SAME_AGAIN = re.compile(r"\bthe\s+same\s+(?:again|once\s+more|one\s+again)\b", re.I)
 _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
     r"((?:\s+(?:of|with)\s+[\w\s-]+?)?)\s*[:,]\s*(one\s+[^.;]*)",
@@ -872,6 +914,13 @@ _BY_HOW_MUCH = re.compile(
 
 
 def rewrite(text: str, st: ReadState) -> str:
+    text = _SAME_AGAIN.sub(" another one ", text)
+
+    def own_beam(m: re.Match[str]) -> str:
+        st.notes.append(f"read '{m.group(0).strip()}' with the beam as the {m.group(1)}'s own")
+        return f"{m.group(1)}{m.group(2)} "
+
+    text = _OWN_BEAM.sub(own_beam, text)
     text = _DISTRIBUTE.sub(lambda m: HANDLERS["{distribute}"](m, st, ""), text)
     text = _another(text)
     if (
