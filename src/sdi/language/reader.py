@@ -96,6 +96,14 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         no_structure(st, doc, command)
     relations, drafts = relate(phrases, rels, structures, st)
     drafts = _apart(drafts, st)
+    touch = _TOUCHING.search(text)
+    if touch and any(r.kind == "next_to" for r in relations):
+        # "directly to its left, touching it": beside is always one structure gap away
+        st.material.append(touch.group(0))
+        st.notes.append(
+            f"ignored '{touch.group(0)}': a structure placed beside another stands one "
+            "structure gap away, not touching it"
+        )
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]
@@ -127,6 +135,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         ignored=tuple(dict.fromkeys(st.ignored)),
         material=tuple(dict.fromkeys(st.material)),
     )
+
+
+_TOUCHING = re.compile(
+    r"(?<!\bnot\s)(?<!\ball\s)\b(?:touching|flush\s+(?:with|against)|butting\s+(?:up\s+)?against|"
+    r"pressed\s+against|up\s+against)\b",
+    re.IGNORECASE,
+)
 
 
 def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
