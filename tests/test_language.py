@@ -520,3 +520,38 @@ def test_one_behind_the_other_places_the_second_copy():
     assert [s.length for s in r.spec.structures] == [3, 3]
     (rel,) = r.spec.relations
     assert (rel.kind, rel.side) == ("next_to", "front")
+
+
+def test_fractions_of_a_metre_and_a_half_dozen_are_numbers():
+    assert read("a tower 2 tenths of a metre tall").spec.structures[0].height_m == pytest.approx(
+        0.2
+    )
+    assert read("a row 1/4 of a meter long").spec.structures[0].length_m == pytest.approx(0.25)
+    assert read("a row of a half dozen cubes").spec.structures[0].length == 6
+
+
+def test_an_intensifier_before_a_place_is_not_a_lost_word():
+    r = plan("a row of 3 at the front and a 2-cube tower immediately behind it")
+    assert r.status == "success", r.notes
+    assert read("a 4-cube tower, dead centre").spec.structures[0].region == "centre"
+
+
+def test_the_same_again_is_another_one_and_apiece_is_each():
+    r = read("a row of 2 on the left. then the same again on the right")
+    assert [(s.length, s.region) for s in r.spec.structures] == [(2, "left"), (2, "right")]
+    assert [s.height for s in read("three towers, four cubes apiece").spec.structures] == [4] * 3
+
+
+def test_a_row_that_does_not_run_one_way_runs_the_other():
+    assert read("a row of 5 which does not run front to back").spec.structures[0].axis == "y"
+
+
+def test_touching_a_structure_placed_beside_is_reported():
+    r = plan("a 2-cube tower, and a 3-cube tower to its right, touching it")
+    assert r.status == "partial"
+    assert any("touching" in n for n in r.notes)
+
+
+def test_a_beam_over_a_gates_posts_is_the_gates_own():
+    r = read("an arch with two posts 3 high and a beam over them")
+    assert [s.shape for s in r.spec.structures] == ["arch"]
