@@ -555,3 +555,14 @@ def test_touching_a_structure_placed_beside_is_reported():
 def test_a_beam_over_a_gates_posts_is_the_gates_own():
     r = read("an arch with two posts 3 high and a beam over them")
     assert [s.shape for s in r.spec.structures] == ["arch"]
+
+
+def test_a_noun_that_means_tall_is_tall_unless_a_size_is_given():
+    assert read("build a spire").spec.structures[0].height == 6
+    assert read("a 4-cube obelisk").spec.structures[0].height == 4
+
+
+def test_a_sentence_marked_unrelated_is_not_read():
+    r = plan("Row 2 of the shelf is empty (unrelated). Please make a 3-cube tower.")
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.reading.spec.structures] == ["tower"]

@@ -66,6 +66,13 @@ _FRACTION_OF_METRE = re.compile(
 )
 
 
+_UNRELATED = re.compile(
+    r"[^.;!?\n]*\(\s*(?:unrelated|not\s+related|off[- ]topic|fyi|ignore(?:\s+this)?)\s*\)"
+    r"[^.;!?\n]*[.;!?\n]?",
+    re.IGNORECASE,
+)
+
+
 _LIST_ITEM = re.compile(
     r"(?:^|\n|(?<=[.;]))\s*\d+\)\s+(?=[A-Za-z])|(?:^|\n)\s*\d+\.\s+(?=[A-Za-z])"
 )
@@ -139,6 +146,12 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = text.replace("@", " at ")
     text = re.sub(r"\bontop\b", "on top", text, flags=re.IGNORECASE)
 
+    # "Line 3 down for maintenance (unrelated).": a sentence its writer marks as unrelated
+    def unrelated(m: re.Match[str]) -> str:
+        notes.append(f"ignored '{m.group(0).strip()}': marked as unrelated")
+        return " "
+
+    text = _UNRELATED.sub(unrelated, text)
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
     text = re.sub(
         r"\(([^()]*[A-Za-z][^()]*)\)",

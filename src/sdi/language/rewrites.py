@@ -892,6 +892,7 @@ _OWN_BEAM = re.compile(
     r"(?:them|the\s+top)|spanning\s+them|resting\s+on\s+them)",
     re.IGNORECASE,
 )
+_TALL_NOUN = re.compile(r"\b(?:skyscraper|spire|obelisk|high-?rise)s?\b", re.IGNORECASE)
 _SAME_AGAIN = re.compile(r"\bthe\s+same\s+(?:again|once\s+more|one\s+again)\b", re.I)
 _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
@@ -915,6 +916,11 @@ _BY_HOW_MUCH = re.compile(
 
 def rewrite(text: str, st: ReadState) -> str:
     text = _SAME_AGAIN.sub(" another one ", text)
+    tall = _TALL_NOUN.search(text)
+    if tall and not re.search(r"\d|\b(?:" + "|".join(lx.SIZE_WORDS) + r")\b", text, re.I):
+        # "a skyscraper": the noun says tall when nothing else gives a size
+        st.notes.append(f"read '{tall.group(0)}' as a tall tower")
+        text = text[: tall.start()] + "tall " + text[tall.start() :]
 
     def own_beam(m: re.Match[str]) -> str:
         st.notes.append(f"read '{m.group(0).strip()}' with the beam as the {m.group(1)}'s own")
