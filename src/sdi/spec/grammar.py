@@ -1268,6 +1268,20 @@ class _Parser:
                 )
             elif shape in ("wall",) and "length" not in p:
                 p["count"] = count
+            elif shape == "wall":
+                # "a wall of 18 cubes, 6 long": the courses its parts make
+                length, height = p["length"], p.get("height")
+                if height is None and isinstance(length, int) and count % length == 0:
+                    p["height"] = int(count // length)
+                    self.notes.append(
+                        f"{count:g} parts in courses of {length}: height {p['height']}"
+                    )
+                elif height is None or length * height != count:
+                    self.notes.append(
+                        f"ignored {count:g} parts: a wall {length} long"
+                        + (f" and {height} high" if height else "")
+                        + " does not have that many"
+                    )
             elif shape in (
                 "grid",
                 "block",
