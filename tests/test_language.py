@@ -566,3 +566,17 @@ def test_a_sentence_marked_unrelated_is_not_read():
     r = plan("Row 2 of the shelf is empty (unrelated). Please make a 3-cube tower.")
     assert r.status == "success", r.notes
     assert [s.shape for s in r.reading.spec.structures] == ["tower"]
+
+
+def test_a_walls_part_count_gives_its_courses_or_is_reported():
+    assert read("a wall of 12 cubes, 4 long").spec.structures[0].height == 3
+    assert read("wall: 10 cubes, 5 per course").spec.structures[0].height == 2
+    r = plan("a wall of 10 cubes, 4 long")
+    assert r.status == "partial"
+
+
+def test_all_the_way_round_and_bump_it_up_are_read():
+    r = read("a 2-cube tower with a ring all the way round it")
+    assert [x.kind for x in r.spec.relations] == ["around"]
+    w = read("a 4-long wall two courses tall, then bump it up another course")
+    assert w.spec.structures[0].height == 3

@@ -865,6 +865,27 @@ _REWRITES += [
     ),
     # "after that, the same again at the back right": another of the one before
     (re.compile(r"\bapiece\b", re.IGNORECASE), " each ", ""),
+    (re.compile(r"\ball\s+the\s+way\s+(?:a?round|about)\b", re.IGNORECASE), " around ", ""),
+    # "bump it up another course": raise it by another layer
+    (
+        re.compile(
+            r"\b(?:bump|jack|build|push|bring|take)\s+(it|them)\s+up\s+(?:by\s+)?(?:another|one\s+more|"
+            r"an\s+extra)\s+(?:course|layer|level|row|tier)\b",
+            re.IGNORECASE,
+        ),
+        " raise {0} by another layer ",
+        "",
+    ),
+    # "wall: eighteen cubes, 6 per course": the parts in each layer are its length
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+|parts?\s+)?"
+            r"(?:per|in\s+each|on\s+each|a)\s+(?:course|layer|row|level|tier)\b",
+            re.IGNORECASE,
+        ),
+        " {0} long ",
+        "read '{0}' as the parts in each course (its length)",
+    ),
     # "a row that does not run left to right": the other horizontal direction
     (
         re.compile(
