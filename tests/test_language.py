@@ -580,3 +580,16 @@ def test_all_the_way_round_and_bump_it_up_are_read():
     assert [x.kind for x in r.spec.relations] == ["around"]
     w = read("a 4-long wall two courses tall, then bump it up another course")
     assert w.spec.structures[0].height == 3
+
+
+def test_a_total_in_an_aside_is_checked_against_the_sides():
+    b = read("a 2x2 block, two layers (8 cubes)").spec.structures[0]
+    assert (b.length, b.width, b.height) == (2, 2, 2)
+    assert plan("a 2x2 block, two layers (8 cubes)").status == "success"
+    assert plan("a 2x2 block, two layers (10 cubes)").status == "partial"
+
+
+def test_no_gaps_in_it_is_not_a_relation():
+    r = plan("a 4x4 ring with no gaps in it")
+    assert r.status == "success", r.notes
+    assert not r.reading.spec.relations

@@ -153,6 +153,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     text = _UNRELATED.sub(unrelated, text)
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
+    # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before
+    text = re.sub(
+        r"\(\s*(\d+\s+(?:cubes?|parts?|blocks?|bricks?)(?:\s+(?:in\s+)?(?:all|total))?)\s*\)",
+        r" , \1 in total ",
+        text,
+        flags=re.IGNORECASE,
+    )
     text = re.sub(
         r"\(([^()]*[A-Za-z][^()]*)\)",
         lambda m: " " + m.group(1).replace(",", " and ") + " ",

@@ -409,7 +409,8 @@ _REWRITES += [
     (
         re.compile(
             r",?\s*\b(?:with\s+)?(?:no|without)\s+(?:any\s+)?(?:windows|gaps|holes|openings)"
-            r"(?:\s+(?:or|and)\s+(?:windows|gaps|holes|openings))*\b",
+            r"(?:\s+(?:or|and)\s+(?:windows|gaps|holes|openings))*\b"
+            r"(?:\s+(?:in|anywhere\s+in)\s+(?:it|them|its\s+\w+|the\s+\w+))?",
             re.IGNORECASE,
         ),
         " ",
