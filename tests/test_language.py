@@ -593,3 +593,16 @@ def test_no_gaps_in_it_is_not_a_relation():
     r = plan("a 4x4 ring with no gaps in it")
     assert r.status == "success", r.notes
     assert not r.reading.spec.relations
+
+
+def test_a_booth_or_hall_number_is_a_reference_not_a_size():
+    r = plan("for the expo (booth 7) an L shape")
+    assert r.status == "success", r.notes
+    assert r.reading.spec.structures[0].length != 7
+
+
+def test_a_block_the_same_size_on_every_side_is_a_cube_of_that_size():
+    b = read("a solid block 2 cubes on every side").spec.structures[0]
+    assert (b.length, b.width, b.height) == (2, 2, 2)
+    ring = read("a ring 4 cubes on each side").spec.structures[0]  # a flat family: its sides
+    assert (ring.length, ring.width) == (4, 4)

@@ -82,6 +82,17 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" running {other} "
 
 
+def _every_side(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a solid block 100 mm on every side": a block's sides all that size (a flat family's
+    "5 on each side" is read by the grammar)."""
+    said_words = re.findall(r"[a-z]+", m.string.lower())
+    if not any(lx.SHAPE_WORDS.get(w) == "block" for w in said_words):
+        return m.group(0)
+    v = m.group(1).strip()
+    st.notes.append(f"read '{m.group(0).strip()}' as {v} long, wide and high")
+    return f" {v} long , {v} wide and {v} high "
+
+
 _NEXT_ONE = re.compile(
     r"(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:one|the\s+other|another|the\s+(?:second|third|fourth|"
     r"last))\b",
@@ -175,6 +186,7 @@ HANDLERS: dict[str, Handler] = {
     "{more_like}": _more_like,
     "{distribute}": _distribute,
     "{not_axis}": _not_axis,
+    "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,
     "{rows}": _rows,

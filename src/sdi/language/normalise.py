@@ -34,7 +34,8 @@ _DECIMAL_COMMA = re.compile(r"(?<=[=:])\s*(-?\d+),(\d+)\b(?!\s*(?:,|and)\s*\d)")
 
 
 _REFERENCE_NO = re.compile(
-    r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell)\s*"
+    r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell|booth|"
+    r"hall|aisle|lab|desk|batch|lot|week|version|rev)\s*"
     r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b",
     re.IGNORECASE,
 )

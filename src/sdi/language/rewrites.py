@@ -915,6 +915,12 @@ _OWN_BEAM = re.compile(
     re.IGNORECASE,
 )
 _TALL_NOUN = re.compile(r"\b(?:skyscraper|spire|obelisk|high-?rise)s?\b", re.IGNORECASE)
+# "a solid block 100 mm on every side" (handler: all three sides of a block)
+_EVERY_SIDE = re.compile(
+    r"\b(\d+(?:\.\d+)?\s*(?:mm|cm|m)|\d+\s+(?:cubes?|parts?))\s+(?:on|along|to)\s+"
+    r"(?:every|each|all|a)\s+(?:sides?|edges?)\b",
+    re.IGNORECASE,
+)
 _SAME_AGAIN = re.compile(r"\bthe\s+same\s+(?:again|once\s+more|one\s+again)\b", re.I)
 _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
@@ -938,6 +944,7 @@ _BY_HOW_MUCH = re.compile(
 
 def rewrite(text: str, st: ReadState) -> str:
     text = _SAME_AGAIN.sub(" another one ", text)
+    text = _EVERY_SIDE.sub(lambda m: HANDLERS["{every_side}"](m, st, ""), text)
     tall = _TALL_NOUN.search(text)
     if tall and not re.search(r"\d|\b(?:" + "|".join(lx.SIZE_WORDS) + r")\b", text, re.I):
         # "a skyscraper": the noun says tall when nothing else gives a size
