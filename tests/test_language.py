@@ -606,3 +606,9 @@ def test_a_block_the_same_size_on_every_side_is_a_cube_of_that_size():
     assert (b.length, b.width, b.height) == (2, 2, 2)
     ring = read("a ring 4 cubes on each side").spec.structures[0]  # a flat family: its sides
     assert (ring.length, ring.width) == (4, 4)
+
+
+def test_nothing_taller_than_is_the_most_allowed():
+    r = read("nothing taller than 3 cubes: a 2 by 2 block")
+    assert r.spec.structures[0].height == 3
+    assert plan("nothing taller than 3 cubes: a 2 by 2 block").status == "success"

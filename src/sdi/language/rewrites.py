@@ -209,7 +209,7 @@ _REWRITES += [
     # "no taller than 2 cubes" → 2 cubes high; "no more than 3 steps" → 3 steps
     (
         re.compile(
-            r"\b(?:no|not)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
+            r"\b(?:no|not|nothing|none)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
             r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
             re.IGNORECASE,
         ),
