@@ -612,3 +612,12 @@ def test_nothing_taller_than_is_the_most_allowed():
     r = read("nothing taller than 3 cubes: a 2 by 2 block")
     assert r.spec.structures[0].height == 3
     assert plan("nothing taller than 3 cubes: a 2 by 2 block").status == "success"
+
+
+def test_a_staircase_that_does_not_climb_one_way_climbs_the_other():
+    s = read("a staircase of 3 that does not go up towards the back").spec.structures[0]
+    assert (s.axis, s.yaw_deg) == ("x", 180.0)
+    r = plan("a staircase of 3 that does not go up towards the back")
+    lo, hi = boxes(r)
+    top = int(np.argmax(hi[:, 2]))
+    assert lo[top, 0] == pytest.approx(lo[:, 0].min())  # the highest step is at the front

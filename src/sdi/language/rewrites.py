@@ -161,6 +161,16 @@ _REWRITES += [
         " {0} {1}{2} on the left and another {1}{2} on the right ",
         "",
     ),
+    # "a staircase that does not go up towards the back": it climbs the other way
+    (
+        re.compile(
+            r"\b(?:that\s+|which\s+)?(?:does|do)\s+not\s+(?:go\s+up|climb|rise|ascend|lead\s+up)\s+"
+            r"(?:towards?|to)\s+the\s+(back|front|left|right)\b",
+            re.IGNORECASE,
+        ),
+        " climbing towards the {opposite} ",
+        "read '{0}' as climbing towards the {opposite}",
+    ),
     (
         re.compile(
             r",?\s*\b(?:climbing|rising|ascending|going\s+up|stepping\s+up)\s+(?:to(?:wards)?|toward|"
