@@ -6,6 +6,8 @@ layout's geometry or the reading's account, not only the family names.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -418,3 +420,204 @@ def test_no_word_salad_crashes_the_front_end(tokens):
         assert "understood" in data and data["error"]
     if data["status"] == "success":
         assert result.reading is not None and result.reading.complete
+
+
+# -- constructions that must be read, or refused honestly ------------------------------------
+def test_a_negative_count_is_refused_but_a_negative_coordinate_is_not_a_count():
+    with pytest.raises(SpecError, match="cannot be negative"):
+        read("please make -3 walls")
+    assert read("a 2-cube tower at x = -0.1 m").spec.structures[0].at_x == pytest.approx(-0.1)
+    bullets = read("- row\n- 4 cubes\n- front side")  # list bullets are not minus signs
+    assert bullets.spec.structures[0].length == 4
+
+
+def test_anywhere_but_a_side_is_the_other_side():
+    r = read("anywhere but the left: a row of 3")
+    assert r.spec.structures[0].region == "right"
+
+
+def test_in_after_a_number_before_a_dimension_is_inches():
+    r = plan("a row, 8 in long")  # 8 inches = 0.2032 m: four 5 cm cubes
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 4
+
+
+def test_an_unread_comparison_is_never_a_silent_success():
+    r = plan("two rows, the front one longer than the back one")
+    assert r.status == "partial"
+    assert any("longer than" in n for n in r.notes)
+
+
+def test_a_difference_from_the_number_said_before_is_computed():
+    r = read("two stacks: one of 4, the other 2 more than that")
+    assert sorted(s.height for s in r.spec.structures) == [4, 6]
+
+
+def test_one_item_per_copy_shares_the_description_out():
+    r = read("three rows of 4, one on the left, one in the middle, one on the right")
+    assert [s.length for s in r.spec.structures] == [4, 4, 4]
+    assert [s.region for s in r.spec.structures] == ["left", "centre", "right"]
+
+
+def test_a_restated_value_in_a_later_clause_is_kept_and_a_different_one_reported():
+    assert read("a wall 3 long. THREE").spec.structures[0].length == 3
+    r = plan("a row of 6. 2")
+    assert r.status == "partial"
+
+
+def test_an_english_word_is_not_corrected_into_a_structure_with_another_first_letter():
+    with pytest.raises(SpecError):
+        read("shut the robot down")
+
+
+def test_spaced_out_with_several_structures_keeps_each_structure_whole():
+    r = read("a 2x2 pad and a row of 4, spaced out")
+    assert [s.shape for s in r.spec.structures] == ["grid", "row"]
+    assert all(getattr(s, "gap_m", None) is None for s in r.spec.structures)
+    one = read("a row of 4, spaced out")  # one structure: its parts apart
+    assert one.spec.structures[0].gap_m == pytest.approx(0.05)
+
+
+def test_separate_cubes_stand_apart():
+    r = plan("put three separate cubes in a row")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    xs = sorted(zip(lo[:, 0], hi[:, 0], strict=True))
+    ys = sorted(zip(lo[:, 1], hi[:, 1], strict=True))
+    assert len(lo) == 3
+    apart_x = all(b[0] - a[1] > 0.01 for a, b in itertools.pairwise(xs))
+    apart_y = all(b[0] - a[1] > 0.01 for a, b in itertools.pairwise(ys))
+    assert apart_x or apart_y
+
+
+def test_two_sizes_in_metres_go_to_two_sides_or_are_reported():
+    s = read("a slab 10 cm wide and 20 cm deep").spec.structures[0]
+    assert (s.width_m, s.length_m) == (pytest.approx(0.10), pytest.approx(0.20))
+    w = read("wall, height 10cm, length 30cm").spec.structures[0]
+    assert (w.height_m, w.length_m) == (pytest.approx(0.10), pytest.approx(0.30))
+
+
+def test_which_side_runs_left_to_right_is_read():
+    s = read("a 2 by 4 slab, long side left to right").spec.structures[0]
+    assert (s.length, s.width, s.axis) == (4, 2, "y")
+    t = read("a slab 10 cm wide (left to right) and 20 cm deep").spec.structures[0]
+    assert t.axis == "x"
+
+
+def test_a_slab_minus_its_middle_is_a_ring():
+    assert read("a 4x4 slab minus its middle").spec.structures[0].shape == "enclosure"
+
+
+def test_a_pens_floor_is_its_inside():
+    r = read("a 2-cube tower inside a pen that has a 2 by 2 floor")
+    pen = next(s for s in r.spec.structures if s.shape == "enclosure")
+    assert (pen.length, pen.width) == (4, 4)
+    assert len(r.spec.structures) == 2
+
+
+def test_one_behind_the_other_places_the_second_copy():
+    r = read("two rows of 3, one in front of the other")
+    assert [s.length for s in r.spec.structures] == [3, 3]
+    (rel,) = r.spec.relations
+    assert (rel.kind, rel.side) == ("next_to", "front")
+
+
+def test_fractions_of_a_metre_and_a_half_dozen_are_numbers():
+    assert read("a tower 2 tenths of a metre tall").spec.structures[0].height_m == pytest.approx(
+        0.2
+    )
+    assert read("a row 1/4 of a meter long").spec.structures[0].length_m == pytest.approx(0.25)
+    assert read("a row of a half dozen cubes").spec.structures[0].length == 6
+
+
+def test_an_intensifier_before_a_place_is_not_a_lost_word():
+    r = plan("a row of 3 at the front and a 2-cube tower immediately behind it")
+    assert r.status == "success", r.notes
+    assert read("a 4-cube tower, dead centre").spec.structures[0].region == "centre"
+
+
+def test_the_same_again_is_another_one_and_apiece_is_each():
+    r = read("a row of 2 on the left. then the same again on the right")
+    assert [(s.length, s.region) for s in r.spec.structures] == [(2, "left"), (2, "right")]
+    assert [s.height for s in read("three towers, four cubes apiece").spec.structures] == [4] * 3
+
+
+def test_a_row_that_does_not_run_one_way_runs_the_other():
+    assert read("a row of 5 which does not run front to back").spec.structures[0].axis == "y"
+
+
+def test_touching_a_structure_placed_beside_is_reported():
+    r = plan("a 2-cube tower, and a 3-cube tower to its right, touching it")
+    assert r.status == "partial"
+    assert any("touching" in n for n in r.notes)
+
+
+def test_a_beam_over_a_gates_posts_is_the_gates_own():
+    r = read("an arch with two posts 3 high and a beam over them")
+    assert [s.shape for s in r.spec.structures] == ["arch"]
+
+
+def test_a_noun_that_means_tall_is_tall_unless_a_size_is_given():
+    assert read("build a spire").spec.structures[0].height == 6
+    assert read("a 4-cube obelisk").spec.structures[0].height == 4
+
+
+def test_a_sentence_marked_unrelated_is_not_read():
+    r = plan("Row 2 of the shelf is empty (unrelated). Please make a 3-cube tower.")
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.reading.spec.structures] == ["tower"]
+
+
+def test_a_walls_part_count_gives_its_courses_or_is_reported():
+    assert read("a wall of 12 cubes, 4 long").spec.structures[0].height == 3
+    assert read("wall: 10 cubes, 5 per course").spec.structures[0].height == 2
+    r = plan("a wall of 10 cubes, 4 long")
+    assert r.status == "partial"
+
+
+def test_all_the_way_round_and_bump_it_up_are_read():
+    r = read("a 2-cube tower with a ring all the way round it")
+    assert [x.kind for x in r.spec.relations] == ["around"]
+    w = read("a 4-long wall two courses tall, then bump it up another course")
+    assert w.spec.structures[0].height == 3
+
+
+def test_a_total_in_an_aside_is_checked_against_the_sides():
+    b = read("a 2x2 block, two layers (8 cubes)").spec.structures[0]
+    assert (b.length, b.width, b.height) == (2, 2, 2)
+    assert plan("a 2x2 block, two layers (8 cubes)").status == "success"
+    assert plan("a 2x2 block, two layers (10 cubes)").status == "partial"
+
+
+def test_no_gaps_in_it_is_not_a_relation():
+    r = plan("a 4x4 ring with no gaps in it")
+    assert r.status == "success", r.notes
+    assert not r.reading.spec.relations
+
+
+def test_a_booth_or_hall_number_is_a_reference_not_a_size():
+    r = plan("for the expo (booth 7) an L shape")
+    assert r.status == "success", r.notes
+    assert r.reading.spec.structures[0].length != 7
+
+
+def test_a_block_the_same_size_on_every_side_is_a_cube_of_that_size():
+    b = read("a solid block 2 cubes on every side").spec.structures[0]
+    assert (b.length, b.width, b.height) == (2, 2, 2)
+    ring = read("a ring 4 cubes on each side").spec.structures[0]  # a flat family: its sides
+    assert (ring.length, ring.width) == (4, 4)
+
+
+def test_nothing_taller_than_is_the_most_allowed():
+    r = read("nothing taller than 3 cubes: a 2 by 2 block")
+    assert r.spec.structures[0].height == 3
+    assert plan("nothing taller than 3 cubes: a 2 by 2 block").status == "success"
+
+
+def test_a_staircase_that_does_not_climb_one_way_climbs_the_other():
+    s = read("a staircase of 3 that does not go up towards the back").spec.structures[0]
+    assert (s.axis, s.yaw_deg) == ("x", 180.0)
+    r = plan("a staircase of 3 that does not go up towards the back")
+    lo, hi = boxes(r)
+    top = int(np.argmax(hi[:, 2]))
+    assert lo[top, 0] == pytest.approx(lo[:, 0].min())  # the highest step is at the front

@@ -63,11 +63,66 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
 def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
     said, groups = _said(m)
     a_, b_ = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
+    if groups[2] in ("that", "this", "it", "those", "them"):
+        # "one of 2, the other 3 more than that": the number said last before it
+        before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
+        said_before = [w for w in words_to_numbers(before) if w.isdigit()]
+        b_ = said_before[-1] if said_before else b_
     if not (a_.isdigit() and b_.isdigit()):
         return m.group(0)
     value = int(b_) + (int(a_) if groups[1] == "more" else -int(a_))
     st.notes.append(f"read '{said}' as {value}")
     return f" {value} "
+
+
+def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
+    said, groups = _said(m)
+    other = "front to back" if groups[0].split()[0] in ("left", "side") else "left to right"
+    st.notes.append(f"read '{said}' as running {other}")
+    return f" running {other} "
+
+
+def _every_side(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a solid block 100 mm on every side": a block's sides all that size (a flat family's
+    "5 on each side" is read by the grammar)."""
+    said_words = re.findall(r"[a-z]+", m.string.lower())
+    if not any(lx.SHAPE_WORDS.get(w) == "block" for w in said_words):
+        return m.group(0)
+    v = m.group(1).strip()
+    st.notes.append(f"read '{m.group(0).strip()}' as {v} long, wide and high")
+    return f" {v} long , {v} wide and {v} high "
+
+
+_NEXT_ONE = re.compile(
+    r"(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:one|the\s+other|another|the\s+(?:second|third|fourth|"
+    r"last))\b",
+    re.IGNORECASE,
+)
+
+
+_ONE_THE_OTHER = re.compile(
+    r"((?:\w+\s+)?(?:behind|in\s+front\s+of|next\s+to|beside|on\s+top\s+of|on|atop|"
+    r"(?:to\s+the\s+)?(?:left|right)\s+of))\s+the\s+other(?:\s+one)?(.*)",
+    re.IGNORECASE,
+)
+
+
+def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
+    """One item per copy ("two towers of 3, one at the far left, one at the far right"), each
+    with the shared description; left as it is when the items do not match the count."""
+    said, groups = _said(m)
+    n_ = words_to_numbers([groups[0]])[0]
+    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[3:])]
+    noun = f"{m.group(2) or ''}{m.group(3)}{(m.group(4) or '').rstrip()}"
+    pair = _ONE_THE_OTHER.fullmatch(items[0]) if len(items) == 1 else None
+    if pair and n_ == "2":
+        # "two towers of 3, one behind the other": the second placed by the first
+        st.notes.append(f"read '{said}' as two {m.group(3)}s, the second {pair.group(1)} the first")
+        return f" a {noun} and a {noun} {pair.group(1)} it {pair.group(2)} "
+    if not n_.isdigit() or int(n_) != len(items) or not all(items):
+        return m.group(0)
+    st.notes.append(f"read '{said}' as {n_} {m.group(3)}s, one each")
+    return " " + " and ".join(f"a {noun} {item}" for item in items) + " "
 
 
 def _more_like(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -129,6 +184,9 @@ HANDLERS: dict[str, Handler] = {
     "{placement}": _placement,
     "{arith}": _arith,
     "{more_like}": _more_like,
+    "{distribute}": _distribute,
+    "{not_axis}": _not_axis,
+    "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,
     "{rows}": _rows,

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import SpecError
+from sdi.spec import lexicon as lx
 
 _SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "\u00a0": " "}
 
@@ -33,17 +34,44 @@ _DECIMAL_COMMA = re.compile(r"(?<=[=:])\s*(-?\d+),(\d+)\b(?!\s*(?:,|and)\s*\d)")
 
 
 _REFERENCE_NO = re.compile(
-    r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell)\s*"
+    r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell|booth|"
+    r"hall|aisle|lab|desk|batch|lot|week|version|rev)\s*"
     r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b",
     re.IGNORECASE,
 )
 
 
 _METRE_WORDS = [
+    # "6 in tall", "a row 10 in long": "in" after a number and before a dimension is inches
+    (
+        re.compile(
+            r"\b(\d+(?:\.\d+)?)\s*in\b(?=\.?\s*(?:tall|high|wide|long|deep|across|thick)\b)",
+            re.I,
+        ),
+        r"\1 inches",
+    ),
     (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
 ]
+
+
+# "a third of a metre", "3/10 of a metre", "two fifths of a meter"
+_FRACTION_TOP = {"a": "1", "an": "1", "one": "1", "two": "2", "three": "3", "four": "4"}
+_FRACTION_BOTTOM = {"half": "2", "halve": "2", "third": "3", "quarter": "4", "fourth": "4",
+                    "fifth": "5", "tenth": "10"}  # fmt: skip
+_FRACTION_OF_METRE = re.compile(
+    r"\b(\d+|an?|one|two|three|four)\s*(?:/\s*|\s)(\d+|halves|half|thirds?|quarters?|fourths?|"
+    r"fifths?|tenths?)\s+of\s+a\s+(?:metre|meter)\b",
+    re.IGNORECASE,
+)
+
+
+_UNRELATED = re.compile(
+    r"[^.;!?\n]*\(\s*(?:unrelated|not\s+related|off[- ]topic|fyi|ignore(?:\s+this)?)\s*\)"
+    r"[^.;!?\n]*[.;!?\n]?",
+    re.IGNORECASE,
+)
 
 
 _LIST_ITEM = re.compile(
@@ -96,6 +124,16 @@ _SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
 _SLASHES = re.compile(r"\b\d+(?:/\d+)+\b(?!\s*(?:mm|cm|m)\b)")
 
 
+_COUNTED = "|".join(
+    sorted((w for w in {*lx.SHAPE_WORDS, *lx.PART_WORDS} if w.isalpha()), key=len, reverse=True)
+)
+# "build -2 towers": a count below zero (a coordinate "x = -0.2" is not a count)
+_NEGATIVE_COUNT = re.compile(
+    r"(?:^|(?<=[\s,;:(]))[-−](\d+)\s+(?:[a-z]+[- ])?(?:" + _COUNTED + r")s?\b",
+    re.IGNORECASE,
+)
+
+
 # The largest number a command may carry; beyond it nothing SDI builds is meant.
 _LARGEST = 1e6
 
@@ -109,7 +147,20 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = text.replace("@", " at ")
     text = re.sub(r"\bontop\b", "on top", text, flags=re.IGNORECASE)
 
+    # "Line 3 down for maintenance (unrelated).": a sentence its writer marks as unrelated
+    def unrelated(m: re.Match[str]) -> str:
+        notes.append(f"ignored '{m.group(0).strip()}': marked as unrelated")
+        return " "
+
+    text = _UNRELATED.sub(unrelated, text)
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
+    # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before
+    text = re.sub(
+        r"\(\s*(\d+\s+(?:cubes?|parts?|blocks?|bricks?)(?:\s+(?:in\s+)?(?:all|total))?)\s*\)",
+        r" , \1 in total ",
+        text,
+        flags=re.IGNORECASE,
+    )
     text = re.sub(
         r"\(([^()]*[A-Za-z][^()]*)\)",
         lambda m: " " + m.group(1).replace(",", " and ") + " ",
@@ -149,6 +200,18 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return " "
 
     text = _REFERENCE_NO.sub(reference, text)
+
+    def fraction(m: re.Match[str]) -> str:
+        top, bottom = m.group(1).lower(), m.group(2).lower()
+        num = float(_FRACTION_TOP.get(top, top))
+        den = float(_FRACTION_BOTTOM.get(bottom.rstrip("s"), bottom))
+        if den == 0:
+            return m.group(0)
+        metres = round(num / den, 4)
+        notes.append(f"read '{m.group(0).strip()}' as {metres:g} m")
+        return f" {metres:g} m "
+
+    text = _FRACTION_OF_METRE.sub(fraction, text)
     for pattern, repl in _METRE_WORDS:
         text = pattern.sub(repl, text)
     for m in re.finditer(r"\d+(?:\.\d+)?", text):
@@ -158,6 +221,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
                 f"numbers above {_LARGEST:g} are refused",
                 understood={"numbers": [m.group(0)]},
             )
+    neg = _NEGATIVE_COUNT.search(text)
+    if neg:
+        raise SpecError(
+            f"'{neg.group(0).strip()}': a count cannot be negative; say how many to build "
+            "(e.g. '2 towers')",
+            understood={"numbers": [neg.group(1)]},
+        )
     text = _LIST_ITEM.sub(" then ", text)  # "1) a tower\n2) another one …"
     text = _BULLET.sub(" , ", text)  # "- tower / - 4 cubes / - left side": one thing's details
     text = _ROBOT_NAME.sub(" the robot ", text)

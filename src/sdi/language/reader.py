@@ -53,7 +53,7 @@ from sdi.language.state import ReadState
 from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
-from sdi.spec.structure_spec import Spec
+from sdi.spec.structure_spec import Spec, StructureDraft
 
 
 def read(command: str, cell: CellConfig | None = None) -> Reading:
@@ -95,6 +95,15 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     if not structures:
         no_structure(st, doc, command)
     relations, drafts = relate(phrases, rels, structures, st)
+    drafts = _apart(drafts, st)
+    touch = _TOUCHING.search(text)
+    if touch and any(r.kind == "next_to" for r in relations):
+        # "directly to its left, touching it": beside is always one structure gap away
+        st.material.append(touch.group(0))
+        st.notes.append(
+            f"ignored '{touch.group(0)}': a structure placed beside another stands one "
+            "structure gap away, not touching it"
+        )
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]
@@ -126,6 +135,30 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         ignored=tuple(dict.fromkeys(st.ignored)),
         material=tuple(dict.fromkeys(st.material)),
     )
+
+
+_TOUCHING = re.compile(
+    r"(?<!\bnot\s)(?<!\ball\s)\b(?:touching|flush\s+(?:with|against)|butting\s+(?:up\s+)?against|"
+    r"pressed\s+against|up\s+against)\b",
+    re.IGNORECASE,
+)
+
+
+def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
+    """ "Three rows, spaced out", "a 2x2 pad and a 3x3 pad, not touching": with several
+    structures a vague "apart" is about the structures (which stand apart anyway), not the
+    parts inside each one."""
+    if len(drafts) < 2 or not any(n.endswith("as a part's width apart") for n in st.notes):
+        return drafts
+    out = []
+    for d in drafts:
+        if d.shape in ("row", "grid") and d.gap_m is not None:
+            d = d.model_copy(update={"gap_m": None})
+            note = "several structures spaced out: the structures stand apart, each one whole"
+            if note not in st.notes:
+                st.notes.append(note)
+        out.append(d)
+    return out
 
 
 _GENERIC_NOUNS = re.compile(

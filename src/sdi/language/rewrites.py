@@ -109,6 +109,9 @@ _REWRITES += [
 ]
 
 
+_ENCLOSURES = "|".join(
+    sorted((w for w, f in lx.SHAPE_WORDS.items() if f == "enclosure" and w.isalpha()), key=len)
+)
 _SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
 
 
@@ -116,8 +119,9 @@ _REWRITES += [
     # "anywhere except the back", "anywhere but on the left", "avoid the left side"
     (
         re.compile(
-            r"\b(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|away\s+from|"
-            r"avoid(?:ing)?)\s+(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|middle|centre|"
+            r"\b(?:anywhere\s+but|(?:anywhere\s+)?(?:except|but\s+not|other\s+than|apart\s+from|"
+            r"away\s+from|avoid(?:ing)?))\s+(?:on\s+|in\s+|at\s+)?the\s+(left|right|front|back|"
+            r"middle|centre|"
             r"center)(?:\s+side)?(?:\s+(?:or|and|nor)\s+(?:on\s+|in\s+|at\s+)?the\s+"
             r"(left|right|front|back)(?:\s+side)?)?\b",
             re.IGNORECASE,
@@ -156,6 +160,16 @@ _REWRITES += [
         ),
         " {0} {1}{2} on the left and another {1}{2} on the right ",
         "",
+    ),
+    # "a staircase that does not go up towards the back": it climbs the other way
+    (
+        re.compile(
+            r"\b(?:that\s+|which\s+)?(?:does|do)\s+not\s+(?:go\s+up|climb|rise|ascend|lead\s+up)\s+"
+            r"(?:towards?|to)\s+the\s+(back|front|left|right)\b",
+            re.IGNORECASE,
+        ),
+        " climbing towards the {opposite} ",
+        "read '{0}' as climbing towards the {opposite}",
     ),
     (
         re.compile(
@@ -205,7 +219,7 @@ _REWRITES += [
     # "no taller than 2 cubes" → 2 cubes high; "no more than 3 steps" → 3 steps
     (
         re.compile(
-            r"\b(?:no|not)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
+            r"\b(?:no|not|nothing|none)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
             r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
             re.IGNORECASE,
         ),
@@ -238,8 +252,9 @@ _REWRITES += [
     # "a 3x3 grid without the middle cube": a ring
     (
         re.compile(
-            r"\b(grid|square|layer|slab|pad|patch|platform)\s+(?:of\s+cubes\s+)?without\s+"
-            r"(?:the\s+|a\s+)?(?:middle|centre|center|inner|central)(?:\s+(?:cube|one|part|piece))?",
+            r"\b(grid|square|layer|slab|pad|patch|platform)\s+(?:of\s+cubes\s+)?(?:without|minus|"
+            r"but\s+not|except(?:\s+for)?)\s+(?:the\s+|a\s+|its\s+)?(?:middle|centre|center|inner|"
+            r"central)(?:\s+(?:cube|one|part|piece))?",
             re.IGNORECASE,
         ),
         " hollow {0} ",
@@ -404,7 +419,8 @@ _REWRITES += [
     (
         re.compile(
             r",?\s*\b(?:with\s+)?(?:no|without)\s+(?:any\s+)?(?:windows|gaps|holes|openings)"
-            r"(?:\s+(?:or|and)\s+(?:windows|gaps|holes|openings))*\b",
+            r"(?:\s+(?:or|and)\s+(?:windows|gaps|holes|openings))*\b"
+            r"(?:\s+(?:in|anywhere\s+in)\s+(?:it|them|its\s+\w+|the\s+\w+))?",
             re.IGNORECASE,
         ),
         " ",
@@ -560,6 +576,16 @@ _REWRITES += [
         " {0} separate ",
         "",
     ),
+    # "4 separate single cubes in a line": each cube on its own, a part's width apart
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:separate|individual|"
+            r"loose)\s+(?:single\s+)?(cubes|blocks)\b(?!\s*,?\s*(?:spread|spaced|\d))",
+            re.IGNORECASE,
+        ),
+        " {0} {1} spaced 5 cm apart ",
+        "read '{0}' as each standing alone, a part's width apart",
+    ),
     (
         re.compile(
             r"\b(\d+|[a-z]+)\s+(?:cubes|parts|blocks)\s+in\s+(two|three|four|five|\d+)\s+rows\b",
@@ -585,8 +611,22 @@ _REWRITES += [
         " {0} ",
         "",
     ),
+    # "a pen that has a 3 by 3 floor": an enclosure's floor is its inside
     (
-        re.compile(r"\bwith\s+(?:a|an)\s+(\d+\s*x\s*\d+|\d+)\s+(?:bottom|footprint|foot)\b", re.I),
+        re.compile(
+            r"\b(" + _ENCLOSURES + r")\s+(?:with|(?:that|which)\s+has|having)\s+(?:a|an)\s+"
+            r"(\d+\s*(?:x|by)\s*\d+)\s+(?:floor|courtyard|yard)\b",
+            re.I,
+        ),
+        " {0} with a {1} space inside ",
+        "read '{0}' as the size of the inside",
+    ),
+    (
+        re.compile(
+            r"\b(?:with|(?:that|which)\s+has|having)\s+(?:a|an)\s+(\d+\s*(?:x|by)\s*\d+|\d+)\s+"
+            r"(?:bottom|footprint|foot|floor)\b",
+            re.I,
+        ),
         " with a {0} base ",
         "",
     ),
@@ -821,7 +861,112 @@ def _another(text: str) -> str:
     return _ANOTHER.sub(sub, text)
 
 
+# "two towers of 3, one at the far left, one at the far right" (handler: one item per copy)
+_REWRITES += [
+    # "directly behind it", "dead centre", "right next to": an intensifier of a place
+    (
+        re.compile(
+            r"\b(?:directly|immediately|dead|exactly|right|just|squarely)\s+(?=(?:behind|in\s+front|"
+            r"next\s+to|beside|to\s+(?:the\s+|its\s+)?(?:left|right)|on\s+top|above|atop|"
+            r"(?:in\s+the\s+)?(?:centre|center|middle))\b)",
+            re.IGNORECASE,
+        ),
+        "",
+        "",
+    ),
+    # "after that, the same again at the back right": another of the one before
+    (re.compile(r"\bapiece\b", re.IGNORECASE), " each ", ""),
+    (re.compile(r"\ball\s+the\s+way\s+(?:a?round|about)\b", re.IGNORECASE), " around ", ""),
+    # "bump it up another course": raise it by another layer
+    (
+        re.compile(
+            r"\b(?:bump|jack|build|push|bring|take)\s+(it|them)\s+up\s+(?:by\s+)?(?:another|one\s+more|"
+            r"an\s+extra)\s+(?:course|layer|level|row|tier)\b",
+            re.IGNORECASE,
+        ),
+        " raise {0} by another layer ",
+        "",
+    ),
+    # "wall: eighteen cubes, 6 per course": the parts in each layer are its length
+    (
+        re.compile(
+            r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+|parts?\s+)?"
+            r"(?:per|in\s+each|on\s+each|a)\s+(?:course|layer|row|level|tier)\b",
+            re.IGNORECASE,
+        ),
+        " {0} long ",
+        "read '{0}' as the parts in each course (its length)",
+    ),
+    # "a row that does not run left to right": the other horizontal direction
+    (
+        re.compile(
+            r"\b(?:that\s+|which\s+)?(?:does|do)\s+not\s+(?:run|go|extend|point|lie)\s+"
+            r"(?:from\s+)?(left\s+to\s+right|side\s+to\s+side|front\s+to\s+back|back\s+to\s+front)\b",
+            re.IGNORECASE,
+        ),
+        "{not_axis}",
+        "",
+    ),
+]
+
+
+_BEAMED = "|".join(
+    sorted(
+        (w for w, f in lx.SHAPE_WORDS.items() if f in ("bridge", "arch") and w.isalpha()),
+        key=len,
+        reverse=True,
+    )
+)
+# "gate with two posts 4 high and a beam over them": the beam is the gate's own
+_OWN_BEAM = re.compile(
+    r"\b(" + _BEAMED + r")\b([^.;]*?)\s*,?\s*\band\s+(?:a|one|the)\s+(?:beam|lintel|slab)\s+"
+    r"(?:on\s+top(?:\s+of\s+(?:them|the\s+\w+))?|over\s+(?:them|the\s+top)|across\s+"
+    r"(?:them|the\s+top)|spanning\s+them|resting\s+on\s+them)",
+    re.IGNORECASE,
+)
+_TALL_NOUN = re.compile(r"\b(?:skyscraper|spire|obelisk|high-?rise)s?\b", re.IGNORECASE)
+# "a solid block 100 mm on every side" (handler: all three sides of a block)
+_EVERY_SIDE = re.compile(
+    r"\b(\d+(?:\.\d+)?\s*(?:mm|cm|m)|\d+\s+(?:cubes?|parts?))\s+(?:on|along|to)\s+"
+    r"(?:every|each|all|a)\s+(?:sides?|edges?)\b",
+    re.IGNORECASE,
+)
+_SAME_AGAIN = re.compile(r"\bthe\s+same\s+(?:again|once\s+more|one\s+again)\b", re.I)
+_DISTRIBUTE = re.compile(
+    r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
+    r"((?:\s+(?:of|with)\s+[\w\s-]+?)?)\s*[:,]\s*(one\s+[^.;]*)",
+    re.IGNORECASE,
+)
+
+
+_COMPARISON = re.compile(
+    r"\b(?:taller|shorter|higher|lower|bigger|smaller|wider|narrower|longer|larger|thicker|"
+    r"deeper|more|fewer|less)\s+(?:\w+\s+)?than\s+(?:the\s+|that\s+|those\s+|a\s+)?\w+",
+    re.IGNORECASE,
+)
+
+
+_BY_HOW_MUCH = re.compile(
+    r"\b(?:\d+|two|three|four|five|six)\s+(?:cubes?|parts?|blocks?|levels?|layers?)?\s*$",
+    re.IGNORECASE,
+)
+
+
 def rewrite(text: str, st: ReadState) -> str:
+    text = _SAME_AGAIN.sub(" another one ", text)
+    text = _EVERY_SIDE.sub(lambda m: HANDLERS["{every_side}"](m, st, ""), text)
+    tall = _TALL_NOUN.search(text)
+    if tall and not re.search(r"\d|\b(?:" + "|".join(lx.SIZE_WORDS) + r")\b", text, re.I):
+        # "a skyscraper": the noun says tall when nothing else gives a size
+        st.notes.append(f"read '{tall.group(0)}' as a tall tower")
+        text = text[: tall.start()] + "tall " + text[tall.start() :]
+
+    def own_beam(m: re.Match[str]) -> str:
+        st.notes.append(f"read '{m.group(0).strip()}' with the beam as the {m.group(1)}'s own")
+        return f"{m.group(1)}{m.group(2)} "
+
+    text = _OWN_BEAM.sub(own_beam, text)
+    text = _DISTRIBUTE.sub(lambda m: HANDLERS["{distribute}"](m, st, ""), text)
     text = _another(text)
     if (
         _LEGS.search(text)
@@ -853,6 +998,15 @@ def rewrite(text: str, st: ReadState) -> str:
 
         text = pattern.sub(sub, text)
     text = _LEVEL_ORDINAL.sub(" on top ", text)
+    for c in _COMPARISON.finditer(text):
+        # "the left one taller than the right one": a comparison no rewrite turned into a value
+        # ("two cubes taller than the walls" is a difference the grammar reads, or whose
+        # number it reports unused)
+        if _BY_HOW_MUCH.search(text[: c.start()]):
+            continue
+        said = c.group(0).strip()
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': SDI did not read this comparison into a size")
     m = _OPEN.search(text)
     if m and not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", text.lower())
                      if w not in ("base", "bottom") and w not in lx.AMBIGUOUS_SHAPES):  # fmt: skip

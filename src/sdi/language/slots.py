@@ -77,6 +77,7 @@ def fill_slots(
                 before_count, prev = grown
                 assert prev.spec is not None
                 structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
+                _carry_notes(prev.spec.notes, st)
                 continue
         if REMOVAL.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
             # "then pull out the middle cube", "push them together": a change SDI cannot
@@ -105,6 +106,7 @@ def fill_slots(
                 before_count, prev = grown
                 assert prev.spec is not None
                 structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
+                _carry_notes(prev.spec.notes, st)
                 continue
             if not [q for q in phrases[:k] if q.spec is not None] and not is_chatter(p.text):
                 pending.append(p.text)
@@ -146,6 +148,16 @@ def fill_slots(
         st.material.append(text)
         st.notes.append(f"ignored '{text}': no structure named there")
     return structures
+
+
+def _carry_notes(notes: tuple[str, ...], st: ReadState) -> None:
+    """The grammar's notes on a phrase read again with a later clause ("Tower of 5. 4."):
+    a value it could not use is as material as in the first reading."""
+    for n in notes:
+        if n not in st.notes:
+            st.notes.append(n)
+            if n.startswith("ignored"):
+                st.material.append(n)
 
 
 _ONE_CUBE = re.compile(

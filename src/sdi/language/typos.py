@@ -61,6 +61,11 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             return raw
         if any(w.startswith(c) and w[len(c) :] in _SUFFIXES for c, _, _ in found):
             return raw  # "chunky", "stacked": a derived form of a word, not a typo
+        if aggressive and _vocab_has(w):
+            # a word English knows ("shut") is read as a structure only if it starts the same
+            found = [f for f in found if f[0][0] == w[0]]
+            if not found:
+                return raw
         best = min(d for _, d, _ in found)
         top = [c for c, d, _ in found if d == best]
         if len(top) > 1:

@@ -183,6 +183,7 @@ class _Parser:
         self.coords: list[tuple[int, str, float]] = []  # (token index, axis, metres)
         self.yaws: list[tuple[int, float]] = []
         self.axes: list[tuple[int, str]] = []
+        self.long_side = False  # "long side left to right": the longer side along the axis
         self.dims: list[tuple[int, list[int]]] = []
         self.measures: list[tuple[int, float, str | None]] = []  # (index, metres, field)
         self.hits: list[Hit] = []
@@ -307,13 +308,13 @@ class _Parser:
                     "front",
                 )
             ):
-                self.axes.append((k, "x"))  # "front to back": an axis, not a region
+                self.axes.append((k, self._side_axis(k, "x")))  # "front to back": an axis
                 t[k].used = t[k + 1].used = t[k + 2].used = True
                 continue
             if w in ("sideways", "lengthwise", "crosswise") or (
                 w == "left" and self.word(k + 1) == "to" and self.word(k + 2) == "right"
             ):
-                self.axes.append((k, "y"))
+                self.axes.append((k, self._side_axis(k, "y") if w == "left" else "y"))
                 t[k].used = True
                 if w == "left":  # "left to right": an axis, not a region
                     t[k + 1].used = t[k + 2].used = True
@@ -356,7 +357,11 @@ class _Parser:
             fieldname = None
             nxt = [self.word(k + 2), self.word(k + 3)]
             prev = [self.word(k - 1), self.word(k - 2), self.word(k - 3)]
-            for w in nxt + prev:
+            # "length 20cm, height 15cm": a dimension noun just before names this value
+            named = (
+                prev[0] in ("length", "height", "width", "depth") and prev[0] in lx.DIMENSION_WORDS
+            )
+            for w in [prev[0], *nxt, *prev[1:]] if named else nxt + prev:
                 if w in lx.DIMENSION_WORDS:
                     fieldname = lx.DIMENSION_WORDS[w] + "_m"
                     break
@@ -372,7 +377,7 @@ class _Parser:
                 ):
                     fieldname = "gap_m"
                     break
-            for j in (k + 2, k + 3, k - 1, k - 2, k - 3):
+            for j in (k - 1,) if named else (k + 2, k + 3, k - 1, k - 2, k - 3):
                 if (
                     0 <= j < n
                     and t[j].text
@@ -598,6 +603,25 @@ class _Parser:
             a.end = cut
             b.start = cut
 
+    def _side_axis(self, k: int, axis: str) -> str:
+        """The axis a structure runs along when the words before "left to right" / "front to
+        back" say which side runs that way: "15 cm wide (left to right)" — the width runs
+        along `axis`, so the length along the other; "long side left to right" — the longer
+        side along `axis`."""
+        before = self.word(k - 1)
+        if before in ("side", "sides", "edge", "edges") and self.word(k - 2) in (
+            "long",
+            "longer",
+            "longest",
+        ):
+            self.long_side = True
+        if before in ("wide", "deep", "across", "width", "depth") or (
+            before in ("side", "sides", "edge", "edges")
+            and self.word(k - 2) in ("short", "shorter", "shortest")
+        ):
+            return "x" if axis == "y" else "y"
+        return axis
+
     # -- pass 4: attributes ----------------------------------------------------------------
     def attributes(self, h: Hit) -> None:
         t = self.toks
@@ -621,10 +645,22 @@ class _Parser:
                 ):
                     p["span"] = max(1, round(metres / self.cell.cube[0]))
                 else:
+                    if fname in p and p[fname] != metres:
+                        other = {"width_m": "length_m", "length_m": "width_m"}.get(fname)
+                        if other and other not in p:
+                            fname = other  # "15 cm wide and 25 cm deep": two different sides
+                        else:
+                            self.notes.append(
+                                f"ignored {fname}={p[fname]:g}: two sizes for one side; "
+                                f"used {metres:g}"
+                            )
                     p[fname] = metres
         for k, axis in self.axes:
             if k in span_range:
                 p["axis"] = axis
+                a, b = p.get("length"), p.get("width")
+                if self.long_side and isinstance(a, int) and isinstance(b, int):
+                    p["length"], p["width"] = max(a, b), min(a, b)
         for k, yaw in self.yaws:
             if k in span_range:
                 p["yaw_deg"] = yaw
@@ -1232,6 +1268,20 @@ class _Parser:
                 )
             elif shape in ("wall",) and "length" not in p:
                 p["count"] = count
+            elif shape == "wall":
+                # "a wall of 18 cubes, 6 long": the courses its parts make
+                length, height = p["length"], p.get("height")
+                if height is None and isinstance(length, int) and count % length == 0:
+                    p["height"] = int(count // length)
+                    self.notes.append(
+                        f"{count:g} parts in courses of {length}: height {p['height']}"
+                    )
+                elif height is None or length * height != count:
+                    self.notes.append(
+                        f"ignored {count:g} parts: a wall {length} long"
+                        + (f" and {height} high" if height else "")
+                        + " does not have that many"
+                    )
             elif shape in (
                 "grid",
                 "block",
@@ -1339,9 +1389,13 @@ class _Parser:
             key = PRIMARY[shape] if PRIMARY[shape] != "count" else "length"
             return [spec.model_copy(update={key: v}) for v in each]
         if each is not None:
-            self.notes.append(
-                f"ignored values {each[1:]}: one {shape} takes one value; used {each[0]}"
-            )
+            key = PRIMARY[shape] if PRIMARY[shape] != "count" else "length"
+            if getattr(spec, key, None) is None:
+                spec = spec.model_copy(update={key: each[0]})
+            if any(v != each[0] for v in each[1:]):
+                self.notes.append(
+                    f"ignored values {each[1:]}: one {shape} takes one value; used {each[0]}"
+                )
         if copies > 20:
             raise SpecError(
                 f"{copies} separate {shape}s is more than 20", understood=self.understood()

@@ -37,6 +37,12 @@ def words_to_numbers(tokens: list[str]) -> list[str]:
             out.append("6")
             i += 3
             continue
+        if t == "half" and i + 1 < n and tokens[i + 1] == "dozen":  # "a half dozen"
+            if out and out[-1] in ("a", "an"):
+                out.pop()
+            out.append("6")
+            i += 2
+            continue
         if t in UNITS or t in TENS or (t in SCALES and out and out[-1].isdigit()):
             total, current, j, used = 0, 0, i, False
             while j < n:
