@@ -260,3 +260,11 @@ def test_an_edit_refused_elsewhere_is_answered_in_the_twin(twin: Twin):
     view = twin.view(run_id)
     assert view["waiting_for"]["kind"] == "design_review"
     assert {p["id"]: p["position"] for p in view["review"]["parts"]}["c3"] == [0.45, 0.35, 0.025]
+
+
+def test_the_reading_shows_what_the_specifier_left_unused(twin: Twin):
+    run_id = twin.start("a tower of 3 cubes with a flag")
+    twin.wait()
+    reading = twin.view(run_id)["reading"]
+    assert reading["ignored"] == ["flag"]
+    assert any(s.startswith("tower#1") for s in reading["structures"])

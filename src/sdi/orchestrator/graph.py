@@ -113,6 +113,7 @@ class RunState(TypedDict, total=False):
     faults: list[str]  # injected fault scenarios (names in `SCENARIOS`)
     spec: dict[str, Any] | None
     spec_source: str
+    ignored: list[str]  # words of the command the Specifier's reading left unused
     relaxed: bool
     layout: dict[str, Any] | None
     sequence: list[str] | None
@@ -345,6 +346,7 @@ def plan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     return {
         "spec": result.spec.model_dump(mode="json"),
         "spec_source": result.source,
+        "ignored": list(result.reading.ignored) if result.reading is not None else [],
         "phase": "design",
     }
 

@@ -424,6 +424,7 @@ def reading(state: dict[str, Any]) -> dict[str, Any] | None:
         "structures": [f"{names[k]}: {s.describe()}" for k, s in enumerate(parsed.structures)],
         "relations": [r.describe(names) for r in parsed.relations],
         "notes": list(parsed.notes),
+        "ignored": list(state.get("ignored") or []),
     }
 
 

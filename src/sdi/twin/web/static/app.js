@@ -346,6 +346,7 @@ function render() {
   for (const s of rd?.structures || []) addLi(ul, s);
   for (const r of rd?.relations || []) addLi(ul, r);
   for (const n of [...(rd?.notes || []), ...(v.notes || [])]) addLi(ul, n, "note");
+  if (rd?.ignored?.length) addLi(ul, `ignored: ${rd.ignored.join(", ")}`, "note");
   // panels
   const review = v.review && !v.busy;
   $("review-panel").hidden = !review;
