@@ -519,7 +519,11 @@ def each(k: int, *checks: Check) -> Pred:
     return structures(*[all_of(*checks)] * k)
 
 
-def _pair(a: Check, b: Check, rel: Callable[[Boxes, Boxes], Reason], n: int = 2) -> Pred:
+Rel = Callable[[Boxes, Boxes], Reason]
+"""A relation between two structures A and B: None if it holds, else why not."""
+
+
+def pair(a: Check, b: Check, rel: Rel, n: int = 2) -> Pred:
     """Exactly n structures; two of them, A passing a and B passing b, satisfy rel(A, B)."""
 
     def f(result: Mapping[str, Any]) -> Reason:
@@ -542,6 +546,20 @@ def _pair(a: Check, b: Check, rel: Callable[[Boxes, Boxes], Reason], n: int = 2)
     return f
 
 
+def gap_of(n: int, side: str | None = None) -> Rel:
+    """A and B are `n` cubes apart (± 1.5 cm), A on `side` of B."""
+
+    def rel(a: Boxes, b: Boxes) -> Reason:
+        gap = bx.separation(a, b)
+        if abs(gap - n * bx.CUBE) > 0.015:
+            return f"{gap:.3f} m apart, want {n} cube(s)"
+        if side is not None and bx.side_of(a, b) != side:
+            return f"A is {bx.side_of(a, b)} of B, want {side}"
+        return None
+
+    return rel
+
+
 def beside(a: Check, b: Check, side: str | None = None, max_gap: float = 0.25) -> Pred:
     """Two separate structures, A on `side` of B (left/right/back/front), gap ≤ max_gap."""
 
@@ -553,7 +571,7 @@ def beside(a: Check, b: Check, side: str | None = None, max_gap: float = 0.25) -
             return f"A is {bx.side_of(sa, sb)} of B, want {side}"
         return None
 
-    return _pair(a, b, rel)
+    return pair(a, b, rel)
 
 
 def around(inner: Check, outer: Check = ring) -> Pred:
@@ -562,7 +580,7 @@ def around(inner: Check, outer: Check = ring) -> Pred:
     def rel(sa: Boxes, sb: Boxes) -> Reason:
         return None if bx.encloses(sa, sb) else "the ring does not surround the other"
 
-    return _pair(outer, inner, rel)
+    return pair(outer, inner, rel)
 
 
 def between_(mid: Check, end: Check, end2: Check | None = None) -> Pred:

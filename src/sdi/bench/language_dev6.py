@@ -20,9 +20,6 @@ beam 0.15 m; left = +y, back = +x (away from the IRB120 at x = 0, y = 0.30).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
-from typing import Any
-
 from sdi.bench import boxes as bx
 from sdi.bench import language_checks as k
 from sdi.bench.language_checks import Case
@@ -31,7 +28,7 @@ _L, _R, _F, _B = k.SIDES
 REL, SEQ, NUM, DIM, NEG, TYP = k.REL, k.SEQ, k.NUM, k.DIM, k.NEG, k.TYP
 WO, FIL, REG, OPEN, BAD = k.WO, k.FIL, k.REG, k.OPEN, k.BAD
 
-Rel = Callable[[k.Boxes, k.Boxes], k.Reason]
+Rel = k.Rel
 
 
 def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
@@ -39,30 +36,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 
 
 # ---------------------------------------------------------------- local checks
-
-
-def _pair(a: k.Check, b: k.Check, rel: Rel) -> k.Pred:
-    """Exactly two separate structures inside the workspace: one passing `a`, the other `b`,
-    with rel(A, B)."""
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        bs = bx.boxes(result)
-        if not bs:
-            return "no layout"
-        if not bx.in_workspace(bs):
-            return "a part outside the workspace"
-        comps = bx.components(bs)
-        if len(comps) != 2:
-            return f"{len(comps)} separate structures, want 2"
-        first: k.Reason = None
-        for i, j in ((0, 1), (1, 0)):
-            r = a(comps[i]) or b(comps[j]) or rel(comps[i], comps[j])
-            if r is None:
-                return None
-            first = first or r
-        return first
-
-    return f
 
 
 def _taller_on(side: str) -> Rel:
@@ -73,20 +46,6 @@ def _taller_on(side: str) -> Rel:
             return f"the taller one is {bx.side_of(a, b)} of the other, want {side}"
         ha, hb = bx.thickness_cubes(a), bx.thickness_cubes(b)
         return None if ha > hb else f"heights {ha} and {hb}: the {side} one is not taller"
-
-    return rel
-
-
-def _gap_of(n: int, side: str | None = None) -> Rel:
-    """A and B are `n` cubes apart (± 1.5 cm), A on `side` of B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        gap = bx.separation(a, b)
-        if abs(gap - n * bx.CUBE) > 0.015:
-            return f"{gap:.3f} m apart, want {n} cube(s)"
-        if side is not None and bx.side_of(a, b) != side:
-            return f"A is {bx.side_of(a, b)} of B, want {side}"
-        return None
 
     return rel
 
@@ -266,7 +225,7 @@ CASES: tuple[Case, ...] = (
         "rel-08",
         REL,
         "two towers, the left one taller than the right one",
-        _pair(T(), T(), _taller_on(_L)),
+        k.pair(T(), T(), _taller_on(_L)),
     ),
     _c(
         "rel-09",

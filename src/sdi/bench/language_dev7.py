@@ -21,7 +21,7 @@ beam 0.15 m; left = +y, back = +x (away from the IRB120 at x = 0, y = 0.30).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from typing import Any
 
 from sdi.bench import boxes as bx
@@ -32,7 +32,7 @@ _L, _R, _F, _B = k.SIDES
 REL, SEQ, NUM, DIM, NEG, TYP = k.REL, k.SEQ, k.NUM, k.DIM, k.NEG, k.TYP
 WO, FIL, REG, OPEN, BAD = k.WO, k.FIL, k.REG, k.OPEN, k.BAD
 
-Rel = Callable[[k.Boxes, k.Boxes], k.Reason]
+Rel = k.Rel
 
 
 def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
@@ -40,44 +40,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 
 
 # ---------------------------------------------------------------- local checks
-
-
-def _pair(a: k.Check, b: k.Check, rel: Rel) -> k.Pred:
-    """Exactly two separate structures inside the workspace: one passing `a`, the other `b`,
-    with rel(A, B)."""
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        bs = bx.boxes(result)
-        if not bs:
-            return "no layout"
-        if not bx.in_workspace(bs):
-            return "a part outside the workspace"
-        comps = bx.components(bs)
-        if len(comps) != 2:
-            return f"{len(comps)} separate structures, want 2"
-        first: k.Reason = None
-        for i, j in ((0, 1), (1, 0)):
-            r = a(comps[i]) or b(comps[j]) or rel(comps[i], comps[j])
-            if r is None:
-                return None
-            first = first or r
-        return first
-
-    return f
-
-
-def _gap_of(n: int, side: str | None = None) -> Rel:
-    """A and B are `n` cubes apart (± 1.5 cm), A on `side` of B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        gap = bx.separation(a, b)
-        if abs(gap - n * bx.CUBE) > 0.015:
-            return f"{gap:.3f} m apart, want {n} cube(s)"
-        if side is not None and bx.side_of(a, b) != side:
-            return f"A is {bx.side_of(a, b)} of B, want {side}"
-        return None
-
-    return rel
 
 
 def _on_side(side: str) -> Rel:
@@ -235,7 +197,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "two towers side by side, the left one is 3 high and the right one twice as tall",
         k.any_of(
-            _pair(T(3), T(6), _on_side(_L)),
+            k.pair(T(3), T(6), _on_side(_L)),
             one(_lr_profile(3, 6)),
         ),
     ),
@@ -263,10 +225,10 @@ CASES: tuple[Case, ...] = (
         "rel-08",
         REL,
         "two rows of 5 left to right, one behind the other, a one-cube gap between them",
-        _pair(
+        k.pair(
             k.all_of(k.row(5), _runs("y")),
             k.all_of(k.row(5), _runs("y")),
-            _gap_of(1, _B),
+            k.gap_of(1, _B),
         ),
     ),
     _c(
@@ -361,7 +323,7 @@ CASES: tuple[Case, ...] = (
         "seq-13",
         SEQ,
         "a 2x2 pad, then the same pad again one cube to the right of it, not touching",
-        _pair(k.block(2, 2, 1), k.block(2, 2, 1), _gap_of(1, _R)),
+        k.pair(k.block(2, 2, 1), k.block(2, 2, 1), k.gap_of(1, _R)),
     ),
     # ------------------------------------------------------------------ numbers
     _c("num-01", NUM, "a wall, four courses of five", one(k.wall(5, 4))),
