@@ -83,9 +83,13 @@ class ReviewSession:
 
     def layout(self) -> Layout:
         if self._layout is None:
-            geometric = [e for e in self.edits if e.get("op") != "sequence"]
-            self._layout = apply_edits(self.base, geometric, self.cell)
+            self._layout = self._built(self.steps)
         return self._layout
+
+    def _built(self, steps: list[list[Edit]]) -> Layout:
+        """C ⊕ I_h for these steps (the order edits set no geometry)."""
+        geometric = [e for step in steps for e in step if e.get("op") != "sequence"]
+        return apply_edits(self.base, geometric, self.cell)
 
     def report(self) -> Report:
         """The Inspector on C ⊕ I_h (with the operator's order, if they set one)."""
@@ -107,18 +111,12 @@ class ReviewSession:
 
     def apply(self, op: dict[str, Any]) -> None:
         """One finished page operation → one undo step (the whole step or nothing)."""
-        step = self._edits_for(op)
-        before = self.steps
-        self.steps = [*before, step]
-        self._layout = None
-        try:
-            self.layout()
-        except InputError:
-            self.steps = before
-            self._layout = None
-            raise
+        steps = [*self.steps, self._edits_for(op)]
+        layout = self._built(steps)  # a refused edit raises here: nothing has changed
+        self.steps = steps
         self.undone.clear()
         self._changed()
+        self._layout = layout
 
     def undo(self) -> bool:
         if not self.steps:

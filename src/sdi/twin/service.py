@@ -337,7 +337,6 @@ class Twin:
         if waiting.get("kind") == "edit_review" and session is None:
             layout = _parts(waiting.get("layout"))
         waiting.pop("layout", None)
-        history = self.bus.history(run_id)
         return {
             "run_id": run_id,
             "command": state.get("command"),
@@ -357,7 +356,6 @@ class Twin:
             "execution": _execution_summary(state.get("execution")),
             "failure": state.get("failure"),
             "notes": state.get("notes") or [],
-            "last_seq": history[-1].seq if history else 0,
         }
 
     def timeline(self, run_id: str, rate_hz: float = 20.0) -> dict[str, Any]:
