@@ -113,6 +113,8 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         wait(page, f"T.runId === '{run_id}' && T.view.status === 'success'")
         assert run_id in page.inner_text("#runs")
         page.click("#replay")
+        wait(page, "T.placedAtReplayStart !== undefined")
+        assert state(page, "T.placedAtReplayStart") == 0  # parts come back as the replay runs
         wait(page, "Object.keys(T.placed).length === 3 && T.deltaPoints.length > 0")
         shot(page, shots / "6-replay.png")
         assert errors == []
