@@ -1,4 +1,4 @@
-"""The language front end on the unseen evaluation sets (dev, dev2 … dev7 and frozen test).
+"""The language front end on the unseen evaluation sets (dev, dev2 … dev8 and frozen test).
 
 Every case is planned in-process with `sdi.pipeline.plan` and scored:
 
@@ -9,11 +9,11 @@ Every case is planned in-process with `sdi.pipeline.plan` and scored:
 * silent misreading — status ``success`` but the predicate fails (the worst outcome).
 
 Writes `benchmarks/results/language_dev.json`, `language_dev2.json`, `language_dev3.json`,
-`language_dev4.json`, `language_dev5.json`, `language_dev6.json`, `language_dev7.json` and
-`language_test.json`.
+`language_dev4.json`, `language_dev5.json`, `language_dev6.json`, `language_dev7.json`,
+`language_dev8.json` and `language_test.json`.
 
-Run: `python benchmarks/language.py [--set dev|dev2|…|dev7|test|both|all]` (`both` = dev and
-test, `all` = dev, dev2 … dev7 and test).
+Run: `python benchmarks/language.py [--set dev|dev2|…|dev8|test|both|all]` (`both` = dev and
+test, `all` = dev, dev2 … dev8 and test).
 """
 
 from __future__ import annotations
@@ -94,7 +94,19 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument(
         "--set",
-        choices=("dev", "dev2", "dev3", "dev4", "dev5", "dev6", "dev7", "test", "both", "all"),
+        choices=(
+            "dev",
+            "dev2",
+            "dev3",
+            "dev4",
+            "dev5",
+            "dev6",
+            "dev7",
+            "dev8",
+            "test",
+            "both",
+            "all",
+        ),
         default="both",
     )
     args = ap.parse_args(argv)
@@ -127,6 +139,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from sdi.bench.language_dev7 import CASES as DEV7
 
         sets.append(("dev7", DEV7))
+    if args.set in ("dev8", "all"):
+        from sdi.bench.language_dev8 import CASES as DEV8
+
+        sets.append(("dev8", DEV8))
     if args.set in ("test", "both", "all"):
         from sdi.bench.language_test import CASES as TEST
 

@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to seventh dev sets (dev2 … dev7) are held to the same checks and share no
+second to eighth dev sets (dev2 … dev8) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -22,6 +22,7 @@ from sdi.bench.language_dev4 import CASES as DEV4
 from sdi.bench.language_dev5 import CASES as DEV5
 from sdi.bench.language_dev6 import CASES as DEV6
 from sdi.bench.language_dev7 import CASES as DEV7
+from sdi.bench.language_dev8 import CASES as DEV8
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -289,7 +290,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *TEST):
+    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -315,6 +316,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev5.py",
         "language_dev6.py",
         "language_dev7.py",
+        "language_dev8.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -735,7 +737,7 @@ def test_dev6_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev6_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV6}) == len(DEV6)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV6 if _norm(c.text) in seen]
 
@@ -835,7 +837,7 @@ def test_dev7_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev7_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV7}) == len(DEV7)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV7 if _norm(c.text) in seen]
 
@@ -924,5 +926,152 @@ _RING4 = ring(0.40, 0.25, 4)
 )
 def test_dev7_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev7(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev8
+
+
+def test_dev8_set_sizes_ids_and_phenomena():
+    assert len(DEV8) >= 120
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev8-") for c in DEV8)
+    per = {p: sum(c.phenomenon == p for c in DEV8) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
+    assert {c.phenomenon for c in DEV8} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV8)
+
+
+def test_no_command_shared_between_dev8_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV8}) == len(DEV8)
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV8 if _norm(c.text) in seen]
+
+
+def _dev8(case_id: str) -> Case:
+    return next(c for c in DEV8 if c.id == case_id)
+
+
+def _bridge(x, y, n):
+    """Two n-cube pillars at y ± 0.05 joined by a beam turned along y."""
+    return [*column(x, y - 0.05, n), *column(x, y + 0.05, n), beam(x, y, n * C + C / 2, YAW90)]
+
+
+def _grid_corners(x0, y0):
+    """A 3 (x) by 5 (y) grid with a 2-cube tower on each corner cell."""
+    corners = [(x0 + C * i, y0 + C * j) for i in (0, 2) for j in (0, 4)]
+    return [*grid(x0, y0, 3, 5), *[c for x, y in corners for c in column(x, y, 2, z0=C)]]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev8-rel-02",  # a 4-high tower left of a 3x3 pad, one cube gap
+            res(*grid(0.40, 0.20, 3, 3), *column(0.45, 0.40, 4)),
+            res(*grid(0.40, 0.20, 3, 3), *column(0.45, 0.10, 4)),
+        ),
+        (
+            "dev8-rel-03",  # two bridges, the right one's pillars one taller (left: 2)
+            res(*_bridge(0.45, 0.40, 2), *_bridge(0.45, 0.20, 3)),
+            res(*_bridge(0.45, 0.40, 3), *_bridge(0.45, 0.20, 2)),
+        ),
+        (
+            "dev8-rel-04",  # a 6x6 ring with a 2x2 block, 2 high, in the middle
+            res(*ring(0.40, 0.175, 6), *grid(0.50, 0.275, 2, 2, layers=2)),
+            res(*ring(0.40, 0.175, 6), *grid(0.50, 0.275, 2, 2, layers=1)),
+        ),
+        (
+            "dev8-rel-07",  # a 3x3 slab with one cube on each corner
+            res(*_slab_with_corner_columns(0.40, 0.25, 3, 1)),
+            res(
+                *grid(0.40, 0.25, 3, 3),
+                *[cube(x, y, 0.075) for x, y in ((0.40, 0.30), (0.50, 0.30), (0.45, 0.25))],
+                cube(0.45, 0.35, 0.075),
+            ),
+        ),
+        (
+            "dev8-rel-12",  # a left-right row of 5 with a 3-high tower on its middle cube
+            res(*_row_y(0.45, 0.20, 5), *column(0.45, 0.30, 3, z0=C)),
+            res(*_row_y(0.45, 0.20, 5), *column(0.45, 0.20, 3, z0=C)),
+        ),
+        (
+            "dev8-seq-09",  # a tower of 4, then one twice as tall on its right
+            res(*column(0.45, 0.40, 4), *column(0.45, 0.20, 8)),
+            res(*column(0.45, 0.40, 8), *column(0.45, 0.20, 4)),
+        ),
+        (
+            "dev8-seq-10",  # a 3x5 grid at the front with a 2-high tower on each corner
+            res(*_grid_corners(0.25, 0.20)),
+            res(*_grid_corners(0.60, 0.20)),
+        ),
+        (
+            "dev8-dim-05",  # 15 cm wide (y), 20 cm deep (x), 10 cm high
+            res(*grid(0.40, 0.25, 4, 3, layers=2)),
+            res(*grid(0.40, 0.25, 3, 4, layers=2)),
+        ),
+        (
+            "dev8-dim-10",  # two 3-high towers 0.1 m apart (clear gap or centre to centre)
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 3)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev8-dim-11",  # a bridge on 2-high pillars with a 50 mm gap between them
+            res(*_bridge(0.45, 0.30, 2)),
+            res(*column(0.45, 0.235, 2), *column(0.45, 0.365, 2), beam(0.45, 0.30, 0.125, YAW90)),
+        ),
+        (
+            "dev8-neg-11",  # a 3x3 block 2 high without the middle cubes
+            res(*ring(0.40, 0.25, 3, high=2)),
+            res(*grid(0.40, 0.25, 3, 3, layers=2)),
+        ),
+        (
+            "dev8-num-09",  # three towers of different heights adding up to nine
+            res(*column(0.40, 0.20, 2), *column(0.40, 0.30, 3), *column(0.40, 0.40, 4)),
+            res(*column(0.40, 0.20, 3), *column(0.40, 0.30, 3), *column(0.40, 0.40, 3)),
+        ),
+        (
+            "dev8-open-11",  # a few separate stacks of the same height
+            res(*column(0.40, 0.20, 3), *column(0.40, 0.30, 3), *column(0.40, 0.40, 3)),
+            res(*column(0.40, 0.20, 3), *column(0.40, 0.30, 3), *column(0.40, 0.40, 4)),
+        ),
+        (
+            "dev8-typo-09",  # an L with arms of 4 and 3
+            res(*_row_x(0.40, 0.30, 4), cube(0.40, 0.35, 0.025), cube(0.40, 0.40, 0.025)),
+            res(*_row_x(0.40, 0.30, 4), *[cube(0.40, 0.30 + C * j, 0.025) for j in (1, 2, 3)]),
+        ),
+        (
+            "dev8-wo-05",  # a tower of 2 standing on a bridge
+            res(*_bridge(0.45, 0.30, 2), *column(0.45, 0.30, 2, z0=3 * C)),
+            res(*_bridge(0.45, 0.30, 2), *column(0.45, 0.30, 3, z0=3 * C)),
+        ),
+        (
+            "dev8-typo-10",  # a ring round a 2-tower: free inside it, or a 3x3 fence laid tight
+            res(*ring(0.40, 0.25, 3), *column(0.45, 0.30, 2)),
+            res(*grid(0.40, 0.25, 3, 3, layers=2)),
+        ),
+        (
+            "dev8-rel-10",  # a one-high fence around a 4-tower
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 4)),
+            res(*ring(0.35, 0.20, 5, high=2), *column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev8-reg-11",  # a cube in each corner of the table and one in the middle
+            res(
+                *[cube(x, y, 0.025) for x in (0.25, 0.75) for y in (0.10, 0.50)],
+                cube(0.45, 0.30, 0.025),
+            ),
+            res(
+                *[cube(x, y, 0.025) for x in (0.25, 0.75) for y in (0.10, 0.50)],
+                cube(0.65, 0.30, 0.025),
+            ),
+        ),
+    ],
+)
+def test_dev8_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev8(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
