@@ -621,3 +621,124 @@ def test_a_staircase_that_does_not_climb_one_way_climbs_the_other():
     lo, hi = boxes(r)
     top = int(np.argmax(hi[:, 2]))
     assert lo[top, 0] == pytest.approx(lo[:, 0].min())  # the highest step is at the front
+
+
+# -- self-corrections, changes by the main size, components, chatter numbers ---------------------
+@pytest.mark.parametrize(
+    ("command", "key", "value", "said"),
+    [
+        ("lay out a line of 6 cubes, no wait, 7", "length", 7, "'6' → '7'"),
+        ("a 2x4 slab, sorry, not 2x4, 2x3", "width", 3, "'2 x 4' → '2 x 3'"),
+        ("a wall 20 cm long, i mean 30 cm", "length", 6, "'20 cm' → '30 cm'"),
+    ],
+)
+def test_a_correction_in_the_command_replaces_the_value_it_corrects(command, key, value, said):
+    r = read(command)
+    s = r.spec.structures[0]
+    got = getattr(s, key, None) or round((getattr(s, f"{key}_m", 0) or 0) / 0.05)
+    assert got == value and r.complete
+    assert any(said in n for n in r.notes), r.notes
+
+
+def test_a_corrected_region_moves_the_structure():
+    r = plan("a 3-cube stack on the right, actually the left")
+    lo, _hi = boxes(r)
+    assert r.status == "success" and lo[:, 1].min() > 0.30  # left is +y
+
+
+@pytest.mark.parametrize(
+    ("command", "key", "value"),
+    [
+        ("a line of 5 cubes. then make it 3", "length", 3),
+        ("stack 6 cubes; no wait, make it 2", "height", 2),
+        ("a 4-step staircase. make it 2", "steps", 2),
+    ],
+)
+def test_make_it_n_sets_the_size_the_structure_was_given(command, key, value):
+    r = read(command)
+    assert len(r.spec.structures) == 1 and getattr(r.spec.structures[0], key) == value
+    assert r.complete
+
+
+def test_make_it_n_on_a_structure_with_two_sizes_is_not_guessed():
+    r = plan("a 3 by 4 pad. then make it 5")
+    assert r.status != "success"  # which side is 5 is not said
+
+
+def test_a_later_clause_about_pillars_sizes_the_bridge_before():
+    r = plan("a bridge please. its pillars 4 high.")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 2 * 4 + 1 and np.isclose(hi[:, 2].max(), 5 * 0.05)
+
+
+def test_towers_and_a_beam_across_are_one_bridge():
+    r = plan("two columns of 2 cubes and one beam across them")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 5 and len(r.spec.structures) == 1
+    top = hi[:, 2] > 0.11
+    assert top.sum() == 1 and (hi[top, 1] - lo[top, 1]).max() > 0.1  # the beam spans
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "shift B handover at 6:30 - build a 3-cube tower",
+        "Page 12 of the manual says: a tower of 3",
+        "the team meeting is at 2pm, meanwhile a 3 cube tower",
+    ],
+)
+def test_times_and_reference_numbers_are_not_sizes(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    lo, _hi = boxes(r)
+    assert len(lo) == 3 and len(r.spec.structures) == 1
+
+
+def test_an_offset_from_the_centre_is_a_coordinate():
+    r = plan("a 2-cube tower 15 cm to the right of the centre")
+    lo, hi = boxes(r)
+    assert np.isclose((lo[:, 1].min() + hi[:, 1].max()) / 2, 0.30 - 0.15)
+    assert any("y = 0.15" in n for n in r.notes)
+
+
+def test_wide_is_left_to_right_and_deep_front_to_back():
+    for command in ("a pad 2 wide and 4 deep", "a pad 2 across, 4 back", "a 4 deep, 2 wide pad"):
+        lo, hi = boxes(plan(command))
+        assert np.isclose(hi[:, 0].max() - lo[:, 0].min(), 0.20), command  # 4 deep along x
+        assert np.isclose(hi[:, 1].max() - lo[:, 1].min(), 0.10), command  # 2 wide along y
+
+
+@pytest.mark.parametrize(
+    ("command", "height"),
+    [("a stack of ten minus 7", 3), ("two rows, one of 6 and one of 3 fewer", None)],
+)
+def test_spoken_arithmetic_is_computed(command, height):
+    r = read(command)
+    if height:
+        assert r.spec.structures[0].height == height
+    else:
+        assert sorted(s.length for s in r.spec.structures) == [3, 6]
+    assert r.complete
+
+
+def test_the_same_family_with_the_names_the_one_named_before():
+    r = read("an L and a tower next to each other, the L on the right")
+    assert [s.shape for s in r.spec.structures].count("l_shape") == 1
+    assert next(s for s in r.spec.structures if s.shape == "l_shape").region == "right"
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "the right tower twice as tall as a 3-cube tower on the left, which is lower",
+        "a tower floating above the table",
+        "a wall, but turn it",
+    ],
+)
+def test_a_size_or_direction_word_left_unused_is_never_a_silent_success(command):
+    r = plan(command)
+    assert r.status != "success" or any(
+        w in " ".join(r.notes) for w in ("twice", "floating", "turn", "lower")
+    )

@@ -66,8 +66,9 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
     if tok is None and not numeric and word not in words.CORRECTABLE | words.NEGATIONS:
         return  # a piece of a contraction ("we've" → "weve") or a symbol
     known = (
-        word in words.CORRECTABLE or word in words.NEGATIONS or numeric
-    ) and word not in words.HARMLESS
+        (word in words.CORRECTABLE or word in words.NEGATIONS or numeric)
+        and word not in words.HARMLESS
+    ) or word in words.SIGNIFICANT
     if tok is not None and not known and not _attached(tok):
         if word not in words.HARMLESS and word not in words.CONSULTED:
             st.ignored.append(word)

@@ -75,6 +75,50 @@ def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} "
 
 
+def _from_centre(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "10 cm to the left of the centre": a coordinate, the workspace centre moved."""
+    said, groups = _said(m)
+    metres = float(groups[0]) * lx.UNITS_M[groups[1]]
+    side = groups[2].split()[-1]
+    cx, cy = st.cell.design.regions.get("centre", st.cell.design.anchor)
+    centre = {"x": cx, "y": cy}
+    axis, sign = {"left": ("y", 1), "right": ("y", -1), "back": ("x", 1), "behind": ("x", 1),
+                  "front": ("x", -1), "forward": ("x", 1)}[side]  # fmt: skip
+    value = round(centre[axis] + sign * metres, 4)
+    st.notes.append(f"read '{said}' as {axis} = {value:g} m")
+    return f" at {axis} = {value:g} m "
+
+
+def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "one of 7 and one of 2 fewer": the number said last before it, changed."""
+    said, groups = _said(m)
+    before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
+    said_before = [w for w in words_to_numbers(before) if w.isdigit()]
+    n = words_to_numbers([groups[0]])[0]
+    if not said_before or not n.isdigit():
+        return m.group(0)
+    value = int(said_before[-1]) + (int(n) if groups[1] == "more" else -int(n))
+    if value < 1:
+        return m.group(0)
+    st.notes.append(f"read '{said}' as {value} ({said_before[-1]} {groups[1]} {n})")
+    return f" {value} "
+
+
+def _operation(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "nine minus four", "3 times 2": the number it comes to."""
+    said, groups = _said(m)
+    a, b = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
+    if not (a.isdigit() and b.isdigit()):
+        return m.group(0)
+    op = groups[1].split()[0]
+    value = {"plus": int(a) + int(b), "minus": int(a) - int(b), "times": int(a) * int(b),
+             "multiplied": int(a) * int(b)}[op]  # fmt: skip
+    if value < 1:
+        return m.group(0)
+    st.notes.append(f"read '{said}' as {value}")
+    return f" {value} "
+
+
 def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     said, groups = _said(m)
     other = "front to back" if groups[0].split()[0] in ("left", "side") else "left to right"
@@ -138,7 +182,10 @@ def _times(m: re.Match[str], st: ReadState, note: str) -> str:
     said, groups = _said(m)
     factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
     base_n = words_to_numbers([groups[2]])[0]
-    k_ = factor.get(re.sub(r"\s+", " ", groups[0]), 0)
+    times = re.fullmatch(r"(\w+)\s+times", groups[0])
+    k_: float = factor.get(re.sub(r"\s+", " ", groups[0]), 0)
+    if times and words_to_numbers([times.group(1)])[0].isdigit():
+        k_ = int(words_to_numbers([times.group(1)])[0])
     if not base_n.isdigit() or not k_ or (int(base_n) * k_) % 1:
         return m.group(0)
     value = int(int(base_n) * k_)
@@ -183,6 +230,9 @@ HANDLERS: dict[str, Handler] = {
     "{no_beams}": _no_beams,
     "{placement}": _placement,
     "{arith}": _arith,
+    "{from_centre}": _from_centre,
+    "{relative}": _relative,
+    "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,
     "{not_axis}": _not_axis,

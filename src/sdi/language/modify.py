@@ -9,7 +9,7 @@ import re
 from sdi.errors import SpecError
 from sdi.language.state import Phrase, ReadState
 from sdi.model.cell import CellConfig
-from sdi.spec.grammar import parse_phrase
+from sdi.spec.grammar import PRIMARY, parse_phrase
 from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import StructureDraft
 
@@ -50,7 +50,7 @@ MODIFY = [
         "=",
     ),
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
-    _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "="),
+    _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
     _op(
         r"\b(?:move|shift|put|place|slide)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|at|on)\s+(?:the\s+)?"
         r"(left|right|front|back|middle|centre|center)\b",
@@ -128,6 +128,11 @@ def modify(
             p.count = 0
             p.modified = True
             return True
+        key = None
+        if op == "=main":  # "make it 4": the size the structure was given, or its main one
+            key, op = _main_slot(structures[built[-1].first + built[-1].count - 1]), "="
+            if key is None:
+                return False
         if op in ("+1", "-1"):
             n, op = 1, op[0]
         else:
@@ -145,7 +150,7 @@ def modify(
             pick = {"first": 0, "second": 1, "third": 2, "last": target.count - 1}
             index = target.first + min(pick[ordinal.group(1).lower()], target.count - 1)
         last = structures[index]
-        key = "steps" if last.shape == "staircase" else "height"
+        key = key or ("steps" if last.shape == "staircase" else "height")
         now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
         if op == "/" and now % n:
             return False
@@ -163,7 +168,17 @@ def modify(
     return False
 
 
-def continues(p: Phrase, before: list[Phrase], cell: CellConfig) -> tuple[int, Phrase] | None:
+def _main_slot(s: StructureDraft) -> str | None:
+    """The one size slot the command gave `s`, else its family's main one; None if unclear."""
+    given = [k for k in ("length", "width", "height", "steps", "count") if getattr(s, k)]
+    if len(given) == 1:
+        return given[0]
+    return PRIMARY.get(s.shape) if not given else None
+
+
+def continues(
+    p: Phrase, before: list[Phrase], cell: CellConfig, joiner: str = " , "
+) -> tuple[int, Phrase] | None:
     """A phrase with no structure that modifies the one before ("Make it 5 cubes tall"):
     the earlier phrase read again with it, and how many structures it had."""
     built = [q for q in before if q.spec is not None]
@@ -171,7 +186,7 @@ def continues(p: Phrase, before: list[Phrase], cell: CellConfig) -> tuple[int, P
         return None
     prev = built[-1]
     try:
-        spec, _ = parse_phrase(prev.text + " , " + p.text, cell)
+        spec, _ = parse_phrase(prev.text + joiner + p.text, cell)
     except SpecError:
         return None
     if prev.spec is not None and spec.structures == prev.spec.structures:
@@ -179,7 +194,7 @@ def continues(p: Phrase, before: list[Phrase], cell: CellConfig) -> tuple[int, P
     count = prev.count
     if len(spec.structures) != count:
         return None  # the later words named a structure after all: not a continuation
-    prev.text = prev.text + " , " + p.text
+    prev.text = prev.text + joiner + p.text
     prev.spec = spec
     p.count = 0
     return count, prev

@@ -35,8 +35,11 @@ _DECIMAL_COMMA = re.compile(r"(?<=[=:])\s*(-?\d+),(\d+)\b(?!\s*(?:,|and)\s*\d)")
 
 _REFERENCE_NO = re.compile(
     r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell|booth|"
-    r"hall|aisle|lab|desk|batch|lot|week|version|rev)\s*"
-    r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b",
+    r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|"
+    r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|"
+    r"exercise|lesson|experiment|sample|bench|rig|line\s+no)\s*"
+    r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
+    r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
     re.IGNORECASE,
 )
 
@@ -196,7 +199,9 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _DECIMAL_COMMA.sub(comma, text)
 
     def reference(m: re.Match[str]) -> str:
-        notes.append(f"ignored '{m.group(0)}': a reference number, not a size")
+        time = re.search(r"\d[:.]\d\d$|[ap]\.?m\.?$", m.group(0).lower())
+        what = "a time of day" if time else "a reference number"
+        notes.append(f"ignored '{m.group(0)}': {what}, not a size")
         return " "
 
     text = _REFERENCE_NO.sub(reference, text)

@@ -40,7 +40,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import LimitError, SpecError
-from sdi.language import typos
+from sdi.language import corrections, typos
 from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
@@ -75,6 +75,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = normalise(command, st.notes)
     text, corrected = typos.correct(text)
     st.notes += corrected
+    text = corrections.correct(text, st.notes)
     text = rewrite(text, st)
     text = text.strip()
     doc = parse(text)

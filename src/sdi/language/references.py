@@ -56,7 +56,7 @@ def definite(
         return None
     said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
     known = structures[matches[0]].model_dump(exclude_defaults=True, exclude={"shape"})
-    words_ = set(re.findall(r"[a-z]+", p.text.lower()))
+    words_ = set(re.findall(r"[a-z]+", p.text[: m.end()].lower()))  # "the T on the left": it
     if any(known.get(k) not in (None, v) for k, v in said.items()) or words_ & (
         set(lx.REGION_WORDS) | COPY_WORDS | {"other", "first", "second", "third", "last"}
     ):

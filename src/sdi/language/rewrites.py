@@ -113,6 +113,7 @@ _ENCLOSURES = "|".join(
     sorted((w for w, f in lx.SHAPE_WORDS.items() if f == "enclosure" and w.isalpha()), key=len)
 )
 _SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
+_NUMBER_WORD = "one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve"
 
 
 _REWRITES += [
@@ -693,6 +694,55 @@ _REWRITES += [
     ),
     (
         re.compile(
+            r"\b(\d+(?:\.\d+)?)\s*(cm|mm|m)\s+(?:to\s+(?:the\s+)?|towards\s+the\s+)?"
+            r"(left|right|back|front|in\s+front|behind|forward)(?:\s+(?:of|from))?\s+(?:the\s+)?"
+            r"(?:centre|center|middle)(?:\s+of\s+the\s+(?:table|workspace|cell|area))?",
+            re.IGNORECASE,
+        ),
+        "{from_centre}",
+        "",
+    ),
+    (
+        re.compile(
+            r"(?<=\bof\s)(\d+|one|two|three|four|five)\s+(more|fewer|less)\b(?!\s+than)"
+            r"(?:\s+(?:cubes?|parts?))?",
+            re.IGNORECASE,
+        ),
+        "{relative}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(\d+|[a-z]+)\s+(plus|minus|times|multiplied\s+by)\s+(\d+|[a-z]+)\b",
+            re.IGNORECASE,
+        ),
+        "{operation}",
+        "",
+    ),
+    (  # "centred left-right": across the table, the default; the other region word stays
+        re.compile(
+            r",?\s*\b(?:centred|centered|central)\s+(?:left[- ]to[- ]right|left[- ]right|"
+            r"side[- ]to[- ]side|sideways|between\s+left\s+and\s+right)\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "read '{0}' as centred across the table (y)",
+    ),
+    (  # "3 across, 5 back": across the table is the width, back from the robot the depth
+        re.compile(
+            r"\b(\d+|"
+            + _NUMBER_WORD
+            + r")\s+across\s*,?\s*(?:and\s+)?(\d+|"
+            + _NUMBER_WORD
+            + r")\s+"
+            r"(?:back|going\s+back|front\s+to\s+back|back\s+to\s+front)\b",
+            re.IGNORECASE,
+        ),
+        " {0} wide , {1} deep ",
+        "read '{0}' as wide and deep",
+    ),
+    (
+        re.compile(
             r"\b(\d+|two|three|four|five)\s+more\s+(?:just\s+)?(?:like|of)\s+(?:it|them|that|those)\b",
             re.IGNORECASE,
         ),
@@ -748,6 +798,16 @@ _REWRITES += [
         "{rows_of}",
         "",
     ),
+    (  # "two towers of 3 and a beam across": the beam lies across the towers
+        re.compile(
+            r"\b(towers?|pillars?|columns?|stacks?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
+            r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar)\s+(?:across|over|on\s+top)"
+            r"(?:\s+(?:them|the\s+top|of\s+them|both))?\b",
+            re.IGNORECASE,
+        ),
+        " {0}{1} joined at the top by a {2} ",
+        "read '{0}' as the towers joined by the beam",
+    ),
     (
         re.compile(r"\bon\s+top\s+off\b", re.IGNORECASE),
         " on top of ",
@@ -791,7 +851,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\b(twice|double|three\s+times|thrice|half)\s+as\s+(tall|high|long|wide)\s+as\s+(?:a\s+)?"
+            r"\b(twice|double|thrice|half|(?:\d+|two|three|four|five)\s+times)\s+as\s+"
+            r"(tall|high|long|wide)\s+as\s+(?:a\s+)?"
             r"(\d+|[a-z]+)(?:[- ](?:cubes?|parts?|blocks?)(?:[- ](?:tower|stack|column|one))?)?\b",
             re.IGNORECASE,
         ),

@@ -79,6 +79,15 @@ def fill_slots(
                 structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
                 _carry_notes(prev.spec.notes, st)
                 continue
+        if _COMPONENT.search(p.text) and _pillared(phrases[:k]):
+            grown = continues(p, phrases[:k], st.cell, " with ")  # "A bridge. Pillars of 3."
+            if grown is not None:
+                before_count, prev = grown
+                assert prev.spec is not None
+                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
+                _carry_notes(prev.spec.notes, st)
+                st.notes.append(f"read '{p.text}' as the {prev.spec.structures[0].shape}'s own")
+                continue
         if REMOVAL.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
             # "then pull out the middle cube", "push them together": a change SDI cannot
             # make to a structure it built; never a new structure read from those words
@@ -148,6 +157,16 @@ def fill_slots(
         st.material.append(text)
         st.notes.append(f"ignored '{text}': no structure named there")
     return structures
+
+
+_COMPONENT = re.compile(r"\b(?:pillars?|legs?|posts?|supports?|uprights?|piers?)\b", re.I)
+_PILLARED = frozenset({"bridge", "arch", "canopy", "table"})
+
+
+def _pillared(before: list[Phrase]) -> bool:
+    """The last structure named stands on pillars or legs (a bridge, an arch, a table)."""
+    built = [q for q in before if q.spec is not None and q.count]
+    return bool(built) and built[-1].spec.structures[-1].shape in _PILLARED  # type: ignore[union-attr]
 
 
 def _carry_notes(notes: tuple[str, ...], st: ReadState) -> None:

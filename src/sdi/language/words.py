@@ -72,7 +72,7 @@ HARMLESS = _words(
     absolutely precisely have has having had period comma stop u ur story stuff point work
     working surface bench heights lengths widths sizes plus tidy task running runs actually
     sorry oops wait req fyi thx asap kindly ta lonely sturdy sign slide visual deck mock
-    mockup
+    mockup meanwhile anyway anyways besides btw otherwise
     """
 )
 
@@ -109,13 +109,26 @@ VOCABULARY = frozenset(
     | set(lx.UNITS_M)
 )
 
+# Words that change a size, a count or a direction wherever the parse attaches them ("the right
+# one twice as tall", "nine minus four", "going down into the table"): left unused, they are
+# material even when the parse hangs them on the chatter.
+SIGNIFICANT = _words(
+    """
+    twice thrice double doubled triple tripled quadruple half halve halved minus fewer less
+    times taller shorter higher lower bigger smaller wider narrower longer deeper shallower
+    thicker thinner tallest shortest highest lowest biggest smallest widest longest
+    below underneath beneath floating hanging hovering suspended upside inverted
+    sunk sunken buried turn rotate twist flip mirror mirrored
+    """
+)
+
 MATERIAL_POS = frozenset({"NOUN", "PROPN", "VERB", "ADJ", "ADV", "NUM", "X", "INTJ"})
 
 
 def is_material(word: str, pos: str | None) -> bool:
     """An unused word that makes the reading incomplete (see the module doc)."""
     w = word.lower()
-    if w in NEGATIONS:
+    if w in NEGATIONS or w in SIGNIFICANT:
         return True
     if w[:1].isdigit() or (w[:1] == "-" and w[1:2].isdigit()):
         return True

@@ -675,6 +675,7 @@ class _Parser:
                 self.is_num(k)
                 and not t[k].used
                 and self.word(k + 1) in rows
+                and not (k + 1 == h.index and h.shape == "tower")  # "two columns of 2": two
                 and self.word(k + 2) == "of"
                 and self.is_num(k + 3)
                 and not t[k + 3].used
@@ -721,7 +722,17 @@ class _Parser:
                         key = "height"  # "five across and three deep, one cube thick"
                     elif key in p and p[key] != v and p.get("_word_" + key) != wj:
                         other = {"width": "length", "length": "width"}.get(key)
-                        if other and other not in p:
+                        if (
+                            other == "length"
+                            and other not in p
+                            and wj == "deep"
+                            and p.get("_word_width") in ("wide", "across")
+                            and h.shape in ("grid", "block", "enclosure", "castle")
+                        ):
+                            # "3 wide and 5 deep": deep is front to back (the width slot,
+                            # along x), wide left to right (the length, along y)
+                            p["length"], p["_word_length"] = p.pop("width"), p.pop("_word_width")
+                        elif other and other not in p:
                             key = other  # "3 wide, 2 deep": two different sides
                     p.setdefault("_word_" + key, wj)
                     p.setdefault(key, v)
@@ -1080,6 +1091,7 @@ class _Parser:
 
     # -- compounds and defaults ----------------------------------------------------------------
     def merge_compounds(self) -> None:
+        self._merge_definites()
         # "three towers in a row", "towers in a line": an arrangement, not another structure
         self.hits = [
             h
@@ -1160,6 +1172,28 @@ class _Parser:
             merged.append(h)
             k += 1
         self.hits = merged
+
+    def _merge_definites(self) -> None:
+        """ "a T and a cross next to each other, the T on the left": "the T" is the T named
+        before (one of its family, singular), so its words go to that one."""
+        kept: list[Hit] = []
+        for h in self.hits:
+            same = [e for e in kept if e.shape == h.shape]
+            if (
+                self.word(h.index - 1) == "the"
+                and not h.plural
+                and len(same) == 1
+                and not same[0].plural
+                and same[0].multiplicity == 1
+                and all(same[0].params.get(key, v) == v for key, v in h.params.items())
+            ):
+                same[0].params = {**same[0].params, **h.params}
+                self.notes.append(
+                    f"'the {self.word(h.index)}': the {h.shape.replace('_', ' ')} named before"
+                )
+                continue
+            kept.append(h)
+        self.hits = kept
 
     @staticmethod
     def _letter_wall(h: Hit, nxt: Hit) -> bool:
@@ -1349,7 +1383,9 @@ class _Parser:
             for key, values in table.items():
                 applies = dim == "all" or key == dim or key in related
                 if applies and key not in p and f"{key}_m" not in p:
-                    p[key] = values[index]
+                    # a small block is still a block (2 high); only a low one is one layer
+                    low = shape == "block" and key == "height" and dim == "all"
+                    p[key] = max(values[index], 2) if low else values[index]
         if shape == "block" and cube_word and "length" in p:
             p.setdefault("width", p["length"])  # "a compact cube of cubes": equal sides
             p.setdefault("height", p["length"])
@@ -1429,8 +1465,13 @@ class _Parser:
                 return Hit(
                     index=len(self.toks), shape=shape, plural=False, start=0, end=len(self.toks)
                 )
+        counted = any(
+            t.kind == "num" or t.text in QUANTITY_WORDS or t.text in lx.PART_WORDS
+            for t in self.toks
+        )
         for k, t in enumerate(self.toks):
-            if t.text in lx.VERB_SHAPES and not t.used:
+            if t.text in lx.VERB_SHAPES and not t.used and (counted or self._verb_position(k)):
+                # "group them", "stack 5 cubes"; not "the group meeting moved"
                 t.used = True
                 return Hit(
                     index=k, shape=lx.VERB_SHAPES[t.text], plural=False, start=0, end=len(self.toks)

@@ -1,0 +1,89 @@
+"""Self-corrections: "a row of 3, no wait, 4", "a 3x5 pad — sorry, not 3x5, 3x4", "on the left,
+actually the right". An operator who corrects a value mid-sentence means the later value in
+place of the earlier one of the same kind (a size group, a length with a unit, a count, a
+region). The correction replaces it in the text before anything else reads it, with a note;
+a correction that names a structure again ("no wait, make it a wall") or changes it ("make it
+4") is left to the later stages as a clause of its own."""
+
+from __future__ import annotations
+
+import re
+
+from sdi.spec import lexicon as lx
+from sdi.spec.numbers import TENS, UNITS
+
+_MARKER = re.compile(
+    r"\s*[,.;:!—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
+    r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
+    r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*",
+    re.IGNORECASE,
+)
+
+_WORDS = sorted((set(UNITS) | set(TENS)) - {"no", "zero", "single"}, key=len, reverse=True)
+_NUMBER = r"(?:\d+(?:\.\d+)?|" + "|".join(_WORDS) + r")"
+_UNIT = r"(?:" + "|".join(sorted(map(re.escape, lx.UNITS_M), key=len, reverse=True)) + r")"
+_REGION = r"(?:" + "|".join(sorted(map(re.escape, lx.REGION_WORDS), key=len, reverse=True)) + r")"
+
+# The kinds of value a correction can replace, most specific first: (kind, pattern).
+_KINDS: tuple[tuple[str, re.Pattern[str]], ...] = (
+    ("size", re.compile(rf"\b{_NUMBER}(?:\s*(?:x|by)\s*{_NUMBER})+\b", re.I)),
+    ("length", re.compile(rf"\b{_NUMBER}\s*{_UNIT}\b", re.I)),
+    ("count", re.compile(rf"\b{_NUMBER}\b", re.I)),
+    ("region", re.compile(rf"\b(?:{_REGION})(?:\s+(?:{_REGION}))?\b", re.I)),
+)
+
+_NOT_OLD = re.compile(r"^(?:no\s*,?\s*)?not\s+[^,;.]+?\s*[,;]\s*|^no\s*,\s*", re.IGNORECASE)
+_FILLER = re.compile(
+    r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|the|a|an|to|on|at|in)\s+)+",
+    re.I,
+)
+
+
+_PARTS = re.compile(r"\s+(?:cubes?|blocks?|parts?|pieces?|bricks?)$", re.IGNORECASE)
+
+
+def _kind(value: str) -> str | None:
+    for kind, pattern in _KINDS:
+        m = pattern.fullmatch(value.strip())
+        if m:
+            return kind
+    return None
+
+
+def _names_structure(text: str) -> bool:
+    return any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", text.lower()))
+
+
+def correct(text: str, notes: list[str]) -> str:
+    """`text` with every "old …, no wait, new" replaced by the corrected wording."""
+    for _ in range(4):  # a command rarely corrects itself more than once or twice
+        m = _MARKER.search(text)
+        if m is None or m.start() == 0:
+            return text
+        before, after = text[: m.start()], text[m.end() :]
+        head = re.split(r"(?<=[.;!?])\s|,\s*(?=and\b|then\b)", after, maxsplit=1)
+        said, rest = head[0], after[len(head[0]) :]
+        value = _FILLER.sub("", _NOT_OLD.sub("", said.strip())).strip(" ,.;!?")
+        value = _PARTS.sub("", value)
+        kind = _kind(value) if value and not _names_structure(value) else None
+        if kind is None:  # a correction in words of its own: a clause the later stages read
+            text = before.rstrip(" ,;:—–-") + ". then " + after
+            continue
+        olds = list(_KINDS[[k for k, _ in _KINDS].index(kind)][1].finditer(before))
+        if kind == "count":  # a count is a bare number, not one of a size group or a length
+            olds = [o for o in olds if _kind(_widest(before, o)) == "count"]
+        if not olds:
+            return text
+        old = olds[-1]
+        notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
+        text = before[: old.start()] + value + before[old.end() :] + rest
+    return text
+
+
+def _widest(text: str, m: re.Match[str]) -> str:
+    """The number `m` together with a unit or size group it belongs to."""
+    for _, pattern in _KINDS[:2]:
+        for g in pattern.finditer(text):
+            if g.start() <= m.start() and m.end() <= g.end():
+                return g.group(0)
+    return m.group(0)
