@@ -678,7 +678,7 @@ def test_towers_and_a_beam_across_are_one_bridge():
     lo, hi = boxes(r)
     assert len(lo) == 5 and len(r.spec.structures) == 1
     top = hi[:, 2] > 0.11
-    assert top.sum() == 1 and (hi[top, 1] - lo[top, 1]).max() > 0.1  # the beam spans
+    assert top.sum() == 1 and (hi[top, :2] - lo[top, :2]).max() > 0.1  # the beam spans
 
 
 @pytest.mark.parametrize(
