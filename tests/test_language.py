@@ -742,3 +742,42 @@ def test_a_size_or_direction_word_left_unused_is_never_a_silent_success(command)
     assert r.status != "success" or any(
         w in " ".join(r.notes) for w in ("twice", "floating", "turn", "lower")
     )
+
+
+# -- distributive placement: one copy at each corner or end -------------------------------------
+def test_a_copy_on_each_corner_of_the_top_face():
+    r = plan("a 3-high stack on each corner of a 5 by 5 pad")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 25 + 4 * 3
+    up = lo[:, 2] > 0.01
+    pad_lo, pad_hi = lo[~up].min(axis=0), hi[~up].max(axis=0)
+    # four columns, each flush with one corner of the pad
+    for cx, cy in itertools.product((pad_lo[0], pad_hi[0]), (pad_lo[1], pad_hi[1])):
+        at = up & (np.isclose(lo[:, 0], cx) | np.isclose(hi[:, 0], cx))
+        at &= np.isclose(lo[:, 1], cy) | np.isclose(hi[:, 1], cy)
+        assert at.sum() == 3, (cx, cy)
+
+
+def test_towers_at_both_ends_stand_against_the_ends():
+    r = plan("a wall 4 long and 1 high with a 3-cube tower at each end of it")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 4 + 6
+    tall = hi[:, 2] > 0.06
+    ys = sorted({round(float(v), 3) for v in (lo[tall, 1] + hi[tall, 1]) / 2})
+    assert len(ys) == 2 and np.isclose(ys[1] - ys[0], 5 * 0.05)  # either side of 4 cubes
+
+
+def test_one_corner_is_a_single_copy_and_an_impossible_spread_is_an_error():
+    r = plan("a 3x3 slab with a 2-cube tower standing on one corner of it")
+    lo, _hi = boxes(r)
+    assert len(lo) == 9 + 2
+    r = plan("a 2x2 slab with a 2x2 pad on each corner")
+    assert r.status != "success" and r.layout is None
+
+
+def test_a_relation_at_corners_is_part_of_the_spec_and_refused_for_a_ring():
+    Relation(kind="on_top_of", subject=1, object=0, at="corners")
+    with pytest.raises(ValueError, match="at:"):
+        Relation(kind="around", subject=1, object=0, at="corners")

@@ -328,6 +328,50 @@ def _beside(base: _Placed, sub: _Placed, side: str | None, cell: CellConfig) -> 
     return unit
 
 
+def _at_anchors(base: _Placed, sub: _Placed, kind: str, at: str, cell: CellConfig) -> _Placed:
+    """One copy of `sub` at each corner or end of `base`: on its top face (``on_top_of``)
+    or against its two ends on the ground, touching them (``next_to``)."""
+    sub_bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
+    if kind == "on_top_of":
+        top, _ = _top(base)
+        high = base.z + np.array([d[2] for d in base.sizes]) / 2 > top - 1e-6
+        half = _footprint_half(base.yaws, base.sizes)[high]
+        lo, hi = (base.xy[high] - half).min(axis=0), (base.xy[high] + half).max(axis=0)
+        centre, room = (lo + hi) / 2, (hi - lo) / 2 - sub.half  # where a copy's centre may go
+        long = int(np.argmax(hi - lo))
+        if at.startswith("corner"):
+            if np.any(room < sub.half - 1e-9):  # two copies side by side would touch
+                raise InfeasibleError(
+                    f"on each corner: the {base.spec.shape}'s top face is too small for four "
+                    f"{sub.spec.shape}s apart; make it larger",
+                    parameter="length",
+                )
+            offsets = [np.array([sx * room[0], sy * room[1]]) for sx in (-1, 1) for sy in (-1, 1)]
+        else:
+            if room[long] < sub.half[long] - 1e-9:
+                raise InfeasibleError(
+                    f"on each end: the {base.spec.shape} is too short for two "
+                    f"{sub.spec.shape}s apart; make it longer",
+                    parameter="length",
+                )
+            offsets = [s * room[long] * np.eye(2)[long] for s in (-1.0, 1.0)]
+        anchors, dz = [centre + off for off in offsets], top - sub_bottom
+    else:
+        long = int(np.argmax(base.half))
+        reach = base.half[long] + sub.half[long]
+        base_bottom = float((base.z - np.array([d[2] for d in base.sizes]) / 2).min())
+        anchors = [s * reach * np.eye(2)[long] for s in (-1.0, 1.0)]
+        dz = base_bottom - sub_bottom
+    if not at.endswith("s"):  # "on one corner", "at one end": the first of them
+        anchors = anchors[:1]
+    shift = np.zeros(2)  # `_merge` re-centres the unit: anchors move with it
+    for anchor in anchors:
+        merged = _merge(base, sub, anchor - shift, dz)
+        shift = shift + (base.xy[0] - merged.xy[0])
+        base = merged
+    return base
+
+
 def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[_Placed]:
     """Fold related structures into units: a subject joins its object's unit.
 
@@ -359,6 +403,8 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                         parameter="length",
                     )
                 base = _merge(base, sub, np.zeros(2), 0.0)
+            elif rel.at is not None:
+                base = _at_anchors(base, unit(c), rel.kind, rel.at, cell)
             else:
                 sub = unit(c)
                 if rel.kind == "on_top_of":

@@ -133,7 +133,18 @@ def relate(
                 )
             replace[s_idx] = subject.model_copy(update=dict.fromkeys(placed))
         side = r.side or (phrases[r.object].side if r.object is not None else None)
-        relations.append(Relation(kind=kind, subject=s_idx, object=o_idx, side=side))
+        at = next((a for a in st.anchors if a[0] == kind), None)
+        if at is not None:
+            st.anchors.remove(at)
+            side = None
+        relations.append(
+            Relation(kind=kind, subject=s_idx, object=o_idx, side=side, at=at[1] if at else None)
+        )
+    for _, anchor in st.anchors:  # "on each corner" with nothing it could stand on
+        where = f"at each {anchor.rstrip('s')}" if anchor.endswith("s") else f"at one {anchor}"
+        st.material.append(where)
+        st.notes.append(f"ignored '{where}': no structure to stand it on or beside")
+    st.anchors.clear()
     for k, s in replace.items():
         structures[k] = s
     if drop:

@@ -51,13 +51,27 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
         return m.group(0)  # "a castle with a tower at each corner": the family's own
     if re.search(r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]):
         return m.group(0)  # "a courtyard 5 cubes on each side": a size
-    said = _said(m)[0]
-    st.material.append(said)
+    said = re.sub(r"\s+of\s+an?$", "", _said(m)[0])
+    at = "corners" if "corner" in said.lower() else "ends" if " end" in said.lower() else None
+    if at and re.search(r"\b(?:one|either)\b", said, re.IGNORECASE):
+        at = at[:-1]  # "on one corner": a single copy
+    if at is None:  # "on each side": which sides (all four? the long ones?) is not said
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': which sides of the structure is not clear")
+        return " "
+    on = re.match(r"\s*,?\s*(?:stacked|resting|standing|sitting)?\s*on\b", m.group(0), re.I)
+    on_top = re.search(r"\bon\s+top\s*,?\s*$", m.string[: m.start()], re.IGNORECASE)
+    kind = "on_top_of" if on or on_top or at == "corners" else "next_to"
+    st.anchors.append((kind, at))
     st.notes.append(
-        f"ignored '{said}': parts cannot be placed on a chosen end, side or corner of a "
-        "structure yet"
+        f"read '{said}' as " + (f"one at each of its {at}" if at.endswith("s") else f"on one {at}")
     )
-    return " "
+    if on_top and not m.group(1):
+        return " "  # "a wall with a cube on top at each end"
+    obj = m.group(1)
+    if kind == "on_top_of":
+        return f" on top of {obj} " if obj else " on top "
+    return f" next to {obj or 'it'} "
 
 
 def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -87,6 +101,28 @@ def _from_centre(m: re.Match[str], st: ReadState, note: str) -> str:
     value = round(centre[axis] + sign * metres, 4)
     st.notes.append(f"read '{said}' as {axis} = {value:g} m")
     return f" at {axis} = {value:g} m "
+
+
+def _square_base(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a pyramid with a 35 cm base side": the base is that long on every side."""
+    side = re.sub(r"[- ]cubes?$", "", (m.group(1) or m.group(2)).strip())
+    st.notes.append(f"read '{m.group(0).strip()}' as a square base {side} by {side}")
+    return f" {side} by {side} base "
+
+
+def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a cube in each corner of the table": one copy in each corner region. Without "of
+    the table" only when no other structure is named (then the corners may be its own)."""
+    what = m.group(1).strip()
+    rest = (m.string[: m.start()] + " " + m.string[m.end() :]).lower()
+    if re.search(r"\b(?:with|and|on|of)\b", what, re.IGNORECASE) or (
+        not m.group(2) and any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", rest))
+    ):
+        return m.group(0)  # "a slab with a cube on every corner": the slab's corners
+    what = re.sub(r"^(?:an?|one)\s+", "", what, flags=re.IGNORECASE)
+    corners = ("back left", "back right", "front left", "front right")
+    st.notes.append(f"read '{m.group(0).strip()}' as one in each corner of the table")
+    return " " + " and ".join(f"a {what} in the {c} corner" for c in corners) + " "
 
 
 def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -232,6 +268,8 @@ HANDLERS: dict[str, Handler] = {
     "{arith}": _arith,
     "{from_centre}": _from_centre,
     "{relative}": _relative,
+    "{corners}": _corners,
+    "{square_base}": _square_base,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

@@ -39,7 +39,7 @@ MODIFY = [
         "+1",
     ),
     _op(
-        r"\bmake\s+(?:it|them)\s+" + _N + r"\s+(?:more\s+)?(?:cubes?\s+|levels?\s+|layers?\s+)?"
+        r"\bmake\s+" + _REF + r"\s+" + _N + r"\s+(?:more\s+)?(?:cubes?\s+|levels?\s+|layers?\s+)?"
         r"(?:taller|higher)\b",
         "+",
     ),

@@ -148,8 +148,15 @@ def is_component(doc: Doc, clause: list[int], marker: int, head: int) -> bool:
     return family in _COMPONENTS.get(before[-1], set()) and doc[head].lower_.endswith("s")
 
 
+_PURE_BEAMS = BEAMS - {"slab", "bridge", "bridges", "arch", "roof", "deck"}
+
+
 def beam_only(text: str) -> bool:
     said = [w for w in re.findall(r"[a-z]+", text.lower()) if w not in words.HARMLESS]
+    if re.search(r"\b(?:another|second|same|identical|copy)\b", text, re.IGNORECASE) and not (
+        set(said) & _PURE_BEAMS
+    ):
+        return False  # "put another slab on top of it": a copy of the slab, not a beam
     return (
         bool(said)
         and all(w in BEAMS or w in lx.PART_WORDS for w in said)

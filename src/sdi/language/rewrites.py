@@ -676,8 +676,8 @@ _REWRITES += [
     (
         re.compile(
             r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at)\s+(?:top\s+of\s+)?(?:each|both|"
-            r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:end|ends|side|sides|corner|corners)"
-            r"(?:\s+of\s+(?:it|them|the\s+\w+))?",
+            r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:ends|end|sides|side|corners|corner)"
+            r"(?:\s+of\s+(it|them|the\s+\w+|an?\b))?",
             re.IGNORECASE,
         ),
         "{placement}",
@@ -717,6 +717,15 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{operation}",
+        "",
+    ),
+    (  # "a 35 cm base side", "base sides of 4": a square base
+        re.compile(
+            r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m)|\d+(?:[- ]cubes?)?)\s+(?:square\s+)?base\s+sides?\b"
+            r"|\bbase\s+sides?\s+(?:of\s+|is\s+|are\s+)?(\d+(?:\.\d+)?\s*(?:cm|mm|m)|\d+)\b",
+            re.IGNORECASE,
+        ),
+        "{square_base}",
         "",
     ),
     (  # "centred left-right": across the table, the default; the other region word stays
@@ -904,14 +913,21 @@ _LEGS = re.compile(r"\blegs?\b", re.IGNORECASE)
 _TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
 
 
+_ARTICLES = frozenset({"a", "an", "another", "the", "it", "them", "one", "two", "three"})
+
+
 def _another(text: str) -> str:
     """ "a tower on the left and another one on the right": another tower."""
 
     def sub(m: re.Match[str]) -> str:
+        said = re.findall(r"[a-z]+", text[: m.start()].lower())
         before = [
             w
-            for w in re.findall(r"[a-z]+", text[: m.start()].lower())
-            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES
+            for k, w in enumerate(said)
+            if w in lx.SHAPE_WORDS
+            and w not in lx.AMBIGUOUS_SHAPES
+            # "now stack a second one": the verb is not the noun it repeats
+            and not (w in lx.VERB_SHAPES and (k == len(said) - 1 or said[k + 1] in _ARTICLES))
         ]
         if not before:
             return m.group(0)
@@ -1000,6 +1016,15 @@ _DISTRIBUTE = re.compile(
 )
 
 
+# "a single cube in each of the four corners of the table": one in each corner region
+_CORNERS = re.compile(
+    r"\b((?:an?|one|a\s+single|single)\s+[^,.;]*?)\s+(?:in|at|on|into)\s+(?:each|every|all)\s+"
+    r"(?:one\s+)?(?:of\s+)?(?:the\s+)?(?:four\s+|4\s+)?corners?"
+    r"(\s+of\s+the\s+(?:table|workspace|work\s*space|cell|work\s*area|area))?",
+    re.IGNORECASE,
+)
+
+
 _COMPARISON = re.compile(
     r"\b(?:taller|shorter|higher|lower|bigger|smaller|wider|narrower|longer|larger|thicker|"
     r"deeper|more|fewer|less)\s+(?:\w+\s+)?than\s+(?:the\s+|that\s+|those\s+|a\s+)?\w+",
@@ -1028,6 +1053,7 @@ def rewrite(text: str, st: ReadState) -> str:
 
     text = _OWN_BEAM.sub(own_beam, text)
     text = _DISTRIBUTE.sub(lambda m: HANDLERS["{distribute}"](m, st, ""), text)
+    text = _CORNERS.sub(lambda m: HANDLERS["{corners}"](m, st, ""), text)
     text = _another(text)
     if (
         _LEGS.search(text)

@@ -47,3 +47,5 @@ class ReadState:
     material: list[str] = field(default_factory=list)
     no_stack: bool = False
     no_beams: bool = False
+    # "on each corner", "at both ends": (relation kind, anchor) for the next such relation
+    anchors: list[tuple[str, str]] = field(default_factory=list)

@@ -1253,6 +1253,15 @@ class _Parser:
         cube_word = p.pop("_cube_word", False)
         flat = p.pop("_flat", False)
         p.pop("_tower_sizes", None)
+        if (
+            h.verb
+            and shape == "tower"
+            and not sizes
+            and not any(k in p for k in ("height", "height_m", "count"))
+            and self.word(h.index + 1) in ("a", "an", "another", "one", "single")
+            and self.word(h.index + 2) in ("cube", "block", "part", "brick", "piece")
+        ):
+            p["height"] = 1  # "stack another cube on it": one cube, not a default tower
         legs = p.pop("_legs", None)
         if legs is not None and not (shape == "canopy" and legs == 4):
             self.notes.append(

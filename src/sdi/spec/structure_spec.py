@@ -351,6 +351,7 @@ class SpecDraft(BaseModel):
 
 RelationKind = Literal["on_top_of", "around", "next_to"]
 Side = Literal["left", "right", "front", "back"]
+Anchor = Literal["corners", "ends", "corner", "end"]
 
 
 class Relation(BaseModel):
@@ -360,6 +361,10 @@ class Relation(BaseModel):
     `subject` (a ring) encloses `object`, sized to leave one part of room on every side.
     ``next_to``: `subject` stands beside `object` on `side` (left = +y, back = +x), one
     structure gap away. A structure is the subject of at most one relation.
+
+    ``at`` makes the relation distributive — one copy of `subject` at each anchor: on the
+    object's top face at its four ``corners`` or two ``ends`` (``on_top_of``), or against its
+    two ``ends`` on the ground (``next_to``: "a tower at both ends of the wall").
     """
 
     model_config = ConfigDict(frozen=True, extra="forbid")
@@ -368,11 +373,24 @@ class Relation(BaseModel):
     subject: int = Field(ge=0, description="index of the structure that is placed")
     object: int = Field(ge=0, description="index of the structure it is placed against")
     side: Side | None = Field(None, description="next_to: which side of the object")
+    at: Anchor | None = Field(
+        None, description="one copy of the subject at each corner or end of the object"
+    )
+
+    @model_validator(mode="after")
+    def _anchor(self) -> Relation:
+        if self.at is not None and self.kind == "around":
+            raise ValueError("at: a ring around a structure has no corners or ends to stand at")
+        if self.at is not None and self.side is not None:
+            raise ValueError("at: copies at the corners or ends have no single side")
+        return self
 
     def describe(self, names: list[str] | None = None) -> str:
         a = names[self.subject] if names else f"#{self.subject + 1}"
         b = names[self.object] if names else f"#{self.object + 1}"
         kind = self.kind.replace("_", " ")
+        if self.at:
+            return f"{a} {kind} {b} (one at each of its {self.at})"
         if self.kind == "next_to" and self.side:
             return f"{a} {kind} {b} ({self.side})"
         return f"{a} {kind} {b}"
