@@ -492,7 +492,8 @@ def test_separate_cubes_stand_apart():
 
 def test_two_sizes_in_metres_go_to_two_sides_or_are_reported():
     s = read("a slab 10 cm wide and 20 cm deep").spec.structures[0]
-    assert (s.width_m, s.length_m) == (pytest.approx(0.10), pytest.approx(0.20))
+    # a slab's width slot runs front to back (x), its length left to right (y)
+    assert (s.width_m, s.length_m) == (pytest.approx(0.20), pytest.approx(0.10))
     w = read("wall, height 10cm, length 30cm").spec.structures[0]
     assert (w.height_m, w.length_m) == (pytest.approx(0.10), pytest.approx(0.30))
 
@@ -781,3 +782,51 @@ def test_a_relation_at_corners_is_part_of_the_spec_and_refused_for_a_ring():
     Relation(kind="on_top_of", subject=1, object=0, at="corners")
     with pytest.raises(ValueError, match="at:"):
         Relation(kind="around", subject=1, object=0, at="corners")
+
+
+# -- negated sides, limits, labels, what cannot be built ----------------------------------------
+def test_neither_side_of_an_axis_is_its_centre():
+    for command in (
+        "a 3-cube tower, not on the left or on the right",
+        "not front, not back: a tower",
+    ):
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        lo, hi = boxes(r)
+        centre = ((lo[:, 0].min() + hi[:, 0].max()) / 2, (lo[:, 1].min() + hi[:, 1].max()) / 2)
+        assert np.allclose(centre, (0.45, 0.30), atol=0.03), command
+
+
+def test_a_stated_maximum_is_built_and_said():
+    r = read("a bridge please, but do not make it taller than 3")
+    assert r.spec.structures[0].height == 3 and any("at most 3" in n for n in r.notes)
+
+
+def test_floating_or_below_the_table_is_never_a_silent_success():
+    for command in ("a 3-cube tower hovering above the table", "a row of 4 sunk into the table"):
+        r = plan(command)
+        assert r.status == "partial", command
+        assert any("stands on the table" in n for n in r.notes)
+
+
+def test_labelled_sizes_go_to_the_labelled_sides():
+    r = read("a block 4 x 2 x 3 (H x W x L)")
+    s = r.spec.structures[0]
+    assert (s.height, s.width, s.length) == (4, 2, 3)
+    r = read("a pad 10 x 20 cm (w x d)")
+    lo, hi = boxes(plan("a pad 10 x 20 cm (w x d)"))
+    assert np.isclose(hi[:, 0].max() - lo[:, 0].min(), 0.20)  # deep: front to back
+
+
+def test_a_second_relation_for_one_structure_is_reported_in_one_line():
+    r = plan("two rows of 4, one behind the other, and a gap of one cube between them")
+    assert r.status in ("partial", "error")
+    assert "\n" not in (r.error or "") and "pydantic" not in (r.error or "")
+
+
+def test_a_cube_fits_inside_a_ring_of_four():
+    r = plan("a single cube inside a 4 by 4 ring")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    inner = (hi[:, 2] < 0.06) & np.isclose(lo[:, 0], 0.425) & np.isclose(lo[:, 1], 0.275)
+    assert len(lo) == 12 + 1 and inner.sum() <= 1

@@ -394,12 +394,12 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                 sub_spec = _ring_for(spec.structures[c], base, cell)
                 sizes = _sizes(cell, sub_spec.part)
                 sub = _orient(sub_spec, generate(sub_spec, sizes), sizes)
-                inside = sub.half - 2 * cell.cube[0] * 0.999
-                if np.any(inside + 1e-9 < base.half):
+                inside = sub.half - cell.cube[0]  # the ring's walls are one part thick
+                if np.any(inside < base.half + 1e-9):  # no room between them: no inside
                     raise InfeasibleError(
                         f"around: the {sub_spec.shape}'s inside is smaller than the "
                         f"{base.spec.shape} it should enclose; make the ring at least "
-                        f"{round(2 * float(base.half.max()) / cell.cube[0]) + 2} parts on a side",
+                        f"{round(2 * float(base.half.max()) / cell.cube[0]) + 3} parts on a side",
                         parameter="length",
                     )
                 base = _merge(base, sub, np.zeros(2), 0.0)

@@ -125,6 +125,37 @@ def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     return " " + " and ".join(f"a {what} in the {c} corner" for c in corners) + " "
 
 
+def _neither_side(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "not left, not right": centred on that axis; "not at the back or the front": the same
+    front to back. Two sides of different axes ("not left or back") have no one reading."""
+    said, groups = _said(m)
+    pair = {groups[0], groups[1]}
+    if pair not in ({"left", "right"}, {"front", "back"}):
+        return m.group(0)
+    axis = "across the table (y)" if "left" in pair else "front to back (x)"
+    st.notes.append(f"read '{said}' as centred {axis}")
+    placed = re.search(r"\b(?:centre|center|middle|left|right|front|back)\b", m.string[m.end() :])
+    return " " if placed else " in the centre "
+
+
+def _at_most(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "don't make the pillars taller than 2": the most allowed is what is built."""
+    said, groups = _said(m)
+    st.notes.append(f"read '{said}' as at most {groups[1]}: built {groups[1]} high")
+    return f" , {groups[1]} high "
+
+
+def _unsupported(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "floating above the table", "down into the table": nothing SDI builds can do that."""
+    said = _said(m)[0]
+    st.material.append(said)
+    st.notes.append(
+        f"ignored '{said}': every structure stands on the table, resting on it or on parts "
+        "below it; nothing can float or go below the table surface"
+    )
+    return " "
+
+
 def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "one of 7 and one of 2 fewer": the number said last before it, changed."""
     said, groups = _said(m)
@@ -268,6 +299,9 @@ HANDLERS: dict[str, Handler] = {
     "{arith}": _arith,
     "{from_centre}": _from_centre,
     "{relative}": _relative,
+    "{neither_side}": _neither_side,
+    "{unsupported}": _unsupported,
+    "{at_most}": _at_most,
     "{corners}": _corners,
     "{square_base}": _square_base,
     "{operation}": _operation,

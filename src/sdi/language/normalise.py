@@ -121,6 +121,16 @@ _AXES_LABEL = re.compile(
 )
 
 
+_VALUE = r"\d+(?:\.\d+)?\s*(?:mm|cm|m)?"
+_LABEL = r"(?:length|width|height|depth|[lwdh])"
+_LABELLED = re.compile(
+    rf"(?P<values>{_VALUE}(?:\s*[x×*]\s*{_VALUE}){{1,2}})\s*\(?\s*"
+    rf"(?P<labels>{_LABEL}(?:\s*[x×*]\s*{_LABEL}){{1,2}})\s*\)?(?!\w)",
+    re.IGNORECASE,
+)
+_DIMENSION_OF = {"l": "long", "w": "wide", "h": "high", "d": "deep"}
+
+
 _SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
 
 
@@ -156,6 +166,25 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return " "
 
     text = _UNRELATED.sub(unrelated, text)
+
+    def labelled(m: re.Match[str]) -> str:
+        values = [v.strip() for v in re.split(r"\s*[x×*]\s*", m.group("values"))]
+        unit = re.search(r"[a-z]+$", values[-1], re.IGNORECASE)
+        if unit:  # "20 x 10 cm": the unit said last is every value's
+            values = [
+                v if re.search(r"[a-z]$", v, re.I) else f"{v} {unit.group(0)}" for v in values
+            ]
+        labels = [lb.strip().lower()[:1] for lb in re.split(r"\s*[x×*]\s*", m.group("labels"))]
+        if len(values) != len(labels) or len(set(labels)) != len(labels):
+            return m.group(0)
+        said = " and ".join(
+            f"{v} {_DIMENSION_OF[lb]}" for v, lb in zip(values, labels, strict=True)
+        )
+        if notes is not None:
+            notes.append(f"read '{m.group(0).strip()}' as {said}")
+        return f" {said} "
+
+    text = _LABELLED.sub(labelled, text)  # "250mm x 100mm (L x H)": the label says which
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
     # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before
     text = re.sub(

@@ -53,7 +53,7 @@ from sdi.language.state import ReadState
 from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
-from sdi.spec.structure_spec import Spec, StructureDraft
+from sdi.spec.structure_spec import Relation, Spec, StructureDraft
 
 
 def read(command: str, cell: CellConfig | None = None) -> Reading:
@@ -117,15 +117,18 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         raise SpecError(
             f"{len(specs)} structures is more than 50", understood=understood_summary(doc)
         )
+    relations = _one_each(relations, st)
     try:
         spec = Spec(
             structures=tuple(specs),
             relations=tuple(relations),
             notes=tuple(dict.fromkeys(st.notes)),
         )
-    except ValueError as exc:
+    except ValueError as exc:  # one line, without the validator's framing
+        errors = getattr(exc, "errors", None)
+        why = errors()[0]["msg"].removeprefix("Value error, ") if errors else str(exc)
         raise SpecError(
-            f"the structures cannot be related: {exc}", understood=understood_summary(doc)
+            f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
     return Reading(
         command=command,
@@ -136,6 +139,22 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         ignored=tuple(dict.fromkeys(st.ignored)),
         material=tuple(dict.fromkeys(st.material)),
     )
+
+
+def _one_each(relations: list[Relation], st: ReadState) -> list[Relation]:
+    """A structure is placed by one relation: a second one for the same structure ("one behind
+    the other, … between them") is reported, not built."""
+    kept: list[Relation] = []
+    for r in relations:
+        if any(k.subject == r.subject for k in kept):
+            st.material.append(f"relation {r.kind}")
+            st.notes.append(
+                f"ignored '{r.kind.replace('_', ' ')}': structure {r.subject + 1} is already "
+                "placed by another relation"
+            )
+            continue
+        kept.append(r)
+    return kept
 
 
 _TOUCHING = re.compile(

@@ -28,6 +28,16 @@ _LEVEL_ORDINAL = re.compile(
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "not left, not right - in the middle": neither side of that axis
+        re.compile(
+            r"\b(?:(?:which|that)\s+)?(?:should\s+|must\s+|is\s+|are\s+)?not\s+(?:be\s+)?(?:on\s+|at\s+|in\s+)?"
+            r"(?:the\s+)?(left|right|front|back)\s*(?:,|or|nor|and)?\s*(?:not\s+)?(?:on\s+|at\s+|in\s+)?"
+            r"(?:the\s+)?(left|right|front|back)\b",
+            re.IGNORECASE,
+        ),
+        "{neither_side}",
+        "",
+    ),
     (
         re.compile(
             r"(?:,\s*)?\b(?:but\s+|and\s+)?(?:(?:that|which)\s+is\s+|that's\s+)?not\s+"
@@ -165,8 +175,8 @@ _REWRITES += [
     # "a staircase that does not go up towards the back": it climbs the other way
     (
         re.compile(
-            r"\b(?:that\s+|which\s+)?(?:does|do)\s+not\s+(?:go\s+up|climb|rise|ascend|lead\s+up)\s+"
-            r"(?:towards?|to)\s+the\s+(back|front|left|right)\b",
+            r"\b(?:that\s+|which\s+|and\s+)?(?:they\s+|it\s+)?(?:does|do|must|should|may|shall)\s+not\s+"
+            r"(?:go\s+up|climb|rise|ascend|lead\s+up)\s+(?:towards?|to)\s+the\s+(back|front|left|right)\b",
             re.IGNORECASE,
         ),
         " climbing towards the {opposite} ",
@@ -728,6 +738,44 @@ _REWRITES += [
         "{square_base}",
         "",
     ),
+    (  # "space between every one of them": the structures stand apart (as they do anyway)
+        re.compile(
+            r"\b(?:with\s+)?(?:some\s+|a\s+bit\s+of\s+)?(?:space|room|a\s+gap|gaps)\s+between\s+"
+            r"(?:every\s+one\s+of\s+them|each\s+of\s+them|all\s+of\s+them|them|each(?:\s+one)?)\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "read '{0}' as standing apart (separate structures always do)",
+    ),
+    (  # "with no cube missing", "no gaps": solid, which every structure is
+        re.compile(
+            r",?\s*\b(?:with\s+)?(?:no|none\s+of\s+the)\s+(?:cubes?|parts?|blocks?)\s+(?:missing|left\s+out)\b"
+            r"|,?\s*\bwith\s+no\s+(?:gaps|holes)\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': built solid",
+    ),
+    (  # "don't make the pillars taller than 2": at most 2, built 2
+        re.compile(
+            r",?\s*\b(?:but\s+)?(?:do\s+not|never)\s+(?:make|build|let)\s+(it|them|the\s+\w+)\s+"
+            r"(?:any\s+)?(?:taller|higher)\s+than\s+(\d+|one|two|three|four|five|six)\b",
+            re.IGNORECASE,
+        ),
+        "{at_most}",
+        "",
+    ),
+    (  # "a staircase going down into the table", "floating above the table": not buildable
+        re.compile(
+            r"\b(?:going\s+|sunk\s+|dug\s+|reaching\s+)?(?:down\s+)?(?:into|under|below|beneath|through)\s+"
+            r"the\s+(?:table|floor|surface|ground)(?:\s+surface)?\b|\b(?:floating|hovering|hanging|"
+            r"suspended)\b(?:\s+(?:\d+(?:\.\d+)?\s*(?:cm|mm|m)\s+)?(?:above|over|off)\s+the\s+"
+            r"(?:table|floor|surface|ground))?|\bin\s+(?:mid-?\s*air|the\s+air)\b",
+            re.IGNORECASE,
+        ),
+        "{unsupported}",
+        "",
+    ),
     (  # "centred left-right": across the table, the default; the other region word stays
         re.compile(
             r",?\s*\b(?:centred|centered|central)\s+(?:left[- ]to[- ]right|left[- ]right|"
@@ -900,7 +948,7 @@ _OPEN = re.compile(
 
 _ANOTHER = re.compile(
     r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+(?:identical\s+|similar\s+|"
-    r"matching\s+)?one\b|a\s+(?:third|fourth|fifth)\b"
+    r"matching\s+)?one\b|an?\s+(?:identical|matching|similar)\s+one\b|a\s+(?:third|fourth|fifth)\b"
     r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)one(?=\s+(?:on|at|in|to)\s+the\b)|"
     r"(?<=\band\s)one(?=\s+(?:on|at|in|to)\s+the\b))",
     re.IGNORECASE,

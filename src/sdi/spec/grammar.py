@@ -647,7 +647,24 @@ class _Parser:
                 else:
                     if fname in p and p[fname] != metres:
                         other = {"width_m": "length_m", "length_m": "width_m"}.get(fname)
-                        if other and other not in p:
+                        said = next(
+                            (
+                                self.word(j)
+                                for j in range(k, k + 4)
+                                if self.word(j) in lx.DIMENSION_WORDS
+                            ),
+                            "",
+                        )
+                        if (
+                            other == "length_m"
+                            and other not in p
+                            and said == "deep"
+                            and h.shape in ("grid", "block", "enclosure", "castle")
+                            and not any(a in span_range for a, _ in self.axes)
+                        ):
+                            # "10 cm wide and 20 cm deep": deep is along x (the width slot)
+                            p["length_m"] = p.pop("width_m")
+                        elif other and other not in p:
                             fname = other  # "15 cm wide and 25 cm deep": two different sides
                         else:
                             self.notes.append(
@@ -728,6 +745,7 @@ class _Parser:
                             and wj == "deep"
                             and p.get("_word_width") in ("wide", "across")
                             and h.shape in ("grid", "block", "enclosure", "castle")
+                            and not any(a in span_range for a, _ in self.axes)
                         ):
                             # "3 wide and 5 deep": deep is front to back (the width slot,
                             # along x), wide left to right (the length, along y)
