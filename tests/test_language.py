@@ -830,3 +830,35 @@ def test_a_cube_fits_inside_a_ring_of_four():
     lo, hi = boxes(r)
     inner = (hi[:, 2] < 0.06) & np.isclose(lo[:, 0], 0.425) & np.isclose(lo[:, 1], 0.275)
     assert len(lo) == 12 + 1 and inner.sum() <= 1
+
+
+# -- coherence: what the sentence structure says and a reading leaves out ------------------------
+def _coherence(command, *structures, relations=()):
+    from sdi.language import coherence
+    from sdi.language.state import ReadState
+    from sdi.language.syntax import parse
+    from sdi.model.cell import CellConfig
+
+    st_ = ReadState(command, CellConfig())
+    spec = Spec(structures=tuple(structures), relations=tuple(relations))
+    coherence.check(parse(command), spec, st_)
+    return st_.material
+
+
+def test_a_relation_the_reading_lost_is_material():
+    grid, tower = structure("grid", length=3, width=3), structure("tower", height=3)
+    assert _coherence("On the base, put a tower of 3.", grid, tower) == ["On the base"]
+    related = (Relation(kind="on_top_of", subject=1, object=0),)
+    assert _coherence("On the base, put a tower of 3.", grid, tower, relations=related) == []
+    # regions and side-by-side words are no relation to lose
+    assert _coherence("a tower on the left and a row on the right", tower, grid) == []
+    assert _coherence("a tower and a row next to each other", tower, grid) == []
+
+
+def test_a_count_the_reading_does_not_have_is_material():
+    tower = structure("tower", height=3)
+    assert _coherence("three stacks, 4 high", tower, tower) == ["three stacks"]
+    assert _coherence("three stacks, 4 high", tower, tower, tower, tower) == ["three stacks"]
+    assert _coherence("three stacks, 4 high", tower, tower, tower) == []
+    bridge = structure("bridge", height=3)
+    assert _coherence("two towers joined by a beam", bridge) == []  # made of the two

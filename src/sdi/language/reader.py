@@ -40,7 +40,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import LimitError, SpecError
-from sdi.language import corrections, typos
+from sdi.language import coherence, corrections, typos
 from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
@@ -130,6 +130,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         raise SpecError(
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
+    coherence.check(doc, spec, st)
     return Reading(
         command=command,
         text=text.strip(),

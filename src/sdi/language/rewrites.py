@@ -830,7 +830,12 @@ _REWRITES += [
         "",
     ),
     (
-        re.compile(r"\b(towers|rows|walls|stacks|columns|pyramids|pads)\s*[:=]\s*(\w+)\b", re.I),
+        re.compile(
+            # "towers: 3" is three towers; "three stacks: 4 high" keeps its count
+            r"(?<!\d\s)(?<!two\s)(?<!three\s)(?<!four\s)(?<!five\s)(?<!six\s)"
+            r"\b(towers|rows|walls|stacks|columns|pyramids|pads)\s*[:=]\s*(\w+)\b(?!\s+(?:high|tall|long))",
+            re.I,
+        ),
         " {1} {0} ",
         "",
     ),

@@ -1,0 +1,112 @@
+"""Coherence: does the reading show what the command's sentence structure says?
+
+Accounting (`sdi.language.accounting`) makes sure every *word* is used or reported. A reading
+can still use every word and miss what the words say together: "On the base, put a tower of
+3" read as a base and a tower side by side uses every word. Two checks on the parse find
+such readings and make them incomplete (``partial``), with a note naming the words:
+
+- **Relations**: a relation word ("on", "behind", "around", "between", "across" …) whose
+  object in the parse is a structure ("the base", "a row of 3") or a pronoun ("it",
+  "them"), in a reading with several structures and no relation between any of them.
+- **Counts**: a number that counts a structure noun ("two towers", "three stacks") when the
+  reading has fewer structures than that and none that is made of several (a bridge of two
+  towers, a castle of four, a grid of rows).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING
+
+from sdi.language.state import ReadState
+from sdi.spec import lexicon as lx
+from sdi.spec.numbers import words_to_numbers
+from sdi.spec.structure_spec import Spec
+
+if TYPE_CHECKING:
+    from spacy.tokens import Doc, Token
+
+_RELATION_WORDS = frozenset(
+    {
+        "on", "onto", "atop", "above", "over", "behind", "around", "round", "inside", "within",
+        "between", "across", "along", "against", "under", "below", "beneath", "underneath",
+        "front", "surrounding", "encircling",
+    }
+)  # fmt: skip
+# "next to", "beside", "alongside" without a side are what side by side already is; parts of a
+# structure ("on pillars", "on four legs") belong to it.
+_COMPONENTS = frozenset(
+    {"pillar", "pillars", "leg", "legs", "post", "posts", "support", "supports"}
+)
+_MORE = frozenset({"another", "more", "second", "third", "also", "plus", "again", "copy", "extra"})
+_POINTERS = frozenset({"it", "them", "its", "their", "this", "that", "these", "those", "both"})
+# Families made of several structures the command may have counted separately.
+_COMPOSITE = frozenset(
+    {"bridge", "arch", "canopy", "castle", "grid", "block", "wall", "enclosure", "pack"}
+)
+
+
+def _structural(tok: Token) -> bool:
+    """`tok` (a relation word's object) names a structure or points at one: its head noun,
+    not the phrases hanging from it ("on the left and a row …")."""
+    w = tok.lower_
+    if w in _COMPONENTS or w in lx.STEP_WORDS:
+        return False
+    return (
+        (w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES)
+        or w in _POINTERS
+        or w in ("base", "foundation", "platform", "slab", "pad")
+    )
+
+
+def _relation_cues(doc: Doc) -> list[str]:
+    cues = []
+    for tok in doc:
+        if tok.lower_ not in _RELATION_WORDS:
+            continue
+        objects = [c for c in tok.children if c.dep_ in ("pobj", "dobj", "obj")]
+        if tok.lower_ in ("next", "front"):  # "next to X", "in front of X"
+            objects = [c for p in tok.children if p.dep_ == "prep" for c in p.children
+                       if c.dep_ == "pobj"]  # fmt: skip
+        if any(o.lower_ in ("other", "another") for o in objects):
+            continue  # "next to each other", "on top of one another": side by side words
+        if any(_structural(o) for o in objects):
+            span = doc[tok.i : max(o.i for o in objects) + 1]
+            cues.append(span.text)
+    return cues
+
+
+def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
+    cues = []
+    for tok in doc:
+        if tok.dep_ != "nummod" or tok.head.lower_ not in lx.SHAPE_WORDS:
+            continue
+        noun = tok.head.lower_
+        if noun in lx.AMBIGUOUS_SHAPES or noun in lx.STEP_WORDS or not noun.endswith("s"):
+            continue
+        value = words_to_numbers([tok.lower_])[0]
+        if value.isdigit() and int(value) >= 2:
+            cues.append((f"{tok.text} {tok.head.text}", lx.SHAPE_WORDS[noun], int(value)))
+    return cues
+
+
+def check(doc: Doc, spec: Spec, st: ReadState) -> None:
+    """Notes and material for what the sentence structure says and the reading does not."""
+    n = len(spec.structures)
+    if n >= 2 and not spec.relations:
+        for cue in _relation_cues(doc):
+            st.material.append(cue)
+            st.notes.append(
+                f"ignored '{cue}': the structures are built side by side, not related as "
+                "these words say"
+            )
+    if any(s.shape in _COMPOSITE for s in spec.structures):
+        return
+    more = bool(_MORE & set(re.findall(r"[a-z]+", st.command.lower())))
+    for cue, family, count in _count_cues(doc):
+        got = sum(s.shape == family for s in spec.structures)
+        named = sum(lx.SHAPE_WORDS.get(t.lower_) == family for t in doc)
+        # more than counted: only when nothing else names one ("a column between two stacks")
+        if got < count or (got > count and not more and named == 1):
+            st.material.append(cue)
+            st.notes.append(f"ignored '{cue}': the reading has {got} {family}s, not {count}")
