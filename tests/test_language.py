@@ -862,3 +862,34 @@ def test_a_count_the_reading_does_not_have_is_material():
     assert _coherence("three stacks, 4 high", tower, tower, tower) == []
     bridge = structure("bridge", height=3)
     assert _coherence("two towers joined by a beam", bridge) == []  # made of the two
+
+
+# -- shop-floor shorthand ---------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("command", "shape", "slots"),
+    [
+        ("tower 6ht", "tower", {"height": 6}),
+        ("wall 5 lng 3 hgt", "wall", {"length": 5, "height": 3}),
+        ("pyramid 3 lvls", "pyramid", {"height": 3}),
+        ("row of 7 pcs", "row", {"length": 7}),
+        ("L w/ arms 5 n 2", "l_shape", {"length": 5, "width": 2}),
+        ("bridge pillars 4 high", "bridge", {"height": 4}),
+    ],
+)
+def test_shorthand_is_expanded_and_noted(command, shape, slots):
+    r = read(command)
+    s = r.spec.structures[0]
+    assert len(r.spec.structures) == 1 and s.shape == shape
+    assert all(getattr(s, k) == v for k, v in slots.items()), s
+    assert r.complete
+
+
+def test_counts_and_plus_signs_in_a_terse_order():
+    r = read("3x stack 2ht + 1x stack 4ht")
+    assert sorted(s.height for s in r.spec.structures) == [2, 2, 2, 4]
+    assert any("as 'and'" in n for n in r.notes)
+
+
+def test_a_corner_abbreviation_places_the_structure_there():
+    lo, hi = boxes(plan("pad 2x2 front right cnr"))
+    assert lo[:, 0].min() < 0.40 and hi[:, 1].max() < 0.25  # front = low x, right = low y

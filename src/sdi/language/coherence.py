@@ -79,8 +79,8 @@ def _relation_cues(doc: Doc) -> list[str]:
 def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
     cues = []
     for tok in doc:
-        if tok.dep_ != "nummod" or tok.head.lower_ not in lx.SHAPE_WORDS:
-            continue
+        if tok.dep_ != "nummod" or tok.head.lower_ not in lx.SHAPE_WORDS or tok.i > tok.head.i:
+            continue  # "3 towers 2 high": a number after the noun is a size
         noun = tok.head.lower_
         if noun in lx.AMBIGUOUS_SHAPES or noun in lx.STEP_WORDS or not noun.endswith("s"):
             continue

@@ -120,6 +120,8 @@ def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     ):
         return m.group(0)  # "a slab with a cube on every corner": the slab's corners
     what = re.sub(r"^(?:an?|one)\s+", "", what, flags=re.IGNORECASE)
+    if re.fullmatch(r"(?:single\s+)?(?:cube|block|brick|part)s?", what, re.IGNORECASE):
+        what = "1-cube tower"  # one part, not a default structure
     corners = ("back left", "back right", "front left", "front right")
     st.notes.append(f"read '{m.group(0).strip()}' as one in each corner of the table")
     return " " + " and ".join(f"a {what} in the {c} corner" for c in corners) + " "

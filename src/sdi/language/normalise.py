@@ -102,6 +102,28 @@ _SLASH_XY = re.compile(
 _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps|levels|layers)"
 
 
+# Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
+_SHORTHAND = [
+    (
+        re.compile(r"(?<=\d)\s*(?:ht|hgt|hght|hgh|hi|h)\b(?!\s*x)|\b(?:ht|hgt|hght|hgh)\b", re.I),
+        " high",
+    ),
+    (re.compile(r"(?<=[a-z0-9])\s+\+\s+(?=[a-z0-9])", re.I), " and "),
+    (re.compile(r"(?<=\d)\s*(?:lng|lg)\b|\b(?:lng)\b", re.I), " long"),
+    (re.compile(r"(?<=\d)\s*(?:wd)\b", re.I), " wide"),
+    (re.compile(r"(?<=\d)\s*(?:dp)\b", re.I), " deep"),
+    (re.compile(r"\blvls\b", re.I), "levels"),
+    (re.compile(r"\blvl\b", re.I), "level"),
+    (re.compile(r"\b(?:pcs|pc|ea)\b(?=\W|$)", re.I), "cubes"),
+    (re.compile(r"\b(?:cnr|crnr)\b", re.I), "corner"),
+    (re.compile(r"\b(?:cnrs|crnrs)\b", re.I), "corners"),
+    (re.compile(r"\bw/o\b", re.I), "without"),
+    (re.compile(r"\bw/(?=\s|\w)", re.I), "with "),
+    (re.compile(r"(?<=\d)\s+n\s+(?=\d)", re.I), " and "),
+    (re.compile(r"\b(\d+)\s*x\s+(?=[a-z]{3,})(?!by\b|cubes?\b)", re.I), r"\1 "),
+]
+
+
 _HOMOPHONES = [
     (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d))", re.I), "two "),
     (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
@@ -271,6 +293,15 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     )
     for pattern, repl in _HOMOPHONES:
         text = pattern.sub(repl, text)
+    for pattern, repl in _SHORTHAND:
+
+        def expand(m: re.Match[str], repl: str = repl) -> str:
+            out = m.expand(repl)
+            if notes is not None:
+                notes.append(f"read '{m.group(0).strip()}' as '{out.strip()}'")
+            return out
+
+        text = pattern.sub(expand, text)
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
     text = re.sub(
         r"\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",

@@ -80,6 +80,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = text.strip()
     doc = parse(text)
     phrases, rels = find_phrases(doc)
+    said = list(st.notes)
     structures = fill_slots(phrases, rels, st, doc)
     if not structures:
         # nothing recognised: correct harder (words the English vocabulary knows too, "wal"),
@@ -88,7 +89,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         if not fixed:
             retry, fixed = _open(text)
         if fixed:
-            st = ReadState(command, cell, notes=st.notes + fixed)
+            st = ReadState(command, cell, notes=said + fixed)  # not the failed reading's
             text = retry
             doc = parse(text)
             phrases, rels = find_phrases(doc)

@@ -776,6 +776,25 @@ _REWRITES += [
         "{unsupported}",
         "",
     ),
+    (  # "2 tower 3 high": a count before a singular noun whose size is said after it
+        re.compile(
+            r"\b([2-9]|two|three|four|five|six)\s+(tower|stack|column|row|wall|pyramid|bridge|"
+            r"staircase|slab|pad|block|ring|arch)\s+(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|"
+            r"wide|levels?|steps?|x)\b)",
+            re.IGNORECASE,
+        ),
+        " {0} {1}s ",
+        "read '{0}' as a count of structures",
+    ),
+    (
+        re.compile(
+            r"\b(?:1|one)\s+(tower|stack|column|row|wall|pyramid|bridge|staircase|slab|pad|block|ring|"
+            r"arch)\s+(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|wide|levels?|steps?|x)\b)",
+            re.IGNORECASE,
+        ),
+        " a {0} ",
+        "",
+    ),
     (  # "centred left-right": across the table, the default; the other region word stays
         re.compile(
             r",?\s*\b(?:centred|centered|central)\s+(?:left[- ]to[- ]right|left[- ]right|"
@@ -954,8 +973,8 @@ _OPEN = re.compile(
 _ANOTHER = re.compile(
     r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+(?:identical\s+|similar\s+|"
     r"matching\s+)?one\b|an?\s+(?:identical|matching|similar)\s+one\b|a\s+(?:third|fourth|fifth)\b"
-    r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)one(?=\s+(?:on|at|in|to)\s+the\b)|"
-    r"(?<=\band\s)one(?=\s+(?:on|at|in|to)\s+the\b))",
+    r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)(?:one|1)(?=\s+(?:on|at|in|to)\s+the\b)|"
+    r"(?<=\band\s)(?:one|1)(?=\s+(?:on|at|in|to)\s+the\b))",
     re.IGNORECASE,
 )
 
@@ -983,6 +1002,13 @@ def _another(text: str) -> str:
             and not (w in lx.VERB_SHAPES and (k == len(said) - 1 or said[k + 1] in _ARTICLES))
         ]
         if not before:
+            parts = [
+                w
+                for w in said
+                if w in lx.PART_WORDS or (w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES)
+            ]
+            if parts and parts[-1] in ("cube", "cubes", "block", "blocks", "brick", "bricks"):
+                return "another 1-cube tower"  # "a cube in each corner and 1 in the middle"
             return m.group(0)
         noun = before[-1]
         noun = noun[:-1] if noun.endswith("s") and noun[:-1] in lx.SHAPE_WORDS else noun
@@ -1071,7 +1097,9 @@ _DISTRIBUTE = re.compile(
 
 # "a single cube in each of the four corners of the table": one in each corner region
 _CORNERS = re.compile(
-    r"\b((?:an?|one|a\s+single|single)\s+[^,.;]*?)\s+(?:in|at|on|into)\s+(?:each|every|all)\s+"
+    r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*((?:(?:an?|one|a\s+single|single)\s+)?"
+    r"(?:\S+\s+){0,3}?(?:cube|block|brick|tower|stack|column|pyramid|pad|slab)s?)\s+"
+    r"(?:in|at|on|into)\s+(?:each|every|all)\s+"
     r"(?:one\s+)?(?:of\s+)?(?:the\s+)?(?:four\s+|4\s+)?corners?"
     r"(\s+of\s+the\s+(?:table|workspace|work\s*space|cell|work\s*area|area))?",
     re.IGNORECASE,
@@ -1107,7 +1135,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _OWN_BEAM.sub(own_beam, text)
     text = _DISTRIBUTE.sub(lambda m: HANDLERS["{distribute}"](m, st, ""), text)
     text = _CORNERS.sub(lambda m: HANDLERS["{corners}"](m, st, ""), text)
-    text = _another(text)
+    text = _another(SPACES.sub(" ", text))
     if (
         _LEGS.search(text)
         and _TOP.search(text)

@@ -527,6 +527,7 @@ class _Parser:
                 if nxt in lx.LETTER_SHAPE_TAILS or (
                     self.word(k - 1) in ("a", "an", "the", "letter", "capital", "one")
                     or self.word(k - 1) in lx.SIZE_WORDS
+                    or (k == 0 and nxt in ("with", "of", ",", "arms", "legs"))  # "L w/ arms 5"
                 ):
                     shape = lx.LETTER_SHAPES[w]
                     if nxt in lx.LETTER_SHAPE_TAILS:
@@ -550,7 +551,17 @@ class _Parser:
                 "series",
                 "mass",
             )
-            # noun compounds: "door frame", "brick wall", "square pyramid": the last noun heads
+            # noun compounds: "door frame", "brick wall", "square pyramid": the last noun heads,
+            # except a part of the one before ("bridge pillars 10 cm high": the bridge's own)
+            if (
+                self.hits
+                and self.hits[-1].index == k - 1
+                and self.hits[-1].shape in ("bridge", "arch", "canopy")
+                and w
+                in ("pillar", "pillars", "leg", "legs", "post", "posts", "support", "supports")
+            ):
+                tok.used = False
+                continue
             if self.hits and self.hits[-1].index == k - 1:
                 self.hits.pop()
             verb = w in lx.VERB_SHAPES and self._verb_position(k)
@@ -1451,6 +1462,14 @@ class _Parser:
         if each is not None and copies == len(each):
             key = PRIMARY[shape] if PRIMARY[shape] != "count" else "length"
             return [spec.model_copy(update={key: v}) for v in each]
+        if (
+            each is not None
+            and len(each) == 2
+            and shape in ("l_shape", "u_shape", "t_shape", "grid", "enclosure")
+            and spec.length is None
+            and spec.width is None
+        ):  # "an L with arms 4 and 3": one value per side
+            return [spec.model_copy(update={"length": each[0], "width": each[1]})]
         if each is not None:
             key = PRIMARY[shape] if PRIMARY[shape] != "count" else "length"
             if getattr(spec, key, None) is None:
