@@ -893,3 +893,36 @@ def test_counts_and_plus_signs_in_a_terse_order():
 def test_a_corner_abbreviation_places_the_structure_there():
     lo, hi = boxes(plan("pad 2x2 front right cnr"))
     assert lo[:, 0].min() < 0.40 and hi[:, 1].max() < 0.25  # front = low x, right = low y
+
+
+# -- the gap between structures ------------------------------------------------------------------
+def _clear_y(lo, hi, a, b):
+    """Clear space along y between the parts selected by masks a and b."""
+    return max(lo[b, 1].min() - hi[a, 1].max(), lo[a, 1].min() - hi[b, 1].max())
+
+
+def test_a_stated_gap_is_the_space_beside_the_other_structure():
+    r = plan("a 3-cube tower to the right of a 2x2 pad, a two cube gap")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    tall = hi[:, 2] > 0.06
+    column = np.isclose(lo[:, 1], lo[tall, 1].min())  # the tower's column of parts
+    assert len(lo) == 4 + 3 and np.isclose(_clear_y(lo, hi, column, ~column), 0.10)
+
+
+def test_a_stated_gap_separates_unrelated_structures():
+    r = plan("three stacks of 2, with 1 cube gap")
+    lo, _hi = boxes(r)
+    ys = sorted({round(float(v), 4) for v in lo[:, 1]})
+    assert len(ys) == 3 and np.allclose(np.diff(ys), 0.10)  # 0.05 wide + 0.05 apart
+
+
+def test_a_distance_to_its_side_is_the_gap_of_that_relation():
+    rel = read("a wall 3 long, then an identical wall 15 cm behind it").spec.relations
+    assert len(rel) == 1 and rel[0].side == "back" and rel[0].gap_m == pytest.approx(0.15)
+
+
+def test_a_gap_inside_one_structure_or_under_a_bridge_is_not_between_structures():
+    assert read("a row of 4 cubes with a one-cube gap between each cube").spec.gap_m is None
+    bridge = read("a bridge over a gap of 2 cubes").spec
+    assert bridge.gap_m is None and bridge.structures[0].shape == "bridge"

@@ -190,7 +190,9 @@ def _clamp(c: np.ndarray, half: np.ndarray, cell: CellConfig, axes: tuple[int, .
     return c
 
 
-def _place_all(placed: list[_Placed], cell: CellConfig) -> list[np.ndarray]:
+def _place_all(
+    placed: list[_Placed], cell: CellConfig, gap: float | None = None
+) -> list[np.ndarray]:
     """Footprint centres: stated coordinates exactly, regions and the rest nearest free spot.
 
     Stated coordinates are kept (an unstated axis may slide to avoid another structure); a
@@ -198,7 +200,7 @@ def _place_all(placed: list[_Placed], cell: CellConfig) -> list[np.ndarray]:
     structures with neither go side by side along y around the anchor.
     """
     anchor = np.array(cell.design.anchor)
-    gap = cell.design.structure_gap
+    gap = cell.design.structure_gap if gap is None else gap
     ws = cell.workspace
     centres: list[np.ndarray | None] = [None] * len(placed)
     taken: list[tuple[np.ndarray, np.ndarray]] = []
@@ -312,12 +314,14 @@ def _ring_for(ring: StructureSpec, inner: _Placed, cell: CellConfig) -> Structur
     return ring.model_copy(update={**sides, "axis": None})
 
 
-def _beside(base: _Placed, sub: _Placed, side: str | None, cell: CellConfig) -> _Placed:
-    """`sub` one structure gap from `base` on `side`; with no side, to the left if the pair
-    fits across the workspace that way, else behind."""
+def _beside(
+    base: _Placed, sub: _Placed, side: str | None, cell: CellConfig, gap: float | None = None
+) -> _Placed:
+    """`sub` `gap` (else one structure gap) from `base` on `side`; with no side, to the left
+    if the pair fits across the workspace that way, else behind."""
     ws = cell.workspace
     extent = np.array([ws.x_max - ws.x_min, ws.y_max - ws.y_min])
-    gap = cell.design.structure_gap
+    gap = cell.design.structure_gap if gap is None else gap
     for name in [side] if side else ["left", "back"]:
         d, sign = _SIDES[name]
         dxy = np.zeros(2)
@@ -412,7 +416,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                     bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
                     base = _merge(base, sub, centre, top - bottom)
                 else:
-                    base = _beside(base, sub, rel.side, cell)
+                    base = _beside(base, sub, rel.side, cell, rel.gap_m)
         units[k] = base
         return base
 
@@ -467,7 +471,7 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
                 raise InfeasibleError(
                     f"{exc} — counting the structures related to it", parameter=exc.parameter
                 ) from None
-    centres = _place_all(placed, cell)
+    centres = _place_all(placed, cell, spec.gap_m)
     parts: list[Part] = []
     counters: dict[str, int] = {}
     for p, centre in zip(placed, centres, strict=True):

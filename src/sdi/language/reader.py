@@ -40,7 +40,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import LimitError, SpecError
-from sdi.language import coherence, corrections, typos
+from sdi.language import coherence, corrections, spacing, typos
 from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
@@ -76,6 +76,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text, corrected = typos.correct(text)
     st.notes += corrected
     text = corrections.correct(text, st.notes)
+    text = spacing.take_gap(text, st)
     text = rewrite(text, st)
     text = text.strip()
     doc = parse(text)
@@ -131,6 +132,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         raise SpecError(
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
+    spec = spacing.apply_gap(spec, st)
     coherence.check(doc, spec, st)
     return Reading(
         command=command,

@@ -47,5 +47,6 @@ class ReadState:
     material: list[str] = field(default_factory=list)
     no_stack: bool = False
     no_beams: bool = False
+    gap_m: float | None = None  # "one cube gap", "10 cm apart": between the structures
     # "on each corner", "at both ends": (relation kind, anchor) for the next such relation
     anchors: list[tuple[str, str]] = field(default_factory=list)

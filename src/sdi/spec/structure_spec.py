@@ -376,6 +376,9 @@ class Relation(BaseModel):
     at: Anchor | None = Field(
         None, description="one copy of the subject at each corner or end of the object"
     )
+    gap_m: float | None = Field(
+        None, gt=0, le=0.5, description="next_to: clear space between the two, m"
+    )
 
     @model_validator(mode="after")
     def _anchor(self) -> Relation:
@@ -383,6 +386,8 @@ class Relation(BaseModel):
             raise ValueError("at: a ring around a structure has no corners or ends to stand at")
         if self.at is not None and self.side is not None:
             raise ValueError("at: copies at the corners or ends have no single side")
+        if self.gap_m is not None and self.kind != "next_to":
+            raise ValueError("gap_m: only a structure beside another has a gap to it")
         return self
 
     def describe(self, names: list[str] | None = None) -> str:
@@ -404,6 +409,9 @@ class Spec(BaseModel):
 
     structures: tuple[StructureSpec, ...] = Field(min_length=1, max_length=50)
     relations: tuple[Relation, ...] = ()
+    gap_m: float | None = Field(
+        None, gt=0, le=0.5, description="clear space between separate structures, m"
+    )
     precedence: tuple[tuple[str, str], ...] = ()
     notes: tuple[str, ...] = Field((), description="assumptions the front end made")
 

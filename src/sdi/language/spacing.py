@@ -1,0 +1,122 @@
+"""Spacing between structures: "a tower to the left of the pad, one cube gap", "two towers,
+10 cm apart", "a second wall 2 cubes in front of it".
+
+When the command names several structures, a gap it states is the clear space between them
+— never between the parts inside one of them (a pad with a "one cube gap" is nine loose
+cubes). The phrase is taken out of the text with a note; the reading puts the value on the
+``next_to`` relations it builds (`Relation.gap_m`), else on the spacing of the separate
+structures (`Spec.gap_m`). With one structure the words are left to the phrase grammar ("a row
+of 5 with a one-cube gap between the cubes").
+"""
+
+from __future__ import annotations
+
+import re
+
+from sdi.language.state import ReadState
+from sdi.spec import lexicon as lx
+from sdi.spec.numbers import words_to_numbers
+from sdi.spec.structure_spec import Spec
+
+_N = r"(\d+(?:\.\d+)?|a|an|one|two|three|four|five|six)"
+_UNIT = r"(cubes?|parts?|blocks?|cm|mm|m)"
+_GAP = re.compile(
+    r",?\s*\b(?:with\s+|leaving\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT
+    + r")?|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart)|" + _N + r"[- ]?" + _UNIT
+    + r"\s+(?:of\s+)?(?:gap|space)\s+between(?:\s+(?:them|the\s+two|each))?)"
+    r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
+    re.IGNORECASE,
+)  # fmt: skip
+# "2 cubes to its right", "10 cm in front of it": a relation with its distance
+_OFFSET = re.compile(
+    r"\b" + _N + r"[- ]?" + _UNIT + r"\s+(?=(?:to\s+(?:the|its)\s+(?:left|right)|in\s+front\s+of|"
+    r"behind|further\s+back)\b)",
+    re.IGNORECASE,
+)
+_INSIDE = re.compile(r"between\s+(?:each|every|the)\s+(?:cube|part|block)s?\b", re.IGNORECASE)
+_PLURAL_SHAPES = re.compile(
+    r"\b(?:two|three|four|five|\d+|both|pair\s+of|couple\s+of)\s+(?:\w+\s+)?(?:towers|stacks|walls|"
+    r"rows|columns|pyramids|pads|slabs|blocks|bridges|staircases|rings|lines)\b"
+    r"|\b(?:another|second|identical|copy|same)\b|\bits\b|\bof\s+it\b",
+    re.IGNORECASE,
+)
+
+
+# shape words that are seldom a structure of their own ("corner", "square", "group")
+_VAGUE = frozenset(
+    {"corner", "square", "squares", "plus", "series", "sequence", "group", "file", "field",
+     "mass", "bulk", "core", "cache", "angle", "well", "steps", "tiles"}
+)  # fmt: skip
+
+
+_SPANNING = frozenset({"bridge", "arch", "canopy"})
+
+
+def _several(text: str) -> bool:
+    """The command names more than one structure (two shape nouns, a counted plural, a copy)
+    and none that spans a gap of its own (a bridge's gap is its span)."""
+    said = re.findall(r"[a-z]+", text.lower())
+    if any(lx.SHAPE_WORDS.get(w) in _SPANNING or w in ("bridge", "span") for w in said):
+        return False
+    shapes = [
+        w for w in re.findall(r"[a-z]+", text.lower())
+        if w in lx.SHAPE_WORDS and w not in _VAGUE
+    ]  # fmt: skip
+    return len(shapes) >= 2 or bool(_PLURAL_SHAPES.search(text))
+
+
+def _metres(value: str, unit: str | None, part_m: float) -> float | None:
+    number = words_to_numbers([value.lower()])[0]
+    if number in ("a", "an"):
+        number = "1"
+    try:
+        n = float(number)
+    except ValueError:
+        return None
+    unit = (unit or "cube").lower()
+    if unit in lx.UNITS_M:
+        return n * lx.UNITS_M[unit]
+    return n * part_m  # cubes, parts, blocks
+
+
+def take_gap(text: str, st: ReadState) -> str:
+    """`text` without the gap phrase between structures; the gap in `st.gap_m`."""
+    if not _several(text) or _INSIDE.search(text):
+        return text
+    part_m = st.cell.cube[0]
+    m = _GAP.search(text)
+    if m is not None:
+        groups = [g for g in m.groups()]
+        pairs = [(groups[i], groups[i + 1]) for i in range(0, len(groups), 2)]
+        value, unit = next(((v, u) for v, u in pairs if v is not None), (None, None))
+        gap = _metres(value, unit, part_m) if value else None
+        if gap is not None and 0 < gap <= 0.5:
+            st.gap_m = gap
+            st.notes.append(f"read '{m.group(0).strip(' ,')}' as {gap:g} m between the structures")
+            return text[: m.start()] + " " + text[m.end() :]
+    o = _OFFSET.search(text)
+    if o is not None:
+        gap = _metres(o.group(1), o.group(2), part_m)
+        if gap is not None and 0 < gap <= 0.5:
+            st.gap_m = gap
+            st.notes.append(f"read '{o.group(0).strip()}' as {gap:g} m away")
+            return text[: o.start()] + text[o.end() :]
+    return text
+
+
+def apply_gap(spec: Spec, st: ReadState) -> Spec:
+    """The stated gap on the relations beside (else between the separate structures)."""
+    if st.gap_m is None:
+        return spec
+    beside = [r for r in spec.relations if r.kind == "next_to" and r.at is None]
+    if beside:
+        relations = tuple(
+            r.model_copy(update={"gap_m": st.gap_m}) if r in beside else r for r in spec.relations
+        )
+        return spec.model_copy(update={"relations": relations})
+    related = {r.subject for r in spec.relations}
+    if len(spec.structures) - len(related) >= 2:
+        return spec.model_copy(update={"gap_m": st.gap_m})
+    st.material.append(f"gap {st.gap_m:g} m")
+    st.notes.append(f"ignored the gap of {st.gap_m:g} m: there are no two structures side by side")
+    return spec
