@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to eighth dev sets (dev2 … dev8) are held to the same checks and share no
+second to ninth dev sets (dev2 … dev9) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -23,6 +23,7 @@ from sdi.bench.language_dev5 import CASES as DEV5
 from sdi.bench.language_dev6 import CASES as DEV6
 from sdi.bench.language_dev7 import CASES as DEV7
 from sdi.bench.language_dev8 import CASES as DEV8
+from sdi.bench.language_dev9 import CASES as DEV9
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -290,7 +291,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *TEST):
+    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -317,6 +318,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev6.py",
         "language_dev7.py",
         "language_dev8.py",
+        "language_dev9.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -737,7 +739,7 @@ def test_dev6_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev6_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV6}) == len(DEV6)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV6 if _norm(c.text) in seen]
 
@@ -837,7 +839,7 @@ def test_dev7_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev7_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV7}) == len(DEV7)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV7 if _norm(c.text) in seen]
 
@@ -935,7 +937,7 @@ def test_dev7_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 def test_dev8_set_sizes_ids_and_phenomena():
     assert len(DEV8) >= 120
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *TEST)]
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *TEST)]
     assert len(ids) == len(set(ids))
     assert all(c.id.startswith("dev8-") for c in DEV8)
     per = {p: sum(c.phenomenon == p for c in DEV8) for p in PHENOMENA}
@@ -946,7 +948,7 @@ def test_dev8_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev8_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV8}) == len(DEV8)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV8 if _norm(c.text) in seen]
 
@@ -1073,5 +1075,245 @@ def _grid_corners(x0, y0):
 )
 def test_dev8_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev8(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev9
+
+
+def test_dev9_set_sizes_ids_and_phenomena():
+    assert len(DEV9) >= 120
+    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *TEST)]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev9-") for c in DEV9)
+    per = {p: sum(c.phenomenon == p for c in DEV9) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
+    assert {c.phenomenon for c in DEV9} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV9)
+
+
+def test_no_command_shared_between_dev9_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV9}) == len(DEV9)
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV9 if _norm(c.text) in seen]
+
+
+def _dev9(case_id: str) -> Case:
+    return next(c for c in DEV9 if c.id == case_id)
+
+
+def _stairs_x(x0, y, hs):
+    """Columns of the given heights in a line along x from x0 (front to back)."""
+    return [c for i, h in enumerate(hs) for c in column(x0 + C * i, y, h)]
+
+
+def _stairs_y(x, y0, hs):
+    """Columns of the given heights in a line along y from y0 (right to left)."""
+    return [c for j, h in enumerate(hs) for c in column(x, y0 + C * j, h)]
+
+
+def _pyr(x0, y0, levels):
+    """A pyramid of 1–3 levels (3x3, 2x2, one cube), its base corner cube at (x0, y0)."""
+    out = grid(x0, y0, 3, 3)
+    if levels >= 2:
+        out += grid(x0 + C / 2, y0 + C / 2, 2, 2, z0=C)
+    if levels >= 3:
+        out.append(cube(x0 + C, y0 + C, 2 * C + C / 2))
+    return out
+
+
+_WIDE_BRIDGE4 = [
+    *column(0.45, 0.225, 4),
+    *column(0.45, 0.375, 4),
+    beam(0.45, 0.30, 4 * C + C / 2, YAW90),
+]
+_SLAB34 = grid(0.40, 0.25, 3, 4)
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev9-rel-01",  # a 4x4 plinth with a centred column of three on it
+            res(*grid(0.375, 0.225, 4, 4), *column(0.45, 0.30, 3, z0=C)),
+            res(*grid(0.375, 0.225, 4, 4), *column(0.375, 0.225, 3, z0=C)),
+        ),
+        (
+            "dev9-rel-03",  # a 4-tower right of a 5x2 wall, two cubes of space
+            res(*grid(0.35, 0.35, 5, 1, layers=2), *column(0.45, 0.20, 4)),
+            res(*grid(0.35, 0.35, 5, 1, layers=2), *column(0.45, 0.50, 4)),
+        ),
+        (
+            "dev9-rel-04",  # a fence around one cube
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 1)),
+            res(*ring(0.35, 0.20, 5), *column(0.70, 0.30, 1)),
+        ),
+        (
+            "dev9-rel-04",  # … a fence laid tight round it is a 3x3 patch
+            res(*grid(0.40, 0.25, 3, 3)),
+            res(*grid(0.40, 0.25, 3, 3, layers=2)),
+        ),
+        (
+            "dev9-wo-06",  # a cube in a 4x4 ring, touching the ring's walls (one structure)
+            res(*ring(0.40, 0.25, 4), *column(0.45, 0.30, 1)),
+            res(*ring(0.40, 0.25, 4), *column(0.45, 0.30, 2)),
+        ),
+        (
+            "dev9-wo-06",  # … or free in the middle of the inside
+            res(*ring(0.40, 0.25, 4), *column(0.475, 0.325, 1)),
+            res(*ring(0.40, 0.25, 5), *column(0.50, 0.35, 1)),
+        ),
+        (
+            "dev9-rel-08",  # … the pallet pushed against the ring
+            res(*ring(0.325, 0.175, 6), *grid(0.375, 0.225, 2, 2, layers=2)),
+            res(*ring(0.325, 0.175, 6), *grid(0.375, 0.225, 2, 2, layers=3)),
+        ),
+        (
+            "dev9-rel-07",  # a bridge on 3-high pillars with a 2-tower standing on the beam
+            res(*_bridge(0.45, 0.30, 3), *column(0.45, 0.30, 2, z0=4 * C)),
+            res(*_bridge(0.45, 0.30, 3), *column(0.45, 0.30, 3, z0=4 * C)),
+        ),
+        (
+            "dev9-rel-08",  # a 2x2x2 pallet inside a one-high 6x6 ring
+            res(*ring(0.325, 0.175, 6), *grid(0.425, 0.275, 2, 2, layers=2)),
+            res(*ring(0.325, 0.175, 6, high=2), *grid(0.425, 0.275, 2, 2, layers=2)),
+        ),
+        (
+            "dev9-rel-09",  # a 3-step staircase with a 5-tower against its tall end
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 5))),
+            res(*_stairs_y(0.45, 0.20, (5, 1, 2, 3))),
+        ),
+        (
+            "dev9-rel-10",  # a row of three between two 2x2 pads, a gap each side
+            res(
+                *grid(0.425, 0.10, 2, 2),
+                *_row_y(0.45, 0.25, 3),
+                *grid(0.425, 0.45, 2, 2),
+            ),
+            res(
+                *grid(0.425, 0.10, 2, 2),
+                *grid(0.425, 0.25, 2, 2),
+                *_row_y(0.45, 0.40, 3),
+            ),
+        ),
+        (
+            "dev9-rel-12",  # two parallel 4x2 walls facing each other 3 cubes apart
+            res(*grid(0.35, 0.20, 4, 1, layers=2), *grid(0.35, 0.40, 4, 1, layers=2)),
+            res(*grid(0.25, 0.30, 4, 1, layers=2), *grid(0.60, 0.30, 4, 1, layers=2)),
+        ),
+        (
+            "dev9-rel-13",  # a 4x4 podium with a column of three on each corner
+            res(*_slab_with_corner_columns(0.35, 0.20, 4, 3)),
+            res(*_slab_with_corner_columns(0.35, 0.20, 4, 2)),
+        ),
+        (
+            "dev9-rel-14",  # a row of 6 with a tower of 3 at both ends
+            res(
+                *_row_y(0.45, 0.175, 6),
+                *column(0.45, 0.175, 3, z0=C),
+                *column(0.45, 0.425, 3, z0=C),
+            ),
+            res(
+                *_row_y(0.45, 0.175, 6),
+                *column(0.45, 0.175, 3, z0=C),
+                *column(0.45, 0.225, 3, z0=C),
+            ),
+        ),
+        (
+            "dev9-rel-16",  # a 6-tower and next to it a wall half as high
+            res(*column(0.45, 0.20, 6), *grid(0.45, 0.30, 1, 4, layers=3)),
+            res(*column(0.45, 0.20, 6), *grid(0.45, 0.30, 1, 4, layers=2)),
+        ),
+        (
+            "dev9-rel-16",  # … or the wall built against the tower
+            res(*column(0.45, 0.25, 6), *grid(0.45, 0.30, 1, 4, layers=3)),
+            res(*column(0.45, 0.25, 5), *grid(0.45, 0.30, 1, 4, layers=3)),
+        ),
+        (
+            "dev9-seq-03",  # a 3-tower, then one twice as tall next to it
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 6)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 5)),
+        ),
+        (
+            "dev9-seq-04",  # a 3x4 slab with one corner cube taken away
+            res(*_SLAB34[1:]),
+            res(*_SLAB34[:5], *_SLAB34[6:]),
+        ),
+        (
+            "dev9-seq-08",  # two 4-towers two cubes apart with a beam across
+            res(*_WIDE_BRIDGE4),
+            res(*column(0.45, 0.225, 3), *column(0.45, 0.375, 3), beam(0.45, 0.30, 0.175, YAW90)),
+        ),
+        (
+            "dev9-seq-12",  # a 4x4 podium with a 2x2 tier in its centre
+            res(*grid(0.375, 0.225, 4, 4), *grid(0.425, 0.275, 2, 2, z0=C)),
+            res(*grid(0.375, 0.225, 4, 4), *grid(0.375, 0.225, 2, 2, z0=C)),
+        ),
+        (
+            "dev9-dim-06",  # width (y) 10 cm, depth (x) 15 cm, one layer
+            res(*grid(0.40, 0.25, 3, 2)),
+            res(*grid(0.40, 0.25, 2, 3)),
+        ),
+        (
+            "dev9-dim-07",  # 0.2 m pillars with 10 cm clear between them
+            res(*_WIDE_BRIDGE4),
+            res(*_bridge(0.45, 0.30, 4)),
+        ),
+        (
+            "dev9-neg-09",  # a 4-step staircase not climbing toward the robot
+            res(*_stairs_x(0.40, 0.30, (1, 2, 3, 4))),
+            res(*_stairs_x(0.40, 0.30, (4, 3, 2, 1))),
+        ),
+        (
+            "dev9-neg-10",  # two 3-stacks, neither in the middle
+            res(*column(0.30, 0.15, 3), *column(0.70, 0.45, 3)),
+            res(*column(0.30, 0.15, 3), *column(0.45, 0.30, 3)),
+        ),
+        (
+            "dev9-reg-07",  # a 2-tower at (0.30, 0.45) and a 4-tower at (0.65, 0.15)
+            res(*column(0.30, 0.45, 2), *column(0.65, 0.15, 4)),
+            res(*column(0.30, 0.45, 4), *column(0.65, 0.15, 2)),
+        ),
+        (
+            "dev9-reg-10",  # five 2-columns along the left edge, front to back
+            res(*[c for i in range(5) for c in column(0.25 + 0.1 * i, 0.45, 2)]),
+            res(*[c for j in range(5) for c in column(0.45, 0.10 + 0.1 * j, 2)]),
+        ),
+        (
+            "dev9-reg-10",  # … or touching into one wall
+            res(*grid(0.30, 0.45, 5, 1, layers=2)),
+            res(*grid(0.30, 0.20, 5, 1, layers=2)),
+        ),
+        (
+            "dev9-reg-11",  # a 2x2x2 block 10 cm left of the centre
+            res(*grid(0.425, 0.375, 2, 2, layers=2)),
+            res(*grid(0.425, 0.175, 2, 2, layers=2)),
+        ),
+        (
+            "dev9-typo-12",  # a 4x4 slab with a cube in each corner
+            res(*_slab_with_corner_columns(0.35, 0.20, 4, 1)),
+            res(*grid(0.35, 0.20, 4, 4), *grid(0.40, 0.25, 2, 2, z0=C)),
+        ),
+        (
+            "dev9-wo-10",  # a 2-level pyramid on the left, a 3-level one on the right
+            res(*_pyr(0.40, 0.40, 2), *_pyr(0.40, 0.10, 3)),
+            res(*_pyr(0.40, 0.40, 3), *_pyr(0.40, 0.10, 2)),
+        ),
+        (
+            "dev9-open-08",  # a few short stacks along the back
+            res(*[c for y in (0.15, 0.30, 0.45) for c in column(0.65, y, 3)]),
+            res(*[c for y in (0.15, 0.30, 0.45) for c in column(0.30, y, 3)]),
+        ),
+        (
+            "dev9-bad-11",  # a floating slab: refuse, or build it on the table and say so
+            {"status": "error", "layout": None},
+            res(*grid(0.425, 0.275, 2, 2, z0=0.10), notes=["floating as asked"]),
+        ),
+    ],
+)
+def test_dev9_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev9(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
