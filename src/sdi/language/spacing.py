@@ -29,7 +29,11 @@ _GAP = re.compile(
 )  # fmt: skip
 # "2 cubes to its right", "10 cm in front of it": a relation with its distance
 _OFFSET = re.compile(
-    r"\b" + _N + r"[- ]?" + _UNIT + r"\s+(?=(?:to\s+(?:the|its)\s+(?:left|right)|in\s+front\s+of|"
+    r"(?<!\bof\s)(?<!\bwith\s)(?<!\bby\s)\b"
+    + _N
+    + r"[- ]?"
+    + _UNIT
+    + r"\s+(?=(?:to\s+(?:the|its)\s+(?:left|right)|in\s+front\s+of|"
     r"behind|further\s+back)\b)",
     re.IGNORECASE,
 )
