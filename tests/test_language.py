@@ -849,7 +849,8 @@ def _coherence(command, *structures, relations=()):
 
     st_ = ReadState(command, CellConfig())
     spec = Spec(structures=tuple(structures), relations=tuple(relations))
-    coherence.check(parse(command), spec, st_)
+    doc = parse(command)
+    coherence.check(doc, spec, st_, set(range(len(doc))))
     return st_.material
 
 
@@ -864,7 +865,7 @@ def test_a_relation_the_reading_lost_is_material():
 
 
 def test_a_count_the_reading_does_not_have_is_material():
-    tower = structure("tower", height=3)
+    tower = structure("tower", height=4)
     assert _coherence("three stacks, 4 high", tower, tower) == ["three stacks"]
     assert _coherence("three stacks, 4 high", tower, tower, tower, tower) == ["three stacks"]
     assert _coherence("three stacks, 4 high", tower, tower, tower) == []
@@ -934,3 +935,26 @@ def test_a_gap_inside_one_structure_or_under_a_bridge_is_not_between_structures(
     assert read("a row of 4 cubes with a one-cube gap between each cube").spec.gap_m is None
     bridge = read("a bridge over a gap of 2 cubes").spec
     assert bridge.gap_m is None and bridge.structures[0].shape == "bridge"
+
+
+def test_a_number_that_shows_nowhere_in_the_reading_is_material():
+    r = plan("ring 4x4 2 ht, 3 of them")
+    if r.status == "success":  # read as three rings: every number shows
+        assert len(r.spec.structures) == 3
+    else:
+        assert any("'3': the number shows nowhere" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "pad 150x100 mm",  # millimetres read as parts
+        "a tower of 5. Actually no, make it 6.",  # superseded, and said so
+        "mic check 1 2 3. a row of 4 cubes",  # counting aloud
+        "for my class of 10-year-olds: a staircase with 3 steps",  # an age
+        "phase two of the demo: a 3 by 3 pad",  # a name
+    ],
+)
+def test_numbers_shown_converted_superseded_or_not_sizes_are_no_alarm(command):
+    r = plan(command)
+    assert not any("shows nowhere" in n for n in r.notes), r.notes

@@ -11,6 +11,10 @@ such readings and make them incomplete (``partial``), with a note naming the wor
 - **Counts**: a number that counts a structure noun ("two towers", "three stacks") when the
   reading has fewer structures than that and none that is made of several (a bridge of two
   towers, a castle of four, a grid of rows).
+- **Numbers**: every number of the command (above 1) shows in the reading — as a size, a
+  count of structures or parts, or a length in any unit the cell knows. A number the grammar
+  took but that shows nowhere ("ring 4x4 3 high, 2 of them" built as one ring) was attached
+  to the wrong thing or dropped.
 """
 
 from __future__ import annotations
@@ -18,6 +22,7 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING
 
+from sdi.errors import SDIError
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -90,7 +95,82 @@ def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
     return cues
 
 
-def check(doc: Doc, spec: Spec, st: ReadState) -> None:
+def _shown(spec: Spec, st: ReadState) -> set[float]:
+    """Every value the reading shows, in the forms a command may have said it."""
+    from sdi.design.composer import _sizes
+    from sdi.design.shapes import generate
+
+    shown: set[float] = {float(len(spec.structures)), float(len(spec.structures) - 1)}
+    metres: list[float] = [g for g in [spec.gap_m, *(r.gap_m for r in spec.relations)] if g]
+    families: dict[str, int] = {}
+    for s in spec.structures:
+        families[s.shape] = families.get(s.shape, 0) + 1
+        for key, value in s.model_dump(exclude_none=True).items():
+            if key.endswith("_m") or key in ("at_x", "at_y"):
+                metres.append(float(value))
+            elif isinstance(value, int | float) and not isinstance(value, bool):
+                shown.add(float(value))
+                if isinstance(value, int) and key != "yaw_deg":
+                    metres.append(value * st.cell.cube[0])  # "20 cm" read as 4 parts
+            elif isinstance(value, list | tuple):
+                shown.update(float(v) for v in value if isinstance(v, int | float))
+        try:
+            boxes = generate(s, _sizes(st.cell, s.part))
+        except (SDIError, ValueError):  # one the composer will refuse: no count to show
+            continue
+        shown.add(float(len(boxes)))
+        levels: dict[float, int] = {}
+        for b in boxes:
+            levels[round(b.z, 4)] = levels.get(round(b.z, 4), 0) + 1
+        shown.update(float(n) for n in levels.values())
+    shown.update(float(n) for n in families.values())
+    shown.update(float(n - 1) for n in families.values())  # "then 2 more like it"
+    for m in metres:
+        shown.update(round(m / unit, 2) for unit in lx.UNITS_M.values())
+        shown.add(round(m / st.cell.cube[0], 2))
+    return shown
+
+
+_NOT_GEOMETRY = frozenset(
+    {"year", "years", "yr", "yrs", "old", "minute", "minutes", "min", "mins", "hour", "hours",
+     "hrs", "second", "seconds", "sec", "secs", "percent", "%", "people", "students", "kids",
+     "visitors", "day", "days", "week", "weeks", "o'clock", "am", "pm", "times"}
+)  # fmt: skip
+
+
+_LABELS = frozenset(
+    {"round", "phase", "version", "entry", "item", "page", "number", "no", "run", "trial", "day",
+     "week", "lesson", "exercise", "chapter", "section", "step", "stage", "task", "part", "bay",
+     "station", "cell", "line", "shift", "job", "order", "team", "group", "room", "table"}
+)  # fmt: skip
+
+
+def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]]:
+    """The numbers the operator wrote inside the structures' phrases (not ones a rewrite put
+    in, not ages, times or percentages)."""
+    said = set(re.findall(r"\d+(?:\.\d+)?|[a-z]+", command.lower()))
+    out = []
+    for tok in doc:
+        if not tok.like_num or tok.i not in tokens or tok.lower_ not in said:
+            continue
+        after = [t.lower_ for t in doc[tok.i + 1 : tok.i + 3] if t.lower_ != "-"]
+        if after and after[0] in _NOT_GEOMETRY:
+            continue
+        if any(doc[j].like_num for j in (tok.i - 1, tok.i + 1) if 0 <= j < len(doc)):
+            continue  # "test 1 2 3": counting aloud, not a size
+        if tok.i > 0 and doc[tok.i - 1].lower_ in _LABELS:
+            continue  # "round two", "phase 3": a name, not a size
+        value = words_to_numbers([tok.lower_])[0]
+        try:
+            v = float(value)
+        except ValueError:
+            continue
+        if v > 1:
+            out.append((tok.text, v))
+    return out
+
+
+def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     """Notes and material for what the sentence structure says and the reading does not."""
     n = len(spec.structures)
     if n >= 2 and not spec.relations:
@@ -100,6 +180,18 @@ def check(doc: Doc, spec: Spec, st: ReadState) -> None:
                 f"ignored '{cue}': the structures are built side by side, not related as "
                 "these words say"
             )
+    told = {
+        w for w in words_to_numbers(
+            re.findall(r"\d+(?:\.\d+)?|[a-z]+", " ".join([*st.material, *st.notes]).lower())
+        )
+    }  # fmt: skip
+    unexplained = [(t, v) for t, v in _numbers(doc, tokens, st.command) if f"{v:g}" not in told]
+    if unexplained:
+        shown = _shown(spec, st)
+        for text, value in unexplained:
+            if round(value, 2) not in shown:
+                st.material.append(text)
+                st.notes.append(f"ignored '{text}': the number shows nowhere in the reading")
     if any(s.shape in _COMPOSITE for s in spec.structures):
         return
     more = bool(_MORE & set(re.findall(r"[a-z]+", st.command.lower())))

@@ -15,6 +15,7 @@ from sdi.spec.numbers import TENS, UNITS
 _MARKER = re.compile(
     r"\s*[,.;:!—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
+    r"on\s+second\s+thoughts?|change\s+of\s+plan|"
     r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*",
     re.IGNORECASE,
 )
@@ -34,7 +35,8 @@ _KINDS: tuple[tuple[str, re.Pattern[str]], ...] = (
 
 _NOT_OLD = re.compile(r"^(?:no\s*,?\s*)?not\s+[^,;.]+?\s*[,;]\s*|^no\s*,\s*", re.IGNORECASE)
 _FILLER = re.compile(
-    r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|the|a|an|to|on|at|in)\s+)+",
+    r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|the|a|"
+    r"an|to|on|at|in)\s+)+",
     re.I,
 )
 

@@ -161,7 +161,8 @@ def modify(
         if key == "height" and new > 1 and shape in ("grid", "row"):
             shape = "block" if shape == "grid" else "wall"
         structures[index] = last.model_copy(update={key: new, "shape": shape})
-        st.notes.append(f"'{m.group(0).strip()}': the {last.shape} now has {key} {new}")
+        was = f" (was {now})" if getattr(last, key) else ""
+        st.notes.append(f"'{m.group(0).strip()}': the {last.shape} now has {key} {new}{was}")
         p.count = 0
         p.modified = True
         return True

@@ -133,7 +133,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
     spec = spacing.apply_gap(spec, st)
-    coherence.check(doc, spec, st)
+    coherence.check(doc, spec, st, {k for p in phrases for k in p.tokens})
     return Reading(
         command=command,
         text=text.strip(),
