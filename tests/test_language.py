@@ -866,7 +866,7 @@ def test_a_relation_the_reading_lost_is_material():
 
 def test_a_count_the_reading_does_not_have_is_material():
     tower = structure("tower", height=4)
-    assert _coherence("three stacks, 4 high", tower, tower) == ["three stacks"]
+    assert "three stacks" in _coherence("three stacks, 4 high", tower, tower)
     assert _coherence("three stacks, 4 high", tower, tower, tower, tower) == ["three stacks"]
     assert _coherence("three stacks, 4 high", tower, tower, tower) == []
     bridge = structure("bridge", height=3)
