@@ -30,11 +30,37 @@ def sdi(*args: str) -> subprocess.CompletedProcess[str]:
         ("a", "resume_execution", "approve"), ("approve", "design_review", "approve"),
         ("no", "pre_execute", "reject"), ("r", "design_review", "reject"),
         ("retry", "failure_report", "retry"), ("x", "failure_report", "abort"),
-        ("e edits.json", "design_review", "edit"),
+        ("e edits.json", "design_review", "edit"), ("x", "design_review", "abort"),
+        ("abort", "recovery_review", "abort"), ("r make it 4 high", "design_review", "reject"),
     ],
 )  # fmt: skip
 def test_typed_answers_mean_what_they_say(typed, kind, action):
     assert _answer(typed, kind)["action"] == action
+
+
+def test_a_typed_reason_goes_with_the_rejection_of_a_design():
+    assert _answer("r make it 4 high", "design_review") == {
+        "action": "reject", "reason": "make it 4 high"
+    }  # fmt: skip
+    assert _answer("r", "design_review") == {"action": "reject"}  # ends the run, as before
+    assert _answer("no thanks", "pre_execute") == {"action": "reject"}  # no replan there
+
+
+def test_reject_with_a_reason_replans_from_the_command_line(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    status = json.loads(sdi("run", "a row of 3 cubes", "--json", "--db", str(db)).stdout)
+    run_id = status["run_id"]
+    proc = sdi("resume", run_id, "--reason", "move it to the back", "--db", str(db))
+    assert proc.returncode == 2 and "--reason goes with --reject" in proc.stderr
+    proc = sdi("resume", run_id, "--reject", "--reason", "move it to the back", "--json",
+               "--db", str(db))  # fmt: skip
+    after = json.loads(proc.stdout)
+    assert after["status"] == "paused" and after["waiting_for"]["kind"] == "design_review"
+    assert "replanned after your rejection" in after["waiting_for"]["replanned"]
+    xs = [p["position"][0] for p in after["waiting_for"]["layout"]["objects"]]
+    assert min(xs) > max(p["position"][0] for p in status["waiting_for"]["layout"]["objects"])
+    proc = sdi("resume", run_id, "--reject", "--json", "--db", str(db))
+    assert json.loads(proc.stdout)["status"] == "rejected"  # no reason: the run ends
 
 
 @pytest.mark.parametrize(

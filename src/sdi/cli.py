@@ -490,11 +490,11 @@ FaultOption = Annotated[
 
 
 def _check_faults(names: list[str] | None, as_json: bool) -> None:
-    from sdi.execute.faults import SCENARIOS
+    from sdi.execute.faults import FAULTS
 
-    unknown = [f for f in names or [] if f not in SCENARIOS]
+    unknown = [f for f in names or [] if f not in FAULTS]
     if unknown:
-        message = f"unknown scenario {unknown}; choose from {sorted(SCENARIOS)}"
+        message = f"unknown scenario {unknown}; choose from {sorted(FAULTS)}"
         _bad_input(InputError(message, field="--fault"), as_json)
 
 
@@ -556,7 +556,7 @@ def execute_cmd(
     force: ForceOption = False,
 ) -> None:
     """Plan motion for a verified layout, execute it in simulation, monitor and report."""
-    from sdi.execute.faults import SCENARIOS
+    from sdi.execute.faults import FAULTS
 
     _check_faults(fault, json_out)
     if not (math.isfinite(epsilon) and epsilon > 0):
@@ -568,7 +568,7 @@ def execute_cmd(
     from sdi.commission import execute
     from sdi.monitor.report import deviation_png
 
-    result, report = execute(plan, epsilon=epsilon, faults=tuple(SCENARIOS[f] for f in fault or []))
+    result, report = execute(plan, epsilon=epsilon, faults=tuple(FAULTS[f] for f in fault or []))
     report = {"planning": plan.summary(), **report}
     if report_dir is not None:
         files: dict[Path, bytes | str] = {
@@ -715,7 +715,11 @@ def _answer(text: str, kind: str) -> dict[str, Any] | None:
         return None
     if word in APPROVE_WORDS:
         return {"action": "approve"}
+    if word in ("x", "abort"):
+        return {"action": "abort"}
     if word in REJECT_WORDS:
+        if len(words) > 1 and kind in ("design_review", "recovery_review"):
+            return {"action": "reject", "reason": words[1]}  # replan with the reason
         return {"action": "reject"}
     return None
 
@@ -774,10 +778,14 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
         for line in _review_lines(waiting):
             out.print(line, markup=False)
         question, default = {
-            "design_review": ("Design review: [a]pprove, [e]dit FILE.json, [r]eject", "a"),
+            "design_review": (
+                "Design review: [a]pprove, [e]dit FILE.json, [r]eject REASON (replan), [x] abort",
+                "a",
+            ),
             "recovery_review": (
-                "The recovery changed the shape: [a]pprove, [e]dit FILE.json, [r]eject",
-                "r",
+                "The recovery changed the shape: [a]pprove, [e]dit FILE.json, [r]eject REASON "
+                "(replan), [x] abort",
+                "x",
             ),
             "edit_review": (
                 "Your edit breaks constraints: [f]ix (the repair), [u]ndo, re[p]lan, "
@@ -816,6 +824,8 @@ def _review_lines(waiting: dict[str, Any]) -> list[str]:
     recovery = waiting.get("recovery")
     if isinstance(recovery, dict):
         lines.append(f"recovery: {recovery.get('summary')}")
+    if waiting.get("replanned"):
+        lines.append(str(waiting["replanned"]))
     for v in (waiting.get("violations") or [])[:10]:
         if isinstance(v, dict):
             lines.append(f"  ✗ {v.get('constraint')}: {v.get('message')} — {v.get('hint')}")
@@ -1014,8 +1024,21 @@ def resume_cmd(
         bool, typer.Option("--approve-all", help="approve the pending review and every later one")
     ] = False,
     reject: Annotated[
-        bool, typer.Option("--reject", help="answer the pending review: reject")
+        bool,
+        typer.Option(
+            "--reject",
+            help="answer the pending review: reject; the run ends (at a design review, add "
+            "--reason to replan instead)",
+        ),
     ] = False,
+    reason: Annotated[
+        str | None,
+        typer.Option(
+            "--reason",
+            help="with --reject at a design review: why; the orchestrator replans, reading it "
+            "after the command as a change (e.g. 'make it 4 high')",
+        ),
+    ] = None,
     retry: Annotated[
         bool, typer.Option("--retry", help="answer a failure report: plan the command again")
     ] = False,
@@ -1053,11 +1076,15 @@ def resume_cmd(
     answers = [name for name, given in flags.items() if given]
     if len(answers) > 1:
         _bad_input(InputError(f"give one answer, not {' and '.join(answers)}"), json_out)
+    if reason is not None and not reject:
+        _bad_input(InputError("--reason goes with --reject", field="--reason"), json_out)
     decision: dict[str, Any] | None = None
     if edit is not None:
         decision = {"action": "edit", "edits": _edits_or_exit(edit, json_out)}
     elif reject:
         decision = {"action": "reject"}
+        if reason is not None and reason.strip():
+            decision["reason"] = reason.strip()
     elif retry:
         decision = {"action": "retry"}
     elif choose is not None:
@@ -1088,6 +1115,12 @@ def resume_cmd(
             _progress(orch, json_out)
             with orch.owning(run_id):  # one process at a time, prompts included
                 kind = (orch.status(run_id).waiting_for or {}).get("kind")
+                if reason is not None and kind not in ("design_review", "recovery_review"):
+                    raise InputError(
+                        f"run {run_id} waits on {kind or 'nothing'}; a reason replans only "
+                        "at a design review (--reject alone ends the run)",
+                        field="--reason",
+                    )
                 if (retry and kind != "failure_report") or (choose and kind != "edit_review"):
                     raise InputError(
                         f"run {run_id} waits on {kind or 'nothing'}, which {answers[0]} does "
