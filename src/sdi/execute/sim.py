@@ -382,7 +382,10 @@ class SimDriver:
         for name, rows in recorded.items():
             every = max(1, round(self.robots[name].controller_rate_hz / SAMPLE_BATCH_HZ))
             new = rows[sent[name] :]
-            q[name] = [[round(t, 4), *(round(float(v), 6) for v in qq)] for t, qq in new[::every]]
+            kept = new[::every]
+            if new and (len(new) - 1) % every:  # the batch ends on its last sample (a breach
+                kept.append(new[-1])  # stops execution there: the page must see it)
+            q[name] = [[round(t, 4), *(round(float(v), 6) for v in qq)] for t, qq in kept]
             sent[name] = len(rows)
         if not any(q.values()):
             return
