@@ -262,3 +262,30 @@ def test_a_review_says_what_changed():
     assert "repair: c3 moved by (-0.225, 0, -0.1) m" in text and "c1 → c2 → c3" in text
     shown = _review_lines({"kind": "recovery_review", "recovery": {"summary": "flatten: x → y"}})
     assert shown == ["recovery: flatten: x → y"]
+
+
+def test_a_failure_report_is_answered_with_a_recovery_skill(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    status = json.loads(sdi("run", "a tower of 3 cubes", "--fault", "joint_drift", "--approve",
+                            "--json", "--db", str(db)).stdout)  # fmt: skip
+    run_id = status["run_id"]
+    status = json.loads(sdi("resume", run_id, "--approve", "--json", "--db", str(db)).stdout)
+    assert status["waiting_for"]["kind"] == "failure_report"  # δ breached ε
+    assert [k["name"] for k in status["waiting_for"]["skills"]] == ["shift", "flatten", "modify"]
+    proc = sdi("resume", run_id, "--recover", "teleport", "--json", "--db", str(db))
+    assert proc.returncode == 2  # not offered: the report waits again, saying why
+    assert (
+        "choose one of shift, flatten, modify" in json.loads(proc.stdout)["waiting_for"]["refused"]
+    )
+    proc = sdi("resume", run_id, "--recover", "flatten", "--json", "--db", str(db))
+    after = json.loads(proc.stdout)
+    assert after["waiting_for"]["kind"] == "recovery_review"
+    assert after["waiting_for"]["recovery"]["action"] == "flatten"
+
+
+@pytest.mark.parametrize(
+    ("typed", "skill"), [("s flatten", "flatten"), ("recover modify", "modify")]
+)
+def test_typed_recovery_skills_at_a_failure_report(typed, skill):
+    assert _answer(typed, "failure_report") == {"action": "recover", "skill": skill}
+    assert _answer("s", "failure_report") is None  # which skill?

@@ -710,6 +710,8 @@ def _answer(text: str, kind: str) -> dict[str, Any] | None:
     if kind == "failure_report":
         if word in ("r", "retry"):
             return {"action": "retry"}
+        if word in ("s", "skill", "recover"):
+            return {"action": "recover", "skill": words[1].strip()} if len(words) > 1 else None
         if word in ("x", "abort", "n", "no"):
             return {"action": "abort"}
         return None
@@ -800,7 +802,10 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
         _line(out, "failure:", "red", _describe_failure(waiting.get("failure")))
         for v in waiting.get("violations") or []:
             _line(out, "  -", "", v)
-        question, default = "Failure report: [r]etry, [e]dit FILE.json, [x] abort", "x"
+        for k in waiting.get("skills") or []:
+            _line(out, f"  skill {k.get('name')}:", "", k.get("does"))
+        question = "Failure report: [s]kill NAME, [r]etry, [e]dit FILE.json, [x] abort"
+        default = "x"
     while True:
         decision = _answer(typer.prompt(question, default=default), kind)
         if decision is None:
@@ -891,7 +896,7 @@ def _finish(status: Any, as_json: bool) -> None:
             kind = waiting.get("kind")
             what = f" record {waiting['record_hash'][:12]}" if waiting.get("record_hash") else ""
             how = {
-                "failure_report": "--retry (or --edit FILE, --reject)",
+                "failure_report": "--retry (or --recover SKILL, --edit FILE, --reject)",
                 "edit_review": "--choose repair|undo|replan (or --edit FILE, --reject)",
             }.get(str(kind), "--approve (or --reject, --edit FILE; --approve-all for every "
                              "later review too)")  # fmt: skip
@@ -1042,6 +1047,14 @@ def resume_cmd(
     retry: Annotated[
         bool, typer.Option("--retry", help="answer a failure report: plan the command again")
     ] = False,
+    recover: Annotated[
+        str | None,
+        typer.Option(
+            "--recover",
+            help="answer a failure report: run one of the recovery skills it offers "
+            "(shift, flatten, modify)",
+        ),
+    ] = None,
     choose: Annotated[
         str | None,
         typer.Option(
@@ -1071,7 +1084,7 @@ def resume_cmd(
     from sdi.orchestrator import Orchestrator, RunBusyError
 
     flags = {"--approve": approve, "--approve-all": approve_all, "--reject": reject,
-             "--edit": edit is not None, "--retry": retry,
+             "--edit": edit is not None, "--retry": retry, "--recover": recover is not None,
              "--choose": choose is not None}  # fmt: skip
     answers = [name for name, given in flags.items() if given]
     if len(answers) > 1:
@@ -1087,6 +1100,8 @@ def resume_cmd(
             decision["reason"] = reason.strip()
     elif retry:
         decision = {"action": "retry"}
+    elif recover is not None:
+        decision = {"action": "recover", "skill": recover}
     elif choose is not None:
         if choose not in ("repair", "undo", "replan"):
             _bad_input(InputError(f"{choose!r}: choose repair, undo or replan",
@@ -1121,7 +1136,9 @@ def resume_cmd(
                         "at a design review (--reject alone ends the run)",
                         field="--reason",
                     )
-                if (retry and kind != "failure_report") or (choose and kind != "edit_review"):
+                if ((retry or recover is not None) and kind != "failure_report") or (
+                    choose and kind != "edit_review"
+                ):
                     raise InputError(
                         f"run {run_id} waits on {kind or 'nothing'}, which {answers[0]} does "
                         "not answer",
@@ -1132,8 +1149,8 @@ def resume_cmd(
                     if kind == "failure_report":
                         raise InputError(
                             f"run {run_id} waits on a failure report, which is not approved: "
-                            "answer it with --retry (plan the command again), --edit FILE, "
-                            "--reject (abort), or interactively (retry / edit / abort)",
+                            "answer it with --retry (plan the command again), --recover SKILL, "
+                            "--edit FILE, --reject (abort), or interactively",
                             field=answers[0],
                         )
                     if kind == "edit_review":
