@@ -449,6 +449,10 @@ def test_a_finished_run_replays_from_its_events_alone(twin: Twin):
     assert sorted(e["payload"]["part_id"] for e in placed) == ["c1", "c2", "c3"]
     assert any(e["type"] == "samples" for e in execution["events"])
     assert twin.timeline(run_id, record_hash)["record_hash"] == record_hash
+    client = TestClient(create_app(twin))
+    assert client.get(f"/api/runs/{run_id}/replay").json() == told
+    r = client.get(f"/api/runs/{run_id}/timeline", params={"record": "f" * 64})
+    assert r.status_code == 400 and r.json()["field"] == "record"
 
 
 def test_the_answer_handlers_leave_the_event_loop_free(tmp_path: Path):

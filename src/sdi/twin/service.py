@@ -416,11 +416,16 @@ class Twin:
         `rate_hz`, when each part is gripped and released, the schedule and the makespan. The
         record is `record_hash`, else the run's current one (`Orchestrator.record`: the one
         awaiting approval, else the one approved)."""
-        with self._lock:
-            if record_hash is None:
-                record = self._orch.record(run_id)
-            else:  # a record an event names (a replay)
-                record = self._orch.records.get(run_id, record_hash)
+        from sdi.execute.record import RecordError
+
+        try:
+            with self._lock:
+                if record_hash is None:
+                    record = self._orch.record(run_id)
+                else:  # a record an event names (a replay)
+                    record = self._orch.records.get(run_id, record_hash)
+        except RecordError as exc:
+            raise InputError(str(exc), field="record") from None
         body = record.body
         robots: dict[str, Any] = {}
         for name, tr in body["motion"]["trajectories"].items():
