@@ -225,3 +225,21 @@ def test_a_phase_past_its_wall_clock_limit_goes_to_the_failure_report(tmp_path):
     assert model.usage.by_role["designer"] == 1
     assert any(m.type == "failure" for m in o.bus.history(s.run_id))
     o.close()
+
+
+def test_a_rejection_reason_is_the_model_designers_feedback(tmp_path):
+    model = ScriptedChat(lambda msgs, opt: tower(2))
+    o = Orchestrator(db=tmp_path / "runs.sqlite", model=model, arms=["irb120"])
+    try:
+        s = o.start("a 2-cube tower", method="LGOrch")
+        assert s.waiting_for["kind"] == "design_review"
+        told = [m["content"] for m in model.calls[-1][0] if m["role"] == "user"]
+        assert "rejected" not in told[-1]
+        s = o.resume(s.run_id, {"action": "reject", "reason": "make it taller"})
+        told = [m["content"] for m in model.calls[-1][0] if m["role"] == "user"]
+        assert told[-1].startswith("a 2-cube tower")
+        assert "The operator rejected a design: make it taller" in told[-1]
+        # the scripted model gives the same tower again: the review says so
+        assert "the same layout came back" in s.waiting_for["replanned"]
+    finally:
+        o.close()

@@ -30,11 +30,37 @@ def sdi(*args: str) -> subprocess.CompletedProcess[str]:
         ("a", "resume_execution", "approve"), ("approve", "design_review", "approve"),
         ("no", "pre_execute", "reject"), ("r", "design_review", "reject"),
         ("retry", "failure_report", "retry"), ("x", "failure_report", "abort"),
-        ("e edits.json", "design_review", "edit"),
+        ("e edits.json", "design_review", "edit"), ("x", "design_review", "abort"),
+        ("abort", "recovery_review", "abort"), ("r make it 4 high", "design_review", "reject"),
     ],
 )  # fmt: skip
 def test_typed_answers_mean_what_they_say(typed, kind, action):
     assert _answer(typed, kind)["action"] == action
+
+
+def test_a_typed_reason_goes_with_the_rejection_of_a_design():
+    assert _answer("r make it 4 high", "design_review") == {
+        "action": "reject", "reason": "make it 4 high"
+    }  # fmt: skip
+    assert _answer("r", "design_review") == {"action": "reject"}  # ends the run, as before
+    assert _answer("no thanks", "pre_execute") == {"action": "reject"}  # no replan there
+
+
+def test_reject_with_a_reason_replans_from_the_command_line(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    status = json.loads(sdi("run", "a row of 3 cubes", "--json", "--db", str(db)).stdout)
+    run_id = status["run_id"]
+    proc = sdi("resume", run_id, "--reason", "move it to the back", "--db", str(db))
+    assert proc.returncode == 2 and "--reason goes with --reject" in proc.stderr
+    proc = sdi("resume", run_id, "--reject", "--reason", "move it to the back", "--json",
+               "--db", str(db))  # fmt: skip
+    after = json.loads(proc.stdout)
+    assert after["status"] == "paused" and after["waiting_for"]["kind"] == "design_review"
+    assert "replanned after your rejection" in after["waiting_for"]["replanned"]
+    xs = [p["position"][0] for p in after["waiting_for"]["layout"]["objects"]]
+    assert min(xs) > max(p["position"][0] for p in status["waiting_for"]["layout"]["objects"])
+    proc = sdi("resume", run_id, "--reject", "--json", "--db", str(db))
+    assert json.loads(proc.stdout)["status"] == "rejected"  # no reason: the run ends
 
 
 @pytest.mark.parametrize(
@@ -236,3 +262,30 @@ def test_a_review_says_what_changed():
     assert "repair: c3 moved by (-0.225, 0, -0.1) m" in text and "c1 → c2 → c3" in text
     shown = _review_lines({"kind": "recovery_review", "recovery": {"summary": "flatten: x → y"}})
     assert shown == ["recovery: flatten: x → y"]
+
+
+def test_a_failure_report_is_answered_with_a_recovery_skill(tmp_path):
+    db = tmp_path / "runs.sqlite"
+    status = json.loads(sdi("run", "a tower of 3 cubes", "--fault", "joint_drift", "--approve",
+                            "--json", "--db", str(db)).stdout)  # fmt: skip
+    run_id = status["run_id"]
+    status = json.loads(sdi("resume", run_id, "--approve", "--json", "--db", str(db)).stdout)
+    assert status["waiting_for"]["kind"] == "failure_report"  # δ breached ε
+    assert [k["name"] for k in status["waiting_for"]["skills"]] == ["shift", "flatten", "modify"]
+    proc = sdi("resume", run_id, "--recover", "teleport", "--json", "--db", str(db))
+    assert proc.returncode == 2  # not offered: the report waits again, saying why
+    assert (
+        "choose one of shift, flatten, modify" in json.loads(proc.stdout)["waiting_for"]["refused"]
+    )
+    proc = sdi("resume", run_id, "--recover", "flatten", "--json", "--db", str(db))
+    after = json.loads(proc.stdout)
+    assert after["waiting_for"]["kind"] == "recovery_review"
+    assert after["waiting_for"]["recovery"]["action"] == "flatten"
+
+
+@pytest.mark.parametrize(
+    ("typed", "skill"), [("s flatten", "flatten"), ("recover modify", "modify")]
+)
+def test_typed_recovery_skills_at_a_failure_report(typed, skill):
+    assert _answer(typed, "failure_report") == {"action": "recover", "skill": skill}
+    assert _answer("s", "failure_report") is None  # which skill?

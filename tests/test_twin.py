@@ -268,3 +268,221 @@ def test_the_reading_shows_what_the_specifier_left_unused(twin: Twin):
     reading = twin.view(run_id)["reading"]
     assert reading["ignored"] == ["flag"]
     assert any(s.startswith("tower#1") for s in reading["structures"])
+
+
+# -- reject with a reason: the orchestrator replans --------------------------------------------
+def _positions(view: dict) -> dict[str, list[float]]:
+    return {p["id"]: p["position"] for p in view["review"]["parts"]}
+
+
+def test_a_rejection_with_a_reason_replans_and_the_next_review_says_what_changed(twin: Twin):
+    run_id = _review_run(twin)
+    before = _positions(twin.view(run_id))
+    with pytest.raises(InputError) as info:
+        twin.reject(run_id, "t", "   ")
+    assert info.value.field == "reason"
+    twin.reject(run_id, "t", "move it to the back")
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "design_review", view
+    after = _positions(view)
+    assert set(after) == set(before)
+    assert all(after[i][0] > before[i][0] for i in after)  # the back of the table: larger x
+    assert "moved" in view["waiting_for"]["replanned"]
+    # a reason the reader cannot use brings the same layout back: the review says so
+    twin.reject(run_id, "t", "I do not like it")
+    twin.wait()
+    view = twin.view(run_id)
+    assert _positions(view) == after
+    assert "the same layout came back" in view["waiting_for"]["replanned"]
+    assert "like" in view["waiting_for"]["replanned"]  # the words it did not use
+    twin.abort(run_id, "t")
+    twin.wait()
+    assert twin.view(run_id)["status"] == "rejected"
+
+
+def test_rejected_edits_do_not_come_back_with_the_same_layout(twin: Twin):
+    run_id = _review_run(twin)
+    twin.edit(run_id, "t", {"op": "remove", "id": "c3"})
+    twin.reject(run_id, "t", "nothing I can say")
+    twin.wait()
+    review = twin.view(run_id)["review"]
+    assert len(review["parts"]) == 3 and not review["can_undo"]
+
+
+def test_a_reject_without_a_reason_still_ends_the_run(tmp_path: Path):
+    from sdi.orchestrator import Orchestrator
+
+    orch = Orchestrator(db=tmp_path / "r.sqlite")
+    try:
+        s = orch.start("a row of 3 cubes")
+        assert s.waiting_for["choices"] == ["approve", "edit", "reject", "abort"]
+        s = orch.resume(s.run_id, {"action": "reject", "reason": "  "})
+        assert s.status == "rejected"
+    finally:
+        orch.close()
+
+
+# -- touch point 3: the failure report's options, a δ breach -----------------------------------
+def _executed(twin: Twin, command: str, faults: list[str]) -> str:
+    run_id = twin.start(command, faults)
+    twin.wait()
+    twin.accept(run_id, "t", twin.view(run_id)["review"]["layout_hash"])
+    twin.wait()
+    view = twin.view(run_id)
+    twin.confirm(run_id, "t", "approve", view["waiting_for"]["record_hash"])
+    twin.wait()
+    return run_id
+
+
+def test_a_delta_breach_stops_the_robots_and_raises_the_failure_report(twin: Twin):
+    run_id = _executed(twin, "a tower of 3 cubes", ["joint_drift"])
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "failure_report", view
+    assert view["failure"]["error_type"] == "deviation"
+    assert view["failure"]["scenario"] == "joint_drift"
+    execution = view["execution"]
+    assert execution["status"] == "paused" and execution["v_traj"] == "fail"
+    assert execution["delta_rad"] > execution["epsilon_rad"]
+    assert execution["completed_steps"] < 3  # stopped, not finished
+    kinds = [e["type"] for e in twin.events(run_id)]
+    assert kinds.index("execution") < len(kinds) - 1 - kinds[::-1].index("stopped")
+    # the report offers the orchestrator's options: its recovery skills, retry, edit, abort
+    waiting = view["waiting_for"]
+    assert waiting["choices"] == ["recover", "retry", "edit", "abort"]
+    assert [k["name"] for k in waiting["skills"]] == ["shift", "flatten", "modify"]
+    assert view["review"] is not None  # the failed layout, open in the editor
+
+
+def test_the_operator_picks_a_recovery_skill_at_the_failure_report(twin: Twin):
+    run_id = _executed(twin, "a tower of 3 cubes", ["joint_drift"])
+    with pytest.raises(InputError) as info:
+        twin.failure_decision(run_id, "t", "recover", "teleport")
+    assert info.value.field == "skill"
+    twin.failure_decision(run_id, "t", "recover", "shift")  # nothing is blocked: refused
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "failure_report"
+    assert "shift" in view["waiting_for"]["refused"]
+    twin.failure_decision(run_id, "t", "recover", "flatten")  # lowers the tower
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "recovery_review", view
+    assert view["waiting_for"]["recovery"]["action"] == "flatten"
+    assert max(p["position"][2] for p in view["review"]["parts"]) < 0.125
+    answers = [e["payload"] for e in twin.events(run_id) if e["type"] == "failure_decision"]
+    assert answers[-1] == {"action": "recover", "skill": "flatten", "by": "twin"}
+
+
+def test_a_human_edit_of_the_failed_layout_goes_back_to_design_review(twin: Twin):
+    run_id = _executed(twin, "a tower of 3 cubes", ["joint_drift"])
+    with pytest.raises(InputError, match="edit the failed layout first"):
+        twin.accept(run_id, "t", twin.view(run_id)["review"]["layout_hash"])
+    twin.edit(run_id, "t", {"op": "remove", "id": "c3"})
+    twin.accept(run_id, "t", twin.view(run_id)["review"]["layout_hash"])
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["waiting_for"]["kind"] == "design_review", view
+    assert sorted(_positions(view)) == ["c1", "c2"]
+    answers = [e["payload"] for e in twin.events(run_id) if e["type"] == "failure_decision"]
+    assert answers[-1]["action"] == "edit" and answers[-1]["edits"] == [
+        {"op": "remove", "id": "c3"}
+    ]
+
+
+# -- the run's record, and the replay from its events ------------------------------------------
+def test_the_record_is_the_one_awaiting_approval_after_a_recovery(tmp_path: Path):
+    from sdi.orchestrator import Orchestrator
+
+    orch = Orchestrator(db=tmp_path / "r.sqlite")
+    try:
+        s = orch.start("a row of 3 cubes", faults=["workspace_boundary"])
+        s = orch.resume(s.run_id, {"action": "reject", "reason": "move it to the back"})
+        s = orch.resume(s.run_id, {"action": "approve"})  # x = 0.65: beyond the boundary
+        first = s.waiting_for["record_hash"]
+        assert orch.record(s.run_id).hash == first  # awaiting approval
+        s = orch.resume(s.run_id, {"action": "approve", "record_hash": first})
+        assert s.state["approved_hash"] == first and s.state["execution"]["status"] == "failure"
+        while s.waiting_for["kind"] != "pre_execute":  # the recovery's design, approved
+            assert s.waiting_for["kind"] in ("design_review", "recovery_review"), s.waiting_for
+            s = orch.resume(s.run_id, {"action": "approve"})
+        second = s.waiting_for["record_hash"]
+        assert second != first and s.state["approved_hash"] == first
+        assert orch.record(s.run_id).hash == second  # not the stale approved one
+        s = orch.resume(s.run_id, {"action": "abort"})
+        assert s.status == "aborted"
+        assert orch.record(s.run_id).hash == first  # nothing pending: the one approved
+    finally:
+        orch.close()
+
+
+def test_a_finished_run_replays_from_its_events_alone(twin: Twin):
+    from sdi.twin.replay import replay
+
+    run_id = _review_run(twin)
+    twin.edit(run_id, "t", {"op": "move", "id": "c3", "position": [0.55, 0.35, 0.025]})
+    twin.accept(run_id, "t", twin.view(run_id)["review"]["layout_hash"])
+    twin.wait()
+    record_hash = twin.view(run_id)["waiting_for"]["record_hash"]
+    twin.confirm(run_id, "t", "approve", record_hash)
+    twin.wait()
+    assert twin.view(run_id)["status"] == "success"
+    told = twin.replay(run_id)
+    assert told == replay(twin.events(run_id))  # the events, nothing else
+    assert told["command"] == "a row of 3 cubes"
+    kinds = [s["kind"] for s in told["steps"]]
+    assert kinds == ["design", "decision", "design", "decision", "record", "approval",
+                     "execution"]  # fmt: skip
+    first, edit, second, approve, record, approval, execution = told["steps"]
+    c3 = {p["id"]: p["position"] for p in first["parts"]}["c3"]
+    assert c3 == [0.45, 0.35, 0.025]
+    assert edit["action"] == "edit" and edit["by"] == "twin" and len(edit["edits"]) == 1
+    assert {p["id"]: p["position"] for p in second["parts"]}["c3"] == [0.55, 0.35, 0.025]
+    assert (first["version"], second["version"]) == (1, 2)
+    assert approve["action"] == "approve"
+    assert record["record_hash"] == approval["record_hash"] == record_hash
+    assert approval["by"] == "twin"
+    assert execution["record_hash"] == record_hash
+    assert execution["report"]["v_traj"] == "pass"
+    assert execution["report"]["delta_rad"] <= execution["report"]["epsilon_rad"]
+    placed = [e for e in execution["events"] if e["type"] == "step_done"]
+    assert sorted(e["payload"]["part_id"] for e in placed) == ["c1", "c2", "c3"]
+    assert any(e["type"] == "samples" for e in execution["events"])
+    assert twin.timeline(run_id, record_hash)["record_hash"] == record_hash
+    client = TestClient(create_app(twin))
+    assert client.get(f"/api/runs/{run_id}/replay").json() == told
+    r = client.get(f"/api/runs/{run_id}/timeline", params={"record": "f" * 64})
+    assert r.status_code == 400 and r.json()["field"] == "record"
+
+
+def test_the_answer_handlers_leave_the_event_loop_free(tmp_path: Path):
+    """While the run database is busy, a reject, an edit-review answer and a failure answer
+    wait in worker threads: the server keeps answering other requests meanwhile."""
+    import threading
+    import time
+
+    import httpx
+
+    from twin_harness import served
+
+    with served(tmp_path / "runs.sqlite") as (url, twin):
+        run_id = _review_run(twin)
+        codes: dict[str, int] = {}
+
+        def post(path: str, data: dict) -> None:
+            codes[path] = httpx.post(f"{url}api/runs/{run_id}/{path}", json=data,
+                                     timeout=60).status_code  # fmt: skip
+
+        answers = {"reject": {"tab": "t", "reason": "move it to the back"},
+                   "edit-review": {"tab": "t", "action": "undo"},
+                   "failure": {"tab": "t", "action": "retry"}}  # fmt: skip
+        threads = [threading.Thread(target=post, args=a) for a in answers.items()]
+        with twin._lock:  # the service's reads of the run database wait for this
+            for t in threads:
+                t.start()
+            time.sleep(1.0)  # the three requests reach the server and wait
+            assert httpx.get(f"{url}api/scene", timeout=10).status_code == 200
+            assert all(t.is_alive() for t in threads)  # still waiting, yet the loop answered
+        for t in threads:
+            t.join(timeout=60)
+        assert codes == {"reject": 200, "edit-review": 400, "failure": 400}

@@ -3,8 +3,11 @@
 Type a command → the parts appear; drag one into another → a collision on both; undo → it
 clears; drag one out of the workspace and apply the hint; accept; the record's preview plays
 and the slider scrubs; approve; execution finishes with V_traj = pass and every part green;
-reload → the run is still there and replays. A screenshot of each step is saved under the
-test's output folder ($SDI_TWIN_SCREENSHOTS, else pytest's tmp_path).
+reload → the run is still there and replays from its events: the design versions, the edit,
+the approval (record hash, who), the execution with δ. A rejection with a reason replans. A
+δ breach stops execution and raises the failure report with the orchestrator's options (a
+recovery skill, retry, a human edit of the failed layout, abort). A screenshot of each step is
+saved under the test's output folder ($SDI_TWIN_SCREENSHOTS, else pytest's tmp_path).
 """
 
 from __future__ import annotations
@@ -14,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from twin_harness import browser, drag, need_browser, page_errors, served, shot, state, wait
+from twin_harness import browser, drag, need_browser, page_errors, served, shot, state, top, wait
 
 pytestmark = pytest.mark.slow
 
@@ -100,6 +103,7 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         shot(page, shots / "4-preview.png")
 
         # approve (naming the record's hash) → execution, watched live
+        record_hash = state(page, "T.view.waiting_for.record_hash")
         page.click("#approve")
         wait(page, "T.vTraj === 'pass' && Object.keys(T.placed).length === 3", 600)
         assert set(state(page, "Object.values(T.placed)")) == {"placed"}
@@ -113,10 +117,107 @@ def test_command_review_preview_execute_replay(tmp_path: Path, shots: Path) -> N
         wait(page, f"T.runId === '{run_id}' && T.view.status === 'success'")
         assert run_id in page.inner_text("#runs")
         page.click("#replay")
-        wait(page, "T.placedAtReplayStart !== undefined")
-        assert state(page, "T.placedAtReplayStart") == 0  # parts come back as the replay runs
+        wait(page, "T.replay && T.replay.k === 0")
+        kinds = state(page, "T.replay.steps.map(s => s.kind)")
+        assert kinds == ["design", "decision", "design", "decision", "record", "approval",
+                         "execution"]  # fmt: skip
+        # the Designer's layout as the review showed it, then the operator's edit, then theirs
+        assert state(page, "T.partIds.length") == 3
+        assert state(page, "T.replay.layout.find(p => p.id === 'c3').position") == pos["c3"]
+        shot(page, shots / "6-replay-design.png")
+        page.click("#replay-next")
+        wait(page, "T.replay.k === 1")
+        assert "edit" in page.inner_text("#replay-step") and "by twin" in page.inner_text(
+            "#replay-step"
+        )
+        page.click("#replay-next")
+        wait(page, "T.replay.k === 2")
+        assert state(page, "T.replay.layout.find(p => p.id === 'c3').position") == moved
+        for k in (3, 4, 5):
+            page.click("#replay-next")
+            wait(page, f"T.replay.k === {k}")
+        approval = page.inner_text("#replay-step")
+        assert f"approved record {record_hash[:12]} by twin" in approval
+        # the execution: parts come back as the replay's clock reaches them, with δ
+        page.click("#replay-next")
+        wait(page, "T.replay.k === 6 && T.placedAtReplayStart !== undefined")
+        assert state(page, "T.placedAtReplayStart") == 0
         wait(page, "Object.keys(T.placed).length === 3 && T.deltaPoints.length > 0")
+        assert set(state(page, "Object.values(T.placed)")) == {"placed"}
+        assert "V_traj pass" in page.inner_text("#replay-step")
         shot(page, shots / "6-replay.png")
+        assert errors == []
+
+
+def test_reject_with_a_reason_replans(tmp_path: Path, shots: Path) -> None:
+    need_browser()
+    with served(tmp_path / "runs.sqlite") as (url, twin), browser() as b:
+        run_id = twin.start("a row of 3 cubes")
+        twin.wait()
+        page = b.new_page(viewport={"width": 1280, "height": 800})
+        errors = page_errors(page)
+        page.goto(f"{url}#{run_id}")
+        wait(page, "T.phase === 'design_review' && T.partIds.length === 3")
+        xs = state(page, "T.view.review.parts.map(p => p.position[0])")
+        page.click("#reject")  # no reason: refused, nothing changes
+        wait(page, "T.lastError && T.lastError.startsWith('reason')")
+        page.fill("#reason", "move it to the back")
+        page.click("#reject")
+        wait(page, "T.phase === 'design_review' && T.view.waiting_for.replanned")
+        after = state(page, "T.view.review.parts.map(p => p.position[0])")
+        assert min(after) > max(xs)  # the back of the table
+        assert page.is_visible("#replanned") and "moved" in page.inner_text("#replanned")
+        shot(page, shots / "7-replanned.png")
+        page.click("#review-abort")
+        wait(page, "T.phase === 'rejected'")
+        assert errors == []
+
+
+def test_a_delta_breach_raises_the_failure_report_with_its_options(
+    tmp_path: Path, shots: Path
+) -> None:
+    need_browser()
+    with served(tmp_path / "runs.sqlite") as (url, twin), browser() as b:
+        # an injected drift: joint 1 leaves the plan 3 s into the motion
+        run_id = twin.start("a tower of 3 cubes", ["joint_drift"])
+        twin.wait()
+        page = b.new_page(viewport={"width": 1280, "height": 800})
+        errors = page_errors(page)
+        page.goto(f"{url}#{run_id}")
+        wait(page, "T.phase === 'design_review' && T.partIds.length === 3")
+        page.click("#accept")
+        wait(page, "T.phase === 'pre_execute' && T.timeline && "
+                   "T.timeline.record_hash === T.view.waiting_for.record_hash")  # fmt: skip
+        page.click("#approve")
+        wait(page, "T.phase === 'failure_report'", 600)
+        assert page.is_visible("#failure-panel")
+        assert "deviation" in page.inner_text("#failure")
+        assert state(page, "T.view.execution.status") == "paused"
+        # δ crossed ε on the plot before the robots stopped
+        wait(page, "T.deltaPoints.some(p => p[1] > T.scene.epsilon_rad)")
+        skills = state(page, "[...document.querySelectorAll('#skills button')]"
+                       ".map(b => b.textContent)")  # fmt: skip
+        assert skills == ["shift", "flatten", "modify"]
+        for button in ("#retry", "#edit-failed", "#fail-abort"):
+            assert page.is_visible(button)
+        shot(page, shots / "8-delta-breach.png")
+        # a skill that cannot help says why; the report stays open
+        page.click("#skill-shift")
+        wait(page, "T.phase === 'failure_report' && !!T.view.waiting_for.refused")
+        assert "shift" in page.inner_text("#failure-refused")
+        # the human edit: the failed layout opens in the editor, the edit goes to the run
+        page.click("#edit-failed")
+        wait(page, "T.view.review && !document.getElementById('review-panel').hidden")
+        assert page.is_hidden("#failure-panel") and page.is_disabled("#accept")
+        c3 = state(page, "T.view.review.parts.find(p => p.id === 'c3').position")
+        at = state(page, f"T.screenOf({top(c3)})")
+        page.mouse.click(at[0], at[1])
+        wait(page, "T.selected === 'c3'")
+        page.click("#delete")
+        wait(page, "T.view.review.parts.length === 2")
+        shot(page, shots / "9-edit-failed.png")
+        page.click("#accept")
+        wait(page, "T.phase === 'design_review' && T.partIds.length === 2")
         assert errors == []
 
 
@@ -170,6 +271,7 @@ def test_a_failure_the_recovery_cannot_fix_raises_the_failure_report(
         assert state(page, "T.phase") == "failure_report"
         assert page.is_visible("#failure-panel")
         assert "blocked region" in page.inner_text("#failure")
+        assert page.is_visible("#skills button")  # the recovery skills are offered
         shot(page, shots / "7-failure-report.png")
         page.click("#fail-abort")
         wait(page, "T.phase === 'failure'")

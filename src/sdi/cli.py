@@ -490,11 +490,11 @@ FaultOption = Annotated[
 
 
 def _check_faults(names: list[str] | None, as_json: bool) -> None:
-    from sdi.execute.faults import SCENARIOS
+    from sdi.execute.faults import FAULTS
 
-    unknown = [f for f in names or [] if f not in SCENARIOS]
+    unknown = [f for f in names or [] if f not in FAULTS]
     if unknown:
-        message = f"unknown scenario {unknown}; choose from {sorted(SCENARIOS)}"
+        message = f"unknown scenario {unknown}; choose from {sorted(FAULTS)}"
         _bad_input(InputError(message, field="--fault"), as_json)
 
 
@@ -556,7 +556,7 @@ def execute_cmd(
     force: ForceOption = False,
 ) -> None:
     """Plan motion for a verified layout, execute it in simulation, monitor and report."""
-    from sdi.execute.faults import SCENARIOS
+    from sdi.execute.faults import FAULTS
 
     _check_faults(fault, json_out)
     if not (math.isfinite(epsilon) and epsilon > 0):
@@ -568,7 +568,7 @@ def execute_cmd(
     from sdi.commission import execute
     from sdi.monitor.report import deviation_png
 
-    result, report = execute(plan, epsilon=epsilon, faults=tuple(SCENARIOS[f] for f in fault or []))
+    result, report = execute(plan, epsilon=epsilon, faults=tuple(FAULTS[f] for f in fault or []))
     report = {"planning": plan.summary(), **report}
     if report_dir is not None:
         files: dict[Path, bytes | str] = {
@@ -710,12 +710,18 @@ def _answer(text: str, kind: str) -> dict[str, Any] | None:
     if kind == "failure_report":
         if word in ("r", "retry"):
             return {"action": "retry"}
+        if word in ("s", "skill", "recover"):
+            return {"action": "recover", "skill": words[1].strip()} if len(words) > 1 else None
         if word in ("x", "abort", "n", "no"):
             return {"action": "abort"}
         return None
     if word in APPROVE_WORDS:
         return {"action": "approve"}
+    if word in ("x", "abort"):
+        return {"action": "abort"}
     if word in REJECT_WORDS:
+        if len(words) > 1 and kind in ("design_review", "recovery_review"):
+            return {"action": "reject", "reason": words[1]}  # replan with the reason
         return {"action": "reject"}
     return None
 
@@ -774,10 +780,14 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
         for line in _review_lines(waiting):
             out.print(line, markup=False)
         question, default = {
-            "design_review": ("Design review: [a]pprove, [e]dit FILE.json, [r]eject", "a"),
+            "design_review": (
+                "Design review: [a]pprove, [e]dit FILE.json, [r]eject REASON (replan), [x] abort",
+                "a",
+            ),
             "recovery_review": (
-                "The recovery changed the shape: [a]pprove, [e]dit FILE.json, [r]eject",
-                "r",
+                "The recovery changed the shape: [a]pprove, [e]dit FILE.json, [r]eject REASON "
+                "(replan), [x] abort",
+                "x",
             ),
             "edit_review": (
                 "Your edit breaks constraints: [f]ix (the repair), [u]ndo, re[p]lan, "
@@ -792,7 +802,10 @@ def _review(status: Any, as_json: bool) -> dict[str, Any] | None:
         _line(out, "failure:", "red", _describe_failure(waiting.get("failure")))
         for v in waiting.get("violations") or []:
             _line(out, "  -", "", v)
-        question, default = "Failure report: [r]etry, [e]dit FILE.json, [x] abort", "x"
+        for k in waiting.get("skills") or []:
+            _line(out, f"  skill {k.get('name')}:", "", k.get("does"))
+        question = "Failure report: [s]kill NAME, [r]etry, [e]dit FILE.json, [x] abort"
+        default = "x"
     while True:
         decision = _answer(typer.prompt(question, default=default), kind)
         if decision is None:
@@ -816,6 +829,8 @@ def _review_lines(waiting: dict[str, Any]) -> list[str]:
     recovery = waiting.get("recovery")
     if isinstance(recovery, dict):
         lines.append(f"recovery: {recovery.get('summary')}")
+    if waiting.get("replanned"):
+        lines.append(str(waiting["replanned"]))
     for v in (waiting.get("violations") or [])[:10]:
         if isinstance(v, dict):
             lines.append(f"  ✗ {v.get('constraint')}: {v.get('message')} — {v.get('hint')}")
@@ -881,7 +896,7 @@ def _finish(status: Any, as_json: bool) -> None:
             kind = waiting.get("kind")
             what = f" record {waiting['record_hash'][:12]}" if waiting.get("record_hash") else ""
             how = {
-                "failure_report": "--retry (or --edit FILE, --reject)",
+                "failure_report": "--retry (or --recover SKILL, --edit FILE, --reject)",
                 "edit_review": "--choose repair|undo|replan (or --edit FILE, --reject)",
             }.get(str(kind), "--approve (or --reject, --edit FILE; --approve-all for every "
                              "later review too)")  # fmt: skip
@@ -1014,11 +1029,32 @@ def resume_cmd(
         bool, typer.Option("--approve-all", help="approve the pending review and every later one")
     ] = False,
     reject: Annotated[
-        bool, typer.Option("--reject", help="answer the pending review: reject")
+        bool,
+        typer.Option(
+            "--reject",
+            help="answer the pending review: reject; the run ends (at a design review, add "
+            "--reason to replan instead)",
+        ),
     ] = False,
+    reason: Annotated[
+        str | None,
+        typer.Option(
+            "--reason",
+            help="with --reject at a design review: why; the orchestrator replans, reading it "
+            "after the command as a change (e.g. 'make it 4 high')",
+        ),
+    ] = None,
     retry: Annotated[
         bool, typer.Option("--retry", help="answer a failure report: plan the command again")
     ] = False,
+    recover: Annotated[
+        str | None,
+        typer.Option(
+            "--recover",
+            help="answer a failure report: run one of the recovery skills it offers "
+            "(shift, flatten, modify)",
+        ),
+    ] = None,
     choose: Annotated[
         str | None,
         typer.Option(
@@ -1048,18 +1084,24 @@ def resume_cmd(
     from sdi.orchestrator import Orchestrator, RunBusyError
 
     flags = {"--approve": approve, "--approve-all": approve_all, "--reject": reject,
-             "--edit": edit is not None, "--retry": retry,
+             "--edit": edit is not None, "--retry": retry, "--recover": recover is not None,
              "--choose": choose is not None}  # fmt: skip
     answers = [name for name, given in flags.items() if given]
     if len(answers) > 1:
         _bad_input(InputError(f"give one answer, not {' and '.join(answers)}"), json_out)
+    if reason is not None and not reject:
+        _bad_input(InputError("--reason goes with --reject", field="--reason"), json_out)
     decision: dict[str, Any] | None = None
     if edit is not None:
         decision = {"action": "edit", "edits": _edits_or_exit(edit, json_out)}
     elif reject:
         decision = {"action": "reject"}
+        if reason is not None and reason.strip():
+            decision["reason"] = reason.strip()
     elif retry:
         decision = {"action": "retry"}
+    elif recover is not None:
+        decision = {"action": "recover", "skill": recover}
     elif choose is not None:
         if choose not in ("repair", "undo", "replan"):
             _bad_input(InputError(f"{choose!r}: choose repair, undo or replan",
@@ -1088,7 +1130,15 @@ def resume_cmd(
             _progress(orch, json_out)
             with orch.owning(run_id):  # one process at a time, prompts included
                 kind = (orch.status(run_id).waiting_for or {}).get("kind")
-                if (retry and kind != "failure_report") or (choose and kind != "edit_review"):
+                if reason is not None and kind not in ("design_review", "recovery_review"):
+                    raise InputError(
+                        f"run {run_id} waits on {kind or 'nothing'}; a reason replans only "
+                        "at a design review (--reject alone ends the run)",
+                        field="--reason",
+                    )
+                if ((retry or recover is not None) and kind != "failure_report") or (
+                    choose and kind != "edit_review"
+                ):
                     raise InputError(
                         f"run {run_id} waits on {kind or 'nothing'}, which {answers[0]} does "
                         "not answer",
@@ -1099,8 +1149,8 @@ def resume_cmd(
                     if kind == "failure_report":
                         raise InputError(
                             f"run {run_id} waits on a failure report, which is not approved: "
-                            "answer it with --retry (plan the command again), --edit FILE, "
-                            "--reject (abort), or interactively (retry / edit / abort)",
+                            "answer it with --retry (plan the command again), --recover SKILL, "
+                            "--edit FILE, --reject (abort), or interactively",
                             field=answers[0],
                         )
                     if kind == "edit_review":

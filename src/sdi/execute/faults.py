@@ -1,8 +1,12 @@
-"""Failure injection: blocked regions that make steps fail as in the paper's Table V.
+"""Failure injection: blocked regions that make steps fail as in the paper's Table V, and a
+drift that makes the executed joints leave the plan.
 
 A scenario is a set of regions of the cell and the error a step reports when its target part
 (or the path to it) lies in one: the Operator then emits a failure event for the orchestrator
-to recover from (shift, flatten, redesign or a human).
+to recover from (shift, flatten, redesign or a human). `SCENARIOS` are Table V's. An execution
+fault (`EXECUTION_FAULTS`) blocks nothing: from `drift_after_s` into the motion the sim driver
+drives the first joint of every arm `drift_rad` off Q_plan, so Q_exec deviates and the
+streaming monitor's δ breaches ε. `FAULTS` is every named fault a run may be started with.
 """
 
 from __future__ import annotations
@@ -23,6 +27,8 @@ class FaultScenario:
     regions: tuple[Region, ...]
     error_type: ErrorType
     description: str
+    drift_rad: float = 0.0  # joint 1 of every arm driven this far off Q_plan, rad ...
+    drift_after_s: float = 0.0  # ... from this long after the motion starts, s
 
     def check(self, step: PickPlace) -> FailureEvent | None:
         T = step.T_world_part_target
@@ -84,3 +90,15 @@ SCENARIOS: dict[str, FaultScenario] = {
         ),
     )
 }
+
+
+EXECUTION_FAULTS: dict[str, FaultScenario] = {
+    "joint_drift": FaultScenario(
+        "joint_drift", (), "deviation",
+        "joint 1 of every arm drifts 0.2 rad off the plan 3 s into the motion: δ breaches ε",
+        drift_rad=0.2, drift_after_s=3.0,
+    ),
+}  # fmt: skip
+
+FAULTS: dict[str, FaultScenario] = {**SCENARIOS, **EXECUTION_FAULTS}
+"""Every named fault: Table V's blocked regions and the execution faults."""

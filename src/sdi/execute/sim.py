@@ -8,7 +8,8 @@
   the parallel gripper only if the part sits between the pads. A held part is fixed to the TCP
   by a constraint at its actual relative pose, so tracking errors carry through to placement.
 - Every Q_exec sample goes to the streaming monitor; execution pauses at the first breach.
-- Failure injection: a step whose target lies in a blocked region fails before it moves.
+- Failure injection: a step whose target lies in a blocked region fails before it moves; a
+  drift fault drives joint 1 of every arm off Q_plan (the monitor then stops the execution).
 - Progress: `progress` is told when motion starts (``kind: motion_started``), of every part
   set down (``kind: step_done``: step, part, robot, its pose then) and, once a simulated
   second, of Q_exec and δ so far (``kind: samples``), so
@@ -267,8 +268,9 @@ class SimDriver:
                         })  # fmt: skip
             if failure is not None:
                 break
+            drift = sum(f.drift_rad for f in self.faults if t - t0 >= f.drift_after_s)
             for name, (body, joints, _) in bodies.items():
-                self._control(c, body, joints, motion.trajectories[name], t)
+                self._control(c, body, joints, motion.trajectories[name], t, drift)
             pb.stepSimulation(physicsClientId=c)
             breach = None
             for name, (body, joints, _) in bodies.items():
@@ -310,6 +312,8 @@ class SimDriver:
                     break
             if breach is not None:
                 status = "paused"
+                if drift:
+                    scenario_name = next(f.name for f in self.faults if f.drift_rad)
                 step_now = max(
                     (m for m in motion.steps if m.start <= t), key=lambda m: m.start, default=None
                 )
@@ -378,7 +382,10 @@ class SimDriver:
         for name, rows in recorded.items():
             every = max(1, round(self.robots[name].controller_rate_hz / SAMPLE_BATCH_HZ))
             new = rows[sent[name] :]
-            q[name] = [[round(t, 4), *(round(float(v), 6) for v in qq)] for t, qq in new[::every]]
+            kept = new[::every]
+            if new and (len(new) - 1) % every:  # the batch ends on its last sample (a breach
+                kept.append(new[-1])  # stops execution there: the page must see it)
+            q[name] = [[round(t, 4), *(round(float(v), 6) for v in qq)] for t, qq in kept]
             sent[name] = len(rows)
         if not any(q.values()):
             return
@@ -386,11 +393,15 @@ class SimDriver:
         progress({"kind": "samples", "q": q,
                   "delta_max_rad": None if delta is None else round(float(delta), 6)})  # fmt: skip
 
-    def _control(self, c: int, body: int, joints: list[int], tr: JointTrajectory, t: float) -> None:
-        """Joint position control with velocity feed-forward from Q_plan."""
-        target = tr.at(np.array([t]))[0]
+    def _control(
+        self, c: int, body: int, joints: list[int], tr: JointTrajectory, t: float, drift: float
+    ) -> None:
+        """Joint position control with velocity feed-forward from Q_plan; `drift` (rad, an
+        injected fault) is added to joint 1's target."""
+        target = tr.at(np.array([t]))[0].copy()
         ahead = tr.at(np.array([t + 1.0 / tr.rate_hz]))[0]
         velocity = (ahead - target) * tr.rate_hz  # feed-forward, rad/s
+        target[0] += drift
         n = len(joints)
         pb.setJointMotorControlArray(
             body, joints, pb.POSITION_CONTROL, targetPositions=target.tolist(),

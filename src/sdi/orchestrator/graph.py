@@ -61,7 +61,7 @@ from sdi.errors import (
     SpecError,
     UnverifiedPlanError,
 )
-from sdi.execute.faults import SCENARIOS
+from sdi.execute.faults import FAULTS, SCENARIOS
 from sdi.execute.job import VerifiedJob
 from sdi.execute.record import CommissioningRecord, RecordError, cell_hash, layout_hash
 from sdi.inspector.verifier import verify
@@ -141,6 +141,10 @@ class RunState(TypedDict, total=False):
     edit: dict[str, Any] | None  # the operator's edit being checked, or refused by the
     # Inspector with its repair (`status` checking | invalid); see `EDIT_CHOICES`
     edit_outcome: dict[str, Any] | None  # what became of the last edit, and the diff from it
+    revisions: list[str]  # the operator's reasons for rejecting designs, oldest first: read
+    # after the command as clauses that change it (and, with a model, the Designer's feedback)
+    rejected: dict[str, Any] | None  # the design last rejected ("layout", "reason"), until the
+    # next design review says what the replan changed
 
 
 class Jobs:
@@ -333,22 +337,57 @@ def plan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     command = state["command"]
     raw = ctx.model is not None and (not ctx.method.specifier or state.get("relaxed"))
     if raw:  # raw command to the Designer (no Specifier, or Specifier relaxation)
-        say(state, ctx, "orchestrator", "designer", "command",
-            {"command": command, "relaxed": bool(state.get("relaxed"))})  # fmt: skip
+        told = {"command": designer_command(state), "relaxed": bool(state.get("relaxed"))}
+        say(state, ctx, "orchestrator", "designer", "command", told)
         return {"spec": None, "spec_source": "raw command", "phase": "design"}
+    specifier = Specifier(ctx.model if ctx.method.specifier else None, ctx.cell)
+    revisions = list(state.get("revisions") or [])
+    notes: list[str] = []
     try:
-        result = Specifier(ctx.model if ctx.method.specifier else None, ctx.cell).specify(command)
+        try:
+            result = specifier.specify(revised_command(command, revisions))
+        except SpecError as exc:
+            if not revisions:
+                raise
+            # the operator's latest reason is not a change the reader can make: say so, and
+            # plan without it (the design review then shows what came back)
+            notes.append(f"your reason {revisions[-1]!r} could not be read as a change to the "
+                         f"command ({exc}); planned without it")  # fmt: skip
+            revisions.pop()
+            result = specifier.specify(revised_command(command, revisions))
     except SpecError as exc:
         say(state, ctx, "orchestrator", "human", "error", {"error": str(exc)})
         return {"status": "failure", "phase": "end", "notes": [str(exc)], "spec": None}
     spec = result.spec.model_dump(mode="json", exclude_none=True)
     say(state, ctx, "specifier", "designer", "spec", {"spec": spec, "source": result.source})
-    return {
+    update: dict[str, Any] = {
         "spec": result.spec.model_dump(mode="json"),
         "spec_source": result.source,
         "ignored": list(result.reading.ignored) if result.reading is not None else [],
         "phase": "design",
     }
+    if notes:
+        say(state, ctx, "orchestrator", "human", "revision_unread", {"note": notes[0]})
+        update["notes"] = [*state.get("notes", []), *notes]
+        update["revisions"] = revisions
+    return update
+
+
+def revised_command(command: str, revisions: Sequence[str]) -> str:
+    """The command with the operator's rejection reasons after it, each a clause of its own
+    ("a row of 3 cubes" + "make it 4 high" → "a row of 3 cubes. make it 4 high"): the language
+    front end reads a clause that changes an earlier structure as that change."""
+    text = command.strip()
+    for reason in revisions:
+        text = f"{text.rstrip(' .')}. {reason.strip()}"
+    return text
+
+
+def designer_command(state: RunState) -> str:
+    """What the Designer is told: the command, and each design the operator rejected with
+    their reason (feedback for a model; the parametric designer works from the spec)."""
+    feedback = [f"\nThe operator rejected a design: {r}" for r in state.get("revisions") or []]
+    return state["command"] + "".join(feedback)
 
 
 # -- DESIGN -----------------------------------------------------------------------------------
@@ -356,7 +395,7 @@ def design_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
     _crash_hook("design")
     spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
-    outcome: DesignOutcome = _designer(ctx).design(spec, state["command"])
+    outcome: DesignOutcome = _designer(ctx).design(spec, designer_command(state))
     parts = len(outcome.layout) if outcome.layout else 0
     message = {"status": outcome.status, "parts": parts, "notes": outcome.notes}
     say(state, ctx, "designer", "inspector", "layout", message)
@@ -525,6 +564,33 @@ def _edit_review(state: RunState, ctx: RunContext, pending: dict[str, Any]) -> d
             "phase": "modify" if action == "replan" else "inspect"}  # fmt: skip
 
 
+REVIEW_CHOICES = ("approve", "edit", "reject", "abort")
+"""The answers at a design review: approve; edit (C ⊕ I_h, re-inspected); reject with a reason
+(the orchestrator replans: the reason is read after the command as a clause that changes it,
+and a model Designer is told it); abort (the run ends, status ``rejected``). A reject without a
+reason has nothing to replan from: it ends the run, as abort does (the CLI's ``--reject``)."""
+
+
+def _replanned_note(state: RunState, cell: CellConfig) -> str | None:
+    """What the replan after a rejection changed, for the next design review to say: never the
+    same layout shown again as if it were new."""
+    rejected = state.get("rejected")
+    current = _layout(state, cell)
+    if not rejected or current is None or not rejected.get("layout"):
+        return None
+    before, _ = parse_layout(rejected["layout"], max_parts=cell.limits.max_parts)
+    reason = rejected.get("reason", "")
+    if layout_hash(before) == layout_hash(current):
+        unused = state.get("ignored") or []
+        why = f" (words not used: {', '.join(unused)})" if unused else ""
+        return (f"replanned after your rejection ({reason!r}): the same layout came back — "
+                f"the reason was not read as a change{why}")  # fmt: skip
+    from sdi.model.diff import describe_diff
+
+    changes = describe_diff(layout_diff(before, current))
+    return f"replanned after your rejection ({reason!r}): {changes}"
+
+
 def review_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
     pending_edit = state.get("edit")
@@ -541,6 +607,10 @@ def review_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         outcome = {"choice": outcome.get("choice"), "changes": changes}
         update["edit_outcome"] = outcome
         update["notes"] = [*state.get("notes", []), _outcome_notes("replan", changes)]
+    replanned = _replanned_note(state, ctx.cell)
+    if replanned is not None:
+        update["notes"] = [*update.get("notes", state.get("notes", [])), replanned]
+        update["rejected"] = None
     pending = state.get("pending_approval")
     if state.get("approve") and not pending:
         decision: Any = {"action": "approve", "by": "--approve-all"}
@@ -550,11 +620,14 @@ def review_node(state: RunState, runtime: Rt) -> dict[str, Any]:
             "layout": state.get("layout"),
             "sequence": state.get("sequence"),
             "refused": state.get("review_note"),
+            "choices": list(REVIEW_CHOICES),
         }
         if pending:
             request["recovery"] = pending
         if outcome:
             request["edit_outcome"] = outcome
+        if replanned is not None:
+            request["replanned"] = replanned
         decision = interrupt(request)
     say(state, ctx, "human", "orchestrator", "review", decision)
     action = decision.get("action") if isinstance(decision, dict) else None
@@ -566,6 +639,14 @@ def review_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         started = _start_edit(state, ctx, layout, decision.get("edits", []), None)
         return {**update, "pending_approval": None, **started,
                 "phase": started.get("phase", "review")}  # fmt: skip
+    reason = decision.get("reason") if isinstance(decision, dict) else None
+    if action == "reject" and isinstance(reason, str) and reason.strip():
+        reason = " ".join(reason.split())[:500]
+        say(state, ctx, "orchestrator", "specifier", "revision", {"reason": reason})
+        return {**update, "revisions": [*(state.get("revisions") or []), reason],
+                "rejected": {"reason": reason, "layout": state.get("layout")},
+                "pending_approval": None, "review_note": None, "operator_sequence": None,
+                "edit_outcome": None, "phase": "plan"}  # fmt: skip
     return {**update, "status": "rejected", "phase": "end"}
 
 
@@ -662,7 +743,7 @@ def execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         if crash_after and event.get("completed") == crash_after:
             os._exit(137)  # fault injection for the kill-during-execution test
 
-    faults = tuple(SCENARIOS[f] for f in state.get("faults", []))
+    faults = tuple(FAULTS[f] for f in state.get("faults", []))
     try:
         result, report = run(planned, faults=faults, placed=placed, progress=progress)
     except UnverifiedPlanError as exc:
@@ -677,6 +758,8 @@ def execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     event = raw if isinstance(raw, dict) else None
     scenario = getattr(result, "scenario", None)
     failure = failure_of(event, "execute", scenario=scenario)
+    if report["status"] == "paused":  # δ breached ε: the robots stopped; a person decides
+        return {**update, "failure": failure, "phase": "failure_report"}
     return {**update, "failure": failure, "phase": "replan"}
 
 
@@ -742,7 +825,7 @@ def _avoid(state: RunState, cell: CellConfig) -> list[dict[str, Any]]:
 def _blocked(state: RunState, avoid: list[dict[str, Any]]) -> tuple[Region, ...]:
     """Every region the run must keep out of: each injected fault's (they stay while the run
     recovers, whichever one failed last) and the places learned to avoid."""
-    regions = [r for name in state.get("faults", []) for r in SCENARIOS[name].regions]
+    regions = [r for name in state.get("faults", []) for r in FAULTS[name].regions]
     return (*regions, *(Region.model_validate(r) for r in avoid))
 
 
@@ -806,20 +889,72 @@ def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "failure": None}
 
 
+FAILURE_CHOICES = ("recover", "retry", "edit", "abort")
+"""The answers to a failure report: run one of the recovery skills the orchestrator would try
+(``{"action": "recover", "skill": …}``), plan the command again (retry), edit the failed layout
+(``{"action": "edit", "edits": […]}``), or abort."""
+
+SKILLS = {
+    "shift": "move the layout clear of the blocked regions (same shape)",
+    "flatten": "lower the structure under the height limit (changes the shape)",
+    "modify": "the Designer redesigns from the failed layout",
+}
+"""The recovery skills an operator may pick at a failure report, as REPLAN names them."""
+
+
+def recovery_skills(state: RunState, method: Method) -> list[str]:
+    """The recovery skills the orchestrator would try for this failure, in its order: shift and
+    flatten (with the method's recovery skills and a layout to recover), then the Designer."""
+    skills: list[str] = []
+    if method.recovery and state.get("layout"):
+        scenario = SCENARIOS.get((state.get("failure") or {}).get("scenario") or "")
+        height = scenario is not None and any(r.z_min is not None for r in scenario.regions)
+        skills += ["flatten", "shift"] if height else ["shift", "flatten"]
+    return [*skills, "modify"]
+
+
+def _recover_chosen(state: RunState, ctx: RunContext, skill: Any) -> dict[str, Any]:
+    """The operator's pick of a recovery skill: run shift or flatten here (to INSPECT), or hand
+    the failed layout to the Designer (MODIFY). The replan budget starts again, as on retry."""
+    offered = recovery_skills(state, ctx.method)
+    if skill not in offered:
+        note = f"no recovery skill {skill!r} here; choose one of {', '.join(offered)}"
+        return {"review_note": note, "phase": "failure_report"}
+    budget = {"replans": 0, "tried": [skill], "review_note": None}
+    if skill == "modify":
+        return {**budget, "phase": "modify"}
+    layout = _layout(state, ctx.cell)
+    assert layout is not None  # `recovery_skills` offers shift and flatten only with a layout
+    spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
+    avoid = _avoid(state, ctx.cell)
+    try:
+        repaired, recovery = recover(skill, layout, ctx.cell, _blocked(state, avoid), spec)
+    except InfeasibleError as exc:
+        return {"review_note": f"{skill}: {exc}", "phase": "failure_report", "avoid": avoid}
+    return {**budget, **_recovered(state, ctx, layout, repaired, recovery), "avoid": avoid,
+            "phase": "inspect"}  # fmt: skip
+
+
 def failure_report_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
     if state.get("approve") or state.get("design_only"):
         return {"status": "failure", "phase": "end"}
+    skills = recovery_skills(state, ctx.method)
     decision = interrupt(
         {
             "kind": "failure_report",
             "failure": state.get("failure"),
             "violations": state.get("violations", [])[:10],
             "refused": state.get("review_note"),
+            "layout": state.get("layout"),
+            "choices": list(FAILURE_CHOICES),
+            "skills": [{"name": k, "does": SKILLS[k]} for k in skills],
         }
     )
     say(state, ctx, "human", "orchestrator", "failure_decision", decision)
     action = decision.get("action") if isinstance(decision, dict) else None
+    if action == "recover":
+        return _recover_chosen(state, ctx, decision.get("skill"))
     if action == "edit":
         layout = _layout(state, ctx.cell)
         if layout is not None:
@@ -859,13 +994,13 @@ passes an empty design on to REPLAN and a timed-out one to the failure report.""
 ROUTES: dict[str, tuple[str, ...]] = {
     "plan": ("design", "end"),
     "inspect": ("review", "replan"),
-    "review": ("pre_execute", "inspect", "modify", "review", "end"),
+    "review": ("pre_execute", "inspect", "modify", "review", "plan", "end"),
     "pre_execute": ("confirm", "replan"),
     "confirm": ("execute", "review", "end"),
     "execute": ("replan", "end"),
     "replan": ("inspect", "modify", "plan", "replan", "failure_report", "end"),
     "modify": ("inspect", "replan"),
-    "failure_report": ("inspect", "plan", "failure_report", "end"),
+    "failure_report": ("inspect", "modify", "plan", "failure_report", "end"),
 }
 """Each node's possible next phases; a timed node may also go to the failure report."""
 

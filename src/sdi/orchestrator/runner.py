@@ -43,6 +43,9 @@ __all__ = ["Orchestrator", "RunInfo", "RunStatus", "default_db"]
 REVIEWS = ("design_review", "pre_execute", "resume_execution")
 """Interrupts that `--approve-all` answers; a failure report always needs a person."""
 
+SHOWN = ("design_review", "recovery_review", "edit_review", "failure_report")
+"""Interrupts that show a layout: the `stopped` event carries it (replays read it there)."""
+
 
 @dataclass
 class RunStatus:
@@ -164,7 +167,7 @@ class Orchestrator:
         writes (a crafted or damaged database) is refused naming the file."""
         from pydantic import ValidationError
 
-        from sdi.execute.faults import SCENARIOS
+        from sdi.execute.faults import FAULTS
 
         def bad(what: str) -> InputError:
             return InputError(f"{self.db}: run {values.get('run_id')} holds {what}", field="--db")
@@ -173,7 +176,7 @@ class Orchestrator:
         if method not in METHODS:
             raise bad(f"an unknown method {method!r}")
         faults = values.get("faults") or []
-        if not isinstance(faults, list) or not all(f in SCENARIOS for f in faults):
+        if not isinstance(faults, list) or not all(f in FAULTS for f in faults):
             raise bad(f"unknown fault scenarios {faults!r}")
         arms = values.get("arms")
         if arms is not None and not (
@@ -217,6 +220,14 @@ class Orchestrator:
         stopped = {"status": status.status, "waiting_for": waiting.get("kind")}
         if waiting.get("record_hash"):
             stopped["record_hash"] = waiting["record_hash"]
+        if waiting.get("kind") in SHOWN and waiting.get("layout"):
+            # the layout the person is shown, so a replay of the events alone steps through
+            # the design versions (and what each review said of it)
+            stopped["layout"] = waiting["layout"]
+            stopped["sequence"] = waiting.get("sequence")
+            for key in ("replanned", "recovery", "refused", "violations"):
+                if waiting.get(key):
+                    stopped[key] = waiting[key]
         self.bus.send(run_id, "orchestrator", "human", "stopped", stopped)
         return status
 
@@ -330,10 +341,15 @@ class Orchestrator:
         return self._invoke(run_id, values, None)
 
     def record(self, run_id: str) -> CommissioningRecord:
-        """The run's commissioning record — the approved one, else the one awaiting approval —
-        checked against its hash (for exporters, the twin, audits)."""
+        """The run's current commissioning record, checked against its hash (for exporters, the
+        twin, audits): the one awaiting approval when the run waits on one (after a recovery,
+        that is newer than the one approved before), else the one approved, else the last
+        one planned."""
         values = self._values(run_id)
-        record_hash = values.get("approved_hash") or values.get("record_hash")
+        waiting = self._status(run_id).waiting_for or {}
+        pending = waiting.get("record_hash") if waiting.get("kind") in (
+            "pre_execute", "resume_execution") else None  # fmt: skip
+        record_hash = pending or values.get("approved_hash") or values.get("record_hash")
         if not record_hash:
             raise InputError(f"run {run_id} has no commissioning record yet", field="RUN_ID")
         return self.records.get(run_id, str(record_hash))

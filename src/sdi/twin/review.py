@@ -34,6 +34,17 @@ def yaw_deg(orientation: tuple[float, float, float, float]) -> float:
     return math.degrees(2.0 * math.atan2(z, w))
 
 
+def page_parts(layout: dict[str, Any] | None) -> list[dict[str, Any]] | None:
+    """A layout (its JSON form) as the page draws it: id, centre (m), size (m), yaw (°)."""
+    if not layout:
+        return None
+    return [
+        {"id": p["id"], "position": p["position"], "size": p["size"],
+         "yaw_deg": round(yaw_deg(tuple(p.get("orientation", (1, 0, 0, 0)))), 3)}
+        for p in layout["objects"]
+    ]  # fmt: skip
+
+
 def snap(position: list[float], size: tuple[float, float, float], cell: CellConfig) -> list[float]:
     """The nearest grid position: x, y on half a cube; z on a resting level of the part."""
     grid = cell.cube[0] / 2

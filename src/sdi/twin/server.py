@@ -6,10 +6,14 @@ database that the CLI shares, and be driven by end-to-end tests through the page
 
 - ``GET /`` the page; ``/static`` its script and style; ``/vendor/three`` three.js (from npm).
 - ``GET /api/scene`` the fixed scene; ``GET/POST /api/runs`` list runs / start one.
-- ``GET /api/runs/{id}`` the run's view; ``/timeline`` its commissioning record for the
-  preview; ``/events?after=N`` its event stream.
-- ``POST /api/runs/{id}/lock|edit|accept|reject|confirm|edit-review|failure`` the touch
+- ``GET /api/runs/{id}`` the run's view; ``/timeline?record=HASH`` its commissioning record
+  for the preview (default: the current one); ``/events?after=N`` its event stream;
+  ``/replay`` the run told again from its events (`sdi.twin.replay`).
+- ``POST /api/runs/{id}/lock|edit|accept|reject|abort|confirm|edit-review|failure`` the touch
   points.
+
+Every handler that reads or writes the run database does it in a worker thread, never on the
+event loop.
 - ``WS /ws/runs/{id}`` new events as they are stored (samples of Q_exec at 10 Hz, never whole
   trajectories); the page answers with heartbeats that keep its edit lock.
 
@@ -145,15 +149,19 @@ def create_app(twin: Twin, *, token: str | None = None) -> FastAPI:
         faults = data.get("faults") or []
         if not (isinstance(faults, list) and all(isinstance(f, str) for f in faults)):
             raise InputError("must be a list of fault scenario names", field="faults")
-        return {"run_id": twin.start(text(data, "command"), faults)}
+        return {"run_id": await asyncio.to_thread(twin.start, text(data, "command"), faults)}
 
     @app.get("/api/runs/{run_id}")
     async def get_run(run_id: str) -> dict[str, Any]:
         return await asyncio.to_thread(twin.view, run_id)
 
     @app.get("/api/runs/{run_id}/timeline")
-    async def get_timeline(run_id: str) -> dict[str, Any]:
-        return await asyncio.to_thread(twin.timeline, run_id)
+    async def get_timeline(run_id: str, record: str | None = None) -> dict[str, Any]:
+        return await asyncio.to_thread(twin.timeline, run_id, record)
+
+    @app.get("/api/runs/{run_id}/replay")
+    async def get_replay(run_id: str) -> dict[str, Any]:
+        return await asyncio.to_thread(twin.replay, run_id)
 
     @app.get("/api/runs/{run_id}/events")
     async def get_events(run_id: str, after: int = 0) -> list[dict[str, Any]]:
@@ -184,7 +192,13 @@ def create_app(twin: Twin, *, token: str | None = None) -> FastAPI:
     @app.post("/api/runs/{run_id}/reject")
     async def reject(run_id: str, request: Request) -> dict[str, Any]:
         data = await body(request)
-        twin.reject(run_id, text(data, "tab"), text(data, "reason"))
+        await asyncio.to_thread(twin.reject, run_id, text(data, "tab"), text(data, "reason"))
+        return {"ok": True}
+
+    @app.post("/api/runs/{run_id}/abort")
+    async def abort(run_id: str, request: Request) -> dict[str, Any]:
+        data = await body(request)
+        await asyncio.to_thread(twin.abort, run_id, text(data, "tab"))
         return {"ok": True}
 
     @app.post("/api/runs/{run_id}/confirm")
@@ -200,13 +214,17 @@ def create_app(twin: Twin, *, token: str | None = None) -> FastAPI:
     @app.post("/api/runs/{run_id}/edit-review")
     async def edit_review(run_id: str, request: Request) -> dict[str, Any]:
         data = await body(request)
-        twin.resolve_edit(run_id, text(data, "tab"), text(data, "action"))
+        await asyncio.to_thread(twin.resolve_edit, run_id, text(data, "tab"), text(data, "action"))
         return {"ok": True}
 
     @app.post("/api/runs/{run_id}/failure")
     async def failure(run_id: str, request: Request) -> dict[str, Any]:
         data = await body(request)
-        twin.failure_decision(run_id, text(data, "tab"), text(data, "action"))
+        skill = data.get("skill")
+        await asyncio.to_thread(
+            twin.failure_decision, run_id, text(data, "tab"), text(data, "action"),
+            skill if isinstance(skill, str) else None,
+        )  # fmt: skip
         return {"ok": True}
 
     @app.websocket("/ws/runs/{run_id}")

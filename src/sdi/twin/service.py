@@ -27,7 +27,8 @@ from sdi.model.layout import Layout
 from sdi.orchestrator.bus import MessageBus
 from sdi.orchestrator.rundb import connect, prepare
 from sdi.orchestrator.runner import Orchestrator, RunStatus
-from sdi.twin.review import ReviewSession, yaw_deg
+from sdi.twin.replay import replay
+from sdi.twin.review import ReviewSession, page_parts
 
 LOCK_SECONDS = 20.0
 """A tab that has not been heard from for this long loses the edit lock, s."""
@@ -42,6 +43,10 @@ CREATE TABLE IF NOT EXISTS twin_reviews (
 REVIEWED = ("design_review", "recovery_review")
 """Pauses that show a layout the operator may edit and accept (a recovery that changed the
 shape comes back as `recovery_review`, with what it changed)."""
+
+EDITABLE = (*REVIEWED, "failure_report")
+"""Pauses whose layout the page's editor opens: at a failure report, the failed layout (what
+the operator sends is an edit; the run inspects it and comes back to design review)."""
 
 
 class LockedError(InputError):
@@ -115,14 +120,14 @@ class Twin:
     # -- runs -------------------------------------------------------------------------------------
     def start(self, command: str, faults: list[str] | None = None) -> str:
         """Start a run of `command` (with injected `faults`, for demonstrations and tests)."""
-        from sdi.execute.faults import SCENARIOS
+        from sdi.execute.faults import FAULTS
 
         command = command.strip()
         if not command:
             raise InputError("type a command first", field="command")
-        unknown = [f for f in faults or [] if f not in SCENARIOS]
+        unknown = [f for f in faults or [] if f not in FAULTS]
         if unknown:
-            raise InputError(f"unknown fault scenarios {unknown}; choose from {sorted(SCENARIOS)}",
+            raise InputError(f"unknown fault scenarios {unknown}; choose from {sorted(FAULTS)}",
                              field="faults")  # fmt: skip
         run_id = Orchestrator.new_run_id()
         self.bus.send(run_id, "twin", "orchestrator", "twin_command", {"command": command})
@@ -153,10 +158,11 @@ class Twin:
         return CellConfig.model_validate(raw) if raw else CellConfig()
 
     def session(self, run_id: str, status: RunStatus | None = None) -> ReviewSession | None:
-        """The review session of a run waiting at design review (made or reloaded on demand)."""
+        """The review session of a run waiting at design review or a failure report (made or
+        reloaded on demand)."""
         status = status or self._status(run_id)
         waiting = status.waiting_for or {}
-        if waiting.get("kind") not in REVIEWED or not waiting.get("layout"):
+        if waiting.get("kind") not in EDITABLE or not waiting.get("layout"):
             return None
         base = Layout.model_validate(waiting["layout"])
         base_hash = layout_hash(base)
@@ -178,6 +184,13 @@ class Twin:
             "INSERT OR REPLACE INTO twin_reviews VALUES (?, ?, ?, ?)",
             (run_id, s.base_hash, json.dumps(s.steps), json.dumps(s.undone)),
         )
+
+    def _forget(self, run_id: str) -> None:
+        """Drop the run's review session: its edits belong to a design the operator turned
+        down (a replan that brings the same layout back starts without them)."""
+        with self._lock:
+            self.sessions.pop(run_id, None)
+            self._conn.execute("DELETE FROM twin_reviews WHERE run_id = ?", (run_id,))
 
     # -- the edit lock ----------------------------------------------------------------------------
     def lock(self, run_id: str, tab: str) -> Lock:
@@ -223,6 +236,9 @@ class Twin:
             raise InputError(f"run {run_id} is not waiting at design review", field="run")
         return s
 
+    def _kind(self, run_id: str) -> str | None:
+        return (self._status(run_id).waiting_for or {}).get("kind")
+
     def resolve_edit(self, run_id: str, tab: str, action: str) -> None:
         """Answer an edit the run's Inspector refused (made outside the twin, e.g. by
         `sdi resume --edit`): take the minimal repair, undo it, replan, or reject."""
@@ -265,6 +281,12 @@ class Twin:
             raise InputError("the layout changed since the page showed it; look again",
                              field="layout_hash")  # fmt: skip
         edits = s.edits
+        if self._kind(run_id) == "failure_report":  # the failed layout, edited: the run
+            if not edits:  # inspects it and comes back to design review
+                raise InputError("edit the failed layout first (or retry, or abort)", field="edits")
+            decision = {"action": "edit", "edits": edits, "by": "twin"}
+            self._work(run_id, "edit-failed", lambda o: o.resume(run_id, decision))
+            return
 
         def run(o: Orchestrator) -> None:
             status = o.status(run_id)
@@ -282,9 +304,26 @@ class Twin:
         self._work(run_id, "accept", run)
 
     def reject(self, run_id: str, tab: str, reason: str) -> None:
+        """Reject the design with a reason: the orchestrator replans with it (the next design
+        review says what changed, or that nothing did)."""
         self._review(run_id, tab)
-        decision = {"action": "reject", "reason": reason.strip()[:500], "by": "twin"}
+        if self._kind(run_id) not in REVIEWED:
+            raise InputError(f"run {run_id} is not waiting at design review", field="run")
+        reason = " ".join(reason.split())[:500]
+        if not reason:
+            raise InputError("say why, so the orchestrator can replan (or abort the run)",
+                             field="reason")  # fmt: skip
+        decision = {"action": "reject", "reason": reason, "by": "twin"}
+        self._forget(run_id)
         self._work(run_id, "reject", lambda o: o.resume(run_id, decision))
+
+    def abort(self, run_id: str, tab: str) -> None:
+        """End the run at design review (nothing moves)."""
+        self._review(run_id, tab)
+        if self._kind(run_id) not in REVIEWED:
+            raise InputError(f"run {run_id} is not waiting at design review", field="run")
+        decision = {"action": "abort", "by": "twin"}
+        self._work(run_id, "abort", lambda o: o.resume(run_id, decision))
 
     # -- touch point 2: the commissioning record ---------------------------------------------------
     def confirm(self, run_id: str, tab: str, action: str, record_hash: str | None) -> None:
@@ -305,14 +344,26 @@ class Twin:
         self._work(run_id, f"confirm-{action}", lambda o: o.resume(run_id, decision))
 
     # -- touch point 3: failure report ------------------------------------------------------------
-    def failure_decision(self, run_id: str, tab: str, action: str) -> None:
+    def failure_decision(
+        self, run_id: str, tab: str, action: str, skill: str | None = None
+    ) -> None:
+        """Answer a failure report: a recovery skill the report offers, retry (plan again) or
+        abort; the human edit goes through the editor (`edit`, then `accept`)."""
         self.lock(run_id, tab)
         status = self._status(run_id)
-        if (status.waiting_for or {}).get("kind") != "failure_report":
+        waiting = status.waiting_for or {}
+        if waiting.get("kind") != "failure_report":
             raise InputError(f"run {run_id} has no failure report open", field="run")
-        if action not in ("retry", "abort"):
-            raise InputError("use retry or abort", field="action")
-        decision = {"action": action, "by": "twin"}
+        decision: dict[str, Any] = {"action": action, "by": "twin"}
+        if action == "recover":
+            offered = [k["name"] for k in waiting.get("skills") or []]
+            if skill not in offered:
+                raise InputError(f"choose one of the skills offered: {', '.join(offered)}",
+                                 field="skill")  # fmt: skip
+            decision["skill"] = skill
+        elif action not in ("retry", "abort"):
+            raise InputError("use recover, retry or abort (or edit the layout)", field="action")
+        self._forget(run_id)
         self._work(run_id, f"failure-{action}", lambda o: o.resume(run_id, decision))
 
     # -- views ------------------------------------------------------------------------------------
@@ -332,10 +383,10 @@ class Twin:
         waiting = dict(status.waiting_for or {})
         session = self.session(run_id, status)
         layout = None
-        if session is None and state.get("layout"):
-            layout = _parts(state["layout"])
+        if state.get("layout") and (session is None or waiting.get("kind") not in REVIEWED):
+            layout = page_parts(state["layout"])
         if waiting.get("kind") == "edit_review" and session is None:
-            layout = _parts(waiting.get("layout"))
+            layout = page_parts(waiting.get("layout"))
         waiting.pop("layout", None)
         return {
             "run_id": run_id,
@@ -358,19 +409,23 @@ class Twin:
             "notes": state.get("notes") or [],
         }
 
-    def timeline(self, run_id: str, rate_hz: float = 20.0) -> dict[str, Any]:
+    def timeline(
+        self, run_id: str, record_hash: str | None = None, rate_hz: float = 20.0
+    ) -> dict[str, Any]:
         """The commissioning record as the page plays it: each arm's Q_plan thinned to
         `rate_hz`, when each part is gripped and released, the schedule and the makespan. The
-        record is the one awaiting approval, if any, else the last one approved."""
-        status = self._status(run_id)
-        waiting = status.waiting_for or {}
-        if waiting.get("kind") in ("pre_execute", "resume_execution"):
-            wanted = waiting.get("record_hash")
-        else:
-            wanted = status.state.get("approved_hash") or status.state.get("record_hash")
-        if not wanted:
-            raise InputError(f"run {run_id} has no commissioning record yet", field="run")
-        record = self._orch.records.get(run_id, str(wanted))
+        record is `record_hash`, else the run's current one (`Orchestrator.record`: the one
+        awaiting approval, else the one approved)."""
+        from sdi.execute.record import RecordError
+
+        try:
+            with self._lock:
+                if record_hash is None:
+                    record = self._orch.record(run_id)
+                else:  # a record an event names (a replay)
+                    record = self._orch.records.get(run_id, record_hash)
+        except RecordError as exc:
+            raise InputError(str(exc), field="record") from None
         body = record.body
         robots: dict[str, Any] = {}
         for name, tr in body["motion"]["trajectories"].items():
@@ -397,15 +452,12 @@ class Twin:
     def events(self, run_id: str, after: int = 0) -> list[dict[str, Any]]:
         return [m.to_json_dict() for m in self.bus.history(run_id, after=after)]
 
-
-def _parts(layout: dict[str, Any] | None) -> list[dict[str, Any]] | None:
-    if not layout:
-        return None
-    return [
-        {"id": p["id"], "position": p["position"], "size": p["size"],
-         "yaw_deg": round(yaw_deg(tuple(p.get("orientation", (1, 0, 0, 0)))), 3)}
-        for p in layout["objects"]
-    ]  # fmt: skip
+    def replay(self, run_id: str) -> dict[str, Any]:
+        """The run told again from its event stream alone (`sdi.twin.replay`)."""
+        history = self.events(run_id)
+        if not history:
+            raise InputError(f"no run {run_id!r} in {self.db}", field="RUN_ID")
+        return replay(history)
 
 
 def reading(state: dict[str, Any]) -> dict[str, Any] | None:

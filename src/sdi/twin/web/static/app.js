@@ -187,7 +187,8 @@ function drawLabels(list, states) {
   labels = [];
   T.labels = {};
   const broken = {};
-  for (const v of (T.view?.review && !T.view.busy ? T.view.review.violations : [])) {
+  const shown = T.replay ? T.replay.design?.violations || [] : reviewing(T.view) ? T.view.review.violations : [];
+  for (const v of shown) {
     for (const id of v.objects) (broken[id] = broken[id] || new Set()).add(v.constraint);
   }
   const order = (T.view && (T.view.review?.sequence || T.view.sequence)) || T.partIds;
@@ -229,6 +230,11 @@ async function api(path, body) {
   return data;
 }
 
+// A button's action: a refused request is shown by `api` (the error line), not thrown further.
+const safe = (fn) => async (...args) => {
+  try { await fn(...args); } catch (e) { if (!T.lastError) showError(String(e)); }
+};
+
 function showError(text) {
   $("error").hidden = !text;
   $("error").textContent = text || "";
@@ -251,7 +257,8 @@ async function openRun(runId) {
   if (T.ws) T.ws.close();
   T.runId = runId;
   T.timeline = null; T.placed = {}; T.deltaPoints = []; T.samples = {}; T.selected = null;
-  T.execClock = 0; T.lastSeq = 0; T.replaying = false;
+  T.execClock = 0; T.lastSeq = 0; T.replaying = false; T.replay = null; T.editFailed = false;
+  $("replay-panel").hidden = true;
   history.replaceState(null, "", `#${runId}`);
   await refresh();
   connect();
@@ -322,6 +329,12 @@ async function refreshRuns() {
   T.runs = runs;
 }
 
+// The editor is open at a design review, and at a failure report once the operator asked to
+// edit the failed layout.
+function reviewing(v) {
+  return !!(v && v.review && !v.busy && (v.waiting_for?.kind !== "failure_report" || T.editFailed));
+}
+
 function phaseText(v) {
   if (v.busy) return `working: ${v.busy}…`;
   const k = v.waiting_for?.kind;
@@ -350,14 +363,24 @@ function render() {
   for (const n of [...(rd?.notes || []), ...(v.notes || [])]) addLi(ul, n, "note");
   if (rd?.ignored?.length) addLi(ul, `ignored: ${rd.ignored.join(", ")}`, "note");
   // panels
-  const review = v.review && !v.busy;
+  const kind = v.waiting_for?.kind;
+  if (kind !== "failure_report") T.editFailed = false;
+  const review = reviewing(v);
   $("review-panel").hidden = !review;
+  const failing = kind === "failure_report";
+  $("reject-box").hidden = failing;
+  $("back-to-report").hidden = !failing;
+  $("editing-failed").hidden = !failing;
+  $("accept").textContent = failing ? "Send the edited layout" : "Accept design";
+  const replanned = v.waiting_for?.replanned;
+  $("replanned").hidden = !replanned;
+  $("replanned").textContent = replanned || "";
   const confirming = ["pre_execute", "resume_execution"].includes(v.waiting_for?.kind) && !v.busy;
   $("preview-panel").hidden = !(T.timeline && (confirming || v.approved_hash));
   $("confirm-buttons").hidden = !confirming;
   $("revise").hidden = v.waiting_for?.kind !== "pre_execute";
   $("monitor-panel").hidden = !(v.approved_hash || T.executing);
-  $("failure-panel").hidden = v.waiting_for?.kind !== "failure_report" || !!v.busy;
+  $("failure-panel").hidden = !failing || !!v.busy || !!T.editFailed;
   $("plan").disabled = false;
   if (review) renderReview(v.review);
   const rec = v.waiting_for?.recovery;
@@ -372,12 +395,38 @@ function render() {
     $("edit-repair").disabled = !w.repair;
   }
   if (T.timeline) renderRecord();
-  if (v.waiting_for?.kind === "failure_report") {
-    const f = v.failure || {};
-    $("failure").textContent = `${f.error_type || "failure"} in ${f.phase || "?"}: ${f.message || ""}`;
-  }
+  if (failing) renderFailure(v);
   renderExec();
   drawScene();
+}
+
+// Touch point 3: the failure and the orchestrator's options (its recovery skills, retry, a
+// human edit of the failed layout, abort).
+function renderFailure(v) {
+  const f = v.failure || {};
+  const w = v.waiting_for;
+  $("failure").textContent = `${f.error_type || "failure"} in ${f.phase || "?"}: ${f.message || ""}`;
+  $("failure-refused").hidden = !w.refused;
+  $("failure-refused").textContent = w.refused || "";
+  $("edit-failed").disabled = !v.review;
+  const skills = w.skills || [];
+  const key = skills.map((k) => k.name).join();
+  if ($("skills").dataset.key === key) return;
+  $("skills").dataset.key = key;
+  $("skills").innerHTML = "";
+  for (const k of skills) {
+    const b = document.createElement("button");
+    b.id = `skill-${k.name}`;
+    b.textContent = k.name;
+    b.title = k.does;
+    b.onclick = safe(async () => {
+      await api(`/api/runs/${T.runId}/failure`, { tab: TAB, action: "recover", skill: k.name });
+      await refresh();
+    });
+    const row = document.createElement("div");
+    row.append(b, ` ${k.does}`);
+    $("skills").appendChild(row);
+  }
 }
 
 function addLi(ul, text, cls) {
@@ -390,7 +439,8 @@ function addLi(ul, text, cls) {
 function renderReview(r) {
   $("undo").disabled = !r.can_undo;
   $("redo").disabled = !r.can_redo;
-  $("accept").disabled = !r.passed;
+  const failing = T.view.waiting_for?.kind === "failure_report";
+  $("accept").disabled = !r.passed || (failing && !r.edits.length);
   const sel = T.selected && r.parts.find((p) => p.id === T.selected);
   $("selected").textContent = sel
     ? `${sel.id} at (${sel.position.map((x) => x.toFixed(3)).join(", ")}), yaw ${sel.yaw_deg}°, order ${(r.sequence || []).indexOf(sel.id) + 1}`
@@ -418,22 +468,34 @@ function drawScene() {
   if (!v || !T.scene) return;
   const states = {};
   let list = [];
-  if (v.review && !v.busy) {
+  const R = T.replay;
+  if (R && R.layout) { // a replay: the design in force at its step, or the record's parts
+    list = R.layout;
+    const executing = R.steps[R.k]?.kind === "execution";
+    const violating = new Set((R.design?.violations || []).flatMap((x) => x.objects || []));
+    for (const p of list) {
+      if (executing) states[p.id] = T.placed[p.id] || "pending";
+      else states[p.id] = violating.has(p.id) ? "violating" : "verified";
+    }
+  } else if (reviewing(v)) {
     list = v.review.parts;
     for (const p of list) states[p.id] = p.state;
   } else if (v.layout) {
     list = v.layout;
     const violating = new Set((v.violations || []).flatMap((x) => x.objects || []));
-    const showTimeline = T.timeline && !T.executing && !Object.keys(T.placed).length;
+    // the preview builds up as its clock runs; once its record ran, unbuilt parts are pending
+    const ran = !!(v.execution && T.timeline && v.execution.record_hash === T.timeline.record_hash);
+    const built = T.executing || ran || Object.keys(T.placed).length;
+    const showTimeline = T.timeline && !built;
     for (const p of list) {
       if (T.placed[p.id]) states[p.id] = T.placed[p.id];
       else if (showTimeline) states[p.id] = partShownAt(p.id, T.clock) ? "verified" : "hidden";
-      else if (T.executing || Object.keys(T.placed).length) states[p.id] = "pending";
+      else if (built) states[p.id] = "pending";
       else states[p.id] = violating.has(p.id) ? "violating" : "verified";
     }
   }
   drawParts(list, states);
-  const ghostsOn = !!T.timeline && !(v.review && !v.busy);
+  const ghostsOn = !!T.timeline && !reviewing(v) && (!R || R.steps[R.k]?.kind === "execution");
   for (const name in T.ghosts) T.ghosts[name].root.visible = ghostsOn;
   if (T.timeline) {
     for (const name in T.timeline.robots) {
@@ -441,7 +503,7 @@ function drawScene() {
       if (q) setJoints(T.ghosts[name], q);
     }
   }
-  if (v.review && !v.busy && $("use-gizmo").checked && T.selected && list.find((p) => p.id === T.selected)) {
+  if (!R && reviewing(v) && $("use-gizmo").checked && T.selected && list.find((p) => p.id === T.selected)) {
     const p = list.find((p) => p.id === T.selected);
     if (!gizmo.dragging) gizmoTarget.position.set(...p.position);
     if (!gizmo.object) gizmo.attach(gizmoTarget);
@@ -466,7 +528,7 @@ function pick(ev) {
 let drag = null;
 renderer.domElement.addEventListener("pointerdown", (ev) => {
   T.shift = ev.shiftKey;
-  if (!T.view?.review || T.view.busy || $("use-gizmo").checked) return;
+  if (!reviewing(T.view) || T.replay || $("use-gizmo").checked) return;
   const hit = parts && pick(ev).intersectObject(parts)[0];
   if (!hit) return;
   const id = T.partIds[hit.instanceId];
@@ -530,15 +592,23 @@ window.addEventListener("keydown", (ev) => {
   if ((ev.ctrlKey || ev.metaKey) && ev.key === "y") edit({ op: "redo" });
   if (ev.key === "Delete" && T.selected) $("delete").click();
 });
-$("accept").onclick = async () => {
+$("accept").onclick = safe(async () => {
   await api(`/api/runs/${T.runId}/accept`, { tab: TAB, layout_hash: T.view.review.layout_hash });
   T.selected = null;
   await refresh();
-};
-$("reject").onclick = async () => {
+});
+$("reject").onclick = safe(async () => {
   await api(`/api/runs/${T.runId}/reject`, { tab: TAB, reason: $("reason").value });
+  $("reason").value = "";
+  T.selected = null;
   await refresh();
-};
+});
+$("review-abort").onclick = safe(async () => {
+  await api(`/api/runs/${T.runId}/abort`, { tab: TAB });
+  await refresh();
+});
+$("edit-failed").onclick = () => { T.editFailed = true; T.selected = null; render(); };
+$("back-to-report").onclick = () => { T.editFailed = false; T.selected = null; render(); };
 $("command-form").onsubmit = async (ev) => {
   ev.preventDefault();
   $("plan").disabled = true;
@@ -637,13 +707,15 @@ function placePart(p) {
 }
 
 function renderExec() {
-  const ex = T.view?.execution;
+  const step = T.replay?.steps[T.replay.k];
+  const ex = step ? (step.kind === "execution" ? step.report : null) : T.view?.execution;
   const n = Object.values(T.placed).filter((s) => s === "placed").length;
   let text = T.executing ? "executing… " : "";
   text += `${n} part(s) placed within ${(T.scene?.placed_tolerance_m || 0) * 1000} mm`;
   if (ex) text += ` · ${ex.status} · V_traj ${ex.v_traj} · δ ${ex.delta_rad} rad (ε ${ex.epsilon_rad})`;
   $("exec-status").textContent = text;
   T.vTraj = ex?.v_traj || null;
+  if (T.replay) renderReplay();
   drawDelta();
 }
 
@@ -688,15 +760,90 @@ function stepExecution(dt) {
   drawDelta();
 }
 
+// ------------------------------------------------------------------------------ replay
+// A finished run told again from its event stream (GET /replay): the design versions shown at
+// review with each answer, the record planned and its approval, then the execution with δ.
 $("replay").onclick = async () => {
-  const events = await api(`/api/runs/${T.runId}/events`);
-  T.placed = {}; T.samples = {}; T.deltaPoints = []; T.execClock = 0; T.toPlace = [];
-  T.replaying = true;
-  onEvents(events, true);
-  T.execClock = 0;
-  T.placedAtReplayStart = Object.keys(T.placed).length; // parts appear as the replay reaches them
-  drawScene();
+  const r = await api(`/api/runs/${T.runId}/replay`);
+  T.replay = { steps: r.steps, k: -1, layout: null, design: null };
+  $("replay-panel").hidden = false;
+  const ol = $("replay-steps");
+  ol.innerHTML = "";
+  r.steps.forEach((step, k) => {
+    const li = document.createElement("li");
+    li.textContent = describeStep(step);
+    li.onclick = () => replayTo(k);
+    ol.appendChild(li);
+  });
+  await replayTo(0);
 };
+$("replay-prev").onclick = () => T.replay && replayTo(T.replay.k - 1);
+$("replay-next").onclick = () => T.replay && replayTo(T.replay.k + 1);
+$("replay-close").onclick = () => {
+  T.replay = null; T.placed = {}; T.samples = {}; T.deltaPoints = []; T.toPlace = [];
+  $("replay-panel").hidden = true;
+  refresh();
+};
+
+function describeStep(s) {
+  const h = (x) => (x || "?").slice(0, 12);
+  if (s.kind === "design") {
+    const said = s.replanned || s.recovery?.summary || s.refused || "";
+    return `design v${s.version} (${s.waiting_for}) · ${s.parts.length} parts${said ? " · " + said : ""}`;
+  }
+  if (s.kind === "decision") {
+    return `${s.at}: ${s.action}${s.skill ? " " + s.skill : ""}${s.reason ? ` "${s.reason}"` : ""}` +
+      `${s.edits ? ` (${s.edits.length} edit(s))` : ""} by ${s.by || "?"}`;
+  }
+  if (s.kind === "record") return `record ${h(s.record_hash)} planned · ${s.steps} steps · makespan ${s.makespan_s} s`;
+  if (s.kind === "approval") return `approved record ${h(s.record_hash)} by ${s.by || "?"}`;
+  const r = s.report || {};
+  return `execution of ${h(s.record_hash)}: ${r.status || "interrupted"} · V_traj ${r.v_traj} · δ ${r.delta_rad} rad (ε ${r.epsilon_rad})`;
+}
+
+function recordParts(tl) {
+  return tl.steps.map((s) => ({
+    id: s.part_id, size: s.size, position: [s.target[0][3], s.target[1][3], s.target[2][3]],
+    yaw_deg: Math.atan2(s.target[1][0], s.target[0][0]) * 180 / Math.PI,
+  }));
+}
+
+async function replayTo(k) {
+  const R = T.replay;
+  if (!R || k < 0 || k >= R.steps.length) return;
+  R.k = k;
+  const s = R.steps[k];
+  R.design = null;
+  for (let i = k; i >= 0; i--) if (R.steps[i].kind === "design") { R.design = R.steps[i]; break; }
+  R.layout = R.design ? R.design.parts : null;
+  T.placed = {}; T.samples = {}; T.deltaPoints = []; T.execClock = 0; T.toPlace = [];
+  T.executing = false;
+  if (s.kind === "execution") {
+    if (!T.timeline || T.timeline.record_hash !== s.record_hash) {
+      T.timeline = await api(`/api/runs/${T.runId}/timeline?record=${s.record_hash}`);
+      setupSlider();
+    }
+    R.layout = recordParts(T.timeline); // exactly the parts of the record executed
+    for (const p of s.already_placed || []) placePart(p);
+    T.placedAtReplayStart = Object.keys(T.placed).length; // parts come back as the clock runs
+    T.replaying = true;
+    for (const e of s.events) {
+      if (e.type === "samples") addSamples(e.payload);
+      else if (e.type === "step_done") T.toPlace.push(e.payload);
+    }
+  }
+  renderExec();
+  drawScene();
+}
+
+function renderReplay() {
+  const R = T.replay;
+  if (!R || R.k < 0) return;
+  $("replay-step").textContent = `${R.k + 1} / ${R.steps.length}: ${describeStep(R.steps[R.k])}`;
+  [...$("replay-steps").children].forEach((li, i) => { li.className = i === R.k ? "current" : ""; });
+  $("replay-prev").disabled = R.k <= 0;
+  $("replay-next").disabled = R.k >= R.steps.length - 1;
+}
 
 // ------------------------------------------------------------------------------ main loop
 let last = performance.now();
