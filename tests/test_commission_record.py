@@ -187,7 +187,7 @@ def test_programs_can_be_written_from_the_stored_record(orch):
     assert texts[0] == texts[1] and "MODULE" in texts[0]  # the same motion, every time
 
 
-def test_sdi_export_writes_the_stored_record_of_a_run(orch, tmp_path):
+def test_sdi_export_writes_the_approved_record_of_a_run_only(orch, tmp_path):
     from sdi.export import rapid_module
 
     s = at_confirmation(orch)
@@ -195,6 +195,11 @@ def test_sdi_export_writes_the_stored_record_of_a_run(orch, tmp_path):
     plan = record.commissioning(record.cell())
     expected = rapid_module(plan.job, plan.tasks, plan.motion, plan.robots["irb120"])
     out = tmp_path / "rapid"
+    waiting = sdi("export", "--run", s.run_id, "--db", str(orch.db), "--rapid", str(out))
+    assert waiting.returncode == 2 and "no approved commissioning record" in waiting.stderr
+    assert not out.exists()  # nothing written for a record no one approved
+    orch.resume(s.run_id, {"action": "approve", "record_hash": record.hash})
+    assert orch.approved_record(s.run_id).hash == record.hash
     proc = sdi("export", "--run", s.run_id, "--db", str(orch.db), "--rapid", str(out))
     assert proc.returncode == 0, proc.stderr
     assert (out / "SDI_IRB120.mod").read_text(encoding="utf-8") == expected

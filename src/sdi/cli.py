@@ -626,7 +626,7 @@ def export_cmd(
 
         orch = Orchestrator(db=_database(db, run_id=run_id), create=False)
         try:
-            record = orch.record(run_id)
+            record = orch.approved_record(run_id)
             plan = record.commissioning(record.cell())
         finally:
             orch.close()

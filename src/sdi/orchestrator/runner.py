@@ -354,6 +354,18 @@ class Orchestrator:
             raise InputError(f"run {run_id} has no commissioning record yet", field="RUN_ID")
         return self.records.get(run_id, str(record_hash))
 
+    def approved_record(self, run_id: str) -> CommissioningRecord:
+        """The record the operator approved (by its hash) — the only one an exporter may use;
+        `InputError` naming the run when none is approved yet."""
+        approved = self._values(run_id).get("approved_hash")
+        if not approved:
+            raise InputError(
+                f"run {run_id} has no approved commissioning record; approve the record it "
+                f"shows first (sdi resume {run_id} --approve) and export again",
+                field="--run",
+            )
+        return self.records.get(run_id, str(approved))
+
     def status(self, run_id: str) -> RunStatus:
         self._values(run_id)
         return self._status(run_id)
