@@ -938,11 +938,11 @@ def test_a_gap_inside_one_structure_or_under_a_bridge_is_not_between_structures(
 
 
 def test_a_number_that_shows_nowhere_in_the_reading_is_material():
-    r = plan("ring 4x4 2 ht, 3 of them")
-    if r.status == "success":  # read as three rings: every number shows
-        assert len(r.spec.structures) == 3
-    else:
-        assert any("'3': the number shows nowhere" in n for n in r.notes), r.notes
+    ring = structure("enclosure", length=4, width=4, height=2)
+    assert _coherence("a ring 4x4 2 high, 3 of them", ring) == ["3"]
+    assert _coherence("a ring 4x4 2 high, 3 of them", ring, ring, ring) == []
+    r = plan("ring 3x3 2 ht, 3 of them")
+    assert r.status == "success" and len(r.spec.structures) == 3
 
 
 @pytest.mark.parametrize(
@@ -958,3 +958,26 @@ def test_a_number_that_shows_nowhere_in_the_reading_is_material():
 def test_numbers_shown_converted_superseded_or_not_sizes_are_no_alarm(command):
     r = plan(command)
     assert not any("shows nowhere" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    ("command", "shapes"),
+    [
+        ("pad 3x3, 2 of them", ["grid", "grid"]),
+        ("a boundary wall around nothing in particular", ["enclosure"]),
+        ("two stacks of 3 with something across them", ["bridge"]),
+        ("a 4x4 slab, leave out the middle ones", ["enclosure"]),
+        ("right from a tower of 2, a wall of 3", ["wall", "tower"]),
+    ],
+)
+def test_ways_of_saying_copies_rings_beams_and_sides(command, shapes):
+    r = read(command)
+    assert sorted(s.shape for s in r.spec.structures) == sorted(shapes), r.notes
+    if "right from" in command:
+        assert r.spec.relations[0].side == "right"
+
+
+def test_a_square_base_said_per_side_is_square():
+    lo, hi = boxes(plan("pyramid, the base is 20 cm each side"))
+    assert np.isclose(hi[:, 0].max() - lo[:, 0].min(), 0.20)
+    assert np.isclose(hi[:, 1].max() - lo[:, 1].min(), 0.20)

@@ -247,6 +247,22 @@ def _more_like(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {_said(m)[1][0]} identical {noun} "
 
 
+def _copies_of(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "ring 4x4 3 high, 2 of them": the structure described, that many times."""
+    said, groups = _said(m)
+    n = words_to_numbers([groups[0]])[0]
+    if not n.isdigit() or int(n) < 2:
+        return m.group(0)
+    vague = {"corner", "square", "squares", "plus", "group", "steps", "series", "angle"}
+    shapes = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+              if w in lx.SHAPE_WORDS and w not in vague]  # fmt: skip
+    if not shapes or shapes[-1].endswith("s"):
+        return m.group(0)  # "4-high pillars, two of them": two pillars, not two bridges
+    st.notes.append(f"read '{said}' as {n} of the structure described")
+    noun = shapes[-1] if shapes[-1] not in lx.AMBIGUOUS_SHAPES else lx.SHAPE_WORDS[shapes[-1]]
+    return "".join(f" and another {noun}" for _ in range(int(n) - 1)) + " "
+
+
 def _times(m: re.Match[str], st: ReadState, note: str) -> str:
     said, groups = _said(m)
     factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
@@ -301,6 +317,7 @@ HANDLERS: dict[str, Handler] = {
     "{arith}": _arith,
     "{from_centre}": _from_centre,
     "{relative}": _relative,
+    "{copies_of}": _copies_of,
     "{neither_side}": _neither_side,
     "{unsupported}": _unsupported,
     "{at_most}": _at_most,

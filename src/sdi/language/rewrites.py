@@ -263,12 +263,12 @@ _REWRITES += [
     # "a 3x3 grid without the middle cube": a ring
     (
         re.compile(
-            r"\b(grid|square|layer|slab|pad|patch|platform)\s+(?:of\s+cubes\s+)?(?:without|minus|"
-            r"but\s+not|except(?:\s+for)?)\s+(?:the\s+|a\s+|its\s+)?(?:middle|centre|center|inner|"
-            r"central)(?:\s+(?:cube|one|part|piece))?",
+            r"\b(grid|square|layer|slab|pad|patch|platform|block)\b([^.;]{0,20}?)\s*,?\s*(?:without|minus|"
+            r"but\s+not|except(?:\s+for)?|leave\s+out|leaving\s+out|leave\s+off)\s+(?:the\s+|a\s+|its\s+)?"
+            r"(?:middle|centre|center|inner|central)(?:\s+(?:cubes?|ones?|parts?|pieces?|column))?",
             re.IGNORECASE,
         ),
-        " hollow {0} ",
+        " hollow {0} {1} ",
         "read '{0}' as a hollow ring",
     ),
     # "an enclosure with no roof and nothing inside": what an enclosure is anyway
@@ -778,7 +778,7 @@ _REWRITES += [
     ),
     (  # "2 tower 3 high": a count before a singular noun whose size is said after it
         re.compile(
-            r"\b([2-9]|two|three|four|five|six)\s+(tower|stack|column|row|wall|pyramid|bridge|"
+            r"(?<!x\s)(?<!by\s)\b([2-9]|two|three|four|five|six)\s+(tower|stack|column|row|wall|pyramid|bridge|"
             r"staircase|slab|pad|block|ring|arch)\s+(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|"
             r"wide|levels?|steps?|x)\b)",
             re.IGNORECASE,
@@ -793,6 +793,55 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         " a {0} ",
+        "",
+    ),
+    (  # "ring 4x4, 2 of them": that many of the one described
+        re.compile(
+            r",?\s*\b(two|three|four|five|[2-5])\s+of\s+(?:them|those|these|it)\b\s*(?=$|[,.;!])",
+            re.IGNORECASE,
+        ),
+        "{copies_of}",
+        "",
+    ),
+    (  # "the base is 25 cm each side", "base 4 a side": a square base
+        re.compile(
+            r"\bbase\s+(?:is\s+|of\s+)?(\d+(?:\.\d+)?\s*(?:cm|mm|m)|\d+)\s+(?:on\s+)?(?:each|every|a|per)\s+"
+            r"side\b",
+            re.IGNORECASE,
+        ),
+        " {0} by {0} base ",
+        "read '{0}' as a square base",
+    ),
+    (  # "a perimeter fence", "a boundary wall": a ring
+        re.compile(r"\b(?:perimeter|boundary)\s+(?:fence|wall)\b", re.IGNORECASE),
+        " enclosure ",
+        "read '{0}' as a ring",
+    ),
+    (  # "pillars with something across them": a beam
+        re.compile(
+            r"\b(?:something|a\s+piece|a\s+part|a\s+long\s+piece)\s+(?=(?:across|over|on\s+top\s+of)\s+"
+            r"(?:them|both|the\s+two)\b)",
+            re.IGNORECASE,
+        ),
+        " a beam ",
+        "read '{0}' as a beam",
+    ),
+    (  # "cubes six, in one column": a count after its noun
+        re.compile(
+            r"\b(cubes|blocks|bricks|towers|stacks|rows|walls)\s+(two|three|four|five|six|seven|eight|nine|ten|"
+            r"\d+)\b(?=\s*(?:$|[,.;]))",
+            re.IGNORECASE,
+        ),
+        " {1} {0} ",
+        "",
+    ),
+    (  # "each of cubes 5": each of 5 cubes
+        re.compile(
+            r"\bof\s+(cubes|blocks|bricks)\s+(\d+)\b(?!\s*(?:by|x|cm|mm|m|dm|in|inch|inches|ft|feet|"
+            r"tall|high|long|wide|deep|thick)\b)",
+            re.IGNORECASE,
+        ),
+        " of {1} {0} ",
         "",
     ),
     (  # "centred left-right": across the table, the default; the other region word stays
