@@ -981,3 +981,27 @@ def test_a_square_base_said_per_side_is_square():
     lo, hi = boxes(plan("pyramid, the base is 20 cm each side"))
     assert np.isclose(hi[:, 0].max() - lo[:, 0].min(), 0.20)
     assert np.isclose(hi[:, 1].max() - lo[:, 1].min(), 0.20)
+
+
+@pytest.mark.parametrize(
+    ("command", "shape", "slots"),
+    [
+        ("a 4x4 ring, one high. Then fill it in.", "grid", {"length": 4, "width": 4}),
+        ("4 layers of 3x3, then remove the top layer", "block", {"height": 3}),
+        ("a balustrade four long and two high", "wall", {"length": 4, "height": 2}),
+        ("two pallets of 2x2, 2 high", "block", {"length": 2, "width": 2, "height": 2}),
+        ("a slab 25 cm square, 5 cm thick", "grid", {"length": 5, "width": 5}),
+    ],
+)
+def test_fill_in_unload_and_trade_words(command, shape, slots):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    s = r.spec.structures[0]
+    assert s.shape == shape and all(getattr(s, k) == v for k, v in slots.items()), s
+
+
+def test_something_to_pass_under_is_a_bridge_and_an_english_word_is_no_typo():
+    r = read("something a toy car could drive under")
+    assert r.spec.structures[0].shape == "bridge"
+    r = read("a tower, the visitors walk past it")
+    assert not any("to 'wall'" in n for n in r.notes)

@@ -125,6 +125,8 @@ def _shown(spec: Spec, st: ReadState) -> set[float]:
         shown.update(float(n) for n in levels.values())
     shown.update(float(n) for n in families.values())
     shown.update(float(n - 1) for n in families.values())  # "then 2 more like it"
+    for note in st.notes:  # a length a note states ("0.0508 m thick is one layer")
+        metres.extend(float(v) for v in re.findall(r"(\d+(?:\.\d+)?) m\b", note))
     for m in metres:
         shown.update(round(m / unit, 2) for unit in lx.UNITS_M.values())
         shown.add(round(m / st.cell.cube[0], 2))

@@ -65,10 +65,13 @@ def check_family(
     reported in `notes` (and, when it changes what is built, in `material`). `part_m` is the
     edge of the cell's cube, m: sizes in metres are compared with it."""
     flat = spec.shape in ("grid",)
-    if flat and ((spec.height or 1) > 1 or spec.height_m is not None):
-        notes.append(
-            f"a grid {spec.height or ''} high is a solid block: built a block".replace("  ", " ")
-        )
+    one_layer = spec.height_m is not None and round(spec.height_m / part_m) <= 1
+    if flat and one_layer:  # "a slab 5 cm thick": one layer, which a grid is
+        notes.append(f"a grid {spec.height_m:g} m thick is one layer of parts")
+        spec = spec.model_copy(update={"height_m": None})
+    elif flat and ((spec.height or 1) > 1 or spec.height_m is not None):
+        high = spec.height or (f"{spec.height_m:g} m" if spec.height_m else "")
+        notes.append(f"a grid {high} high is a solid block: built a block".replace("  ", " "))
         spec = spec.model_copy(update={"shape": "block", "gap_m": None})
         if spec.count is not None and spec.length is None:
             spec = spec.model_copy(update={"count": None})

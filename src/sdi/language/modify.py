@@ -57,6 +57,11 @@ MODIFY = [
         "region",
     ),
     _op(
+        r"\bfill\s+(?:it\s+|them\s+)?in(?:\s+the\s+(?:middle|centre|center|inside|hole|gap))?\b|"
+        r"\bfill\s+(?:up\s+)?(?:the|its)\s+(?:middle|centre|center|inside|hole)\b",
+        "fill",
+    ),
+    _op(
         r"\buntil\s+(?:it|they)\s+(?:is|are|stands?)\s+"
         + _N
         + r"\s+(?:cubes?\s+|levels?\s+|layers?\s+)?(?:high|tall)\b",
@@ -89,7 +94,7 @@ MODIFY = [
         "-",
     ),
     _op(
-        r"\b(?:take|knock|lift|remove)\s+(?:off\s+)?the\s+top\s+(cube|one|level|layer)\b"
+        r"\b(?:take|knock|lift|remove|unload|strip)\s+(?:off\s+)?the\s+top\s+(cube|one|level|layer)\b"
         r"(?:\s+off)?",
         "-1",
     ),
@@ -117,6 +122,23 @@ def modify(
         m = pattern.search(p.text)
         if not m:
             continue
+        if op == "fill":  # "then fill in the middle": a ring becomes solid
+            target = built[-1]
+            index = target.first + target.count - 1
+            ring = structures[index]
+            if ring.shape != "enclosure":
+                return False
+            solid = "block" if (ring.height or 1) > 1 else "grid"
+            structures[index] = StructureDraft(
+                shape=solid, length=ring.length, width=ring.width or ring.length,
+                height=ring.height if solid == "block" else None, length_m=ring.length_m,
+                width_m=ring.width_m, at_x=ring.at_x, at_y=ring.at_y, region=ring.region,
+                part=ring.part,
+            )  # fmt: skip
+            st.notes.append(f"'{m.group(0).strip()}': the ring filled in, a solid {solid}")
+            p.count = 0
+            p.modified = True
+            return True
         if op == "region":
             place = m.group(1).lower()
             place = {"middle": "centre", "center": "centre"}.get(place, place)

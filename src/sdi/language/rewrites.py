@@ -817,6 +817,16 @@ _REWRITES += [
         " enclosure ",
         "read '{0}' as a ring",
     ),
+    (  # "something a toy car could drive under": a bridge
+        re.compile(
+            r"\b(?:something|a\s+thing|a\s+structure|one)\s+(?:that\s+)?(?:a|an|my|the)\s+(?:\w+\s+){0,3}?"
+            r"(?:could|can|might|will)\s+(?:walk|drive|pass|go|fit|crawl|roll|ride|sail|run)\s+"
+            r"(?:under|underneath|beneath|through)\b",
+            re.IGNORECASE,
+        ),
+        " a bridge ",
+        "read '{0}' as a bridge (something to pass under)",
+    ),
     (  # "pillars with something across them": a beam
         re.compile(
             r"\b(?:something|a\s+piece|a\s+part|a\s+long\s+piece)\s+(?=(?:across|over|on\s+top\s+of)\s+"
@@ -998,7 +1008,10 @@ _REWRITES += [
         "",
     ),
     (
-        re.compile(r"(?<!by\s)\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+square\b", re.IGNORECASE),
+        re.compile(
+            r"(?<!by\s)\b(\d+(?:\.\d+)?\s*(?:cm|mm|m|inches|inch|in|ft|feet|foot))\s+square\b",
+            re.IGNORECASE,
+        ),
         " {0} by {0} ",
         "",
     ),

@@ -22,7 +22,7 @@ _N = r"(\d+(?:\.\d+)?|a|an|one|two|three|four|five|six)"
 _UNIT = r"(cubes?|parts?|blocks?|cm|mm|m)"
 _GAP = re.compile(
     r",?\s*\b(?:with\s+|leaving\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT
-    + r")?|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart)|" + _N + r"[- ]?" + _UNIT
+    + r")?|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart|aisle)|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gap|space)\s+between(?:\s+(?:them|the\s+two|each))?)"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,

@@ -51,8 +51,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             choices_here = [c for c in _CHOICES if c in _SHAPES and len(c) > len(w)]
         else:
             choices_here = _CHOICES
-        if _vocab_has(w) and not aggressive:
-            return raw
+        if _vocab_has(w) and (not aggressive or len(w) > 3):
+            return raw  # an English word ("walk", "tour") is not a typo, even for a last try
         limit = 1 if len(w) <= 5 else 2
         found = process.extract(
             w, choices_here, scorer=DamerauLevenshtein.distance, score_cutoff=limit, limit=3

@@ -72,7 +72,8 @@ HARMLESS = _words(
     absolutely precisely have has having had period comma stop u ur story stuff point work
     working surface bench heights lengths widths sizes plus tidy task running runs actually
     sorry oops wait req fyi thx asap kindly ta lonely sturdy sign slide visual deck mock
-    mockup meanwhile anyway anyways besides btw otherwise
+    mockup meanwhile anyway anyways besides btw otherwise replicate reproduce stage staged
+    deliver fetch prepare
     """
 )
 

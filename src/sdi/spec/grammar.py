@@ -425,6 +425,8 @@ class _Parser:
         prev = self.word(k - 1)
         nxt = self.word(k + 1)
         if w in ("block", "brick", "box", "cube"):
+            if prev in ("one", "1") and self.word(k - 2) in ("as", "into", "in", "form", "forming"):
+                return True  # "12 cubes as one block"
             if self.is_num(k - 1) and not self.toks[k - 1].used:
                 return False  # "a 3-cube tower", "1 block"
             if nxt in lx.SHAPE_WORDS and nxt not in lx.AMBIGUOUS_SHAPES:
@@ -457,6 +459,10 @@ class _Parser:
                 return True
             return w != "cube"
         if w in ("square", "squares", "rectangle"):
+            if prev in ("roughly", "approximately", "about", "nearly", "almost", "fairly", "quite",
+                        "very", "perfectly", "more", "less", "is", "be", "are", "inches", "inch",
+                        "cm", "mm", "m", "feet", "ft"):  # fmt: skip
+                return False  # "an enclosure, roughly square": a description
             return nxt not in lx.SHAPE_WORDS  # not "square pyramid", "square enclosure"
         if w == "corner":
             if (
@@ -651,6 +657,12 @@ class _Parser:
         for k, metres, fname in self.measures:
             if k in span_range:
                 fname = fname or PRIMARY_M.get(h.shape, "length_m")
+                word = next(
+                    (self.word(j) for j in range(k, k + 4) if self.word(j) in lx.DIMENSION_WORDS),
+                    "",
+                )
+                if word == "thick" and h.shape in ("grid", "block"):
+                    fname = "height_m"  # "a slab 2 inches thick": its height, not its width
                 if (fname == "gap_m" and h.shape in ("bridge", "arch", "canopy")) or (
                     fname == "width_m" and h.shape in ("arch",)
                 ):

@@ -319,6 +319,8 @@ _add(
     "fortification",
 )
 _add("l_shape", "l", "corner", "elbow", "angle", "bend")
+_add("grid", "pallet", "pallets")  # a pallet load: one layer unless a height is given
+_add("wall", "parapet", "parapets", "balustrade", "balustrades")
 _add("u_shape", "u", "horseshoe", "horseshoes", "bracket", "channel", "trough")
 _add("t_shape", "t", "junction")
 _add("cross", "cross", "crosses", "plus", "star", "intersection", "crossroads")
