@@ -1005,3 +1005,32 @@ def test_something_to_pass_under_is_a_bridge_and_an_english_word_is_no_typo():
     assert r.spec.structures[0].shape == "bridge"
     r = read("a tower, the visitors walk past it")
     assert not any("to 'wall'" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    ("command", "shapes", "slots"),
+    [
+        ("make a row nine long, no sorry, seven long", ["row"], {"length": 7}),
+        ("a tower uh six um no wait five high", ["tower"], {"height": 5}),
+        ("a pyramid no not a pyramid a staircase of 4", ["staircase"], {"steps": 4}),
+        ("qty: 2\nitem: wall\nheight_cubes: 3", ["wall", "wall"], {"height": 3}),
+        ("type: slab\nwidth: 15cm\ndepth: 10cm", ["grid"], {}),
+        ("a gate without the beam: just its two pillars of 4", ["tower", "tower"], {"height": 4}),
+    ],
+)
+def test_spoken_corrections_and_pasted_forms(command, shapes, slots):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    assert all(getattr(s, k) == v for s in r.spec.structures for k, v in slots.items())
+
+
+def test_coordinates_pasted_as_a_table_place_each_structure():
+    r = read("x,y,structure\n0.35,0.20,tower 3\n0.60,0.45,tower 2")
+    got = sorted((s.at_x, s.at_y, s.height) for s in r.spec.structures)
+    assert got == [(0.35, 0.2, 3), (0.6, 0.45, 2)]
+
+
+def test_nothing_is_built_on_the_robot():
+    r = plan("stack 3 cubes on the robot arm")
+    assert r.status == "partial" and any("robot" in n for n in r.notes)

@@ -56,8 +56,50 @@ def _names_structure(text: str) -> bool:
     return any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", text.lower()))
 
 
+_NOT_THAT = re.compile(
+    r"\b(?:an?\s+)?(\w+)\s*[,.]?\s*(?:no|nope)\s*[,.]?\s*not\s+(?:an?\s+)?(\1)\b\s*[,.;:—–-]*\s*",
+    re.IGNORECASE,
+)
+_DIM_WORDS = r"(?:long|high|tall|wide|deep|thick)"
+_WITH_DIM = re.compile(
+    rf"^({_NUMBER})\s+((?:cubes?\s+|parts?\s+)?{_DIM_WORDS})\b(.*)$", re.IGNORECASE | re.DOTALL
+)
+
+
+def _names_again(text: str, notes: list[str]) -> str:
+    """ "a wall no not a wall a row of six": the structure named first is taken back."""
+    m = _NOT_THAT.search(text)
+    if m is None or m.group(1).lower() not in lx.SHAPE_WORDS:
+        return text
+    notes.append(f"corrected by the command itself: not a {m.group(1)}")
+    return text[: m.start()] + text[m.end() :]
+
+
+def _with_dimension(before: str, value: str, rest: str, notes: list[str]) -> str | None:
+    """ "six long no sorry five long three high": the corrected size is the one said with
+    the same dimension word; what follows it stays."""
+    m = _WITH_DIM.match(value)
+    if m is None:
+        return None
+    dim = m.group(2).split()[-1]
+    olds = list(re.finditer(rf"\b({_NUMBER})\s+(?:cubes?\s+|parts?\s+)?{dim}\b", before, re.I))
+    if not olds:  # "a tower six, no wait, five high": the count said last, now with its word
+        counts = [o for o in _KINDS[2][1].finditer(before) if _kind(_widest(before, o)) == "count"]
+        if not counts:
+            return None
+        old = counts[-1]
+        notes.append(f"corrected by the command itself: '{old.group(0)}' → '{m.group(1)} {dim}'")
+        fixed = before[: old.start()] + f"{m.group(1)} {dim}" + before[old.end() :]
+        return f"{fixed} {m.group(3).strip()}{rest}"
+    old = olds[-1]
+    notes.append(f"corrected by the command itself: '{old.group(0)}' → '{m.group(1)} {dim}'")
+    fixed = before[: old.start(1)] + m.group(1) + before[old.end(1) :]
+    return f"{fixed} {m.group(3).strip()}{rest}"
+
+
 def correct(text: str, notes: list[str]) -> str:
     """`text` with every "old …, no wait, new" replaced by the corrected wording."""
+    text = _names_again(text, notes)
     for _ in range(4):  # a command rarely corrects itself more than once or twice
         m = _MARKER.search(text)
         if m is None or m.start() == 0:
@@ -68,6 +110,11 @@ def correct(text: str, notes: list[str]) -> str:
         value = _FILLER.sub("", _NOT_OLD.sub("", said.strip())).strip(" ,.;!?")
         value = _PARTS.sub("", value)
         kind = _kind(value) if value and not _names_structure(value) else None
+        if kind is None and not _names_structure(value):
+            dimensioned = _with_dimension(before, value, rest, notes)
+            if dimensioned is not None:
+                text = dimensioned
+                continue
         if kind is None:  # a correction in words of its own: a clause the later stages read
             text = before.rstrip(" ,;:—–-") + ". then " + after
             continue

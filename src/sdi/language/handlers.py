@@ -49,7 +49,9 @@ def _no_beams(m: re.Match[str], st: ReadState, note: str) -> str:
 def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     if re.search(r"\b(?:castle|fort|fortress|citadel)s?\b", m.string, re.IGNORECASE):
         return m.group(0)  # "a castle with a tower at each corner": the family's own
-    if re.search(r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]):
+    if re.search(r"\bsides?\b", m.group(0), re.IGNORECASE) and re.search(
+        r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]
+    ):
         return m.group(0)  # "a courtyard 5 cubes on each side": a size
     said = re.sub(r"\s+of\s+an?$", "", _said(m)[0])
     at = "corners" if "corner" in said.lower() else "ends" if " end" in said.lower() else None
@@ -153,9 +155,18 @@ def _unsupported(m: re.Match[str], st: ReadState, note: str) -> str:
     st.material.append(said)
     st.notes.append(
         f"ignored '{said}': every structure stands on the table, resting on it or on parts "
-        "below it; nothing can float or go below the table surface"
+        "below it; nothing can float, go below the table or stand on the robot or a person"
     )
     return " "
+
+
+_KEYED = {"length": "long", "len": "long", "width": "wide", "depth": "deep", "height": "high",
+          "thickness": "thick"}  # fmt: skip
+
+
+def _keyed_size(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "depth: 15cm": the size with the dimension word the key names."""
+    return f" {m.group(2)} {_KEYED[m.group(1).lower()]} , "
 
 
 def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -317,6 +328,7 @@ HANDLERS: dict[str, Handler] = {
     "{arith}": _arith,
     "{from_centre}": _from_centre,
     "{relative}": _relative,
+    "{keyed_size}": _keyed_size,
     "{copies_of}": _copies_of,
     "{neither_side}": _neither_side,
     "{unsupported}": _unsupported,

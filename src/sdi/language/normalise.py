@@ -124,6 +124,36 @@ _SHORTHAND = [
 ]
 
 
+_OPPOSITES = re.compile(r"\b(front|back|left|right)\s*[-–/]\s*(back|front|right|left)\b", re.I)
+_FILLERS = re.compile(
+    r"\b(?:u+h+|u+m+|e+r+m*|h+m+)\b,?|[\u2600-\u27bf\U0001f300-\U0001faff\u2b50\u2b55\u274c\u2705]"
+)
+# "0.30,0.45,tower 2": a spreadsheet row of x, y and what stands there
+_CSV_AT = re.compile(
+    r"(?:\bx\s*,\s*y\s*,\s*(?:structure|shape|item|what)\b\s*[/\n]?\s*)?"
+    r"\b(0?\.\d+|\d(?:\.\d+)?)\s*,\s*(0?\.\d+|\d(?:\.\d+)?)\s*,\s*"
+    r"([a-z][\w -]*?)(?=\s*(?:/|\n|$|;))",
+    re.IGNORECASE,
+)
+
+
+def _csv_at(m: re.Match[str]) -> str:
+    return f" ; {m.group(3)} at x = {m.group(1)} m, y = {m.group(2)} m ; "
+
+
+# "qty: 3 / item: tower": how many of the structure the line describes
+_QUANTITY = re.compile(
+    r"\b(?:qty|quantity|count|no\.\s*of\s+units)\s*[:=]\s*(\d+)\b\s*[/,;]?", re.I
+)
+
+
+def _quantity(m: re.Match[str], notes: list[str] | None, found: list[int]) -> str:
+    n = int(m.group(1))
+    if n > 1:
+        found.append(n)
+    return " "
+
+
 _HOMOPHONES = [
     (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d))", re.I), "two "),
     (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
@@ -293,6 +323,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     )
     for pattern, repl in _HOMOPHONES:
         text = pattern.sub(repl, text)
+    text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
+    text = _OPPOSITES.sub(lambda m: f"{m.group(1)} to {m.group(2)}", text)  # "front-back"
+    text = _CSV_AT.sub(_csv_at, text)
+    quantities: list[int] = []
+    text = _QUANTITY.sub(lambda m: _quantity(m, notes, quantities), text)
+    if quantities:  # "qty: 3 / item: tower …": the line's structure, that many times
+        text = f"{text.rstrip(' ./;,')} , {quantities[0]} of them"
     for pattern, repl in _SHORTHAND:
 
         def expand(m: re.Match[str], repl: str = repl) -> str:

@@ -854,6 +854,44 @@ _REWRITES += [
         " of {1} {0} ",
         "",
     ),
+    (  # "not left to right, front to back": the axis said second
+        re.compile(
+            r"\bnot\s+(?:running\s+|going\s+)?(?:left\s+to\s+right|right\s+to\s+left|side\s+to\s+side)\b"
+            r"\s*[,;:]?\s*(?:but\s+)?(?:front\s+to\s+back|back\s+to\s+front)?",
+            re.IGNORECASE,
+        ),
+        " running front to back ",
+        "read '{0}' as running front to back",
+    ),
+    (
+        re.compile(
+            r"\bnot\s+(?:running\s+|going\s+)?(?:front\s+to\s+back|back\s+to\s+front)\b"
+            r"\s*[,;:]?\s*(?:but\s+)?(?:left\s+to\s+right|right\s+to\s+left|side\s+to\s+side)?",
+            re.IGNORECASE,
+        ),
+        " running left to right ",
+        "read '{0}' as running left to right",
+    ),
+    (  # "on top of the robot", "on the conveyor": nothing is built on the cell's machines
+        re.compile(
+            r"\b(?:on\s+top\s+of|on|onto|atop|above|in|into|inside)\s+(?:the\s+|my\s+|your\s+)?"
+            r"(?:robots?|arms?|grippers?|conveyors?|operators?|camera|controller|cabinet|fence\s+door|"
+            r"me|you|him|her|hand|head)\b",
+            re.IGNORECASE,
+        ),
+        "{unsupported}",
+        "",
+    ),
+    (  # "a bridge, but without the beam": its two pillars
+        re.compile(
+            r"\ban?\s+(?:bridge|gate|arch)\b[^.;]*?\bwithout\s+(?:the\s+|its\s+|a\s+)?(?:beam|lintel|top|deck)s?\b"
+            r"(?:\s+this\s+time)?(?:\s*[,;:—–-]*\s*(?:just|only)?\s*(?:its|the)\s+two\s+(?:pillars|posts|towers|legs)"
+            r"((?:\s+of\s+\w+)?))?",
+            re.IGNORECASE,
+        ),
+        " two towers{0} ",
+        "read '{0}' as the two pillars alone",
+    ),
     (  # "centred left-right": across the table, the default; the other region word stays
         re.compile(
             r",?\s*\b(?:centred|centered|central)\s+(?:left[- ]to[- ]right|left[- ]right|"
@@ -917,7 +955,23 @@ _REWRITES += [
         " {1} {0} ",
         "",
     ),
-    (re.compile(r"\bheight\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} high ", ""),
+    (  # "width: 10cm / depth: 15cm / height: 5cm": a size with its unit and its side
+        re.compile(
+            r"\b(length|len|width|depth|height|thickness)\s*[:=]\s*(\d+(?:\.\d+)?\s*(?:cm|mm|m|in|inches|ft))\b",
+            re.IGNORECASE,
+        ),
+        "{keyed_size}",
+        "",
+    ),
+    (
+        re.compile(
+            r"\bheight(?:[_ ]?(?:cubes|in[_ ]cubes|parts|levels))?\s*[:=]\s*(\d+)\b"
+            r"(?!\s*(?:cm|mm|m)\b)",
+            re.IGNORECASE,
+        ),
+        " {0} high ",
+        "",
+    ),
     (
         re.compile(
             r",?\s*\b(?:none\s+of\s+(?:them|the\s+\w+)|no\s+\w+|not|never)\s+(?:any\s+)?(?:wider|broader)\s+"
@@ -1020,7 +1074,11 @@ _REWRITES += [
         " {1} {0} ",
         "",
     ),
-    (re.compile(r"\b(?:shape|structure|type|kind)\s*[:=]\s*", re.IGNORECASE), " a ", ""),
+    (
+        re.compile(r"\b(?:shape|structure|type|kind|item|object)\s*[:=]\s*", re.IGNORECASE),
+        " a ",
+        "",
+    ),
 ]
 
 

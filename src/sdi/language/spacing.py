@@ -21,9 +21,11 @@ from sdi.spec.structure_spec import Spec
 _N = r"(\d+(?:\.\d+)?|a|an|one|two|three|four|five|six)"
 _UNIT = r"(cubes?|parts?|blocks?|cm|mm|m)"
 _GAP = re.compile(
-    r",?\s*\b(?:with\s+|leaving\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT
-    + r")?|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart|aisle)|" + _N + r"[- ]?" + _UNIT
-    + r"\s+(?:of\s+)?(?:gap|space)\s+between(?:\s+(?:them|the\s+two|each))?)"
+    r",?\s*\b(?:with\s+|leaving\s+|leave\s+|keep\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?"
+    + _N + r"(?:[- ]?" + _UNIT + r")?"
+    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart|aisle)"
+    + r"|" + _N + r"[- ]?" + _UNIT
+    + r"\s+(?:of\s+)?(?:gap|space|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?)"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,
 )  # fmt: skip
