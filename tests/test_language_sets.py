@@ -1542,6 +1542,36 @@ _MAP_CORNERS = [
             res(*column(0.45, 0.15, 3), *column(0.45, 0.30, 3), *column(0.45, 0.45, 3)),
         ),
         (
+            "dev10-wo-09",  # two 4-rows side by side, 2 cubes apart
+            res(*_row_y(0.40, 0.20, 4), *_row_y(0.55, 0.20, 4)),
+            res(*_row_y(0.40, 0.075, 4), *_row_y(0.40, 0.375, 4)),
+        ),
+        (
+            "dev10-wo-11",  # a flat T, bar 5, stem 3
+            res(*_row_y(0.55, 0.20, 5), *_row_x(0.40, 0.30, 3)),
+            res(*_row_y(0.55, 0.20, 5), *_row_x(0.45, 0.30, 2), cube(0.55, 0.30, 0.075)),
+        ),
+        (
+            "dev10-neg-06",  # a 4x4 floor with the inner 2x2 left empty
+            res(*ring(0.40, 0.25, 4)),
+            res(*grid(0.40, 0.25, 4, 4)),
+        ),
+        (
+            "dev10-dim-07",  # a staircase under 20 cm tall: 3 steps
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3))),
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 4))),
+        ),
+        (
+            "dev10-open-07",  # something low: nothing above 10 cm
+            res(*grid(0.40, 0.25, 3, 3, layers=2)),
+            res(*grid(0.40, 0.25, 3, 3, layers=3)),
+        ),
+        (
+            "dev10-bad-02",  # a 12-cube tower: refuse, or cap it and say so
+            res(*column(0.45, 0.30, 10), notes=["capped at 10 cubes"]),
+            res(*column(0.45, 0.30, 10)),
+        ),
+        (
             "dev10-bad-12",  # a 20x20 floor: refuse, or build a smaller one and say so
             res(*grid(0.40, 0.25, 3, 3), notes=["20x20 does not fit; built 3x3"]),
             res(*grid(0.40, 0.25, 3, 3)),
