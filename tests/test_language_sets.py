@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to ninth dev sets (dev2 … dev9) are held to the same checks and share no
+second to tenth dev sets (dev2 … dev10) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ from sdi.bench.language_dev6 import CASES as DEV6
 from sdi.bench.language_dev7 import CASES as DEV7
 from sdi.bench.language_dev8 import CASES as DEV8
 from sdi.bench.language_dev9 import CASES as DEV9
+from sdi.bench.language_dev10 import CASES as DEV10
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -291,7 +292,7 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *TEST):
+    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -319,6 +320,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev7.py",
         "language_dev8.py",
         "language_dev9.py",
+        "language_dev10.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -739,7 +741,7 @@ def test_dev6_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev6_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV6}) == len(DEV6)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, DEV10, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV6 if _norm(c.text) in seen]
 
@@ -839,7 +841,7 @@ def test_dev7_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev7_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV7}) == len(DEV7)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, DEV10, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV7 if _norm(c.text) in seen]
 
@@ -937,7 +939,9 @@ def test_dev7_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 def test_dev8_set_sizes_ids_and_phenomena():
     assert len(DEV8) >= 120
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *TEST)]
+    ids = [
+        c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST)
+    ]
     assert len(ids) == len(set(ids))
     assert all(c.id.startswith("dev8-") for c in DEV8)
     per = {p: sum(c.phenomenon == p for c in DEV8) for p in PHENOMENA}
@@ -948,7 +952,7 @@ def test_dev8_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev8_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV8}) == len(DEV8)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, DEV10, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV8 if _norm(c.text) in seen]
 
@@ -1084,7 +1088,9 @@ def test_dev8_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 def test_dev9_set_sizes_ids_and_phenomena():
     assert len(DEV9) >= 120
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *TEST)]
+    ids = [
+        c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST)
+    ]
     assert len(ids) == len(set(ids))
     assert all(c.id.startswith("dev9-") for c in DEV9)
     per = {p: sum(c.phenomenon == p for c in DEV9) for p in PHENOMENA}
@@ -1095,7 +1101,7 @@ def test_dev9_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev9_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV9}) == len(DEV9)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV10, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV9 if _norm(c.text) in seen]
 
@@ -1315,5 +1321,264 @@ _SLAB34 = grid(0.40, 0.25, 3, 4)
 )
 def test_dev9_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev9(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev10
+
+
+def test_dev10_set_sizes_ids_and_phenomena():
+    assert len(DEV10) >= 120
+    ids = [
+        c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST)
+    ]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev10-") for c in DEV10)
+    per = {p: sum(c.phenomenon == p for c in DEV10) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
+    assert {c.phenomenon for c in DEV10} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV10)
+
+
+def test_no_command_shared_between_dev10_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV10}) == len(DEV10)
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV10 if _norm(c.text) in seen]
+
+
+def _dev10(case_id: str) -> Case:
+    return next(c for c in DEV10 if c.id == case_id)
+
+
+_SLAB44 = grid(0.35, 0.20, 4, 4)
+_CORNERS44 = (0, 3, 12, 15)  # grid index i * 4 + j of the four corner cells
+
+
+def _raised_border(x0, y0):
+    """A 3x3 floor with a second layer on every cell but the middle one."""
+    top = [
+        cube(x0 + C * i, y0 + C * j, C + C / 2)
+        for i in range(3)
+        for j in range(3)
+        if (i, j) != (1, 1)
+    ]
+    return [*grid(x0, y0, 3, 3), *top]
+
+
+_MAP_CORNERS = [
+    *grid(0.70, 0.45, 2, 2),
+    *grid(0.70, 0.10, 2, 2),
+    *grid(0.25, 0.45, 2, 2),
+    *grid(0.25, 0.10, 2, 2),
+]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev10-rel-01",  # a 3x3 plinth with a centred 4-column on it
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 4, z0=C)),
+            res(*grid(0.40, 0.25, 3, 3), *column(0.40, 0.25, 4, z0=C)),
+        ),
+        (
+            "dev10-rel-02",  # a 5-tower on the +y side of a 2x2x2 block, 50 mm gap
+            res(*grid(0.425, 0.225, 2, 2, layers=2), *column(0.45, 0.375, 5)),
+            res(*grid(0.425, 0.225, 2, 2, layers=2), *column(0.45, 0.125, 5)),
+        ),
+        (
+            "dev10-rel-03",  # a 4x4 floor with a 2-high pillar on each corner
+            res(*_slab_with_corner_columns(0.35, 0.20, 4, 2)),
+            res(*_slab_with_corner_columns(0.35, 0.20, 4, 3)),
+        ),
+        (
+            "dev10-rel-04",  # a fence around a 3-tower
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 3)),
+            res(*ring(0.35, 0.20, 5), *column(0.70, 0.30, 3)),
+        ),
+        (
+            "dev10-rel-04",  # … or laid tight round it
+            res(*ring(0.40, 0.25, 3), *column(0.45, 0.30, 3)),
+            res(*ring(0.40, 0.25, 3, high=4), *column(0.45, 0.30, 3)),
+        ),
+        (
+            "dev10-rel-05",  # two 4-towers with a beam across
+            res(*_bridge(0.45, 0.30, 4)),
+            res(*_bridge(0.45, 0.30, 3)),
+        ),
+        (
+            "dev10-rel-06",  # a row of five between two 3-stacks
+            res(*column(0.45, 0.10, 3), *_row_y(0.45, 0.20, 5), *column(0.45, 0.50, 3)),
+            res(*column(0.45, 0.10, 3), *_row_y(0.75, 0.20, 5), *column(0.45, 0.50, 3)),
+        ),
+        (
+            "dev10-rel-08",  # a 2x2 slab in front (-x) of a 6x2 wall along y, 1 cube clear
+            res(*grid(0.50, 0.15, 1, 6, layers=2), *grid(0.35, 0.25, 2, 2)),
+            res(*grid(0.50, 0.15, 1, 6, layers=2), *grid(0.60, 0.25, 2, 2)),
+        ),
+        (
+            "dev10-rel-09",  # a 2x2 tile inside a 6x6 border two high
+            res(*ring(0.325, 0.175, 6, high=2), *grid(0.425, 0.275, 2, 2)),
+            res(*ring(0.325, 0.175, 6), *grid(0.425, 0.275, 2, 2)),
+        ),
+        (
+            "dev10-rel-10",  # a 3-level pyramid behind, a 6-tower in front, ~2 cubes apart
+            res(*_pyr(0.55, 0.25, 3), *column(0.40, 0.30, 6)),
+            res(*_pyr(0.55, 0.25, 3), *column(0.75, 0.30, 6)),
+        ),
+        (
+            "dev10-rel-11",  # two parallel 4x3 walls with a 15 cm corridor
+            res(*grid(0.35, 0.20, 4, 1, layers=3), *grid(0.35, 0.40, 4, 1, layers=3)),
+            res(*grid(0.35, 0.20, 4, 1, layers=3), *grid(0.35, 0.35, 4, 1, layers=3)),
+        ),
+        (
+            "dev10-rel-12",  # two 3x2x2 slabs side by side, one cube apart
+            res(*grid(0.40, 0.15, 3, 2, layers=2), *grid(0.40, 0.30, 3, 2, layers=2)),
+            res(*grid(0.40, 0.15, 3, 2, layers=2), *grid(0.60, 0.15, 3, 2, layers=2)),
+        ),
+        (
+            "dev10-seq-03",  # a 4x4 platform without its four corners
+            res(*[c for i, c in enumerate(_SLAB44) if i not in _CORNERS44]),
+            res(*[c for i, c in enumerate(_SLAB44) if i not in _CORNERS44[:3]]),
+        ),
+        (
+            "dev10-seq-05",  # a 6x2 base with a 3-column at each end
+            res(
+                *grid(0.30, 0.25, 6, 2),
+                *column(0.30, 0.25, 3, z0=C),
+                *column(0.55, 0.30, 3, z0=C),
+            ),
+            res(
+                *grid(0.30, 0.25, 6, 2),
+                *column(0.30, 0.25, 3, z0=C),
+                *column(0.35, 0.25, 3, z0=C),
+            ),
+        ),
+        (
+            "dev10-seq-08",  # a 3-bridge centred at (0.40, 0.30)
+            res(*_bridge(0.40, 0.30, 3)),
+            res(*_bridge(0.60, 0.30, 3)),
+        ),
+        (
+            "dev10-seq-09",  # a 3x3 floor with every tile but the middle raised
+            res(*_raised_border(0.40, 0.25)),
+            res(*grid(0.40, 0.25, 3, 3, layers=2)),
+        ),
+        (
+            "dev10-seq-10",  # a 3-tower and next to it one a cube taller
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 4)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 5)),
+        ),
+        (
+            "dev10-seq-11",  # a 4x4 plinth with a 2x2x2 block at its centre
+            res(*grid(0.375, 0.225, 4, 4), *grid(0.425, 0.275, 2, 2, layers=2, z0=C)),
+            res(*grid(0.375, 0.225, 4, 4), *grid(0.375, 0.225, 2, 2, layers=2, z0=C)),
+        ),
+        (
+            "dev10-num-12",  # a 2-column and one four times as tall
+            res(*column(0.45, 0.20, 2), *column(0.45, 0.40, 8)),
+            res(*column(0.45, 0.20, 2), *column(0.45, 0.40, 4)),
+        ),
+        (
+            "dev10-dim-01",  # 150 (x) by 100 (y) by 100 (z) mm
+            res(*grid(0.40, 0.25, 3, 2, layers=2)),
+            res(*grid(0.40, 0.25, 2, 3, layers=2)),
+        ),
+        (
+            "dev10-dim-04",  # 20 cm wide (y), 30 cm deep (x)
+            res(*grid(0.30, 0.20, 6, 4)),
+            res(*grid(0.30, 0.20, 4, 6)),
+        ),
+        (
+            "dev10-dim-09",  # an arch with a 10 cm high, 5 cm wide opening
+            res(*_bridge(0.45, 0.30, 2)),
+            res(*_bridge(0.45, 0.30, 3)),
+        ),
+        (
+            "dev10-neg-07",  # two 4-stacks, nothing within 10 cm of the front edge
+            res(*column(0.35, 0.20, 4), *column(0.35, 0.40, 4)),
+            res(*column(0.25, 0.20, 4), *column(0.35, 0.40, 4)),
+        ),
+        (
+            "dev10-reg-02",  # a 3x3 slab at least 10 cm from the front edge
+            res(*grid(0.35, 0.25, 3, 3)),
+            res(*grid(0.225, 0.25, 3, 3)),
+        ),
+        (
+            "dev10-reg-03",  # a 2x2 tile in each corner of the map
+            res(*_MAP_CORNERS),
+            res(*_MAP_CORNERS[:8], *grid(0.45, 0.45, 2, 2), *_MAP_CORNERS[12:]),
+        ),
+        (
+            "dev10-reg-09",  # a 4-tower at both ends of the table
+            res(*column(0.45, 0.10, 4), *column(0.45, 0.50, 4)),
+            res(*column(0.45, 0.40, 4), *column(0.45, 0.50, 4)),
+        ),
+        (
+            "dev10-reg-11",  # a 6x2 screen wall along the back, a 2x2 plinth in front of it
+            res(*grid(0.65, 0.15, 1, 6, layers=2), *grid(0.45, 0.25, 2, 2)),
+            res(*grid(0.30, 0.15, 1, 6, layers=2), *grid(0.45, 0.25, 2, 2)),
+        ),
+        (
+            "dev10-wo-05",  # a 3-tower on the right, a 5-tower on the left
+            res(*column(0.45, 0.15, 3), *column(0.45, 0.45, 5)),
+            res(*column(0.45, 0.15, 5), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev10-wo-10",  # a 2-level pyramid one tile behind a 3-pillar
+            res(*column(0.40, 0.30, 3), *_pyr(0.50, 0.25, 2)),
+            res(*column(0.70, 0.30, 3), *_pyr(0.50, 0.25, 2)),
+        ),
+        (
+            "dev10-open-01",  # a low plinth with a slender column from its centre
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 3, z0=C)),
+            res(*grid(0.40, 0.25, 3, 3), *column(0.40, 0.25, 3, z0=C)),
+        ),
+        (
+            "dev10-open-08",  # three columns of descending height
+            res(*column(0.45, 0.15, 4), *column(0.45, 0.30, 3), *column(0.45, 0.45, 2)),
+            res(*column(0.45, 0.15, 3), *column(0.45, 0.30, 3), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev10-wo-09",  # two 4-rows side by side, 2 cubes apart
+            res(*_row_y(0.40, 0.20, 4), *_row_y(0.55, 0.20, 4)),
+            res(*_row_y(0.40, 0.075, 4), *_row_y(0.40, 0.375, 4)),
+        ),
+        (
+            "dev10-wo-11",  # a flat T, bar 5, stem 3
+            res(*_row_y(0.55, 0.20, 5), *_row_x(0.40, 0.30, 3)),
+            res(*_row_y(0.55, 0.20, 5), *_row_x(0.45, 0.30, 2), cube(0.55, 0.30, 0.075)),
+        ),
+        (
+            "dev10-neg-06",  # a 4x4 floor with the inner 2x2 left empty
+            res(*ring(0.40, 0.25, 4)),
+            res(*grid(0.40, 0.25, 4, 4)),
+        ),
+        (
+            "dev10-dim-07",  # a staircase under 20 cm tall: 3 steps
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3))),
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 4))),
+        ),
+        (
+            "dev10-open-07",  # something low: nothing above 10 cm
+            res(*grid(0.40, 0.25, 3, 3, layers=2)),
+            res(*grid(0.40, 0.25, 3, 3, layers=3)),
+        ),
+        (
+            "dev10-bad-02",  # a 12-cube tower: refuse, or cap it and say so
+            res(*column(0.45, 0.30, 10), notes=["capped at 10 cubes"]),
+            res(*column(0.45, 0.30, 10)),
+        ),
+        (
+            "dev10-bad-12",  # a 20x20 floor: refuse, or build a smaller one and say so
+            res(*grid(0.40, 0.25, 3, 3), notes=["20x20 does not fit; built 3x3"]),
+            res(*grid(0.40, 0.25, 3, 3)),
+        ),
+    ],
+)
+def test_dev10_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev10(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
