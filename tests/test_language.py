@@ -1034,3 +1034,11 @@ def test_coordinates_pasted_as_a_table_place_each_structure():
 def test_nothing_is_built_on_the_robot():
     r = plan("stack 3 cubes on the robot arm")
     assert r.status == "partial" and any("robot" in n for n in r.notes)
+
+
+def test_a_family_named_that_the_reading_does_not_build_is_material():
+    tower = structure("tower", height=3)
+    assert "pyramid" in _coherence("a tower of 3 next to a small pyramid", tower)
+    bridge = structure("bridge", height=3)
+    assert _coherence("two towers of 3 joined by a beam", bridge) == []  # built as its pillars
+    assert _coherence("a tower of 3 on the left of the table", tower) == []  # the work table

@@ -172,6 +172,47 @@ def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]
     return out
 
 
+# A family named in the words may be built as a part of another ("two towers joined by a beam"
+# is a bridge; "a wall around it" an enclosure): the families each one can contain.
+_CONTAINS: dict[str, frozenset[str]] = {
+    "bridge": frozenset({"tower", "grid", "row", "wall"}),
+    "arch": frozenset({"tower", "bridge"}),
+    "canopy": frozenset({"tower", "grid", "bridge", "block"}),
+    "castle": frozenset({"tower", "enclosure", "wall", "row", "grid"}),
+    "enclosure": frozenset({"wall", "row", "tower", "grid", "castle"}),
+    "u_shape": frozenset({"wall", "row"}),
+    "l_shape": frozenset({"wall", "row"}),
+    "t_shape": frozenset({"wall", "row"}),
+    "cross": frozenset({"wall", "row"}),
+    "block": frozenset({"grid", "row", "wall", "tower", "pack"}),
+    "pyramid": frozenset({"grid", "block", "staircase"}),
+    "staircase": frozenset({"tower", "row", "wall", "pyramid"}),
+    "wall": frozenset({"row", "tower", "grid", "block"}),
+    "grid": frozenset({"row", "block", "pack", "wall"}),
+    "row": frozenset({"tower", "grid"}),
+    "tower": frozenset({"row", "block", "grid"}),
+    "pack": frozenset({"tower", "block", "grid", "row"}),
+}
+
+
+def _families_named(doc: Doc, tokens: set[int]) -> dict[str, str]:
+    """Structure families the phrases name (the word that names each), parts of a structure
+    ("its pillars", "on four legs") and words that only describe ("a square base") aside."""
+    named: dict[str, str] = {}
+    for tok in doc:
+        w = tok.lower_
+        if tok.i not in tokens or w not in lx.SHAPE_WORDS or w in lx.AMBIGUOUS_SHAPES:
+            continue
+        if w in _COMPONENTS or tok.pos_ not in ("NOUN", "PROPN") or tok.dep_ == "compound":
+            continue
+        if w in ("table", "tables", "bench") and tok.i > 0 and doc[tok.i - 1].lower_ in (
+            "the", "this", "our", "my", "your", "that", "work", "of", "on"
+        ):  # fmt: skip
+            continue  # "on the table": the work table, not a table to build
+        named.setdefault(lx.SHAPE_WORDS[w], tok.text)
+    return named
+
+
 def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     """Notes and material for what the sentence structure says and the reading does not."""
     n = len(spec.structures)
@@ -182,6 +223,15 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
                 f"ignored '{cue}': the structures are built side by side, not related as "
                 "these words say"
             )
+    built = {s.shape for s in spec.structures}
+    noted = " ".join(st.notes).lower()
+    for family, word in _families_named(doc, tokens).items():
+        if family in built or any(family in _CONTAINS.get(b, frozenset()) for b in built):
+            continue
+        if word.lower() in noted:
+            continue  # a note already says what became of it ("the ring filled in")
+        st.material.append(word)
+        st.notes.append(f"ignored '{word}': the reading builds no {family.replace('_', ' ')}")
     told = {
         w for w in words_to_numbers(
             re.findall(r"\d+(?:\.\d+)?|[a-z]+", " ".join([*st.material, *st.notes]).lower())
