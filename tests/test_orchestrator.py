@@ -32,6 +32,17 @@ def test_three_touch_points_pause_and_resume(orch):
     assert kinds[:4] == ["command", "spec", "layout", "verification"] and "execution" in kinds
 
 
+def test_a_run_whose_command_was_not_all_read_ends_partial_and_says_why(orch):
+    s = orch.start("a 2-cube tower at x = 0.4, hovering over the table")
+    assert s.status == "paused" and any("hovering" in n for n in s.state["notes"])
+    assert s.to_json_dict()["unread"] == ["hovering over the table"]
+    s = orch.resume(s.run_id, {"action": "approve"})
+    s = orch.resume(s.run_id, {"action": "approve"})
+    assert s.state["execution"]["v_traj"] == "pass" and s.status == "partial"
+    done = orch.start("a 2-cube tower at x = 0.4", approve=True)
+    assert done.status == "success" and done.to_json_dict()["unread"] == []
+
+
 def test_rejecting_the_design_moves_nothing(orch):
     s = orch.start("a 2-cube tower at x = 0.4")
     s = orch.resume(s.run_id, {"action": "reject"})

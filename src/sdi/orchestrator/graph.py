@@ -114,6 +114,7 @@ class RunState(TypedDict, total=False):
     spec: dict[str, Any] | None
     spec_source: str
     ignored: list[str]  # words of the command the Specifier's reading left unused
+    unread: list[str]  # the material ones among them: the run ends `partial`, not `success`
     relaxed: bool
     layout: dict[str, Any] | None
     sequence: list[str] | None
@@ -360,16 +361,23 @@ def plan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         return {"status": "failure", "phase": "end", "notes": [str(exc)], "spec": None}
     spec = result.spec.model_dump(mode="json", exclude_none=True)
     say(state, ctx, "specifier", "designer", "spec", {"spec": spec, "source": result.source})
+    reading = result.reading
     update: dict[str, Any] = {
         "spec": result.spec.model_dump(mode="json"),
         "spec_source": result.source,
-        "ignored": list(result.reading.ignored) if result.reading is not None else [],
+        "ignored": list(reading.ignored) if reading is not None else [],
+        # words of the command the reading could not use: the run ends `partial`, not success
+        "unread": list(reading.material) if reading is not None else [],
         "phase": "design",
     }
+    said = [*(reading.notes if reading is not None else ()), *result.notes]
+    if said:  # the reading's assumptions and what it left out, shown at every review
+        notes = [*notes, *(n for n in said if n not in notes)]
     if notes:
-        say(state, ctx, "orchestrator", "human", "revision_unread", {"note": notes[0]})
-        update["notes"] = [*state.get("notes", []), *notes]
-        update["revisions"] = revisions
+        if revisions != list(state.get("revisions") or []):
+            say(state, ctx, "orchestrator", "human", "revision_unread", {"note": notes[0]})
+            update["revisions"] = revisions
+        update["notes"] = list(dict.fromkeys([*state.get("notes", []), *notes]))
     return update
 
 
@@ -399,11 +407,13 @@ def design_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     parts = len(outcome.layout) if outcome.layout else 0
     message = {"status": outcome.status, "parts": parts, "notes": outcome.notes}
     say(state, ctx, "designer", "inspector", "layout", message)
+    # the reading's notes (what was assumed, what was not used) stay; the Designer's follow
+    notes = list(dict.fromkeys([*state.get("notes", []), *outcome.notes]))
     if outcome.layout is None:
-        return {"layout": None, "violations": [], "notes": outcome.notes, "phase": "inspect"}
+        return {"layout": None, "violations": [], "notes": notes, "phase": "inspect"}
     if outcome.job is not None:  # the Designer's own gate passed it: INSPECT need not run again
         ctx.jobs.put(outcome.job)
-    return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "notes": outcome.notes}
+    return {"layout": outcome.layout.to_json_dict(), "phase": "inspect", "notes": notes}
 
 
 # -- INSPECT (never an LLM, except the critic ablation) -------------------------------------
@@ -753,7 +763,9 @@ def execute_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     say(state, ctx, "operator", "orchestrator", "execution", report)
     update: dict[str, Any] = {"execution": report, "resume_from": None}
     if report["status"] == "success" and report.get("v_traj") == "pass":
-        return {**update, "status": "success", "phase": "end", "failure": None}
+        # built as planned; `partial` when the command had words the reading could not use
+        done = "partial" if state.get("unread") else "success"
+        return {**update, "status": done, "phase": "end", "failure": None}
     raw = report.get("failure")
     event = raw if isinstance(raw, dict) else None
     scenario = getattr(result, "scenario", None)

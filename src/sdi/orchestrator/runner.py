@@ -58,8 +58,8 @@ class RunStatus:
     def to_json_dict(self) -> dict[str, Any]:
         keep = ("command", "method", "backend", "cell_hash", "spec_source", "sequence",
                 "replans", "tried", "failure", "execution", "planning", "record_hash",
-                "approved_hash", "notes", "relaxed", "recoveries", "edit",
-                "edit_outcome")  # fmt: skip
+                "approved_hash", "notes", "ignored", "unread", "relaxed", "recoveries",
+                "edit", "edit_outcome")  # fmt: skip
         return {
             "run_id": self.run_id,
             "status": self.status,
