@@ -21,6 +21,8 @@ from sdi.bench.sweep import Job, ResultCache, cache_key
 from sdi.bench.tables import markdown, summarise
 from sdi.execute.faults import SCENARIOS
 from sdi.model import Layout, Part
+from sdi.model.cell import CellConfig
+from sdi.model.region import Region
 from sdi.orchestrator.methods import METHODS
 from sdi.pipeline import plan
 
@@ -80,6 +82,54 @@ def test_each_failure_command_really_reaches_into_its_blocked_region(case):
         blocked |= region.blocks(lo, hi)
     assert blocked.any(), f"{case.command!r} stays clear of {case.scenario}"
     assert shape_checks.signature(case.shape)(layout) is None
+
+
+# -- can the commanded shape be kept at all? (computed) ------------------------------------------
+
+
+@pytest.mark.parametrize("case", load("failures"), ids=lambda c: c.id)
+def test_a_keepable_placement_keeps_the_signature_and_the_margin(case):
+    from sdi.bench.keepable import keepable
+    from sdi.recovery.shift import default_margin, translated, turned
+
+    layout = _plan(case.command)
+    regions = SCENARIOS[case.scenario].regions
+    k = keepable(layout, case.shape, regions, reach=False)
+    if not k.geometric:
+        assert not k.possible and "no placement" in k.reason and k.candidates == 0
+        return
+    assert k.moved_by_m is not None and k.yaw_deg is not None and k.candidates > 0
+    placed = translated(turned(layout, k.yaw_deg), *k.moved_by_m)
+    assert shape_checks.signature(case.shape)(placed) is None
+    pad = np.array([1.0, 1.0, 0.0]) * (default_margin(CellConfig()) - 1e-6)
+    lo, hi = placed.centres - placed.half_extents, placed.centres + placed.half_extents
+    assert not any(r.blocks(lo - pad, hi + pad).any() for r in regions)
+
+
+def test_a_tower_above_a_height_limit_or_a_row_longer_than_its_band_cannot_be_kept():
+    from sdi.bench.keepable import keepable
+
+    tower = _plan("Build a 4-cube tower at x = 0.4 m.")  # reaches 0.20 m wherever it stands
+    k = keepable(tower, [["tower", 4], ["parts", 4]], (Region(z_min=0.15),), reach=False)
+    assert not k.possible and not k.geometric
+    row = _plan("Place a row of 4 cubes along the x axis.")  # 0.20 m long, 0.10 m of x free
+    corridor = (Region(x_max=0.3), Region(x_min=0.4))
+    k = keepable(row, [["row"], ["parts", 4], ["axis", "x"]], corridor, reach=False)
+    assert not k.geometric and "turning breaks it: 90°: long side along y, expected x" in k.reason
+    k = keepable(row, [["row"], ["parts", 4]], corridor, reach=False)  # no axis named: a turn
+    assert k.geometric and k.yaw_deg in (90.0, 270.0)
+
+
+@pytest.mark.slow
+def test_the_corner_pocket_grid_clears_the_regions_but_the_arms_cannot_build_it():
+    from sdi.bench.keepable import case_keepable
+
+    case = next(c for c in load("failures") if c.scenario == "corner_pocket")
+    k = case_keepable(case.command, case.shape, case.scenario)
+    assert k.geometric and not k.possible and k.commissioned == k.candidates > 0
+    assert "open grip options: vacuum" in k.reason  # the last cube can only be sucked …
+    near = case_keepable(case.command, case.shape, "workspace_boundary")
+    assert near.possible and near.commissioned >= 1  # … which the arms can do elsewhere
 
 
 def test_shape_kept_is_judged_without_position_and_rejects_a_flattened_tower():
@@ -286,7 +336,8 @@ def test_table_iv_counts_detected_corrected_and_kept_per_method_with_na():
 def test_table_v_reports_recovered_and_shape_kept():
     results = [
         _result("failures", c.id, "Hybrid", hit=True, recovered=True, shape_kept=k % 2 == 0,
-                changed=True, notes=["shifted by (0.1, 0)"] if k < 4 else [])
+                changed=True, notes=["shifted by (0.1, 0)"] if k < 4 else [],
+                keepable=k < 6, keepable_reason=None if k < 6 else f"region {k} too small")
         for k, c in enumerate(load("failures"))
     ]  # fmt: skip
     summary = summarise("failures", results)
@@ -294,8 +345,14 @@ def test_table_v_reports_recovered_and_shape_kept():
     assert (t["recovered"], t["shape_kept"], t["stated"], t["changed_and_recovered"]) == (
         10, 5, 4, 10,
     )  # fmt: skip
+    assert (t["keepable"], t["kept_where_keepable"]) == (6, 3)  # cases 0, 2, 4 of 0…5
     table = markdown("failures", summary)
-    assert "| **Recovered** | | 10/10 |" in table and "| **Shape kept** | | 5/10 |" in table
+    assert "| **Recovered** | | | 10/10 |" in table and "| **Shape kept** | | | 5/10 |" in table
+    assert "| **Shape kept where it can be kept** | | | 3/6 |" in table
+    assert "Shape can be kept (computed)" in table
+    first, last = load("failures")[0], load("failures")[9]
+    assert f"| {first.label} | {first.error} | ✓ |" in table
+    assert f"| {last.label} | {last.error} | ✗ ⁴ |" in table and "⁴ " + last.label in table
     assert chart("failures", summary).startswith(b"\x89PNG")
 
 

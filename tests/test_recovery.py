@@ -129,6 +129,32 @@ def test_shift_turns_when_only_a_turn_fits():
     assert verify(out.layout).passed
 
 
+def test_shift_moves_before_it_turns_a_row_off_its_axis():
+    from sdi.recovery.outcome import recover
+
+    spec = Spec(structures=(structure("row", length=6, axis="y"),))  # Table V's F04
+    row = compose(spec)
+    hi = (row.centres + row.half_extents)[:, 1].max()
+    region = (Region(y_min=0.4),)
+    assert hi > 0.4  # the row reaches into the region
+    out, outcome = recover("shift", row, CellConfig(), region, spec)
+    assert outcome.turned_deg == 0.0 and outcome.moved_by_m is not None
+    assert outcome.moved_by_m[1] < -0.05  # a longer move than a turn, but the row still runs
+    assert np.ptp(out.centres[:, 0]) == 0.0 and not outcome.shape_changed  # along y
+    assert (out.centres + out.half_extents)[:, 1].max() < 0.4 and verify(out).passed
+
+
+def test_a_turn_off_the_commanded_axis_is_a_changed_shape_and_says_so():
+    from sdi.recovery.outcome import recover
+
+    spec = Spec(structures=(structure("row", length=5, axis="y"),))  # Table V's F08: 0.25 m
+    band = (Region(y_max=0.23), Region(y_min=0.37))  # in a 0.14 m band: only a turn fits
+    out, outcome = recover("shift", compose(spec), CellConfig(), band, spec)
+    assert outcome.turned_deg in (90.0, 270.0) and outcome.shape_changed
+    assert "runs along x, not along y as commanded" in outcome.summary
+    assert np.ptp(out.centres[:, 1]) == 0.0 and verify(out).passed
+
+
 def test_flatten_keeps_the_command_structure_first():
     from sdi.recovery import reshape
 

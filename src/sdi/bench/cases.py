@@ -13,7 +13,9 @@ Every suite's case runs what the system does, unchanged, and judges the outcome 
   the final layout still has the command's structure signature.
 - ``failures``: run the command unattended with the scenario's blocked regions. *hit* = an
   execution failed at least once; *recovered* = the run ended ``success``; *shape kept* = the
-  layout built still has the command's signature; *stated* = a changed layout comes with notes.
+  layout built still has the command's signature; *stated* = a changed layout comes with notes;
+  *keepable* = some placement of the commanded structure keeps its signature, clears the
+  scenario's regions and plans (`sdi.bench.keepable`, computed, not declared).
 - ``motion``: plan, commission on one arm (and on both for dual-arm cases), execute in
   PyBullet with monitoring (paper Table VI).
 
@@ -334,6 +336,7 @@ def _human_mods(
 def _failures(
     case: Case, method: str | None, model: ChatModel | None, config: RunConfig
 ) -> tuple[dict[str, Any], Built]:
+    from sdi.bench.keepable import case_keepable
     from sdi.execute.record import layout_hash
     from sdi.orchestrator.runner import Orchestrator
 
@@ -367,8 +370,11 @@ def _failures(
     final = _layout(s.state.get("layout"), cell)
     changed = bool(final is not None and first_design and layout_hash(final) != first_design)
     notes = list(s.state.get("notes") or [])
+    can = case_keepable(case.command, case.shape, case.scenario, cell)
     fields = {
         "scenario": case.scenario,
+        "keepable": can.possible,
+        "keepable_reason": can.reason,
         "hit": hit,
         "recovered": recovered,
         "shape_kept": bool(recovered and final is not None and signature(final) is None),

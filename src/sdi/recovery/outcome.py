@@ -61,12 +61,19 @@ def recover(
     spec: Spec | None = None,
 ) -> tuple[Layout, RecoveryOutcome]:
     """Run `shift` or `flatten` (reshape first) on the failed layout; `InfeasibleError` if the
-    skill cannot clear `blocked`, or if its result would be the failed layout unchanged."""
+    skill cannot clear `blocked`, or if its result would be the failed layout unchanged.
+
+    A shift that had to turn a structure off the axis its command named is a changed shape (the
+    operator approves it); a plain move, or a turn of a structure without a named axis, is not."""
     if action == "shift":
         shifted = shift_search(layout, cell, blocked=blocked)
         result = shifted.layout
+        axis = _turned_axis(spec, shifted.yaw_deg)
+        summary = f"shift: {shifted.describe()}"
+        if axis is not None:
+            summary += f"; it now runs along {axis[1]}, not along {axis[0]} as commanded"
         outcome = RecoveryOutcome(
-            action="shift", summary=f"shift: {shifted.describe()}", shape_changed=False,
+            action="shift", summary=summary, shape_changed=axis is not None,
             moved_by_m=(shifted.dx, shifted.dy), turned_deg=shifted.yaw_deg,
             margin_m=round(shifted.margin, 6),
         )  # fmt: skip
@@ -81,6 +88,18 @@ def recover(
     else:
         raise InfeasibleError(f"action: no recovery skill {action!r}", parameter="action")
     return _stated(layout, result, outcome)
+
+
+def _turned_axis(spec: Spec | None, yaw_deg: float) -> tuple[str, str] | None:
+    """(commanded axis, axis now) if a quarter turn by `yaw_deg` moved a structure off the axis
+    its command named ("a row along the y axis"), else None: then the turn is a changed shape."""
+    if spec is None or round(yaw_deg) % 180 == 0:
+        return None
+    for s in spec.structures:
+        axis = getattr(s, "axis", None)
+        if axis in ("x", "y"):
+            return axis, "y" if axis == "x" else "x"
+    return None
 
 
 def rule_replan(
