@@ -13,7 +13,15 @@ from typer.testing import CliRunner
 
 from sdi import cli
 from sdi.bench import shape_checks, sweep
-from sdi.bench.cases import CaseResult, RunConfig, _kept, needs_model, run_case, stands
+from sdi.bench.cases import (
+    CaseResult,
+    RunConfig,
+    _as_close,
+    _kept,
+    needs_model,
+    run_case,
+    stands,
+)
 from sdi.bench.charts import chart
 from sdi.bench.report import plan_jobs, resolve_methods, resolve_suites, suite_json
 from sdi.bench.scenarios import FailureCase, HumanMod, MotionCase, load
@@ -183,6 +191,33 @@ def test_edit_kept_means_the_touched_parts_are_where_the_operator_put_them():
     assert not _kept(before, before, ["a", "b"], ["a", "b"], order)
 
 
+def test_as_close_accepts_the_nearest_feasible_pose_and_nothing_farther():
+    before = _plan("Build a 3-cube tower at x = 0.4 m.")  # Table IV's H1: c3 to x = 1.0
+    outside = [{"op": "move", "id": "c3", "position": [1.0, 0.3, 0.125]}]
+    cell = CellConfig()
+
+    def with_c3(x: float, y: float, z: float) -> Layout:
+        return before.replaced(_cube("c3", x, y, z) if p.id == "c3" else p for p in before)
+
+    edge = with_c3(0.775, 0.3, 0.025)  # at the workspace's edge, on the table
+    assert not _kept(before, edge, [], [], outside)  # x = 1.0 cannot be kept …
+    assert _as_close(before, edge, [], outside, cell)  # … and nothing feasible is nearer
+    assert not _as_close(before, with_c3(0.7, 0.3, 0.025), [], outside, cell)  # 7.5 cm short
+    assert not _as_close(before, before, [], outside, cell)  # undone: back on the tower
+
+
+def test_as_close_keeps_every_move_before_pair_the_supports_allow():
+    before = _plan("Build a 3-cube tower at x = 0.4 m.")
+    cell = CellConfig()
+    impossible = [{"op": "sequence", "move": "c3", "before": "c1"}]  # c1 holds c3 up
+    assert _as_close(before, before, ["c1", "c2", "c3"], impossible, cell)
+    assert not _kept(before, before, ["c1", "c2", "c3"], ["c1", "c2", "c3"], impossible)
+    row = _plan("Place a row of 3 cubes along the x axis.")
+    possible = [{"op": "sequence", "move": "c3", "before": "c1"}]  # nothing holds c3 up
+    assert not _as_close(row, row, ["c1", "c2", "c3"], possible, cell)
+    assert _as_close(row, row, ["c3", "c1", "c2"], possible, cell)
+
+
 def test_methods_that_need_a_model_are_not_applicable_on_rules():
     assert {m for m in METHODS if needs_model(m)} == {
         "LLM-Direct", "LLM-FullPrompt", "LLM-FixedLoop", "LLM-AdaptLoop", "SASS", "SAMS",
@@ -319,17 +354,19 @@ def test_table_iv_counts_detected_corrected_and_kept_per_method_with_na():
             notes = ["moved back"] if k < 2 else []
             results.append(_result("human-mods", mod.id, m, steps=mod.paper_steps,
                                    detected=True, corrected=k < 7, edit_kept=k < 3,
-                                   entered=True, notes=notes))  # fmt: skip
+                                   edit_as_close=k < 5, entered=True, notes=notes))  # fmt: skip
     summary = summarise("human-mods", results)
     assert summary["totals"]["Hybrid"] | {"physics": None} == {
-        "runs": 9, "detected": 9, "corrected": 7, "edit_kept": 3, "shape_kept": 0,
-        "entered": 9, "stated": 2, "physics": None,
+        "runs": 9, "detected": 9, "corrected": 7, "edit_kept": 3, "edit_as_close": 5,
+        "shape_kept": 0, "entered": 9, "stated": 2, "physics": None,
     }  # fmt: skip
     assert summary["totals"]["LGOrch"] == "n/a"
     table = markdown("human-mods", summary)
     assert "| Human modification | Type | Steps (paper / built) | Hyb | LG |" in table
     assert "| **Corrected** | | | 7/9 | n/a |" in table
-    assert table.count("✓ / ✓ / ✓") == 3 and "21 / 21 ¹" not in table
+    assert "| **Edit kept as close as possible** | | | 5/9 | n/a |" in table
+    assert table.count("✓ / ✓ / ✓ / ✓") == 3 and table.count("✓ / ✓ / ✗ / ✓") == 2
+    assert "21 / 21 ¹" not in table
     assert chart("human-mods", summary).startswith(b"\x89PNG")
 
 

@@ -439,12 +439,13 @@ def _start_edit(
         return {"notes": [f"edit refused: {exc}"], "review_note": str(exc)}
     before = (base or {}).get("before") or layout.to_json_dict()
     touched = sorted({*((base or {}).get("touched") or []), *edited.touched})
+    asked = [*((base or {}).get("asked") or []), *(list(p) for p in edited.asked)]
     operator = edited.layout.to_json_dict()
     return {
         "layout": operator,
         "operator_sequence": list(edited.sequence) if edited.sequence is not None else None,
         "edit": {"status": "checking", "before": before, "operator": operator,
-                 "touched": touched, "removed": list(edited.removed),
+                 "touched": touched, "removed": list(edited.removed), "asked": asked,
                  "sequence": list(edited.sequence) if edited.sequence is not None else None},
         "edit_outcome": None, "review_note": None, "phase": "inspect",
     }  # fmt: skip
@@ -458,7 +459,8 @@ def _refused_edit(
     wanted = pending.get("sequence")
     before, _ = parse_layout(pending["before"], max_parts=cell.limits.max_parts)
     touched = pending.get("touched") or ()
-    fix = repair_edit(layout, cell, touched=touched, sequence=wanted, original=before)
+    asked = [(str(a), str(b)) for a, b in pending.get("asked") or ()]
+    fix = repair_edit(layout, cell, touched=touched, sequence=wanted, original=before, asked=asked)
     repair: dict[str, Any] | None = None
     if fix is not None:
         repair = {"layout": fix.layout.to_json_dict(), "sequence": list(fix.sequence),
