@@ -107,6 +107,7 @@ def test_a_keepable_placement_keeps_the_signature_and_the_margin(case):
         assert not k.possible and "no placement" in k.reason and k.candidates == 0
         return
     assert k.moved_by_m is not None and k.yaw_deg is not None and k.candidates > 0
+    assert k.gap_m == 0.0  # the packed structure is tried first
     placed = translated(turned(layout, k.yaw_deg), *k.moved_by_m)
     assert shape_checks.signature(case.shape)(placed) is None
     pad = np.array([1.0, 1.0, 0.0]) * (default_margin(CellConfig()) - 1e-6)
@@ -129,15 +130,24 @@ def test_a_tower_above_a_height_limit_or_a_row_longer_than_its_band_cannot_be_ke
 
 
 @pytest.mark.slow
-def test_the_corner_pocket_grid_clears_the_regions_but_the_arms_cannot_build_it():
-    from sdi.bench.keepable import case_keepable
+def test_the_packed_corner_pocket_grid_cannot_be_built_there_but_a_spread_one_can():
+    from sdi.bench.keepable import case_keepable, keepable
+    from sdi.recovery.shift import translated
+    from sdi.recovery.spread import spread_apart
 
     case = next(c for c in load("failures") if c.scenario == "corner_pocket")
-    k = case_keepable(case.command, case.shape, case.scenario)
-    assert k.geometric and not k.possible and k.commissioned == k.candidates > 0
-    assert "open grip options: vacuum" in k.reason  # the last cube can only be sucked …
+    layout, pocket = _plan(case.command), SCENARIOS[case.scenario].regions
+    packed = keepable(layout, case.shape, pocket, gaps=())
+    assert packed.geometric and not packed.possible
+    assert packed.commissioned == packed.candidates > 0  # every clear placement was tried
+    assert "open grip options: vacuum" in packed.reason  # the last cube can only be sucked …
     near = case_keepable(case.command, case.shape, "workspace_boundary")
-    assert near.possible and near.commissioned >= 1  # … which the arms can do elsewhere
+    assert near.possible and near.gap_m == 0.0  # … which the arms can do elsewhere
+    k = case_keepable(case.command, case.shape, case.scenario)
+    assert k.possible and k.gap_m and k.moved_by_m is not None and k.yaw_deg == 0.0
+    spread = translated(spread_apart(layout, k.gap_m), *k.moved_by_m)
+    assert shape_checks.signature(case.shape)(spread) is None  # the grid check allows the gap
+    assert f"with gaps of {k.gap_m * 1000:.0f} mm" in k.reason
 
 
 def test_shape_kept_is_judged_without_position_and_rejects_a_flattened_tower():
