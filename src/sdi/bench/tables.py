@@ -352,9 +352,10 @@ def _failures_md(summary: dict[str, Any]) -> str:
     head = ["Scenario", "Error type", "Shape can be kept (computed)", *_head(names)]
     lines = [
         "Each cell: recovered / commanded shape kept. *Shape can be kept* is computed "
-        "(`sdi.bench.keepable`): some quarter turn and placement of the planned structure on a "
-        "5 mm grid keeps the shape signature, lies in the workspace, stays the recovery's margin "
-        "clear of every blocked region, and can be commissioned by the arms.",
+        "(`sdi.bench.keepable`): some quarter turn and placement on a 5 mm grid of the planned "
+        "structure (packed, or with the gaps the `spread` recovery opens) keeps the shape "
+        "signature, lies in the workspace, stays the recovery's margin clear of every blocked "
+        "region, and can be commissioned by the arms.",
         "",
         "| " + " | ".join(head) + " |",
         "|---|---|:---:|" + ":---:|" * len(names),
