@@ -13,7 +13,15 @@ from typer.testing import CliRunner
 
 from sdi import cli
 from sdi.bench import shape_checks, sweep
-from sdi.bench.cases import CaseResult, RunConfig, _kept, needs_model, run_case, stands
+from sdi.bench.cases import (
+    CaseResult,
+    RunConfig,
+    _as_close,
+    _kept,
+    needs_model,
+    run_case,
+    stands,
+)
 from sdi.bench.charts import chart
 from sdi.bench.report import plan_jobs, resolve_methods, resolve_suites, suite_json
 from sdi.bench.scenarios import FailureCase, HumanMod, MotionCase, load
@@ -21,6 +29,8 @@ from sdi.bench.sweep import Job, ResultCache, cache_key
 from sdi.bench.tables import markdown, summarise
 from sdi.execute.faults import SCENARIOS
 from sdi.model import Layout, Part
+from sdi.model.cell import CellConfig
+from sdi.model.region import Region
 from sdi.orchestrator.methods import METHODS
 from sdi.pipeline import plan
 
@@ -82,6 +92,64 @@ def test_each_failure_command_really_reaches_into_its_blocked_region(case):
     assert shape_checks.signature(case.shape)(layout) is None
 
 
+# -- can the commanded shape be kept at all? (computed) ------------------------------------------
+
+
+@pytest.mark.parametrize("case", load("failures"), ids=lambda c: c.id)
+def test_a_keepable_placement_keeps_the_signature_and_the_margin(case):
+    from sdi.bench.keepable import keepable
+    from sdi.recovery.shift import default_margin, translated, turned
+
+    layout = _plan(case.command)
+    regions = SCENARIOS[case.scenario].regions
+    k = keepable(layout, case.shape, regions, reach=False)
+    if not k.geometric:
+        assert not k.possible and "no placement" in k.reason and k.candidates == 0
+        return
+    assert k.moved_by_m is not None and k.yaw_deg is not None and k.candidates > 0
+    assert k.gap_m == 0.0  # the packed structure is tried first
+    placed = translated(turned(layout, k.yaw_deg), *k.moved_by_m)
+    assert shape_checks.signature(case.shape)(placed) is None
+    pad = np.array([1.0, 1.0, 0.0]) * (default_margin(CellConfig()) - 1e-6)
+    lo, hi = placed.centres - placed.half_extents, placed.centres + placed.half_extents
+    assert not any(r.blocks(lo - pad, hi + pad).any() for r in regions)
+
+
+def test_a_tower_above_a_height_limit_or_a_row_longer_than_its_band_cannot_be_kept():
+    from sdi.bench.keepable import keepable
+
+    tower = _plan("Build a 4-cube tower at x = 0.4 m.")  # reaches 0.20 m wherever it stands
+    k = keepable(tower, [["tower", 4], ["parts", 4]], (Region(z_min=0.15),), reach=False)
+    assert not k.possible and not k.geometric
+    row = _plan("Place a row of 4 cubes along the x axis.")  # 0.20 m long, 0.10 m of x free
+    corridor = (Region(x_max=0.3), Region(x_min=0.4))
+    k = keepable(row, [["row"], ["parts", 4], ["axis", "x"]], corridor, reach=False)
+    assert not k.geometric and "turning breaks it: 90°: long side along y, expected x" in k.reason
+    k = keepable(row, [["row"], ["parts", 4]], corridor, reach=False)  # no axis named: a turn
+    assert k.geometric and k.yaw_deg in (90.0, 270.0)
+
+
+@pytest.mark.slow
+def test_the_packed_corner_pocket_grid_cannot_be_built_there_but_a_spread_one_can():
+    from sdi.bench.keepable import case_keepable, keepable
+    from sdi.recovery.shift import translated
+    from sdi.recovery.spread import spread_apart
+
+    case = next(c for c in load("failures") if c.scenario == "corner_pocket")
+    layout, pocket = _plan(case.command), SCENARIOS[case.scenario].regions
+    packed = keepable(layout, case.shape, pocket, gaps=())
+    assert packed.geometric and not packed.possible
+    assert packed.commissioned == packed.candidates > 0  # every clear placement was tried
+    assert "open grip options: vacuum" in packed.reason  # the last cube can only be sucked …
+    near = case_keepable(case.command, case.shape, "workspace_boundary")
+    assert near.possible and near.gap_m == 0.0  # … which the arms can do elsewhere
+    k = case_keepable(case.command, case.shape, case.scenario)
+    assert k.possible and k.gap_m and k.moved_by_m is not None and k.yaw_deg == 0.0
+    spread = translated(spread_apart(layout, k.gap_m), *k.moved_by_m)
+    assert shape_checks.signature(case.shape)(spread) is None  # the grid check allows the gap
+    assert f"with gaps of {k.gap_m * 1000:.0f} mm" in k.reason
+
+
 def test_shape_kept_is_judged_without_position_and_rejects_a_flattened_tower():
     tower = load("failures")[6]  # low ceiling: a 3-cube tower
     sig = shape_checks.signature(tower.shape)
@@ -131,6 +199,33 @@ def test_edit_kept_means_the_touched_parts_are_where_the_operator_put_them():
     order = [{"op": "sequence", "move": "b", "before": "a"}]
     assert _kept(before, before, ["a", "b"], ["b", "a"], order)
     assert not _kept(before, before, ["a", "b"], ["a", "b"], order)
+
+
+def test_as_close_accepts_the_nearest_feasible_pose_and_nothing_farther():
+    before = _plan("Build a 3-cube tower at x = 0.4 m.")  # Table IV's H1: c3 to x = 1.0
+    outside = [{"op": "move", "id": "c3", "position": [1.0, 0.3, 0.125]}]
+    cell = CellConfig()
+
+    def with_c3(x: float, y: float, z: float) -> Layout:
+        return before.replaced(_cube("c3", x, y, z) if p.id == "c3" else p for p in before)
+
+    edge = with_c3(0.775, 0.3, 0.025)  # at the workspace's edge, on the table
+    assert not _kept(before, edge, [], [], outside)  # x = 1.0 cannot be kept …
+    assert _as_close(before, edge, [], outside, cell)  # … and nothing feasible is nearer
+    assert not _as_close(before, with_c3(0.7, 0.3, 0.025), [], outside, cell)  # 7.5 cm short
+    assert not _as_close(before, before, [], outside, cell)  # undone: back on the tower
+
+
+def test_as_close_keeps_every_move_before_pair_the_supports_allow():
+    before = _plan("Build a 3-cube tower at x = 0.4 m.")
+    cell = CellConfig()
+    impossible = [{"op": "sequence", "move": "c3", "before": "c1"}]  # c1 holds c3 up
+    assert _as_close(before, before, ["c1", "c2", "c3"], impossible, cell)
+    assert not _kept(before, before, ["c1", "c2", "c3"], ["c1", "c2", "c3"], impossible)
+    row = _plan("Place a row of 3 cubes along the x axis.")
+    possible = [{"op": "sequence", "move": "c3", "before": "c1"}]  # nothing holds c3 up
+    assert not _as_close(row, row, ["c1", "c2", "c3"], possible, cell)
+    assert _as_close(row, row, ["c3", "c1", "c2"], possible, cell)
 
 
 def test_methods_that_need_a_model_are_not_applicable_on_rules():
@@ -269,24 +364,27 @@ def test_table_iv_counts_detected_corrected_and_kept_per_method_with_na():
             notes = ["moved back"] if k < 2 else []
             results.append(_result("human-mods", mod.id, m, steps=mod.paper_steps,
                                    detected=True, corrected=k < 7, edit_kept=k < 3,
-                                   entered=True, notes=notes))  # fmt: skip
+                                   edit_as_close=k < 5, entered=True, notes=notes))  # fmt: skip
     summary = summarise("human-mods", results)
     assert summary["totals"]["Hybrid"] | {"physics": None} == {
-        "runs": 9, "detected": 9, "corrected": 7, "edit_kept": 3, "shape_kept": 0,
-        "entered": 9, "stated": 2, "physics": None,
+        "runs": 9, "detected": 9, "corrected": 7, "edit_kept": 3, "edit_as_close": 5,
+        "shape_kept": 0, "entered": 9, "stated": 2, "physics": None,
     }  # fmt: skip
     assert summary["totals"]["LGOrch"] == "n/a"
     table = markdown("human-mods", summary)
     assert "| Human modification | Type | Steps (paper / built) | Hyb | LG |" in table
     assert "| **Corrected** | | | 7/9 | n/a |" in table
-    assert table.count("✓ / ✓ / ✓") == 3 and "21 / 21 ¹" not in table
+    assert "| **Edit kept as close as possible** | | | 5/9 | n/a |" in table
+    assert table.count("✓ / ✓ / ✓ / ✓") == 3 and table.count("✓ / ✓ / ✗ / ✓") == 2
+    assert "21 / 21 ¹" not in table
     assert chart("human-mods", summary).startswith(b"\x89PNG")
 
 
 def test_table_v_reports_recovered_and_shape_kept():
     results = [
         _result("failures", c.id, "Hybrid", hit=True, recovered=True, shape_kept=k % 2 == 0,
-                changed=True, notes=["shifted by (0.1, 0)"] if k < 4 else [])
+                changed=True, notes=["shifted by (0.1, 0)"] if k < 4 else [],
+                keepable=k < 6, keepable_reason=None if k < 6 else f"region {k} too small")
         for k, c in enumerate(load("failures"))
     ]  # fmt: skip
     summary = summarise("failures", results)
@@ -294,8 +392,14 @@ def test_table_v_reports_recovered_and_shape_kept():
     assert (t["recovered"], t["shape_kept"], t["stated"], t["changed_and_recovered"]) == (
         10, 5, 4, 10,
     )  # fmt: skip
+    assert (t["keepable"], t["kept_where_keepable"]) == (6, 3)  # cases 0, 2, 4 of 0…5
     table = markdown("failures", summary)
-    assert "| **Recovered** | | 10/10 |" in table and "| **Shape kept** | | 5/10 |" in table
+    assert "| **Recovered** | | | 10/10 |" in table and "| **Shape kept** | | | 5/10 |" in table
+    assert "| **Shape kept where it can be kept** | | | 3/6 |" in table
+    assert "Shape can be kept (computed)" in table
+    first, last = load("failures")[0], load("failures")[9]
+    assert f"| {first.label} | {first.error} | ✓ |" in table
+    assert f"| {last.label} | {last.error} | ✗ ⁴ |" in table and "⁴ " + last.label in table
     assert chart("failures", summary).startswith(b"\x89PNG")
 
 

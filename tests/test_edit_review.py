@@ -13,6 +13,7 @@ from scripted_model import tower
 from sdi.design import compose
 from sdi.errors import InputError
 from sdi.inspector import verify
+from sdi.inspector.analysis import Analysis
 from sdi.model.cell import CellConfig
 from sdi.model.layout import parse_layout
 from sdi.orchestrator import Orchestrator
@@ -134,6 +135,34 @@ def test_nearest_order_moves_only_what_must_come_later():
     assert ground == [pid for pid in wanted if layout.part(pid).bottom < 1e-6]
 
 
+def test_nearest_order_keeps_the_move_before_pairs_the_supports_allow():
+    layout = build("canopy", height=4)  # Table IV's H9: the roof before the pillars
+    first = layout.ids[0]  # the first pillar cube of the generator's order
+    wanted = edit(layout, [{"op": "sequence", "move": b, "before": first}
+                           for b in ("b1", "b2", "b3", "b4")], sequence=layout.ids)  # fmt: skip
+    assert wanted.asked == tuple((b, first) for b in ("b1", "b2", "b3", "b4"))
+    fix = repair_edit(wanted.layout, touched=(), sequence=wanted.sequence, asked=wanted.asked)
+    assert fix is not None and verify(layout, sequence=fix.sequence).passed
+    at = {pid: k for k, pid in enumerate(fix.sequence)}
+    # a beam may come before that cube exactly when the cube does not hold it up
+    below = Analysis(layout, layout_cell()).graph.support_edges
+    holds: dict[str, set[str]] = {}
+    for lo, up in below.tolist():
+        holds.setdefault(layout.ids[up], set()).add(layout.ids[lo])
+
+    def under(pid: str) -> set[str]:
+        out = set(holds.get(pid, ()))
+        for q in list(out):
+            out |= under(q)
+        return out
+
+    possible = [(b, first) for b, _ in wanted.asked if first not in under(b)]
+    assert possible  # some beam stands on pillars that do not include that cube
+    assert all(at[b] < at[first] for b, _ in possible)
+    assert set(fix.unkept) == set(wanted.asked) - set(possible)
+    assert "not kept: " in fix.describe()
+
+
 def layout_cell():
     from sdi.model.cell import CellConfig
 
@@ -182,14 +211,37 @@ def test_repair_keeps_what_the_operator_did_when_it_can():
     assert all(c.by is not None and c.by[2] == pytest.approx(-0.05) for c in fix.changes)
 
 
-def test_repair_of_a_collision_keeps_the_operators_x_and_y():
-    layout = build("grid", length=3, width=1, at_x=0.45, at_y=0.3)
-    a, b = layout.objects[0], layout.objects[1]
-    stacked = edit(layout, [{"op": "move", "id": b.id, "position": list(a.position)}])
-    fix = repair_edit(stacked.layout, touched=stacked.touched)
+def test_repair_of_a_collision_keeps_the_operators_part_and_moves_the_other_aside():
+    layout = build("row", length=6, axis="y")  # Table IV's H4: c2 put where c1 stands
+    c1, c2 = layout.part("c1"), layout.part("c2")
+    stacked = edit(layout, [{"op": "move", "id": "c2", "position": list(c1.position)}])
+    fix = repair_edit(stacked.layout, touched=stacked.touched, original=layout)
+    assert fix is not None and verify(fix.layout).passed and fix.kept == ("c2",)
+    assert fix.layout.part("c2").position == c1.position  # exactly where the operator put it
+    assert fix.layout.part("c1").position == c2.position  # c1 took the place c2 left
+    assert [c.id for c in fix.changes] == ["c1"] and "c1 moved by (0, 0.05, 0) m" in fix.describe()
+
+
+def test_a_part_pushed_aside_takes_what_rests_on_it_and_a_hanging_part_follows():
+    layout = build("block", length=3, width=2, height=2)  # Table IV's H5
+    shoved = edit(layout, [{"op": "translate", "id": "c1", "by": [-0.025, 0.0, 0.0]}])
+    assert not verify(shoved.layout).passed  # c1 overlaps c4, c7 hangs over its edge
+    fix = repair_edit(shoved.layout, touched=shoved.touched, original=layout)
+    assert fix is not None and verify(fix.layout).passed and fix.kept == ("c1",)
+    assert fix.layout.part("c1").position == shoved.layout.part("c1").position
+    by = {c.id: c.by for c in fix.changes}
+    assert by == {"c4": (-0.025, 0.0, 0.0), "c10": (-0.025, 0.0, 0.0), "c7": (-0.025, 0.0, 0.0)}
+
+
+def test_with_no_room_to_make_the_operators_part_is_lifted_onto_the_other():
+    layout = build("grid", length=3, width=3, at_x=0.45, at_y=0.3)
+    centre = min(layout, key=lambda p: abs(p.position[0] - 0.45) + abs(p.position[1] - 0.3))
+    corner = layout.objects[0]
+    stacked = edit(layout, [{"op": "move", "id": corner.id, "position": list(centre.position)}])
+    fix = repair_edit(stacked.layout, touched=stacked.touched)  # no original: no vacated place
     assert fix is not None and verify(fix.layout).passed
-    moved = fix.layout.part(b.id)
-    assert moved.position[:2] == a.position[:2] and moved.bottom == pytest.approx(a.top)
+    moved = fix.layout.part(corner.id)
+    assert moved.position[:2] == centre.position[:2] and moved.bottom == pytest.approx(centre.top)
     assert len(fix.changes) == 1
 
 

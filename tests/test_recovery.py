@@ -129,6 +129,82 @@ def test_shift_turns_when_only_a_turn_fits():
     assert verify(out.layout).passed
 
 
+def test_shift_moves_before_it_turns_a_row_off_its_axis():
+    from sdi.recovery.outcome import recover
+
+    spec = Spec(structures=(structure("row", length=6, axis="y"),))  # Table V's F04
+    row = compose(spec)
+    hi = (row.centres + row.half_extents)[:, 1].max()
+    region = (Region(y_min=0.4),)
+    assert hi > 0.4  # the row reaches into the region
+    out, outcome = recover("shift", row, CellConfig(), region, spec)
+    assert outcome.turned_deg == 0.0 and outcome.moved_by_m is not None
+    assert outcome.moved_by_m[1] < -0.05  # a longer move than a turn, but the row still runs
+    assert np.ptp(out.centres[:, 0]) == 0.0 and not outcome.shape_changed  # along y
+    assert (out.centres + out.half_extents)[:, 1].max() < 0.4 and verify(out).passed
+
+
+def test_a_turn_off_the_commanded_axis_is_a_changed_shape_and_says_so():
+    from sdi.recovery.outcome import recover
+
+    spec = Spec(structures=(structure("row", length=5, axis="y"),))  # Table V's F08: 0.25 m
+    band = (Region(y_max=0.23), Region(y_min=0.37))  # in a 0.14 m band: only a turn fits
+    out, outcome = recover("shift", compose(spec), CellConfig(), band, spec)
+    assert outcome.turned_deg in (90.0, 270.0) and outcome.shape_changed
+    assert "runs along x, not along y as commanded" in outcome.summary
+    assert np.ptp(out.centres[:, 1]) == 0.0 and verify(out).passed
+
+
+def test_spread_opens_the_same_gap_between_every_pair_of_neighbours():
+    from sdi.recovery.spread import spread_apart
+
+    layout = build("block", length=2, width=2, height=2, at_x=0.45, at_y=0.3)
+    out = spread_apart(layout, 0.03)
+    assert [p.position[2] for p in out] == [p.position[2] for p in layout]  # heights kept
+    xs = sorted({p.position[0] for p in out})
+    ys = sorted({p.position[1] for p in out})
+    assert np.diff(xs) == pytest.approx([0.08]) and np.diff(ys) == pytest.approx([0.08])
+
+    def middle(lay):
+        lo, hi = boxes(lay)
+        return (lo.min(axis=0) + hi.max(axis=0))[:2] / 2
+
+    assert middle(out) == pytest.approx(middle(layout))  # spread about the footprint centre
+    assert verify(out).passed  # each column still stands on its own
+
+
+def test_spread_lets_the_arms_build_a_grid_in_the_corner_pocket():
+    from sdi.commission import commission
+    from sdi.errors import SDIError
+    from sdi.execute.faults import SCENARIOS
+    from sdi.recovery.outcome import recover
+    from sdi.recovery.shift import shift_search
+
+    pocket = SCENARIOS["corner_pocket"].regions  # Table V's F10
+    grid = shift_search(build("grid", length=2, width=2), blocked=pocket).layout
+    with pytest.raises(SDIError, match="vacuum"):  # the last cube: only the vacuum, out of reach
+        commission(grid, CellConfig())
+    out, outcome = recover("spread", grid, CellConfig(), pocket)
+    assert outcome.action == "spread" and outcome.shape_changed and outcome.gap_m
+    assert "opened gaps of" in outcome.summary and len(outcome.changes) == 4
+    lo, hi = boxes(out)
+    assert lo[:, 0].min() > 0.55 and hi[:, 0].max() < 0.75
+    assert lo[:, 1].min() > 0.35 and hi[:, 1].max() < 0.55
+    assert verify(out).passed and commission(out, CellConfig()) is not None
+
+
+def test_rules_spread_only_after_a_grip_or_reach_failure_that_moving_did_not_fix():
+    from sdi.orchestrator.graph import rule_route
+    from sdi.orchestrator.methods import METHODS
+
+    hybrid = METHODS["Hybrid"]
+    ik = {"failure": {"error_type": "ik", "scenario": None}}
+    assert rule_route({**ik, "tried": ["shift", "shift", "flatten"]}, hybrid) == "spread"
+    assert rule_route({**ik, "tried": ["shift", "shift", "flatten", "spread"]}, hybrid) == "modify"
+    region = {"failure": {"error_type": "collision", "scenario": "env_collision"}}
+    assert rule_route({**region, "tried": ["shift", "flatten"]}, hybrid) == "modify"
+
+
 def test_flatten_keeps_the_command_structure_first():
     from sdi.recovery import reshape
 

@@ -9,11 +9,15 @@ Every suite's case runs what the system does, unchanged, and judges the outcome 
   accepted; *detected* = the Inspector's first verdict after it is a failure (or the review
   lists violations); *corrected* = the run came back to a review with a layout that passes
   `verify` (checked again here); *edit kept* = every part the operator touched is where they
-  put it (removed parts stay removed; an order edit survives in the sequence); *shape kept* =
+  put it (removed parts stay removed; an order edit survives in the sequence); *as close* =
+  kept, or, where the edit cannot be kept, no feasible pose is nearer the operator's target than
+  the repaired one by more than a grid step (`_as_close`); *shape kept* =
   the final layout still has the command's structure signature.
 - ``failures``: run the command unattended with the scenario's blocked regions. *hit* = an
   execution failed at least once; *recovered* = the run ended ``success``; *shape kept* = the
-  layout built still has the command's signature; *stated* = a changed layout comes with notes.
+  layout built still has the command's signature; *stated* = a changed layout comes with notes;
+  *keepable* = some placement of the commanded structure keeps its signature, clears the
+  scenario's regions and plans (`sdi.bench.keepable`, computed, not declared).
 - ``motion``: plan, commission on one arm (and on both for dual-arm cases), execute in
   PyBullet with monitoring (paper Table VI).
 
@@ -35,6 +39,7 @@ from contextlib import ExitStack
 from pathlib import Path
 from typing import Any, Literal
 
+import numpy as np
 from pydantic import BaseModel, ConfigDict
 
 from sdi.bench import shape_checks
@@ -250,6 +255,143 @@ def _kept(before: Layout, after: Layout, seq0: list[str], seq1: list[str], edits
     return True
 
 
+CLOSE_STEP = 0.005
+"""The grid (m) on which `_as_close` looks for a feasible pose nearer the operator's target."""
+
+CLOSE_MAX_VERIFIED = 400
+"""How many nearer candidates `_as_close` verifies before it gives up (and says no)."""
+
+
+def _as_close(before: Layout, after: Layout, seq1: list[str], edits: Any, cell: CellConfig) -> bool:
+    """Is every part the operator touched as close to where they put it as any feasible pose?
+
+    The second, weaker measure beside `_kept`, for edits whose target cannot be kept (a part
+    put outside the workspace). Parts one batch moved by the same displacement move as one
+    group (the operator moved a row). A group is as close as possible if no rigid move of it
+    from the operator's target, shorter than the repair's (its farthest part) by more than
+    `CLOSE_STEP`, gives a layout — the rest as repaired — that the Inspector passes; candidate
+    moves lie on a `CLOSE_STEP` grid sideways and rest the group on the table or on a part's
+    top. Removed parts stay removed; of the move-before pairs an order edit asked for, every
+    one the supports allow is kept (a later part that holds the earlier one up cannot)."""
+    from sdi.errors import InputError
+    from sdi.inspector.analysis import Analysis
+    from sdi.inspector.verifier import verify
+    from sdi.model.part import Part
+    from sdi.orchestrator.edits import apply_edits
+
+    geometric = [e for e in edits if e.get("op") != "sequence"]
+    now = {p.id: p for p in after.objects}
+    if geometric:
+        try:
+            wanted = {p.id: p for p in apply_edits(before, list(geometric)).objects}
+        except InputError:
+            return False
+        old = {p.id: p for p in before.objects}
+        groups: dict[tuple[Any, ...], list[str]] = {}
+        for e in geometric:
+            pid = str(e.get("id"))
+            if e.get("op") == "remove":
+                if pid in now:
+                    return False
+                continue
+            if pid not in now:
+                return False
+            key = (tuple(np.round(np.subtract(wanted[pid].position, old[pid].position), 6))
+                   if pid in old else ("inserted", pid))  # fmt: skip
+            group = groups.setdefault(key, [])
+            if pid not in group:
+                group.append(pid)
+        for ids in groups.values():
+            if not _group_as_close(after, wanted, ids, cell, verify, Part):
+                return False
+    for e in edits:
+        if e.get("op") != "sequence" or "move" not in e:
+            continue
+        moving = [e["move"]] if isinstance(e["move"], str) else list(e["move"])
+        then = e["before"] if isinstance(e["before"], str) else e["before"][0]
+        at = {pid: k for k, pid in enumerate(seq1)}
+        held = _holds_up(Analysis(after, cell))
+        for m in moving:
+            if m in at and then in at and at[m] > at[then] and then not in held.get(m, set()):
+                return False
+    return True
+
+
+def _holds_up(a: Any) -> dict[str, set[str]]:
+    """Part id → every part under it, transitively (what must be placed before it)."""
+    ids = a.layout.ids
+    below: dict[str, set[str]] = {}
+    for lo, up in a.graph.support_edges.tolist():
+        below.setdefault(ids[up], set()).add(ids[lo])
+    out: dict[str, set[str]] = {}
+
+    def visit(pid: str) -> set[str]:
+        if pid not in out:
+            out[pid] = set()
+            for q in below.get(pid, ()):
+                out[pid] |= {q, *visit(q)}
+        return out[pid]
+
+    for pid in ids:
+        visit(pid)
+    return out
+
+
+def _group_as_close(
+    after: Layout, wanted: dict[str, Any], ids: list[str], cell: CellConfig, verify: Any,
+    part: Any,
+) -> bool:  # fmt: skip
+    """`_as_close` for one group of touched parts (see there)."""
+    reached = max(math.dist(after.part(pid).position, wanted[pid].position) for pid in ids)
+    if reached <= EDIT_TOLERANCE:
+        return True
+    limit = reached - CLOSE_STEP
+    if limit <= 0:
+        return True
+    rest = [p for p in after.objects if p.id not in ids]
+    T = np.array([wanted[pid].position for pid in ids])
+    half = np.array([np.asarray(wanted[pid].size) / 2 for pid in ids])  # upright parts
+    bottom0 = float((T[:, 2] - half[:, 2]).min())
+    ws = cell.workspace
+    lo_ws, hi_ws = np.array(ws.lower), np.array(ws.upper)
+    k = int(limit / CLOSE_STEP) + 1
+    steps = np.arange(-k, k + 1) * CLOSE_STEP
+    candidates: list[tuple[float, float, float, float]] = []
+    rc = np.array([p.position for p in rest]) if rest else np.zeros((0, 3))
+    rh = np.array([np.asarray(p.size) / 2 for p in rest]) if rest else np.zeros((0, 3))
+    for dx in steps:
+        for dy in steps:
+            if math.hypot(dx, dy) >= limit:
+                continue
+            c = T + np.array([dx, dy, 0.0])
+            if np.any(c[:, :2] - half[:, :2] < lo_ws[:2] - 1e-9) or np.any(
+                c[:, :2] + half[:, :2] > hi_ws[:2] + 1e-9
+            ):
+                continue
+            bottoms = {0.0}
+            for j in range(len(rest)):
+                if np.any(np.all(np.abs(c[:, :2] - rc[j, :2]) < half[:, :2] + rh[j, :2] - 1e-6,
+                                 axis=1)):  # fmt: skip
+                    bottoms.add(float(rc[j, 2] + rh[j, 2]))
+            for b in bottoms:
+                dz = b - bottom0
+                d = math.sqrt(dx * dx + dy * dy + dz * dz)
+                if d < limit:
+                    candidates.append((d, float(dx), float(dy), dz))
+    candidates.sort()
+    for n, (_, dx, dy, dz) in enumerate(candidates):
+        if n >= CLOSE_MAX_VERIFIED:
+            return False  # not shown to be the nearest
+        moved = [
+            part(id=pid, position=tuple(float(v) for v in T[i] + (dx, dy, dz)),
+                 orientation=wanted[pid].orientation, size=wanted[pid].size)
+            for i, pid in enumerate(ids)
+        ]  # fmt: skip
+        if verify(Layout(objects=(*rest, *moved)), cell).passed:
+            return False  # a feasible pose nearer the operator's target
+    return True
+
+
 OPERATOR_CHOICES = ("repair", "keep", "minimal_repair")
 """If a review offers choices after an edit, the benchmark's operator takes the first of these
 on offer (the repair that keeps the edit), else the first offered."""
@@ -311,6 +453,9 @@ def _human_mods(
             passes = final is not None and verify(final, cell).passed
             corrected = bool(detected and at_review and passes)
             kept = bool(corrected and final is not None and _kept(before, final, seq0, seq1, edits))
+            close = kept or bool(
+                corrected and final is not None and _as_close(before, final, seq1, edits, cell)
+            )
             notes = list(s.state.get("notes") or [])[notes0:]
             fields |= {
                 "entered": not refused,
@@ -318,6 +463,7 @@ def _human_mods(
                 "detected": detected,
                 "corrected": corrected,
                 "edit_kept": kept,
+                "edit_as_close": close,
                 "shape_kept": bool(passes and final is not None and signature(final) is None),
                 "reverted": bool(final is not None and final == before and seq1 == seq0),
                 "status": s.status,
@@ -334,6 +480,7 @@ def _human_mods(
 def _failures(
     case: Case, method: str | None, model: ChatModel | None, config: RunConfig
 ) -> tuple[dict[str, Any], Built]:
+    from sdi.bench.keepable import case_keepable
     from sdi.execute.record import layout_hash
     from sdi.orchestrator.runner import Orchestrator
 
@@ -367,8 +514,11 @@ def _failures(
     final = _layout(s.state.get("layout"), cell)
     changed = bool(final is not None and first_design and layout_hash(final) != first_design)
     notes = list(s.state.get("notes") or [])
+    can = case_keepable(case.command, case.shape, case.scenario, cell)
     fields = {
         "scenario": case.scenario,
+        "keepable": can.possible,
+        "keepable_reason": can.reason,
         "hit": hit,
         "recovered": recovered,
         "shape_kept": bool(recovered and final is not None and signature(final) is None),

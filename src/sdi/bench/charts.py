@@ -56,11 +56,13 @@ def chart(suite: str, summary: dict[str, Any]) -> bytes:
     if suite in ("human-mods", "failures"):
         totals = {m: t for m, t in summary["totals"].items() if t != "n/a"}
         keys = (
-            [("detected", "detected"), ("corrected", "corrected"), ("edit_kept", "edit kept")]
+            [("detected", "detected"), ("corrected", "corrected"), ("edit_kept", "edit kept"),
+             ("edit_as_close", "kept as close as possible")]
             if suite == "human-mods"
-            else [("recovered", "recovered"), ("shape_kept", "shape kept")]
-        )
-        series = {name: [t[k] for t in totals.values()] for k, name in keys}
+            else [("recovered", "recovered"), ("shape_kept", "shape kept"),
+                  ("keepable", "shape can be kept")]
+        )  # fmt: skip
+        series = {name: [t.get(k, 0) for t in totals.values()] for k, name in keys}
         top = max([t["runs"] for t in totals.values()] or [1]) + 0.5
         title = (
             "Table IV: invalid human modifications"

@@ -172,7 +172,7 @@ def _commands_md(summary: dict[str, Any]) -> str:
 
 # -- Table IV ----------------------------------------------------------------------------------
 
-_IV_KEYS = ("detected", "corrected", "edit_kept", "shape_kept")
+_IV_KEYS = ("detected", "corrected", "edit_kept", "edit_as_close", "shape_kept")
 
 
 def _human_mods(results: Sequence[CaseResult]) -> dict[str, Any]:
@@ -232,7 +232,9 @@ def _human_mods_md(summary: dict[str, Any]) -> str:
     names = list(summary["totals"])
     head = ["Human modification", "Type", "Steps (paper / built)", *_head(names)]
     lines = [
-        "Each cell: detected / corrected / operator's edit kept.",
+        "Each cell: detected / corrected / operator's edit kept / kept as close as possible "
+        "(where the edit cannot be kept, e.g. a part put outside the workspace: no feasible pose "
+        "is nearer the operator's target than the repaired one by more than a 5 mm grid step).",
         "",
         "| " + " | ".join(head) + " |",
         "|---|---|---:|" + ":---:|" * len(names),
@@ -247,13 +249,17 @@ def _human_mods_md(summary: dict[str, Any]) -> str:
         for n in names:
             c = row["methods"][n]
             cells.append(
-                "n/a" if c == "n/a" else f"{c['detected']} / {c['corrected']} / {c['edit_kept']}"
+                "n/a"
+                if c == "n/a"
+                else f"{c['detected']} / {c['corrected']} / {c['edit_kept']} / "
+                f"{c.get('edit_as_close', '–')}"
             )
         lines.append(f"| {row['name']} | {row['type']} | {steps} | " + " | ".join(cells) + " |")
     for key, title in (
         ("detected", "Detected"),
         ("corrected", "Corrected"),
         ("edit_kept", "Edit kept"),
+        ("edit_as_close", "Edit kept as close as possible"),
         ("stated", "Correction stated in notes"),
     ):
         cells = []
@@ -297,6 +303,11 @@ def _failures(results: Sequence[CaseResult]) -> dict[str, Any]:
             "name": case.label,
             "error": case.error,
             "command": case.command,
+            "keepable": _keepable(rs),
+            "keepable_reason": next(
+                (str(r.fields["keepable_reason"]) for r in rs if r.fields.get("keepable_reason")),
+                None,
+            ),
             "methods": {},
         }
         for m in methods:
@@ -317,9 +328,12 @@ def _failures(results: Sequence[CaseResult]) -> dict[str, Any]:
             totals[label(m)] = "n/a"
             continue
         changed = [r for r in done if _ok(r, "recovered") and _ok(r, "changed")]
+        can = [r for r in done if r.fields.get("keepable")]
         totals[label(m)] = {
             "runs": len(done),
             **{k: sum(_ok(r, k) for r in done) for k in _V_KEYS},
+            "keepable": len(can),
+            "kept_where_keepable": sum(_ok(r, "shape_kept") for r in can),
             "changed_and_recovered": len(changed),
             "stated": sum(bool(r.fields.get("notes")) for r in changed),
             "physics": _physics(done),
@@ -327,42 +341,72 @@ def _failures(results: Sequence[CaseResult]) -> dict[str, Any]:
     return {"rows": rows, "totals": totals}
 
 
+def _keepable(rs: Sequence[CaseResult]) -> bool | None:
+    """The case's computed answer (the same for every method), or None if not recorded."""
+    values = {bool(r.fields["keepable"]) for r in rs if "keepable" in r.fields}
+    return values.pop() if len(values) == 1 else None
+
+
 def _failures_md(summary: dict[str, Any]) -> str:
     names = list(summary["totals"])
-    head = ["Scenario", "Error type", *_head(names)]
+    head = ["Scenario", "Error type", "Shape can be kept (computed)", *_head(names)]
     lines = [
-        "Each cell: recovered / commanded shape kept.",
+        "Each cell: recovered / commanded shape kept. *Shape can be kept* is computed "
+        "(`sdi.bench.keepable`): some quarter turn and placement on a 5 mm grid of the planned "
+        "structure (packed, or with the gaps the `spread` recovery opens) keeps the shape "
+        "signature, lies in the workspace, stays the recovery's margin clear of every blocked "
+        "region, and can be commissioned by the arms.",
         "",
         "| " + " | ".join(head) + " |",
-        "|---|---|" + ":---:|" * len(names),
+        "|---|---|:---:|" + ":---:|" * len(names),
     ]
+    reasons: list[str] = []
     for row in summary["rows"]:
         cells = []
         for n in names:
             c = row["methods"][n]
             cells.append("n/a" if c == "n/a" else f"{c['recovered']} / {c['shape_kept']}")
-        lines.append(f"| {row['name']} | {row['error']} | " + " | ".join(cells) + " |")
+        can = row.get("keepable")
+        mark = "–" if can is None else "✓" if can else "✗"
+        if can is False and row.get("keepable_reason"):
+            reasons.append(f"{row['name']}: {row['keepable_reason']}")
+            mark += f" {_SUP[len(reasons)]}" if len(reasons) < len(_SUP) else ""
+        lines.append(f"| {row['name']} | {row['error']} | {mark} | " + " | ".join(cells) + " |")
 
     def total(key: str, of: str = "runs") -> list[str]:
         return ["n/a" if t == "n/a" else _frac(t[key], t[of]) for t in summary["totals"].values()]
 
-    lines.append("| **Recovered** | | " + " | ".join(total("recovered")) + " |")
-    lines.append("| **Shape kept** | | " + " | ".join(total("shape_kept")) + " |")
+    lines.append("| **Recovered** | | | " + " | ".join(total("recovered")) + " |")
+    lines.append("| **Shape kept** | | | " + " | ".join(total("shape_kept")) + " |")
+    if any(t != "n/a" and "keepable" in t for t in summary["totals"].values()):
+        lines.append(
+            "| **Shape kept where it can be kept** | | | "
+            + " | ".join(total("kept_where_keepable", "keepable"))
+            + " |"
+        )
     lines.append(
-        "| **Change stated in notes** (of recovered with a changed layout) | | "
+        "| **Change stated in notes** (of recovered with a changed layout) | | | "
         + " | ".join(total("stated", "changed_and_recovered"))
         + " |"
     )
     lines.append(
-        "| Failure injected (the command hit its region) | | " + " | ".join(total("hit")) + " |"
+        "| Failure injected (the command hit its region) | | | " + " | ".join(total("hit")) + " |"
     )
     if any(t != "n/a" and t.get("physics") for t in summary["totals"].values()):
         cells = [
             "n/a" if t == "n/a" else _stands_cell(t.get("physics"))
             for t in summary["totals"].values()
         ]
-        lines.append("| **Recovered layouts that stand (physics)** | | " + " | ".join(cells) + " |")
+        lines.append(
+            "| **Recovered layouts that stand (physics)** | | | " + " | ".join(cells) + " |"
+        )
+    for k, reason in enumerate(reasons[: len(_SUP) - 1], start=1):
+        lines += ["", f"{_SUP[k]} {reason}."]
     return "\n".join(lines)
+
+
+_SUP = " ¹²³⁴⁵⁶⁷⁸⁹"
+"""Footnote marks (index 1…9)."""
 
 
 # -- Table VI ----------------------------------------------------------------------------------

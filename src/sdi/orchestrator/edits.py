@@ -46,6 +46,7 @@ class Edited:
     sequence: tuple[str, ...] | None
     touched: tuple[str, ...]
     removed: tuple[str, ...]
+    asked: tuple[tuple[str, str], ...] = ()  # (earlier, later): the move-before edits' pairs
 
 
 def _ids(edit: dict[str, Any], key: str, k: int, known: list[str]) -> list[str]:
@@ -111,6 +112,7 @@ def edit(
     ordered = False
     touched: list[str] = []
     removed: list[str] = []
+    asked: list[tuple[str, str]] = []
     for k, item in enumerate(edits):
         if not isinstance(item, dict):
             raise InputError("must be an object with an 'op'", field=f"edits[{k}]")
@@ -118,6 +120,10 @@ def edit(
         if op == "sequence":
             placing = _reordered(item, k, placing)
             ordered = True
+            if "move" in item:
+                moving = [item["move"]] if isinstance(item["move"], str) else item["move"]
+                then = item["before"] if isinstance(item["before"], str) else item["before"][0]
+                asked += [(str(m), str(then)) for m in moving if (str(m), str(then)) not in asked]
             continue
         raw = item.get("id")
         pid = raw if isinstance(raw, str) else ""
@@ -174,6 +180,7 @@ def edit(
         sequence=tuple(placing) if ordered else None,
         touched=tuple(pid for pid in touched if pid in parts),
         removed=tuple(removed),
+        asked=tuple((a, b) for a, b in asked if a in parts and b in parts),
     )
 
 

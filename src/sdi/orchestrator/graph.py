@@ -82,7 +82,9 @@ from sdi.recovery.repair import repair_edit
 from sdi.skills.builtin import default_registry
 from sdi.spec.structure_spec import Spec
 
-ACTIONS = ("shift", "flatten", "modify", "relax", "escalate")
+ACTIONS = ("shift", "flatten", "spread", "modify", "relax", "escalate")
+SKILLS = ("shift", "flatten", "spread")
+"""The geometric recovery skills (`sdi.recovery`); methods without recovery never use them."""
 
 
 class RoutingError(SDIError):
@@ -275,6 +277,10 @@ def rule_route(state: RunState, method: Method) -> str:
                                        and failure.get("error_type") == "ik"
                                        and not failure.get("scenario")):  # fmt: skip
                 return action
+        # no arm could take a part where it stands, and moving did not help: open gaps
+        if failure.get("error_type") == "ik" and not failure.get("scenario") \
+                and "spread" not in tried:  # fmt: skip
+            return "spread"
     if "modify" not in tried or tried.count("modify") < 2:
         return "modify"
     if method.specifier and not state.get("relaxed"):
@@ -287,7 +293,7 @@ def llm_route(state: RunState, ctx: RunContext) -> str:
     fallback = rule_route(state, ctx.method)
     if ctx.model is None:
         return fallback
-    allowed = [a for a in ACTIONS if ctx.method.recovery or a not in ("shift", "flatten")]
+    allowed = [a for a in ACTIONS if ctx.method.recovery or a not in SKILLS]
     prompt = (
         "A robot assembly plan failed. Choose the next action from "
         f'{allowed} and answer JSON {{"action": ...}}.\n'
@@ -488,12 +494,13 @@ def _start_edit(
         return {"notes": [f"edit refused: {exc}"], "review_note": str(exc)}
     before = (base or {}).get("before") or layout.to_json_dict()
     touched = sorted({*((base or {}).get("touched") or []), *edited.touched})
+    asked = [*((base or {}).get("asked") or []), *(list(p) for p in edited.asked)]
     operator = edited.layout.to_json_dict()
     return {
         "layout": operator,
         "operator_sequence": list(edited.sequence) if edited.sequence is not None else None,
         "edit": {"status": "checking", "before": before, "operator": operator,
-                 "touched": touched, "removed": list(edited.removed),
+                 "touched": touched, "removed": list(edited.removed), "asked": asked,
                  "sequence": list(edited.sequence) if edited.sequence is not None else None},
         "edit_outcome": None, "review_note": None, "phase": "inspect",
     }  # fmt: skip
@@ -507,7 +514,8 @@ def _refused_edit(
     wanted = pending.get("sequence")
     before, _ = parse_layout(pending["before"], max_parts=cell.limits.max_parts)
     touched = pending.get("touched") or ()
-    fix = repair_edit(layout, cell, touched=touched, sequence=wanted, original=before)
+    asked = [(str(a), str(b)) for a, b in pending.get("asked") or ()]
+    fix = repair_edit(layout, cell, touched=touched, sequence=wanted, original=before, asked=asked)
     repair: dict[str, Any] | None = None
     if fix is not None:
         repair = {"layout": fix.layout.to_json_dict(), "sequence": list(fix.sequence),
@@ -787,7 +795,7 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
         action = llm_route(state, ctx)
     else:
         action = rule_route(state, method)
-        if method.orchestration == "pge" and action in ("shift", "flatten", "relax"):
+        if method.orchestration == "pge" and action in (*SKILLS, "relax"):
             action = "modify"
     by_rules = ctx.model is None or method.orchestration not in ("langgraph", "hybrid")
     say(state, ctx, "orchestrator", "orchestrator", "route", {"action": action, "replan": replans})
@@ -797,17 +805,20 @@ def replan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     avoid = _avoid(state, ctx.cell)
     update["avoid"] = avoid
     blocked = _blocked(state, avoid)
-    if action in ("shift", "flatten") and layout is not None:
+    if action in SKILLS and layout is not None:
         spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
+        # spread commissions its result, the real test of reach: the places learned from IK
+        # failures (which may have been a grip no arm could take, not a place) do not bind it
+        regions = _blocked(state, []) if action == "spread" else blocked
         try:
-            repaired, recovery = recover(action, layout, ctx.cell, blocked, spec)
+            repaired, recovery = recover(action, layout, ctx.cell, regions, spec, arms=ctx.arms)
         except InfeasibleError as exc:
             update["notes"] = [*state.get("notes", []), f"{action}: {exc}"]
             if by_rules:  # not tried, so not counted: the rules never choose it twice
                 update["replans"] = state.get("replans", 0)
             return {**update, "phase": "replan"}
         return {**update, **_recovered(state, ctx, layout, repaired, recovery), "phase": "inspect"}
-    if action in ("shift", "flatten"):
+    if action in SKILLS:
         return {**update, "phase": "replan"}
     if action == "modify":
         return {**update, "phase": "modify"}

@@ -3,14 +3,15 @@ from → to), whether the *shape* changed, and the part-by-part diff from the fa
 
 The orchestrator puts it in the run's notes, its JSON (`recoveries`), the audit trail (a
 `recovery` event) and, when the shape changed, in front of the operator for approval.
-`recover` runs the skill REPLAN chose; `rule_replan` is the rule-based baselines' replan (the
-paper's MultiAgent-RuleOrch): translate away from a workspace or collision region, lower under
-a height limit, nothing else.
+`recover` runs the skill REPLAN chose (shift, flatten, spread); `rule_replan` is the rule-based
+baselines' replan (the paper's MultiAgent-RuleOrch): translate away from a workspace or
+collision region, lower under a height limit, nothing else.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from pydantic import BaseModel, ConfigDict
 
@@ -23,6 +24,7 @@ from sdi.model.region import Region
 from sdi.recovery.flatten import flatten
 from sdi.recovery.reshape import reshape
 from sdi.recovery.shift import shift_search
+from sdi.recovery.spread import spread
 from sdi.spec.structure_spec import Spec
 
 
@@ -31,7 +33,7 @@ class RecoveryOutcome(BaseModel):
 
     model_config = ConfigDict(frozen=True)
 
-    action: str  # shift | flatten | rule-replan
+    action: str  # shift | flatten | spread | rule-replan
     summary: str  # one line for people
     shape_changed: bool
     moved_by_m: tuple[float, float] | None = None
@@ -40,6 +42,7 @@ class RecoveryOutcome(BaseModel):
     flattened_from: str | None = None
     flattened_to: str | None = None
     survival: float | None = None  # share of the command kept (reshape), 0…1
+    gap_m: float | None = None  # the gap opened between neighbouring parts (spread)
     changes: tuple[PartChange, ...] = ()  # part by part, from the failed layout
 
 
@@ -59,16 +62,36 @@ def recover(
     cell: CellConfig,
     blocked: tuple[Region, ...],
     spec: Spec | None = None,
+    *,
+    arms: Sequence[str] | None = None,
 ) -> tuple[Layout, RecoveryOutcome]:
-    """Run `shift` or `flatten` (reshape first) on the failed layout; `InfeasibleError` if the
-    skill cannot clear `blocked`, or if its result would be the failed layout unchanged."""
+    """Run `shift`, `flatten` (reshape first) or `spread` on the failed layout;
+    `InfeasibleError` if the skill cannot clear `blocked`, or if its result would be the failed
+    layout unchanged. `arms` are the arms `spread` commissions for (default: the cell's).
+
+    A shift that had to turn a structure off the axis its command named is a changed shape (the
+    operator approves it); a plain move, or a turn of a structure without a named axis, is not."""
     if action == "shift":
         shifted = shift_search(layout, cell, blocked=blocked)
         result = shifted.layout
+        axis = _turned_axis(spec, shifted.yaw_deg)
+        summary = f"shift: {shifted.describe()}"
+        if axis is not None:
+            summary += f"; it now runs along {axis[1]}, not along {axis[0]} as commanded"
         outcome = RecoveryOutcome(
-            action="shift", summary=f"shift: {shifted.describe()}", shape_changed=False,
+            action="shift", summary=summary, shape_changed=axis is not None,
             moved_by_m=(shifted.dx, shifted.dy), turned_deg=shifted.yaw_deg,
             margin_m=round(shifted.margin, 6),
+        )  # fmt: skip
+    elif action == "spread":
+        spreaded = spread(layout, cell, blocked=blocked, arms=arms)
+        result = spreaded.layout
+        moved = spreaded.shifted
+        outcome = RecoveryOutcome(
+            action="spread", summary=f"spread: {spreaded.describe()}", shape_changed=True,
+            moved_by_m=(moved.dx, moved.dy) if moved else None,
+            turned_deg=moved.yaw_deg if moved else None,
+            margin_m=round(moved.margin, 6) if moved else None, gap_m=spreaded.gap,
         )  # fmt: skip
     elif action == "flatten":
         shaped = reshape(spec, layout, cell, z_max=height_limit(blocked, layout, cell),
@@ -81,6 +104,18 @@ def recover(
     else:
         raise InfeasibleError(f"action: no recovery skill {action!r}", parameter="action")
     return _stated(layout, result, outcome)
+
+
+def _turned_axis(spec: Spec | None, yaw_deg: float) -> tuple[str, str] | None:
+    """(commanded axis, axis now) if a quarter turn by `yaw_deg` moved a structure off the axis
+    its command named ("a row along the y axis"), else None: then the turn is a changed shape."""
+    if spec is None or round(yaw_deg) % 180 == 0:
+        return None
+    for s in spec.structures:
+        axis = getattr(s, "axis", None)
+        if axis in ("x", "y"):
+            return axis, "y" if axis == "x" else "x"
+    return None
 
 
 def rule_replan(

@@ -1,13 +1,16 @@
 """ξ_shift: translate (and, if that is what it takes, turn) a whole structure out of blocked
 regions, by the smallest change.
 
-Without an explicit (dx, dy) it searches translations on a `step` grid for every quarter-turn
-yaw of the structure about its footprint centre (0° first), and keeps the cheapest one (the
-move's length, plus `TURN_COST` per quarter turn) that keeps every part inside the workspace and
-at least `margin` away from every blocked region. The margin (default: the placement clearance
-the robot leaves beside neighbours plus the contact tolerance) keeps a structure set down with
-its small placement gap from re-entering the region it was moved out of. A layout that already
-clears every region is not "shifted" by (0, 0): that would run the failed layout again.
+Without an explicit (dx, dy) it searches translations on a `step` grid, in every direction, for
+every quarter-turn yaw of the structure about its footprint centre (0° first), and keeps the
+cheapest one that keeps every part inside the workspace and at least `margin` away from every
+blocked region. A turn is tried only when no plain move clears the regions: it changes how the
+structure faces — for a row or wall the command named along an axis, the command itself — so any
+move inside the workspace is the smaller change (`turn_cost`). The margin (default: the
+placement clearance the robot leaves beside neighbours plus the contact tolerance) keeps a
+structure set down with its small placement gap from re-entering the region it was moved out of.
+A layout that already clears every region is not "shifted" by (0, 0): that would run the failed
+layout again.
 """
 
 from __future__ import annotations
@@ -23,9 +26,12 @@ from sdi.model.layout import Layout
 from sdi.model.part import Part, quat_from_yaw
 from sdi.model.region import Region
 
-TURN_COST = 0.05
-"""What a quarter turn of the whole structure costs in the search, as metres of translation:
-a turn changes how the structure faces, so a plain move of up to 5 cm is preferred to it."""
+
+def turn_cost(cell: CellConfig) -> float:
+    """What a quarter turn of the whole structure costs in the search, as metres of translation:
+    more than the workspace's diagonal, so every plain move is preferred to a turn."""
+    ws = cell.workspace
+    return math.hypot(ws.x_max - ws.x_min, ws.y_max - ws.y_min) + 0.01
 
 
 @dataclass(frozen=True)
@@ -154,7 +160,8 @@ def shift_search(
     best: tuple[float, float, float, float, Layout] | None = None
     for yaw in yaws:
         candidate = turned(layout, yaw)
-        cost0 = TURN_COST * round((yaw % 360) / 90 if yaw % 360 <= 180 else (360 - yaw) / 90)
+        quarters = round((yaw % 360) / 90 if yaw % 360 <= 180 else (360 - yaw % 360) / 90)
+        cost0 = turn_cost(cell) * quarters
         if best is not None and cost0 >= best[0]:
             continue
         lo = candidate.centres - candidate.half_extents
