@@ -271,7 +271,12 @@ def test_a_failure_report_is_answered_with_a_recovery_skill(tmp_path):
     run_id = status["run_id"]
     status = json.loads(sdi("resume", run_id, "--approve", "--json", "--db", str(db)).stdout)
     assert status["waiting_for"]["kind"] == "failure_report"  # δ breached ε
-    assert [k["name"] for k in status["waiting_for"]["skills"]] == ["shift", "flatten", "modify"]
+    assert [k["name"] for k in status["waiting_for"]["skills"]] == [
+        "shift",
+        "flatten",
+        "spread",
+        "modify",
+    ]
     proc = sdi("resume", run_id, "--recover", "teleport", "--json", "--db", str(db))
     assert proc.returncode == 2  # not offered: the report waits again, saying why
     assert (

@@ -350,7 +350,7 @@ def test_a_delta_breach_stops_the_robots_and_raises_the_failure_report(twin: Twi
     # the report offers the orchestrator's options: its recovery skills, retry, edit, abort
     waiting = view["waiting_for"]
     assert waiting["choices"] == ["recover", "retry", "edit", "abort"]
-    assert [k["name"] for k in waiting["skills"]] == ["shift", "flatten", "modify"]
+    assert [k["name"] for k in waiting["skills"]] == ["shift", "flatten", "spread", "modify"]
     assert view["review"] is not None  # the failed layout, open in the editor
 
 

@@ -197,7 +197,7 @@ def test_a_delta_breach_raises_the_failure_report_with_its_options(
         wait(page, "T.deltaPoints.some(p => p[1] > T.scene.epsilon_rad)")
         skills = state(page, "[...document.querySelectorAll('#skills button')]"
                        ".map(b => b.textContent)")  # fmt: skip
-        assert skills == ["shift", "flatten", "modify"]
+        assert skills == ["shift", "flatten", "spread", "modify"]
         for button in ("#retry", "#edit-failed", "#fail-abort"):
             assert page.is_visible(button)
         shot(page, shots / "8-delta-breach.png")

@@ -1052,7 +1052,7 @@ def resume_cmd(
         typer.Option(
             "--recover",
             help="answer a failure report: run one of the recovery skills it offers "
-            "(shift, flatten, modify)",
+            "(shift, flatten, spread, modify)",
         ),
     ] = None,
     choose: Annotated[

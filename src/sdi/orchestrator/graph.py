@@ -917,9 +917,10 @@ FAILURE_CHOICES = ("recover", "retry", "edit", "abort")
 (``{"action": "recover", "skill": …}``), plan the command again (retry), edit the failed layout
 (``{"action": "edit", "edits": […]}``), or abort."""
 
-SKILLS = {
+SKILL_DOES = {
     "shift": "move the layout clear of the blocked regions (same shape)",
     "flatten": "lower the structure under the height limit (changes the shape)",
+    "spread": "open gaps between the parts so the grippers reach them (changes the spacing)",
     "modify": "the Designer redesigns from the failed layout",
 }
 """The recovery skills an operator may pick at a failure report, as REPLAN names them."""
@@ -933,6 +934,7 @@ def recovery_skills(state: RunState, method: Method) -> list[str]:
         scenario = SCENARIOS.get((state.get("failure") or {}).get("scenario") or "")
         height = scenario is not None and any(r.z_min is not None for r in scenario.regions)
         skills += ["flatten", "shift"] if height else ["shift", "flatten"]
+        skills.append("spread")
     return [*skills, "modify"]
 
 
@@ -971,7 +973,7 @@ def failure_report_node(state: RunState, runtime: Rt) -> dict[str, Any]:
             "refused": state.get("review_note"),
             "layout": state.get("layout"),
             "choices": list(FAILURE_CHOICES),
-            "skills": [{"name": k, "does": SKILLS[k]} for k in skills],
+            "skills": [{"name": k, "does": SKILL_DOES[k]} for k in skills],
         }
     )
     say(state, ctx, "human", "orchestrator", "failure_decision", decision)
