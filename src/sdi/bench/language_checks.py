@@ -707,3 +707,183 @@ def low(n: int) -> Check:
 def few(n_lo: int, n_hi: int, check: Check) -> Pred:
     """Between n_lo and n_hi separate structures, each passing `check`."""
     return any_of(*[each(n, check) for n in range(n_lo, n_hi + 1)])
+
+
+# -- checks several development sets share (each moved here from the sets that had copies)
+
+_L, _R, _F, _B = SIDES
+
+
+def anything(result: Mapping[str, Any]) -> Reason:
+    """Some layout, inside the workspace, standing on the table."""
+    bs = bx.boxes(result)
+    if not bs:
+        return "no layout"
+    if not bx.in_workspace(bs):
+        return "a part outside the workspace"
+    return on_table(bs)
+
+
+def bare_bridge(bs: Boxes) -> Reason:
+    """A bridge whose topmost parts all span the gap (nothing yet standing on the span)."""
+    r = bridge()(bs)
+    if r:
+        return r
+    z = max(round(b.lo[2], 3) for b in bs)
+    tops = [b for b in bs if round(b.lo[2], 3) == z]
+    spanning = {id(s.part) for s in bx.spans(bs)}
+    return None if all(id(b) in spanning for b in tops) else "something stands on the span"
+
+
+def centred(tol: float = 0.03) -> Check:
+    """Everything above the bottom level is centred (± tol) over the bottom level."""
+
+    def f(bs: Boxes) -> Reason:
+        z0 = min(b.lo[2] for b in bs)
+        bottom = [b for b in bs if b.lo[2] <= z0 + bx.TOL]
+        upper = [b for b in bs if b.lo[2] > z0 + bx.TOL]
+        if not upper:
+            return "nothing on top"
+        (ux, uy), (bx0, by0) = bx.centre(upper), bx.centre(bottom)
+        if abs(ux - bx0) > tol or abs(uy - by0) > tol:
+            return f"top centred at ({ux:.3f}, {uy:.3f}), base at ({bx0:.3f}, {by0:.3f})"
+        return None
+
+    return f
+
+
+def corner_columns(extra: int) -> Check:
+    """Everything above the bottom level is four columns of `extra` parts, one on each corner
+    cell of the structure's footprint."""
+
+    def f(bs: Boxes) -> Reason:
+        z0 = min(b.lo[2] for b in bs)
+        upper = [b for b in bs if b.lo[2] > z0 + bx.TOL]
+        cols = bx.columns(upper)
+        if len(cols) != 4:
+            return f"{len(cols)} columns on top, want 4 (one per corner)"
+        lo, hi = bx.bounds(bs)
+        corners = {
+            (round(x, 3), round(y, 3))
+            for x in (lo[0] + bx.CUBE / 2, hi[0] - bx.CUBE / 2)
+            for y in (lo[1] + bx.CUBE / 2, hi[1] - bx.CUBE / 2)
+        }
+        got = set()
+        for col in cols:
+            x, y, _ = col[0].centre
+            hit = [c for c in corners if abs(c[0] - x) <= 0.01 and abs(c[1] - y) <= 0.01]
+            if not hit:
+                return f"a column at ({x:.3f}, {y:.3f}) is not on a corner"
+            got.add(hit[0])
+            if len(col) != extra:
+                return f"a corner column of {len(col)}, want {extra}"
+        return None if len(got) == 4 else "two columns on one corner"
+
+    return f
+
+
+def holding(inner: Check, outer: Check) -> Check:
+    """One structure: an `outer` ring (the parts on the footprint's border cells) with
+    `inner` standing inside it, touching the ring's walls (so both are one structure)."""
+
+    def f(bs: Boxes) -> Reason:
+        (x0, y0, _), (x1, y1, _) = bx.bounds(bs)
+
+        def border(b: Box) -> bool:
+            cx, cy, _ = b.centre
+            return min(cx - x0, x1 - cx, cy - y0, y1 - cy) < bx.CUBE - bx.TOL
+
+        wall = [b for b in bs if border(b)]
+        mid = [b for b in bs if not border(b)]
+        if not mid:
+            return "nothing inside the ring"
+        r = outer(wall) or inner(mid)
+        if r:
+            return r
+        return None if bx.encloses(wall, mid) else "the ring does not surround the other"
+
+    return f
+
+
+def leg_gap(*ns: int) -> Check:
+    """Exactly two supports under the top piece, one of `ns` cubes (± 1.5 cm) apart."""
+
+    def f(bs: Boxes) -> Reason:
+        legs = bx.roof_legs(bs)
+        if legs is None or len(legs) != 2:
+            return "not two supports under a top piece"
+        gap = bx.separation(legs[0], legs[1])
+        if not any(abs(gap - n * bx.CUBE) <= 0.015 for n in ns):
+            return f"supports {gap:.3f} m apart, want {' or '.join(map(str, ns))} cube(s)"
+        return None
+
+    return f
+
+
+def lr_profile(*hs: int) -> Check:
+    """One cube deep; slice heights from left (+y) to right (-y) equal `hs`, columns full."""
+
+    def f(bs: Boxes) -> Reason:
+        if bx.footprint_cubes(bs)[0] != 1:
+            return "not one cube deep"
+        got = bx.step_profile(bs, 1)[::-1]
+        if got != list(hs):
+            return f"left-to-right heights {got}, want {list(hs)}"
+        return None if len(bx.voxels(bs)) == sum(hs) else "columns not full"
+
+    return f
+
+
+def near_rel(max_gap: float = 0.25) -> Rel:
+    """A and B are separate and at most `max_gap` apart ("next to it")."""
+
+    def rel(a: Boxes, b: Boxes) -> Reason:
+        gap = bx.separation(a, b)
+        return None if gap <= max_gap else f"{gap:.2f} m apart"
+
+    return rel
+
+
+def on_side(side: str) -> Rel:
+    """A is on `side` of B (dominant direction of the footprint centres)."""
+
+    def rel(a: Boxes, b: Boxes) -> Reason:
+        got = bx.side_of(a, b)
+        return None if got == side else f"A is {got} of B, want {side}"
+
+    return rel
+
+
+def parallel_gap(n: int) -> Rel:
+    """A and B run along the same axis and are `n` cubes (± 1.5 cm) apart across it."""
+
+    def rel(a: Boxes, b: Boxes) -> Reason:
+        ax, ay = bx.footprint_cubes(a)
+        bxx, by = bx.footprint_cubes(b)
+        if (ax > ay) != (bxx > by):
+            return "not parallel"
+        r = gap_of(n)(a, b)
+        if r:
+            return r
+        side = bx.side_of(a, b)
+        along_y = ay > ax
+        if along_y and side not in (_F, _B):
+            return "end to end, not facing"
+        if not along_y and side not in (_L, _R):
+            return "end to end, not facing"
+        return None
+
+    return rel
+
+
+def xprofile(*hs: int) -> Check:
+    """Slice heights front to back equal `hs`, every column full."""
+
+    def f(bs: Boxes) -> Reason:
+        got = bx.step_profile(bs, 0)
+        if got != list(hs):
+            return f"front-to-back heights {got}, want {list(hs)}"
+        width = bx.footprint_cubes(bs)[1]
+        return None if len(bx.voxels(bs)) == sum(hs) * width else "columns not full"
+
+    return f

@@ -50,34 +50,7 @@ def _taller_on(side: str) -> Rel:
     return rel
 
 
-def _corner_columns(extra: int) -> k.Check:
-    """Everything above the bottom level is four columns of `extra` parts, one on each corner
-    cell of the structure's footprint."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        z0 = min(b.lo[2] for b in bs)
-        upper = [b for b in bs if b.lo[2] > z0 + bx.TOL]
-        cols = bx.columns(upper)
-        if len(cols) != 4:
-            return f"{len(cols)} columns on top, want 4 (one per corner)"
-        lo, hi = bx.bounds(bs)
-        corners = {
-            (round(x, 3), round(y, 3))
-            for x in (lo[0] + bx.CUBE / 2, hi[0] - bx.CUBE / 2)
-            for y in (lo[1] + bx.CUBE / 2, hi[1] - bx.CUBE / 2)
-        }
-        got = set()
-        for col in cols:
-            x, y, _ = col[0].centre
-            hit = [c for c in corners if abs(c[0] - x) <= 0.01 and abs(c[1] - y) <= 0.01]
-            if not hit:
-                return f"a column at ({x:.3f}, {y:.3f}) is not on a corner"
-            got.add(hit[0])
-            if len(col) != extra:
-                return f"a corner column of {len(col)}, want {extra}"
-        return None if len(got) == 4 else "two columns on one corner"
-
-    return f
+_corner_columns = k.corner_columns
 
 
 def _centred_on(upper: k.Check, lower: k.Check) -> k.Check:
@@ -140,31 +113,10 @@ def _podium(bs: k.Boxes) -> k.Reason:
     return None if len(bx.voxels(bs)) == sum(prof) else "columns not full"
 
 
-def _xprofile(*hs: int) -> k.Check:
-    """Slice heights front to back equal `hs`, every column full."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        got = bx.step_profile(bs, 0)
-        if got != list(hs):
-            return f"front-to-back heights {got}, want {list(hs)}"
-        width = bx.footprint_cubes(bs)[1]
-        return None if len(bx.voxels(bs)) == sum(hs) * width else "columns not full"
-
-    return f
+_xprofile = k.xprofile
 
 
-def _lr_profile(*hs: int) -> k.Check:
-    """One cube deep; slice heights from left (+y) to right (-y) equal `hs`, columns full."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        if bx.footprint_cubes(bs)[0] != 1:
-            return "not one cube deep"
-        got = bx.step_profile(bs, 1)[::-1]
-        if got != list(hs):
-            return f"left-to-right heights {got}, want {list(hs)}"
-        return None if len(bx.voxels(bs)) == sum(hs) else "columns not full"
-
-    return f
+_lr_profile = k.lr_profile
 
 
 T = k.tower

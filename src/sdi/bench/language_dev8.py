@@ -52,58 +52,13 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _on_side(side: str) -> Rel:
-    """A is on `side` of B (dominant direction of the footprint centres)."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        got = bx.side_of(a, b)
-        return None if got == side else f"A is {got} of B, want {side}"
-
-    return rel
+_on_side = k.on_side
 
 
-def _lr_profile(*hs: int) -> k.Check:
-    """One cube deep; slice heights from left (+y) to right (-y) equal `hs`, columns full."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        if bx.footprint_cubes(bs)[0] != 1:
-            return "not one cube deep"
-        got = bx.step_profile(bs, 1)[::-1]
-        if got != list(hs):
-            return f"left-to-right heights {got}, want {list(hs)}"
-        return None if len(bx.voxels(bs)) == sum(hs) else "columns not full"
-
-    return f
+_lr_profile = k.lr_profile
 
 
-def _corner_columns(extra: int) -> k.Check:
-    """Everything above the bottom level is four columns of `extra` parts, one on each corner
-    cell of the structure's footprint."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        z0 = min(b.lo[2] for b in bs)
-        upper = [b for b in bs if b.lo[2] > z0 + bx.TOL]
-        cols = bx.columns(upper)
-        if len(cols) != 4:
-            return f"{len(cols)} columns on top, want 4 (one per corner)"
-        lo, hi = bx.bounds(bs)
-        corners = {
-            (round(x, 3), round(y, 3))
-            for x in (lo[0] + bx.CUBE / 2, hi[0] - bx.CUBE / 2)
-            for y in (lo[1] + bx.CUBE / 2, hi[1] - bx.CUBE / 2)
-        }
-        got = set()
-        for col in cols:
-            x, y, _ = col[0].centre
-            hit = [c for c in corners if abs(c[0] - x) <= 0.01 and abs(c[1] - y) <= 0.01]
-            if not hit:
-                return f"a column at ({x:.3f}, {y:.3f}) is not on a corner"
-            got.add(hit[0])
-            if len(col) != extra:
-                return f"a corner column of {len(col)}, want {extra}"
-        return None if len(got) == 4 else "two columns on one corner"
-
-    return f
+_corner_columns = k.corner_columns
 
 
 def _leg_gap(n: int) -> k.Check:
@@ -121,15 +76,7 @@ def _leg_gap(n: int) -> k.Check:
     return f
 
 
-def _bare_bridge(bs: k.Boxes) -> k.Reason:
-    """A bridge whose topmost parts all span the gap (nothing yet standing on the span)."""
-    r = k.bridge()(bs)
-    if r:
-        return r
-    z = max(round(b.lo[2], 3) for b in bs)
-    tops = [b for b in bs if round(b.lo[2], 3) == z]
-    spanning = {id(s.part) for s in bx.spans(bs)}
-    return None if all(id(b) in spanning for b in tops) else "something stands on the span"
+_bare_bridge = k.bare_bridge
 
 
 def _tight_fence(h: int) -> k.Check:

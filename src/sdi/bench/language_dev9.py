@@ -33,9 +33,6 @@ beam 0.15 m; left = +y, back = +x (away from the IRB120 at x = 0, y = 0.30).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from typing import Any
-
 from sdi.bench import boxes as bx
 from sdi.bench import language_checks as k
 from sdi.bench.language_checks import Case
@@ -54,119 +51,25 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _on_side(side: str) -> Rel:
-    """A is on `side` of B (dominant direction of the footprint centres)."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        got = bx.side_of(a, b)
-        return None if got == side else f"A is {got} of B, want {side}"
-
-    return rel
+_on_side = k.on_side
 
 
-def _near_rel(max_gap: float = 0.25) -> Rel:
-    """A and B are separate and at most `max_gap` apart ("next to it")."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        gap = bx.separation(a, b)
-        return None if gap <= max_gap else f"{gap:.2f} m apart"
-
-    return rel
+_near_rel = k.near_rel
 
 
-def _parallel_gap(n: int) -> Rel:
-    """A and B run along the same axis and are `n` cubes (± 1.5 cm) apart across it."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        ax, ay = bx.footprint_cubes(a)
-        bxx, by = bx.footprint_cubes(b)
-        if (ax > ay) != (bxx > by):
-            return "not parallel"
-        r = k.gap_of(n)(a, b)
-        if r:
-            return r
-        side = bx.side_of(a, b)
-        along_y = ay > ax
-        if along_y and side not in (_F, _B):
-            return "end to end, not facing"
-        if not along_y and side not in (_L, _R):
-            return "end to end, not facing"
-        return None
-
-    return rel
+_parallel_gap = k.parallel_gap
 
 
-def _centred(tol: float = 0.03) -> k.Check:
-    """Everything above the bottom level is centred (± tol) over the bottom level."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        z0 = min(b.lo[2] for b in bs)
-        bottom = [b for b in bs if b.lo[2] <= z0 + bx.TOL]
-        upper = [b for b in bs if b.lo[2] > z0 + bx.TOL]
-        if not upper:
-            return "nothing on top"
-        (ux, uy), (bx0, by0) = bx.centre(upper), bx.centre(bottom)
-        if abs(ux - bx0) > tol or abs(uy - by0) > tol:
-            return f"top centred at ({ux:.3f}, {uy:.3f}), base at ({bx0:.3f}, {by0:.3f})"
-        return None
-
-    return f
+_centred = k.centred
 
 
-def _corner_columns(extra: int) -> k.Check:
-    """Everything above the bottom level is four columns of `extra` parts, one on each corner
-    cell of the structure's footprint."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        z0 = min(b.lo[2] for b in bs)
-        upper = [b for b in bs if b.lo[2] > z0 + bx.TOL]
-        cols = bx.columns(upper)
-        if len(cols) != 4:
-            return f"{len(cols)} columns on top, want 4 (one per corner)"
-        lo, hi = bx.bounds(bs)
-        corners = {
-            (round(x, 3), round(y, 3))
-            for x in (lo[0] + bx.CUBE / 2, hi[0] - bx.CUBE / 2)
-            for y in (lo[1] + bx.CUBE / 2, hi[1] - bx.CUBE / 2)
-        }
-        got = set()
-        for col in cols:
-            x, y, _ = col[0].centre
-            hit = [c for c in corners if abs(c[0] - x) <= 0.01 and abs(c[1] - y) <= 0.01]
-            if not hit:
-                return f"a column at ({x:.3f}, {y:.3f}) is not on a corner"
-            got.add(hit[0])
-            if len(col) != extra:
-                return f"a corner column of {len(col)}, want {extra}"
-        return None if len(got) == 4 else "two columns on one corner"
-
-    return f
+_corner_columns = k.corner_columns
 
 
-def _leg_gap(*ns: int) -> k.Check:
-    """Exactly two supports under the top piece, one of `ns` cubes (± 1.5 cm) apart."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        legs = bx.roof_legs(bs)
-        if legs is None or len(legs) != 2:
-            return "not two supports under a top piece"
-        gap = bx.separation(legs[0], legs[1])
-        if not any(abs(gap - n * bx.CUBE) <= 0.015 for n in ns):
-            return f"supports {gap:.3f} m apart, want {' or '.join(map(str, ns))} cube(s)"
-        return None
-
-    return f
+_leg_gap = k.leg_gap
 
 
-def _bare_bridge(bs: k.Boxes) -> k.Reason:
-    """A bridge whose topmost parts all span the gap (nothing yet standing on the span)."""
-    r = k.bridge()(bs)
-    if r:
-        return r
-    z = max(round(b.lo[2], 3) for b in bs)
-    tops = [b for b in bs if round(b.lo[2], 3) == z]
-    spanning = {id(s.part) for s in bx.spans(bs)}
-    return None if all(id(b) in spanning for b in tops) else "something stands on the span"
+_bare_bridge = k.bare_bridge
 
 
 def _missing_corner(a: int, b: int) -> k.Check:
@@ -186,27 +89,7 @@ def _missing_corner(a: int, b: int) -> k.Check:
     return f
 
 
-def _holding(inner: k.Check, outer: k.Check) -> k.Check:
-    """One structure: an `outer` ring (the parts on the footprint's border cells) with
-    `inner` standing inside it, touching the ring's walls (so both are one structure)."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        (x0, y0, _), (x1, y1, _) = bx.bounds(bs)
-
-        def border(b: k.Box) -> bool:
-            cx, cy, _ = b.centre
-            return min(cx - x0, x1 - cx, cy - y0, y1 - cy) < bx.CUBE - bx.TOL
-
-        wall = [b for b in bs if border(b)]
-        mid = [b for b in bs if not border(b)]
-        if not mid:
-            return "nothing inside the ring"
-        r = outer(wall) or inner(mid)
-        if r:
-            return r
-        return None if bx.encloses(wall, mid) else "the ring does not surround the other"
-
-    return f
+_holding = k.holding
 
 
 def _square(bs: k.Boxes) -> k.Reason:
@@ -232,14 +115,7 @@ def _tower_ending_wall(tower: int, high: int) -> k.Check:
     return f
 
 
-def _anything(result: Mapping[str, Any]) -> k.Reason:
-    """Some layout, inside the workspace, standing on the table."""
-    bs = bx.boxes(result)
-    if not bs:
-        return "no layout"
-    if not bx.in_workspace(bs):
-        return "a part outside the workspace"
-    return k.on_table(bs)
+_anything = k.anything
 
 
 def _pyramid_pair_sides(small: int, big: int, side: str) -> k.Pred:
