@@ -280,7 +280,8 @@ def test_a_failure_report_is_answered_with_a_recovery_skill(tmp_path):
     proc = sdi("resume", run_id, "--recover", "teleport", "--json", "--db", str(db))
     assert proc.returncode == 2  # not offered: the report waits again, saying why
     assert (
-        "choose one of shift, flatten, spread, modify" in json.loads(proc.stdout)["waiting_for"]["refused"]
+        "choose one of shift, flatten, spread, modify"
+        in json.loads(proc.stdout)["waiting_for"]["refused"]
     )
     proc = sdi("resume", run_id, "--recover", "flatten", "--json", "--db", str(db))
     after = json.loads(proc.stdout)
