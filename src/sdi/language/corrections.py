@@ -84,7 +84,7 @@ def _with_dimension(before: str, value: str, rest: str, notes: list[str]) -> str
     dim = m.group(2).split()[-1]
     olds = list(re.finditer(rf"\b({_NUMBER})\s+(?:cubes?\s+|parts?\s+)?{dim}\b", before, re.I))
     if not olds:  # "a tower six, no wait, five high": the count said last, now with its word
-        counts = [o for o in _KINDS[2][1].finditer(before) if _kind(_widest(before, o)) == "count"]
+        counts = _bare_counts(before)
         if not counts:
             return None
         old = counts[-1]
@@ -118,15 +118,22 @@ def correct(text: str, notes: list[str]) -> str:
         if kind is None:  # a correction in words of its own: a clause the later stages read
             text = before.rstrip(" ,;:—–-") + ". then " + after
             continue
-        olds = list(_KINDS[[k for k, _ in _KINDS].index(kind)][1].finditer(before))
-        if kind == "count":  # a count is a bare number, not one of a size group or a length
-            olds = [o for o in olds if _kind(_widest(before, o)) == "count"]
+        olds = (
+            _bare_counts(before)
+            if kind == "count"
+            else list(_KINDS[[k for k, _ in _KINDS].index(kind)][1].finditer(before))
+        )
         if not olds:
             return text
         old = olds[-1]
         notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
         text = before[: old.start()] + value + before[old.end() :] + rest
     return text
+
+
+def _bare_counts(text: str) -> list[re.Match[str]]:
+    """The bare numbers in `text`: not one of a size group ("3 x 5") or a length ("30 cm")."""
+    return [o for o in _KINDS[2][1].finditer(text) if _kind(_widest(text, o)) == "count"]
 
 
 def _widest(text: str, m: re.Match[str]) -> str:

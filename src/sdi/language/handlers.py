@@ -264,9 +264,8 @@ def _copies_of(m: re.Match[str], st: ReadState, note: str) -> str:
     n = words_to_numbers([groups[0]])[0]
     if not n.isdigit() or int(n) < 2:
         return m.group(0)
-    vague = {"corner", "square", "squares", "plus", "group", "steps", "series", "angle"}
     shapes = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
-              if w in lx.SHAPE_WORDS and w not in vague]  # fmt: skip
+              if w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES]  # fmt: skip
     if not shapes or shapes[-1].endswith("s"):
         return m.group(0)  # "4-high pillars, two of them": two pillars, not two bridges
     st.notes.append(f"read '{said}' as {n} of the structure described")

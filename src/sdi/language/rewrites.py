@@ -123,6 +123,11 @@ _ENCLOSURES = "|".join(
     sorted((w for w, f in lx.SHAPE_WORDS.items() if f == "enclosure" and w.isalpha()), key=len)
 )
 _SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
+# a singular structure noun followed by its size ("tower 3 high", "row of 5 long")
+_COUNTED_NOUN = (
+    r"(tower|stack|column|row|wall|pyramid|bridge|staircase|slab|pad|block|ring|arch)\s+"
+    r"(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|wide|levels?|steps?|x)\b)"
+)
 _NUMBER_WORD = "one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve"
 
 
@@ -778,20 +783,13 @@ _REWRITES += [
     ),
     (  # "2 tower 3 high": a count before a singular noun whose size is said after it
         re.compile(
-            r"(?<!x\s)(?<!by\s)\b([2-9]|two|three|four|five|six)\s+(tower|stack|column|row|wall|pyramid|bridge|"
-            r"staircase|slab|pad|block|ring|arch)\s+(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|"
-            r"wide|levels?|steps?|x)\b)",
-            re.IGNORECASE,
+            r"(?<!x\s)(?<!by\s)\b([2-9]|two|three|four|five|six)\s+" + _COUNTED_NOUN, re.IGNORECASE
         ),
         " {0} {1}s ",
         "read '{0}' as a count of structures",
     ),
     (
-        re.compile(
-            r"\b(?:1|one)\s+(tower|stack|column|row|wall|pyramid|bridge|staircase|slab|pad|block|ring|"
-            r"arch)\s+(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|wide|levels?|steps?|x)\b)",
-            re.IGNORECASE,
-        ),
+        re.compile(r"\b(?:1|one)\s+" + _COUNTED_NOUN, re.IGNORECASE),
         " a {0} ",
         "",
     ),

@@ -48,13 +48,6 @@ _PLURAL_SHAPES = re.compile(
 )
 
 
-# shape words that are seldom a structure of their own ("corner", "square", "group")
-_VAGUE = frozenset(
-    {"corner", "square", "squares", "plus", "series", "sequence", "group", "file", "field",
-     "mass", "bulk", "core", "cache", "angle", "well", "steps", "tiles"}
-)  # fmt: skip
-
-
 _SPANNING = frozenset({"bridge", "arch", "canopy"})
 
 
@@ -66,7 +59,7 @@ def _several(text: str) -> bool:
         return False
     shapes = [
         w for w in re.findall(r"[a-z]+", text.lower())
-        if w in lx.SHAPE_WORDS and w not in _VAGUE
+        if w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES
     ]  # fmt: skip
     return len(shapes) >= 2 or bool(_PLURAL_SHAPES.search(text))
 

@@ -319,6 +319,12 @@ _add(
     "fortification",
 )
 _add("l_shape", "l", "corner", "elbow", "angle", "bend")
+# Shape words that seldom name a structure of their own ("the corner", "a square", "a group"):
+# not counted when a command is checked for naming several structures or a copy's noun.
+SELDOM_STRUCTURES = frozenset(
+    {"corner", "square", "squares", "plus", "series", "sequence", "group", "file", "field",
+     "mass", "bulk", "core", "cache", "angle", "well", "steps", "tiles"}
+)  # fmt: skip
 _add("grid", "pallet", "pallets")  # a pallet load: one layer unless a height is given
 _add("wall", "parapet", "parapets", "balustrade", "balustrades")
 _add("u_shape", "u", "horseshoe", "horseshoes", "bracket", "channel", "trough")
