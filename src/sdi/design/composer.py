@@ -37,7 +37,8 @@ class _Placed:
     kinds: list[str]
 
 
-def _sizes(cell: CellConfig, part: str) -> Sizes:
+def part_sizes(cell: CellConfig, part: str) -> Sizes:
+    """The generators' part sizes for structures built of `part` in `cell`."""
     if part not in cell.part_types:
         raise InputError(
             f"unknown part type {part!r}; the cell has {sorted(cell.part_types)}", field="part"
@@ -396,7 +397,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
             rel = subject_of[c]
             if rel.kind == "around":
                 sub_spec = _ring_for(spec.structures[c], base, cell)
-                sizes = _sizes(cell, sub_spec.part)
+                sizes = part_sizes(cell, sub_spec.part)
                 sub = _orient(sub_spec, generate(sub_spec, sizes), sizes)
                 inside = sub.half - cell.cube[0]  # the ring's walls are one part thick
                 if np.any(inside < base.half + 1e-9):  # no room between them: no inside
@@ -434,7 +435,7 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
     placed: list[_Placed] = []
     total = 0
     for s in spec.structures:
-        sizes = _sizes(cell, s.part)
+        sizes = part_sizes(cell, s.part)
         boxes = generate(s, sizes)
         if len(boxes) > MAX_PARTS_PER_STRUCTURE:
             raise LimitError(

@@ -97,7 +97,7 @@ def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
 
 def _shown(spec: Spec, st: ReadState) -> set[float]:
     """Every value the reading shows, in the forms a command may have said it."""
-    from sdi.design.composer import _sizes
+    from sdi.design.composer import part_sizes
     from sdi.design.shapes import generate
 
     shown: set[float] = {float(len(spec.structures)), float(len(spec.structures) - 1)}
@@ -115,7 +115,7 @@ def _shown(spec: Spec, st: ReadState) -> set[float]:
             elif isinstance(value, list | tuple):
                 shown.update(float(v) for v in value if isinstance(v, int | float))
         try:
-            boxes = generate(s, _sizes(st.cell, s.part))
+            boxes = generate(s, part_sizes(st.cell, s.part))
         except (SDIError, ValueError):  # one the composer will refuse: no count to show
             continue
         shown.add(float(len(boxes)))
