@@ -57,9 +57,31 @@ def test_execute_unknown_fault_is_bad_input(tower_file):
     assert proc.returncode == 2 and "low_ceiling" in proc.stderr
 
 
+def approved_run(layout: Path, db: Path, *args: str) -> str:
+    """Run a layout file through the orchestrator, every review approved (the design and the
+    commissioning record); the run's id."""
+    proc = run("run", "--layout", str(layout), "--approve-all", "--json", "--db", str(db), *args)
+    assert proc.returncode == 0, proc.stderr
+    status = json.loads(proc.stdout)
+    assert status["status"] == "success" and status["approved_hash"] == status["record_hash"]
+    return str(status["run_id"])
+
+
+def test_export_of_a_layout_file_needs_an_approved_record(tower_file, tmp_path):
+    proc = run("export", str(tower_file), "--rapid", str(tmp_path / "rapid"))
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert "approved commissioning record" in proc.stderr and "sdi run --layout" in proc.stderr
+    assert not (tmp_path / "rapid").exists()  # nothing written
+    proc = run("export", "--rapid", str(tmp_path / "rapid"))
+    assert proc.returncode == 2 and "--run" in proc.stderr and not (tmp_path / "rapid").exists()
+
+
 def test_export_writes_rapid_and_python(tower_file, tmp_path):
-    proc = run("export", str(tower_file), "--arms", "irb120", "--rapid", str(tmp_path / "rapid"),
-               "--python", str(tmp_path / "prog.py"))  # fmt: skip
+    run_id = approved_run(tower_file, tmp_path / "runs.sqlite", "--arms", "irb120")
+    db, rapid, prog = tmp_path / "runs.sqlite", tmp_path / "rapid", tmp_path / "prog.py"
+    proc = run(
+        "export", "--run", run_id, "--db", str(db), "--rapid", str(rapid), "--python", str(prog)
+    )
     assert proc.returncode == 0, proc.stderr
     module = (tmp_path / "rapid" / "SDI_IRB120.mod").read_text()
     assert module.startswith("MODULE SDI_IRB120") and module.count("MoveL") == 8
@@ -74,8 +96,11 @@ def test_export_interlocks_a_dual_arm_job(tmp_path):
     layout = tmp_path / "bridge.json"
     proc = run("plan", "a bridge at x = 0.35", "--out", str(layout))
     assert proc.returncode == 0, proc.stderr
-    proc = run("export", str(layout), "--rapid", str(tmp_path / "rapid"),
-               "--python", str(tmp_path / "prog.py"))  # fmt: skip
+    run_id = approved_run(layout, tmp_path / "runs.sqlite")
+    db, rapid, prog = tmp_path / "runs.sqlite", tmp_path / "rapid", tmp_path / "prog.py"
+    proc = run(
+        "export", "--run", run_id, "--db", str(db), "--rapid", str(rapid), "--python", str(prog)
+    )
     assert proc.returncode == 0, proc.stderr
     modules = {p.stem: p.read_text() for p in (tmp_path / "rapid").glob("SDI_*.mod")}
     assert sorted(modules) == ["SDI_IRB120", "SDI_IRB1600"]

@@ -83,15 +83,30 @@ def test_plan_out_to_a_place_that_cannot_be_written(tmp_path, kind):
     assert sorted(tmp_path.iterdir()) == before  # nothing written, no .tmp left behind
 
 
+@pytest.fixture(scope="module")
+def approved_db(tmp_path_factory) -> Path:
+    """A run database holding run ``r1``: a 2-cube tower, its record approved and executed."""
+    from sdi.orchestrator import Orchestrator
+
+    db = tmp_path_factory.mktemp("approved") / "runs.sqlite"
+    orch = Orchestrator(db=db, arms=["irb120"])
+    try:
+        status = orch.start("a 2-cube tower at x = 0.4", run_id="r1", approve=True)
+        assert status.status == "success" and status.state["approved_hash"]
+    finally:
+        orch.close()
+    return db
+
+
 @pytest.mark.parametrize(
     ("option", "value"),
     [("--rapid", "/proc/sdi-rapid"), ("--python", "{tmp}/no/prog.py"), ("--python", "{tmp}")],
 )
-def test_export_paths_are_checked_before_anything(tmp_path, tower, option, value):
+def test_export_paths_are_checked_before_anything(tmp_path, approved_db, option, value):
     value = value.format(tmp=tmp_path)
     rapid = tmp_path / "rapid"
     args = ["--rapid", str(rapid)] if option == "--python" else []
-    proc = run("export", str(tower), *args, option, value)
+    proc = run("export", "--run", "r1", "--db", str(approved_db), *args, option, value)
     assert_bad_input(proc, option)
     assert not rapid.exists()  # no RAPID module written before the Python path failed
 
@@ -124,7 +139,7 @@ def test_epsilon_must_be_finite_and_positive(tower, value):
 
 
 def test_unknown_arms_are_bad_input(tower):
-    line = assert_bad_input(run("export", str(tower), "--arms", "irb9000", "--python", "p.py"))
+    line = assert_bad_input(run("run", "--layout", str(tower), "--arms", "irb9000"))
     assert "irb9000" in line and "irb120" in line
 
 
@@ -347,11 +362,11 @@ def hostile_path(draw: st.DrawFn, base: Path, name: str) -> str:
 EARLY = {
     "execute": [["--fault", "meteor"], ["--arms", "irb9000"], ["--epsilon", "nan"],
                 ["--epsilon", "-1"], ["--arms", ","]],
-    "export": [["--arms", "irb9000"], ["--arms", ""]],
     "run": [["--fault", "meteor"], ["--arms", "irb9000"], ["--method", "bogus"],
             ["--backend", "nope"]],
 }  # fmt: skip
-"""Arguments that make execute/export/run stop before any motion is planned or run."""
+"""Arguments that make execute/run stop before any motion is planned or run (export never
+plans: it writes an approved record only)."""
 COMMANDS = st.one_of(
     TEXT,
     st.sampled_from(
@@ -385,7 +400,7 @@ def _paused_run_db() -> bytes:
 
 
 def _would_move(args: list[str]) -> bool:
-    """True if execute/export would plan motion (a layout file that passes the Inspector)."""
+    """True if execute would plan motion (a layout file that passes the Inspector)."""
     from sdi.inspector.verifier import verify
     from sdi.model.layout import load_layout
 
@@ -428,7 +443,7 @@ def invocations(draw: st.DrawFn, base: Path) -> list[str]:
         args.append("--reject")
     elif sub == "resume" and answer == "edit":
         args += ["--edit", draw(hostile_path(base, "edits.json"))]
-    moves = sub in ("execute", "export") and _would_move(args)
+    moves = sub == "execute" and _would_move(args)
     if moves or (sub == "run" and draw(st.booleans())):
         args += draw(st.sampled_from(EARLY[sub]))  # never plan or run motion in a fuzz example
     if sub == "plan":

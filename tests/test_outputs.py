@@ -180,7 +180,12 @@ def test_a_re_export_with_fewer_arms_leaves_no_module_of_the_other_arm(tmp_path)
     earlier.commit(
         {rapid / "SDI_IRB120.mod": "old", rapid / "SDI_IRB1600.mod": "old", program: "old"}
     )
-    proc = run("export", str(layout), "--arms", "irb120", "--rapid", str(rapid),
+    db = tmp_path / "runs.sqlite"
+    proc = run("run", "--layout", str(layout), "--arms", "irb120", "--approve-all", "--json",
+               "--db", str(db))  # fmt: skip
+    assert proc.returncode == 0, proc.stderr
+    run_id = json.loads(proc.stdout)["run_id"]
+    proc = run("export", "--run", run_id, "--db", str(db), "--rapid", str(rapid),
                "--python", str(program))  # fmt: skip
     assert proc.returncode == 0, proc.stderr
     assert sorted(p.name for p in rapid.iterdir()) == [MANIFEST, "SDI_IRB120.mod"]

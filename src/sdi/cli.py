@@ -591,7 +591,8 @@ def execute_cmd(
 @app.command("export")
 def export_cmd(
     layout_file: Annotated[
-        Path | None, typer.Argument(help="layout JSON or a saved plan result (or use --run)")
+        Path | None,
+        typer.Argument(help="not exported directly: run it with `sdi run --layout` first"),
     ] = None,
     rapid: Annotated[
         Path | None, typer.Option("--rapid", help="directory for one RAPID module per robot")
@@ -599,40 +600,40 @@ def export_cmd(
     python: Annotated[
         Path | None, typer.Option("--python", help="file for the Python program")
     ] = None,
-    cell_path: CellOption = None,
-    arms: ArmsOption = None,
     force: ForceOption = False,
     run_id: Annotated[
         str | None,
-        typer.Option("--run", help="export the stored commissioning record of this run"),
+        typer.Option("--run", help="the run whose approved commissioning record to export"),
     ] = None,
     db: Annotated[
         Path | None, typer.Option("--db", help="run database (with --run; default: $SDI_DB)")
     ] = None,
 ) -> None:
-    """Export robot programs (ABB RAPID, abb-motion-program-exec Python) for a verified layout,
-    or for a run's stored commissioning record (`--run`: the approved motion, not a new plan)."""
+    """Export robot programs (ABB RAPID, abb-motion-program-exec Python) from the commissioning
+    record the operator approved (`--run`): exactly the motion approved, never a new plan."""
+    if layout_file is not None and run_id is not None:
+        _fail("give --run RUN_ID only (a LAYOUT_FILE cannot be exported directly)", False)
+    if layout_file is not None:
+        _fail(f"{layout_file}: programs are written only from an approved commissioning record; "
+              f"run it with `sdi run --layout {layout_file}`, approve the design and the record, "
+              "then `sdi export --run RUN_ID`", False)  # fmt: skip
+    if run_id is None:
+        _fail("give --run RUN_ID: the run whose approved commissioning record to export", False)
     if rapid is None and python is None:
         _fail("give --rapid DIR and/or --python FILE", False)
-    if (layout_file is None) == (run_id is None):
-        _fail("give a LAYOUT_FILE or --run RUN_ID (one of them)", False)
     outputs = Outputs(force=force)
     if rapid is not None:
         outputs.folder(rapid, "--rapid", patterns=("SDI_*.mod",))
     if python is not None:
         outputs.file(python, "--python")
-    if run_id is not None:
-        from sdi.orchestrator import Orchestrator
+    from sdi.orchestrator import Orchestrator
 
-        orch = Orchestrator(db=_database(db, run_id=run_id), create=False)
-        try:
-            record = orch.approved_record(run_id)
-            plan = record.commissioning(record.cell())
-        finally:
-            orch.close()
-    else:
-        assert layout_file is not None
-        plan = _commission(layout_file, cell_path, arms, False)
+    orch = Orchestrator(db=_database(db, run_id=run_id), create=False)
+    try:
+        record = orch.approved_record(run_id)  # the cell and the arms are the record's
+        plan = record.commissioning(record.cell())
+    finally:
+        orch.close()
     from sdi.export import interlock_plan, python_program, rapid_module
 
     interlocks = interlock_plan(
@@ -651,7 +652,7 @@ def export_cmd(
             plan.tasks,
             plan.motion,
             plan.robots,
-            command=str(layout_file) if layout_file is not None else f"run {run_id}",
+            command=f"run {run_id}",
             filename=python.name,
             interlocks=interlocks,
         )
@@ -970,7 +971,17 @@ def _busy(exc: Exception, as_json: bool) -> NoReturn:
 
 @app.command("run")
 def run_cmd(
-    command: Annotated[str, typer.Argument(help="what to build, in plain language")],
+    command: Annotated[
+        str | None, typer.Argument(help="what to build, in plain language (or use --layout)")
+    ] = None,
+    layout_file: Annotated[
+        Path | None,
+        typer.Option(
+            "--layout",
+            help="run a layout file (JSON, or a saved plan result) instead of a command: the "
+            "Inspector, the reviews and the record's approval as for a command",
+        ),
+    ] = None,
     approve: Annotated[
         bool, typer.Option("--approve", help="approve the design review (execution still asks)")
     ] = False,
@@ -990,9 +1001,17 @@ def run_cmd(
     """Run the whole orchestrator graph: plan, design, inspect, review, confirm, execute (sim)."""
     from sdi.orchestrator import Orchestrator, RunBusyError
 
+    if (command is None) == (layout_file is None):
+        _fail("give a COMMAND or --layout FILE (one of them)", json_out)
     _check_faults(fault, json_out)
     cell = _cell(cell_path, json_out)
     robots = _arms(arms, cell, json_out)
+    given, sequence = _load(layout_file, cell, json_out) if layout_file else (None, None)
+    if layout_file is not None:
+        if not given:
+            _fail(f"--layout: {layout_file} has no parts: nothing to build", json_out)
+        command = f"layout file {layout_file.name}"
+    assert command is not None
     db = _database(db)
     with ExitStack() as stack:
         model = _model(backend, json_out, stack, llm_timeout)
@@ -1006,7 +1025,7 @@ def run_cmd(
             with orch.owning(run_id):  # one process at a time, prompts included
                 status = orch.start(
                     command, method=method, backend=backend, faults=list(fault or []),
-                    approve=approve_all, run_id=run_id,
+                    approve=approve_all, run_id=run_id, layout=given, sequence=sequence,
                 )  # fmt: skip
                 waiting = status.waiting_for or {}
                 if approve and status.status == "paused" and waiting.get("kind") == "design_review":

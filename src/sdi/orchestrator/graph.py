@@ -148,6 +148,8 @@ class RunState(TypedDict, total=False):
     # after the command as clauses that change it (and, with a model, the Designer's feedback)
     rejected: dict[str, Any] | None  # the design last rejected ("layout", "reason"), until the
     # next design review says what the replan changed
+    given_layout: dict[str, Any] | None  # a layout the operator gave as a file (`sdi run
+    # --layout`): the run's design; no Specifier and no Designer read a command for it
 
 
 class Jobs:
@@ -342,6 +344,8 @@ def plan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
     _crash_hook("plan")
     command = state["command"]
+    if state.get("given_layout") is not None:  # the operator's own layout: nothing to read
+        return _given_plan(state)
     raw = ctx.model is not None and (not ctx.method.specifier or state.get("relaxed"))
     if raw:  # raw command to the Designer (no Specifier, or Specifier relaxation)
         told = {"command": designer_command(state), "relaxed": bool(state.get("relaxed"))}
@@ -387,6 +391,21 @@ def plan_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     return update
 
 
+def _given_plan(state: RunState) -> dict[str, Any]:
+    """PLAN for a run of a layout given as a file: the layout is the design. A reason the
+    operator gave when rejecting it cannot change a file's layout: say so (edits can)."""
+    update: dict[str, Any] = {"spec": None, "spec_source": "layout file", "phase": "design"}
+    revisions = list(state.get("revisions") or [])
+    if revisions:
+        note = (
+            f"your reason {revisions[-1]!r} was not applied: a layout given as a file is "
+            "changed by editing it (sdi resume --edit, or the twin), not by a reason"
+        )
+        update["notes"] = list(dict.fromkeys([*state.get("notes", []), note]))
+        update["revisions"] = revisions[:-1]
+    return update
+
+
 def revised_command(command: str, revisions: Sequence[str]) -> str:
     """The command with the operator's rejection reasons after it, each a clause of its own
     ("a row of 3 cubes" + "make it 4 high" → "a row of 3 cubes. make it 4 high"): the language
@@ -408,6 +427,14 @@ def designer_command(state: RunState) -> str:
 def design_node(state: RunState, runtime: Rt) -> dict[str, Any]:
     ctx = runtime.context
     _crash_hook("design")
+    given = state.get("given_layout")
+    if given is not None:  # the operator's layout file: INSPECT judges it as an edit of theirs
+        say(state, ctx, "human", "inspector", "layout", {"parts": len(given.get("objects", []))})
+        sequence = state.get("operator_sequence")
+        ids = [str(o.get("id")) for o in given.get("objects", [])]
+        check = {"status": "checking", "given": True, "before": given, "operator": given,
+                 "touched": ids, "removed": [], "asked": [], "sequence": sequence}  # fmt: skip
+        return {"layout": given, "edit": check, "edit_outcome": None, "phase": "inspect"}
     spec = Spec.model_validate(state["spec"]) if state.get("spec") else None
     outcome: DesignOutcome = _designer(ctx).design(spec, designer_command(state))
     parts = len(outcome.layout) if outcome.layout else 0
@@ -478,6 +505,8 @@ def inspect_node(state: RunState, runtime: Rt) -> dict[str, Any]:
 EDIT_CHOICES = ("repair", "undo", "replan", "edit", "reject")
 """The answers to an edit the Inspector refused: take the minimal repair, undo the edit,
 replan from the edited layout, edit again, or reject the design."""
+GIVEN_CHOICES = ("repair", "edit", "reject")
+"""The answers when the refused layout is the one the operator gave as a file."""
 
 
 def _start_edit(
@@ -537,18 +566,22 @@ def _outcome_notes(choice: str, changes: list[dict[str, Any]], summary: str | No
 
 def _edit_review(state: RunState, ctx: RunContext, pending: dict[str, Any]) -> dict[str, Any]:
     """An edit the Inspector refused: the operator chooses; nothing is approved unseen."""
+    # a layout given as a file has nothing to undo to and no command to replan from
+    choices = GIVEN_CHOICES if pending.get("given") else EDIT_CHOICES
     request = {
         "kind": "edit_review",
         "layout": pending.get("operator"),
         "violations": pending.get("violations"),
         "repair": pending.get("repair"),
         "nearest_order": pending.get("nearest_order"),
-        "choices": list(EDIT_CHOICES),
+        "choices": list(choices),
         "refused": state.get("review_note"),
     }
     decision = interrupt(request)
     say(state, ctx, "human", "orchestrator", "review", decision)
     action = decision.get("action") if isinstance(decision, dict) else None
+    if action not in choices:
+        action = None  # asked again below
     operator, _ = parse_layout(pending["operator"], max_parts=ctx.cell.limits.max_parts)
     if action == "repair":
         repair = pending.get("repair")
@@ -572,7 +605,7 @@ def _edit_review(state: RunState, ctx: RunContext, pending: dict[str, Any]) -> d
         return {"status": "rejected", "phase": "end", "edit": None}
     else:
         note = (f"the edited layout breaks {len(pending.get('violations') or [])} constraint(s); "
-                f"answer one of {', '.join(EDIT_CHOICES)}")  # fmt: skip
+                f"answer one of {', '.join(choices)}")  # fmt: skip
         return {"review_note": note, "phase": "review"}
     notes = list(state.get("notes", []))
     if "changes" in outcome:
@@ -896,6 +929,9 @@ def modify_node(state: RunState, runtime: Rt) -> dict[str, Any]:
             return {"phase": "replan", "notes": [*state.get("notes", []), note], "avoid": avoid}
         return {**_recovered(state, ctx, layout, repaired, recovery), "avoid": avoid,
                 "phase": "inspect"}  # fmt: skip
+    if state.get("given_layout") is not None:  # no command to design from: REPLAN goes on
+        note = "the Designer cannot redesign a layout given as a file (it has no command)"
+        return {"phase": "replan", "notes": list(dict.fromkeys([*state.get("notes", []), note]))}
     if isinstance(designer, RuleDesigner) or layout is None:
         outcome = designer.design(spec, state["command"])
     else:

@@ -38,6 +38,8 @@ from sdi.orchestrator.serde import PlainSerializer, UnsafeCheckpointError
 if TYPE_CHECKING:
     from langchain_core.runnables import RunnableConfig
 
+    from sdi.model.layout import Layout
+
 __all__ = ["Orchestrator", "RunInfo", "RunStatus", "default_db"]
 
 REVIEWS = ("design_review", "pre_execute", "resume_execution")
@@ -242,14 +244,20 @@ class Orchestrator:
         approve: bool = False,
         run_id: str | None = None,
         design_only: bool = False,
+        layout: Layout | None = None,
+        sequence: list[str] | None = None,
     ) -> RunStatus:
         """Run `command` until it ends or pauses for a person. `approve` answers every review
         (unattended, `--approve-all`); `design_only` stops once the design passed the Inspector
-        (status ``verified``; nothing is planned or executed)."""
+        (status ``verified``; nothing is planned or executed). With `layout` (a layout file, and
+        its `sequence` if it has one) that layout is the design: no Specifier, no Designer; the
+        Inspector, the reviews and the record's approval are the same as for a command."""
         if method not in METHODS:
             raise InputError(
                 f"unknown method {method!r}; choose from {sorted(METHODS)}", field="--method"
             )
+        if layout is not None and not len(layout):
+            raise InputError("the layout has no parts: nothing to build", field="--layout")
         cell = self.cell or CellConfig()
         run_id = run_id or self.new_run_id()
         state: RunState = {
@@ -259,13 +267,17 @@ class Orchestrator:
             "faults": list(faults or []), "notes": [], "approve": approve, "relaxed": False,
             "design_only": design_only,
         }  # fmt: skip
+        if layout is not None:
+            state["given_layout"] = layout.to_json_dict()
+            state["operator_sequence"] = list(sequence) if sequence is not None else None
         with self.owning(run_id):
             if self._snapshot(run_id).values:
                 raise InputError(f"run {run_id} exists already in {self.db}", field="RUN_ID")
             self.bus.send(run_id, "human", "orchestrator", "command",
                           {"command": command, "method": method, "backend": backend,
                            "cell_hash": state["cell_hash"], "faults": state["faults"],
-                           "arms": state["arms"], "approve_all": approve})  # fmt: skip
+                           "arms": state["arms"], "approve_all": approve,
+                           "given_parts": None if layout is None else len(layout)})  # fmt: skip
             return self._invoke(run_id, dict(state), state)
 
     def _bind_cell(self, run_id: str, values: dict[str, Any], replan_with_cell: bool) -> bool:
