@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to tenth dev sets (dev2 … dev10) are held to the same checks and share no
+second to eleventh dev sets (dev2 … dev11) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -25,6 +25,7 @@ from sdi.bench.language_dev7 import CASES as DEV7
 from sdi.bench.language_dev8 import CASES as DEV8
 from sdi.bench.language_dev9 import CASES as DEV9
 from sdi.bench.language_dev10 import CASES as DEV10
+from sdi.bench.language_dev11 import CASES as DEV11
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -292,7 +293,20 @@ NO_LAYOUT = {"status": "error", "layout": None}
 
 @pytest.mark.parametrize("result", [TOWER3, BRIDGE, PEN, STAIRS3, NO_LAYOUT])
 def test_every_predicate_answers_without_raising(result):
-    for case in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST):
+    for case in (
+        *DEV,
+        *DEV2,
+        *DEV3,
+        *DEV4,
+        *DEV5,
+        *DEV6,
+        *DEV7,
+        *DEV8,
+        *DEV9,
+        *DEV10,
+        *DEV11,
+        *TEST,
+    ):
         out = case.accept(result)
         assert out is None or isinstance(out, str), case.id
 
@@ -321,6 +335,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev8.py",
         "language_dev9.py",
         "language_dev10.py",
+        "language_dev11.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -741,7 +756,7 @@ def test_dev6_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev6_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV6}) == len(DEV6)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, DEV10, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, DEV10, DEV11, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV6 if _norm(c.text) in seen]
 
@@ -841,7 +856,7 @@ def test_dev7_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev7_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV7}) == len(DEV7)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, DEV10, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, DEV10, DEV11, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV7 if _norm(c.text) in seen]
 
@@ -940,7 +955,21 @@ def test_dev7_predicates_on_hand_built_layouts(case_id, right, wrong):
 def test_dev8_set_sizes_ids_and_phenomena():
     assert len(DEV8) >= 120
     ids = [
-        c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST)
+        c.id
+        for c in (
+            *DEV,
+            *DEV2,
+            *DEV3,
+            *DEV4,
+            *DEV5,
+            *DEV6,
+            *DEV7,
+            *DEV8,
+            *DEV9,
+            *DEV10,
+            *DEV11,
+            *TEST,
+        )
     ]
     assert len(ids) == len(set(ids))
     assert all(c.id.startswith("dev8-") for c in DEV8)
@@ -952,7 +981,7 @@ def test_dev8_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev8_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV8}) == len(DEV8)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, DEV10, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, DEV10, DEV11, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV8 if _norm(c.text) in seen]
 
@@ -1089,7 +1118,21 @@ def test_dev8_predicates_on_hand_built_layouts(case_id, right, wrong):
 def test_dev9_set_sizes_ids_and_phenomena():
     assert len(DEV9) >= 120
     ids = [
-        c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST)
+        c.id
+        for c in (
+            *DEV,
+            *DEV2,
+            *DEV3,
+            *DEV4,
+            *DEV5,
+            *DEV6,
+            *DEV7,
+            *DEV8,
+            *DEV9,
+            *DEV10,
+            *DEV11,
+            *TEST,
+        )
     ]
     assert len(ids) == len(set(ids))
     assert all(c.id.startswith("dev9-") for c in DEV9)
@@ -1101,7 +1144,7 @@ def test_dev9_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev9_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV9}) == len(DEV9)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV10, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV10, DEV11, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV9 if _norm(c.text) in seen]
 
@@ -1331,7 +1374,21 @@ def test_dev9_predicates_on_hand_built_layouts(case_id, right, wrong):
 def test_dev10_set_sizes_ids_and_phenomena():
     assert len(DEV10) >= 120
     ids = [
-        c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *DEV8, *DEV9, *DEV10, *TEST)
+        c.id
+        for c in (
+            *DEV,
+            *DEV2,
+            *DEV3,
+            *DEV4,
+            *DEV5,
+            *DEV6,
+            *DEV7,
+            *DEV8,
+            *DEV9,
+            *DEV10,
+            *DEV11,
+            *TEST,
+        )
     ]
     assert len(ids) == len(set(ids))
     assert all(c.id.startswith("dev10-") for c in DEV10)
@@ -1343,7 +1400,7 @@ def test_dev10_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev10_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV10}) == len(DEV10)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV11, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV10 if _norm(c.text) in seen]
 
@@ -1580,5 +1637,316 @@ _MAP_CORNERS = [
 )
 def test_dev10_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev10(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev11
+
+
+def test_dev11_set_sizes_ids_and_phenomena():
+    assert len(DEV11) >= 150
+    ids = [
+        c.id
+        for c in (
+            *DEV,
+            *DEV2,
+            *DEV3,
+            *DEV4,
+            *DEV5,
+            *DEV6,
+            *DEV7,
+            *DEV8,
+            *DEV9,
+            *DEV10,
+            *DEV11,
+            *TEST,
+        )
+    ]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev11-") for c in DEV11)
+    per = {p: sum(c.phenomenon == p for c in DEV11) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 8, per
+    assert min(per[p] for p in ("relation", "numbers", "dimensions", "sequence")) >= 15, per
+    assert {c.phenomenon for c in DEV11} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV11)
+
+
+def test_no_command_shared_between_dev11_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV11}) == len(DEV11)
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV10, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV11 if _norm(c.text) in seen]
+
+
+def _dev11(case_id: str) -> Case:
+    return next(c for c in DEV11 if c.id == case_id)
+
+
+def _l_shape(x0, y0, arm):
+    """A flat L: `arm` cubes along y from (x0, y0) and `arm` along x, sharing the corner."""
+    return [*_row_y(x0, y0, arm), *_row_x(x0 + C, y0, arm - 1)]
+
+
+_TABLE_CORNERS = [(0.25, 0.10), (0.25, 0.50), (0.75, 0.10), (0.75, 0.50)]
+
+
+def _table(high):
+    """Four `high`-cube legs under two beams along y and two beams across them."""
+    legs = [c for x in (0.40, 0.50) for y in (0.25, 0.35) for c in column(x, y, high)]
+    z = high * C + C / 2
+    return [
+        *legs,
+        beam(0.40, 0.30, z, YAW90),
+        beam(0.50, 0.30, z, YAW90),
+        beam(0.45, 0.25, z + C),
+        beam(0.45, 0.35, z + C),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev11-rel-01",  # a 4-tower on a 3x3 slab
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 4, z0=C)),
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 3, z0=C)),
+        ),
+        (
+            "dev11-rel-02",  # a 2x2x2 block and a 5-tower next to it
+            res(*grid(0.425, 0.225, 2, 2, layers=2), *column(0.45, 0.40, 5)),
+            res(*grid(0.425, 0.225, 2, 2, layers=2), *column(0.45, 0.40, 4)),
+        ),
+        (
+            "dev11-rel-02",  # … or the tower built against the block
+            res(*grid(0.425, 0.275, 2, 2, layers=2), *column(0.45, 0.375, 5)),
+            res(*grid(0.425, 0.275, 2, 2, layers=2), *column(0.45, 0.375, 4)),
+        ),
+        (
+            "dev11-rel-03",  # a 3-tower on the left (+y), a 6-tower on the right
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.20, 6)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.40, 6)),
+        ),
+        (
+            "dev11-rel-04",  # a 2-tower inside a 5x5 ring
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 2)),
+            res(*ring(0.35, 0.20, 5), *column(0.70, 0.30, 2)),
+        ),
+        (
+            "dev11-rel-09",  # a 4x4 slab with a cube on each corner
+            res(*_slab_with_corner_columns(0.35, 0.20, 4, 1)),
+            res(*_slab_with_corner_columns(0.35, 0.20, 4, 2)),
+        ),
+        (
+            "dev11-rel-11",  # a 3-tower and next to it one twice as tall
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 6)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 5)),
+        ),
+        (
+            "dev11-rel-15",  # a 6x3 wall with a 5-tower at each end (as its end columns)
+            res(*_stairs_y(0.45, 0.15, (5, 3, 3, 3, 3, 5))),
+            res(*_stairs_y(0.45, 0.15, (5, 3, 3, 3, 3, 3))),
+        ),
+        (
+            "dev11-rel-16",  # a 2-level pyramid right (-y) of a 2x4 slab, 2 cubes apart
+            res(*grid(0.425, 0.375, 2, 4), *_pyr(0.40, 0.125, 2)),
+            res(*grid(0.425, 0.375, 2, 4), *_pyr(0.40, 0.175, 2)),
+        ),
+        (
+            "dev11-rel-17",  # towers of 2, 6 and 4, the tallest in the middle
+            res(*column(0.45, 0.15, 2), *column(0.45, 0.30, 6), *column(0.45, 0.45, 4)),
+            res(*column(0.45, 0.15, 6), *column(0.45, 0.30, 2), *column(0.45, 0.45, 4)),
+        ),
+        (
+            "dev11-rel-18",  # a table: four 2-high legs under a beam top
+            res(*_table(2)),
+            res(*_table(3)),
+        ),
+        (
+            "dev11-rel-20",  # a 2-level pyramid in the middle of a 6x6 fence
+            res(*ring(0.325, 0.175, 6), *_pyr(0.40, 0.25, 2)),
+            res(*ring(0.325, 0.175, 6), *_pyr(0.65, 0.25, 2)),
+        ),
+        (
+            "dev11-rel-21",  # corrected: the 3-stack to the right (-y) of the 5-stack
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.40, 5)),
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.20, 5)),
+        ),
+        (
+            "dev11-seq-01",  # a 3x3 slab with a centred 3-tower
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 3, z0=C)),
+            res(*grid(0.40, 0.25, 3, 3), *column(0.40, 0.25, 3, z0=C)),
+        ),
+        (
+            "dev11-seq-05",  # a 4x4 floor without its middle four
+            res(*ring(0.35, 0.20, 4)),
+            res(*grid(0.35, 0.20, 4, 4)),
+        ),
+        (
+            "dev11-seq-06",  # a 4x2 wall and a 3-tower on its right (-y)
+            res(*grid(0.45, 0.30, 1, 4, layers=2), *column(0.45, 0.20, 3)),
+            res(*grid(0.45, 0.20, 1, 4, layers=2), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev11-seq-06",  # … or the tower against the wall's right end
+            res(*_stairs_y(0.45, 0.20, (3, 2, 2, 2, 2))),
+            res(*_stairs_y(0.45, 0.20, (2, 2, 2, 2, 3))),
+        ),
+        (
+            "dev11-seq-08",  # two 4-towers two cubes apart with a beam across
+            res(*_WIDE_BRIDGE4),
+            res(*column(0.45, 0.225, 3), *column(0.45, 0.375, 3), beam(0.45, 0.30, 0.175, YAW90)),
+        ),
+        (
+            "dev11-seq-13",  # a 5-step staircase without its highest step
+            res(*_stairs_x(0.35, 0.30, (1, 2, 3, 4))),
+            res(*_stairs_x(0.35, 0.30, (1, 2, 3, 4, 5))),
+        ),
+        (
+            "dev11-seq-16",  # a cube at the front, a 4-tower behind it
+            res(*column(0.30, 0.30, 1), *column(0.45, 0.30, 4)),
+            res(*column(0.30, 0.30, 4), *column(0.45, 0.30, 1)),
+        ),
+        (
+            "dev11-seq-16",  # … or the tower set against the back of the cube
+            res(*_stairs_x(0.35, 0.30, (1, 4))),
+            res(*_stairs_x(0.35, 0.30, (4, 1))),
+        ),
+        (
+            "dev11-seq-17",  # a 3-tower, then one twice as big on its left (+y)
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.40, 6)),
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.20, 6)),
+        ),
+        (
+            "dev11-seq-18",  # five 2-towers in a line without the middle one
+            res(*[c for y in (0.10, 0.20, 0.40, 0.50) for c in column(0.45, y, 2)]),
+            res(*[c for y in (0.10, 0.20, 0.30, 0.40, 0.50) for c in column(0.45, y, 2)]),
+        ),
+        (
+            "dev11-seq-18",  # … or, built touching, two 2x2 walls left
+            res(*grid(0.45, 0.20, 1, 2, layers=2), *grid(0.45, 0.35, 1, 2, layers=2)),
+            res(*_stairs_y(0.45, 0.20, (2, 2, 2, 2, 2))),
+        ),
+        (
+            "dev11-num-05",  # two rows of 4, apart
+            res(*_row_y(0.40, 0.20, 4), *_row_y(0.55, 0.20, 4)),
+            res(*_row_y(0.40, 0.20, 4), *_row_y(0.55, 0.20, 3)),
+        ),
+        (
+            "dev11-num-05",  # … or side by side as a 2x4 patch
+            res(*grid(0.40, 0.20, 2, 4)),
+            res(*grid(0.40, 0.20, 2, 4, layers=2)),
+        ),
+        (
+            "dev11-num-08",  # stacks of 1, 2, 3 and 4 set in order: a staircase
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 4))),
+            res(*_stairs_y(0.45, 0.20, (1, 2, 4, 3))),
+        ),
+        (
+            "dev11-num-18",  # a 3-step staircase and a tower as tall as its top step
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 3))),
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 4))),
+        ),
+        (
+            "dev11-dim-06",  # 10 x 10 x 15 cm
+            res(*grid(0.425, 0.275, 2, 2, layers=3)),
+            res(*grid(0.425, 0.275, 2, 2, layers=2)),
+        ),
+        (
+            "dev11-dim-13",  # a 15 cm bridge: 2-cube pillars under the beam, or 3-cube pillars
+            res(*_bridge(0.45, 0.30, 2)),
+            res(*_bridge(0.45, 0.30, 4)),
+        ),
+        (
+            "dev11-dim-15",  # 35 cm long and a foot (6 cubes) high
+            res(*grid(0.45, 0.15, 1, 7, layers=6)),
+            res(*grid(0.45, 0.15, 1, 7, layers=5)),
+        ),
+        (
+            "dev11-neg-01",  # a 5-tower not in the middle
+            res(*column(0.30, 0.15, 5)),
+            res(*column(0.45, 0.30, 5)),
+        ),
+        (
+            "dev11-neg-03",  # a row of 6 not running left to right
+            res(*_row_x(0.30, 0.30, 6)),
+            res(*_row_y(0.45, 0.15, 6)),
+        ),
+        (
+            "dev11-neg-07",  # a 5x5 ring with nothing inside
+            res(*ring(0.35, 0.20, 5)),
+            res(*ring(0.35, 0.20, 5), cube(0.40, 0.25, C / 2)),
+        ),
+        (
+            "dev11-neg-08",  # a 4-step staircase not climbing to the left (+y)
+            res(*_stairs_y(0.45, 0.20, (4, 3, 2, 1))),
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 4))),
+        ),
+        (
+            "dev11-typo-13",  # an L with arms of 4
+            res(*_l_shape(0.40, 0.20, 4)),
+            res(*_l_shape(0.40, 0.20, 3)),
+        ),
+        (
+            "dev11-wo-06",  # a 4-tower on the right (-y) of a 3x3 slab
+            res(*grid(0.40, 0.30, 3, 3), *column(0.45, 0.20, 4)),
+            res(*grid(0.40, 0.20, 3, 3), *column(0.45, 0.40, 4)),
+        ),
+        (
+            "dev11-wo-06",  # … or built against the slab's right side
+            res(*grid(0.40, 0.30, 3, 3), *column(0.45, 0.25, 4)),
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.40, 4)),
+        ),
+        (
+            "dev11-wo-08",  # a 6-tower behind (+x) a 4x2 wall
+            res(*grid(0.40, 0.225, 1, 4, layers=2), *column(0.55, 0.30, 6)),
+            res(*grid(0.40, 0.225, 1, 4, layers=2), *column(0.25, 0.30, 6)),
+        ),
+        (
+            "dev11-reg-06",  # a 2-tower in each corner of the table
+            res(*[c for x, y in _TABLE_CORNERS for c in column(x, y, 2)]),
+            res(
+                *[c for x, y in _TABLE_CORNERS[:3] for c in column(x, y, 2)], *column(0.45, 0.30, 2)
+            ),
+        ),
+        (
+            "dev11-reg-08",  # a cube back left, a cube front right
+            res(cube(0.65, 0.45, C / 2), cube(0.30, 0.15, C / 2)),
+            res(cube(0.65, 0.15, C / 2), cube(0.30, 0.45, C / 2)),
+        ),
+        (
+            "dev11-reg-11",  # a 4-tower 10 cm right (-y) of the centre
+            res(*column(0.45, 0.20, 4)),
+            res(*column(0.45, 0.40, 4)),
+        ),
+        (
+            "dev11-reg-12",  # a 4x4 ring as far back as it goes
+            res(*ring(0.625, 0.225, 4)),
+            res(*ring(0.35, 0.225, 4)),
+        ),
+        (
+            "dev11-fil-09",  # a 5x5 ring in the middle
+            res(*ring(0.35, 0.20, 5)),
+            res(*ring(0.55, 0.30, 5)),
+        ),
+        (
+            "dev11-open-09",  # a low wide platform
+            res(*grid(0.40, 0.25, 3, 3)),
+            res(*grid(0.40, 0.25, 3, 3, layers=3)),
+        ),
+        (
+            "dev11-bad-02",  # a 25-cube tower: refuse, or cap it and say so
+            res(*column(0.45, 0.30, 10), notes=["capped at 10 cubes"]),
+            res(*column(0.45, 0.30, 10)),
+        ),
+        (
+            "dev11-bad-08",  # 4 cubes yet 50 cm tall: refuse, or pick one and say so
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.30, 4)),
+        ),
+    ],
+)
+def test_dev11_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev11(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
