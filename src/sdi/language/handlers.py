@@ -112,6 +112,24 @@ def _square_base(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {side} by {side} base "
 
 
+def _bottom_count(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a pyramid of 3 levels with 9 cubes on the bottom": a count of parts in the bottom level.
+    A square number k² with k levels (or "square") is a k by k base; otherwise a row's length."""
+    said = words_to_numbers([m.group(1).lower()])[0]
+    if not said.isdigit():
+        return m.group(0)
+    count, text = int(said), m.string
+    side = round(count**0.5)
+    levels = re.search(r"\b(\d+)[- ](?:levels?|layers?|tiers?|high|tall)\b|\b(?:levels?|layers?|"
+                       r"tiers?)\s*(?:of|:|=)?\s*(\d+)\b", text, re.IGNORECASE)  # fmt: skip
+    high = int(levels.group(1) or levels.group(2)) if levels else None
+    square = re.search(r"\bsquare\b", text, re.IGNORECASE)
+    if side >= 2 and side * side == count and (high == side or (square and high is None)):
+        st.notes.append(f"read '{m.group(0).strip()}' as a {side} by {side} bottom level")
+        return f" with a {side} by {side} base "
+    return f" with a base of {count} "
+
+
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cube in each corner of the table": one copy in each corner region. Without "of
     the table" only when no other structure is named (then the corners may be its own)."""
@@ -334,6 +352,7 @@ HANDLERS: dict[str, Handler] = {
     "{at_most}": _at_most,
     "{corners}": _corners,
     "{square_base}": _square_base,
+    "{bottom_count}": _bottom_count,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

@@ -56,6 +56,19 @@ _METRE_WORDS = [
     (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
+    # "a foot high", "an inch wide": one of the unit (not "at the foot of the wall")
+    (
+        re.compile(
+            r"\ba\s+foot\s+(?=(?:high|tall|long|wide|deep|across|thick|apart|away)\b)", re.I
+        ),
+        "1 foot ",
+    ),
+    (
+        re.compile(
+            r"\ban\s+inch\s+(?=(?:high|tall|long|wide|deep|across|thick|apart|away)\b)", re.I
+        ),
+        "1 inch ",
+    ),
 ]
 
 

@@ -94,6 +94,17 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
 ]
 
 
+_CUBE_NOT_ALONE = (
+    r"tower|stack|column|pillar|wall|row|line|high|tall|wide|long|deep|thick|taller|shorter|"
+    r"higher|lower|wider|longer|deeper|thicker|apart|away|gap|space|spacing|of|from|further|"
+    r"farther|closer|more|less|fewer|size|sized|across|per|each|at\s+a\s+time|off|out|in\s+from|"
+    r"to\s+(?:the\s+)?(?:left|right|front|back)(?!\s+of)|back|forward|forwards|backwards|"
+    r"left|right|up|down|over|along|shy|short|in\s+size|and\s+a\s+half|"
+    r"to|could|can|would|will|might|should|must|fits?|"
+    r"pass(?:es)?|goes|gets"
+)
+"""A word after "a cube" that makes it a unit or a part of a structure, not a loose cube."""
+
 _REWRITES += [
     (
         re.compile(
@@ -222,6 +233,25 @@ _REWRITES += [
         " a 1-cube tower ",
         "",
     ),
+    # "a cube at the back left and a cube at the front right": a loose cube is a structure of
+    # its own (not a unit: "a cube high", "a cube's width", "a cube of space", "a cube tower")
+    (
+        re.compile(
+            r"\b(a|an)\s+(?:cube|brick)\b(?!'|\s*(?:-|" + _CUBE_NOT_ALONE + r")\b)",
+            re.IGNORECASE,
+        ),
+        " {0} 1-cube tower ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(one|1)\s+(?:cube|brick)\s+(?=(?:on|at|in|near|beside|by|into)\s+(?:the|each|"
+            r"every|both|its|their|a)\b)",
+            re.IGNORECASE,
+        ),
+        " a 1-cube tower ",
+        "",
+    ),
     (
         re.compile(r"\bnot\s+(?:one|a\s+single)\s+but\s+(two|three|four|five|\d+)\b", re.I),
         " {0} ",
@@ -236,7 +266,8 @@ _REWRITES += [
     (
         re.compile(
             r"\b(?:no|not|nothing|none)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
-            r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
+            r"(\s*(?:cubes?|parts?|blocks?|levels?|layers?|cm|mm|m|centimet(?:er|re)s?|"
+            r"millimet(?:er|re)s?|met(?:er|re)s?|inch(?:es)?|in|foot|feet|ft)\b)?",
             re.IGNORECASE,
         ),
         " {0}{1} high ",
@@ -404,7 +435,8 @@ _REWRITES += [
     (
         re.compile(
             r"\b(?:never|not\s+ever)\s+(?:taller|higher)\s+than\s+(\d+|[a-z]+)"
-            r"(\s+(?:cubes?|parts?|blocks?|levels?|layers?))?",
+            r"(\s*(?:cubes?|parts?|blocks?|levels?|layers?|cm|mm|m|centimet(?:er|re)s?|"
+            r"millimet(?:er|re)s?|met(?:er|re)s?|inch(?:es)?|in|foot|feet|ft)\b)?",
             re.IGNORECASE,
         ),
         " {0}{1} high ",
@@ -463,10 +495,26 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\b(?:i\s+)?(?:do\s+not|dont)\s+want\s+(?:a|an|the|any)?\s*(?:"
+            r"\b(?:i\s+)?(?:do\s+not|dont|never)\s+(?:want|need|build|make|put|place|lay|"
+            r"use)\s+(?:a|an|the|any)?\s*(?:"
             + _SHAPE_ALT
-            + r")\b\s*[,;:.]*\s*(?:(?:i\s+)?(?:want|need|would\s+like)\s+)?"
-            r"(?:just\s+|only\s+|but\s+)?",
+            + r")\b(?!\s+(?:taller|higher|shorter|longer|wider|bigger|smaller|larger|more|any|"
+            r"too|so|than|over|under|above|below|exceed|of\b))"
+            r"\s*[,;:.]*\s*(?:(?:i\s+)?(?:want|need|would\s+like)\s+)?"
+            r"(?:just\s+|only\s+|but\s+|instead\s*,?\s*)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
+    # "… build a row of 3 instead": what remains once the unwanted structure is left out
+    (re.compile(r"\s*,?\s*\b(?:instead|rather)\s*(?=[.!;]|$)", re.IGNORECASE), " ", ""),
+    # "two pillars, but don't put anything across them": nothing is added there
+    (
+        re.compile(
+            r",?\s*\b(?:but\s+|and\s+)?(?:do\s+not|dont|never)\s+(?:put|place|add|build|lay|"
+            r"set|stack)\s+(?:anything|a\s+\w+|any\s+\w+)\s+(?:across|on\s+top\s+of|on\s+top|"
+            r"onto|on|over|between|above)\s*(?:of\s+)?(?:them|it|both|the\s+\w+|each\s+\w+)?",
             re.IGNORECASE,
         ),
         " ",
@@ -732,6 +780,16 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{operation}",
+        "",
+    ),
+    (  # "with 9 cubes on the bottom", "16 blocks in the bottom layer": the bottom level's count
+        re.compile(
+            r"\b(?:with\s+|having\s+)?(\d+|[a-z]+)\s+(?:cubes?|blocks?|bricks?|parts?)\s+(?:on|in|at|"
+            r"along|across)\s+(?:the\s+)?(?:very\s+)?(?:bottom|base|ground)(?:\s+(?:row|layer|level|"
+            r"tier|course))?\b",
+            re.IGNORECASE,
+        ),
+        "{bottom_count}",
         "",
     ),
     (  # "a 35 cm base side", "base sides of 4": a square base
