@@ -108,6 +108,17 @@ def relate(
         subject = replace.get(s_idx, structures[s_idx])
         obj_spec = replace.get(o_idx, structures[o_idx])
         subject = _copy_if_asked(phrases[subj], subject, obj_spec, st)
+        if r.kind == "middle":
+            # "a 3x3 slab with a tower in the middle": on the slab, centred; "a 6 by 6 fence with
+            # a pyramid in the middle": inside it. The subject is the one with a middle.
+            if subject.shape in _TOPPED:
+                st.notes.append(f"read 'in the middle' of the {subject.shape} as on top of it, "
+                                "centred")  # fmt: skip
+                subject, obj_spec, s_idx, o_idx = obj_spec, subject, o_idx, s_idx
+                r = PhraseRelation("on", r.subject, r.object, r.side)
+            else:
+                subject = _enclosing(subject, st)
+                r = PhraseRelation("around", r.subject, r.object, r.side)
         if r.kind == "around" and obj_spec.shape in ("enclosure", "castle"):
             subject, obj_spec = obj_spec, subject
             s_idx, o_idx = o_idx, s_idx
@@ -157,6 +168,21 @@ def relate(
         ]
         structures = [structures[k] for k in keep]
     return relations, structures
+
+
+_TOPPED = ("grid", "block", "pack")
+"""Families whose middle is a top face another structure stands on."""
+
+
+def _enclosing(host: StructureDraft, st: ReadState) -> StructureDraft:
+    """A wall or fence with something in its middle: a ring; "6 by 6" is then its two sides."""
+    if host.shape in ("wall", "row") and host.length and host.height == host.length:
+        st.notes.append(f"read the {host.shape} {host.length} by {host.length} with something in "
+                        f"its middle as a ring {host.length} by {host.length}")  # fmt: skip
+        return StructureDraft(shape="enclosure", length=host.length, width=host.length,
+                              part=host.part, region=host.region, at_x=host.at_x,
+                              at_y=host.at_y)  # fmt: skip
+    return host
 
 
 def _copy_if_asked(

@@ -130,6 +130,15 @@ def _bottom_count(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" with a base of {count} "
 
 
+def _extreme_at(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "with the tallest one in the middle": where the biggest (or smallest) of several
+    structures stands; the reader orders them (`st.order`)."""
+    said = m.group(0).strip(" ,")
+    most = "min" if m.group(1).lower() in ("shortest", "lowest", "smallest") else "max"
+    st.order = (said, most, (m.group(2) or "middle").lower())
+    return " "
+
+
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cube in each corner of the table": one copy in each corner region. Without "of
     the table" only when no other structure is named (then the corners may be its own)."""
@@ -353,6 +362,7 @@ HANDLERS: dict[str, Handler] = {
     "{corners}": _corners,
     "{square_base}": _square_base,
     "{bottom_count}": _bottom_count,
+    "{extreme_at}": _extreme_at,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

@@ -48,9 +48,19 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("inside", "of"), "inside", None),
     (("inside",), "inside", None),
     (("within",), "inside", None),
-    (("in", "the", "middle", "of"), "inside", None),
-    (("in", "the", "centre", "of"), "inside", None),
-    (("in", "the", "center", "of"), "inside", None),
+    (("in", "the", "middle", "of"), "middle", None),
+    (("in", "the", "centre", "of"), "middle", None),
+    (("in", "the", "center", "of"), "middle", None),
+    (("right", "in", "the", "middle"), "middle_with", None),
+    (("in", "the", "very", "middle"), "middle_with", None),
+    (("in", "the", "middle"), "middle_with", None),
+    (("in", "the", "centre"), "middle_with", None),
+    (("in", "the", "center"), "middle_with", None),
+    (("at", "the", "centre"), "middle_with", None),
+    (("at", "the", "center"), "middle_with", None),
+    (("in", "its", "middle"), "middle_with", None),
+    (("in", "its", "centre"), "middle_with", None),
+    (("in", "its", "center"), "middle_with", None),
     (("surrounded", "by"), "inside", None),
     (("enclosed", "by"), "inside", None),
     (("enclosed", "in"), "inside", None),
@@ -205,10 +215,21 @@ def _clause_phrases(
             doc[k - 1].like_num
             or (lower[k - 1] in lx.PART_WORDS and k - 2 >= 0 and doc[k - 2].like_num)
         )
+        if kind == "middle_with":
+            # "a 3x3 slab with a tower in the middle": the middle of the structure before
+            # "with" (not the table's centre, which has no "with" before it)
+            withs = [i for i in clause if i < k and lower[i] == "with"]
+            if (
+                head is not None
+                or not withs
+                or not names_structure(doc, list(range(withs[-1] + 1, k)))
+            ):
+                k += n
+                continue
         implicit = (
             (kind == "on" and words_[-1] == "top" and (head is None or not is_structure))
-            or (kind == "inside" and head is None)
-            or kind == "next_implicit"
+            or (kind in ("inside", "middle") and head is None)
+            or kind in ("next_implicit", "middle_with")
         )
         if kind == "next" and head is None and words_[0] in ("alongside", "beside", "besides"):
             kind, implicit = "next_implicit", True  # "… then a second row alongside"
@@ -305,7 +326,7 @@ def _clause_phrases(
             for i in after_toks
         )
         if (
-            kind in ("on", "inside", "next")
+            kind in ("on", "inside", "next", "middle", "middle_with")
             and (not named or pronoun)
             and (kind != "next" or pronoun)
         ):
@@ -323,10 +344,12 @@ def _clause_phrases(
                     rels.append(PhraseRelation("on", after, before))
                 elif kind == "next":
                     rels.append(PhraseRelation("next", after, before, side))
+                elif kind in ("middle", "middle_with"):
+                    rels.append(PhraseRelation("middle", before, after))
                 else:
                     rels.append(PhraseRelation("around", before, after))
                 continue
-            if kind == "inside" and not named:
+            if kind in ("inside", "middle", "middle_with") and not named:
                 continue  # "with a 2 by 2 space inside": the ring's own inside
         if kind == "v_around":
             rels.append(PhraseRelation("around", after, before))
@@ -346,6 +369,8 @@ def _clause_phrases(
             rels.append(PhraseRelation("around", before, after))
         elif kind == "inside":
             rels.append(PhraseRelation("around", after, before))
+        elif kind == "middle":
+            rels.append(PhraseRelation("middle", after, before))
         elif kind == "next":
             rels.append(PhraseRelation("next", before, after, side))
         elif kind == "next_implicit":

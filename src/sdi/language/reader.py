@@ -53,7 +53,7 @@ from sdi.language.state import ReadState
 from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
-from sdi.spec.structure_spec import Relation, Spec, StructureDraft
+from sdi.spec.structure_spec import Relation, Spec, StructureDraft, StructureSpec
 
 
 def read(command: str, cell: CellConfig | None = None) -> Reading:
@@ -120,6 +120,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"{len(specs)} structures is more than 50", understood=understood_summary(doc)
         )
     relations = _one_each(relations, st)
+    specs = _ordered(specs, relations, st)
     try:
         spec = Spec(
             structures=tuple(specs),
@@ -166,6 +167,28 @@ _TOUCHING = re.compile(
     r"pressed\s+against|up\s+against)\b",
     re.IGNORECASE,
 )
+
+
+def _ordered(
+    specs: list[StructureSpec], relations: list[Relation], st: ReadState
+) -> list[StructureSpec]:
+    """ "three towers of 2, 4 and 6, the tallest one in the middle": separate structures stand
+    side by side from right to left in the order named; the biggest (or smallest) goes where
+    it was asked to."""
+    if st.order is None:
+        return specs
+    said, most, where = st.order
+    sizes = [getattr(s, "height", None) or getattr(s, "length", None) or 0 for s in specs]
+    if len(specs) < 2 or relations or len({s.shape for s in specs}) > 1 or len(set(sizes)) < 2:
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': no row of like structures of different sizes to order")
+        return specs
+    pick = sizes.index(max(sizes) if most == "max" else min(sizes))
+    rest = [s for k, s in enumerate(specs) if k != pick]
+    at = {"middle": len(specs) // 2, "right": 0, "left": len(specs) - 1}[where]
+    st.notes.append(f"'{said}': the {'biggest' if most == 'max' else 'smallest'} one "
+                    f"{'in the middle' if where == 'middle' else 'on the ' + where}")  # fmt: skip
+    return [*rest[:at], specs[pick], *rest[at:]]
 
 
 def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:

@@ -86,8 +86,9 @@ def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | No
     return shape if prev.structures[-1].shape == shape and described else None
 
 
-def refers_to(p: Phrase, before: list[Phrase]) -> int | None:
-    """A phrase that only points at an earlier one ("it", "them", "the base")."""
+def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> int | None:
+    """A phrase that only points at an earlier one ("it", "them", "the base"). `partner`: the
+    phrase this one is related to ("put a tower in the middle of it"): "it" is another one."""
     said = p.text.lower().replace(",", " ").split()
     led = False
     while said and said[0] in LEAD_VERBS:
@@ -97,6 +98,8 @@ def refers_to(p: Phrase, before: list[Phrase]) -> int | None:
     if not words_ or len(words_) > 6:
         return None
     built = [j for j, q in enumerate(before) if q.spec is not None or q.ref is not None]
+    others = [j for j in built if partner is None or resolve(before, j) != partner]
+    built = others or built
     if not built:
         return None
     sides = [w for w in words_[1:] if w in ("left", "right", "front", "back")]

@@ -782,6 +782,17 @@ _REWRITES += [
         "{operation}",
         "",
     ),
+    (  # "with the tallest one in the middle": the order of several structures
+        re.compile(
+            r",?\s*(?:and\s+|with\s+)?the\s+(tallest|highest|biggest|largest|longest|shortest|"
+            r"lowest|smallest)\s+(?:one|tower|stack|column|pillar|wall|row)?\s*(?:(?:goes|is|"
+            r"stands|should\s+be)\s+)?(?:in\s+the\s+(?:middle|centre|center)|(?:on|at|to)\s+the\s+"
+            r"(left|right))\b",
+            re.IGNORECASE,
+        ),
+        "{extreme_at}",
+        "",
+    ),
     (  # "with 9 cubes on the bottom", "16 blocks in the bottom layer": the bottom level's count
         re.compile(
             r"\b(?:with\s+|having\s+)?(\d+|[a-z]+)\s+(?:cubes?|blocks?|bricks?|parts?)\s+(?:on|in|at|"

@@ -61,7 +61,9 @@ def fill_slots(
             if p.ref is not None:
                 continue
             p.structure = None
-        ref = refers_to(p, phrases[:k])
+        partner = next((r.object if r.subject == k else r.subject for r in rels
+                        if k in (r.subject, r.object) and r.object is not None), None)  # fmt: skip
+        ref = refers_to(p, phrases[:k], partner)
         if ref is not None:
             p.ref = ref
             continue

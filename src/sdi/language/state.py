@@ -48,5 +48,7 @@ class ReadState:
     no_stack: bool = False
     no_beams: bool = False
     gap_m: float | None = None  # "one cube gap", "10 cm apart": between the structures
+    # "with the tallest one in the middle": (what was said, "max" | "min", middle|left|right)
+    order: tuple[str, str, str] | None = None
     # "on each corner", "at both ends": (relation kind, anchor) for the next such relation
     anchors: list[tuple[str, str]] = field(default_factory=list)
