@@ -213,8 +213,93 @@ def _families_named(doc: Doc, tokens: set[int]) -> dict[str, str]:
     return named
 
 
+_NEGATIONS = frozenset({"not", "n't", "never", "no", "without", "nor", "neither"})
+_SCOPE_ENDS = frozenset({",", ".", ";", ":", "!", "?", "-", "but", "and", "instead", "then", "so"})
+_NEGATED_RELATIONS: dict[str, str] = {
+    "on": "on_top_of", "onto": "on_top_of", "top": "on_top_of", "across": "on_top_of",
+    "over": "on_top_of", "above": "on_top_of", "atop": "on_top_of", "around": "around",
+    "inside": "around", "within": "around", "surround": "around", "next": "next_to",
+    "beside": "next_to",
+}  # fmt: skip
+
+
+def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
+    """What a negation excludes that the reading still builds: a family ("don't build a tower")
+    or a relation ("don't put anything across them") said nowhere else without a negation."""
+    built = {s.shape for s in spec.structures}
+    related = {r.kind for r in spec.relations}
+    scoped: set[int] = set()
+    cues: list[tuple[str, set[str], set[str]]] = []
+    for tok in doc:
+        if tok.lower_ not in _NEGATIONS:
+            continue
+        scope = []
+        for t in doc[tok.i + 1 : tok.i + 8]:
+            if t.lower_ in _SCOPE_ENDS:
+                break
+            scope.append(t)
+        scoped.update(t.i for t in scope)
+        families = {
+            lx.SHAPE_WORDS[w] for w in (t.lower_ for t in scope)
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES and w not in _COMPONENTS
+        }  # fmt: skip
+        kinds = {_NEGATED_RELATIONS[t.lower_] for t in scope if t.lower_ in _NEGATED_RELATIONS}
+        if families or kinds:
+            cues.append((doc[tok.i : scope[-1].i + 1].text, families, kinds))
+    outside = [t for t in doc if t.i not in scoped and t.lower_ not in _NEGATIONS]
+    said_families = {lx.SHAPE_WORDS[t.lower_] for t in outside if t.lower_ in lx.SHAPE_WORDS}
+    said_kinds = {_NEGATED_RELATIONS[t.lower_] for t in outside if t.lower_ in _NEGATED_RELATIONS}
+    return [
+        cue for cue, families, kinds in cues
+        if (families & built) - said_families or (kinds & related) - said_kinds
+    ]  # fmt: skip
+
+
+_PLACES = {"left": "left", "right": "right", "front": "front", "back": "back", "rear": "back"}
+_RIGHT_AS_ADVERB = frozenset(
+    {"then", "next", "in", "on", "at", "above", "behind", "beside", "away", "now", "up", "-",
+     "by", "against", "under", "below", "there", "here", "so", ",", "hand"}
+)  # fmt: skip
+
+
+def _places_lost(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> list[str]:
+    """Place words of the structures' phrases ("at the back left") that no structure, relation
+    or note shows: merged or dropped with the structure they placed."""
+    shown: set[str] = set()
+    for s in spec.structures:
+        shown.update((s.region or "").split())
+        if s.at_x is not None or s.at_y is not None:
+            return []  # coordinates: the places are numbers, checked as numbers
+    shown.update(r.side or "" for r in spec.relations)
+    noted = " ".join(st.notes).lower()
+    lost = []
+
+    def word(i: int) -> str:
+        return doc[i].lower_ if 0 <= i < len(doc) else ""
+
+    for tok in doc:
+        place = _PLACES.get(tok.lower_)
+        if place is None or tok.i not in tokens or tok.pos_ in ("VERB", "AUX"):
+            continue
+        if (word(tok.i - 1) in ("to", "-") and word(tok.i - 2) in _PLACES) or (
+            word(tok.i + 1) in ("to", "-") and word(tok.i + 2) in _PLACES
+        ):
+            continue  # "left to right", "front-to-back": a direction, not a place
+        if tok.lower_ == "right" and (tok.i == 0 or word(tok.i + 1) in _RIGHT_AS_ADVERB):
+            continue  # "right then, …", "right next to it", "right-hand"
+        if place not in shown and tok.lower_ not in noted:
+            lost.append(tok.text)
+    return lost
+
+
 def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     """Notes and material for what the sentence structure says and the reading does not."""
+    for cue in _negated_kept(doc, spec):
+        st.material.append(cue)
+        st.notes.append(f"ignored '{cue}': the reading still builds what these words exclude")
+    for word in dict.fromkeys(_places_lost(doc, spec, st, tokens)):
+        st.material.append(word)
+        st.notes.append(f"ignored '{word}': no structure of the reading stands there")
     n = len(spec.structures)
     if n >= 2 and not spec.relations:
         for cue in _relation_cues(doc):

@@ -76,6 +76,17 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
         "{no_stack}",
         "'{0}': laid side by side, not stacked",
     ),
+    (  # "two stacks, and please no beam on top of them": nothing is added there
+        re.compile(
+            r",?\s*\b(?:but\s+|and\s+)?(?:please\s+)?(?:no|without\s+(?:a|any))\s+(?:beams?|"
+            r"lintels?|planks?|cubes?|blocks?|towers?|roof|top|bridge|anything|nothing)\s+"
+            r"(?:across|on\s+top\s+of|on\s+top|onto|on|over|between|above)\s*(?:of\s+)?"
+            r"(?:them|it|both|the\s+\w+|each\s+\w+)?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
     (
         re.compile(r"(?:,\s*)?\b(?:with\s+)?no\s+stacking\b", re.IGNORECASE),
         "{no_stack}",
