@@ -860,7 +860,11 @@ def test_a_relation_the_reading_lost_is_material():
     related = (Relation(kind="on_top_of", subject=1, object=0),)
     assert _coherence("On the base, put a tower of 3.", grid, tower, relations=related) == []
     # regions and side-by-side words are no relation to lose
-    assert _coherence("a tower on the left and a row on the right", tower, grid) == []
+    left, right = (
+        tower.model_copy(update={"region": "left"}),
+        grid.model_copy(update={"region": "right"}),
+    )
+    assert _coherence("a tower on the left and a row on the right", left, right) == []
     assert _coherence("a tower and a row next to each other", tower, grid) == []
 
 
@@ -1041,4 +1045,112 @@ def test_a_family_named_that_the_reading_does_not_build_is_material():
     assert "pyramid" in _coherence("a tower of 3 next to a small pyramid", tower)
     bridge = structure("bridge", height=3)
     assert _coherence("two towers of 3 joined by a beam", bridge) == []  # built as its pillars
-    assert _coherence("a tower of 3 on the left of the table", tower) == []  # the work table
+    on_left = tower.model_copy(update={"region": "left"})
+    assert _coherence("a tower of 3 on the left of the table", on_left) == []  # the work table
+
+
+# -- loose cubes, negations, middles, order (found on the dev11 set) -----------------------------
+def columns(result):
+    """(x, y) of each column of parts → its height in parts."""
+    lo, hi = boxes(result)
+    out: dict[tuple[float, float], int] = {}
+    for a, b in zip(lo, hi, strict=True):
+        key = (round((a[0] + b[0]) / 2, 3), round((a[1] + b[1]) / 2, 3))
+        out[key] = out.get(key, 0) + 1
+    return out
+
+
+def test_each_loose_cube_is_a_structure_of_its_own_where_it_was_put():
+    r = plan("a cube at the back left and a cube at the front right")
+    assert r.status == "success", r.notes
+    (x1, y1), (x2, y2) = sorted(columns(r))  # two single cubes, not one
+    assert x2 - x1 > 0.1 and y1 < y2 - 0.1  # the back one is on the left (+y)
+    r = plan("put one cube on the left and one on the right")
+    assert r.status == "success" and len(columns(r)) == 2
+    # a cube as a unit or as an addition stays one
+    assert read("a wall 5 long and a cube thick").spec.structures[0].shape == "wall"
+    assert len(read("a tower of 3 with a cube on top").spec.structures) == 2
+
+
+def test_a_structure_or_an_addition_said_not_to_be_built_is_left_out():
+    r = plan("don't build a tower, build a row of 3 instead")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["row"]
+    assert any("not wanted" in n for n in r.notes)
+    r = plan("make two pillars of 4 cubes but don't put anything across them")
+    assert r.status == "success" and sorted(columns(r).values()) == [4, 4]
+    r = plan("two stacks of 3, and please no beam on top of them")
+    assert r.status == "success" and sorted(columns(r).values()) == [3, 3]
+    # "don't make the pillars taller than 2" is a limit, not a structure left out
+    assert read("a bridge, don't make the pillars taller than 2").spec.structures[0].height == 2
+
+
+def test_a_negation_the_reading_does_not_honour_is_not_a_success():
+    r = plan("a tower on the right but not a wall on the left")
+    assert r.status == "partial"
+    assert any("what these words exclude" in n for n in r.notes)
+    r = plan("put a pyramid down but not near the tower")
+    assert r.status == "partial" and any("not near the tower" in n for n in r.notes)
+    # politeness, and negations the reading keeps, do not alarm
+    for command in ("if it's not too much trouble, a staircase with four steps",
+                    "two towers of 3, they should not touch each other",
+                    "build a wall, not a tower"):  # fmt: skip
+        assert plan(command).status == "success", command
+
+
+def test_a_place_word_no_structure_stands_at_is_not_a_success():
+    # a reading that merged two placed structures into one place loses a place word
+    from sdi.language.coherence import check
+    from sdi.language.state import ReadState
+    from sdi.language.syntax import parse
+    from sdi.model.cell import CellConfig
+
+    text = "a tower at the back left and a tower at the front right"
+    doc = parse(text)
+    one = Spec(structures=(structure(shape="tower", region="front left"),))
+    st = ReadState(text, CellConfig())
+    check(doc, one, st, set(range(len(doc))))
+    assert {"back", "right"} <= set(st.material)
+    # directions and "right then" are not places
+    for command in ("a row of 5 running left to right across the back",
+                    "Right then, a tower of seven please",
+                    "a wall 5 long 2 high along the left edge, running front to back"):  # fmt: skip
+        assert plan(command).status == "success", command
+
+
+def test_the_middle_of_a_slab_is_its_top_and_of_a_fence_its_inside():
+    r = plan("first build a 3x3 slab, then put a tower of 3 in the middle of it")
+    assert r.status == "success", r.notes
+    cols = columns(r)
+    assert len(cols) == 9
+    centre = max(cols, key=lambda c: cols[c])
+    xs, ys = sorted({c[0] for c in cols}), sorted({c[1] for c in cols})
+    assert centre == (xs[1], ys[1]) and cols[centre] == 4  # slab + 3, in the middle
+    r = plan("a 6 by 6 fence with a small 2-level pyramid in the middle")
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == ["enclosure", "pyramid"]
+    assert r.spec.relations[0].kind == "around"
+    lo, hi = boxes(r)
+    ring = hi[:, 2] < 0.06
+    inner = ~ring | (lo[:, 0] > lo[ring, 0].min() + 0.04) & (hi[:, 0] < hi[ring, 0].max() - 0.04)
+    assert inner.sum() >= 5  # the pyramid (4 + 1) inside the ring's outer bounds
+    # without "with", "in the middle" is the table's centre
+    assert read("a tower in the middle").spec.structures[0].region == "centre"
+
+
+def test_the_tallest_one_goes_where_it_was_asked():
+    r = plan("three towers of 2, 4 and 6 cubes, with the tallest one in the middle")
+    assert r.status == "success", r.notes
+    heights = [h for _, h in sorted(columns(r).items(), key=lambda kv: kv[0][1])]
+    assert heights[1] == 6 and sorted(heights) == [2, 4, 6]
+    r = plan("two towers of 3 and 5, the shortest on the left")
+    heights = [h for _, h in sorted(columns(r).items(), key=lambda kv: kv[0][1])]
+    assert r.status == "success" and heights == [5, 3]  # left is +y
+
+
+def test_a_pyramids_bottom_count_and_one_foot():
+    r = plan("a pyramid of 3 levels with 9 cubes on the bottom")
+    assert r.status == "success" and len(r.layout) == 9 + 4 + 1
+    assert read("a pyramid with 5 cubes on the bottom").spec.structures[0].length == 5
+    assert read("a wall 35 cm long and a foot high").spec.structures[0].height_m == 0.3048
+    s = read("a 2x2 block, not taller than 10 cm").spec.structures[0]
+    assert s.height_m == 0.1
