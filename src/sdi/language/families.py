@@ -77,6 +77,11 @@ def check_family(
             spec = spec.model_copy(update={"count": None})
     if spec.shape == "block" and spec.count is not None:
         spec = _block_from_count(spec, notes, material)
+    one_deep = spec.shape in ("row", "wall") and spec.length is None and spec.length_m is None
+    if one_deep and spec.width_m is not None and round(spec.width_m / part_m) > 1:
+        # "a wall 40 cm wide, 2 high": a wall one part deep is as wide as it is long
+        notes.append(f"read the {spec.shape}'s width {spec.width_m:g} m as its length")
+        spec = spec.model_copy(update={"length_m": spec.width_m, "width_m": None})
     if spec.shape in ("row", "wall") and spec.width is not None and spec.width > 1:
         wide = "grid" if spec.shape == "row" and (spec.height or 1) == 1 else "block"
         notes.append(f"a {spec.shape} {spec.width} wide is a {wide}: built a {wide}")

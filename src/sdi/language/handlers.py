@@ -50,7 +50,8 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     if re.search(r"\b(?:castle|fort|fortress|citadel)s?\b", m.string, re.IGNORECASE):
         return m.group(0)  # "a castle with a tower at each corner": the family's own
     if re.search(r"\bsides?\b", m.group(0), re.IGNORECASE) and re.search(
-        r"\d+\s*(?:cubes?|parts?|blocks?)?\s*(?:long\s*)?$", m.string[: m.start()]
+        r"\d+\s*(?:cubes?|parts?|blocks?|cm|mm|m|in|inch(?:es)?|ft|feet|foot)?\s*(?:long\s*)?$",
+        m.string[: m.start()],
     ):
         return m.group(0)  # "a courtyard 5 cubes on each side": a size
     said = re.sub(r"\s+of\s+an?$", "", _said(m)[0])
@@ -211,6 +212,44 @@ def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} "
 
 
+def _said_last(m: re.Match[str]) -> int | None:
+    """The last number said before the match (the size a comparison starts from)."""
+    before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
+    said = [w for w in words_to_numbers(before) if w.isdigit()]
+    return int(said[-1]) if said else None
+
+
+def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower of 3, and next to it one twice as tall", "another with one less", "a second
+    one a cube taller": the number said last before it, changed."""
+    said, groups = _said(m)
+    base = _said_last(m)
+    if base is None:
+        return m.group(0)
+    if len(groups) == 4 and groups[3]:  # the second form: "a cube taller"
+        groups = groups[2:]
+    word = groups[0] or "1"  # "a cube taller"
+    factor = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5}.get(word)
+    times = re.fullmatch(r"(\w+)\s+times", word)
+    if times and words_to_numbers([times.group(1)])[0].isdigit():
+        factor = float(words_to_numbers([times.group(1)])[0])
+    if factor is not None:
+        value = base * factor
+    else:
+        n = words_to_numbers([word])[0]
+        if not n.isdigit():
+            return m.group(0)
+        sign = 1 if groups[1] in ("more", "taller", "higher", "longer", "bigger") else -1
+        value = base + sign * int(n)
+    if value < 1 or value % 1:
+        return m.group(0)
+    st.notes.append(f"read '{said}' as {int(value)} (from the {base} said before)")
+    return f" {int(value)} high " if groups[1] in _HEIGHT_WORDS else f" of {int(value)} "
+
+
+_HEIGHT_WORDS = ("tall", "high", "taller", "higher", "shorter", "lower")
+
+
 def _operation(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "nine minus four", "3 times 2": the number it comes to."""
     said, groups = _said(m)
@@ -300,6 +339,24 @@ def _copies_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return "".join(f" and another {noun}" for _ in range(int(n) - 1)) + " "
 
 
+def _more_of(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower of 3 and 2 more towers", "… and three more like it": copies added to the one
+    described (2 more towers after a tower are three towers)."""
+    said, groups = _said(m)
+    n = words_to_numbers([groups[0]])[0]
+    noun = groups[1] if len(groups) > 1 else ""
+    family = lx.SHAPE_WORDS.get(noun) if noun else None
+    shapes = [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+              if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    if not n.isdigit() or not 1 <= int(n) <= 20 or not shapes:
+        return m.group(0)
+    family = family or shapes[-1]
+    if family != shapes[-1]:
+        return m.group(0)  # "a wall and 2 more towers": towers of their own
+    st.notes.append(f"read '{said}' as {n} more {family}s like the one before")
+    return "".join(f" and another {family}" for _ in range(int(n))) + " "
+
+
 def _times(m: re.Match[str], st: ReadState, note: str) -> str:
     said, groups = _said(m)
     factor = {"twice": 2, "double": 2, "three times": 3, "thrice": 3, "half": 0.5}
@@ -363,6 +420,8 @@ HANDLERS: dict[str, Handler] = {
     "{square_base}": _square_base,
     "{bottom_count}": _bottom_count,
     "{extreme_at}": _extreme_at,
+    "{compared}": _compared,
+    "{more_of}": _more_of,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

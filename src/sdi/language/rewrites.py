@@ -145,6 +145,14 @@ _ENCLOSURES = "|".join(
     sorted((w for w, f in lx.SHAPE_WORDS.items() if f == "enclosure" and w.isalpha()), key=len)
 )
 _SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
+# structure nouns that are never a part of another ("2 more steps" adds to a staircase)
+_STRUCTURE_ALT = "|".join(
+    sorted(
+        (w for w in lx.SHAPE_WORDS if w.isalpha() and w not in lx.STEP_WORDS
+         and not re.fullmatch(r"(?:row|layer|level|course|tier|stair|step|flight)s?", w)),
+        key=len, reverse=True,
+    )
+)  # fmt: skip
 # a singular structure noun followed by its size ("tower 3 high", "row of 5 long")
 _COUNTED_NOUN = (
     r"(tower|stack|column|row|wall|pyramid|bridge|staircase|slab|pad|block|ring|arch)\s+"
@@ -873,6 +881,16 @@ _REWRITES += [
         " a {0} ",
         "",
     ),
+    (  # "a tower of 3 and 2 more towers", "and three more like it": copies of the one before
+        re.compile(
+            r"\s*,?\s*\b(?:and\s+|plus\s+|then\s+)?(\d+|two|three|four|five|six)\s+more\s+(?:("
+            + _STRUCTURE_ALT
+            + r")|(?:of\s+(?:them|those|these)|like\s+(?:it|that|this|the\s+first)))\b",
+            re.IGNORECASE,
+        ),
+        "{more_of}",
+        "",
+    ),
     (  # "ring 4x4, 2 of them": that many of the one described
         re.compile(
             r",?\s*\b(two|three|four|five|[2-5])\s+of\s+(?:them|those|these|it)\b\s*(?=$|[,.;!])",
@@ -1121,6 +1139,27 @@ _REWRITES += [
         " ",
         "",
     ),
+    (  # "one twice as tall" (as the one before): the number said last, changed
+        re.compile(
+            r"\b(twice|double|thrice|half|(?:\d+|two|three|four|five)\s+times)\s+as\s+"
+            r"(tall|high|big|large|long)\b(?!\s+as\b)",
+            re.IGNORECASE,
+        ),
+        "{compared}",
+        "",
+    ),
+    (  # "another one with one less", "a second one a cube taller"
+        re.compile(
+            r"\bwith\s+(?:just\s+|only\s+)?(?:a|(\d+|one|two|three|four|five))\s+"
+            r"(?:cubes?\s+|parts?\s+|blocks?\s+)?(more|fewer|less)\b(?:\s+(?:cubes?|parts?|blocks?))?"
+            r"(?!\s+(?:than|\w+s\b))|"
+            r"\b(?:a|(\d+|one|two|three|four|five))\s+(?:cubes?\s+|parts?\s+|levels?\s+|blocks?\s+)?"
+            r"(taller|higher|shorter|lower)\b(?!\s+than)",
+            re.IGNORECASE,
+        ),
+        "{compared}",
+        "",
+    ),
     (
         re.compile(
             r"\b(twice|double|thrice|half|(?:\d+|two|three|four|five)\s+times)\s+as\s+"
@@ -1217,6 +1256,17 @@ def _another(text: str) -> str:
 
 # "two towers of 3, one at the far left, one at the far right" (handler: one item per copy)
 _REWRITES += [
+    # "a 3x3 pad with a 2x2 pad on top of it and a cube on top of that": after a relation's
+    # pronoun, "and a …" starts the next structure (its own clause)
+    (
+        re.compile(
+            r"\b(on\s+top\s+of|on|onto|next\s+to|beside|behind|in\s+front\s+of|around|inside)\s+"
+            r"(it|them|that|those)\s*,?\s+and\s+(?:then\s+)?(?=(?:a|an|one|another)\s)",
+            re.IGNORECASE,
+        ),
+        " {0} {1}. Then ",
+        "",
+    ),
     # "directly behind it", "dead centre", "right next to": an intensifier of a place
     (
         re.compile(

@@ -510,7 +510,24 @@ class _Parser:
             "layers",
         ):
             return (
-                prev in ("a", "an", "one", "single", "flat")
+                prev
+                in (
+                    "a",
+                    "an",
+                    "one",
+                    "single",
+                    "flat",
+                    "square",
+                    "rectangular",
+                    "solid",
+                    "thin",
+                    "plain",
+                    "simple",
+                    "low",
+                    "another",
+                    "second",
+                    "new",
+                )
                 or prev in lx.SIZE_WORDS
                 or (self.is_num(k - 1) and self.toks[k - 1].used)
                 or (prev in lx.UNITS_M and self.toks[k - 1].used)  # "a 10 x 10 cm pad"
