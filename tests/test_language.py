@@ -1154,3 +1154,47 @@ def test_a_pyramids_bottom_count_and_one_foot():
     assert read("a wall 35 cm long and a foot high").spec.structures[0].height_m == 0.3048
     s = read("a 2x2 block, not taller than 10 cm").spec.structures[0]
     assert s.height_m == 0.1
+
+
+def test_a_size_compared_with_the_one_said_before():
+    r = read("build a tower of 3, and next to it a tower twice as tall")
+    assert [s.height for s in r.spec.structures] == [3, 6]
+    assert [
+        s.height for s in read("a tower with 4 cubes and another one with one less").spec.structures
+    ] == [4, 3]
+    assert [
+        s.height for s in read("a tower of 5 and a second one a cube shorter").spec.structures
+    ] == [5, 4]
+    assert [
+        s.height for s in read("a tower of 6 and next to it a wall half as high").spec.structures
+    ] == [6, 3]
+    # additions to the structure just built stay additions
+    r = plan("stack four cubes and then put two more on top")
+    assert r.status == "success" and sorted(columns(r).values()) == [6]
+
+
+def test_n_more_of_a_structure_adds_copies():
+    r = read("a tower of 3 and two more like it")
+    assert [s.height for s in r.spec.structures] == [3, 3, 3]
+    assert len(read("a tower and 2 more towers").spec.structures) == 3
+    assert (
+        read("build a staircase of 2 steps, then extend it by two more steps")
+        .spec.structures[0]
+        .steps
+        == 4
+    )
+
+
+def test_a_walls_width_in_metres_is_its_length_and_a_square_pad():
+    s = read("build a wall 40 cm wide, 2 cubes high").spec.structures[0]
+    assert (s.shape, s.length_m, s.height) == ("wall", 0.4, 2)
+    r = plan("a square pad 20 cm on each side")
+    assert r.status == "success" and len(r.layout) == 16
+
+
+def test_relations_chained_with_and():
+    r = plan("a 3x3 pad with a 2x2 pad on top of it and a single cube on top of that")
+    assert r.status == "success", r.notes
+    lo, _ = boxes(r)
+    assert sorted(np.round(lo[:, 2] / 0.05).astype(int).tolist()).count(2) == 1  # one on top
+    assert len(lo) == 9 + 4 + 1
