@@ -547,10 +547,13 @@ def test_a_row_that_does_not_run_one_way_runs_the_other():
     assert read("a row of 5 which does not run front to back").spec.structures[0].axis == "y"
 
 
-def test_touching_a_structure_placed_beside_is_reported():
+def test_a_structure_placed_beside_and_touching_has_no_gap():
     r = plan("a 2-cube tower, and a 3-cube tower to its right, touching it")
-    assert r.status == "partial"
-    assert any("touching" in n for n in r.notes)
+    assert r.status == "success" and any("touching" in n for n in r.notes)
+    cols = columns(r)
+    (y_right, h_right), (y_left, h_left) = sorted((y, h) for (_, y), h in cols.items())
+    assert (h_right, h_left) == (3, 2)  # the 3-cube tower on the right (-y)
+    assert abs((y_left - y_right) - 0.05) < 0.002  # side by side, faces together
 
 
 def test_a_beam_over_a_gates_posts_is_the_gates_own():

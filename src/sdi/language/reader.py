@@ -100,13 +100,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     relations, drafts = relate(phrases, rels, structures, st)
     drafts = _apart(drafts, st)
     touch = _TOUCHING.search(text)
-    if touch and any(r.kind == "next_to" for r in relations):
-        # "directly to its left, touching it": beside is always one structure gap away
-        st.material.append(touch.group(0))
-        st.notes.append(
-            f"ignored '{touch.group(0)}': a structure placed beside another stands one "
-            "structure gap away, not touching it"
-        )
+    if touch and any(r.kind == "next_to" and r.gap_m is None for r in relations):
+        # "directly to its left, touching it": no gap between the two
+        relations = [
+            r.model_copy(update={"gap_m": 0.0}) if r.kind == "next_to" and r.gap_m is None else r
+            for r in relations
+        ]
+        st.notes.append(f"read '{touch.group(0)}' as no gap between the structures beside")
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]

@@ -377,7 +377,7 @@ class Relation(BaseModel):
         None, description="one copy of the subject at each corner or end of the object"
     )
     gap_m: float | None = Field(
-        None, gt=0, le=0.5, description="next_to: clear space between the two, m"
+        None, ge=0, le=0.5, description="next_to: clear space between the two, m (0: touching)"
     )
 
     @model_validator(mode="after")
