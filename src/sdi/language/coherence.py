@@ -64,12 +64,20 @@ def _structural(tok: Token) -> bool:
     )
 
 
+def _work_table(tok: Token) -> bool:
+    """ "on the table": the work table, not a table to build."""
+    return tok.lower_ in ("table", "bench", "workspace") and any(
+        c.lower_ in ("the", "this", "our", "my", "your", "that", "work") for c in tok.children
+    )
+
+
 def _relation_cues(doc: Doc) -> list[str]:
     cues = []
     for tok in doc:
         if tok.lower_ not in _RELATION_WORDS:
             continue
         objects = [c for c in tok.children if c.dep_ in ("pobj", "dobj", "obj")]
+        objects = [o for o in objects if not _work_table(o)]
         if tok.lower_ in ("next", "front"):  # "next to X", "in front of X"
             objects = [c for p in tok.children if p.dep_ == "prep" for c in p.children
                        if c.dep_ == "pobj"]  # fmt: skip

@@ -95,6 +95,11 @@ def relate(
             s_idx = phrases[r.subject].structure  # type: ignore[assignment]
         if r.object is not None and phrases[r.object].structure is not None:
             o_idx = phrases[r.object].structure  # type: ignore[assignment]
+        own = o_idx in (s_idx, -1) and structures[s_idx].shape in ("bridge", "arch", "canopy")
+        if own and set(phrases[subj].text.lower().split()) & _OWN_TOPS:
+            # "a table: four legs … and a flat top resting on them": its own top
+            st.notes.append(f"read '{r.kind}' as the {structures[s_idx].shape}'s own top")
+            continue
         if o_idx < 0 or o_idx == s_idx:
             st.material.append(f"relation {r.kind}")
             st.notes.append(f"ignored '{r.kind}': no structure to relate '{phrases[subj].text}' to")
@@ -170,6 +175,7 @@ def relate(
     return relations, structures
 
 
+_OWN_TOPS = frozenset({"top", "roof", "beam", "beams", "lintel", "deck", "tabletop", "slab"})
 _TOPPED = ("grid", "block", "pack")
 """Families whose middle is a top face another structure stands on."""
 

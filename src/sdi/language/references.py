@@ -86,6 +86,12 @@ def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | No
     return shape if prev.structures[-1].shape == shape and described else None
 
 
+_SPANNING_PARTS = frozenset(
+    {"beam", "beams", "lintel", "roof", "top", "deck", "span", "plank", "tabletop", "slab"}
+)
+"""Parts of a bridge, an arch or a table that a later clause may name for the whole."""
+
+
 def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> int | None:
     """A phrase that only points at an earlier one ("it", "them", "the base"). `partner`: the
     phrase this one is related to ("put a tower in the middle of it"): "it" is another one."""
@@ -113,6 +119,13 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
             many = [j for j in built if before[j].count > 1]
             return resolve(before, many[-1] if many else built[-1])
         return resolve(before, built[-1])
+    if len(words_) <= 3 and words_[-1] in _SPANNING_PARTS and rest.startswith(("the", "its")):
+        # "on the middle of the beam", "the roof": the part of a bridge, arch or table named
+        for j in reversed(built):
+            spec = before[resolve(before, j)].spec
+            if spec is not None and any(s.shape in ("bridge", "arch", "canopy")
+                                        for s in spec.structures):  # fmt: skip
+                return resolve(before, j)
     if (
         len(words_) <= 2
         and words_[-1] in GENERIC | BASES | set(lx.SHAPE_WORDS) | {"cube", "block", "brick"}
