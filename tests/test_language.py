@@ -1201,3 +1201,26 @@ def test_relations_chained_with_and():
     lo, _ = boxes(r)
     assert sorted(np.round(lo[:, 2] / 0.05).astype(int).tolist()).count(2) == 1  # one on top
     assert len(lo) == 9 + 4 + 1
+
+
+def test_a_part_taken_out_afterwards_is_read_as_the_result():
+    r = plan("make a 4x4 floor. then remove the middle 4 cubes")
+    assert r.status == "success" and len(r.layout) == 12  # a 4x4 ring
+    assert (
+        read("a staircase of 5 steps, then take away the highest step").spec.structures[0].steps
+        == 4
+    )
+    r = plan("build 5 towers of 2 in a line, then take away the middle one")
+    assert r.status == "success" and sorted(columns(r).values()) == [2, 2, 2, 2]
+    # a change SDI cannot make is still reported, never read as a new structure
+    r = plan("a row of 5, then push the last two together")
+    assert r.status == "partial"
+
+
+def test_component_words_name_the_structure_they_belong_to():
+    r = plan("build a bridge, then stand one single cube on the middle of the beam")
+    assert r.status == "success" and r.spec.relations[0].kind == "on_top_of"
+    r = plan("a little table: four legs, each 2 cubes high, and a flat top resting on them")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["canopy"]
+    # "on the table" is the work table
+    assert plan("put a few towers on the table").status == "success"

@@ -344,6 +344,8 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
         got = sum(s.shape == family for s in spec.structures)
         named = sum(lx.SHAPE_WORDS.get(t.lower_) == family for t in doc)
         # more than counted: only when nothing else names one ("a column between two stacks")
+        if f"left of the {count}" in noted:
+            continue  # "5 towers, then take away the middle one": 4 left, as asked
         if got < count or (got > count and not more and named == 1):
             st.material.append(cue)
             st.notes.append(f"ignored '{cue}': the reading has {got} {family}s, not {count}")

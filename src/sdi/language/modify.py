@@ -98,6 +98,24 @@ MODIFY = [
         r"(?:\s+off)?",
         "-1",
     ),
+    _op(
+        r"\b(?:take\s+away|take\s+off|remove|knock\s+off|leave\s+off|drop)\s+the\s+(?:very\s+)?"
+        r"(?:highest|top|topmost|uppermost|last)\s+(?:step|stair|level|layer|course|tier|row)\b",
+        "-1",
+    ),
+    # "then remove the middle 4 cubes": a solid floor with its middle taken out is a ring
+    _op(
+        r"\b(?:take\s+(?:out|away)|remove|pull\s+out|leave\s+out|lift\s+out|hollow\s+out)\s+"
+        r"(?:all\s+)?(?:of\s+)?the\s+(?:middle|centre|center|inner|inside)\b(?:\s+(?:\d+|one|two|three|"
+        r"four|nine)\s+)?(?:\s*(?:cubes?|parts?|ones|bit|square))?(?!\s+one\b)",
+        "hollow",
+    ),
+    # "5 towers of 2 in a line, then take away the middle one": one structure fewer
+    _op(
+        r"\b(?:take\s+(?:out|away)|remove|leave\s+out|drop|skip)\s+the\s+(middle|first|last)\s+"
+        r"(?:one|tower|stack|column|pillar|row|wall)\b",
+        "drop",
+    ),
 ]
 
 
@@ -148,6 +166,45 @@ def modify(
                 update={"region": place, "at_x": None, "at_y": None}
             )
             st.notes.append(f"'{m.group(0).strip()}': the {structures[index].shape} goes {place}")
+            p.count = 0
+            p.modified = True
+            return True
+        if op == "hollow":  # a solid floor or block 3 across or more, its middle taken out
+            target = built[-1]
+            index = target.first + target.count - 1
+            floor = structures[index]
+            if (
+                floor.shape not in ("grid", "block")
+                or min(floor.length or 3, floor.width or floor.length or 3) < 3
+            ):
+                return False  # fmt: skip
+            structures[index] = StructureDraft(
+                shape="enclosure", length=floor.length, width=floor.width or floor.length,
+                height=floor.height if floor.shape == "block" else None,
+                length_m=floor.length_m, width_m=floor.width_m, at_x=floor.at_x,
+                at_y=floor.at_y, region=floor.region, part=floor.part,
+            )  # fmt: skip
+            st.notes.append(f"'{m.group(0).strip()}': the {floor.shape} without its middle, "
+                            "a ring")  # fmt: skip
+            p.count = 0
+            p.modified = True
+            return True
+        if op == "drop":  # one of several like structures named together left out
+            target = built[-1]
+            if target.count < 2:
+                return False
+            which = m.group(1).lower()
+            at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
+            if which == "middle" and target.count % 2 == 0:
+                return False  # no single middle one
+            del structures[target.first + at]
+            for q in before:
+                if q.count and q.first > target.first:
+                    q.first -= 1
+            target.count -= 1
+            st.notes.append(
+                f"'{m.group(0).strip()}': {target.count} left of the {target.count + 1}"
+            )
             p.count = 0
             p.modified = True
             return True
