@@ -1224,3 +1224,26 @@ def test_component_words_name_the_structure_they_belong_to():
     assert r.status == "success" and [s.shape for s in r.spec.structures] == ["canopy"]
     # "on the table" is the work table
     assert plan("put a few towers on the table").status == "success"
+
+
+def test_one_more_next_to_that_chains_and_a_side_corrected():
+    r = read(
+        "make a stack of 3 cubes. put another stack of 3 next to it. and one more next to that"
+    )
+    assert [s.height for s in r.spec.structures] == [3, 3, 3]
+    assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]
+    r = read("a stack of 3 to the left of a stack of 5 - no, to the right of it")
+    assert [x.side for x in r.spec.relations] == ["right"]
+    assert read("a row of 4, no, 5").spec.structures[0].length == 5
+    assert read("a 3x3 grid, no beams").spec.structures[0].length == 3  # "no" is not a correction
+
+
+def test_places_said_as_corners_halfway_and_shorthand():
+    r = read("one tower of 2 in each of the four corners of the table")
+    assert sorted(s.region or "" for s in r.spec.structures) == [
+        "back left", "back right", "front left", "front right"]  # fmt: skip
+    assert all(s.height == 2 for s in r.spec.structures)
+    s = read("a tower of 6 at y = 0.15, halfway between front and back").spec.structures[0]
+    assert (s.at_y, s.region) == (0.15, "centre")
+    r = read("a towr of 4 nxt to a towr of 2")
+    assert [x.kind for x in r.spec.relations] == ["next_to"]

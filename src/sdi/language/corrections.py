@@ -13,6 +13,7 @@ from sdi.spec import lexicon as lx
 from sdi.spec.numbers import TENS, UNITS
 
 _MARKER = re.compile(
+    r"\s*[,;—–-]+\s*no\s*[,!]\s*|"  # "a stack of 3 to the left of it - no, to the right"
     r"\s*[,.;:!—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|"
@@ -41,6 +42,9 @@ _FILLER = re.compile(
 )
 
 
+_OF_IT = re.compile(
+    r"(?:\s+(?:hand\s+)?side)?\s+of\s+(?:it|that|them|this|those|the\s+\w+(?:\s+\w+)?)$", re.I
+)
 _PARTS = re.compile(r"\s+(?:cubes?|blocks?|parts?|pieces?|bricks?)$", re.IGNORECASE)
 
 
@@ -109,6 +113,9 @@ def correct(text: str, notes: list[str]) -> str:
         said, rest = head[0], after[len(head[0]) :]
         value = _FILLER.sub("", _NOT_OLD.sub("", said.strip())).strip(" ,.;!?")
         value = _PARTS.sub("", value)
+        side = _OF_IT.sub("", value)  # "to the right of it": the side of the same relation
+        if side != value and _kind(side) == "region":
+            value = side
         kind = _kind(value) if value and not _names_structure(value) else None
         if kind is None and not _names_structure(value):
             dimensioned = _with_dimension(before, value, rest, notes)

@@ -140,12 +140,21 @@ def _extreme_at(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+def _halfway(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "halfway between front and back": centred front to back (or left to right)."""
+    said, groups = _said(m)
+    axis = "front to back" if groups[0] in ("front", "back") else "left-right"
+    st.notes.append(f"read '{said}' as centred {axis}")
+    return " centred front to back " if axis == "front to back" else " centred left-right "
+
+
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cube in each corner of the table": one copy in each corner region. Without "of
     the table" only when no other structure is named (then the corners may be its own)."""
     what = m.group(1).strip()
     rest = (m.string[: m.start()] + " " + m.string[m.end() :]).lower()
-    if re.search(r"\b(?:with|and|on|of)\b", what, re.IGNORECASE) or (
+    head = re.sub(r"\s+(?:of\s+)?\d+(?:\s+\w+)?$", "", what)  # "tower of 2": its size aside
+    if re.search(r"\b(?:with|and|on|of)\b", head, re.IGNORECASE) or (
         not m.group(2) and any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", rest))
     ):
         return m.group(0)  # "a slab with a cube on every corner": the slab's corners
@@ -422,6 +431,7 @@ HANDLERS: dict[str, Handler] = {
     "{extreme_at}": _extreme_at,
     "{compared}": _compared,
     "{more_of}": _more_of,
+    "{halfway}": _halfway,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

@@ -106,6 +106,9 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
     built = [j for j, q in enumerate(before) if q.spec is not None or q.ref is not None]
     others = [j for j in built if partner is None or resolve(before, j) != partner]
     built = others or built
+    if words_[0] == "that":  # "… next to it, and another one next to that": the one just named
+        named = [j for j in built if before[j].spec is not None]
+        built = named or built
     if not built:
         return None
     sides = [w for w in words_[1:] if w in ("left", "right", "front", "back")]

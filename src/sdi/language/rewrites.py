@@ -988,6 +988,16 @@ _REWRITES += [
         " two towers{0} ",
         "read '{0}' as the two pillars alone",
     ),
+    (  # "halfway between front and back": centred that way
+        re.compile(
+            r"\b(?:halfway|half\s+way|midway|mid\s+way)\s+(?:between|from)\s+(?:the\s+)?"
+            r"(front|back|left|right)\s+(?:and|to)\s+(?:the\s+)?(?:front|back|left|right)\b"
+            r"(?:\s+(?:edges?|sides?))?(?:\s+of\s+the\s+(?:table|workspace|cell))?",
+            re.IGNORECASE,
+        ),
+        "{halfway}",
+        "",
+    ),
     (  # "centred left-right": across the table, the default; the other region word stays
         re.compile(
             r",?\s*\b(?:centred|centered|central)\s+(?:left[- ]to[- ]right|left[- ]right|"
@@ -1225,8 +1235,17 @@ _TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
 _ARTICLES = frozenset({"a", "an", "another", "the", "it", "them", "one", "two", "three"})
 
 
+_ONE_MORE = re.compile(
+    r"\b(?:and\s+|then\s+|plus\s+)?(?:just\s+)?one\s+more\b(?!\s+(?:cube|block|brick|part|level|"
+    r"layer|step|row|course|tier|time|on|of)\w*)",
+    re.IGNORECASE,
+)
+"""'… and one more next to that': another of the structure named before."""
+
+
 def _another(text: str) -> str:
     """ "a tower on the left and another one on the right": another tower."""
+    text = _ONE_MORE.sub(" and another one", text)
 
     def sub(m: re.Match[str]) -> str:
         said = re.findall(r"[a-z]+", text[: m.start()].lower())
@@ -1346,7 +1365,8 @@ _DISTRIBUTE = re.compile(
 # "a single cube in each of the four corners of the table": one in each corner region
 _CORNERS = re.compile(
     r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*((?:(?:an?|one|a\s+single|single)\s+)?"
-    r"(?:\S+\s+){0,3}?(?:cube|block|brick|tower|stack|column|pyramid|pad|slab)s?)\s+"
+    r"(?:\S+\s+){0,3}?(?:cube|block|brick|tower|stack|column|pyramid|pad|slab)s?"
+    r"(?:\s+(?:of\s+)?\d+(?:\s+(?:cubes?|high|tall|levels?))?)?)\s+"
     r"(?:in|at|on|into)\s+(?:each|every|all)\s+"
     r"(?:one\s+)?(?:of\s+)?(?:the\s+)?(?:four\s+|4\s+)?corners?"
     r"(\s+of\s+the\s+(?:table|workspace|work\s*space|cell|work\s*area|area))?",
