@@ -121,6 +121,16 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         )
     relations = _one_each(relations, st)
     specs = _ordered(specs, relations, st)
+    rows_named = re.search(r"\b(?:rows?|lines?|in\s+a\s+row)\b", text, re.IGNORECASE)
+    guessed = [
+        s for s in specs if s.shape in ("row", "wall") and (getattr(s, "length", None) or 2) > 1
+    ]
+    if len(specs) > 1 and _GUESSED_ROW in st.notes and guessed and not rows_named:
+        # "five cubes long, three tall - such a wall": parts said apart from the structure they
+        # size, built as a row of their own beside it: a guess that is not what was asked
+        st.material.append("parts with no structure named")
+        st.notes.append("a row was guessed for parts said with no structure, beside the "
+                        "structures named; say which structure they belong to")  # fmt: skip
     try:
         spec = Spec(
             structures=tuple(specs),
@@ -167,6 +177,9 @@ _TOUCHING = re.compile(
     r"pressed\s+against|up\s+against)\b",
     re.IGNORECASE,
 )
+
+
+_GUESSED_ROW = "no structure named: placed the parts in a row"
 
 
 def _ordered(

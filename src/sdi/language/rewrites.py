@@ -264,8 +264,9 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\b(one|1)\s+(?:cube|brick)\s+(?=(?:on|at|in|near|beside|by|into)\s+(?:the|each|"
-            r"every|both|its|their|a)\b)",
+            r"\b(one|1)\s+(?:lonely\s+|lone\s+|little\s+|small\s+|extra\s+)?(?:cube|brick)\s+"
+            r"(?=(?:on|at|in|inside|near|beside|by|into)\s+(?:the|each|every|both|its|their|a|top)\b|"
+            r"(?:sitting|standing|resting)\b)",
             re.IGNORECASE,
         ),
         " a 1-cube tower ",
