@@ -1247,3 +1247,19 @@ def test_places_said_as_corners_halfway_and_shorthand():
     assert (s.at_y, s.region) == (0.15, "centre")
     r = read("a towr of 4 nxt to a towr of 2")
     assert [x.kind for x in r.spec.relations] == ["next_to"]
+
+
+def test_a_contradiction_or_a_negative_count_is_refused_with_the_words():
+    for command, words in (("a row of 5 that is also a tower of 5", "both a row and a tower"),
+                           ("build a tower with minus 3 cubes", "cannot be negative")):  # fmt: skip
+        with pytest.raises(SpecError, match=words) as exc:
+            read(command)
+        assert exc.value.understood is not None
+        assert plan(command).status == "error"
+    assert read("nine minus four cubes in a row").spec.structures[0].length == 5
+
+
+def test_parts_said_with_no_structure_beside_a_named_one_are_not_a_success():
+    r = plan("Five cubes long, three cubes tall - such a wall I need.")
+    assert r.status == "partial" and any("row was guessed" in n for n in r.notes)
+    assert plan("put one cube on top of a tower of three").status == "success"

@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from sdi.errors import SpecError
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -146,6 +147,28 @@ def _halfway(m: re.Match[str], st: ReadState, note: str) -> str:
     axis = "front to back" if groups[0] in ("front", "back") else "left-right"
     st.notes.append(f"read '{said}' as centred {axis}")
     return " centred front to back " if axis == "front to back" else " centred left-right "
+
+
+def _negative(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower with minus 3 cubes": a count below zero is refused, not read as 3."""
+    raise SpecError(
+        f"'{m.group(0).strip()}': a count cannot be negative; say how many to build "
+        "(e.g. 'a tower of 3 cubes')",
+        understood={},
+    )
+
+
+def _also_a(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a row of 5 that is also a tower of 5": one structure cannot be two families."""
+    said, groups = _said(m)
+    first, second = lx.SHAPE_WORDS.get(groups[0]), lx.SHAPE_WORDS.get(groups[1])
+    if first is None or second is None or first == second:
+        return m.group(0)
+    raise SpecError(
+        f"'{said}': one structure cannot be both a {first} and a {second}; say which to build, "
+        f"or ask for two structures ('a {first} and a {second}')",
+        understood={"structures": [first, second]},
+    )
 
 
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -432,6 +455,8 @@ HANDLERS: dict[str, Handler] = {
     "{compared}": _compared,
     "{more_of}": _more_of,
     "{halfway}": _halfway,
+    "{also_a}": _also_a,
+    "{negative}": _negative,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

@@ -802,6 +802,11 @@ _REWRITES += [
         "{operation}",
         "",
     ),
+    (  # "a tower with minus 3 cubes": a negative count, refused as one
+        re.compile(r"\b(?:minus|negative)\s+(\d+)\s*(?:cubes?|parts?|levels?|steps?)?", re.I),
+        "{negative}",
+        "",
+    ),
     (  # "with the tallest one in the middle": the order of several structures
         re.compile(
             r",?\s*(?:and\s+|with\s+)?the\s+(tallest|highest|biggest|largest|longest|shortest|"
@@ -988,6 +993,15 @@ _REWRITES += [
         ),
         " two towers{0} ",
         "read '{0}' as the two pillars alone",
+    ),
+    (  # "a row of 5 that is also a tower of 5": a contradiction, refused
+        re.compile(
+            r"\b(" + _SHAPE_ALT + r")\b[^,.;]{0,30}?\b(?:that|which|and)\s+(?:is|'s)\s+(?:also|"
+            r"at\s+the\s+same\s+time|simultaneously)\s+an?\s+(" + _SHAPE_ALT + r")\b",
+            re.IGNORECASE,
+        ),
+        "{also_a}",
+        "",
     ),
     (  # "halfway between front and back": centred that way
         re.compile(
