@@ -11,6 +11,8 @@
    Inspector's order over the seeds (stands = stands for every seed).
 3. Perturbed layouts (`--perturbed`, default 150): a suite layout or one of a few other
    commands' with one part removed or moved; those the Inspector passes must stand.
+   Unseen commands: every command of the language sets (`--unseen N`: the first N of each)
+   planned with `success` is assembled once the same way; all should stand.
 4. Verify time (best of 5, one process) on the suite's group E layouts (13–24 parts) and on
    1 000-part layouts: a field of 4-level columns, 334 bridges, and 250 beams balanced on one
    cube with a cube on each end (every beam could tip: the LP and the intermediate-state
@@ -252,11 +254,40 @@ def perturbed(n: int, seed: int = 1) -> dict[str, Any]:
     }
 
 
+def unseen(seeds: int, limit: int | None = None) -> dict[str, Any]:
+    """Commands of the language sets (written by others, in no rule of the front end's; the
+    frozen test set and the held-out dev sets included): every layout planned with `success`
+    is assembled like the suite's. `limit`: at most that many commands per set."""
+    import importlib
+
+    from sdi.execute.physics_check import assemble
+    from sdi.pipeline import plan
+
+    sets = ["test", *(f"dev{n}" for n in ("", 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))]
+    verified = stood = 0
+    fell: list[dict[str, Any]] = []
+    for name in sets:
+        cases = importlib.import_module(f"sdi.bench.language_{name}").CASES[:limit]
+        for case in cases:
+            r = plan(case.text)
+            if r.status != "success" or r.layout is None:
+                continue
+            verified += 1
+            runs = [assemble(r.layout, r.sequence, seed=s) for s in range(seeds)]
+            if all(s.stands for s in runs):
+                stood += 1
+            else:
+                worst = max(runs, key=lambda s: s.worst_offset_m)
+                fell.append({"id": case.id, "text": case.text, **worst.to_json_dict()})
+    return {"sets": sets, "limit": limit, "verified": verified, "stand": stood, "fell": fell}
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--timing-only", action="store_true")
     ap.add_argument("--perturbed", type=int, default=150, help="perturbed layouts to try")
+    ap.add_argument("--unseen", type=int, default=25, help="commands per language set (0: all)")
     args = ap.parse_args()
     if args.timing_only:
         print(json.dumps(timing(), indent=1))
@@ -270,6 +301,7 @@ def main() -> None:
         "suite": suite_physics(args.seeds),
         "tricky": tricky(args.seeds),
         "perturbed": perturbed(args.perturbed),
+        "unseen": unseen(1, args.unseen or None),
         "verify_time": timing(),
     }
     result["seconds"] = round(time.perf_counter() - t0, 1)
@@ -282,7 +314,8 @@ def main() -> None:
         f"{t['agree']}/{t['cases']} (centre-of-mass test alone: {t['com_test_agreed']}); "
         f"passed but fell: {t['inspector_passes_and_falls']}; perturbed: "
         f"{len(result['perturbed']['passed_and_fell'])} of {result['perturbed']['passed']} "
-        "passed fell"
+        f"passed fell; unseen commands: {result['unseen']['stand']}/"
+        f"{result['unseen']['verified']} verified layouts stand"
     )
 
 

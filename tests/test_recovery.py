@@ -147,7 +147,7 @@ def test_shift_moves_before_it_turns_a_row_off_its_axis():
 def test_a_turn_off_the_commanded_axis_is_a_changed_shape_and_says_so():
     from sdi.recovery.outcome import recover
 
-    spec = Spec(structures=(structure("row", length=5, axis="y"),))  # Table V's F08: 0.25 m
+    spec = Spec(structures=(structure("row", length=5, axis="y"),))  # a 0.25 m row
     band = (Region(y_max=0.23), Region(y_min=0.37))  # in a 0.14 m band: only a turn fits
     out, outcome = recover("shift", compose(spec), CellConfig(), band, spec)
     assert outcome.turned_deg in (90.0, 270.0) and outcome.shape_changed
