@@ -677,7 +677,8 @@ CASES: tuple[Case, ...] = (
         "typo-12",
         TYP,
         "an L shpae, each arm 4 cubes",
-        one(L_SHAPE, k.dims(4, 4)),
+        # the arms 4 counting the shared corner cube, or 4 beyond it
+        one(L_SHAPE, k.any_of(k.dims(4, 4), k.dims(5, 5))),
     ),
     _c("typo-13", TYP, "put a cueb at x 0.6 y 0.2", one(T(1), k.near(0.6, 0.2))),
     # ------------------------------------------------------------------ word order
@@ -887,7 +888,7 @@ CASES: tuple[Case, ...] = (
         one(k.block(2, 3, 1), reg("back right")),
     ),
     # ------------------------------------------------------------------ open
-    _c("open-01", OPEN, "something tall, whatever you like", one(k.height(lo=5))),
+    _c("open-01", OPEN, "something tall, whatever you like", one(k.height(lo=4))),
     _c("open-02", OPEN, "a small tower for the display", one(T(lo=2, hi=4))),
     _c(
         "open-03",
