@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to eleventh dev sets (dev2 … dev11) are held to the same checks and share no
+second to twelfth dev sets (dev2 … dev12) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -26,6 +26,7 @@ from sdi.bench.language_dev8 import CASES as DEV8
 from sdi.bench.language_dev9 import CASES as DEV9
 from sdi.bench.language_dev10 import CASES as DEV10
 from sdi.bench.language_dev11 import CASES as DEV11
+from sdi.bench.language_dev12 import CASES as DEV12
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -305,6 +306,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV9,
         *DEV10,
         *DEV11,
+        *DEV12,
         *TEST,
     ):
         out = case.accept(result)
@@ -336,6 +338,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev9.py",
         "language_dev10.py",
         "language_dev11.py",
+        "language_dev12.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -756,7 +759,7 @@ def test_dev6_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev6_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV6}) == len(DEV6)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, DEV10, DEV11, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, DEV10, DEV11, DEV12, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV6 if _norm(c.text) in seen]
 
@@ -856,7 +859,7 @@ def test_dev7_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev7_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV7}) == len(DEV7)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, DEV10, DEV11, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, DEV10, DEV11, DEV12, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV7 if _norm(c.text) in seen]
 
@@ -968,6 +971,7 @@ def test_dev8_set_sizes_ids_and_phenomena():
             *DEV9,
             *DEV10,
             *DEV11,
+            *DEV12,
             *TEST,
         )
     ]
@@ -981,7 +985,7 @@ def test_dev8_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev8_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV8}) == len(DEV8)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, DEV10, DEV11, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, DEV10, DEV11, DEV12, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV8 if _norm(c.text) in seen]
 
@@ -1131,6 +1135,7 @@ def test_dev9_set_sizes_ids_and_phenomena():
             *DEV9,
             *DEV10,
             *DEV11,
+            *DEV12,
             *TEST,
         )
     ]
@@ -1144,7 +1149,7 @@ def test_dev9_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev9_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV9}) == len(DEV9)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV10, DEV11, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV10, DEV11, DEV12, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV9 if _norm(c.text) in seen]
 
@@ -1387,6 +1392,7 @@ def test_dev10_set_sizes_ids_and_phenomena():
             *DEV9,
             *DEV10,
             *DEV11,
+            *DEV12,
             *TEST,
         )
     ]
@@ -1400,7 +1406,7 @@ def test_dev10_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev10_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV10}) == len(DEV10)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV11, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV11, DEV12, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV10 if _norm(c.text) in seen]
 
@@ -1660,6 +1666,7 @@ def test_dev11_set_sizes_ids_and_phenomena():
             *DEV9,
             *DEV10,
             *DEV11,
+            *DEV12,
             *TEST,
         )
     ]
@@ -1674,7 +1681,7 @@ def test_dev11_set_sizes_ids_and_phenomena():
 
 def test_no_command_shared_between_dev11_and_the_other_sets():
     assert len({_norm(c.text) for c in DEV11}) == len(DEV11)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV10, TEST):
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV10, DEV12, TEST):
         seen = {_norm(c.text) for c in other}
         assert not [c.id for c in DEV11 if _norm(c.text) in seen]
 
@@ -1948,5 +1955,303 @@ def _table(high):
 )
 def test_dev11_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev11(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev12
+
+
+def test_dev12_set_sizes_ids_and_phenomena():
+    assert len(DEV12) >= 150
+    ids = [
+        c.id
+        for c in (
+            *DEV,
+            *DEV2,
+            *DEV3,
+            *DEV4,
+            *DEV5,
+            *DEV6,
+            *DEV7,
+            *DEV8,
+            *DEV9,
+            *DEV10,
+            *DEV11,
+            *DEV12,
+            *TEST,
+        )
+    ]
+    assert len(ids) == len(set(ids))
+    assert all(c.id.startswith("dev12-") for c in DEV12)
+    per = {p: sum(c.phenomenon == p for c in DEV12) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= 8, per
+    assert min(per[p] for p in ("relation", "numbers", "dimensions", "sequence")) >= 15, per
+    assert {c.phenomenon for c in DEV12} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in DEV12)
+
+
+def test_no_command_shared_between_dev12_and_the_other_sets():
+    assert len({_norm(c.text) for c in DEV12}) == len(DEV12)
+    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV10, DEV11, TEST):
+        seen = {_norm(c.text) for c in other}
+        assert not [c.id for c in DEV12 if _norm(c.text) in seen]
+
+
+def _dev12(case_id: str) -> Case:
+    return next(c for c in DEV12 if c.id == case_id)
+
+
+def _rows_pyramid(x, y0):
+    """A flat pyramid one cube thick along y: rows of 4, 3, 2 and 1, each centred."""
+    return [
+        *_row_y(x, y0, 4),
+        *_row_y(x, y0 + C / 2, 3, z0=C),
+        *_row_y(x, y0 + C, 2, z0=2 * C),
+        cube(x, y0 + 1.5 * C, 3 * C + C / 2),
+    ]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev12-rel-01",  # a 2x2x2 block two cubes right (-y) of a 4-tower
+            res(*column(0.45, 0.40, 4), *grid(0.425, 0.20, 2, 2, layers=2)),
+            res(*column(0.45, 0.20, 4), *grid(0.425, 0.35, 2, 2, layers=2)),
+        ),
+        (
+            "dev12-rel-02",  # a cube on the middle of a 4x2 wall
+            res(*grid(0.45, 0.225, 1, 4, layers=2), cube(0.45, 0.30, 2 * C + C / 2)),
+            res(*grid(0.45, 0.225, 1, 4, layers=2), cube(0.45, 0.225, 2 * C + C / 2)),
+        ),
+        (
+            "dev12-rel-04",  # a bridge on 3-pillars with a cube on the beam
+            res(*_bridge(0.45, 0.30, 3), cube(0.45, 0.30, 4 * C + C / 2)),
+            res(*_bridge(0.45, 0.30, 3)),
+        ),
+        (
+            "dev12-rel-05",  # a 5-tower between two rows of 3, apart
+            res(*_row_x(0.40, 0.15, 3), *_row_x(0.40, 0.45, 3), *column(0.45, 0.30, 5)),
+            res(*_row_x(0.40, 0.20, 3), *_row_x(0.40, 0.35, 3), *column(0.45, 0.50, 5)),
+        ),
+        (
+            "dev12-rel-06",  # a 3x3 floor with a 2-tower on every corner
+            res(*_slab_with_corner_columns(0.40, 0.25, 3, 2)),
+            res(*_slab_with_corner_columns(0.40, 0.25, 3, 1)),
+        ),
+        (
+            "dev12-rel-08",  # the 7-tower left (+y), the 3-tower right, two cubes between
+            res(*column(0.45, 0.40, 7), *column(0.45, 0.25, 3)),
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.25, 7)),
+        ),
+        (
+            "dev12-rel-09",  # a 3-level pyramid inside a 2-high ring, free of it
+            res(*ring(0.30, 0.15, 7, high=2), *_pyr(0.40, 0.25, 3)),
+            res(*ring(0.30, 0.15, 7, high=2), *_pyr(0.40, 0.25, 2)),
+        ),
+        (
+            "dev12-rel-09",  # … or the ring laid tight round the pyramid
+            res(*ring(0.35, 0.20, 5, high=2), *_pyr(0.40, 0.25, 3)),
+            res(*ring(0.35, 0.20, 5, high=1), *_pyr(0.40, 0.25, 3)),
+        ),
+        (
+            "dev12-rel-10",  # a 4x4 slab, a 2x2 block on it, a cube on the block
+            res(
+                *grid(0.35, 0.20, 4, 4),
+                *grid(0.40, 0.25, 2, 2, z0=C),
+                cube(0.425, 0.275, 2 * C + C / 2),
+            ),
+            res(*grid(0.35, 0.20, 4, 4), *grid(0.40, 0.25, 2, 2, z0=C), cube(0.35, 0.20, 1.5 * C)),
+        ),
+        (
+            "dev12-rel-11",  # a 3-tower behind (+x) a 4x4 ring, outside it
+            res(*ring(0.40, 0.225, 4), *column(0.70, 0.30, 3)),
+            res(*ring(0.40, 0.225, 4), *column(0.25, 0.30, 3)),
+        ),
+        (
+            "dev12-rel-11",  # … or set against the ring's back
+            res(*ring(0.40, 0.225, 4), *column(0.60, 0.30, 3)),
+            res(*ring(0.40, 0.225, 4), *column(0.35, 0.30, 3)),
+        ),
+        (
+            "dev12-rel-13",  # a row of 6 built up to 3 at both ends
+            res(*_stairs_y(0.45, 0.15, (3, 1, 1, 1, 1, 3))),
+            res(*_stairs_y(0.45, 0.15, (4, 1, 1, 1, 1, 4))),
+        ),
+        (
+            "dev12-rel-14",  # a 4x2 wall and a tower twice as tall beside it
+            res(*grid(0.45, 0.20, 1, 4, layers=2), *column(0.45, 0.45, 4)),
+            res(*grid(0.45, 0.20, 1, 4, layers=2), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev12-rel-14",  # … or the tower built against the wall's end
+            res(*_stairs_y(0.45, 0.20, (2, 2, 2, 2, 4))),
+            res(*_stairs_y(0.45, 0.20, (2, 2, 2, 4))),
+        ),
+        (
+            "dev12-rel-15",  # stacks of 2, 4, 6 from front to back
+            res(*column(0.30, 0.30, 2), *column(0.45, 0.30, 4), *column(0.60, 0.30, 6)),
+            res(*column(0.30, 0.30, 6), *column(0.45, 0.30, 4), *column(0.60, 0.30, 2)),
+        ),
+        (
+            "dev12-rel-16",  # a 2x2 pad in one corner of a 3x3 pad
+            res(*grid(0.40, 0.25, 3, 3), *grid(0.40, 0.25, 2, 2, z0=C)),
+            res(*grid(0.40, 0.25, 3, 3), *grid(0.425, 0.275, 2, 2, z0=C)),
+        ),
+        (
+            "dev12-rel-17",  # a 3-tower, a 2x2 block, a 2-level pyramid, left to right
+            res(*column(0.45, 0.47, 3), *grid(0.425, 0.30, 2, 2), *_pyr(0.40, 0.10, 2)),
+            res(*column(0.45, 0.10, 3), *grid(0.425, 0.30, 2, 2), *_pyr(0.40, 0.40, 2)),
+        ),
+        (
+            "dev12-seq-05",  # corrected: a 5x5 pen
+            res(*ring(0.35, 0.20, 5)),
+            res(*ring(0.40, 0.25, 3)),
+        ),
+        (
+            "dev12-seq-06",  # a 3x3 floor without its centre cube
+            res(*ring(0.40, 0.25, 3)),
+            res(*grid(0.40, 0.25, 3, 3)),
+        ),
+        (
+            "dev12-seq-07",  # a 4-step staircase up to the back, a 4-tower behind the top
+            res(*_stairs_x(0.30, 0.30, (1, 2, 3, 4, 4))),
+            res(*_stairs_x(0.30, 0.30, (4, 1, 2, 3, 4))),
+        ),
+        (
+            "dev12-seq-08",  # two 5-towers one cube apart, a beam across
+            res(*_bridge(0.45, 0.30, 5)),
+            res(*_WIDE_BRIDGE4),
+        ),
+        (
+            "dev12-seq-09",  # a 6x2 wall with a 4-tower against its left (+y) end
+            res(*_stairs_y(0.45, 0.15, (2, 2, 2, 2, 2, 2, 4))),
+            res(*_stairs_y(0.45, 0.15, (4, 2, 2, 2, 2, 2, 2))),
+        ),
+        (
+            "dev12-seq-12",  # rows of 4, 3, 2, 1 stacked
+            res(*_rows_pyramid(0.45, 0.20)),
+            res(*_rows_pyramid(0.45, 0.20)[:-1]),
+        ),
+        (
+            "dev12-seq-13",  # three 3-towers without the middle one
+            res(*column(0.45, 0.15, 3), *column(0.45, 0.45, 3)),
+            res(*column(0.45, 0.15, 3), *column(0.45, 0.30, 3), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev12-seq-14",  # a 4x4 fence filled in and a layer more
+            res(*grid(0.35, 0.20, 4, 4, layers=2)),
+            res(*ring(0.35, 0.20, 4, high=2)),
+        ),
+        (
+            "dev12-seq-15",  # towers of 2, 3, 4 from front to back
+            res(*column(0.30, 0.30, 2), *column(0.45, 0.30, 3), *column(0.60, 0.30, 4)),
+            res(*column(0.30, 0.30, 4), *column(0.45, 0.30, 3), *column(0.60, 0.30, 2)),
+        ),
+        (
+            "dev12-num-01",  # towers of 2, 4 and 6
+            res(*column(0.45, 0.15, 2), *column(0.45, 0.30, 4), *column(0.45, 0.45, 6)),
+            res(*column(0.45, 0.15, 2), *column(0.45, 0.30, 4), *column(0.45, 0.45, 5)),
+        ),
+        (
+            "dev12-num-01",  # … or built touching
+            res(*_stairs_y(0.45, 0.25, (2, 4, 6))),
+            res(*_stairs_y(0.45, 0.25, (2, 4, 4))),
+        ),
+        (
+            "dev12-num-06",  # a 3-tower and one a cube shorter, built touching
+            res(*column(0.45, 0.25, 3), *column(0.45, 0.30, 2)),
+            res(*column(0.45, 0.25, 3), *column(0.45, 0.30, 3)),
+        ),
+        (
+            "dev12-num-10",  # three 3x3 rings
+            res(*ring(0.25, 0.10, 3), *ring(0.45, 0.10, 3), *ring(0.65, 0.10, 3)),
+            res(*ring(0.25, 0.10, 3), *ring(0.45, 0.10, 3)),
+        ),
+        (
+            "dev12-num-12",  # a 4-stack and beside it one of half its height
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.35, 2)),
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.35, 3)),
+        ),
+        (
+            "dev12-dim-05",  # 25 cm square outside, 10 cm tall
+            res(*ring(0.35, 0.20, 5, high=2)),
+            res(*ring(0.35, 0.20, 5, high=1)),
+        ),
+        (
+            "dev12-dim-13",  # two 20 cm towers 10 cm apart
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.35, 4)),
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.40, 4)),
+        ),
+        (
+            "dev12-dim-16",  # a fence round a 2x2 cube space
+            res(*ring(0.40, 0.25, 4)),
+            res(*ring(0.40, 0.25, 3)),
+        ),
+        (
+            "dev12-neg-01",  # a 4-tower not in the middle
+            res(*column(0.30, 0.15, 4)),
+            res(*column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev12-neg-12",  # a 4-step staircase not climbing to the back
+            res(*_stairs_x(0.35, 0.30, (4, 3, 2, 1))),
+            res(*_stairs_x(0.35, 0.30, (1, 2, 3, 4))),
+        ),
+        (
+            "dev12-typo-12",  # an L with arms of 4
+            res(*_l_shape(0.40, 0.20, 4)),
+            res(*_l_shape(0.40, 0.20, 3)),
+        ),
+        (
+            "dev12-wo-08",  # a 2-stack one cube left (+y) of a 3-level pyramid
+            res(*_pyr(0.40, 0.15, 3), *column(0.45, 0.35, 2)),
+            res(*_pyr(0.40, 0.30, 3), *column(0.45, 0.20, 2)),
+        ),
+        (
+            "dev12-wo-11",  # a 3-tower inside a 5x5 fence
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 3)),
+            res(*ring(0.35, 0.20, 5), *column(0.70, 0.30, 3)),
+        ),
+        (
+            "dev12-reg-04",  # a cube as far left (+y) as it goes
+            res(cube(0.45, 0.525, C / 2)),
+            res(cube(0.45, 0.30, C / 2)),
+        ),
+        (
+            "dev12-reg-05",  # a 2-tower on the left (+y), a 5-tower on the right
+            res(*column(0.45, 0.40, 2), *column(0.45, 0.20, 5)),
+            res(*column(0.45, 0.20, 2), *column(0.45, 0.40, 5)),
+        ),
+        (
+            "dev12-reg-09",  # cubes in the back left and back right corners
+            res(cube(0.65, 0.45, C / 2), cube(0.65, 0.15, C / 2)),
+            res(cube(0.65, 0.45, C / 2), cube(0.30, 0.15, C / 2)),
+        ),
+        (
+            "dev12-open-06",  # towers of different heights
+            res(*column(0.45, 0.15, 2), *column(0.45, 0.30, 3), *column(0.45, 0.45, 4)),
+            res(*column(0.45, 0.15, 3), *column(0.45, 0.30, 3)),
+        ),
+        (
+            "dev12-open-12",  # taller than wide
+            res(*column(0.45, 0.30, 4)),
+            res(*grid(0.40, 0.25, 3, 3)),
+        ),
+        (
+            "dev12-bad-01",  # a 14-cube tower: refuse, or cap it and say so
+            res(*column(0.45, 0.30, 10), notes=["capped at 10 cubes"]),
+            res(*column(0.45, 0.30, 10)),
+        ),
+        (
+            "dev12-bad-08",  # a beam cannot span three cubes: refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.20, 5), *column(0.45, 0.40, 5)),
+        ),
+    ],
+)
+def test_dev12_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev12(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
