@@ -1263,3 +1263,13 @@ def test_parts_said_with_no_structure_beside_a_named_one_are_not_a_success():
     r = plan("Five cubes long, three cubes tall - such a wall I need.")
     assert r.status == "partial" and any("row was guessed" in n for n in r.notes)
     assert plan("put one cube on top of a tower of three").status == "success"
+
+
+def test_typos_that_lost_or_swapped_a_letter_and_joined_words():
+    s = read("a wall 5 lnog and 2 tal").spec.structures[0]
+    assert (s.shape, s.length, s.height) == ("wall", 5, 2)
+    s = read("wll 4 lon 3 hgh").spec.structures[0]
+    assert (s.shape, s.length, s.height) == ("wall", 4, 3)
+    r = plan("stak thre cubse on top of eachother")
+    assert r.status == "success" and len(r.layout) == 3
+    assert plan("Baue einen Turm aus drei Würfeln").status != "success"  # not English

@@ -26,6 +26,10 @@ _KNOWN = frozenset(words.VOCABULARY)
 _CHOICES = sorted(words.CORRECTABLE)  # what a word may be corrected to
 
 
+_CUT_SHORT = ("tall", "long", "high", "wide", "deep")
+"""Dimension words a three-letter typo may have lost its last letter from."""
+
+
 def _vocab_has(word: str) -> bool:
     return word in pipeline().vocab.strings
 
@@ -43,6 +47,10 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
         if len(w) == 3:  # three letters: only a swap of two neighbours ("teh")
             swaps = {w[:i] + w[i + 1] + w[i] + w[i + 2 :] for i in range(2)}
             hit = sorted(swaps & words.CORRECTABLE)
+            cut = [d for d in _CUT_SHORT if d.startswith(w)]  # "tal", "lon": a letter lost
+            if not hit and len(cut) == 1:
+                notes.append(f"corrected '{raw}' to '{cut[0]}'")
+                return cut[0]
             if len(hit) == 1:
                 notes.append(f"corrected '{raw}' to '{hit[0]}'")
                 return hit[0]

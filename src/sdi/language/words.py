@@ -73,7 +73,7 @@ HARMLESS = _words(
     working surface bench heights lengths widths sizes plus tidy task running runs actually
     sorry oops wait req fyi thx asap kindly ta lonely sturdy sign slide visual deck mock
     mockup meanwhile anyway anyways besides btw otherwise replicate reproduce stage staged
-    deliver fetch prepare
+    deliver fetch prepare approx approximate exact dimension dimensions better best
     """
 )
 
@@ -95,7 +95,7 @@ CORRECTABLE = frozenset(
         "millimetres", "millimeters", "corner", "pyramid", "staircase", "enclosure",
         "column", "bridge", "tower", "castle", "canopy", "please", "build", "place", "the",
         "shape", "shaped", "with", "make", "put", "and", "high", "long", "wide", "cubes",
-        "next", "behind", "front",
+        "next", "behind", "front", "stack",
     }
 )  # fmt: skip
 
