@@ -1273,3 +1273,23 @@ def test_typos_that_lost_or_swapped_a_letter_and_joined_words():
     r = plan("stak thre cubse on top of eachother")
     assert r.status == "success" and len(r.layout) == 3
     assert plan("Baue einen Turm aus drei Würfeln").status != "success"  # not English
+
+
+def test_corrections_that_name_the_structure_and_lists_said_one_by_one():
+    s = read("a 3 by 3 pen, one high - no wait, make the pen 5 by 5").spec.structures
+    assert [(x.shape, x.length, x.width) for x in s] == [("enclosure", 5, 5)]
+    s = read("make a bridge with pillars of 2. actually make the pillars 4 instead").spec.structures
+    assert [(x.shape, x.height) for x in s] == [("bridge", 4)]
+    r = read("first a lone cube, then a tower of 2, then one of 3, all in a row with gaps")
+    assert [x.height for x in r.spec.structures] == [1, 2, 3]
+    r = read("two cubes, one in the back left corner and one in the back right corner")
+    assert sorted((x.height, x.region) for x in r.spec.structures) == [
+        (1, "back left"), (1, "back right")]  # fmt: skip
+    assert (
+        read("put a cube down at x 0.3 y 0.3, then stack two more on it").spec.structures[0].height
+        == 3
+    )
+    # an arrangement SDI does not make is said, not silently replaced by a structure
+    r = plan("four stacks of 2 arranged in a square")
+    assert r.status == "partial" and [s.shape for s in r.spec.structures] == ["tower"] * 4
+    assert any("fornt" in n and "front" in n for n in read("towr of 5 at the fornt").notes)

@@ -171,6 +171,14 @@ def _also_a(m: re.Match[str], st: ReadState, note: str) -> str:
     )
 
 
+def _arrangement(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "arranged in a square": separate structures stand side by side in a line; say so."""
+    said = m.group(0).strip(" ,")
+    st.material.append(said)
+    st.notes.append(f"ignored '{said}': separate structures are placed side by side in a line")
+    return " "
+
+
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cube in each corner of the table": one copy in each corner region. Without "of
     the table" only when no other structure is named (then the corners may be its own)."""
@@ -457,6 +465,7 @@ HANDLERS: dict[str, Handler] = {
     "{halfway}": _halfway,
     "{also_a}": _also_a,
     "{negative}": _negative,
+    "{arrangement}": _arrangement,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

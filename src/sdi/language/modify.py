@@ -9,6 +9,7 @@ import re
 from sdi.errors import SpecError
 from sdi.language.state import Phrase, ReadState
 from sdi.model.cell import CellConfig
+from sdi.spec import lexicon as lx
 from sdi.spec.grammar import PRIMARY, parse_phrase
 from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import StructureDraft
@@ -103,6 +104,15 @@ MODIFY = [
         r"(?:highest|top|topmost|uppermost|last)\s+(?:step|stair|level|layer|course|tier|row)\b",
         "-1",
     ),
+    # "no wait, make the pen 5 by 5": the size of the structure named before, changed
+    _op(r"\bmake\s+(?:the|that)\s+\w+\s+(\d+\s*(?:x|by)\s*\d+)\b(?:\s+instead)?", "dims"),
+    # "actually make the pillars 4 instead": a bridge's or a table's own height
+    _op(
+        r"\bmake\s+(?:the|its|both)\s+(?:pillars|legs|posts|supports|columns)\s+"
+        + _N
+        + r"(?:\s+(?:cubes?\s+)?(?:high|tall))?(?:\s+instead)?\s*$",
+        "=pillars",
+    ),
     # "then remove the middle 4 cubes": a solid floor with its middle taken out is a ring
     _op(
         r"\b(?:take\s+(?:out|away)|remove|pull\s+out|leave\s+out|lift\s+out|hollow\s+out)\s+"
@@ -118,6 +128,8 @@ MODIFY = [
     ),
 ]
 
+
+_SPANNING = ("bridge", "arch", "canopy")
 
 REMOVAL = re.compile(
     r"^(?:\w+\s+){0,2}?(?:take|takes|pull|pulls|remove|removes|push|pushes|move|moves|shift|"
@@ -166,6 +178,36 @@ def modify(
                 update={"region": place, "at_x": None, "at_y": None}
             )
             st.notes.append(f"'{m.group(0).strip()}': the {structures[index].shape} goes {place}")
+            p.count = 0
+            p.modified = True
+            return True
+        if op == "dims":  # "make the pen 5 by 5": the last structure named that way
+            a, b = (int(v) for v in re.split(r"\s*(?:x|by)\s*", m.group(1).lower()))
+            noun = re.search(r"make\s+(?:the|that)\s+(\w+)", m.group(0), re.I)
+            family = lx.SHAPE_WORDS.get(noun.group(1).lower()) if noun else None
+            found = next((i for i in range(len(structures) - 1, -1, -1)
+                          if structures[i].shape == family), None)  # fmt: skip
+            if found is None:
+                return False
+            last = structures[found]
+            sized = {"length": a, "width": b, "length_m": None, "width_m": None}
+            structures[found] = last.model_copy(update=sized)
+            was = f"{last.length} by {last.width}" if last.length else "its size"
+            st.notes.append(f"'{m.group(0).strip()}': the {last.shape} is now {a} by {b} "
+                            f"(was {was})")  # fmt: skip
+            p.count = 0
+            p.modified = True
+            return True
+        if op == "=pillars":
+            spanning = [i for i, x in enumerate(structures) if x.shape in _SPANNING]
+            found = spanning[-1] if spanning else None
+            value = words_to_numbers([m.group(1).lower()])[0]
+            if found is None or not value.isdigit() or int(value) < 1:
+                return False
+            last = structures[found]
+            structures[found] = last.model_copy(update={"height": int(value), "height_m": None})
+            st.notes.append(f"'{m.group(0).strip()}': the {last.shape}'s pillars are now "
+                            f"{value} high")  # fmt: skip
             p.count = 0
             p.modified = True
             return True

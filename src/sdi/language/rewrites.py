@@ -110,7 +110,7 @@ _CUBE_NOT_ALONE = (
     r"higher|lower|wider|longer|deeper|thicker|apart|away|gap|space|spacing|of|from|further|"
     r"farther|closer|more|less|fewer|size|sized|across|per|each|at\s+a\s+time|off|out|in\s+from|"
     r"to\s+(?:the\s+)?(?:left|right|front|back)(?!\s+of)|back|forward|forwards|backwards|"
-    r"left|right|up|down|over|along|shy|short|in\s+size|and\s+a\s+half|"
+    r"left|right|up|over|along|shy|short|in\s+size|and\s+a\s+half|"
     r"to|could|can|would|will|might|should|must|fits?|"
     r"pass(?:es)?|goes|gets"
 )
@@ -1003,6 +1003,24 @@ _REWRITES += [
         "{also_a}",
         "",
     ),
+    (  # "…, then one of 3, all in a row with gaps": how separate structures stand anyway
+        re.compile(
+            r",?\s*\b(?:all|them\s+all|all\s+of\s+them|each)\s+(?:in\s+a\s+(?:row|line)|side\s+by\s+side)"
+            r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|spaced\s+out|apart))?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "read '{0}' as the structures side by side (separate structures stand apart)",
+    ),
+    (  # "four stacks of 2 arranged in a square": an arrangement SDI does not make
+        re.compile(
+            r",?\s*\b(?:arranged|set\s+out|laid\s+out|placed|standing)\s+in\s+a\s+"
+            r"(square|circle|ring|triangle|cross|grid|diamond)\b",
+            re.IGNORECASE,
+        ),
+        "{arrangement}",
+        "",
+    ),
     (  # "halfway between front and back": centred that way
         re.compile(
             r"\b(?:halfway|half\s+way|midway|mid\s+way)\s+(?:between|from)\s+(?:the\s+)?"
@@ -1402,7 +1420,19 @@ _BY_HOW_MUCH = re.compile(
 )
 
 
+_LOOSE_CUBES = re.compile(
+    r"\b(two|three|four|2|3|4)\s+(?:single\s+|loose\s+|separate\s+)?(?:cubes|bricks)\s*,\s*"
+    r"(?=one\b)",
+    re.IGNORECASE,
+)
+"""'two cubes, one in the back left corner and one …': structures of one part each."""
+_ONE_OF = re.compile(r"(\bthen\s+)one\s+(of|with)\s+(?=\d)", re.IGNORECASE)
+"""'a tower of 2, then one of 3': another of the structure named before."""
+
+
 def rewrite(text: str, st: ReadState) -> str:
+    text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)
+    text = _ONE_OF.sub(r"\1another one \2 ", text)
     text = _SAME_AGAIN.sub(" another one ", text)
     text = _EVERY_SIDE.sub(lambda m: HANDLERS["{every_side}"](m, st, ""), text)
     tall = _TALL_NOUN.search(text)

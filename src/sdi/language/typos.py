@@ -76,6 +76,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
                 return raw
         best = min(d for _, d, _ in found)
         top = [c for c, d, _ in found if d == best]
+        if len(top) > 1 and [c for c in top if sorted(c) == sorted(w)]:
+            top = [c for c in top if sorted(c) == sorted(w)]  # "fornt": two letters swapped
         if len(top) > 1:
             same_start = [c for c in top if c[0] == w[0]] or top
             # a tie: the candidate sharing most letters in order ("thre" → "three", not "the")
