@@ -1293,3 +1293,16 @@ def test_corrections_that_name_the_structure_and_lists_said_one_by_one():
     r = plan("four stacks of 2 arranged in a square")
     assert r.status == "partial" and [s.shape for s in r.spec.structures] == ["tower"] * 4
     assert any("fornt" in n and "front" in n for n in read("towr of 5 at the fornt").notes)
+
+
+def test_different_heights_a_left_to_right_list_and_a_walls_rows():
+    r = read("a handful of towers, none of them the same height")
+    heights = [s.height for s in r.spec.structures]
+    assert len(heights) >= 3 and len(set(heights)) == len(heights)
+    r = plan("left to right: a tower of 3, then a 2x2 slab")
+    assert r.status == "success"
+    lo, hi = boxes(r)
+    tall = hi[:, 2] > 0.06
+    assert lo[tall, 1].min() > hi[~tall, 1].max()  # the tower, named first, on the left (+y)
+    s = read("a wall made of 8 cubes, two rows of four").spec.structures
+    assert [(x.shape, x.length, x.height) for x in s] == [("wall", 4, 2)]

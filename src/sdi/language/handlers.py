@@ -171,6 +171,19 @@ def _also_a(m: re.Match[str], st: ReadState, note: str) -> str:
     )
 
 
+def _all_different(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a handful of towers, none of them the same height": the reader gives them different
+    heights (`st.distinct`)."""
+    st.distinct = m.group(0).strip(" ,")
+    return " "
+
+
+def _listing(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "three things, left to right: …": the structures named from left to right."""
+    st.listing = f"{m.group(1).lower()} to {m.group(2).lower()}"
+    return " : "
+
+
 def _arrangement(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "arranged in a square": separate structures stand side by side in a line; say so."""
     said = m.group(0).strip(" ,")
@@ -466,6 +479,8 @@ HANDLERS: dict[str, Handler] = {
     "{also_a}": _also_a,
     "{negative}": _negative,
     "{arrangement}": _arrangement,
+    "{all_different}": _all_different,
+    "{listing}": _listing,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

@@ -121,6 +121,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         )
     relations = _one_each(relations, st)
     specs = _ordered(specs, relations, st)
+    specs = _different(_listed(specs, relations, st), st)
     rows_named = re.search(r"\b(?:rows?|lines?|in\s+a\s+row)\b", text, re.IGNORECASE)
     guessed = [
         s for s in specs if s.shape in ("row", "wall") and (getattr(s, "length", None) or 2) > 1
@@ -180,6 +181,36 @@ _TOUCHING = re.compile(
 
 
 _GUESSED_ROW = "no structure named: placed the parts in a row"
+
+
+def _listed(
+    specs: list[StructureSpec], relations: list[Relation], st: ReadState
+) -> list[StructureSpec]:
+    """ "left to right: a tower, then a block, then a pyramid": separate structures stand from
+    right to left in the order named, so a list given from the left is placed reversed."""
+    if st.listing is None or len(specs) < 2 or relations:
+        return specs
+    if st.listing == "left to right":
+        st.notes.append("the structures named left to right, placed in that order")
+        return specs[::-1]
+    return specs
+
+
+def _different(specs: list[StructureSpec], st: ReadState) -> list[StructureSpec]:
+    """ "a handful of towers, none of them the same height": heights one apart."""
+    if st.distinct is None:
+        return specs
+    same = [k for k, s in enumerate(specs) if s.shape == specs[0].shape]
+    heights = [getattr(specs[k], "height", None) for k in same]
+    if len(same) < 2 or len(set(heights)) == len(heights) or not hasattr(specs[0], "height"):
+        return specs
+    start = 2 if len(same) <= 9 else 1
+    out = list(specs)
+    for n, k in enumerate(same):
+        out[k] = out[k].model_copy(update={"height": min(start + n, 10), "height_m": None})
+    st.notes.append(f"read '{st.distinct}' as heights "
+                    f"{', '.join(str(min(start + n, 10)) for n in range(len(same)))}")  # fmt: skip
+    return out
 
 
 def _ordered(

@@ -1012,6 +1012,21 @@ _REWRITES += [
         " ",
         "read '{0}' as the structures side by side (separate structures stand apart)",
     ),
+    (  # "none of them the same height", "all different heights"
+        re.compile(
+            r",?\s*\b(?:with\s+|and\s+)?(?:(?:none\s+of\s+them|no\s+two(?:\s+of\s+them)?)\s+(?:are\s+|is\s+)?"
+            r"(?:the\s+same|alike|equal)(?:\s+(?:height|size))?|(?:all|each)\s+(?:of\s+)?(?:a\s+)?"
+            r"different\s+(?:heights?|sizes?)|(?:of\s+)?different\s+heights)\b",
+            re.IGNORECASE,
+        ),
+        "{all_different}",
+        "",
+    ),
+    (  # "three things, left to right: …": the order they are named in
+        re.compile(r"\b(?:from\s+)?(left|right)\s+to\s+(right|left)\s*:", re.IGNORECASE),
+        "{listing}",
+        "",
+    ),
     (  # "four stacks of 2 arranged in a square": an arrangement SDI does not make
         re.compile(
             r",?\s*\b(?:arranged|set\s+out|laid\s+out|placed|standing)\s+in\s+a\s+"
@@ -1122,6 +1137,15 @@ _REWRITES += [
     ),
     (re.compile(r"\b(?:length|long)\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} long ", ""),
     (re.compile(r"\bwidth\s*[:=]\s*(\d+)", re.IGNORECASE), " {0} wide ", ""),
+    (  # "a wall made of 8 cubes, two rows of four": a wall's rows are its courses
+        re.compile(
+            r"\b(wall|fence|parapet)\b([^.;]{0,30}?)\b(\d+|two|three|four|five)\s+(?:rows|"
+            r"courses|layers)\s+of\s+(\d+|two|three|four|five|six|seven|eight)\b(?!\s+(?:rows|walls))",
+            re.IGNORECASE,
+        ),
+        " {0} {1} {2} levels of {3} ",
+        "",
+    ),
     (
         re.compile(
             r"\b(\d+|two|three|four|five)\s+rows\s+(?:with|of)\s+(\d+|[a-z]+)\s+(?:cubes?\s+)?"

@@ -50,5 +50,7 @@ class ReadState:
     gap_m: float | None = None  # "one cube gap", "10 cm apart": between the structures
     # "with the tallest one in the middle": (what was said, "max" | "min", middle|left|right)
     order: tuple[str, str, str] | None = None
+    distinct: str | None = None  # "none of them the same height": what was said
+    listing: str | None = None  # "left to right: a, then b": the order structures are named in
     # "on each corner", "at both ends": (relation kind, anchor) for the next such relation
     anchors: list[tuple[str, str]] = field(default_factory=list)
