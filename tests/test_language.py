@@ -1301,8 +1301,8 @@ def test_different_heights_a_left_to_right_list_and_a_walls_rows():
     assert len(heights) >= 3 and len(set(heights)) == len(heights)
     r = plan("left to right: a tower of 3, then a 2x2 slab")
     assert r.status == "success"
-    lo, hi = boxes(r)
-    tall = hi[:, 2] > 0.06
-    assert lo[tall, 1].min() > hi[~tall, 1].max()  # the tower, named first, on the left (+y)
+    cols = columns(r)
+    tower = max(cols, key=lambda c: cols[c])
+    assert all(tower[1] > y for (_, y), h in cols.items() if h == 1)  # the tower on the left
     s = read("a wall made of 8 cubes, two rows of four").spec.structures
     assert [(x.shape, x.length, x.height) for x in s] == [("wall", 4, 2)]
