@@ -1306,3 +1306,15 @@ def test_different_heights_a_left_to_right_list_and_a_walls_rows():
     assert all(tower[1] > y for (_, y), h in cols.items() if h == 1)  # the tower on the left
     s = read("a wall made of 8 cubes, two rows of four").spec.structures
     assert [(x.shape, x.length, x.height) for x in s] == [("wall", 4, 2)]
+
+
+def test_lists_layers_and_a_height_compared_with_its_neighbour():
+    r = read("three towers please: two, four and six high")
+    assert [s.height for s in r.spec.structures] == [2, 4, 6]
+    s = read("a 6 by 2 slab, double thickness").spec.structures[0]
+    assert (s.shape, s.length, s.width, s.height) == ("block", 6, 2, 2)
+    assert read("a single-layer pad 0.1 by 0.2 metres").spec.structures[0].shape == "grid"
+    r = plan("lay a 3x3 floor and then take the centre cube back out")
+    assert r.status == "success" and len(r.layout) == 8
+    # a change of the structure just built stays a change
+    assert read("a 2x3 grid; after that, double its height").spec.structures[0].height == 2

@@ -264,6 +264,7 @@ def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
 
 
 _PLACES = {"left": "left", "right": "right", "front": "front", "back": "back", "rear": "back"}
+_BACK_AS_ADVERB = frozenset({"out", "off", "in", "up", "down", "together", "into", "onto"})
 _RIGHT_AS_ADVERB = frozenset(
     {"then", "next", "in", "on", "at", "above", "behind", "beside", "away", "now", "up", "-",
      "by", "against", "under", "below", "there", "here", "so", ",", "hand"}
@@ -289,6 +290,8 @@ def _places_lost(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> list[
         place = _PLACES.get(tok.lower_)
         if place is None or tok.i not in tokens or tok.pos_ in ("VERB", "AUX"):
             continue
+        if tok.lower_ == "back" and (tok.pos_ == "ADV" or word(tok.i + 1) in _BACK_AS_ADVERB):
+            continue  # "take it back out", "put it back": not the back of the table
         if (word(tok.i - 1) in ("to", "-") and word(tok.i - 2) in _PLACES) or (
             word(tok.i + 1) in ("to", "-") and word(tok.i + 2) in _PLACES
         ):

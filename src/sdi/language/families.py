@@ -107,7 +107,8 @@ def check_family(
     if implied:
         spec = spec.model_copy(update=implied)
     left = unused_slots(spec)
-    if "gap_m" in left and spec.shape == "tower":
+    apart = any(n.endswith("as a part's width apart") for n in notes)
+    if "gap_m" in left and (spec.shape == "tower" or apart):
         # "two towers that do not touch": separate structures stand apart anyway
         notes.append(f"separate structures stand apart: no gap to set inside a {spec.shape}")
         spec = spec.model_copy(update={"gap_m": None})

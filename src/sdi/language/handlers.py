@@ -184,6 +184,32 @@ def _listing(m: re.Match[str], st: ReadState, note: str) -> str:
     return " : "
 
 
+def _in_a_row(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "three towers of 3 in a row with gaps": separate structures stand side by side anyway;
+    "cubes in a row" is a row (left to the grammar)."""
+    before = re.findall(r"[a-z]+", m.string[: m.start()].lower())
+    noun = before[-1] if before else ""
+    plural = [w for w in before[-4:] if w.endswith("s") and w in lx.SHAPE_WORDS
+              and w not in lx.AMBIGUOUS_SHAPES and w not in ("rows", "lines")]  # fmt: skip
+    if not plural or noun in ("cubes", "blocks", "bricks", "parts"):
+        return m.group(0)
+    st.notes.append(f"read '{m.group(0).strip()}' as the structures side by side")
+    return " "
+
+
+def _height_list(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "three towers: two, four and six high": the heights as a list of numbers."""
+    values = words_to_numbers([g.lower() for g in m.groups()])
+    return f" {values[0]}, {values[1]} and {values[2]} "
+
+
+def _layers_word(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "double thickness": two layers."""
+    n = {"double": 2, "triple": 3}[m.group(1).lower()]
+    st.notes.append(f"read '{m.group(0).strip()}' as {n} layers")
+    return f" {n} high "
+
+
 def _arrangement(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "arranged in a square": separate structures stand side by side in a line; say so."""
     said = m.group(0).strip(" ,")
@@ -268,6 +294,8 @@ def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
 def _said_last(m: re.Match[str]) -> int | None:
     """The last number said before the match (the size a comparison starts from)."""
     before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
+    if before and before[-1] in ("one", "a"):
+        before = before[:-1]  # "beside it one half its height": the one being compared
     said = [w for w in words_to_numbers(before) if w.isdigit()]
     return int(said[-1]) if said else None
 
@@ -279,6 +307,10 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     base = _said_last(m)
     if base is None:
         return m.group(0)
+    if groups[1] == "height":  # "one half its height": a new structure, not "double its height"
+        prev = re.findall(r"[a-z]+", m.string[: m.start()].lower())[-1:]
+        if not prev or (prev[0] not in ("one", "a") and prev[0] not in lx.SHAPE_WORDS):
+            return m.group(0)
     if len(groups) == 4 and groups[3]:  # the second form: "a cube taller"
         groups = groups[2:]
     word = groups[0] or "1"  # "a cube taller"
@@ -300,7 +332,7 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {int(value)} high " if groups[1] in _HEIGHT_WORDS else f" of {int(value)} "
 
 
-_HEIGHT_WORDS = ("tall", "high", "taller", "higher", "shorter", "lower")
+_HEIGHT_WORDS = ("tall", "high", "taller", "higher", "shorter", "lower", "height")
 
 
 def _operation(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -481,6 +513,9 @@ HANDLERS: dict[str, Handler] = {
     "{arrangement}": _arrangement,
     "{all_different}": _all_different,
     "{listing}": _listing,
+    "{in_a_row}": _in_a_row,
+    "{layers_word}": _layers_word,
+    "{height_list}": _height_list,
     "{operation}": _operation,
     "{more_like}": _more_like,
     "{distribute}": _distribute,

@@ -115,7 +115,8 @@ MODIFY = [
     ),
     # "then remove the middle 4 cubes": a solid floor with its middle taken out is a ring
     _op(
-        r"\b(?:take\s+(?:out|away)|remove|pull\s+out|leave\s+out|lift\s+out|hollow\s+out)\s+"
+        r"\b(?:take\s+(?:out|away)|remove|pull\s+out|leave\s+out|lift\s+out|hollow\s+out|"
+        r"take(?=\s+the\s+(?:middle|centre|center)\s+(?:cube|part)\s+(?:back\s+)?out))\s+"
         r"(?:all\s+)?(?:of\s+)?the\s+(?:middle|centre|center|inner|inside)\b(?:\s+(?:\d+|one|two|three|"
         r"four|nine)\s+)?(?:\s*(?:cubes?|parts?|ones|bit|square))?(?!\s+one\b)",
         "hollow",

@@ -1012,6 +1012,30 @@ _REWRITES += [
         " ",
         "read '{0}' as the structures side by side (separate structures stand apart)",
     ),
+    (  # "three towers: two, four and six high": a list of heights, one per tower
+        re.compile(
+            r"(?<=[:,])\s*(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*,\s*(\d+|one|two|"
+            r"three|four|five|six|seven|eight|nine|ten)\s*,?\s+and\s+(\d+|one|two|three|four|five|six|"
+            r"seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall)\b",
+            re.IGNORECASE,
+        ),
+        "{height_list}",
+        "",
+    ),
+    (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
+        re.compile(
+            r"(?<=s)\s+in\s+a\s+(?:row|line)(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
+            r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$))",
+            re.IGNORECASE,
+        ),
+        "{in_a_row}",
+        "",
+    ),
+    (  # "a 6 by 2 slab, double thickness": two layers
+        re.compile(r"\b(double|triple)[- ](?:thickness|thick|height|layered|layer|deep)\b", re.I),
+        "{layers_word}",
+        "",
+    ),
     (  # "none of them the same height", "all different heights"
         re.compile(
             r",?\s*\b(?:with\s+|and\s+)?(?:(?:none\s+of\s+them|no\s+two(?:\s+of\s+them)?)\s+(?:are\s+|is\s+)?"
@@ -1204,6 +1228,11 @@ _REWRITES += [
     (
         re.compile(r",?\s*\bnothing\s+(?:big|large|huge|tall|fancy|special)\b", re.IGNORECASE),
         " ",
+        "",
+    ),
+    (  # "one half its height", "twice the height": the number said last, changed
+        re.compile(r"\b(twice|double|half)\s+(?:its|the|their)\s+(height)\b(?!\s+of)", re.I),
+        "{compared}",
         "",
     ),
     (  # "one twice as tall" (as the one before): the number said last, changed

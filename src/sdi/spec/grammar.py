@@ -146,6 +146,13 @@ class Hit:
     end: int = 0
 
 
+_FLAT_LEADS = frozenset(
+    {"a", "an", "one", "single", "flat", "square", "rectangular", "solid", "thin", "plain",
+     "simple", "low", "another", "second", "new", "layer"}
+)  # fmt: skip
+"""Words before "pad", "layer", "deck" … that make it a structure ("a square pad")."""
+
+
 def tokenize(command: str) -> list[Tok]:
     text = command.lower()
     for a, b in _SYMBOLS.items():
@@ -510,24 +517,7 @@ class _Parser:
             "layers",
         ):
             return (
-                prev
-                in (
-                    "a",
-                    "an",
-                    "one",
-                    "single",
-                    "flat",
-                    "square",
-                    "rectangular",
-                    "solid",
-                    "thin",
-                    "plain",
-                    "simple",
-                    "low",
-                    "another",
-                    "second",
-                    "new",
-                )
+                prev in _FLAT_LEADS
                 or prev in lx.SIZE_WORDS
                 or (self.is_num(k - 1) and self.toks[k - 1].used)
                 or (prev in lx.UNITS_M and self.toks[k - 1].used)  # "a 10 x 10 cm pad"
