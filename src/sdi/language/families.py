@@ -14,6 +14,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from pydantic import ValidationError
+
+from sdi.errors import SpecError
 from sdi.spec.structure_spec import (
     STRUCTURE_TYPES,
     AnyStructure,
@@ -118,9 +121,18 @@ def check_family(
         notes.append(f"ignored {values}: a {spec.shape} has no such parameter")
         material.extend(f"{k}={v}" for k, v in left.items())
         spec = spec.model_copy(update=dict.fromkeys(left))
-    return FAMILIES[spec.shape].spec_type.model_validate(
-        spec.model_dump(exclude_none=True, exclude_defaults=True) | {"shape": spec.shape}
-    )
+    try:
+        return FAMILIES[spec.shape].spec_type.model_validate(
+            spec.model_dump(exclude_none=True, exclude_defaults=True) | {"shape": spec.shape}
+        )
+    except ValidationError as exc:  # "a 0.4 grid": a size no structure can have
+        first = exc.errors()[0]
+        where = ".".join(str(x) for x in first["loc"])
+        raise SpecError(
+            f"{spec.shape}: {where} {first['msg'].lower()} (got {first.get('input')!r}); "
+            "give a whole number of parts, e.g. 'a 3 by 3 grid'",
+            understood={"structures": [spec.shape]},
+        ) from None
 
 
 def _derive(spec: StructureDraft, notes: list[str], part_m: float) -> StructureDraft:
