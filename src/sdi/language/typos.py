@@ -27,6 +27,7 @@ _CHOICES = sorted(words.CORRECTABLE)  # what a word may be corrected to
 
 
 _CUT_SHORT = ("tall", "long", "high", "wide", "deep")
+_SWAPPED_OFTEN = frozenset({"front", "back", "left", "right", "tall", "long", "wide", "high"})
 """Dimension words a three-letter typo may have lost its last letter from."""
 
 
@@ -76,8 +77,9 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
                 return raw
         best = min(d for _, d, _ in found)
         top = [c for c, d, _ in found if d == best]
-        if len(top) > 1 and [c for c in top if sorted(c) == sorted(w)]:
-            top = [c for c in top if sorted(c) == sorted(w)]  # "fornt": two letters swapped
+        swapped = [c for c in top if sorted(c) == sorted(w) and c in _SWAPPED_OFTEN]
+        if len(top) > 1 and swapped:
+            top = swapped  # "fornt": two letters of a place word swapped, not "fort"
         if len(top) > 1:
             same_start = [c for c in top if c[0] == w[0]] or top
             # a tie: the candidate sharing most letters in order ("thre" → "three", not "the")
