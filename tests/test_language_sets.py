@@ -244,44 +244,51 @@ def test_scoring_outcomes():
     assert score(crash, TOWER3)[0] == "silent_misreading"
 
 
-def test_set_sizes_ids_and_phenomena():
-    assert len(DEV) >= 150 and len(TEST) >= 60
-    ids = [c.id for c in (*DEV, *TEST)]
-    assert len(ids) == len(set(ids))
-    for cases, least in ((DEV, 10), (TEST, 5)):
-        per = {p: sum(c.phenomenon == p for c in cases) for p in PHENOMENA}
-        assert set(per) == set(PHENOMENA) and min(per.values()) >= least, per
-        assert {c.phenomenon for c in cases} <= set(PHENOMENA)
-        assert all(callable(c.accept) for c in cases)
-
-
-def test_dev2_set_sizes_ids_and_phenomena():
-    assert len(DEV2) >= 160
-    ids = [c.id for c in (*DEV, *DEV2, *TEST)]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev2-") for c in DEV2)
-    per = {p: sum(c.phenomenon == p for c in DEV2) for p in PHENOMENA}
-    assert min(per.values()) >= 14, per
-    assert {c.phenomenon for c in DEV2} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV2)
-
-
 def _norm(text: str) -> str:
     return " ".join(text.lower().split())
 
 
-def test_no_command_shared_between_dev_and_test():
-    dev = {_norm(c.text) for c in DEV}
-    assert not [c.id for c in TEST if _norm(c.text) in dev]
-    assert len({_norm(c.text) for c in TEST}) == len(TEST)
+# name → (cases, at least, at least per phenomenon, at least on the hard phenomena)
+SETS = {
+    "dev": (DEV, 150, 10, 0), "dev2": (DEV2, 160, 14, 0), "dev3": (DEV3, 180, 12, 18),
+    "dev4": (DEV4, 150, 12, 0), "dev5": (DEV5, 150, 12, 0), "dev6": (DEV6, 120, 10, 0),
+    "dev7": (DEV7, 120, 10, 0), "dev8": (DEV8, 120, 10, 0), "dev9": (DEV9, 120, 10, 0),
+    "dev10": (DEV10, 120, 10, 0), "dev11": (DEV11, 150, 8, 15), "dev12": (DEV12, 150, 8, 15),
+    "test": (TEST, 60, 5, 0),
+}  # fmt: skip
+HARD = {
+    "dev3": ("relation", "sequence", "numbers", "dimensions", "negation", "word_order"),
+    "dev11": ("relation", "numbers", "dimensions", "sequence"),
+    "dev12": ("relation", "numbers", "dimensions", "sequence"),
+}
 
 
-def test_no_command_shared_between_dev2_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV2}) == len(DEV2)
-    dev = {_norm(c.text) for c in DEV}
-    assert not [c.id for c in DEV2 if _norm(c.text) in dev]
-    test = {_norm(c.text) for c in TEST}
-    assert not [c.id for c in DEV2 if _norm(c.text) in test]
+@pytest.mark.parametrize("name", list(SETS))
+def test_set_sizes_ids_and_phenomena(name):
+    cases, least, per_phenomenon, hard = SETS[name]
+    assert len(cases) >= least
+    if name not in ("dev", "test"):
+        assert all(c.id.startswith(f"{name}-") for c in cases)
+    per = {p: sum(c.phenomenon == p for c in cases) for p in PHENOMENA}
+    assert set(per) == set(PHENOMENA) and min(per.values()) >= per_phenomenon, per
+    assert min((per[p] for p in HARD.get(name, ())), default=hard) >= hard, per
+    assert {c.phenomenon for c in cases} <= set(PHENOMENA)
+    assert all(callable(c.accept) for c in cases)
+
+
+def test_ids_are_unique_across_every_set():
+    ids = [c.id for cases, *_ in SETS.values() for c in cases]
+    assert len(ids) == len(set(ids))
+
+
+def test_no_command_is_shared_within_or_between_sets():
+    seen: dict[str, str] = {}
+    for cases, *_ in SETS.values():
+        for c in cases:
+            if not _norm(c.text):
+                continue  # blank commands (bad input) are alike by nature
+            assert _norm(c.text) not in seen, (c.id, seen.get(_norm(c.text)))
+            seen[_norm(c.text)] = c.id
 
 
 def test_test_set_is_frozen():
@@ -447,26 +454,6 @@ def test_dev2_predicates_on_hand_built_layouts(case_id, right, wrong):
 # ---------------------------------------------------------------- dev3
 
 
-def test_dev3_set_sizes_ids_and_phenomena():
-    assert len(DEV3) >= 180
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *TEST)]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev3-") for c in DEV3)
-    per = {p: sum(c.phenomenon == p for c in DEV3) for p in PHENOMENA}
-    assert min(per.values()) >= 12, per
-    hard = ("relation", "sequence", "numbers", "dimensions", "negation", "word_order")
-    assert min(per[p] for p in hard) >= 18, per
-    assert {c.phenomenon for c in DEV3} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV3)
-
-
-def test_no_command_shared_between_dev3_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV3}) == len(DEV3)
-    for other in (DEV, DEV2, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV3 if _norm(c.text) in seen]
-
-
 def _dev3(case_id: str) -> Case:
     return next(c for c in DEV3 if c.id == case_id)
 
@@ -562,24 +549,6 @@ def test_dev3_predicates_on_hand_built_layouts(case_id, right, wrong):
 # ---------------------------------------------------------------- dev4
 
 
-def test_dev4_set_sizes_ids_and_phenomena():
-    assert len(DEV4) >= 150
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *TEST)]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev4-") for c in DEV4)
-    per = {p: sum(c.phenomenon == p for c in DEV4) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 12, per
-    assert {c.phenomenon for c in DEV4} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV4)
-
-
-def test_no_command_shared_between_dev4_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV4}) == len(DEV4)
-    for other in (DEV, DEV2, DEV3, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV4 if _norm(c.text) in seen]
-
-
 def _dev4(case_id: str) -> Case:
     return next(c for c in DEV4 if c.id == case_id)
 
@@ -647,24 +616,6 @@ def test_dev4_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev5
-
-
-def test_dev5_set_sizes_ids_and_phenomena():
-    assert len(DEV5) >= 150
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *TEST)]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev5-") for c in DEV5)
-    per = {p: sum(c.phenomenon == p for c in DEV5) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 12, per
-    assert {c.phenomenon for c in DEV5} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV5)
-
-
-def test_no_command_shared_between_dev5_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV5}) == len(DEV5)
-    for other in (DEV, DEV2, DEV3, DEV4, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV5 if _norm(c.text) in seen]
 
 
 def _dev5(case_id: str) -> Case:
@@ -744,24 +695,6 @@ def test_dev5_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev6
-
-
-def test_dev6_set_sizes_ids_and_phenomena():
-    assert len(DEV6) >= 120
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *TEST)]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev6-") for c in DEV6)
-    per = {p: sum(c.phenomenon == p for c in DEV6) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
-    assert {c.phenomenon for c in DEV6} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV6)
-
-
-def test_no_command_shared_between_dev6_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV6}) == len(DEV6)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV7, DEV8, DEV9, DEV10, DEV11, DEV12, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV6 if _norm(c.text) in seen]
 
 
 def _dev6(case_id: str) -> Case:
@@ -844,24 +777,6 @@ def test_dev6_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev7
-
-
-def test_dev7_set_sizes_ids_and_phenomena():
-    assert len(DEV7) >= 120
-    ids = [c.id for c in (*DEV, *DEV2, *DEV3, *DEV4, *DEV5, *DEV6, *DEV7, *TEST)]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev7-") for c in DEV7)
-    per = {p: sum(c.phenomenon == p for c in DEV7) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
-    assert {c.phenomenon for c in DEV7} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV7)
-
-
-def test_no_command_shared_between_dev7_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV7}) == len(DEV7)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV8, DEV9, DEV10, DEV11, DEV12, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV7 if _norm(c.text) in seen]
 
 
 def _dev7(case_id: str) -> Case:
@@ -953,41 +868,6 @@ def test_dev7_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev8
-
-
-def test_dev8_set_sizes_ids_and_phenomena():
-    assert len(DEV8) >= 120
-    ids = [
-        c.id
-        for c in (
-            *DEV,
-            *DEV2,
-            *DEV3,
-            *DEV4,
-            *DEV5,
-            *DEV6,
-            *DEV7,
-            *DEV8,
-            *DEV9,
-            *DEV10,
-            *DEV11,
-            *DEV12,
-            *TEST,
-        )
-    ]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev8-") for c in DEV8)
-    per = {p: sum(c.phenomenon == p for c in DEV8) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
-    assert {c.phenomenon for c in DEV8} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV8)
-
-
-def test_no_command_shared_between_dev8_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV8}) == len(DEV8)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV9, DEV10, DEV11, DEV12, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV8 if _norm(c.text) in seen]
 
 
 def _dev8(case_id: str) -> Case:
@@ -1117,41 +997,6 @@ def test_dev8_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev9
-
-
-def test_dev9_set_sizes_ids_and_phenomena():
-    assert len(DEV9) >= 120
-    ids = [
-        c.id
-        for c in (
-            *DEV,
-            *DEV2,
-            *DEV3,
-            *DEV4,
-            *DEV5,
-            *DEV6,
-            *DEV7,
-            *DEV8,
-            *DEV9,
-            *DEV10,
-            *DEV11,
-            *DEV12,
-            *TEST,
-        )
-    ]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev9-") for c in DEV9)
-    per = {p: sum(c.phenomenon == p for c in DEV9) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
-    assert {c.phenomenon for c in DEV9} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV9)
-
-
-def test_no_command_shared_between_dev9_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV9}) == len(DEV9)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV10, DEV11, DEV12, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV9 if _norm(c.text) in seen]
 
 
 def _dev9(case_id: str) -> Case:
@@ -1374,41 +1219,6 @@ def test_dev9_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev10
-
-
-def test_dev10_set_sizes_ids_and_phenomena():
-    assert len(DEV10) >= 120
-    ids = [
-        c.id
-        for c in (
-            *DEV,
-            *DEV2,
-            *DEV3,
-            *DEV4,
-            *DEV5,
-            *DEV6,
-            *DEV7,
-            *DEV8,
-            *DEV9,
-            *DEV10,
-            *DEV11,
-            *DEV12,
-            *TEST,
-        )
-    ]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev10-") for c in DEV10)
-    per = {p: sum(c.phenomenon == p for c in DEV10) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 10, per
-    assert {c.phenomenon for c in DEV10} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV10)
-
-
-def test_no_command_shared_between_dev10_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV10}) == len(DEV10)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV11, DEV12, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV10 if _norm(c.text) in seen]
 
 
 def _dev10(case_id: str) -> Case:
@@ -1648,42 +1458,6 @@ def test_dev10_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev11
-
-
-def test_dev11_set_sizes_ids_and_phenomena():
-    assert len(DEV11) >= 150
-    ids = [
-        c.id
-        for c in (
-            *DEV,
-            *DEV2,
-            *DEV3,
-            *DEV4,
-            *DEV5,
-            *DEV6,
-            *DEV7,
-            *DEV8,
-            *DEV9,
-            *DEV10,
-            *DEV11,
-            *DEV12,
-            *TEST,
-        )
-    ]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev11-") for c in DEV11)
-    per = {p: sum(c.phenomenon == p for c in DEV11) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 8, per
-    assert min(per[p] for p in ("relation", "numbers", "dimensions", "sequence")) >= 15, per
-    assert {c.phenomenon for c in DEV11} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV11)
-
-
-def test_no_command_shared_between_dev11_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV11}) == len(DEV11)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV10, DEV12, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV11 if _norm(c.text) in seen]
 
 
 def _dev11(case_id: str) -> Case:
@@ -1960,42 +1734,6 @@ def test_dev11_predicates_on_hand_built_layouts(case_id, right, wrong):
 
 
 # ---------------------------------------------------------------- dev12
-
-
-def test_dev12_set_sizes_ids_and_phenomena():
-    assert len(DEV12) >= 150
-    ids = [
-        c.id
-        for c in (
-            *DEV,
-            *DEV2,
-            *DEV3,
-            *DEV4,
-            *DEV5,
-            *DEV6,
-            *DEV7,
-            *DEV8,
-            *DEV9,
-            *DEV10,
-            *DEV11,
-            *DEV12,
-            *TEST,
-        )
-    ]
-    assert len(ids) == len(set(ids))
-    assert all(c.id.startswith("dev12-") for c in DEV12)
-    per = {p: sum(c.phenomenon == p for c in DEV12) for p in PHENOMENA}
-    assert set(per) == set(PHENOMENA) and min(per.values()) >= 8, per
-    assert min(per[p] for p in ("relation", "numbers", "dimensions", "sequence")) >= 15, per
-    assert {c.phenomenon for c in DEV12} <= set(PHENOMENA)
-    assert all(callable(c.accept) for c in DEV12)
-
-
-def test_no_command_shared_between_dev12_and_the_other_sets():
-    assert len({_norm(c.text) for c in DEV12}) == len(DEV12)
-    for other in (DEV, DEV2, DEV3, DEV4, DEV5, DEV6, DEV7, DEV8, DEV9, DEV10, DEV11, TEST):
-        seen = {_norm(c.text) for c in other}
-        assert not [c.id for c in DEV12 if _norm(c.text) in seen]
 
 
 def _dev12(case_id: str) -> Case:
