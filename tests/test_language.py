@@ -1318,3 +1318,10 @@ def test_lists_layers_and_a_height_compared_with_its_neighbour():
     assert r.status == "success" and len(r.layout) == 8
     # a change of the structure just built stays a change
     assert read("a 2x3 grid; after that, double its height").spec.structures[0].height == 2
+
+
+def test_a_square_fence_with_something_inside_is_a_ring_of_that_size():
+    r = read("a 7 by 7 fence with a small plus sign inside it")
+    ring = r.spec.structures[0]
+    assert (ring.shape, ring.length, ring.width, ring.height) == ("enclosure", 7, 7, None)
+    assert r.spec.relations[0].kind == "around"

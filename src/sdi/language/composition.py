@@ -128,8 +128,11 @@ def relate(
             subject, obj_spec = obj_spec, subject
             s_idx, o_idx = o_idx, s_idx
         if r.kind == "around" and subject.shape not in ("enclosure", "castle"):
-            st.notes.append(f"a {subject.shape} around another structure: built as a ring")
-            subject = StructureDraft(shape="enclosure", height=subject.height, part=subject.part)
+            ring = _enclosing(subject, st)  # "a 7 by 7 fence with … inside it": 7 by 7 around
+            if ring is subject:
+                st.notes.append(f"a {subject.shape} around another structure: built as a ring")
+                ring = StructureDraft(shape="enclosure", height=subject.height, part=subject.part)
+            subject = ring
         replace[s_idx] = subject
         if any(rel.subject == s_idx for rel in relations):
             st.material.append(f"relation {r.kind}")
