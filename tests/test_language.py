@@ -1325,3 +1325,15 @@ def test_a_square_fence_with_something_inside_is_a_ring_of_that_size():
     ring = r.spec.structures[0]
     assert (ring.shape, ring.length, ring.width, ring.height) == ("enclosure", 7, 7, None)
     assert r.spec.relations[0].kind == "around"
+
+
+def test_a_relation_said_before_its_subject_and_a_distance_away():
+    r = read("a 3x3 floor, and on it a tower of two")
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("on_top_of", 1, 0)]
+    assert [s.shape for s in r.spec.structures] == ["grid", "tower"]
+    r = read("a tower of four, and to the right of it, a couple of cubes away, a 2x2 block")
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("right", 0.1)]
+    r = read(
+        "a stack of two at the front, behind it a stack of four, and behind that one a stack of six"
+    )
+    assert sorted(s.height for s in r.spec.structures) == [2, 4, 6]

@@ -296,6 +296,20 @@ def _clause_phrases(
         tail = segments[j + 1]
         commas = [n for n, i in enumerate(tail) if doc[i].lower_ == ","]
         if (
+            not commas
+            and len(tail) > 1
+            and doc[tail[0]].lower_ in ("it", "them", "that", "this")
+            and doc[tail[1]].lower_ in ("a", "an", "another", "two", "three", "four")
+            and names_structure(doc, tail[1:])
+            and not markers[j][2].endswith("_verb")
+            and markers[j][2] in ("on", "next", "inside", "around", "middle")
+        ):
+            # "a slab, and on it a tower of 2": the subject follows the pronoun
+            if names_structure(doc, segments[j]):
+                phrases.append(Phrase(tokens=segments[j], clause=ci))
+            segments[j], segments[j + 1] = tail[1:], tail[:1]
+            continue
+        if (
             commas
             and commas[0] <= 2
             and doc[tail[0]].lower_ in ("it", "them", "this", "that")

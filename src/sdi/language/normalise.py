@@ -130,7 +130,7 @@ _SHORTHAND = [
     (re.compile(r"\b(?:pcs|pc|ea)\b(?=\W|$)", re.I), "cubes"),
     (re.compile(r"\b(?:cnr|crnr)\b", re.I), "corner"),
     (re.compile(r"\b(?:cnrs|crnrs)\b", re.I), "corners"),
-    (re.compile(r"\beach\s*other\b", re.I), "each other"),
+    (re.compile(r"\beachother\b", re.I), "each other"),
     (re.compile(r"\bontop\b", re.I), "on top"),
     (re.compile(r"\bnextto\b", re.I), "next to"),
     (re.compile(r"\binfront\b", re.I), "in front"),

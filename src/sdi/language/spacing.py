@@ -18,12 +18,13 @@ from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import Spec
 
-_N = r"(\d+(?:\.\d+)?|a|an|one|two|three|four|five|six)"
+_N = r"(\d+(?:\.\d+)?|a\s+couple\s+of|a\s+pair\s+of|a|an|one|two|three|four|five|six)"
 _UNIT = r"(cubes?|parts?|blocks?|cm|mm|m)"
 _GAP = re.compile(
     r",?\s*\b(?:with\s+|leaving\s+|leave\s+|keep\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?"
     + _N + r"(?:[- ]?" + _UNIT + r")?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart|aisle)"
+    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+away(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gap|space|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?)"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
@@ -65,7 +66,8 @@ def _several(text: str) -> bool:
 
 
 def _metres(value: str, unit: str | None, part_m: float) -> float | None:
-    number = words_to_numbers([value.lower()])[0]
+    said = " ".join(value.lower().split())
+    number = "2" if said in ("a couple of", "a pair of") else words_to_numbers([said])[0]
     if number in ("a", "an"):
         number = "1"
     try:
