@@ -279,15 +279,14 @@ def _keyed_size(m: re.Match[str], st: ReadState, note: str) -> str:
 def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "one of 7 and one of 2 fewer": the number said last before it, changed."""
     said, groups = _said(m)
-    before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
-    said_before = [w for w in words_to_numbers(before) if w.isdigit()]
+    base = _said_last(m)
     n = words_to_numbers([groups[0]])[0]
-    if not said_before or not n.isdigit():
+    if base is None or not n.isdigit():
         return m.group(0)
-    value = int(said_before[-1]) + (int(n) if groups[1] == "more" else -int(n))
+    value = base + (int(n) if groups[1] == "more" else -int(n))
     if value < 1:
         return m.group(0)
-    st.notes.append(f"read '{said}' as {value} ({said_before[-1]} {groups[1]} {n})")
+    st.notes.append(f"read '{said}' as {value} ({base} {groups[1]} {n})")
     return f" {value} "
 
 

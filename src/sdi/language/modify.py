@@ -5,6 +5,7 @@ cubes."); and changes SDI cannot make (taking parts out), which are reported."""
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from sdi.errors import SpecError
 from sdi.language.state import Phrase, ReadState
@@ -153,143 +154,169 @@ def modify(
         m = pattern.search(p.text)
         if not m:
             continue
-        if op == "fill":  # "then fill in the middle": a ring becomes solid
-            target = built[-1]
-            index = target.first + target.count - 1
-            ring = structures[index]
-            if ring.shape != "enclosure":
-                return False
-            solid = "block" if (ring.height or 1) > 1 else "grid"
-            structures[index] = StructureDraft(
-                shape=solid, length=ring.length, width=ring.width or ring.length,
-                height=ring.height if solid == "block" else None, length_m=ring.length_m,
-                width_m=ring.width_m, at_x=ring.at_x, at_y=ring.at_y, region=ring.region,
-                part=ring.part,
-            )  # fmt: skip
-            st.notes.append(f"'{m.group(0).strip()}': the ring filled in, a solid {solid}")
-            p.count = 0
-            p.modified = True
-            return True
-        if op == "region":
-            place = m.group(1).lower()
-            place = {"middle": "centre", "center": "centre"}.get(place, place)
-            target = built[-1]
-            index = target.first + target.count - 1
-            structures[index] = structures[index].model_copy(
-                update={"region": place, "at_x": None, "at_y": None}
-            )
-            st.notes.append(f"'{m.group(0).strip()}': the {structures[index].shape} goes {place}")
-            p.count = 0
-            p.modified = True
-            return True
-        if op == "dims":  # "make the pen 5 by 5": the last structure named that way
-            a, b = (int(v) for v in re.split(r"\s*(?:x|by)\s*", m.group(1).lower()))
-            noun = re.search(r"make\s+(?:the|that)\s+(\w+)", m.group(0), re.I)
-            family = lx.SHAPE_WORDS.get(noun.group(1).lower()) if noun else None
-            found = next((i for i in range(len(structures) - 1, -1, -1)
-                          if structures[i].shape == family), None)  # fmt: skip
-            if found is None:
-                return False
-            last = structures[found]
-            sized = {"length": a, "width": b, "length_m": None, "width_m": None}
-            structures[found] = last.model_copy(update=sized)
-            was = f"{last.length} by {last.width}" if last.length else "its size"
-            st.notes.append(f"'{m.group(0).strip()}': the {last.shape} is now {a} by {b} "
-                            f"(was {was})")  # fmt: skip
-            p.count = 0
-            p.modified = True
-            return True
-        if op == "=pillars":
-            spanning = [i for i, x in enumerate(structures) if x.shape in _SPANNING]
-            found = spanning[-1] if spanning else None
-            value = words_to_numbers([m.group(1).lower()])[0]
-            if found is None or not value.isdigit() or int(value) < 1:
-                return False
-            last = structures[found]
-            structures[found] = last.model_copy(update={"height": int(value), "height_m": None})
-            st.notes.append(f"'{m.group(0).strip()}': the {last.shape}'s pillars are now "
-                            f"{value} high")  # fmt: skip
-            p.count = 0
-            p.modified = True
-            return True
-        if op == "hollow":  # a solid floor or block 3 across or more, its middle taken out
-            target = built[-1]
-            index = target.first + target.count - 1
-            floor = structures[index]
-            if (
-                floor.shape not in ("grid", "block")
-                or min(floor.length or 3, floor.width or floor.length or 3) < 3
-            ):
-                return False  # fmt: skip
-            structures[index] = StructureDraft(
-                shape="enclosure", length=floor.length, width=floor.width or floor.length,
-                height=floor.height if floor.shape == "block" else None,
-                length_m=floor.length_m, width_m=floor.width_m, at_x=floor.at_x,
-                at_y=floor.at_y, region=floor.region, part=floor.part,
-            )  # fmt: skip
-            st.notes.append(f"'{m.group(0).strip()}': the {floor.shape} without its middle, "
-                            "a ring")  # fmt: skip
-            p.count = 0
-            p.modified = True
-            return True
-        if op == "drop":  # one of several like structures named together left out
-            target = built[-1]
-            if target.count < 2:
-                return False
-            which = m.group(1).lower()
-            at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
-            if which == "middle" and target.count % 2 == 0:
-                return False  # no single middle one
-            del structures[target.first + at]
-            for q in before:
-                if q.count and q.first > target.first:
-                    q.first -= 1
-            target.count -= 1
-            st.notes.append(
-                f"'{m.group(0).strip()}': {target.count} left of the {target.count + 1}"
-            )
-            p.count = 0
-            p.modified = True
-            return True
-        key = None
-        if op == "=main":  # "make it 4": the size the structure was given, or its main one
-            key, op = _main_slot(structures[built[-1].first + built[-1].count - 1]), "="
-            if key is None:
-                return False
-        if op in ("+1", "-1"):
-            n, op = 1, op[0]
-        else:
-            word = re.sub(r"\s+", " ", (m.group(1) or ("2" if op == "/" else "1")).lower())
-            word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
-                    "triple": "3", "half": "2"}.get(word, word)  # fmt: skip
-            value = words_to_numbers([word])[0]
-            if not value.isdigit():
-                return False
-            n = int(value)
-        target = built[-1]
-        index = target.first + target.count - 1
-        ordinal = re.search(r"\bthe\s+(first|second|third|last)\b", p.text, re.I)
-        if ordinal and target.count > 1:
-            pick = {"first": 0, "second": 1, "third": 2, "last": target.count - 1}
-            index = target.first + min(pick[ordinal.group(1).lower()], target.count - 1)
-        last = structures[index]
-        key = key or ("steps" if last.shape == "staircase" else "height")
-        now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
-        if op == "/" and now % n:
+        change = _CHANGES.get(op, _resize)
+        note = change(m, op, p, before, built, structures)
+        if note is None:
             return False
-        new = {"+": now + n, "-": now - n, "=": n, "*": now * n, "/": now // n}[op]
-        if new < 1:
-            return False
-        shape = last.shape
-        if key == "height" and new > 1 and shape in ("grid", "row"):
-            shape = "block" if shape == "grid" else "wall"
-        structures[index] = last.model_copy(update={key: new, "shape": shape})
-        was = f" (was {now})" if getattr(last, key) else ""
-        st.notes.append(f"'{m.group(0).strip()}': the {last.shape} now has {key} {new}{was}")
+        st.notes.append(f"'{m.group(0).strip()}': {note}")
         p.count = 0
-        p.modified = True
+        p.modified = True  # the phrase is a change of that structure, not one of its own
         return True
     return False
+
+
+Change = Callable[
+    [re.Match[str], str, Phrase, list[Phrase], list[Phrase], list[StructureDraft]], str | None
+]
+"""One kind of change: it edits `structures` in place and says what changed, or None when it
+does not apply to the structures named (the phrase is then read as it stands)."""
+
+
+def _last_index(built: list[Phrase]) -> int:
+    """The index of the structure named last."""
+    return built[-1].first + built[-1].count - 1
+
+
+def _reshaped(s: StructureDraft, shape: str, height: int | None) -> StructureDraft:
+    """`s` as another family of the same footprint and place (a ring filled in, a floor with
+    its middle taken out)."""
+    return StructureDraft(
+        shape=shape, length=s.length, width=s.width or s.length, height=height,
+        length_m=s.length_m, width_m=s.width_m, at_x=s.at_x, at_y=s.at_y, region=s.region,
+        part=s.part,
+    )  # fmt: skip
+
+
+def _fill(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+          structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "then fill in the middle": a ring becomes solid."""
+    index = _last_index(built)
+    ring = structures[index]
+    if ring.shape != "enclosure":
+        return None
+    solid = "block" if (ring.height or 1) > 1 else "grid"
+    structures[index] = _reshaped(ring, solid, ring.height if solid == "block" else None)
+    return f"the ring filled in, a solid {solid}"
+
+
+def _region(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+            structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "move it to the left": the structure named last goes there."""
+    place = m.group(1).lower()
+    place = {"middle": "centre", "center": "centre"}.get(place, place)
+    index = _last_index(built)
+    structures[index] = structures[index].model_copy(
+        update={"region": place, "at_x": None, "at_y": None}
+    )
+    return f"the {structures[index].shape} goes {place}"
+
+
+def _dims(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+          structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "make the pen 5 by 5": the last structure named that way."""
+    a, b = (int(v) for v in re.split(r"\s*(?:x|by)\s*", m.group(1).lower()))
+    noun = re.search(r"make\s+(?:the|that)\s+(\w+)", m.group(0), re.I)
+    family = lx.SHAPE_WORDS.get(noun.group(1).lower()) if noun else None
+    found = [i for i, x in enumerate(structures) if x.shape == family]
+    if not found:
+        return None
+    last = structures[found[-1]]
+    sized = {"length": a, "width": b, "length_m": None, "width_m": None}
+    structures[found[-1]] = last.model_copy(update=sized)
+    was = f"{last.length} by {last.width}" if last.length else "its size"
+    return f"the {last.shape} is now {a} by {b} (was {was})"
+
+
+def _pillars(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+             structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "actually make the pillars 4 instead": a bridge's or a table's own height."""
+    spanning = [i for i, x in enumerate(structures) if x.shape in _SPANNING]
+    value = words_to_numbers([m.group(1).lower()])[0]
+    if not spanning or not value.isdigit() or int(value) < 1:
+        return None
+    last = structures[spanning[-1]]
+    structures[spanning[-1]] = last.model_copy(update={"height": int(value), "height_m": None})
+    return f"the {last.shape}'s pillars are now {value} high"
+
+
+def _hollow(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+            structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "then remove the middle 4 cubes": a solid floor or block 3 across or more without its
+    middle is a ring."""
+    index = _last_index(built)
+    floor = structures[index]
+    if (
+        floor.shape not in ("grid", "block")
+        or min(floor.length or 3, floor.width or floor.length or 3) < 3
+    ):
+        return None
+    height = floor.height if floor.shape == "block" else None
+    structures[index] = _reshaped(floor, "enclosure", height)
+    return f"the {floor.shape} without its middle, a ring"
+
+
+def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+          structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "5 towers, then take away the middle one": one of several named together left out."""
+    target = built[-1]
+    which = m.group(1).lower()
+    if target.count < 2 or (which == "middle" and target.count % 2 == 0):
+        return None  # one structure, or no single middle one
+    at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
+    del structures[target.first + at]
+    for q in before:
+        if q.count and q.first > target.first:
+            q.first -= 1
+    target.count -= 1
+    return f"{target.count} left of the {target.count + 1}"
+
+
+def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+            structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "add two more cubes", "make it 4", "halve it": a size of a structure named before
+    (the last, or the one an ordinal picks)."""
+    key = None
+    if op == "=main":  # "make it 4": the size the structure was given, or its main one
+        key, op = _main_slot(structures[_last_index(built)]), "="
+        if key is None:
+            return None
+    if op in ("+1", "-1"):
+        n, op = 1, op[0]
+    else:
+        word = re.sub(r"\s+", " ", (m.group(1) or ("2" if op == "/" else "1")).lower())
+        word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
+                "triple": "3", "half": "2"}.get(word, word)  # fmt: skip
+        value = words_to_numbers([word])[0]
+        if not value.isdigit():
+            return None
+        n = int(value)
+    target = built[-1]
+    index = _last_index(built)
+    ordinal = re.search(r"\bthe\s+(first|second|third|last)\b", p.text, re.I)
+    if ordinal and target.count > 1:
+        pick = {"first": 0, "second": 1, "third": 2, "last": target.count - 1}
+        index = target.first + min(pick[ordinal.group(1).lower()], target.count - 1)
+    last = structures[index]
+    key = key or ("steps" if last.shape == "staircase" else "height")
+    now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
+    if op == "/" and now % n:
+        return None
+    new = {"+": now + n, "-": now - n, "=": n, "*": now * n, "/": now // n}[op]
+    if new < 1:
+        return None
+    shape = last.shape
+    if key == "height" and new > 1 and shape in ("grid", "row"):
+        shape = "block" if shape == "grid" else "wall"
+    structures[index] = last.model_copy(update={key: new, "shape": shape})
+    was = f" (was {now})" if getattr(last, key) else ""
+    return f"the {last.shape} now has {key} {new}{was}"
+
+
+_CHANGES: dict[str, Change] = {
+    "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars,
+    "hollow": _hollow, "drop": _drop,
+}  # fmt: skip
+"""The changes that are not a size of the last structure (`_resize` does those)."""
 
 
 def _main_slot(s: StructureDraft) -> str | None:
