@@ -64,14 +64,10 @@ def _structural(tok: Token) -> bool:
     )
 
 
-_OURS = frozenset({"the", "this", "our", "my", "your", "that", "work"})
-
-
 def _work_table(tok: Token) -> bool:
-    """ "on the table", "the work bench": the work table, not a table to build."""
-    before = tok.doc[tok.i - 1].lower_ if tok.i > 0 else ""
-    return tok.lower_ in ("table", "tables", "bench", "workspace") and (
-        before in _OURS | {"of", "on"} or any(c.lower_ in _OURS for c in tok.children)
+    """ "on the table": the work table, not a table to build."""
+    return tok.lower_ in ("table", "bench", "workspace") and any(
+        c.lower_ in ("the", "this", "our", "my", "your", "that", "work") for c in tok.children
     )
 
 
@@ -217,8 +213,10 @@ def _families_named(doc: Doc, tokens: set[int]) -> dict[str, str]:
             continue
         if w in _COMPONENTS or tok.pos_ not in ("NOUN", "PROPN") or tok.dep_ == "compound":
             continue
-        if _work_table(tok):
-            continue
+        if w in ("table", "tables", "bench") and tok.i > 0 and doc[tok.i - 1].lower_ in (
+            "the", "this", "our", "my", "your", "that", "work", "of", "on"
+        ):  # fmt: skip
+            continue  # "on the table": the work table, not a table to build
         named.setdefault(lx.SHAPE_WORDS[w], tok.text)
     return named
 
