@@ -124,9 +124,16 @@ def timing() -> dict[str, Any]:
     return out
 
 
+def _assembled(layout: Layout, sequence: Any, seeds: int) -> tuple[bool, Any]:
+    """Whether `layout` stands for every seed, and the run that moved a part furthest."""
+    from sdi.execute.physics_check import assemble
+
+    runs = [assemble(layout, sequence, seed=s) for s in range(seeds)]
+    return all(s.stands for s in runs), max(runs, key=lambda s: s.worst_offset_m)
+
+
 def suite_physics(seeds: int) -> dict[str, Any]:
     from sdi.bench.suite import SUITE
-    from sdi.execute.physics_check import assemble
     from sdi.pipeline import plan
 
     rows = []
@@ -134,13 +141,8 @@ def suite_physics(seeds: int) -> dict[str, Any]:
         r = plan(cmd.text)
         row: dict[str, Any] = {"id": cmd.id, "status": r.status}
         if r.status == "success" and r.layout is not None:
-            runs = [assemble(r.layout, r.sequence, seed=s) for s in range(seeds)]
-            worst = max(runs, key=lambda s: s.worst_offset_m)
-            row.update(
-                parts=len(r.layout),
-                stands=all(s.stands for s in runs),
-                worst=worst.to_json_dict(),
-            )
+            stands, worst = _assembled(r.layout, r.sequence, seeds)
+            row.update(parts=len(r.layout), stands=stands, worst=worst.to_json_dict())
         rows.append(row)
     verified = [r for r in rows if r["status"] == "success"]
     return {
@@ -260,7 +262,6 @@ def unseen(seeds: int, limit: int | None = None) -> dict[str, Any]:
     is assembled like the suite's. `limit`: at most that many commands per set."""
     import importlib
 
-    from sdi.execute.physics_check import assemble
     from sdi.pipeline import plan
 
     sets = ["test", *(f"dev{n}" for n in ("", 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))]
@@ -273,11 +274,10 @@ def unseen(seeds: int, limit: int | None = None) -> dict[str, Any]:
             if r.status != "success" or r.layout is None:
                 continue
             verified += 1
-            runs = [assemble(r.layout, r.sequence, seed=s) for s in range(seeds)]
-            if all(s.stands for s in runs):
+            stands, worst = _assembled(r.layout, r.sequence, seeds)
+            if stands:
                 stood += 1
             else:
-                worst = max(runs, key=lambda s: s.worst_offset_m)
                 fell.append({"id": case.id, "text": case.text, **worst.to_json_dict()})
     return {"sets": sets, "limit": limit, "verified": verified, "stand": stood, "fell": fell}
 
