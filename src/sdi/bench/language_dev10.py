@@ -54,27 +54,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-_on_side = k.on_side
-
-
-_near_rel = k.near_rel
-
-
-_parallel_gap = k.parallel_gap
-
-
-_centred = k.centred
-
-
-_corner_columns = k.corner_columns
-
-
-_leg_gap = k.leg_gap
-
-
-_holding = k.holding
-
-
 def _min_x(x: float) -> k.Check:
     """Nothing nearer the front (robot) edge than `x`: every part's back face of x ≥ `x`."""
 
@@ -140,21 +119,15 @@ def _descending(result: Mapping[str, Any]) -> k.Reason:
     return None if steps is None else f"{sep}; {steps}"
 
 
-_anything = k.anything
-
-
 T = k.tower
 one = k.one
 not_ = k.not_
 reg = k.region
-_runs = k.runs
-_low = k.low
-_solid = k.solid
 L_SHAPE = k.shape_letter("L")
 U_SHAPE = k.shape_letter("U")
 T_SHAPE = k.shape_letter("T")
 _RING6_2 = k.all_of(k.ring_of(high=2), k.dims(6, 6))
-_WALL6_Y = k.all_of(k.wall(6, 2), _runs("y"))
+_WALL6_Y = k.all_of(k.wall(6, 2), k.runs("y"))
 
 CASES: tuple[Case, ...] = (
     # ------------------------------------------------------------------ relation
@@ -163,7 +136,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "a low plinth, three by three and a single cube deep, with a slender column four "
         "cubes tall rising from its centre",
-        one(k.on_top(T(4), k.block(3, 3, 1)), k.levels(9, 1, 1, 1, 1), _centred()),
+        one(k.on_top(T(4), k.block(3, 3, 1)), k.levels(9, 1, 1, 1, 1), k.centred()),
     ),
     _c(
         "rel-02",
@@ -175,7 +148,7 @@ CASES: tuple[Case, ...] = (
         "rel-03",
         REL,
         "spawn a 4x4 floor tile and stick a pillar two tiles high on each corner of it",
-        one(k.base(4, 4), k.levels(16, 4, 4), _corner_columns(2)),
+        one(k.base(4, 4), k.levels(16, 4, 4), k.corner_columns(2)),
     ),
     _c(
         "rel-04",
@@ -183,8 +156,8 @@ CASES: tuple[Case, ...] = (
         "my son says the tower of three has to live inside a fence so it can't run away",
         # a fence free round the tower, or laid tight against it
         k.any_of(
-            k.around(T(3), k.all_of(k.ring, _low(3))),
-            one(_holding(T(3), k.all_of(k.ring, _low(3)))),
+            k.around(T(3), k.all_of(k.ring, k.low(3))),
+            one(k.holding(T(3), k.all_of(k.ring, k.low(3)))),
         ),
     ),
     _c(
@@ -218,7 +191,7 @@ CASES: tuple[Case, ...] = (
         "boss room: a 2x2 treasure tile, one high, sitting inside a 6x6 border two tiles high",
         k.any_of(
             k.around(k.block(2, 2, 1), _RING6_2),
-            one(_holding(k.block(2, 2, 1), _RING6_2)),  # the tile pushed against the border
+            one(k.holding(k.block(2, 2, 1), _RING6_2)),  # the tile pushed against the border
         ),
     ),
     _c(
@@ -233,7 +206,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "two parallel walls, four long and three high, with a 15 cm corridor between them for "
         "the inspection camera",
-        k.pair(k.wall(4, 3), k.wall(4, 3), _parallel_gap(3)),
+        k.pair(k.wall(4, 3), k.wall(4, 3), k.parallel_gap(3)),
     ),
     _c(
         "rel-12",
@@ -293,13 +266,13 @@ CASES: tuple[Case, ...] = (
         "seq-10",
         SEQ,
         "he wants a tower of three, and then right next to it one that's a cube taller",
-        k.any_of(k.pair(T(4), T(3), _near_rel()), one(k.profile(3, 4))),
+        k.any_of(k.pair(T(4), T(3), k.near_rel()), one(k.profile(3, 4))),
     ),
     _c(
         "seq-11",
         SEQ,
         "first a 4x4 plinth one cube high, then a 2x2 block two cubes tall set at its centre",
-        one(k.levels(16, 4, 4), k.on_top(k.block(2, 2, 2), k.block(4, 4, 1)), _centred(0.01)),
+        one(k.levels(16, 4, 4), k.on_top(k.block(2, 2, 2), k.block(4, 4, 1)), k.centred(0.01)),
     ),
     # ------------------------------------------------------------------ numbers
     _c("num-01", NUM, "towers, n=4, h=3 each", k.each(4, T(3))),
@@ -366,13 +339,13 @@ CASES: tuple[Case, ...] = (
         "dim-08",
         DIM,
         "a slab six inches by six inches",
-        one(_solid(3, 3), _low(2)),
+        one(k.solid(3, 3), k.low(2)),
     ),
     _c(
         "dim-09",
         DIM,
         "an arch with an opening 10 cm high and 5 cm wide",
-        one(k.bridge(2, pillars=2), _leg_gap(1)),
+        one(k.bridge(2, pillars=2), k.leg_gap(1)),
     ),
     _c(
         "dim-10",
@@ -467,7 +440,7 @@ CASES: tuple[Case, ...] = (
         "wo-01",
         WO,
         "rising from the centre of a 3x3 plinth, a column of five",
-        one(k.on_top(T(5), k.block(3, 3, 1)), k.levels(9, 1, 1, 1, 1, 1), _centred()),
+        one(k.on_top(T(5), k.block(3, 3, 1)), k.levels(9, 1, 1, 1, 1, 1), k.centred()),
     ),
     _c("wo-02", WO, "h=3, w=4, type=wall", one(k.wall(4, 3))),
     _c("wo-03", WO, "four high, that tower, up the back", one(T(4), reg(_B))),
@@ -476,7 +449,7 @@ CASES: tuple[Case, ...] = (
         "wo-05",
         WO,
         "on the right a tower of three, and on the left a tower of five",
-        k.pair(T(3), T(5), _on_side(_R)),
+        k.pair(T(3), T(5), k.on_side(_R)),
     ),
     _c("wo-06", WO, "a ring, 5 by 5, two high it should be", one(k.ring_of(high=2), k.dims(5, 5))),
     _c(
@@ -495,7 +468,7 @@ CASES: tuple[Case, ...] = (
         "wo-09",
         WO,
         "2 cubes apart, two rows of 4 cubes, side by side",
-        k.pair(k.row(4), k.row(4), _parallel_gap(2)),
+        k.pair(k.row(4), k.row(4), k.parallel_gap(2)),
     ),
     _c(
         "wo-10",
@@ -607,7 +580,7 @@ CASES: tuple[Case, ...] = (
         "reg-04",
         REG,
         "a wall six long and two high down the right-hand side, running front to back",
-        one(k.wall(6, 2), _runs("x"), reg(_R)),
+        one(k.wall(6, 2), k.runs("x"), reg(_R)),
     ),
     _c(
         "reg-05",
@@ -625,7 +598,7 @@ CASES: tuple[Case, ...] = (
         "reg-07",
         REG,
         "row n=5 along y, centred at x=0.60",
-        one(k.row(5), _runs("y"), k.near(x=0.60)),
+        one(k.row(5), k.runs("y"), k.near(x=0.60)),
     ),
     _c(
         "reg-08",
@@ -654,7 +627,7 @@ CASES: tuple[Case, ...] = (
         REG,
         "a low screen wall, six long and two high, along the back edge, with a small 2x2 plinth "
         "standing in front of it",
-        k.pair(k.block(2, 2, 1), k.all_of(_WALL6_Y, reg(_B)), _on_side(_F)),
+        k.pair(k.block(2, 2, 1), k.all_of(_WALL6_Y, reg(_B)), k.on_side(_F)),
     ),
     # ------------------------------------------------------------------ open
     _c(
@@ -662,8 +635,8 @@ CASES: tuple[Case, ...] = (
         OPEN,
         "a low plinth with a slender column rising from its centre",
         one(
-            k.on_top(T(lo=2), k.all_of(k.broad, k.full, _low(2))),
-            _centred(),
+            k.on_top(T(lo=2), k.all_of(k.broad, k.full, k.low(2))),
+            k.centred(),
         ),
     ),
     _c("open-02", OPEN, "she wants something that looks a bit like a rocket", one(k.height(lo=3))),
@@ -698,7 +671,7 @@ CASES: tuple[Case, ...] = (
         "open-07",
         OPEN,
         "something low and stable, nothing higher than 10 cm",
-        k.all_of(_anything, k.layout(_low(2))),
+        k.all_of(k.anything, k.layout(k.low(2))),
     ),
     _c(
         "open-08",
@@ -726,7 +699,7 @@ CASES: tuple[Case, ...] = (
         "bad-03",
         BAD,
         "she wants a rainbow unicorn castle that flies",
-        k.honest(_anything),
+        k.honest(k.anything),
     ),
     _c("bad-04", BAD, "sorry, wrong window", k.honest()),
     _c("bad-05", BAD, "load level 3 from the save file", k.honest()),
@@ -741,7 +714,7 @@ CASES: tuple[Case, ...] = (
         "bad-08",
         BAD,
         "a 2x2 slab, but leave the workspace completely empty",
-        k.honest(one(_solid(2, 2))),
+        k.honest(one(k.solid(2, 2))),
     ),
     _c("bad-09", BAD, "qwfp;; zxcv 0.0.0", k.honest()),
     _c("bad-10", BAD, "a tower of minus three", k.honest(one(T(3)))),

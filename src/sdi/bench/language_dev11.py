@@ -77,10 +77,6 @@ one = k.one
 not_ = k.not_
 reg = k.region
 L_SHAPE = k.shape_letter("L")
-_ring = k.ring
-_bare_bridge = k.bare_bridge
-_holding = k.holding
-_anything = k.anything
 
 CASES: tuple[Case, ...] = (
     # ------------------------------------------------------------------ relation
@@ -111,8 +107,8 @@ CASES: tuple[Case, ...] = (
         REL,
         "build a ring of cubes 5 by 5 and put a 2 high tower inside it",
         k.any_of(
-            k.around(T(2), k.all_of(_ring, k.dims(5, 5))),
-            one(_holding(T(2), k.all_of(_ring, k.dims(5, 5)))),
+            k.around(T(2), k.all_of(k.ring, k.dims(5, 5))),
+            one(k.holding(T(2), k.all_of(k.ring, k.dims(5, 5)))),
         ),
     ),
     _c(
@@ -162,15 +158,15 @@ CASES: tuple[Case, ...] = (
         REL,
         "a low fence around a 2x2 block",
         k.any_of(
-            k.around(k.solid(2, 2), k.all_of(_ring, k.low(2))),
-            one(_holding(k.solid(2, 2), k.all_of(_ring, k.low(2)))),
+            k.around(k.solid(2, 2), k.all_of(k.ring, k.low(2))),
+            one(k.holding(k.solid(2, 2), k.all_of(k.ring, k.low(2)))),
         ),
     ),
     _c(
         "rel-13",
         REL,
         "build a bridge, then stand one single cube on the middle of the beam",
-        one(k.on_top(T(1), _bare_bridge)),
+        one(k.on_top(T(1), k.bare_bridge)),
     ),
     _c(
         "rel-14",
@@ -218,8 +214,8 @@ CASES: tuple[Case, ...] = (
         REL,
         "a 6 by 6 fence with a small 2-level pyramid in the middle",
         k.any_of(
-            k.around(k.pyramid(2), k.all_of(_ring, k.dims(6, 6))),
-            one(_holding(k.pyramid(2), k.all_of(_ring, k.dims(6, 6)))),
+            k.around(k.pyramid(2), k.all_of(k.ring, k.dims(6, 6))),
+            one(k.holding(k.pyramid(2), k.all_of(k.ring, k.dims(6, 6)))),
         ),
     ),
     _c(
@@ -522,7 +518,7 @@ CASES: tuple[Case, ...] = (
     _c("typo-05", TYP, "two towres of three", k.each(2, T(3))),
     _c("typo-06", TYP, "a pyramd 3 levles", one(k.pyramid(3))),
     _c("typo-07", TYP, "a bridg with pilars of 2", one(k.bridge(2, pillars=2))),
-    _c("typo-08", TYP, "a rign 4 by 4", one(_ring, k.dims(4, 4))),
+    _c("typo-08", TYP, "a rign 4 by 4", one(k.ring, k.dims(4, 4))),
     _c("typo-09", TYP, "put a cueb on top of a tower of 3", one(T(4))),
     _c("typo-10", TYP, "row of 7 cubes on the lfet side", one(k.row(7), reg(_L))),
     _c(
@@ -642,7 +638,7 @@ CASES: tuple[Case, ...] = (
         FIL,
         "could you please, if it's not too much trouble, put a ring 5 by 5 in the middle of "
         "the table",
-        one(_ring, k.dims(5, 5), reg("centre")),
+        one(k.ring, k.dims(5, 5), reg("centre")),
     ),
     _c(
         "fil-10",
@@ -717,7 +713,7 @@ CASES: tuple[Case, ...] = (
         "reg-12",
         REG,
         "a ring 4x4 as far back as it can go",
-        one(_ring, k.dims(4, 4), k.near(x=0.70, tol=0.04)),
+        one(k.ring, k.dims(4, 4), k.near(x=0.70, tol=0.04)),
     ),
     _c(
         "reg-13",
@@ -734,7 +730,7 @@ CASES: tuple[Case, ...] = (
     # ------------------------------------------------------------------ open
     _c("open-01", OPEN, "build me a really tall tower", one(T(lo=5))),
     _c("open-02", OPEN, "a small pyramid", one(k.pyramid(lo=2, hi=3))),
-    _c("open-03", OPEN, "build something nice", _anything),
+    _c("open-03", OPEN, "build something nice", k.anything),
     _c(
         "open-04",
         OPEN,
@@ -754,14 +750,14 @@ CASES: tuple[Case, ...] = (
         "open-08",
         OPEN,
         "a little house for a toy",
-        one(k.any_of(_ring, k.canopy(), k.arch)),
+        one(k.any_of(k.ring, k.canopy(), k.arch)),
     ),
     _c("open-09", OPEN, "a low wide platform", one(k.full, k.broad, k.low(2))),
     _c(
         "open-10",
         OPEN,
         "something quick, just a few cubes",
-        k.all_of(_anything, k.layout(k.parts(lo=2, hi=6))),
+        k.all_of(k.anything, k.layout(k.parts(lo=2, hi=6))),
     ),
     _c("open-11", OPEN, "a tower about as tall as it can be", one(T(lo=8, hi=10))),
     _c("open-12", OPEN, "a medium-sized staircase", one(k.staircase(lo=3, hi=6))),
@@ -769,9 +765,9 @@ CASES: tuple[Case, ...] = (
     _c("bad-01", BAD, "asdfgh", k.refused),
     _c("bad-02", BAD, "a tower of 25 cubes", k.honest(one(T(lo=1, hi=10)))),
     _c("bad-03", BAD, "build a tower with minus 3 cubes", k.honest()),
-    _c("bad-04", BAD, "a wall 2 metres long", k.honest(_anything)),
+    _c("bad-04", BAD, "a wall 2 metres long", k.honest(k.anything)),
     _c("bad-05", BAD, "put a cube at x = 1.5", k.honest(one(T(1)))),
-    _c("bad-06", BAD, "a ring that is 1 by 1", k.honest(_anything)),
+    _c("bad-06", BAD, "a ring that is 1 by 1", k.honest(k.anything)),
     _c("bad-07", BAD, "make it", k.honest()),
     _c(
         "bad-08",

@@ -197,12 +197,7 @@ T = k.tower
 one = k.one
 not_ = k.not_
 reg = k.region
-_runs = k.runs
-_low = k.low
-_solid = k.solid
-_anything = k.anything
 _near = k.near_rel()
-_side = k.on_side
 L_SHAPE = k.shape_letter("L")
 
 CASES: tuple[Case, ...] = (
@@ -225,7 +220,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "a 2x2 block with a fence all round it, fence one cube high, and leave some space "
         "between the block and the fence",
-        k.around(_solid(2, 2), k.ring_of(high=1)),
+        k.around(k.solid(2, 2), k.ring_of(high=1)),
     ),
     _c(
         "rel-04",
@@ -272,14 +267,14 @@ CASES: tuple[Case, ...] = (
         "rel-10",
         REL,
         "put a 2x2 block on top of a 4x4 slab and then a single cube on top of the block",
-        one(k.on_top(T(1), k.on_top(_solid(2, 2), k.block(4, 4, 1)))),
+        one(k.on_top(T(1), k.on_top(k.solid(2, 2), k.block(4, 4, 1)))),
     ),
     _c(
         "rel-11",
         REL,
         "from the drawing: a ring four by four, and behind it, outside the ring, a tower of three",
         k.any_of(
-            k.pair(T(3), k.all_of(k.ring, k.dims(4, 4)), _side(_B)),
+            k.pair(T(3), k.all_of(k.ring, k.dims(4, 4)), k.on_side(_B)),
             one(k.dims(4, 5), _ring_and_column(3, _B)),  # the tower against the ring's back
         ),
     ),
@@ -287,7 +282,7 @@ CASES: tuple[Case, ...] = (
         "rel-12",
         REL,
         "two towers of four, one either side of a 2x2 block, each with a small gap to the block",
-        k.between_(_solid(2, 2), T(4)),
+        k.between_(k.solid(2, 2), T(4)),
     ),
     _c(
         "rel-13",
@@ -322,14 +317,14 @@ CASES: tuple[Case, ...] = (
         REL,
         "three things, left to right: a tower of 3, then a 2x2 block, then a two-level pyramid, "
         "with space between each",
-        _in_order("y", T(3), _solid(2, 2), k.pyramid(2)),
+        _in_order("y", T(3), k.solid(2, 2), k.pyramid(2)),
     ),
     # ------------------------------------------------------------------ sequence
     _c(
         "seq-01",
         SEQ,
         "first lay a row of five going left to right, then a second row of five on top of it",
-        one(k.wall(5, 2), _runs("y")),
+        one(k.wall(5, 2), k.runs("y")),
     ),
     _c(
         "seq-02",
@@ -369,7 +364,7 @@ CASES: tuple[Case, ...] = (
         "tower of four",
         k.any_of(
             one(k.xprofile(1, 2, 3, 4, 4)),
-            k.pair(T(4), k.all_of(k.staircase(4), k.rises(_B)), _rels(_side(_B), _near)),
+            k.pair(T(4), k.all_of(k.staircase(4), k.rises(_B)), _rels(k.on_side(_B), _near)),
         ),
     ),
     _c(
@@ -386,7 +381,7 @@ CASES: tuple[Case, ...] = (
         k.any_of(
             one(k.lr_profile(4, 2, 2, 2, 2, 2, 2)),
             one(k.lr_profile(4, 2, 2, 2, 2, 2)),
-            k.pair(T(4), k.wall(6, 2), _rels(_side(_L), _near)),
+            k.pair(T(4), k.wall(6, 2), _rels(k.on_side(_L), _near)),
         ),
     ),
     _c(
@@ -394,7 +389,7 @@ CASES: tuple[Case, ...] = (
         SEQ,
         "stack of 4, then another stack of 4 touching it on the right, then one more on the "
         "right of that",
-        one(k.wall(3, 4), _runs("y")),
+        one(k.wall(3, 4), k.runs("y")),
     ),
     _c(
         "seq-11",
@@ -570,7 +565,7 @@ CASES: tuple[Case, ...] = (
         "dim-17",
         DIM,
         "a 35 cm line of cubes running from front to back",
-        one(k.row(7), _runs("x")),
+        one(k.row(7), k.runs("x")),
     ),
     # ------------------------------------------------------------------ negation
     _c(
@@ -625,7 +620,7 @@ CASES: tuple[Case, ...] = (
         "neg-09",
         NEG,
         "a row of 5 that does not run front to back",
-        one(k.row(5), _runs("y")),
+        one(k.row(5), k.runs("y")),
     ),
     _c(
         "neg-10",
@@ -705,7 +700,7 @@ CASES: tuple[Case, ...] = (
         "wo-05",
         WO,
         "on top of the 2x2 block a tower of 3 goes",
-        one(k.on_top(T(3), _solid(2, 2))),
+        one(k.on_top(T(3), k.solid(2, 2))),
     ),
     _c(
         "wo-06",
@@ -730,7 +725,7 @@ CASES: tuple[Case, ...] = (
         "wo-10",
         WO,
         "cubes, eight of them, in a line front to back",
-        one(k.row(8), _runs("x")),
+        one(k.row(8), k.runs("x")),
     ),
     _c(
         "wo-11",
@@ -807,7 +802,7 @@ CASES: tuple[Case, ...] = (
         "fil-11",
         FIL,
         "I'm reading off the whiteboard here, it says: row of 4, front to back, that's all it says",
-        one(k.row(4), _runs("x")),
+        one(k.row(4), k.runs("x")),
     ),
     _c(
         "fil-12",
@@ -821,13 +816,13 @@ CASES: tuple[Case, ...] = (
         "reg-02",
         REG,
         "a 2x2 block over in the front left corner",
-        one(_solid(2, 2), reg("front left")),
+        one(k.solid(2, 2), reg("front left")),
     ),
     _c(
         "reg-03",
         REG,
         "a wall along the right-hand side, 5 long 2 high, running front to back",
-        one(k.wall(5, 2), _runs("x"), reg(_R)),
+        one(k.wall(5, 2), k.runs("x"), reg(_R)),
     ),
     _c(
         "reg-04",
@@ -839,7 +834,7 @@ CASES: tuple[Case, ...] = (
         "reg-05",
         REG,
         "on the left there's a tower of two, and on the right a tower of five",
-        k.any_of(k.pair(T(2), T(5), _side(_L)), one(k.lr_profile(2, 5))),
+        k.any_of(k.pair(T(2), T(5), k.on_side(_L)), one(k.lr_profile(2, 5))),
     ),
     _c(
         "reg-06",
@@ -867,7 +862,7 @@ CASES: tuple[Case, ...] = (
         "reg-10",
         REG,
         "a row of 6 along the front edge of the table",
-        one(k.row(6), _runs("y"), reg(_F)),
+        one(k.row(6), k.runs("y"), reg(_F)),
     ),
     _c(
         "reg-11",
@@ -900,7 +895,7 @@ CASES: tuple[Case, ...] = (
         "open-04",
         OPEN,
         "something long and low, like a garden wall",
-        one(k.any_of(k.row(lo=5), k.all_of(k.wall(lo=5), _low(2)))),
+        one(k.any_of(k.row(lo=5), k.all_of(k.wall(lo=5), k.low(2)))),
     ),
     _c(
         "open-05",
@@ -936,7 +931,7 @@ CASES: tuple[Case, ...] = (
         "bad-07",
         BAD,
         "a hollow ring that's 2x2",
-        k.honest(one(k.any_of(k.ring, _solid(2, 2)))),
+        k.honest(one(k.any_of(k.ring, k.solid(2, 2)))),
     ),
     _c(
         "bad-08",

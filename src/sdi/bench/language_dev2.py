@@ -33,9 +33,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks (open wording)
 
 
-_block_any_height = k.solid
-
-
 def _chunky(bs: k.Boxes) -> k.Reason:
     """A solid block at least 2 × 2 in plan and at least 2 layers high."""
     a, b = bx.plan_dims(bs)
@@ -94,9 +91,6 @@ def _pack(n: int, tight: bool = False) -> k.Check:
     return f
 
 
-_few = k.few
-
-
 T = k.tower
 one = k.one
 
@@ -116,7 +110,7 @@ CASES: tuple[Case, ...] = (
     ),
     _c("rel-03", REL, "span a beam across two 3-high columns", one(k.bridge(3, pillars=2))),
     _c("rel-04", REL, "fence in a 2-cube tower with a ring of cubes", k.around(T(2))),
-    _c("rel-05", REL, "put a 2x2 block inside an enclosure", k.around(_block_any_height(2, 2))),
+    _c("rel-05", REL, "put a 2x2 block inside an enclosure", k.around(k.solid(2, 2))),
     _c(
         "rel-06",
         REL,
@@ -613,7 +607,7 @@ CASES: tuple[Case, ...] = (
     _c("open-07", OPEN, "a tall, thin wall", one(k.wall(), k.height(lo=4))),
     _c("open-08", OPEN, "a long row", one(k.row(lo=6))),
     _c("open-09", OPEN, "a little tunnel", one(k.arch)),
-    _c("open-10", OPEN, "a few towers", _few(2, 5, T(lo=2))),
+    _c("open-10", OPEN, "a few towers", k.few(2, 5, T(lo=2))),
     _c("open-11", OPEN, "a big square grid", one(_big_square_grid)),
     _c("open-12", OPEN, "a little fort", one(k.ring)),
     _c(

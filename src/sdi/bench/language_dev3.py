@@ -50,9 +50,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks (on boxes)
 
 
-_block_any_height = k.solid
-
-
 def _top_centred(bs: k.Boxes) -> k.Reason:
     """The parts of the highest level sit over the middle of the structure's footprint
     (within 13 mm, a quarter cube)."""
@@ -223,9 +220,6 @@ def _in_line(n: int, check: k.Check) -> k.Pred:
     return f
 
 
-_few = k.few
-
-
 T = k.tower
 one = k.one
 not_ = k.not_
@@ -278,7 +272,7 @@ CASES: tuple[Case, ...] = (
         "rel-11",
         REL,
         "a 2x2 block between a wall and a tower of 3",
-        k.between_(_block_any_height(2, 2), k.wall(), T(3)),
+        k.between_(k.solid(2, 2), k.wall(), T(3)),
     ),
     _c("rel-12", REL, "a 5-high tower next to a T shape", k.beside(T(5), T_SHAPE)),
     _c("rel-13", REL, "a row of 4 beside a U shape", k.beside(k.row(4), U_SHAPE)),
@@ -1006,7 +1000,7 @@ CASES: tuple[Case, ...] = (
         "a carport for a toy car",
         one(k.any_of(k.canopy(), k.bridge(), k.arch)),
     ),
-    _c("open-10", OPEN, "a few separate single cubes", _few(2, 6, T(1))),
+    _c("open-10", OPEN, "a few separate single cubes", k.few(2, 6, T(1))),
     _c("open-11", OPEN, "a minimal bridge", one(k.bridge(1, pillars=2))),
     _c(
         "open-12",

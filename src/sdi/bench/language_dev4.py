@@ -35,9 +35,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks (on boxes)
 
 
-_solid = k.solid
-
-
 def _top_centred(bs: k.Boxes) -> k.Reason:
     """The highest level sits over the middle of the footprint (within a quarter cube)."""
     if not bs:
@@ -48,12 +45,6 @@ def _top_centred(bs: k.Boxes) -> k.Reason:
     if abs(tx - cx) > 0.013 or abs(ty - cy) > 0.013:
         return f"top level centred at ({tx:.3f}, {ty:.3f}), footprint centre ({cx:.3f}, {cy:.3f})"
     return None
-
-
-_runs = k.runs
-
-
-_low = k.low
 
 
 def _side(n: int) -> k.Check:
@@ -109,7 +100,7 @@ CASES: tuple[Case, ...] = (
         "rel-05",
         REL,
         "one cube sitting on top of a 2x2 block",
-        one(k.on_top(T(1), _solid(2, 2))),
+        one(k.on_top(T(1), k.solid(2, 2))),
     ),
     _c("rel-06", REL, "a 3-level pyramid beside a 4-long wall", k.beside(k.pyramid(3), k.wall(4))),
     _c(
@@ -124,7 +115,7 @@ CASES: tuple[Case, ...] = (
         "a 2 by 2 pad in front of a 3-step staircase",
         k.beside(k.block(2, 2, 1), k.staircase(3), _F),
     ),
-    _c("rel-09", REL, "a ring around a 2x2 block", k.around(_solid(2, 2))),
+    _c("rel-09", REL, "a ring around a 2x2 block", k.around(k.solid(2, 2))),
     _c(
         "rel-10",
         REL,
@@ -420,7 +411,7 @@ CASES: tuple[Case, ...] = (
         "neg-15",
         NEG,
         "a 4x4 slab but leave out its four corner cubes",
-        one(k.dims(4, 4), k.parts(12), k.only_cubes, _low(1), _corners_empty),
+        one(k.dims(4, 4), k.parts(12), k.only_cubes, k.low(1), _corners_empty),
     ),
     # ------------------------------------------------------------------ typo
     _c("typo-01", TYP, "biuld a towr of 4 cubez", one(T(4))),
@@ -568,7 +559,7 @@ CASES: tuple[Case, ...] = (
         "reg-11",
         REG,
         "a row of 5 running left to right across the back",
-        one(k.row(5), _runs("y"), reg(_B)),
+        one(k.row(5), k.runs("y"), reg(_B)),
     ),
     _c(
         "reg-12",
@@ -580,7 +571,7 @@ CASES: tuple[Case, ...] = (
         "reg-13",
         REG,
         "a row of 4 going away from the robot, on the left",
-        one(k.row(4), _runs("x"), reg(_L)),
+        one(k.row(4), k.runs("x"), reg(_L)),
     ),
     _c(
         "reg-14",
@@ -591,12 +582,12 @@ CASES: tuple[Case, ...] = (
     # ------------------------------------------------------------------ open
     _c("open-01", OPEN, "a smallish tower, nothing big", one(T(lo=2, hi=4))),
     _c("open-02", OPEN, "a really tall stack of cubes", one(T(lo=5, hi=10))),
-    _c("open-03", OPEN, "a low little wall, just knee height for a mouse", one(k.wall(), _low(2))),
+    _c("open-03", OPEN, "a low little wall, just knee height for a mouse", one(k.wall(), k.low(2))),
     _c("open-04", OPEN, "a nice long line of cubes", one(k.row(lo=6))),
     _c("open-05", OPEN, "a little bridge", one(k.bridge(lo=1, hi=3))),
     _c("open-06", OPEN, "a simple arch", one(k.arch)),
     _c("open-07", OPEN, "a table", one(k.canopy())),
-    _c("open-08", OPEN, "a big grid", one(k.full, k.broad, _low(1), _wide(4))),
+    _c("open-08", OPEN, "a big grid", one(k.full, k.broad, k.low(1), _wide(4))),
     _c("open-09", OPEN, "some steps going up", one(k.staircase())),
     _c("open-10", OPEN, "a pyramid", one(k.pyramid(lo=2))),
     _c(

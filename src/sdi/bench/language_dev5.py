@@ -35,15 +35,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks (on boxes)
 
 
-_solid = k.solid
-
-
-_runs = k.runs
-
-
-_low = k.low
-
-
 def _room(cells: int) -> k.Check:
     """An enclosure whose empty interior holds at least `cells` cube cells."""
 
@@ -111,7 +102,7 @@ CASES: tuple[Case, ...] = (
         # inside always touches the wall: one 13-cube, one-high piece
         k.any_of(
             k.around(T(1), _square_ring(6)),
-            one(k.dims(4, 4), k.parts(13), _low(1), k.only_cubes),
+            one(k.dims(4, 4), k.parts(13), k.low(1), k.only_cubes),
         ),
     ),
     _c(
@@ -193,8 +184,8 @@ CASES: tuple[Case, ...] = (
         SEQ,
         "first a row of 4 going away from the robot, then a second row of 4 alongside it",
         k.any_of(
-            one(k.block(2, 4, 1), _runs("x")),
-            k.each(2, k.row(4), _runs("x")),
+            one(k.block(2, 4, 1), k.runs("x")),
+            k.each(2, k.row(4), k.runs("x")),
         ),
     ),
     _c(
@@ -220,7 +211,7 @@ CASES: tuple[Case, ...] = (
         "seq-07",
         SEQ,
         "make a 3x3 slab, then remove the four corner cubes",
-        one(CROSS, k.dims(3, 3), _low(1)),
+        one(CROSS, k.dims(3, 3), k.low(1)),
     ),
     _c(
         "seq-08",
@@ -267,7 +258,7 @@ CASES: tuple[Case, ...] = (
         "seq-15",
         SEQ,
         "make a 4-cube row. Now turn it so it points away from the robot",
-        one(k.row(4), _runs("x")),
+        one(k.row(4), k.runs("x")),
     ),
     _c(
         "seq-16",
@@ -360,7 +351,7 @@ CASES: tuple[Case, ...] = (
         "dim-15",
         DIM,
         "a row of cubes 40 cm from its left end to its right end",
-        one(k.row(8), _runs("y")),
+        one(k.row(8), k.runs("y")),
     ),
     # ------------------------------------------------------------------ negation
     _c(
@@ -422,7 +413,7 @@ CASES: tuple[Case, ...] = (
         "two pyramids, each 2 levels, neither touching the other",
         k.each(2, k.pyramid(2)),
     ),
-    _c("neg-15", NEG, "a square of cubes, hollow, not filled in", one(k.ring, _low(1))),
+    _c("neg-15", NEG, "a square of cubes, hollow, not filled in", one(k.ring, k.low(1))),
     # ------------------------------------------------------------------ typo
     _c("typo-01", TYP, "towre with 5 cubse", one(T(5))),
     _c("typo-02", TYP, "a pyrmaid 4 levls", one(k.pyramid(4))),
@@ -479,7 +470,7 @@ CASES: tuple[Case, ...] = (
         "wo-11",
         WO,
         "left side, row of 4 front to back",
-        one(k.row(4), _runs("x"), reg(_L)),
+        one(k.row(4), k.runs("x"), reg(_L)),
     ),
     _c(
         "wo-12",
@@ -587,7 +578,7 @@ CASES: tuple[Case, ...] = (
         "reg-04",
         REG,
         "a wall 4 long along the right edge",
-        one(k.wall(4), reg(_R), _runs("x")),
+        one(k.wall(4), reg(_R), k.runs("x")),
     ),
     _c("reg-05", REG, "an L in the back left corner", one(L_SHAPE, reg("back left"))),
     _c(
@@ -602,7 +593,7 @@ CASES: tuple[Case, ...] = (
         "reg-09",
         REG,
         "a row of 3 cubes at the front, left to right",
-        one(k.row(3), _runs("y"), reg(_F)),
+        one(k.row(3), k.runs("y"), reg(_F)),
     ),
     _c(
         "reg-10",
@@ -631,7 +622,7 @@ CASES: tuple[Case, ...] = (
         "open-03",
         OPEN,
         "a wide, low wall",
-        one(k.any_of(k.all_of(k.wall(lo=5), _low(3)), k.row(lo=5))),
+        one(k.any_of(k.all_of(k.wall(lo=5), k.low(3)), k.row(lo=5))),
     ),
     _c(
         "open-04",
@@ -644,7 +635,7 @@ CASES: tuple[Case, ...] = (
         "open-06",
         OPEN,
         "a sturdy tower",
-        one(k.any_of(T(lo=2), k.all_of(_solid(2, 2), k.height(lo=2)))),
+        one(k.any_of(T(lo=2), k.all_of(k.solid(2, 2), k.height(lo=2)))),
     ),
     _c("open-07", OPEN, "a fence", one(k.any_of(k.ring, k.wall(), k.row(lo=3)))),
     _c("open-08", OPEN, "a wide staircase", one(k.staircase(), k.broad)),

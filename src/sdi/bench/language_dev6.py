@@ -50,9 +50,6 @@ def _taller_on(side: str) -> Rel:
     return rel
 
 
-_corner_columns = k.corner_columns
-
-
 def _centred_on(upper: k.Check, lower: k.Check) -> k.Check:
     """`lower` is the bottom level; `upper` (everything above) stands on it, footprint centres
     within 1 cm."""
@@ -113,19 +110,10 @@ def _podium(bs: k.Boxes) -> k.Reason:
     return None if len(bx.voxels(bs)) == sum(prof) else "columns not full"
 
 
-_xprofile = k.xprofile
-
-
-_lr_profile = k.lr_profile
-
-
 T = k.tower
 one = k.one
 not_ = k.not_
 reg = k.region
-_runs = k.runs
-_low = k.low
-_solid = k.solid
 L_SHAPE, U_SHAPE, T_SHAPE, CROSS = (k.shape_letter(s) for s in ("L", "U", "T", "cross"))
 
 CASES: tuple[Case, ...] = (
@@ -195,7 +183,7 @@ CASES: tuple[Case, ...] = (
         "rel-11",
         REL,
         "3-level pyramid, and on its right a row of 4 running front to back",
-        k.beside(k.all_of(k.row(4), _runs("x")), k.pyramid(3), _R),
+        k.beside(k.all_of(k.row(4), k.runs("x")), k.pyramid(3), _R),
     ),
     _c(
         "rel-12",
@@ -203,21 +191,21 @@ CASES: tuple[Case, ...] = (
         "a 3 tower at the front and a 6 tower directly behind it",
         k.any_of(
             k.beside(T(6), T(3), _B),
-            one(_xprofile(3, 6)),
+            one(k.xprofile(3, 6)),
         ),
     ),
     _c(
         "rel-13",
         REL,
         "4x4 slab with a 3-high tower on each of its corners",
-        one(k.base(4, 4), k.parts(16 + 12), _corner_columns(3)),
+        one(k.base(4, 4), k.parts(16 + 12), k.corner_columns(3)),
     ),
     # ------------------------------------------------------------------ sequence
     _c(
         "seq-01",
         SEQ,
         "row of 6, left to right. then take the two end cubes off",
-        one(k.row(4), _runs("y")),
+        one(k.row(4), k.runs("y")),
     ),
     _c(
         "seq-02",
@@ -254,13 +242,13 @@ CASES: tuple[Case, ...] = (
         "seq-08",
         SEQ,
         "ring of cubes, one high, 4 by 4 on the outside. then a cube on each corner on top",
-        one(k.ring, k.dims(4, 4), k.levels(12, 4), _corner_columns(1)),
+        one(k.ring, k.dims(4, 4), k.levels(12, 4), k.corner_columns(1)),
     ),
     _c(
         "seq-09",
         SEQ,
         "A 3 cube tower. Now another one the same height directly to its left, touching it",
-        one(k.wall(2, 3), _runs("y")),
+        one(k.wall(2, 3), k.runs("y")),
     ),
     _c("seq-10", SEQ, "put a T shape down, then slide it to the front", one(T_SHAPE, reg(_F))),
     _c(
@@ -279,7 +267,7 @@ CASES: tuple[Case, ...] = (
         "seq-13",
         SEQ,
         "2-cube tower at the front. put another one like it behind it",
-        k.any_of(k.beside(T(2), T(2), _B), one(k.wall(2, 2), _runs("x"))),
+        k.any_of(k.beside(T(2), T(2), _B), one(k.wall(2, 2), k.runs("x"))),
     ),
     # ------------------------------------------------------------------ numbers
     _c("num-01", NUM, "a tower of a half dozen cubes", one(T(6))),
@@ -355,7 +343,7 @@ CASES: tuple[Case, ...] = (
         "neg-04",
         NEG,
         "a row of 4 that does NOT run left to right",
-        one(k.row(4), _runs("x")),
+        one(k.row(4), k.runs("x")),
     ),
     _c("neg-05", NEG, "two towers of 2 that aren't touching each other", k.each(2, T(2))),
     _c("neg-06", NEG, "a 5x5 ring with no gaps in it", one(k.ring, k.dims(5, 5))),
@@ -408,7 +396,7 @@ CASES: tuple[Case, ...] = (
         TYP,
         "a rign around a singel cube",
         # a free cube inside, or a 3x3 outline whose middle cell the cube fills
-        k.any_of(k.around(T(1)), one(k.dims(3, 3), k.parts(9), _low(1), k.only_cubes)),
+        k.any_of(k.around(T(1)), one(k.dims(3, 3), k.parts(9), k.low(1), k.only_cubes)),
     ),
     _c("typo-09", TYP, "a crosss shaep in the midle plz", one(CROSS, reg("centre"))),
     _c("typo-10", TYP, "an L shpe, both arms 4 cubes", one(L_SHAPE, k.dims(4, 4))),
@@ -416,7 +404,7 @@ CASES: tuple[Case, ...] = (
         "typo-11",
         TYP,
         "two towres of 3, one behnid the other",
-        k.any_of(k.beside(T(3), T(3), _B), one(k.wall(2, 3), _runs("x"))),
+        k.any_of(k.beside(T(3), T(3), _B), one(k.wall(2, 3), k.runs("x"))),
     ),
     # ------------------------------------------------------------------ word order
     _c("wo-01", WO, "of five cubes, a tower, at the back", one(T(5), reg(_B))),
@@ -530,7 +518,7 @@ CASES: tuple[Case, ...] = (
         "reg-04",
         REG,
         "a row of 4 cubes parallel to the back edge, close to it",
-        one(k.row(4), _runs("y"), reg(_B)),
+        one(k.row(4), k.runs("y"), reg(_B)),
     ),
     _c("reg-05", REG, "tower of 6, dead centre", one(T(6), reg("centre"))),
     _c(
@@ -570,13 +558,13 @@ CASES: tuple[Case, ...] = (
         "open-01",
         OPEN,
         "a skyscraper",
-        one(k.any_of(T(lo=6), k.all_of(_solid(2, 2), k.height(lo=6)))),
+        one(k.any_of(T(lo=6), k.all_of(k.solid(2, 2), k.height(lo=6)))),
     ),
     _c(
         "open-02",
         OPEN,
         "a little wall",
-        one(k.any_of(k.all_of(k.wall(lo=2, hi=5), _low(3)), k.row(lo=2, hi=5))),
+        one(k.any_of(k.all_of(k.wall(lo=2, hi=5), k.low(3)), k.row(lo=2, hi=5))),
     ),
     _c(
         "open-03",
@@ -605,7 +593,7 @@ CASES: tuple[Case, ...] = (
         "open-11",
         OPEN,
         "a squat little tower",
-        one(k.any_of(T(lo=1, hi=3), k.all_of(_solid(2, 2), k.height(lo=1, hi=3)))),
+        one(k.any_of(T(lo=1, hi=3), k.all_of(k.solid(2, 2), k.height(lo=1, hi=3)))),
     ),
     # ------------------------------------------------------------------ bad input
     _c("bad-01", BAD, "asdf jkl;", k.refused),

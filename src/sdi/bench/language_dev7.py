@@ -50,15 +50,6 @@ def _on_side(side: str) -> Rel:
     return rel
 
 
-_lr_profile = k.lr_profile
-
-
-_xprofile = k.xprofile
-
-
-_corner_columns = k.corner_columns
-
-
 def _elbow(side_x: str, side_y: str) -> k.Check:
     """An L whose corner (elbow) cell is the footprint corner at `side_x` (front/back) and
     `side_y` (left/right)."""
@@ -127,9 +118,6 @@ T = k.tower
 one = k.one
 not_ = k.not_
 reg = k.region
-_runs = k.runs
-_low = k.low
-_solid = k.solid
 L_SHAPE, U_SHAPE, T_SHAPE, CROSS = (k.shape_letter(s) for s in ("L", "U", "T", "cross"))
 
 CASES: tuple[Case, ...] = (
@@ -150,14 +138,14 @@ CASES: tuple[Case, ...] = (
         "two towers side by side, the left one is 3 high and the right one twice as tall",
         k.any_of(
             k.pair(T(3), T(6), _on_side(_L)),
-            one(_lr_profile(3, 6)),
+            one(k.lr_profile(3, 6)),
         ),
     ),
     _c(
         "rel-03",
         REL,
         "a cube on every corner of a 4x4 slab",
-        one(k.base(4, 4), k.levels(16, 4), _corner_columns(1)),
+        one(k.base(4, 4), k.levels(16, 4), k.corner_columns(1)),
     ),
     _c("rel-04", REL, "a 5-cube tower between two L shapes", k.between_(T(5), L_SHAPE)),
     _c(
@@ -178,8 +166,8 @@ CASES: tuple[Case, ...] = (
         REL,
         "two rows of 5 left to right, one behind the other, a one-cube gap between them",
         k.pair(
-            k.all_of(k.row(5), _runs("y")),
-            k.all_of(k.row(5), _runs("y")),
+            k.all_of(k.row(5), k.runs("y")),
+            k.all_of(k.row(5), k.runs("y")),
             k.gap_of(1, _B),
         ),
     ),
@@ -193,7 +181,7 @@ CASES: tuple[Case, ...] = (
         "rel-10",
         REL,
         "a 3x3 pad and along its back edge a wall 3 long, 2 high, standing on the pad",
-        one(_xprofile(1, 1, 3)),
+        one(k.xprofile(1, 1, 3)),
     ),
     _c(
         "rel-11",
@@ -205,7 +193,7 @@ CASES: tuple[Case, ...] = (
         "rel-12",
         REL,
         "the taller of the two towers goes at the back - make them 2 and 5",
-        k.any_of(k.beside(T(5), T(2), _B), one(_xprofile(2, 5))),
+        k.any_of(k.beside(T(5), T(2), _B), one(k.xprofile(2, 5))),
     ),
     # ------------------------------------------------------------------ sequence
     _c("seq-01", SEQ, "row of 3. no wait, make it 4", one(k.row(4))),
@@ -213,7 +201,7 @@ CASES: tuple[Case, ...] = (
         "seq-02",
         SEQ,
         "build a tower of 5, then put an identical one to its right",
-        k.any_of(k.beside(T(5), T(5), _R), one(k.wall(2, 5), _runs("y"))),
+        k.any_of(k.beside(T(5), T(5), _R), one(k.wall(2, 5), k.runs("y"))),
     ),
     _c(
         "seq-03",
@@ -262,7 +250,7 @@ CASES: tuple[Case, ...] = (
         "seq-10",
         SEQ,
         "row of 5 going left to right, then a second row of 5 on top, then a third",
-        one(k.wall(5, 3), _runs("y")),
+        one(k.wall(5, 3), k.runs("y")),
     ),
     _c(
         "seq-11",
@@ -348,7 +336,7 @@ CASES: tuple[Case, ...] = (
         "dim-11",
         DIM,
         "a row from left to right, 0.5 m long",
-        one(k.row(10), _runs("y")),
+        one(k.row(10), k.runs("y")),
     ),
     # ------------------------------------------------------------------ negation
     _c(
@@ -421,7 +409,7 @@ CASES: tuple[Case, ...] = (
         # a 4x4 outline leaves a 2x2 floor: the cube is free in it or touches the wall
         k.any_of(
             k.around(T(1), k.all_of(k.ring, k.any_of(k.dims(4, 4), k.dims(6, 6)))),
-            one(k.dims(4, 4), k.parts(13), _low(1), k.only_cubes),
+            one(k.dims(4, 4), k.parts(13), k.low(1), k.only_cubes),
         ),
     ),
     _c("wo-06", WO, "stairs - 6 of them", one(k.staircase(6))),
@@ -440,7 +428,7 @@ CASES: tuple[Case, ...] = (
         # a free pad, or a one-high 4x4 outline laid tight round it (a full 4x4 patch)
         k.any_of(k.around(k.block(2, 2, 1)), one(k.block(4, 4, 1))),
     ),
-    _c("wo-11", WO, "a row of cubes - 7 - running away from me", one(k.row(7), _runs("x"))),
+    _c("wo-11", WO, "a row of cubes - 7 - running away from me", one(k.row(7), k.runs("x"))),
     # ------------------------------------------------------------------ filler
     _c(
         "fil-01",
@@ -525,7 +513,7 @@ CASES: tuple[Case, ...] = (
         "reg-07",
         REG,
         "a 6-cube-long wall pushed right up to the back edge",
-        one(k.wall(6), _runs("y"), reg(_B)),
+        one(k.wall(6), k.runs("y"), reg(_B)),
     ),
     _c(
         "reg-08",
@@ -582,7 +570,7 @@ CASES: tuple[Case, ...] = (
         "open-07",
         OPEN,
         "a pillar",
-        one(k.any_of(T(lo=2), k.all_of(_solid(2, 2), k.height(lo=3)))),
+        one(k.any_of(T(lo=2), k.all_of(k.solid(2, 2), k.height(lo=3)))),
     ),
     _c(
         "open-08",
@@ -590,8 +578,8 @@ CASES: tuple[Case, ...] = (
         "a low fence around a cube",
         # a free cube inside, or a 3x3 outline whose middle cell the cube fills
         k.any_of(
-            k.around(T(1), k.all_of(k.ring, _low(2))),
-            one(k.dims(3, 3), k.parts(9), _low(1), k.only_cubes),
+            k.around(T(1), k.all_of(k.ring, k.low(2))),
+            one(k.dims(3, 3), k.parts(9), k.low(1), k.only_cubes),
         ),
     ),
     _c("open-09", OPEN, "a pyramid, just a teeny one", one(k.pyramid(2))),

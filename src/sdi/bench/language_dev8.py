@@ -52,15 +52,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-_on_side = k.on_side
-
-
-_lr_profile = k.lr_profile
-
-
-_corner_columns = k.corner_columns
-
-
 def _leg_gap(n: int) -> k.Check:
     """Exactly two supports under the top piece, `n` cubes (± 1.5 cm) apart."""
 
@@ -74,9 +65,6 @@ def _leg_gap(n: int) -> k.Check:
         return None
 
     return f
-
-
-_bare_bridge = k.bare_bridge
 
 
 def _tight_fence(h: int) -> k.Check:
@@ -150,9 +138,6 @@ T = k.tower
 one = k.one
 not_ = k.not_
 reg = k.region
-_runs = k.runs
-_low = k.low
-_solid = k.solid
 L_SHAPE = k.shape_letter("L")
 
 CASES: tuple[Case, ...] = (
@@ -174,7 +159,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "Could we have two bridges side by side, the one on the right with pillars one cube "
         "taller than the left one's? Left pillars 2.",
-        k.pair(k.bridge(3, pillars=2), k.bridge(2, pillars=2), _on_side(_R)),
+        k.pair(k.bridge(3, pillars=2), k.bridge(2, pillars=2), k.on_side(_R)),
     ),
     _c(
         "rel-04",
@@ -199,7 +184,7 @@ CASES: tuple[Case, ...] = (
         "rel-07",
         REL,
         "Exercise three: lay a 3x3 slab and set one cube on each of its four corners.",
-        one(k.base(3, 3), k.levels(9, 4), _corner_columns(1)),
+        one(k.base(3, 3), k.levels(9, 4), k.corner_columns(1)),
     ),
     _c(
         "rel-08",
@@ -232,7 +217,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "row of 5 left-right, and a 3ht tower on the middle cube",
         # three cubes on top of the middle cube, or the middle cube counted in the tower
-        one(k.any_of(_lr_profile(1, 1, 4, 1, 1), _lr_profile(1, 1, 3, 1, 1))),
+        one(k.any_of(k.lr_profile(1, 1, 4, 1, 1), k.lr_profile(1, 1, 3, 1, 1))),
     ),
     # ------------------------------------------------------------------ sequence
     _c(
@@ -280,14 +265,14 @@ CASES: tuple[Case, ...] = (
         "seq-09",
         SEQ,
         "tower of 4 make. then on the right of it, a tower double so high",
-        k.any_of(k.pair(T(8), T(4), _on_side(_R)), one(_lr_profile(4, 8))),
+        k.any_of(k.pair(T(8), T(4), k.on_side(_R)), one(k.lr_profile(4, 8))),
     ),
     _c(
         "seq-10",
         SEQ,
         "First, lay out a 3x5 grid at the front of the table; afterwards, place a tower of two "
         "cubes on each of its four corners.",
-        one(k.base(3, 5), k.levels(15, 4, 4), _corner_columns(2), reg(_F)),
+        one(k.base(3, 5), k.levels(15, 4, 4), k.corner_columns(2), reg(_F)),
     ),
     _c(
         "seq-11",
@@ -421,7 +406,7 @@ CASES: tuple[Case, ...] = (
         "neg-10",
         NEG,
         "Make a row of 4 that does not run left to right; it should run away from the robot.",
-        one(k.row(4), _runs("x")),
+        one(k.row(4), k.runs("x")),
     ),
     _c(
         "neg-11",
@@ -466,7 +451,7 @@ CASES: tuple[Case, ...] = (
         "wo-05",
         WO,
         "bridge below, tower of 2 cube above on it",
-        one(k.on_top(T(2), _bare_bridge)),
+        one(k.on_top(T(2), k.bare_bridge)),
     ),
     _c(
         "wo-06",
@@ -575,7 +560,7 @@ CASES: tuple[Case, ...] = (
         REG,
         "Could the wall (six long, two high) go along the right-hand edge of the table, "
         "running front to back?",
-        one(k.wall(6, 2), _runs("x"), reg(_R)),
+        one(k.wall(6, 2), k.runs("x"), reg(_R)),
     ),
     _c(
         "reg-05",
@@ -617,7 +602,7 @@ CASES: tuple[Case, ...] = (
         "reg-10",
         REG,
         "Put a row of 4 cubes 10 cm in front of the centre, running left to right.",
-        one(k.row(4), _runs("y"), reg(_F), k.near(y=0.30, tol=0.05)),
+        one(k.row(4), k.runs("y"), reg(_F), k.near(y=0.30, tol=0.05)),
     ),
     _c(
         "reg-11",
@@ -642,7 +627,7 @@ CASES: tuple[Case, ...] = (
         "open-02",
         OPEN,
         "a short, stubby tower",
-        one(k.any_of(T(lo=2, hi=3), k.all_of(_solid(2, 2), k.height(lo=2, hi=3)))),
+        one(k.any_of(T(lo=2, hi=3), k.all_of(k.solid(2, 2), k.height(lo=2, hi=3)))),
     ),
     _c("open-03", OPEN, "big slab", one(k.full, k.height(hi=2), _min_side(4))),
     _c("open-04", OPEN, "something like small table", one(k.canopy(), k.long(hi=6))),
@@ -656,7 +641,7 @@ CASES: tuple[Case, ...] = (
         "open-06",
         OPEN,
         "a modest perimeter fence for a future exhibit",
-        one(k.ring, _low(3)),
+        one(k.ring, k.low(3)),
     ),
     _c(
         "open-07",
