@@ -167,6 +167,8 @@ def test_reject_with_a_reason_replans(tmp_path: Path, shots: Path) -> None:
         after = state(page, "T.view.review.parts.map(p => p.position[0])")
         assert min(after) > max(xs)  # the back of the table
         assert page.is_visible("#replanned") and "moved" in page.inner_text("#replanned")
+        notes = page.locator("#reading li.note").all_inner_texts()
+        assert notes and len(notes) == len(set(notes))  # each note once, not reading + run
         shot(page, shots / "7-replanned.png")
         page.click("#review-abort")
         wait(page, "T.phase === 'rejected'")

@@ -360,7 +360,8 @@ function render() {
   ul.innerHTML = "";
   for (const s of rd?.structures || []) addLi(ul, s);
   for (const r of rd?.relations || []) addLi(ul, r);
-  for (const n of [...(rd?.notes || []), ...(v.notes || [])]) addLi(ul, n, "note");
+  // the run's notes repeat the reading's (they are kept for every review): each once
+  for (const n of new Set([...(rd?.notes || []), ...(v.notes || [])])) addLi(ul, n, "note");
   if (rd?.ignored?.length) addLi(ul, `ignored: ${rd.ignored.join(", ")}`, "note");
   // panels
   const kind = v.waiting_for?.kind;
