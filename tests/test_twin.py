@@ -390,6 +390,21 @@ def test_a_human_edit_of_the_failed_layout_goes_back_to_design_review(twin: Twin
     ]
 
 
+def test_a_worker_that_breaks_says_so_on_the_page_and_frees_the_run(twin: Twin):
+    run_id = _executed(twin, "a tower of 3 cubes", ["joint_drift"])
+
+    def broken(_orch: object) -> None:  # a bug in an action, not the operator's mistake
+        raise KeyError("layout")
+
+    twin._work(run_id, "edit-failed", broken)
+    twin.wait()
+    view = twin.view(run_id)
+    assert view["busy"] is None and view["waiting_for"]["kind"] == "failure_report"
+    assert view["error"].startswith("the edit-failed stopped on an internal error (KeyError")
+    kinds = [e["type"] for e in twin.events(run_id)]
+    assert kinds[-2:] == ["twin_error", "twin_idle"]
+
+
 # -- the run's record, and the replay from its events ------------------------------------------
 def test_the_record_is_the_one_awaiting_approval_after_a_recovery(tmp_path: Path):
     from sdi.orchestrator import Orchestrator

@@ -94,10 +94,23 @@ def state(page: Any, expr: str) -> Any:
 
 def wait(page: Any, expr: str, timeout_s: float = 300.0) -> None:
     """Wait until `expr` (over T = window.sdiTwin) is true; generous: software WebGL."""
-    page.wait_for_function(
-        f"() => {{ const T = window.sdiTwin; return !!(T && T.ready && ({expr})); }}",
-        timeout=timeout_s * 1000,
-    )
+    from playwright.sync_api import TimeoutError as PlaywrightTimeout
+
+    try:
+        page.wait_for_function(
+            f"() => {{ const T = window.sdiTwin; return !!(T && T.ready && ({expr})); }}",
+            timeout=timeout_s * 1000,
+        )
+    except PlaywrightTimeout:  # say where the page was instead, so a failure explains itself
+        seen = page.evaluate(
+            "() => { const T = window.sdiTwin || {}; const v = T.view || {};"
+            " return { phase: T.phase, error: T.lastError, busy: v.busy, status: v.status,"
+            " run_error: v.error, waiting: (v.waiting_for || {}).kind,"
+            " parts: v.review ? v.review.parts.length : null, edits: v.review ?"
+            " v.review.edits.length : null, editFailed: T.editFailed }; }"
+        )
+        raise AssertionError(f"the page never showed `{expr}` in {timeout_s:.0f} s; "
+                             f"it shows {seen}") from None  # fmt: skip
 
 
 def top(position: list[float], size: float = 0.05) -> list[float]:

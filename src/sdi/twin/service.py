@@ -13,6 +13,7 @@ each step (table ``twin_reviews``), so a reload or a restart of the server shows
 from __future__ import annotations
 
 import json
+import logging
 import threading
 import time
 from collections.abc import Callable
@@ -29,6 +30,8 @@ from sdi.orchestrator.rundb import connect, prepare
 from sdi.orchestrator.runner import Orchestrator, RunStatus
 from sdi.twin.replay import replay
 from sdi.twin.review import ReviewSession, page_parts
+
+log = logging.getLogger(__name__)
 
 LOCK_SECONDS = 20.0
 """A tab that has not been heard from for this long loses the edit lock, s."""
@@ -98,8 +101,12 @@ class Twin:
             try:
                 fn(orch)
             except SDIError as exc:
-                self.errors[run_id] = str(exc)
-                self.bus.send(run_id, "twin", "human", "twin_error", {"error": str(exc)})
+                self._fail(run_id, str(exc))
+            except Exception as exc:  # a bug, not the operator's mistake: said on the page too
+                log.exception("the twin's %s of run %s failed", action, run_id)
+                self._fail(run_id, f"the {action} stopped on an internal error "
+                                   f"({type(exc).__name__}: {exc}); the run is as its last "
+                                   "checkpoint left it; see the server log")  # fmt: skip
             finally:
                 orch.close()
                 with self._lock:
@@ -110,6 +117,10 @@ class Twin:
         self.threads = [t for t in self.threads if t.is_alive()]
         self.threads.append(thread)
         thread.start()
+
+    def _fail(self, run_id: str, error: str) -> None:
+        self.errors[run_id] = error
+        self.bus.send(run_id, "twin", "human", "twin_error", {"error": error})
 
     def wait(self, timeout: float = 600.0) -> None:
         """Block until every worker finished (tests, shutdown)."""

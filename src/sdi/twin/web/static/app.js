@@ -241,10 +241,16 @@ function showError(text) {
   T.lastError = text || null;
 }
 
+// Views asked for, numbered: answers can arrive out of order (an event's refresh sent before an
+// edit may answer after it), and an older answer must not replace a newer one on screen.
+let viewAsked = 0;
+
 async function edit(op) {
   if (!T.runId) return;
+  const asked = ++viewAsked;
   try {
     const review = await api(`/api/runs/${T.runId}/edit`, { tab: TAB, op });
+    if (asked !== viewAsked) return; // a later view is coming (or came): it has this edit
     T.view.review = review;
     render();
   } catch (e) {
@@ -297,7 +303,9 @@ function onEvents(events, replay) {
 
 async function refresh() {
   if (!T.runId) return;
+  const asked = ++viewAsked;
   const view = await api(`/api/runs/${T.runId}`);
+  if (asked !== viewAsked) return; // a later view is on its way
   const changed = !T.view || T.view.status !== view.status || T.view.busy !== view.busy ||
     T.view.waiting_for?.kind !== view.waiting_for?.kind;
   T.view = view;
