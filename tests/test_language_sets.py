@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to twelfth dev sets (dev2 … dev12) are held to the same checks and share no
+second to thirteenth dev sets (dev2 … dev13) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -27,6 +27,7 @@ from sdi.bench.language_dev9 import CASES as DEV9
 from sdi.bench.language_dev10 import CASES as DEV10
 from sdi.bench.language_dev11 import CASES as DEV11
 from sdi.bench.language_dev12 import CASES as DEV12
+from sdi.bench.language_dev13 import CASES as DEV13
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -254,12 +255,13 @@ SETS = {
     "dev4": (DEV4, 150, 12, 0), "dev5": (DEV5, 150, 12, 0), "dev6": (DEV6, 120, 10, 0),
     "dev7": (DEV7, 120, 10, 0), "dev8": (DEV8, 120, 10, 0), "dev9": (DEV9, 120, 10, 0),
     "dev10": (DEV10, 120, 10, 0), "dev11": (DEV11, 150, 8, 15), "dev12": (DEV12, 150, 8, 15),
-    "test": (TEST, 60, 5, 0),
+    "dev13": (DEV13, 160, 8, 15), "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
     "dev3": ("relation", "sequence", "numbers", "dimensions", "negation", "word_order"),
     "dev11": ("relation", "numbers", "dimensions", "sequence"),
     "dev12": ("relation", "numbers", "dimensions", "sequence"),
+    "dev13": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -314,6 +316,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV10,
         *DEV11,
         *DEV12,
+        *DEV13,
         *TEST,
     ):
         out = case.accept(result)
@@ -346,6 +349,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev10.py",
         "language_dev11.py",
         "language_dev12.py",
+        "language_dev13.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -1991,5 +1995,178 @@ def _rows_pyramid(x, y0):
 )
 def test_dev12_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev12(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev13
+
+
+def _dev13(case_id: str) -> Case:
+    return next(c for c in DEV13 if c.id == case_id)
+
+
+def _corner_cubes(x0, y0, far, high, z0=0.0):
+    """Columns of `high` cubes on the four corners of a square `far` cubes across."""
+    d = C * (far - 1)
+    return [c for x in (x0, x0 + d) for y in (y0, y0 + d) for c in column(x, y, high, z0=z0)]
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev13-rel-01",  # the 2-tower 50 mm clear to the right (-y) of the 5-tower
+            res(*column(0.45, 0.35, 5), *column(0.45, 0.25, 2)),
+            res(*column(0.45, 0.25, 5), *column(0.45, 0.35, 2)),
+        ),
+        (
+            "dev13-rel-04",  # 3-cube pillars, 50 mm clear between them, a beam on top
+            res(*_bridge(0.45, 0.30, 3)),
+            res(*_bridge(0.45, 0.30, 2)),
+        ),
+        (
+            "dev13-rel-05",  # a 5x2 wall behind a 3-tower, built against it
+            res(*grid(0.50, 0.20, 1, 5, layers=2), *column(0.45, 0.30, 3)),
+            res(*grid(0.50, 0.20, 1, 5, layers=2), *column(0.55, 0.30, 3)),
+        ),
+        (
+            "dev13-rel-06",  # a 3-tower in the very middle of a 5x5 ring
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 3)),
+            res(*ring(0.35, 0.20, 5), *column(0.40, 0.25, 3)),
+        ),
+        (
+            "dev13-rel-07",  # a 4-tower one cube left (+y) of a 3-level pyramid
+            res(*_pyr(0.40, 0.15, 3), *column(0.45, 0.35, 4)),
+            res(*_pyr(0.40, 0.15, 3), *column(0.45, 0.35, 3)),
+        ),
+        (
+            "dev13-rel-09",  # a 2x2x2 block centred on a 4x4 slab
+            res(*grid(0.35, 0.20, 4, 4), *grid(0.40, 0.25, 2, 2, layers=2, z0=C)),
+            res(*grid(0.35, 0.20, 4, 4), *grid(0.35, 0.20, 2, 2, layers=2, z0=C)),
+        ),
+        (
+            "dev13-rel-11",  # towers of 6, 4, 2 from left (+y) to right, one cube apart
+            res(*column(0.45, 0.40, 6), *column(0.45, 0.30, 4), *column(0.45, 0.20, 2)),
+            res(*column(0.45, 0.40, 2), *column(0.45, 0.30, 4), *column(0.45, 0.20, 6)),
+        ),
+        (
+            "dev13-rel-13",  # a 4x4 slab with one cube on each corner
+            res(*grid(0.35, 0.20, 4, 4), *_corner_cubes(0.35, 0.20, 4, 1, z0=C)),
+            res(*grid(0.35, 0.20, 4, 4), *_corner_cubes(0.35, 0.20, 4, 2, z0=C)),
+        ),
+        (
+            "dev13-rel-14",  # a 5x2 wall and a 3-tower beside it
+            res(*grid(0.45, 0.15, 1, 5, layers=2), *column(0.45, 0.45, 3)),
+            res(*grid(0.45, 0.15, 1, 5, layers=2), *column(0.45, 0.45, 4)),
+        ),
+        (
+            "dev13-rel-16",  # a 2-tower touching the back (+x) of a 5-tower
+            res(*_stairs_x(0.40, 0.30, (5, 2))),
+            res(*_stairs_x(0.40, 0.30, (2, 5))),
+        ),
+        (
+            "dev13-rel-18",  # two rows of 5 along y, 50 mm apart
+            res(*_row_y(0.40, 0.20, 5), *_row_y(0.50, 0.20, 5)),
+            res(*_row_y(0.40, 0.20, 5), *_row_y(0.55, 0.20, 5)),
+        ),
+        (
+            "dev13-num-05",  # a 2 x 3 array of cubes at a 100 mm pitch
+            res(*[cube(x, y, C / 2) for x in (0.40, 0.50) for y in (0.20, 0.30, 0.40)]),
+            res(*[cube(x, y, C / 2) for x in (0.40, 0.50) for y in (0.20, 0.35, 0.50)]),
+        ),
+        (
+            "dev13-num-08",  # a 3-tower and one of double its height
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.40, 6)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.40, 5)),
+        ),
+        (
+            "dev13-num-11",  # two 4-towers 150 mm apart (clear)
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.40, 4)),
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev13-num-14",  # an 8-tower with a half-height one built against it
+            res(*_stairs_y(0.45, 0.25, (8, 4))),
+            res(*_stairs_y(0.45, 0.25, (8, 3))),
+        ),
+        (
+            "dev13-num-15",  # 2-towers on the corners of a 4x4 square
+            res(*_corner_cubes(0.40, 0.25, 4, 2)),
+            res(*_corner_cubes(0.40, 0.25, 3, 2)),
+        ),
+        (
+            "dev13-num-06",  # two parallel 5x3 walls, apart
+            res(*grid(0.35, 0.20, 1, 5, layers=3), *grid(0.50, 0.20, 1, 5, layers=3)),
+            res(*grid(0.35, 0.20, 1, 5, layers=3), *grid(0.50, 0.45, 5, 1, layers=3)),
+        ),
+        (
+            "dev13-num-18",  # two 3-towers two cubes apart (clear)
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 3)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.50, 3)),
+        ),
+        (
+            "dev13-dim-02",  # 150 x 100 mm, 3 layers
+            res(*grid(0.40, 0.25, 3, 2, layers=3)),
+            res(*grid(0.40, 0.25, 3, 2, layers=2)),
+        ),
+        (
+            "dev13-dim-06",  # a 4x4 ring one cube high
+            res(*ring(0.40, 0.25, 4)),
+            res(*ring(0.40, 0.25, 4, high=2)),
+        ),
+        (
+            "dev13-dim-10",  # two 2-towers 250 mm clear
+            res(*column(0.45, 0.15, 2), *column(0.45, 0.45, 2)),
+            res(*column(0.45, 0.15, 2), *column(0.45, 0.40, 2)),
+        ),
+        (
+            "dev13-dim-12",  # 5-cube pillars 50 mm clear
+            res(*_bridge(0.45, 0.30, 5)),
+            res(
+                *column(0.45, 0.225, 5),
+                *column(0.45, 0.375, 5),
+                beam(0.45, 0.30, 5 * C + C / 2, YAW90),
+            ),
+        ),
+        (
+            "dev13-seq-07",  # two rows of 5 front to back, one cube apart
+            res(*_row_x(0.35, 0.30, 5), *_row_x(0.35, 0.40, 5)),
+            res(*_row_x(0.35, 0.30, 5), *_row_x(0.35, 0.45, 5)),
+        ),
+        (
+            "dev13-seq-13",  # a bridge on 4-pillars with a cube on the beam
+            res(*_bridge(0.45, 0.30, 4), cube(0.45, 0.30, 5 * C + C / 2)),
+            res(*_bridge(0.45, 0.30, 4)),
+        ),
+        (
+            "dev13-seq-14",  # a 3-step staircase with a 5-tower against its top step
+            res(*_stairs_x(0.35, 0.30, (1, 2, 3, 5))),
+            res(*_stairs_x(0.35, 0.30, (5, 1, 2, 3))),
+        ),
+        (
+            "dev13-seq-15",  # a second 4x2 wall behind the first, two cubes between
+            res(*grid(0.35, 0.20, 1, 4, layers=2), *grid(0.50, 0.20, 1, 4, layers=2)),
+            res(*grid(0.35, 0.20, 4, 1, layers=2), *grid(0.35, 0.35, 4, 1, layers=2)),
+        ),
+        (
+            "dev13-neg-10",  # a 4x3 slab kept out of the right (-y) half
+            res(*grid(0.40, 0.35, 4, 3)),
+            res(*grid(0.40, 0.25, 4, 3)),
+        ),
+        (
+            "dev13-wo-11",  # a 3-tower against the right (-y) end of a 4x2 wall
+            res(*_stairs_y(0.45, 0.20, (3, 2, 2, 2, 2))),
+            res(*_stairs_y(0.45, 0.20, (2, 2, 2, 2, 3))),
+        ),
+        (
+            "dev13-bad-09",  # a beam cannot span 300 mm: refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.15, 4), *column(0.45, 0.45, 4)),
+        ),
+    ],
+)
+def test_dev13_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev13(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
