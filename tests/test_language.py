@@ -1032,6 +1032,46 @@ def test_spoken_corrections_and_pasted_forms(command, shapes, slots):
     assert all(getattr(s, k) == v for s in r.spec.structures for k, v in slots.items())
 
 
+@pytest.mark.parametrize(
+    ("command", "shapes", "slots", "said"),
+    [
+        # a speech recogniser's numbers, each said in a note
+        ("a pillar for high and a pillar to high", ["tower", "tower"], None, "'for' as 'four'"),
+        ("a row of for please", ["row"], {"length": 4}, "'for' as 'four'"),
+        ("a stack of tree", ["tower"], {"height": 3}, "'tree' as 'three'"),
+        ("only won cube on the left", ["tower"], {"height": 1}, "'won' as 'one'"),
+        # spoken corrections with no commas, a ticket's later line, "not A, B"
+        ("a row with uh six cubes no seven cubes", ["row"], {"length": 7}, "'six' → 'seven'"),
+        ("a pillar of four um no not four three", ["tower"], {"height": 3}, "'four' → 'three'"),
+        ("Wall L=5 H=4. EDIT: H=2, not 4", ["wall"], {"height": 2}, "→ '2 high'"),
+        ("2 pyramids, no wait, 3 pyramids", ["pyramid"] * 3, None, "'2 pyramids' → "),
+        ("a row not of eight, of six", ["row"], {"length": 6}, "'eight' → 'six'"),
+    ],
+)
+def test_what_a_speech_recogniser_writes(command, shapes, slots, said):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    assert all(getattr(s, k) == v for s in r.spec.structures for k, v in (slots or {}).items())
+    assert any(said in n for n in r.notes), r.notes
+
+
+def test_to_and_for_stay_words_where_a_number_cannot_stand():
+    r = plan("a row of 3 next to a tower of 2, not too tall, for the demo")
+    assert sorted(s.shape for s in r.spec.structures) == ["row", "tower"]
+    assert not any(" as 'two'" in n or " as 'four'" in n for n in r.notes), r.notes
+    assert plan("a tower of 4 next to the pyramid").spec.structures[0].height == 4
+
+
+def test_a_number_left_over_is_not_dropped_silently_unless_it_repeats_one_used():
+    r = plan("a pillar of 5. SEVEN")
+    assert r.status == "partial" and "SEVEN" in (r.error or ""), r.notes
+    r = plan("a pillar of 5. not 4, FIVE")  # the number said again: nothing dropped
+    assert r.status == "success" and r.spec.structures[0].height == 5, r.notes
+    r = plan("Let's count: one, two, three - a row of 3 cubes")  # counting aloud: no size
+    assert r.status == "success", r.notes
+
+
 def test_coordinates_pasted_as_a_table_place_each_structure():
     r = read("x,y,structure\n0.35,0.20,tower 3\n0.60,0.45,tower 2")
     got = sorted((s.at_x, s.at_y, s.height) for s in r.spec.structures)

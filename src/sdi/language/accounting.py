@@ -14,10 +14,13 @@ from sdi.language.nouns import BEAMS
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.grammar import parse_phrase
+from sdi.spec.numbers import TENS, UNITS
 
 if TYPE_CHECKING:
     from spacy.tokens import Doc, Token
 
+
+NUMBER_WORDS = (set(UNITS) | set(TENS)) - {"no", "zero", "single", "a", "an", "one"}
 
 # Words that make a clause more than chatter (ambiguous shape nouns like "well" do not).
 _USABLE = (
@@ -29,7 +32,9 @@ _USABLE = (
 def is_chatter(text: str) -> bool:
     """A clause with nothing the Specifier could use ("The visitors arrive at 10")."""
     said = re.findall(r"[a-z]+|\d+", text.lower())
-    if any(w.isdigit() for w in said) and not any(w in lx.PART_WORDS for w in said):
+    # "of five" left over is a number not used; "one, two, three, four" is counting aloud
+    worded = any(w in NUMBER_WORDS for w in said) and not re.search(r"\bone\W+two\b", text, re.I)
+    if (worded or any(w.isdigit() for w in said)) and not any(w in lx.PART_WORDS for w in said):
         return bool(
             re.search(r"\b(?:item|order|ticket|job|room|at|by|until|before|after)\b", text, re.I)
         )

@@ -17,7 +17,8 @@ _MARKER = re.compile(
     r"\s*[,.;:!—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|"
-    r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*",
+    r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*|"
+    r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment)\s*:\s*",  # a ticket's later line
     re.IGNORECASE,
 )
 
@@ -34,10 +35,21 @@ _KINDS: tuple[tuple[str, re.Pattern[str]], ...] = (
     ("region", re.compile(rf"\b(?:{_REGION})(?:\s+(?:{_REGION}))?\b", re.I)),
 )
 
+# spoken, with no commas: "five steps no six steps", "of five no not five six"
+_SPOKEN_NO = re.compile(
+    rf"(\b{_NUMBER}\b(?:\s+[a-z]+){{0,2}}?)\s+no\s+(?=(?:not\s+{_NUMBER}\s+)?{_NUMBER}\b)", re.I
+)
+# "a wall not of seven, of five": the number taken back, and the one meant
+_NOT_A_BUT_B = re.compile(
+    rf"(?<=[a-z]\s)not\s+(of\s+)?({_NUMBER})\s*,\s*(?:but\s+)?(of\s+)?({_NUMBER})\b", re.I
+)
+_NOT_OLD_SPOKEN = re.compile(rf"^not\s+{_NUMBER}\s+(?={_NUMBER}\b)", re.I)  # "not five six"
+_AND_NOT_OLD = re.compile(rf"\s*,?\s*(?:and\s+)?not\s+{_NUMBER}(?:\s+[a-z]+)?$", re.I)
+
 _NOT_OLD = re.compile(r"^(?:no\s*,?\s*)?not\s+[^,;.]+?\s*[,;]\s*|^no\s*,\s*", re.IGNORECASE)
 _FILLER = re.compile(
     r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|the|a|"
-    r"an|to|on|at|in)\s+)+",
+    r"an|to|on|at|in|of)\s+)+",
     re.I,
 )
 
@@ -101,9 +113,33 @@ def _with_dimension(before: str, value: str, rest: str, notes: list[str]) -> str
     return f"{fixed} {m.group(3).strip()}{rest}"
 
 
+def _with_noun(before: str, value: str, rest: str, notes: list[str]) -> str | None:
+    """ "five steps, no, six steps": the number said last with the same noun, replaced."""
+    m = re.fullmatch(rf"({_NUMBER})\s+([a-z]+?)s?", value, re.IGNORECASE)
+    if m is None:
+        return None
+    olds = list(re.finditer(rf"\b({_NUMBER})\s+{m.group(2)}s?\b", before, re.IGNORECASE))
+    if not olds:
+        return None
+    old = olds[-1]
+    notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
+    return before[: old.start(1)] + m.group(1) + before[old.end(1) :] + rest
+
+
+def _not_a_but_b(text: str, notes: list[str]) -> str:
+    m = _NOT_A_BUT_B.search(text)
+    if m is None:
+        return text
+    new = f"{m.group(3) or m.group(1) or ''}{m.group(4)}"
+    notes.append(f"corrected by the command itself: '{m.group(2)}' → '{m.group(4)}'")
+    return text[: m.start()] + new + text[m.end() :]
+
+
 def correct(text: str, notes: list[str]) -> str:
     """`text` with every "old …, no wait, new" replaced by the corrected wording."""
     text = _names_again(text, notes)
+    text = _not_a_but_b(text, notes)
+    text = _SPOKEN_NO.sub(r"\1, no, ", text)
     for _ in range(4):  # a command rarely corrects itself more than once or twice
         m = _MARKER.search(text)
         if m is None or m.start() == 0:
@@ -112,11 +148,16 @@ def correct(text: str, notes: list[str]) -> str:
         head = re.split(r"(?<=[.;!?])\s|,\s*(?=and\b|then\b)", after, maxsplit=1)
         said, rest = head[0], after[len(head[0]) :]
         value = _FILLER.sub("", _NOT_OLD.sub("", said.strip())).strip(" ,.;!?")
+        value = _AND_NOT_OLD.sub("", _NOT_OLD_SPOKEN.sub("", value))  # "h=6, not 8"
         value = _PARTS.sub("", value)
         side = _OF_IT.sub("", value)  # "to the right of it": the side of the same relation
         if side != value and _kind(side) == "region":
             value = side
         kind = _kind(value) if value and not _names_structure(value) else None
+        recounted = _with_noun(before, value, rest, notes)  # "3 towers, no wait, 4 towers"
+        if recounted is not None:
+            text = recounted
+            continue
         if kind is None and not _names_structure(value):
             dimensioned = _with_dimension(before, value, rest, notes)
             if dimensioned is not None:

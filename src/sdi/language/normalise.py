@@ -178,12 +178,35 @@ def _quantity(m: re.Match[str], notes: list[str] | None, found: list[int]) -> st
     return " "
 
 
+# a word that starts a noun phrase: "of to" before it is a preposition ("next to the wall")
+_NOT_A_NOUN_NEXT = (
+    r"(?!\s+(?:the|a|an|it|its|them|this|that|these|those|each|every|my|our|your|me|us|him|"
+    r"her|one|both|either|left|right|front|back)\b)"
+)
+
+_TREE = re.compile(
+    r"\btree\s+(?=" + _COUNTED + r"\b|floors\b|tiers\b|high\b|tall\b|long\b|wide\b)"
+    r"|(?<=\bof\s)tree\b" + _NOT_A_NOUN_NEXT,
+    re.I,
+)
+_WON = re.compile(
+    r"\bwon\s+(?=(?:cube|block|tower|stack|row|wall|pillar|column|beam|step|level|layer|more)\b)",
+    re.I,
+)
+
 _HOMOPHONES = [
     (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d))", re.I), "two "),
     (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
     (re.compile(r"\bfor\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "four "),
     (re.compile(r"(?<=\bof\s)for\s*$", re.I), "four"),
     (re.compile(r"\bate\s+(?=" + _COUNTED + r"\b)", re.I), "eight "),
+    # a speech recogniser's numbers: "a wall for long to high", "a tower of to in front of
+    # it", "tree levels", "just won cube" (a number word where only a number fits)
+    (re.compile(r"\bto\s+(?=(?:high|tall|long|wide|deep)\b)", re.I), "two "),  # not "too tall"
+    (re.compile(r"(?<=\bof\s)(?:to|too)\b" + _NOT_A_NOUN_NEXT, re.I), "two"),
+    (re.compile(r"(?<=\bof\s)for\b" + _NOT_A_NOUN_NEXT, re.I), "four"),
+    (_TREE, "three "),
+    (_WON, "one "),
     (re.compile(r"(?<=\d)\s+bye\s+(?=\d)", re.I), " by "),
     (re.compile(r"\b(?:el|ell)\s+(?=shape|shaped)", re.I), "L "),
     (re.compile(r"\btee\s+(?=shape|shaped)", re.I), "T "),
@@ -346,7 +369,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         lambda m: f"x = {m.group(1)} {m.group(3)}, y = {m.group(2)} {m.group(3)}", text
     )
     for pattern, repl in _HOMOPHONES:
-        text = pattern.sub(repl, text)
+
+        def heard(m: re.Match[str], repl: str = repl) -> str:
+            if m.group(0).strip().lower() != repl.strip().lower() and notes is not None:
+                notes.append(f"read '{m.group(0).strip()}' as '{repl.strip()}'")
+            return repl
+
+        text = pattern.sub(heard, text)
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
     text = _OPPOSITES.sub(lambda m: f"{m.group(1)} to {m.group(2)}", text)  # "front-back"
     text = _CSV_AT.sub(_csv_at, text)

@@ -16,6 +16,7 @@ from sdi.language.references import copies, definite, pick_structure, refers_to,
 from sdi.language.state import Phrase, PhraseRelation, ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.grammar import parse_phrase
+from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import SpecDraft, StructureDraft
 
 if TYPE_CHECKING:
@@ -126,6 +127,10 @@ def fill_slots(
                 st.ignored.append(p.text)
                 st.notes.append(f"ignored '{p.text}': no structure, size or place in it")
                 continue
+            if _repeats(p.text, structures):  # "tower of 5. not 4, FIVE"
+                st.ignored.append(p.text)
+                st.notes.append(f"ignored '{p.text}': repeats a number already used")
+                continue
             st.material.append(p.text)
             st.notes.append(f"ignored '{p.text}': no structure named there")
             continue
@@ -214,3 +219,12 @@ def _parse_or_base(p: Phrase, st: ReadState) -> tuple[SpecDraft, list[str]]:
         st.notes.append(f"read '{base.group(0)}' as a platform (one layer)")
         p.text = text
         return spec, unused
+
+
+def _repeats(text: str, structures: list[StructureDraft]) -> bool:
+    """`text` is only numbers, each already a value of a structure read."""
+    said = words_to_numbers(re.findall(r"[a-z]+|\d+", text.lower()))
+    if not said or not all(w.isdigit() for w in said):
+        return False
+    used = {v for s in structures for v in s.model_dump().values() if isinstance(v, int)}
+    return {int(w) for w in said} <= used
