@@ -1072,6 +1072,43 @@ def test_a_number_left_over_is_not_dropped_silently_unless_it_repeats_one_used()
     assert r.status == "success", r.notes
 
 
+@pytest.mark.parametrize(
+    ("command", "heights", "said"),
+    [
+        # "floors" of a structure named before are its levels; a floor said alone is a slab
+        ("a pyramid of three floors", None, "'three floors' as three levels of the pyramid"),
+        ("a tower of 3 floors", [3], "as 3 levels of the tower"),
+        # a count said after the plural that names them ("4-high" is no count)
+        ("Pillars of five, two of them", [5, 5], "as two pillars"),
+        ("4-high stacks, three of them; not one should touch another one", [4, 4, 4], "three"),
+        # "another" with its own size is a second structure, not a change of the first
+        ("a stack of 2 and another 5 high", [2, 5], None),
+        ("a stack of 3 and another with double the height", [3, 6], "as 6 (from the 3"),
+        ("the stack of 4 and the other stack, it has double of the height", [4, 8], "as 8"),
+    ],
+)
+def test_levels_counts_and_another_said_the_way_non_native_speakers_say_them(
+    command, heights, said
+):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    if heights is not None:
+        assert sorted(s.height for s in r.spec.structures) == heights
+    else:
+        assert [(s.shape, s.height) for s in r.spec.structures] == [("pyramid", 3)]
+    assert said is None or any(said in n for n in r.notes), r.notes
+
+
+def test_a_dimension_word_before_its_value_and_a_staircase_climbing_said_last():
+    s = plan("a slab, side 20 cm, thick 10 cm").spec.structures[0]
+    assert (s.length_m, s.width_m, s.height_m) == (0.2, 0.2, 0.1)  # not side 0.1, 0.2 thick
+    s = plan("a wall, long 6, high 3").spec.structures[0]
+    assert (s.length, s.height) == (6, 3)
+    s = plan("Stairs, five of them, up to the left climbing").spec.structures[0]
+    assert (s.shape, s.steps, s.axis, s.region) == ("staircase", 5, "y", None)
+    assert plan("a 3 by 3 floor").spec.structures[0].shape == "grid"  # "3 floor" is no level
+
+
 def test_coordinates_pasted_as_a_table_place_each_structure():
     r = read("x,y,structure\n0.35,0.20,tower 3\n0.60,0.45,tower 2")
     got = sorted((s.at_x, s.at_y, s.height) for s in r.spec.structures)

@@ -307,8 +307,12 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     if base is None:
         return m.group(0)
     if groups[1] == "height":  # "one half its height": a new structure, not "double its height"
-        prev = re.findall(r"[a-z]+", m.string[: m.start()].lower())[-1:]
-        if not prev or (prev[0] not in ("one", "a") and prev[0] not in lx.SHAPE_WORDS):
+        before = m.string[: m.start()].lower()
+        prev = re.findall(r"[a-z]+", before)[-1:]
+        other = re.search(r"\b(?:another|other|second|one\s+more)\b[^,.;]*(?:,\s*it)?[^,.;]*$",
+                          before)  # fmt: skip  # "the other tower, it has double of the height"
+        if not other and (not prev or (prev[0] not in ("one", "a") and
+                                       prev[0] not in lx.SHAPE_WORDS)):  # fmt: skip
             return m.group(0)
     if len(groups) == 4 and groups[3]:  # the second form: "a cube taller"
         groups = groups[2:]
@@ -463,7 +467,7 @@ def _climb(m: re.Match[str], st: ReadState, note: str) -> str:
         "left": " along y ",
         "front": " along x rotated 180 degrees ",
         "right": " along y rotated 180 degrees ",
-    }[_said(m)[1][0]]
+    }[next(side for side in _said(m)[1] if side)]  # "climbing to the back", "up to the back …"
 
 
 def _rows(m: re.Match[str], st: ReadState, note: str) -> str:

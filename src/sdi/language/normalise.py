@@ -213,6 +213,14 @@ _HOMOPHONES = [
 ]
 
 
+# "side 20 cm, thick 10 cm", "high 3": the dimension word said before its value, as a list item
+_DIM_FIRST = re.compile(
+    r"(^|[,;:]\s*|\band\s+)(thick|high|tall|long|wide|deep)\s+(\d+(?:\.\d+)?\s*"
+    r"(?:mm|cm|m|millimet(?:re|er)s?|centimet(?:re|er)s?|met(?:re|er)s?|cubes?)?)"
+    r"(?=\s*(?:$|[,;.]|\band\b))",
+    re.IGNORECASE,
+)
+
 _AXES_LABEL = re.compile(
     r"\(\s*(?:length|width|height|depth|[lwdh])(?:\s*[x×*,/]\s*(?:length|width|height|depth|"
     r"[lwdh]))+\s*\)|\b[lwdh]\s*[x×*]\s*[lwdh](?:\s*[x×*]\s*[lwdh])?\s*[=:]",
@@ -392,6 +400,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             return out
 
         text = pattern.sub(expand, text)
+    text = _DIM_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3).strip()} {m.group(2)} ", text)
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
     text = re.sub(
         r"\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 
+from sdi.language.accounting import NUMBER_WORDS
 from sdi.language.handlers import HANDLERS
 from sdi.language.normalise import SPACES
 from sdi.language.state import ReadState
@@ -219,8 +220,10 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r",?\s*\b(?:climbing|rising|ascending|going\s+up|stepping\s+up)\s+(?:to(?:wards)?|toward|"
-            r"to\s+the)\s+(?:the\s+)?(left|right|front|back)\b",
+            r",?\s*\b(?:(?:climbing|rising|ascending|going|stepping)\s+up|climbing|rising|"
+            r"ascending|going\s+up|stepping\s+up)\s+(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+)?"
+            r"(left|right|front|back)\b|,?\s*\bup\s+to(?:wards)?\s+the\s+(left|right|front|back)\s+"
+            r"(?:climbing|rising|ascending|going)\b",
             re.IGNORECASE,
         ),
         "{climb}",
@@ -1231,7 +1234,9 @@ _REWRITES += [
         "",
     ),
     (  # "one half its height", "twice the height": the number said last, changed
-        re.compile(r"\b(twice|double|half)\s+(?:its|the|their)\s+(height)\b(?!\s+of)", re.I),
+        re.compile(
+            r"\b(twice|double|half)\s+(?:of\s+)?(?:its|the|their)\s+(height)\b(?!\s+of)", re.I
+        ),
         "{compared}",
         "",
     ),
@@ -1303,11 +1308,17 @@ _OPEN = re.compile(
 )
 
 
+_TOUCH_ANOTHER = re.compile(
+    r"\b(touch(?:es|ing)?|meet(?:s|ing)?|lean(?:s|ing)?\s+on|against|from)\s+another\s+one\b", re.I
+)
 _ANOTHER = re.compile(
     r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+(?:identical\s+|similar\s+|"
     r"matching\s+)?one\b|an?\s+(?:identical|matching|similar)\s+one\b|a\s+(?:third|fourth|fifth)\b"
     r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)(?:one|1)(?=\s+(?:on|at|in|to)\s+the\b)|"
-    r"(?<=\band\s)(?:one|1)(?=\s+(?:on|at|in|to)\s+the\b))",
+    r"(?<=\band\s)(?:one|1)(?=\s+(?:on|at|in|to)\s+the\b)|"
+    # "and another with double the height", "another 6 high", "and another, a bit lower"
+    r"\banother(?=\s*(?:$|[,.;]|\s(?:with|of|that|which|having|at|on|in|next|behind|beside|\d+|"
+    r"two|three|four|five|six|seven|eight|nine|ten)\b)))",
     re.IGNORECASE,
 )
 
@@ -1332,6 +1343,7 @@ _ONE_MORE = re.compile(
 def _another(text: str) -> str:
     """ "a tower on the left and another one on the right": another tower."""
     text = _ONE_MORE.sub(" and another one", text)
+    text = _TOUCH_ANOTHER.sub(r"\1 each other", text)  # "none may touch another one": no new one
 
     def sub(m: re.Match[str]) -> str:
         said = re.findall(r"[a-z]+", text[: m.start()].lower())
@@ -1483,7 +1495,56 @@ _ONE_OF = re.compile(r"(\bthen\s+)one\s+(of|with)\s+(?=\d)", re.IGNORECASE)
 """'a tower of 2, then one of 3': another of the structure named before."""
 
 
+_FLOORS = re.compile(r"\b(\d+|" + "|".join(NUMBER_WORDS) + r")\s+(floors?)\b", re.I)
+
+
+def _floors_as_levels(text: str, st: ReadState) -> str:
+    """ "a pyramid of three floors": the levels of the structure named before in the sentence
+    (a floor is a structure of its own only where nothing else is named: "two floors of 3x3")."""
+
+    def levels(m: re.Match[str]) -> str:
+        sentence = re.split(r"[.;!?]", text[: m.start()])[-1]
+        if re.search(r"(?:\bby|\bx|[×*])\s*$", sentence, re.I):  # "a 3 by 3 floor": a size
+            return m.group(0)
+        named = [lx.SHAPE_WORDS.get(w) for w in re.findall(r"[a-z]+", sentence.lower())]
+        shape = next((s for s in reversed(named) if s), None)
+        if shape is None or shape in ("grid", "block"):
+            return m.group(0)
+        st.notes.append(f"read '{m.group(0)}' as {m.group(1)} levels of the {shape}")
+        return f"{m.group(1)} levels"
+
+    return _FLOORS.sub(levels, text)
+
+
+_PLURAL_THEN_COUNT = re.compile(
+    r"(?:^|(?<=[.;:!?]\s)|(?<=[.;:!?]))\s*([^.;:!?,]*?\b([a-z]+)s\b[^.;:!?,]*),\s*"
+    r"(two|three|four|five|six|[2-9])\s+of\s+them\b",
+    re.IGNORECASE,
+)
+
+
+def _count_of_plural(text: str, st: ReadState) -> str:
+    """ "Towers of four, three of them", "4-high pillars, two of them": that many of them (the
+    count said after the plural that names them)."""
+
+    def counted(m: re.Match[str]) -> str:
+        first = re.match(r"(\w+)(-?)", m.group(1).strip().lower())  # "4-high" is no count
+        noun = m.group(2).lower()
+        if (
+            noun not in lx.SHAPE_WORDS
+            or noun in lx.SELDOM_STRUCTURES
+            or (first and not first.group(2) and (first[1].isdigit() or first[1] in NUMBER_WORDS))
+        ):
+            return m.group(0)
+        st.notes.append(f"read '{m.group(0).strip()}' as {m.group(3)} {noun}s")
+        return f" {m.group(3)} {m.group(1).strip()}"
+
+    return _PLURAL_THEN_COUNT.sub(counted, text)
+
+
 def rewrite(text: str, st: ReadState) -> str:
+    text = _floors_as_levels(text, st)
+    text = _count_of_plural(text, st)
     text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)
     text = _ONE_OF.sub(r"\1another one \2 ", text)
     text = _SAME_AGAIN.sub(" another one ", text)
