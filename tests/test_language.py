@@ -1109,6 +1109,19 @@ def test_a_dimension_word_before_its_value_and_a_staircase_climbing_said_last():
     assert plan("a 3 by 3 floor").spec.structures[0].shape == "grid"  # "3 floor" is no level
 
 
+def test_a_work_orders_notation():
+    s = plan("pen 6x4 h=1").spec.structures[0]  # "h=" after a size is the height, no word left
+    assert (s.shape, s.length, s.width, s.height) == ("enclosure", 6, 4, 1)
+    r = plan("3 stacks H=150 mm, clear gap 100 mm")  # a drawing's gap is between faces
+    assert r.status == "success" and r.spec.gap_m == 0.1, r.notes
+    r = plan("2 stacks of 3, 10 cm clear")
+    assert r.status == "success" and r.spec.gap_m == 0.1, r.notes
+    r = plan("pen 4x4, 3 high, no infill")  # hollow, as a pen is
+    assert r.status == "success" and r.spec.structures[0].height == 3, r.notes
+    s = plan("a block W x D x H = 4 x 3 x 2").spec.structures[0]  # the labels, not H=4
+    assert (s.length, s.width, s.height) == (4, 3, 2)
+
+
 def test_coordinates_pasted_as_a_table_place_each_structure():
     r = read("x,y,structure\n0.35,0.20,tower 3\n0.60,0.45,tower 2")
     got = sorted((s.at_x, s.at_y, s.height) for s in r.spec.structures)

@@ -221,6 +221,15 @@ _DIM_FIRST = re.compile(
     re.IGNORECASE,
 )
 
+# a drawing's words for a gap between faces (SDI's gaps are between faces): "clear gap 300 mm",
+# "50 mm clear", "clearance 2 cubes"; and "no infill" of what is hollow anyway
+_CLEAR = [
+    (re.compile(r"\bclear\s+(?=(?:gap|space|distance|spacing)\b)", re.I), ""),
+    (re.compile(r"(\d+(?:\.\d+)?\s*(?:mm|cm|m|cubes?))\s+clear(?:ance)?\b", re.I), r"\1 gap"),
+    (re.compile(r"\bclearance\b", re.I), "gap"),
+    (re.compile(r"\b(?:no|without)\s+(?:infill|fill|filling)\b|\bunfilled\b", re.I), "hollow"),
+]
+
 _AXES_LABEL = re.compile(
     r"\(\s*(?:length|width|height|depth|[lwdh])(?:\s*[x×*,/]\s*(?:length|width|height|depth|"
     r"[lwdh]))+\s*\)|\b[lwdh]\s*[x×*]\s*[lwdh](?:\s*[x×*]\s*[lwdh])?\s*[=:]",
@@ -391,6 +400,16 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _QUANTITY.sub(lambda m: _quantity(m, notes, quantities), text)
     if quantities:  # "qty: 3 / item: tower …": the line's structure, that many times
         text = f"{text.rstrip(' ./;,')} , {quantities[0]} of them"
+    text = re.sub(  # "h=2", "L=5" before "4 h" shorthand reads the h
+        r"(?<!\bx\s)(?<!\bx)\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",
+        lambda m: (
+            f" {m.group(2)} {m.group(3) or ''} "
+            + {"L": "long", "H": "high", "W": "wide"}[m.group(1).upper()]
+            + " "
+        ),
+        text,
+        flags=re.IGNORECASE,
+    )
     for pattern, repl in _SHORTHAND:
 
         def expand(m: re.Match[str], repl: str = repl) -> str:
@@ -400,18 +419,10 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             return out
 
         text = pattern.sub(expand, text)
+    for pattern, repl in _CLEAR:
+        text = pattern.sub(repl, text)
     text = _DIM_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3).strip()} {m.group(2)} ", text)
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
-    text = re.sub(
-        r"\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",
-        lambda m: (
-            f" {m.group(2)} {m.group(3) or ''} "
-            + {"L": "long", "H": "high", "W": "wide"}[m.group(1).upper()]
-            + " "
-        ),
-        text,
-        flags=re.IGNORECASE,
-    )
 
     def plus(m: re.Match[str]) -> str:
         total = int(m.group(1)) + int(m.group(2))
