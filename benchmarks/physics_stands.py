@@ -3,8 +3,11 @@
 1. The 70 suite commands (`sdi.bench.suite.SUITE`), planned with `sdi.pipeline.plan` (rules):
    every verified layout is assembled in PyBullet in its sequence
    (`sdi.execute.physics_check.assemble`: parts placed one by one at their poses with 1 mm
-   random jitter, 0.3 s settling after each, 1 s at the end; *stands* = every part within
-   5 mm and 3° of its pose), with `--seeds` seeds each.
+   random jitter, 0.15 s settling after each at 960 steps/s, 1 s at the end; *stands* = every
+   part within 5 mm and 3° of its pose), with `--seeds` seeds each.
+   Tall side-by-side columns the suite lacks (rings and walls 7 and 10 high, a block 8 high),
+   the same way; and the step-size check: a ring 7 high with no jitter at all at 240, 480 and
+   960 steps/s (how far the solver alone moves a part that should not move).
 2. The tricky set (`sdi.bench.stability_cases`): cantilevers, overhangs, the one-pillar
    canopy, beams on one support, counterweights. For each: the Inspector's verdict now, the
    centre-of-mass test alone (the check before the equilibrium LP), and physics in the
@@ -264,7 +267,7 @@ def unseen(seeds: int, limit: int | None = None) -> dict[str, Any]:
 
     from sdi.pipeline import plan
 
-    sets = ["test", *(f"dev{n}" for n in ("", 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12))]
+    sets = ["test", *(f"dev{n}" for n in ("", 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13))]
     verified = stood = 0
     fell: list[dict[str, Any]] = []
     for name in sets:
@@ -280,6 +283,39 @@ def unseen(seeds: int, limit: int | None = None) -> dict[str, Any]:
             else:
                 fell.append({"id": case.id, "text": case.text, **worst.to_json_dict()})
     return {"sets": sets, "limit": limit, "verified": verified, "stand": stood, "fell": fell}
+
+
+TALL = (
+    "a ring 7 high",
+    "a ring 10 high",
+    "a wall 4 long and 7 high",
+    "a wall 6 long and 10 high",
+    "a 3 by 3 block 8 high",
+)
+
+
+def tall(seeds: int) -> dict[str, Any]:
+    """Tall columns side by side (the suite's are single towers or low), and how far the solver
+    alone moves a part of a ring 7 high placed with no error, per step rate."""
+    from sdi.execute.physics_check import assemble
+    from sdi.pipeline import plan
+
+    rows = []
+    for text in TALL:
+        r = plan(text)
+        if r.status != "success" or r.layout is None:
+            rows.append({"command": text, "status": r.status})
+            continue
+        stands, worst = _assembled(r.layout, r.sequence, seeds)
+        rows.append({"command": text, "parts": len(r.layout), "stands": stands,
+                     "worst": worst.to_json_dict()})  # fmt: skip
+    ring = plan(TALL[0])
+    assert ring.layout is not None
+    drift = {}
+    for hz in (240.0, 480.0, 960.0):
+        s = assemble(ring.layout, ring.sequence, jitter=0.0, hz=hz)
+        drift[f"{hz:.0f}"] = s.to_json_dict()
+    return {"rows": rows, "no_jitter_ring_7_high_by_step_rate": drift}
 
 
 def main() -> None:
@@ -299,6 +335,7 @@ def main() -> None:
         "seeds": args.seeds,
         "physics": {"jitter_m": 0.001, "tolerance_m": 0.005, "max_tilt_deg": 3.0},
         "suite": suite_physics(args.seeds),
+        "tall": tall(args.seeds),
         "tricky": tricky(args.seeds),
         "perturbed": perturbed(args.perturbed),
         "unseen": unseen(1, args.unseen or None),
@@ -312,7 +349,9 @@ def main() -> None:
         f"suite: {s['verified_and_stand']}/{s['verified']} verified layouts stand "
         f"({s['commands']} commands); tricky: Inspector and physics agree on "
         f"{t['agree']}/{t['cases']} (centre-of-mass test alone: {t['com_test_agreed']}); "
-        f"passed but fell: {t['inspector_passes_and_falls']}; perturbed: "
+        f"passed but fell: {t['inspector_passes_and_falls']}; tall: "
+        f"{sum(bool(r.get('stands')) for r in result['tall']['rows'])}/{len(TALL)} stand; "
+        f"perturbed: "
         f"{len(result['perturbed']['passed_and_fell'])} of {result['perturbed']['passed']} "
         f"passed fell; unseen commands: {result['unseen']['stand']}/"
         f"{result['unseen']['verified']} verified layouts stand"
