@@ -1109,6 +1109,34 @@ def test_a_dimension_word_before_its_value_and_a_staircase_climbing_said_last():
     assert plan("a 3 by 3 floor").spec.structures[0].shape == "grid"  # "3 floor" is no level
 
 
+@pytest.mark.parametrize(
+    ("command", "subject", "object_", "side", "gap"),
+    [
+        # the structure said after "behind it" / "to the left of it" stands there, beside the
+        # one said before — in one sentence, after a full stop, with a gap said after it
+        ("a ring 4x4 and behind it a row of 3", "row", "enclosure", "back", None),
+        ("a block 2x2x2. To the right of it a stack of 5", "tower", "block", "right", None),
+        ("a staircase of 3 and right from it one tower of 6", "tower", "staircase", "right", None),
+        ("a pad 3x3 and in front of it a stack of 2, at a distance of 2 cubes", "tower", "grid",
+         "front", 0.1),
+    ],
+)  # fmt: skip
+def test_a_relation_said_before_its_subject_with_a_pronoun(command, subject, object_, side, gap):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    [rel] = r.spec.relations
+    shapes = [s.shape for s in r.spec.structures]
+    assert (shapes[rel.subject], shapes[rel.object], rel.side) == (subject, object_, side)
+    assert rel.gap_m == gap or (gap is None and r.spec.gap_m is None)
+
+
+def test_n_on_m_is_a_size_said_the_way_of_other_languages():
+    s = plan("a slab four on three").spec.structures[0]
+    assert (s.length, s.width) == (4, 3)
+    s = plan("a stack of 2 on 3 cubes").spec.structures[0]  # not a size: cubes follow
+    assert (s.shape, s.height) == ("tower", 2)
+
+
 def test_a_work_orders_notation():
     s = plan("pen 6x4 h=1").spec.structures[0]  # "h=" after a size is the height, no word left
     assert (s.shape, s.length, s.width, s.height) == ("enclosure", 6, 4, 1)

@@ -272,7 +272,8 @@ def _clause_phrases(
         commas = [n for n, i in enumerate(last) if doc[i].lower_ == ","]
         verbs = [n for n, i in enumerate(last) if doc[i].lower_ in _FRONTED_VERBS and n]
         cut = commas[0] if commas else (verbs[0] if verbs and len(markers) == 1 else None)
-        if cut is None and last and doc[last[0]].lower_ in ("it", "them", "that", "this"):
+        pronoun_first = bool(last) and doc[last[0]].lower_ in ("it", "them", "that", "this")
+        if cut is None and pronoun_first:
             cut = 0  # "on it a tower of 3": the pronoun is the object
         if cut is None:
             # "behind the wall 3 long and 2 high a 3-cube tower": a second noun phrase
@@ -291,15 +292,19 @@ def _clause_phrases(
                 cut = None
         if cut is not None and names_structure(doc, last[cut + 1 :]):
             segments[0] = last[cut + 1 :]
-            segments[-1] = last[:cut]
+            # "To the left of it a tower": the pronoun stays, naming the one said before
+            # (only when something was said before it for it to name)
+            segments[-1] = last[:cut] or (
+                last[:1] if pronoun_first and cut == 0 and phrases else []
+            )
     for j in range(len(markers)):
         tail = segments[j + 1]
         commas = [n for n, i in enumerate(tail) if doc[i].lower_ == ","]
         if (
-            not commas
+            (not commas or commas[0] > 2)  # "…, at a distance of one cube" may follow
             and len(tail) > 1
             and doc[tail[0]].lower_ in ("it", "them", "that", "this")
-            and doc[tail[1]].lower_ in ("a", "an", "another", "two", "three", "four")
+            and (doc[tail[1]].lower_ in ("a", "an", "another") or doc[tail[1]].like_num)
             and names_structure(doc, tail[1:])
             and not markers[j][2].endswith("_verb")
             and markers[j][2] in ("on", "next", "inside", "around", "middle")
@@ -387,6 +392,9 @@ def _clause_phrases(
             rels.append(PhraseRelation("middle", after, before))
         elif kind == "next":
             rels.append(PhraseRelation("next", before, after, side))
+        elif kind == "next_implicit" and named and names_structure(doc, phrases[before].tokens):
+            # "a wall and behind it a tower": the one after, beside the one before
+            rels.append(PhraseRelation("next", after, before, side))
         elif kind == "next_implicit":
             rels.append(
                 PhraseRelation("next", before, None, side)

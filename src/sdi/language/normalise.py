@@ -221,6 +221,18 @@ _DIM_FIRST = re.compile(
     re.IGNORECASE,
 )
 
+_NUM_WORD = r"(?:\d+|two|three|four|five|six|seven|eight|nine|ten)"
+_N_ON_M = re.compile(
+    rf"\b({_NUM_WORD})\s+on\s+({_NUM_WORD})\b(?!\s*(?:cubes?|blocks?|parts?|towers?|levels?|"
+    r"layers?|of\b|the\b))",
+    re.IGNORECASE,
+)
+
+
+def _n_by_m(m: re.Match[str]) -> str:
+    return f"{m.group(1)} by {m.group(2)}"
+
+
 # a drawing's words for a gap between faces (SDI's gaps are between faces): "clear gap 300 mm",
 # "50 mm clear", "clearance 2 cubes"; and "no infill" of what is hollow anyway
 _CLEAR = [
@@ -419,6 +431,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             return out
 
         text = pattern.sub(expand, text)
+    text = _N_ON_M.sub(_n_by_m, text)  # "a block two on two", "base three on three"
     for pattern, repl in _CLEAR:
         text = pattern.sub(repl, text)
     text = _DIM_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3).strip()} {m.group(2)} ", text)

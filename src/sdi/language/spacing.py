@@ -26,7 +26,8 @@ _GAP = re.compile(
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart|aisle)"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+away(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
-    + r"\s+(?:of\s+)?(?:gap|space|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?)"
+    + r"\s+(?:of\s+)?(?:gap|space|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
+    + r"|(?:at\s+)?(?:a\s+)?distance\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT + r")?)"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,
 )  # fmt: skip
