@@ -1148,6 +1148,12 @@ def test_a_work_orders_notation():
     assert r.status == "success" and r.spec.structures[0].height == 3, r.notes
     s = plan("a block W x D x H = 4 x 3 x 2").spec.structures[0]  # the labels, not H=4
     assert (s.length, s.width, s.height) == (4, 3, 2)
+    s = plan("wall L 200 mm, H 150 mm").spec.structures[0]  # a drawing's letters
+    assert (s.length_m, s.height_m) == (0.2, 0.15)
+    s = plan("a wall with length of 0.2 meter and height of 0.15 meter").spec.structures[0]
+    assert (s.length_m, s.height_m) == (0.2, 0.15)
+    s = plan("an L 4 by 3").spec.structures[0]  # the letter names the shape there
+    assert (s.shape, s.length, s.width) == ("l_shape", 4, 3)
 
 
 def test_coordinates_pasted_as_a_table_place_each_structure():

@@ -213,6 +213,28 @@ _HOMOPHONES = [
 ]
 
 
+_MEASURE = (
+    r"(\d+(?:\.\d+)?\s*(?:mm|cm|m|millimet(?:re|er)s?|centimet(?:re|er)s?|met(?:re|er)s?|"
+    r"cubes?)?)(?![\w.])"
+)
+_DIM_WORD = {"length": "long", "height": "high", "width": "wide", "depth": "deep",
+             "thickness": "thick", "l": "long", "h": "high", "w": "wide", "d": "deep"}  # fmt: skip
+# "with length of 0.3 meter and height of 0.1 meter": the value with its dimension word
+_NAMED_DIM = re.compile(
+    r"\b(?:with\s+)?(?:a\s+)?(length|height|width|depth|thickness)\s+(?:of\s+|is\s+|[:=]\s*)?"
+    + _MEASURE,
+    re.IGNORECASE,
+)
+# a drawing's "L 250 mm, H 100 mm" (capitals: "a h 3" is no height)
+_LETTER_DIM = re.compile(
+    r"(?<![\w=])(?<!\ban\s)(?<!\ba\s)([LHWD])\s*:?\s+" + _MEASURE + r"(?!\s*(?:by|x)\b)"
+)
+
+
+def _dimensioned(m: re.Match[str]) -> str:
+    return f" {m.group(2).strip()} {_DIM_WORD[m.group(1).lower()]} "
+
+
 # "side 20 cm, thick 10 cm", "high 3": the dimension word said before its value, as a list item
 _DIM_FIRST = re.compile(
     r"(^|[,;:]\s*|\band\s+)(thick|high|tall|long|wide|deep)\s+(\d+(?:\.\d+)?\s*"
@@ -434,6 +456,8 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _N_ON_M.sub(_n_by_m, text)  # "a block two on two", "base three on three"
     for pattern, repl in _CLEAR:
         text = pattern.sub(repl, text)
+    text = _NAMED_DIM.sub(_dimensioned, text)
+    text = _LETTER_DIM.sub(_dimensioned, text)
     text = _DIM_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3).strip()} {m.group(2)} ", text)
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
 
