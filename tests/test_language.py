@@ -1130,6 +1130,16 @@ def test_a_relation_said_before_its_subject_with_a_pronoun(command, subject, obj
     assert rel.gap_m == gap or (gap is None and r.spec.gap_m is None)
 
 
+def test_a_little_one_added_is_a_second_structure_of_the_same_kind_but_not_in_apposition():
+    r = plan("a stack of 6, and beside it a small one only half as tall")
+    assert r.status == "success", r.notes
+    assert sorted(s.height for s in r.spec.structures) == [3, 6]
+    r = plan("a stack of 4 and then a tiny one of 1")
+    assert sorted(s.height for s in r.spec.structures) == [1, 4]
+    r = plan("three levels, the pyramid, a big one please")  # the same pyramid
+    assert [s.shape for s in r.spec.structures] == ["pyramid"]
+
+
 def test_n_on_m_is_a_size_said_the_way_of_other_languages():
     s = plan("a slab four on three").spec.structures[0]
     assert (s.length, s.width) == (4, 3)

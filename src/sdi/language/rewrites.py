@@ -1308,6 +1308,12 @@ _OPEN = re.compile(
 )
 
 
+_ADJECTIVE_ONE = re.compile(
+    r"\b(an?\s+(?:little|small|smaller|short|shorter|low|lower|tall|taller|high|higher|big|bigger|"
+    r"large|larger|long|longer|wide|wider|tiny|mini))\s+one\b"
+    r"(?!\s+(?:of\s+(?:them|those|these|the)|cube|block)\b)",
+    re.IGNORECASE,
+)
 _TOUCH_ANOTHER = re.compile(
     r"\b(touch(?:es|ing)?|meet(?:s|ing)?|lean(?:s|ing)?\s+on|against|from)\s+another\s+one\b", re.I
 )
@@ -1344,6 +1350,17 @@ def _another(text: str) -> str:
     """ "a tower on the left and another one on the right": another tower."""
     text = _ONE_MORE.sub(" and another one", text)
     text = _TOUCH_ANOTHER.sub(r"\1 each other", text)  # "none may touch another one": no new one
+
+    def adjective_one(m: re.Match[str]) -> str:  # "and next to it a little one": a little tower
+        said = re.findall(r"[a-z]+", text[: m.start()].lower())
+        nouns = [w for w in said if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]
+        added = said[-1:] == ["it"] or {"and", "then", "plus", "also"} & set(said[-5:])
+        if not nouns or not added or "not" in said[-2:]:  # "the pyramid, a small one please",
+            return m.group(0)  # "but not a big one": the same structure, not a second
+        noun = nouns[-1][:-1] if nouns[-1][:-1] in lx.SHAPE_WORDS else nouns[-1]
+        return f"{m.group(1)} {noun}"
+
+    text = _ADJECTIVE_ONE.sub(adjective_one, text)
 
     def sub(m: re.Match[str]) -> str:
         said = re.findall(r"[a-z]+", text[: m.start()].lower())
