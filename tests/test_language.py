@@ -1158,6 +1158,8 @@ def test_a_work_orders_notation():
     assert r.status == "success" and r.spec.structures[0].height == 3, r.notes
     s = plan("a block W x D x H = 4 x 3 x 2").spec.structures[0]  # the labels, not H=4
     assert (s.length, s.width, s.height) == (4, 3, 2)
+    r = plan("qty 3 stacks h=3/h=5/h=1 in one line")  # a value each; the line is no row
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", h) for h in (3, 5, 1)]
     s = plan("wall L 200 mm, H 150 mm").spec.structures[0]  # a drawing's letters
     assert (s.length_m, s.height_m) == (0.2, 0.15)
     s = plan("a wall with length of 0.2 meter and height of 0.15 meter").spec.structures[0]

@@ -231,6 +231,17 @@ _LETTER_DIM = re.compile(
 )
 
 
+# "3 towers h=2/h=4/h=6", "h=2/4/6": a value per structure, said as a list
+_LETTER_LIST = re.compile(
+    r"\b([LHW])\s*=\s*(\d+)((?:\s*/\s*(?:[LHW]\s*=\s*)?\d+)+)(?!\s*(?:mm|cm|m)\b)", re.I
+)
+
+
+def _letter_list(m: re.Match[str]) -> str:
+    values = [m.group(2), *re.findall(r"\d+", m.group(3))]
+    return f" , {', '.join(values[:-1])} and {values[-1]} {_DIM_WORD[m.group(1).lower()]} "
+
+
 def _dimensioned(m: re.Match[str]) -> str:
     return f" {m.group(2).strip()} {_DIM_WORD[m.group(1).lower()]} "
 
@@ -434,6 +445,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _QUANTITY.sub(lambda m: _quantity(m, notes, quantities), text)
     if quantities:  # "qty: 3 / item: tower …": the line's structure, that many times
         text = f"{text.rstrip(' ./;,')} , {quantities[0]} of them"
+    text = _LETTER_LIST.sub(_letter_list, text)  # "h=2/h=4/h=6": one value each
     text = re.sub(  # "h=2", "L=5" before "4 h" shorthand reads the h
         r"(?<!\bx\s)(?<!\bx)\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",
         lambda m: (

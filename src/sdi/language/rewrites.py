@@ -1027,7 +1027,8 @@ _REWRITES += [
     ),
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
-            r"(?<=s)\s+in\s+a\s+(?:row|line)(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
+            r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d))\s+in\s+(?:a|one|a\s+single)\s+(?:row|line)"
+            r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
             r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$))",
             re.IGNORECASE,
         ),
