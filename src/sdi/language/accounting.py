@@ -14,13 +14,11 @@ from sdi.language.nouns import BEAMS
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.grammar import parse_phrase
-from sdi.spec.numbers import TENS, UNITS
+from sdi.spec.numbers import NUMBER_WORDS
 
 if TYPE_CHECKING:
     from spacy.tokens import Doc, Token
 
-
-NUMBER_WORDS = (set(UNITS) | set(TENS)) - {"no", "zero", "single", "a", "an", "one"}
 
 # Words that make a clause more than chatter (ambiguous shape nouns like "well" do not).
 _USABLE = (

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import re
 
-from sdi.language.accounting import NUMBER_WORDS
 from sdi.language.handlers import HANDLERS
 from sdi.language.normalise import SPACES
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
+from sdi.spec.numbers import NUMBER_WORDS
 
 _OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front",
              "middle": "left", "centre": "left", "center": "left"}  # fmt: skip
