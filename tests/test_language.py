@@ -1140,6 +1140,21 @@ def test_a_little_one_added_is_a_second_structure_of_the_same_kind_but_not_in_ap
     assert [s.shape for s in r.spec.structures] == ["pyramid"]
 
 
+@pytest.mark.parametrize(
+    "command",
+    [
+        "two stacks of 4, then put a beam across the two",
+        "two stacks of 4, then a beam across both",
+        "two stacks of 4 and a long beam across them",
+        "two stacks of 4; then a beam from the first across to the other one",
+    ],
+)
+def test_a_beam_across_the_two_rests_on_both(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 4)]
+
+
 def test_n_on_m_is_a_size_said_the_way_of_other_languages():
     s = plan("a slab four on three").spec.structures[0]
     assert (s.length, s.width) == (4, 3)

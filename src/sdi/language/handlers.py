@@ -460,6 +460,11 @@ def _times(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} {groups[1]} "
 
 
+def _across_them(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "across the two", "from one tower across to the other one": across them."""
+    return f" {m.group(1) or 'across'} them "
+
+
 def _climb(m: re.Match[str], st: ReadState, note: str) -> str:
     # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
     return {
@@ -526,6 +531,7 @@ HANDLERS: dict[str, Handler] = {
     "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,
+    "{across_them}": _across_them,
     "{rows}": _rows,
     "{rows_of}": _rows_of,
     "{layers}": _layers,

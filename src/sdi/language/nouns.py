@@ -120,7 +120,7 @@ def object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[in
         return k, False  # "on top of each other"
     if empty:
         return k, False
-    if w in PRONOUNS and doc[k].pos_ in ("PRON", "DET", "NUM", "NOUN"):
+    if w in PRONOUNS and (doc[k].pos_ in ("PRON", "DET", "NUM", "NOUN") or doc[k].dep_ == "pobj"):
         return k, True
     if w in _ORDINALS:
         return k, True

@@ -932,6 +932,21 @@ _REWRITES += [
         " a bridge ",
         "read '{0}' as a bridge (something to pass under)",
     ),
+    (  # "a beam across the two", "from one tower across to the other one": across them
+        re.compile(
+            r"\b(?:(across|over|on\s+top\s+of|between)\s+the\s+two|from\s+(?:the\s+)?(?:one|first)"
+            r"(?:\s+[a-z]+)?\s+(?:across\s+)?to\s+the\s+(?:other|second)(?:\s+one)?)"
+            r"(?=\s*(?:$|[,.;!?]|and\b|then\b|with\b|just\b))",
+            re.IGNORECASE,
+        ),
+        "{across_them}",
+        "",
+    ),
+    (  # "a long beam": the cell's one beam (3 cubes long)
+        re.compile(r"\b(?:long|longer|big|large|flat)\s+(?=(?:beam|plank|lintel)\b)", re.I),
+        "",
+        "",
+    ),
     (  # "pillars with something across them": a beam
         re.compile(
             r"\b(?:something|a\s+piece|a\s+part|a\s+long\s+piece)\s+(?=(?:across|over|on\s+top\s+of)\s+"
