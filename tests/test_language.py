@@ -1155,6 +1155,16 @@ def test_a_beam_across_the_two_rests_on_both(command):
     assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 4)]
 
 
+def test_a_walls_count_that_cannot_fill_its_levels_is_its_length_and_either_reading_is_said():
+    r = plan("a wall of 7 cubes, 3 high")  # 7 cannot fill 3 levels: 7 long (it built 9 parts)
+    s = r.spec.structures[0]
+    assert (s.length, s.height, len(r.layout)) == (7, 3, 21)
+    assert any("7 cannot fill 3 levels" in n for n in r.notes), r.notes
+    r = plan("a wall of 8 cubes, 2 high")  # 8 in all, 4 long: the reading is said
+    assert (r.spec.structures[0].count, len(r.layout)) == (8, 8)
+    assert any("say '8 long'" in n for n in r.notes), r.notes
+
+
 def test_n_on_m_is_a_size_said_the_way_of_other_languages():
     s = plan("a slab four on three").spec.structures[0]
     assert (s.length, s.width) == (4, 3)
