@@ -887,3 +887,62 @@ def xprofile(*hs: int) -> Check:
         return None if len(bx.voxels(bs)) == sum(hs) * width else "columns not full"
 
     return f
+
+
+def cell_heights(*hs: int) -> Check:
+    """One structure on the table whose footprint cells carry columns of exactly these heights
+    (in any arrangement), every column full from the table up — e.g. a tower built against a
+    wall, or two towers touching."""
+
+    def f(bs: Boxes) -> Reason:
+        r = on_table(bs)
+        if r:
+            return r
+        vox = bx.voxels(bs)
+        tops: dict[tuple[int, int], int] = {}
+        for i, j, z in vox:
+            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
+        got = sorted(tops.values())
+        if got != sorted(hs):
+            return f"column heights {got}, want {sorted(hs)}"
+        return None if len(vox) == sum(hs) else "columns not full"
+
+    return f
+
+
+def all_rels(*rels: Rel) -> Rel:
+    """All of the relations hold between A and B."""
+
+    def rel(a: Boxes, b: Boxes) -> Reason:
+        for r in rels:
+            why = r(a, b)
+            if why is not None:
+                return why
+        return None
+
+    return rel
+
+
+def small(result: Mapping[str, Any]) -> Reason:
+    """Some layout, at most 4 cubes high and 5 cubes long overall."""
+    r = anything(result)
+    if r:
+        return r
+    return layout(all_of(low(4), long(hi=5)))(result)
+
+
+def top_centred(tol: float = 0.03) -> Check:
+    """The parts of the topmost level are centred (± tol) over everything below them."""
+
+    def f(bs: Boxes) -> Reason:
+        z = max(round(b.lo[2], 3) for b in bs)
+        top = [b for b in bs if round(b.lo[2], 3) == z]
+        rest = [b for b in bs if round(b.lo[2], 3) != z]
+        if not rest:
+            return "one level only"
+        (tx, ty), (rx, ry) = bx.centre(top), bx.centre(rest)
+        if abs(tx - rx) > tol or abs(ty - ry) > tol:
+            return f"top at ({tx:.3f}, {ty:.3f}), below centred at ({rx:.3f}, {ry:.3f})"
+        return None
+
+    return f

@@ -49,40 +49,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _rels(*rels: k.Rel) -> k.Rel:
-    """All of the relations hold between A and B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        for r in rels:
-            why = r(a, b)
-            if why is not None:
-                return why
-        return None
-
-    return rel
-
-
-def _cell_heights(*hs: int) -> k.Check:
-    """One structure on the table whose footprint cells carry columns of exactly these heights
-    (in any arrangement), every column full from the table up — e.g. a tower built against a
-    wall, or two towers touching."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        r = k.on_table(bs)
-        if r:
-            return r
-        vox = bx.voxels(bs)
-        tops: dict[tuple[int, int], int] = {}
-        for i, j, z in vox:
-            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
-        got = sorted(tops.values())
-        if got != sorted(hs):
-            return f"column heights {got}, want {sorted(hs)}"
-        return None if len(vox) == sum(hs) else "columns not full"
-
-    return f
-
-
 def _in_order(axis: str, *checks: k.Check) -> k.Pred:
     """Exactly len(checks) separate structures in the workspace; ordered front to back
     (axis "x") or left to right (axis "y"), the i-th passes checks[i]."""
@@ -104,23 +70,6 @@ def _in_order(axis: str, *checks: k.Check) -> k.Pred:
             r = c(g)
             if r:
                 return f"structure {i + 1} in order: {r}"
-        return None
-
-    return f
-
-
-def _top_centred(tol: float = 0.03) -> k.Check:
-    """The parts of the topmost level are centred (± tol) over everything below them."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        z = max(round(b.lo[2], 3) for b in bs)
-        top = [b for b in bs if round(b.lo[2], 3) == z]
-        rest = [b for b in bs if round(b.lo[2], 3) != z]
-        if not rest:
-            return "one level only"
-        (tx, ty), (rx, ry) = bx.centre(top), bx.centre(rest)
-        if abs(tx - rx) > tol or abs(ty - ry) > tol:
-            return f"top at ({tx:.3f}, {ty:.3f}), below centred at ({rx:.3f}, {ry:.3f})"
         return None
 
     return f
@@ -185,14 +134,6 @@ def _taller_than_wide(bs: k.Boxes) -> k.Reason:
     return None if h > n else f"{h} high on a footprint {n} long"
 
 
-def _small(result: Mapping[str, Any]) -> k.Reason:
-    """Some layout, at most 4 cubes high and 5 cubes long overall."""
-    r = k.anything(result)
-    if r:
-        return r
-    return k.layout(k.all_of(k.low(4), k.long(hi=5)))(result)
-
-
 T = k.tower
 one = k.one
 not_ = k.not_
@@ -213,7 +154,7 @@ CASES: tuple[Case, ...] = (
         "rel-02",
         REL,
         "stick one cube on top of a wall 4 long and 2 high, dead in the middle of it",
-        one(k.on_top(T(1), k.wall(4, 2)), k.height(3), _top_centred()),
+        one(k.on_top(T(1), k.wall(4, 2)), k.height(3), k.top_centred()),
     ),
     _c(
         "rel-03",
@@ -296,7 +237,7 @@ CASES: tuple[Case, ...] = (
         "a wall 4 long 2 high, and beside it a tower twice as tall as the wall",
         k.any_of(
             k.pair(T(4), k.wall(4, 2), _near),
-            one(_cell_heights(4, 2, 2, 2, 2)),
+            one(k.cell_heights(4, 2, 2, 2, 2)),
         ),
     ),
     _c(
@@ -364,7 +305,7 @@ CASES: tuple[Case, ...] = (
         "tower of four",
         k.any_of(
             one(k.xprofile(1, 2, 3, 4, 4)),
-            k.pair(T(4), k.all_of(k.staircase(4), k.rises(_B)), _rels(k.on_side(_B), _near)),
+            k.pair(T(4), k.all_of(k.staircase(4), k.rises(_B)), k.all_rels(k.on_side(_B), _near)),
         ),
     ),
     _c(
@@ -381,7 +322,7 @@ CASES: tuple[Case, ...] = (
         k.any_of(
             one(k.lr_profile(4, 2, 2, 2, 2, 2, 2)),
             one(k.lr_profile(4, 2, 2, 2, 2, 2)),
-            k.pair(T(4), k.wall(6, 2), _rels(k.on_side(_L), _near)),
+            k.pair(T(4), k.wall(6, 2), k.all_rels(k.on_side(_L), _near)),
         ),
     ),
     _c(
@@ -440,7 +381,7 @@ CASES: tuple[Case, ...] = (
         "num-01",
         NUM,
         "three towers please: two, four and six high",
-        k.any_of(k.structures(T(2), T(4), T(6)), one(_cell_heights(2, 4, 6))),
+        k.any_of(k.structures(T(2), T(4), T(6)), one(k.cell_heights(2, 4, 6))),
     ),
     _c("num-02", NUM, "half a dozen cubes laid out in a line", one(k.row(6))),
     _c("num-03", NUM, "a couple of towers, five cubes in each", k.each(2, T(5))),
@@ -460,7 +401,7 @@ CASES: tuple[Case, ...] = (
         "num-06",
         NUM,
         "a tower of three and next to it a tower one shorter",
-        k.any_of(k.structures(T(3), T(2)), one(_cell_heights(3, 2))),
+        k.any_of(k.structures(T(3), T(2)), one(k.cell_heights(3, 2))),
     ),
     _c(
         "num-07",
@@ -481,7 +422,7 @@ CASES: tuple[Case, ...] = (
         "num-12",
         NUM,
         "a stack of four and beside it one half its height",
-        k.any_of(k.pair(T(2), T(4), _near), one(_cell_heights(4, 2))),
+        k.any_of(k.pair(T(2), T(4), _near), one(k.cell_heights(4, 2))),
     ),
     _c(
         "num-13",
@@ -908,7 +849,7 @@ CASES: tuple[Case, ...] = (
     _c("open-08", OPEN, "a gate of some sort", one(k.any_of(k.bridge(), k.arch))),
     _c("open-09", OPEN, "something like a little fort", one(k.any_of(k.castle, k.ring))),
     _c("open-10", OPEN, "a pen, whatever size you think", one(k.ring)),
-    _c("open-11", OPEN, "surprise me, but keep it small", _small),
+    _c("open-11", OPEN, "surprise me, but keep it small", k.small),
     _c("open-12", OPEN, "a stack that's taller than it is wide", one(_taller_than_wide)),
     # ------------------------------------------------------------------ bad input
     _c("bad-01", BAD, "tower of 14 cubes", k.honest(one(T(lo=1, hi=10)))),

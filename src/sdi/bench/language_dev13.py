@@ -53,19 +53,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _rels(*rels: k.Rel) -> k.Rel:
-    """All of the relations hold between A and B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        for r in rels:
-            why = r(a, b)
-            if why is not None:
-                return why
-        return None
-
-    return rel
-
-
 def _gap_either(*ns: int, side: str | None = None) -> k.Rel:
     """A and B are one of `ns` cubes apart (± 1.5 cm), A on `side` of B — for a spacing that
     may be meant clear or centre to centre."""
@@ -81,27 +68,6 @@ def _parallel(a: k.Boxes, b: k.Boxes) -> k.Reason:
     """A and B run along the same axis (their longer plan sides both along x, or both y)."""
     (ax, ay), (bx0, by) = bx.footprint_cubes(a), bx.footprint_cubes(b)
     return None if (ax > ay) == (bx0 > by) and ax != ay and bx0 != by else "not parallel"
-
-
-def _cell_heights(*hs: int) -> k.Check:
-    """One structure on the table whose footprint cells carry columns of exactly these heights
-    (in any arrangement), every column full from the table up — e.g. a tower built against a
-    wall, or two towers touching."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        r = k.on_table(bs)
-        if r:
-            return r
-        vox = bx.voxels(bs)
-        tops: dict[tuple[int, int], int] = {}
-        for i, j, z in vox:
-            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
-        got = sorted(tops.values())
-        if got != sorted(hs):
-            return f"column heights {got}, want {sorted(hs)}"
-        return None if len(vox) == sum(hs) else "columns not full"
-
-    return f
 
 
 def _peak_on(side: str) -> k.Check:
@@ -155,23 +121,6 @@ def _in_order(axis: str, *checks: k.Check, gap: int | None = None) -> k.Pred:
     return f
 
 
-def _top_centred(tol: float = 0.03) -> k.Check:
-    """The parts of the topmost level are centred (± tol) over everything below them."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        z = max(round(b.lo[2], 3) for b in bs)
-        top = [b for b in bs if round(b.lo[2], 3) == z]
-        rest = [b for b in bs if round(b.lo[2], 3) != z]
-        if not rest:
-            return "one level only"
-        (tx, ty), (rx, ry) = bx.centre(top), bx.centre(rest)
-        if abs(tx - rx) > tol or abs(ty - ry) > tol:
-            return f"top at ({tx:.3f}, {ty:.3f}), below centred at ({rx:.3f}, {ry:.3f})"
-        return None
-
-    return f
-
-
 def _centred_in(tol: float = 0.02) -> k.Rel:
     """A (a ring) surrounds B, and B's footprint centre is A's (± tol)."""
 
@@ -215,14 +164,6 @@ def _min_side(n: int) -> k.Check:
     return f
 
 
-def _small(result: Mapping[str, Any]) -> k.Reason:
-    """Some layout, at most 4 cubes high and 5 cubes long overall."""
-    r = k.anything(result)
-    if r:
-        return r
-    return k.layout(k.all_of(k.low(4), k.long(hi=5)))(result)
-
-
 def _low_demo(result: Mapping[str, Any]) -> k.Reason:
     """Some layout, at most 3 cubes high."""
     return k.anything(result) or k.layout(k.low(3))(result)
@@ -249,14 +190,14 @@ CASES: tuple[Case, ...] = (
         "rel-02",
         REL,
         "please to build one wall long five cubes, high two, and on top in the middle put one cube",
-        one(k.on_top(T(1), k.wall(5, 2)), k.height(3), _top_centred()),
+        one(k.on_top(T(1), k.wall(5, 2)), k.height(3), k.top_centred()),
     ),
     _c(
         "rel-03",
         REL,
         "Okay class, first a big flat square, three by three. And now a little tower of two "
         "right in the middle of it!",
-        one(k.on_top(T(2), k.block(3, 3, 1)), k.levels(9, 1, 1), _top_centred()),
+        one(k.on_top(T(2), k.block(3, 3, 1)), k.levels(9, 1, 1), k.top_centred()),
     ),
     _c(
         "rel-04",
@@ -269,8 +210,8 @@ CASES: tuple[Case, ...] = (
         REL,
         "um put a tower of three and then uh behind it like a wall five long two high",
         k.any_of(
-            k.pair(k.wall(5, 2), T(3), _rels(k.on_side(_B), _near)),
-            one(_cell_heights(3, 2, 2, 2, 2, 2), _peak_on(_F)),  # the tower against the wall
+            k.pair(k.wall(5, 2), T(3), k.all_rels(k.on_side(_B), _near)),
+            one(k.cell_heights(3, 2, 2, 2, 2, 2), _peak_on(_F)),  # the tower against the wall
         ),
     ),
     _c(
@@ -303,7 +244,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "a tower of six and a tower of to in front of it",
         k.any_of(
-            k.pair(T(2), T(6), _rels(k.on_side(_F), _near)),
+            k.pair(T(2), T(6), k.all_rels(k.on_side(_F), _near)),
             one(k.xprofile(2, 6)),
         ),
     ),
@@ -331,7 +272,7 @@ CASES: tuple[Case, ...] = (
         "wall L 250 mm, H 100 mm; adjacent column at 1.5x the wall height",
         k.any_of(
             k.pair(T(3), k.wall(5, 2), _near),
-            one(_cell_heights(3, 2, 2, 2, 2, 2)),
+            one(k.cell_heights(3, 2, 2, 2, 2, 2)),
         ),
     ),
     _c(
@@ -404,7 +345,7 @@ CASES: tuple[Case, ...] = (
         "seq-07",
         SEQ,
         "1) row x5 along X (front to back). 2) duplicate it 1 cube to the left, parallel",
-        k.pair(ROW5X, ROW5X, _rels(k.parallel_gap(1), k.on_side(_L))),
+        k.pair(ROW5X, ROW5X, k.all_rels(k.parallel_gap(1), k.on_side(_L))),
     ),
     _c(
         "seq-08",
@@ -458,7 +399,7 @@ CASES: tuple[Case, ...] = (
         SEQ,
         "Step one: a wall of four cubes, two high. Step two: a second wall just the same, "
         "behind the first one, with a gap of two cubes. Step three: count the cubes with me!",
-        k.pair(k.wall(4, 2), k.wall(4, 2), _rels(k.parallel_gap(2), k.on_side(_B))),
+        k.pair(k.wall(4, 2), k.wall(4, 2), k.all_rels(k.parallel_gap(2), k.on_side(_B))),
     ),
     _c("seq-16", SEQ, "Tower h=8. EDIT: h=6, not 8", one(T(6))),
     _c(
@@ -494,7 +435,7 @@ CASES: tuple[Case, ...] = (
         "num-08",
         NUM,
         "I need the tower of three and the other tower, it has double of the height",
-        k.any_of(k.structures(T(3), T(6)), one(_cell_heights(3, 6))),
+        k.any_of(k.structures(T(3), T(6)), one(k.cell_heights(3, 6))),
     ),
     _c(
         "num-09",
@@ -525,7 +466,7 @@ CASES: tuple[Case, ...] = (
         "num-14",
         NUM,
         "a tower of eight, and next to it a little one that is only half as tall",
-        k.any_of(k.pair(T(4), T(8), _near), one(_cell_heights(8, 4))),
+        k.any_of(k.pair(T(4), T(8), _near), one(k.cell_heights(8, 4))),
     ),
     _c(
         "num-15",
@@ -753,7 +694,7 @@ CASES: tuple[Case, ...] = (
         "wo-11",
         WO,
         "Right of the wall four long two high, a tower of three, touching it",
-        one(_cell_heights(3, 2, 2, 2, 2), _peak_on(_R)),
+        one(k.cell_heights(3, 2, 2, 2, 2), _peak_on(_R)),
     ),
     _c("wo-12", WO, "cubes eight in one column stacked", one(T(8))),
     _c(
@@ -934,7 +875,7 @@ CASES: tuple[Case, ...] = (
     ),
     _c("open-02", OPEN, "demo piece, any shape, max h=3 cubes", _low_demo),
     _c("open-03", OPEN, "um just build like a tall thing", one(k.height(lo=4))),
-    _c("open-04", OPEN, "make something nice, small, for the photo", _small),
+    _c("open-04", OPEN, "make something nice, small, for the photo", k.small),
     _c(
         "open-05",
         OPEN,
