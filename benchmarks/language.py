@@ -1,4 +1,4 @@
-"""The language front end on the unseen evaluation sets (dev, dev2 … dev13 and frozen test).
+"""The language front end on the unseen evaluation sets (dev, dev2 … dev14 and frozen test).
 
 Every case is planned in-process with `sdi.pipeline.plan` and scored:
 
@@ -11,10 +11,10 @@ Every case is planned in-process with `sdi.pipeline.plan` and scored:
 Writes `benchmarks/results/language_dev.json`, `language_dev2.json`, `language_dev3.json`,
 `language_dev4.json`, `language_dev5.json`, `language_dev6.json`, `language_dev7.json`,
 `language_dev8.json`, `language_dev9.json`, `language_dev10.json`, `language_dev11.json`,
-`language_dev12.json`, `language_dev13.json` and `language_test.json`.
+`language_dev12.json`, `language_dev13.json`, `language_dev14.json` and `language_test.json`.
 
-Run: `python benchmarks/language.py [--set dev|dev2|…|dev13|test|both|all]` (`both` = dev and
-test, `all` = dev, dev2 … dev13 and test).
+Run: `python benchmarks/language.py [--set dev|dev2|…|dev14|test|both|all]` (`both` = dev and
+test, `all` = dev, dev2 … dev14 and test).
 """
 
 from __future__ import annotations
@@ -109,6 +109,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             "dev11",
             "dev12",
             "dev13",
+            "dev14",
             "test",
             "both",
             "all",
@@ -169,6 +170,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from sdi.bench.language_dev13 import CASES as DEV13
 
         sets.append(("dev13", DEV13))
+    if args.set in ("dev14", "all"):
+        from sdi.bench.language_dev14 import CASES as DEV14
+
+        sets.append(("dev14", DEV14))
     if args.set in ("test", "both", "all"):
         from sdi.bench.language_test import CASES as TEST
 

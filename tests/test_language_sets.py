@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to thirteenth dev sets (dev2 … dev13) are held to the same checks and share no
+second to fourteenth dev sets (dev2 … dev14) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ from sdi.bench.language_dev10 import CASES as DEV10
 from sdi.bench.language_dev11 import CASES as DEV11
 from sdi.bench.language_dev12 import CASES as DEV12
 from sdi.bench.language_dev13 import CASES as DEV13
+from sdi.bench.language_dev14 import CASES as DEV14
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -255,13 +256,15 @@ SETS = {
     "dev4": (DEV4, 150, 12, 0), "dev5": (DEV5, 150, 12, 0), "dev6": (DEV6, 120, 10, 0),
     "dev7": (DEV7, 120, 10, 0), "dev8": (DEV8, 120, 10, 0), "dev9": (DEV9, 120, 10, 0),
     "dev10": (DEV10, 120, 10, 0), "dev11": (DEV11, 150, 8, 15), "dev12": (DEV12, 150, 8, 15),
-    "dev13": (DEV13, 160, 8, 15), "test": (TEST, 60, 5, 0),
+    "dev13": (DEV13, 160, 8, 15), "dev14": (DEV14, 160, 8, 15),
+    "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
     "dev3": ("relation", "sequence", "numbers", "dimensions", "negation", "word_order"),
     "dev11": ("relation", "numbers", "dimensions", "sequence"),
     "dev12": ("relation", "numbers", "dimensions", "sequence"),
     "dev13": ("relation", "numbers", "dimensions", "sequence"),
+    "dev14": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -317,6 +320,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV11,
         *DEV12,
         *DEV13,
+        *DEV14,
         *TEST,
     ):
         out = case.accept(result)
@@ -350,6 +354,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev11.py",
         "language_dev12.py",
         "language_dev13.py",
+        "language_dev14.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -2168,5 +2173,182 @@ def _corner_cubes(x0, y0, far, high, z0=0.0):
 )
 def test_dev13_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev13(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev14
+
+
+def _dev14(case_id: str) -> Case:
+    return next(c for c in DEV14 if c.id == case_id)
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev14-rel-01",  # a 2-tower one cube clear to the left (+y) of a 4-tower
+            res(*column(0.45, 0.25, 4), *column(0.45, 0.35, 2)),
+            res(*column(0.45, 0.35, 4), *column(0.45, 0.25, 2)),
+        ),
+        (
+            "dev14-rel-03",  # a 3-tower one cube in front (-x) of a 4x2 wall
+            res(*grid(0.50, 0.20, 1, 4, layers=2), *column(0.40, 0.25, 3)),
+            res(*grid(0.50, 0.20, 1, 4, layers=2), *column(0.60, 0.25, 3)),
+        ),
+        (
+            "dev14-rel-07",  # the 5-tower two cubes behind (+x) the 3-tower
+            res(*column(0.35, 0.30, 3), *column(0.50, 0.30, 5)),
+            res(*column(0.50, 0.30, 3), *column(0.35, 0.30, 5)),
+        ),
+        (
+            "dev14-rel-08",  # a 2-tower in the very middle of a 5x5 ring
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 2)),
+            res(*ring(0.35, 0.20, 5), *column(0.40, 0.30, 2)),
+        ),
+        (
+            "dev14-rel-10",  # towers of 2, 4, 6 from left (+y) to right, one cube apart
+            res(*column(0.45, 0.40, 2), *column(0.45, 0.30, 4), *column(0.45, 0.20, 6)),
+            res(*column(0.45, 0.40, 6), *column(0.45, 0.30, 4), *column(0.45, 0.20, 2)),
+        ),
+        (
+            "dev14-rel-11",  # a 2x2x2 block between two 4-towers, one cube clear each side
+            res(
+                *column(0.45, 0.175, 4),
+                *grid(0.425, 0.275, 2, 2, layers=2),
+                *column(0.45, 0.425, 4),
+            ),
+            res(
+                *column(0.45, 0.125, 4),
+                *grid(0.425, 0.275, 2, 2, layers=2),
+                *column(0.45, 0.425, 4),
+            ),
+        ),
+        (
+            "dev14-rel-13",  # two rows of 6 along y, one cube apart
+            res(*_row_y(0.40, 0.20, 6), *_row_y(0.50, 0.20, 6)),
+            res(*_row_y(0.40, 0.20, 6), *_row_y(0.55, 0.20, 6)),
+        ),
+        (
+            "dev14-rel-16",  # two 4-stacks touching front to back: a 2 (x) by 1 block, 4 high
+            res(*grid(0.40, 0.30, 2, 1, layers=4)),
+            res(*grid(0.40, 0.30, 1, 2, layers=4)),
+        ),
+        (
+            "dev14-rel-17",  # three 3-towers front to back, two cubes clear between
+            res(*column(0.30, 0.30, 3), *column(0.45, 0.30, 3), *column(0.60, 0.30, 3)),
+            res(*column(0.30, 0.30, 3), *column(0.40, 0.30, 3), *column(0.50, 0.30, 3)),
+        ),
+        (
+            "dev14-rel-18",  # two gates of 4-pillars, the second two cubes to the left
+            res(*_bridge(0.45, 0.20, 4), *_bridge(0.45, 0.45, 4)),
+            res(*_bridge(0.45, 0.20, 4), *_bridge(0.45, 0.40, 4)),
+        ),
+        (
+            "dev14-num-02",  # two 6-towers, two cubes clear
+            res(*column(0.45, 0.20, 6), *column(0.45, 0.35, 6)),
+            res(*column(0.45, 0.20, 6), *column(0.45, 0.30, 6)),
+        ),
+        (
+            "dev14-num-06",  # three 2-towers in a line, one cube between each
+            res(*column(0.40, 0.20, 2), *column(0.40, 0.30, 2), *column(0.40, 0.40, 2)),
+            res(*column(0.40, 0.20, 2), *column(0.40, 0.30, 2), *column(0.40, 0.45, 2)),
+        ),
+        (
+            "dev14-num-07",  # a 4-tower and one double its height
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.35, 8)),
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.35, 6)),
+        ),
+        (
+            "dev14-num-14",  # a 6-tower between two 3-towers
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.30, 6), *column(0.45, 0.40, 3)),
+            res(*column(0.45, 0.20, 6), *column(0.45, 0.30, 3), *column(0.45, 0.40, 3)),
+        ),
+        (
+            "dev14-dim-03",  # 2 deep (x), 3 wide (y), 2 tall
+            res(*grid(0.40, 0.25, 2, 3, layers=2)),
+            res(*grid(0.40, 0.25, 3, 2, layers=2)),
+        ),
+        (
+            "dev14-dim-07",  # a ring 4 by 5 outside, 2 high
+            res(
+                *[
+                    c
+                    for i in range(4)
+                    for j in range(5)
+                    if i in (0, 3) or j in (0, 4)
+                    for c in column(0.40 + C * i, 0.20 + C * j, 2)
+                ]
+            ),
+            res(*ring(0.40, 0.20, 5, high=2)),
+        ),
+        (
+            "dev14-dim-14",  # 5-brick posts, one brick clear between
+            res(*_bridge(0.45, 0.30, 5)),
+            res(*_bridge(0.45, 0.30, 4)),
+        ),
+        (
+            "dev14-dim-16",  # a 2x2 column 5 high
+            res(*grid(0.40, 0.25, 2, 2, layers=5)),
+            res(*grid(0.40, 0.25, 2, 2, layers=4)),
+        ),
+        (
+            "dev14-seq-11",  # a 7-tower split into 4 and 3, apart or touching
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.30, 3)),
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev14-seq-11",  # the touching reading
+            res(*_stairs_y(0.45, 0.25, (4, 3))),
+            res(*_stairs_y(0.45, 0.25, (7, 3))),
+        ),
+        (
+            "dev14-seq-17",  # after removing the 4, a 3-tower one cube behind a 2-tower
+            res(*column(0.40, 0.30, 2), *column(0.50, 0.30, 3)),
+            res(*column(0.40, 0.30, 3), *column(0.50, 0.30, 2)),
+        ),
+        (
+            "dev14-neg-06",  # a 3-level pyramid kept out of the left (+y) half
+            res(*_pyr(0.40, 0.10, 3)),
+            res(*_pyr(0.40, 0.25, 3)),
+        ),
+        (
+            "dev14-reg-05",  # 2-towers front left and back right
+            res(*column(0.30, 0.45, 2), *column(0.70, 0.15, 2)),
+            res(*column(0.30, 0.15, 2), *column(0.70, 0.45, 2)),
+        ),
+        (
+            "dev14-seq-09",  # rows of 6, 4, 2; the 4 in the middle of the 6, the 2 anywhere on it
+            res(
+                *_row_y(0.45, 0.20, 6),
+                *_row_y(0.45, 0.25, 4, z0=C),
+                *_row_y(0.45, 0.25, 2, z0=2 * C),
+            ),
+            res(
+                *_row_y(0.45, 0.20, 6),
+                *_row_y(0.45, 0.20, 4, z0=C),
+                *_row_y(0.45, 0.25, 2, z0=2 * C),
+            ),
+        ),
+        (
+            "dev14-rel-19",  # a row of 5 in front (-x) of both 3-towers
+            res(*column(0.50, 0.25, 3), *column(0.50, 0.35, 3), *_row_y(0.40, 0.20, 5)),
+            res(*column(0.50, 0.25, 3), *column(0.40, 0.45, 3), *_row_y(0.40, 0.20, 5)),
+        ),
+        (
+            "dev14-num-19",  # a 6-stack and a 2-stack, one cube clear
+            res(*column(0.45, 0.25, 6), *column(0.45, 0.35, 2)),
+            res(*column(0.45, 0.25, 6), *column(0.45, 0.35, 3)),
+        ),
+        (
+            "dev14-bad-11",  # x = 1.2 is outside the cell: refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.30, 3)),
+        ),
+    ],
+)
+def test_dev14_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev14(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
