@@ -368,9 +368,15 @@ function render() {
   ul.innerHTML = "";
   for (const s of rd?.structures || []) addLi(ul, s);
   for (const r of rd?.relations || []) addLi(ul, r);
-  // the run's notes repeat the reading's (they are kept for every review): each once
-  for (const n of new Set([...(rd?.notes || []), ...(v.notes || [])])) addLi(ul, n, "note");
+  const read = new Set(rd?.notes || []);
+  for (const n of read) addLi(ul, n, "note");
   if (rd?.ignored?.length) addLi(ul, `ignored: ${rd.ignored.join(", ")}`, "note");
+  // the run's own notes (a recovery, a replan) under their own heading; the reading's notes
+  // are repeated in the run's for every review, so each is shown once
+  const run = $("run-notes");
+  run.innerHTML = "";
+  for (const n of new Set((v.notes || []).filter((n) => !read.has(n)))) addLi(run, n, "note");
+  $("run-notes-title").hidden = !run.children.length;
   // panels
   const kind = v.waiting_for?.kind;
   if (kind !== "failure_report") T.editFailed = false;
