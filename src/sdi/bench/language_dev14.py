@@ -54,19 +54,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _rels(*rels: k.Rel) -> k.Rel:
-    """All of the relations hold between A and B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        for r in rels:
-            why = r(a, b)
-            if why is not None:
-                return why
-        return None
-
-    return rel
-
-
 def _cell_heights(*hs: int) -> k.Check:
     """One structure on the table whose footprint cells carry full columns of exactly these
     heights (any arrangement) — e.g. two towers set down touching each other."""
@@ -274,7 +261,7 @@ CASES: tuple[Case, ...] = (
         "For the customer demo I'm picturing a nice chunky pyramid, three levels, and on its "
         "right a tall skinny tower of six, with a bit of space between them, so people see "
         "the contrast.",
-        k.pair(T(6), k.pyramid(3), _rels(k.on_side(_R), _near)),
+        k.pair(T(6), k.pyramid(3), k.all_rels(k.on_side(_R), _near)),
     ),
     _c(
         "rel-05",
@@ -306,7 +293,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "Build a little tower of three bricks and a row of four bricks lying flat behind it, "
         "not touching.",
-        k.pair(k.row(4), T(3), _rels(k.on_side(_B), _near)),
+        k.pair(k.row(4), T(3), k.all_rels(k.on_side(_B), _near)),
     ),
     _c(
         "rel-10",
@@ -325,7 +312,7 @@ CASES: tuple[Case, ...] = (
         "rel-12",
         REL,
         "pyramid 3 lvls, tower of 2 to the right of it, keep a gap",
-        k.pair(T(2), k.pyramid(3), _rels(k.on_side(_R), _near)),
+        k.pair(T(2), k.pyramid(3), k.all_rels(k.on_side(_R), _near)),
     ),
     _c(
         "rel-13",
