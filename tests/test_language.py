@@ -1165,6 +1165,25 @@ def test_a_walls_count_that_cannot_fill_its_levels_is_its_length_and_either_read
     assert any("say '8 long'" in n for n in r.notes), r.notes
 
 
+@pytest.mark.parametrize(
+    ("command", "shapes", "region"),
+    [
+        # a correction that names another structure takes back the one said last
+        ("a stack of 4. scratch that, make it a pyramid", ["pyramid"], None),
+        ("a stack of 2 on the left, no wait, make it a row of 3", ["row"], "left"),
+        ("a ring 4x4, actually a block 2x2 instead", ["block"], None),
+        ("a row of 3 and a stack of 5. Change of plan: an arch", ["row", "arch"], None),
+        # ... but not a change of its parts, and not one more
+        ("a bridge on pillars of 3. actually make the pillars 2", ["bridge"], None),
+        ("a stack of 3, and actually a pyramid as well", ["tower", "pyramid"], None),
+    ],
+)
+def test_a_correction_that_names_another_structure_replaces_the_last(command, shapes, region):
+    r = plan(command)
+    assert [s.shape for s in r.spec.structures] == shapes, r.notes
+    assert region is None or r.spec.structures[-1].region == region
+
+
 def test_n_on_m_is_a_size_said_the_way_of_other_languages():
     s = plan("a slab four on three").spec.structures[0]
     assert (s.length, s.width) == (4, 3)

@@ -113,6 +113,39 @@ def _with_dimension(before: str, value: str, rest: str, notes: list[str]) -> str
     return f"{fixed} {m.group(3).strip()}{rest}"
 
 
+_CLAUSE_CUT = re.compile(r"[.;:!?]\s*|,\s*(?:and\s+|then\s+)?|\s+(?:and|then)\s+", re.IGNORECASE)
+_MAKE_IT = re.compile(
+    r"^(?:(?:make|change|turn)\s+(?:it|that|this)\s+(?:into\s+|to\s+)?|"
+    r"(?:it\s+should\s+be|let'?s\s+(?:do|have|make|build)|i\s+want|we\s+need|build|have)\s+)",
+    re.IGNORECASE,
+)
+_ADDED = re.compile(r"\b(?:too|as\s+well|also|another|more|plus)\b", re.IGNORECASE)
+_PLACE = re.compile(
+    rf"\b(?:at|on|in)\s+the\s+(?:{_REGION})(?:\s+(?:{_REGION}))?(?:\s+(?:corner|side|edge))?\b",
+    re.IGNORECASE,
+)
+
+
+def _another_structure(before: str, after: str, notes: list[str]) -> str | None:
+    """ "a tower of 3 at the back, no wait, make it a wall": the structure said last is taken
+    back and the new one stands in its place (where the old one stood, unless it says where)."""
+    if _ADDED.search(after):
+        return None  # "…, actually a pyramid too": one more, not a correction
+    cuts = [m.end() for m in _CLAUSE_CUT.finditer(before.rstrip(" ,;:—–-"))]
+    start = cuts[-1] if cuts else 0
+    taken_back = before[start:].strip(" ,;:—–-")
+    if not _names_structure(taken_back):
+        return None
+    new = re.sub(r"\s*\binstead\b", "", _MAKE_IT.sub("", after.strip()), flags=re.I).strip()
+    if not re.match(r"(?:an?|one)\s", new, re.IGNORECASE):
+        return None  # "actually make the pillars 4": a change of the structure, not another
+    place = _PLACE.search(taken_back)
+    if place and not _PLACE.search(new):
+        new = f"{new.rstrip(' .!')} {place.group(0)}"
+    notes.append(f"corrected by the command itself: '{taken_back}' → '{new.strip(' .!')}'")
+    return before[:start] + new
+
+
 def _with_noun(before: str, value: str, rest: str, notes: list[str]) -> str | None:
     """ "five steps, no, six steps": the number said last with the same noun, replaced."""
     m = re.fullmatch(rf"({_NUMBER})\s+([a-z]+?)s?", value, re.IGNORECASE)
@@ -162,6 +195,11 @@ def correct(text: str, notes: list[str]) -> str:
             dimensioned = _with_dimension(before, value, rest, notes)
             if dimensioned is not None:
                 text = dimensioned
+                continue
+        if kind is None and _names_structure(value):  # "a tower. scratch that, a wall 3 long"
+            replaced = _another_structure(before, after, notes)
+            if replaced is not None:
+                text = replaced
                 continue
         if kind is None:  # a correction in words of its own: a clause the later stages read
             text = before.rstrip(" ,;:—–-") + ". then " + after
