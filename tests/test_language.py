@@ -1184,6 +1184,25 @@ def test_a_correction_that_names_another_structure_replaces_the_last(command, sh
     assert region is None or r.spec.structures[-1].region == region
 
 
+def test_structures_in_a_line_front_to_back_stand_one_behind_the_other():
+    r = plan("4 stacks of 2 in a row from front to back, 1 cube gaps")
+    assert r.status == "success" and r.spec.line == "x", r.notes
+    xs = sorted({round(p.position[0], 3) for p in r.layout})
+    ys = {round(p.position[1], 3) for p in r.layout}
+    assert len(xs) == 4 and len(ys) == 1  # along x (front to back), one y
+    assert all(np.isclose(b - a, 0.05 + 0.05) for a, b in itertools.pairwise(xs))  # 1-cube gaps
+    r = plan("4 stacks of 2 in a row")  # no direction: side by side along y, as before
+    assert r.spec.line is None and len({round(p.position[1], 3) for p in r.layout}) == 4
+
+
+def test_gaps_said_in_bricks_and_plurals_and_a_misspelt_apart():
+    for command in ("two stacks of 3 with a gap of one brick", "two stacks of 3, 1 cube gaps",
+                    "two stacks of 3, one cube appart"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and r.spec.gap_m == 0.05, (command, r.notes)
+        assert [s.shape for s in r.spec.structures] == ["tower", "tower"]
+
+
 def test_n_on_m_is_a_size_said_the_way_of_other_languages():
     s = plan("a slab four on three").spec.structures[0]
     assert (s.length, s.width) == (4, 3)

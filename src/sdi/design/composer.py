@@ -192,13 +192,14 @@ def _clamp(c: np.ndarray, half: np.ndarray, cell: CellConfig, axes: tuple[int, .
 
 
 def _place_all(
-    placed: list[_Placed], cell: CellConfig, gap: float | None = None
+    placed: list[_Placed], cell: CellConfig, gap: float | None = None, line: str | None = None
 ) -> list[np.ndarray]:
     """Footprint centres: stated coordinates exactly, regions and the rest nearest free spot.
 
     Stated coordinates are kept (an unstated axis may slide to avoid another structure); a
     named region is a preference the structure is pulled into and moved from to stay clear;
-    structures with neither go side by side along y around the anchor.
+    structures with neither go side by side along y around the anchor (along x, front to
+    back, when `line` is "x").
     """
     anchor = np.array(cell.design.anchor)
     gap = cell.design.structure_gap if gap is None else gap
@@ -253,11 +254,14 @@ def _place_all(
         x, y = _target(placed[k].spec, cell)
         assert x is not None and y is not None
         wants.append((k, _clamp(np.array([x, y]), placed[k].half, cell, (0, 1)), "region"))
-    widths = [2 * placed[k].half[1] for k in free]
-    y0 = anchor[1] - (sum(widths) + gap * max(0, len(free) - 1)) / 2
+    d = 0 if line == "x" else 1
+    widths = [2 * placed[k].half[d] for k in free]
+    s0 = anchor[d] - (sum(widths) + gap * max(0, len(free) - 1)) / 2
     for k, w in zip(free, widths, strict=True):
-        wants.append((k, np.array([anchor[0], y0 + w / 2]), "structures"))
-        y0 += w + gap
+        want = anchor.copy()
+        want[d] = s0 + w / 2
+        wants.append((k, want, "structures"))
+        s0 += w + gap
     for k, want, field in wants:
         spot = _search(want, placed[k].half, taken, gap, cell, (0, 1))
         if spot is None:
@@ -472,7 +476,7 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
                 raise InfeasibleError(
                     f"{exc} — counting the structures related to it", parameter=exc.parameter
                 ) from None
-    centres = _place_all(placed, cell, spec.gap_m)
+    centres = _place_all(placed, cell, spec.gap_m, spec.line)
     parts: list[Part] = []
     counters: dict[str, int] = {}
     for p, centre in zip(placed, centres, strict=True):

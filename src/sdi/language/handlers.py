@@ -186,14 +186,22 @@ def _listing(m: re.Match[str], st: ReadState, note: str) -> str:
 
 def _in_a_row(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "three towers of 3 in a row with gaps": separate structures stand side by side anyway;
-    "cubes in a row" is a row (left to the grammar)."""
+    "in a line front to back": one behind the other; "cubes in a row" is a row (left to the
+    grammar)."""
     before = re.findall(r"[a-z]+", m.string[: m.start()].lower())
     noun = before[-1] if before else ""
     plural = [w for w in before[-4:] if w.endswith("s") and w in lx.SHAPE_WORDS
               and w not in lx.AMBIGUOUS_SHAPES and w not in ("rows", "lines")]  # fmt: skip
     if not plural or noun in ("cubes", "blocks", "bricks", "parts"):
         return m.group(0)
-    st.notes.append(f"read '{m.group(0).strip()}' as the structures side by side")
+    then = m.string[m.end() :].lower()
+    if re.match(
+        r"\s*,?\s*(?:from\s+)?(?:the\s+)?(?:front|back)\s+to\s+(?:the\s+)?(?:front|back)", then
+    ):
+        st.line = "x"
+        st.notes.append(f"read '{m.group(0).strip()} front to back' as one behind the other")
+    else:
+        st.notes.append(f"read '{m.group(0).strip()}' as the structures side by side")
     return " "
 
 

@@ -136,6 +136,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         spec = Spec(
             structures=tuple(specs),
             relations=tuple(relations),
+            line="x" if st.line == "x" and len(specs) > 1 else None,
             notes=tuple(dict.fromkeys(st.notes)),
         )
     except ValueError as exc:  # one line, without the validator's framing

@@ -1044,7 +1044,8 @@ _REWRITES += [
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d))\s+in\s+(?:a|one|a\s+single)\s+(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
-            r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$))",
+            r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:from\s+)?(?:the\s+)?"
+            r"(?:front|back|left|right)\s+to\s+(?:the\s+)?(?:front|back|left|right)\b))",
             re.IGNORECASE,
         ),
         "{in_a_row}",

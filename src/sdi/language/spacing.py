@@ -19,14 +19,14 @@ from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import Spec
 
 _N = r"(\d+(?:\.\d+)?|a\s+couple\s+of|a\s+pair\s+of|a|an|one|two|three|four|five|six)"
-_UNIT = r"(cubes?|parts?|blocks?|cm|mm|m)"
+_UNIT = r"(cubes?|parts?|blocks?|bricks?|pieces?|cm|mm|m)"
 _GAP = re.compile(
     r",?\s*\b(?:with\s+|leaving\s+|leave\s+|keep\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?"
     + _N + r"(?:[- ]?" + _UNIT + r")?"
-    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gap|space|apart|aisle)"
+    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gaps?|spaces?|apart|aisle)\b"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+away(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
-    + r"\s+(?:of\s+)?(?:gap|space|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
+    + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
     + r"|(?:at\s+)?(?:a\s+)?distance\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT + r")?)"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,

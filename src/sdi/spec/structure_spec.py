@@ -412,6 +412,11 @@ class Spec(BaseModel):
     gap_m: float | None = Field(
         None, gt=0, le=0.5, description="clear space between separate structures, m"
     )
+    line: Literal["x", "y"] | None = Field(
+        None,
+        description="separate structures stand one after another along this axis, in the "
+        "order listed (x: front to back, y: right to left); default: side by side along y",
+    )
     precedence: tuple[tuple[str, str], ...] = ()
     notes: tuple[str, ...] = Field((), description="assumptions the front end made")
 
