@@ -1195,6 +1195,13 @@ def test_structures_in_a_line_front_to_back_stand_one_behind_the_other():
     assert r.spec.line is None and len({round(p.position[1], 3) for p in r.layout}) == 4
 
 
+def test_a_width_said_with_from_left_to_right_runs_left_to_right():
+    r = plan("a pad six cubes across from left to right and two deep")
+    xs = {round(p.position[0], 3) for p in r.layout}
+    ys = {round(p.position[1], 3) for p in r.layout}
+    assert (len(xs), len(ys)) == (2, 6)  # six along y (left to right), two along x (deep)
+
+
 def test_gaps_said_in_bricks_and_plurals_and_a_misspelt_apart():
     for command in ("two stacks of 3 with a gap of one brick", "two stacks of 3, 1 cube gaps",
                     "two stacks of 3, one cube appart"):  # fmt: skip

@@ -633,6 +633,9 @@ class _Parser:
         along `axis`, so the length along the other; "long side left to right" — the longer
         side along `axis`."""
         before = self.word(k - 1)
+        if before in ("from", "going", "running", "measured"):  # "five across from left to right"
+            k -= 1
+            before = self.word(k - 1)
         if before in ("side", "sides", "edge", "edges") and self.word(k - 2) in (
             "long",
             "longer",
