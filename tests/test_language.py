@@ -1202,6 +1202,14 @@ def test_a_width_said_with_from_left_to_right_runs_left_to_right():
     assert (len(xs), len(ys)) == (2, 6)  # six along y (left to right), two along x (deep)
 
 
+def test_a_second_layer_said_alone_goes_on_top_and_so_does_a_third():
+    r = plan("a 3x2 pad. then a second layer, the same. then a third.")
+    assert r.status == "success", r.notes
+    zs = sorted({round(p.position[2], 3) for p in r.layout})
+    assert len(zs) == 3 and len(r.layout) == 18  # one 3x2 block three levels high
+    assert len({(round(p.position[0], 3), round(p.position[1], 3)) for p in r.layout}) == 6
+
+
 def test_gaps_said_in_bricks_and_plurals_and_a_misspelt_apart():
     for command in ("two stacks of 3 with a gap of one brick", "two stacks of 3, 1 cube gaps",
                     "two stacks of 3, one cube appart"):  # fmt: skip

@@ -468,6 +468,18 @@ def _times(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} {groups[1]} "
 
 
+def _layer_on_top(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "then a second layer" (a layer goes on top), and "then a third" after layers."""
+    if m.group(1):
+        said = m.group(1)
+    elif re.search(r"\b(?:layer|level|tier|course)\b", m.string[: m.start()], re.IGNORECASE):
+        said = f"{m.group(2)} layer"
+    else:
+        return m.group(0)
+    st.notes.append(f"read '{m.group(0).strip()}' as a layer on top of the one before")
+    return f"{said} on top"
+
+
 def _across_them(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "across the two", "from one tower across to the other one": across them."""
     return f" {m.group(1) or 'across'} them "
@@ -540,6 +552,7 @@ HANDLERS: dict[str, Handler] = {
     "{times}": _times,
     "{climb}": _climb,
     "{across_them}": _across_them,
+    "{layer_on_top}": _layer_on_top,
     "{rows}": _rows,
     "{rows_of}": _rows_of,
     "{layers}": _layers,

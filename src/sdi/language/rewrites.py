@@ -932,6 +932,16 @@ _REWRITES += [
         " a bridge ",
         "read '{0}' as a bridge (something to pass under)",
     ),
+    (  # "a slab. then a second layer, same size. then a third": each layer on the one before
+        re.compile(
+            r"\b((?:a\s+(?:second|third|fourth|fifth|new|next)|another)\s+(?:layer|level|tier|course))"
+            r"\b(?![^.;]*\b(?:on|onto|atop|above|over|beside|next|behind|left|right|front|under)\b)"
+            r"|(?<=\bthen\s)(a\s+(?:third|fourth|fifth))(?=\s*(?:[.;!]|$))",
+            re.IGNORECASE,
+        ),
+        "{layer_on_top}",
+        "",
+    ),
     (  # "a beam across the two", "from one tower across to the other one": across them
         re.compile(
             r"\b(?:(across|over|on\s+top\s+of|between)\s+the\s+two|from\s+(?:the\s+)?(?:one|first)"
