@@ -473,7 +473,7 @@ def _layer_on_top(m: re.Match[str], st: ReadState, note: str) -> str:
     if m.group(1):
         said = m.group(1)
     elif re.search(r"\b(?:layer|level|tier|course)\b", m.string[: m.start()], re.IGNORECASE):
-        said = f"{m.group(2)} layer"
+        said = "another layer"
     else:
         return m.group(0)
     st.notes.append(f"read '{m.group(0).strip()}' as a layer on top of the one before")
