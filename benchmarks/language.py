@@ -20,6 +20,7 @@ test, `all` = dev, dev2 … dev14 and test).
 from __future__ import annotations
 
 import argparse
+import importlib
 import json
 import statistics
 import time
@@ -91,93 +92,18 @@ def table(name: str, res: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
+SETS = ("dev", *(f"dev{n}" for n in range(2, 15)), "test")
+"""Every set, in the order they were written (dev10 and test held out)."""
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument(
-        "--set",
-        choices=(
-            "dev",
-            "dev2",
-            "dev3",
-            "dev4",
-            "dev5",
-            "dev6",
-            "dev7",
-            "dev8",
-            "dev9",
-            "dev10",
-            "dev11",
-            "dev12",
-            "dev13",
-            "dev14",
-            "test",
-            "both",
-            "all",
-        ),
-        default="both",
-    )
+    ap.add_argument("--set", choices=(*SETS, "both", "all"), default="both")
     args = ap.parse_args(argv)
-    sets: list[tuple[str, Sequence[Case]]] = []
-    if args.set in ("dev", "both", "all"):
-        from sdi.bench.language_dev import CASES as DEV
-
-        sets.append(("dev", DEV))
-    if args.set in ("dev2", "all"):
-        from sdi.bench.language_dev2 import CASES as DEV2
-
-        sets.append(("dev2", DEV2))
-    if args.set in ("dev3", "all"):
-        from sdi.bench.language_dev3 import CASES as DEV3
-
-        sets.append(("dev3", DEV3))
-    if args.set in ("dev4", "all"):
-        from sdi.bench.language_dev4 import CASES as DEV4
-
-        sets.append(("dev4", DEV4))
-    if args.set in ("dev5", "all"):
-        from sdi.bench.language_dev5 import CASES as DEV5
-
-        sets.append(("dev5", DEV5))
-    if args.set in ("dev6", "all"):
-        from sdi.bench.language_dev6 import CASES as DEV6
-
-        sets.append(("dev6", DEV6))
-    if args.set in ("dev7", "all"):
-        from sdi.bench.language_dev7 import CASES as DEV7
-
-        sets.append(("dev7", DEV7))
-    if args.set in ("dev8", "all"):
-        from sdi.bench.language_dev8 import CASES as DEV8
-
-        sets.append(("dev8", DEV8))
-    if args.set in ("dev9", "all"):
-        from sdi.bench.language_dev9 import CASES as DEV9
-
-        sets.append(("dev9", DEV9))
-    if args.set in ("dev10", "all"):
-        from sdi.bench.language_dev10 import CASES as DEV10
-
-        sets.append(("dev10", DEV10))
-    if args.set in ("dev11", "all"):
-        from sdi.bench.language_dev11 import CASES as DEV11
-
-        sets.append(("dev11", DEV11))
-    if args.set in ("dev12", "all"):
-        from sdi.bench.language_dev12 import CASES as DEV12
-
-        sets.append(("dev12", DEV12))
-    if args.set in ("dev13", "all"):
-        from sdi.bench.language_dev13 import CASES as DEV13
-
-        sets.append(("dev13", DEV13))
-    if args.set in ("dev14", "all"):
-        from sdi.bench.language_dev14 import CASES as DEV14
-
-        sets.append(("dev14", DEV14))
-    if args.set in ("test", "both", "all"):
-        from sdi.bench.language_test import CASES as TEST
-
-        sets.append(("test", TEST))
+    chosen = {"both": ("dev", "test"), "all": SETS}.get(args.set, (args.set,))
+    sets: list[tuple[str, Sequence[Case]]] = [
+        (name, importlib.import_module(f"sdi.bench.language_{name}").CASES) for name in chosen
+    ]
     RESULTS.mkdir(parents=True, exist_ok=True)
     for name, cases in sets:
         res = run_set(name, cases)
