@@ -68,7 +68,7 @@ bench: $(STAMP) $(LOCAL_STAMP) $(TWIN_STAMP) browser
 	$(PY) benchmarks/plan_latency.py
 	$(PY) benchmarks/language.py --set all
 	$(VENV)/bin/sdi bench --out benchmarks/results/suite_rules.json --force
-	$(VENV)/bin/sdi bench --suite all --method pipeline --method paper --physics --jobs 2 \
+	$(VENV)/bin/sdi bench --suite all --method pipeline --method paper --physics --jobs 2 --force \
 	  --report benchmarks/results/suites
 	$(PY) benchmarks/methods.py --backend rules
 	$(PY) benchmarks/methods.py --backend local --phase-seconds 60
