@@ -1210,6 +1210,25 @@ def test_a_second_layer_said_alone_goes_on_top_and_so_does_a_third():
     assert len({(round(p.position[0], 3), round(p.position[1], 3)) for p in r.layout}) == 6
 
 
+@pytest.mark.parametrize(
+    ("command", "region"),
+    [
+        ("a stack of 4, don't use the right half of the table", "left"),  # it was built there
+        ("a row of 3 and stay out of the front part", "back"),
+        ("a pad 2x2, never touch the back side of the table", "front"),
+    ],
+)
+def test_a_half_of_the_table_to_avoid_puts_the_structure_in_the_other(command, region):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.region for s in r.spec.structures] == [region]
+
+
+def test_across_the_tops_of_two_stacks_a_beam():
+    r = plan("Across the tops of two stacks of 4 cubes, a beam.")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 4)]
+
+
 def test_gaps_said_in_bricks_and_plurals_and_a_misspelt_apart():
     for command in ("two stacks of 3 with a gap of one brick", "two stacks of 3, 1 cube gaps",
                     "two stacks of 3, one cube appart"):  # fmt: skip

@@ -24,6 +24,7 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("on", "the", "centre", "of"), "on", None),
     (("on", "the", "center", "of"), "on", None),
     (("across", "the", "top", "of"), "on", None),
+    (("across", "the", "tops", "of"), "on", None),
     (("across",), "on", None),
     (("on", "top", "of"), "on", None),
     (("on", "the", "top", "of"), "on", None),

@@ -437,6 +437,18 @@ _REWRITES += [
         " on the {opposite} ",
         "read '{0}' as on the {opposite}",
     ),
+    (  # "don't use the left half of the table", "stay out of the back part"
+        re.compile(
+            r",?\s*\b(?:but\s+|and\s+)?(?:do\s+not|never|must\s+not|cannot|can\s+not)\s+"
+            r"(?:use|touch|go\s+(?:into|in|on)|build\s+(?:on|in)|put\s+anything\s+(?:on|in))\s+"
+            r"the\s+(left|right|front|back)\s+(?:half|side|part|end)(?:\s+of\s+the\s+table)?\b"
+            r"|,?\s*\b(?:and\s+)?(?:stay|keep)\s+out\s+of\s+the\s+(left|right|front|back)\s+"
+            r"(?:half|side|part|end)(?:\s+of\s+the\s+table)?\b",
+            re.IGNORECASE,
+        ),
+        "{region_avoided}",
+        "",
+    ),
     (
         re.compile(
             r"\b(?:(?:and\s+)?keep\s+(?:it|them)\s+)away\s+from\s+the\s+"
