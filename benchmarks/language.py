@@ -28,7 +28,7 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-from sdi.bench.language_checks import OUTCOMES, PHENOMENA, Case, score
+from sdi.bench.language_checks import OUTCOMES, PHENOMENA, SETS, Case, score
 from sdi.pipeline import plan
 
 RESULTS = Path(__file__).parent / "results"
@@ -90,10 +90,6 @@ def table(name: str, res: dict[str, Any]) -> str:
             f"{s['silent_misreadings']:>6} {s['median_ms']:>6.1f}"
         )
     return "\n".join(lines)
-
-
-SETS = ("dev", *(f"dev{n}" for n in range(2, 15)), "test")
-"""Every set, in the order they were written (dev10 and test held out)."""
 
 
 def main(argv: Sequence[str] | None = None) -> int:

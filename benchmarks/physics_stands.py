@@ -265,12 +265,12 @@ def unseen(seeds: int, limit: int | None = None) -> dict[str, Any]:
     is assembled like the suite's. `limit`: at most that many commands per set."""
     import importlib
 
+    from sdi.bench.language_checks import SETS
     from sdi.pipeline import plan
 
-    sets = ["test", *(f"dev{n}" for n in ("", 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13))]
     verified = stood = 0
     fell: list[dict[str, Any]] = []
-    for name in sets:
+    for name in SETS:
         cases = importlib.import_module(f"sdi.bench.language_{name}").CASES[:limit]
         for case in cases:
             r = plan(case.text)
@@ -282,7 +282,7 @@ def unseen(seeds: int, limit: int | None = None) -> dict[str, Any]:
                 stood += 1
             else:
                 fell.append({"id": case.id, "text": case.text, **worst.to_json_dict()})
-    return {"sets": sets, "limit": limit, "verified": verified, "stand": stood, "fell": fell}
+    return {"sets": list(SETS), "limit": limit, "verified": verified, "stand": stood, "fell": fell}
 
 
 TALL = (

@@ -281,6 +281,10 @@ def test_set_sizes_ids_and_phenomena(name):
     assert all(callable(c.accept) for c in cases)
 
 
+def test_the_benchmarks_list_of_sets_is_every_set_here():
+    assert list(k.SETS) == list(SETS)  # the benchmarks read k.SETS; a set left out goes unmeasured
+
+
 def test_ids_are_unique_across_every_set():
     ids = [c.id for cases, *_ in SETS.values() for c in cases]
     assert len(ids) == len(set(ids))
