@@ -468,16 +468,6 @@ def _times(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} {groups[1]} "
 
 
-_OPPOSITE_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
-
-
-def _region_avoided(m: re.Match[str], st: ReadState, note: str) -> str:
-    """ "don't use the left half of the table": on the other half."""
-    side = next(g for g in _said(m)[1] if g)
-    st.notes.append(f"read '{m.group(0).strip(' ,')}' as on the {_OPPOSITE_SIDE[side]}")
-    return f" on the {_OPPOSITE_SIDE[side]} "
-
-
 def _layer_on_top(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "then a second layer" (a layer goes on top), and "then a third" after layers."""
     if m.group(1):
@@ -563,7 +553,6 @@ HANDLERS: dict[str, Handler] = {
     "{climb}": _climb,
     "{across_them}": _across_them,
     "{layer_on_top}": _layer_on_top,
-    "{region_avoided}": _region_avoided,
     "{rows}": _rows,
     "{rows_of}": _rows_of,
     "{layers}": _layers,

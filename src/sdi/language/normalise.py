@@ -213,10 +213,8 @@ _HOMOPHONES = [
 ]
 
 
-_MEASURE = (
-    r"(\d+(?:\.\d+)?\s*(?:mm|cm|m|millimet(?:re|er)s?|centimet(?:re|er)s?|met(?:re|er)s?|"
-    r"cubes?)?)(?![\w.])"
-)
+_UNIT_SAID = r"(?:mm|cm|m|millimet(?:re|er)s?|centimet(?:re|er)s?|met(?:re|er)s?|cubes?)"
+_MEASURE = rf"(\d+(?:\.\d+)?\s*{_UNIT_SAID}?)(?![\w.])"
 _DIM_WORD = {"length": "long", "height": "high", "width": "wide", "depth": "deep",
              "thickness": "thick", "l": "long", "h": "high", "w": "wide", "d": "deep"}  # fmt: skip
 # "with length of 0.3 meter and height of 0.1 meter": the value with its dimension word
@@ -237,6 +235,16 @@ _LETTER_LIST = re.compile(
 )
 
 
+# "h=2", "L=5 cubes" (read before the "4 h" shorthand would take the h; not "W x D x H =")
+_LETTER_EQ = re.compile(
+    r"(?<!\bx\s)(?<!\bx)\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?", re.IGNORECASE
+)
+
+
+def _letter_eq(m: re.Match[str]) -> str:
+    return f" {m.group(2)} {m.group(3) or ''} {_DIM_WORD[m.group(1).lower()]} "
+
+
 def _letter_list(m: re.Match[str]) -> str:
     values = [m.group(2), *re.findall(r"\d+", m.group(3))]
     return f" , {', '.join(values[:-1])} and {values[-1]} {_DIM_WORD[m.group(1).lower()]} "
@@ -249,8 +257,8 @@ def _dimensioned(m: re.Match[str]) -> str:
 # "side 20 cm, thick 10 cm", "high 3": the dimension word said before its value, as a list item
 _DIM_FIRST = re.compile(
     r"(^|[,;:]\s*|\band\s+)(thick|high|tall|long|wide|deep)\s+(\d+(?:\.\d+)?\s*"
-    r"(?:mm|cm|m|millimet(?:re|er)s?|centimet(?:re|er)s?|met(?:re|er)s?|cubes?)?)"
-    r"(?=\s*(?:$|[,;.]|\band\b))",
+    + _UNIT_SAID
+    + r"?)(?=\s*(?:$|[,;.]|\band\b))",
     re.IGNORECASE,
 )
 
@@ -446,16 +454,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     if quantities:  # "qty: 3 / item: tower …": the line's structure, that many times
         text = f"{text.rstrip(' ./;,')} , {quantities[0]} of them"
     text = _LETTER_LIST.sub(_letter_list, text)  # "h=2/h=4/h=6": one value each
-    text = re.sub(  # "h=2", "L=5" before "4 h" shorthand reads the h
-        r"(?<!\bx\s)(?<!\bx)\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?",
-        lambda m: (
-            f" {m.group(2)} {m.group(3) or ''} "
-            + {"L": "long", "H": "high", "W": "wide"}[m.group(1).upper()]
-            + " "
-        ),
-        text,
-        flags=re.IGNORECASE,
-    )
+    text = _LETTER_EQ.sub(_letter_eq, text)
     for pattern, repl in _SHORTHAND:
 
         def expand(m: re.Match[str], repl: str = repl) -> str:

@@ -221,7 +221,7 @@ _REWRITES += [
     (
         re.compile(
             r",?\s*\b(?:(?:climbing|rising|ascending|going|stepping)\s+up|climbing|rising|"
-            r"ascending|going\s+up|stepping\s+up)\s+(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+)?"
+            r"ascending)\s+(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+)?"
             r"(left|right|front|back)\b|,?\s*\bup\s+to(?:wards)?\s+the\s+(left|right|front|back)\s+"
             r"(?:climbing|rising|ascending|going)\b",
             re.IGNORECASE,
@@ -439,15 +439,14 @@ _REWRITES += [
     ),
     (  # "don't use the left half of the table", "stay out of the back part"
         re.compile(
-            r",?\s*\b(?:but\s+|and\s+)?(?:do\s+not|never|must\s+not|cannot|can\s+not)\s+"
-            r"(?:use|touch|go\s+(?:into|in|on)|build\s+(?:on|in)|put\s+anything\s+(?:on|in))\s+"
-            r"the\s+(left|right|front|back)\s+(?:half|side|part|end)(?:\s+of\s+the\s+table)?\b"
-            r"|,?\s*\b(?:and\s+)?(?:stay|keep)\s+out\s+of\s+the\s+(left|right|front|back)\s+"
+            r",?\s*\b(?:(?:but\s+|and\s+)?(?:do\s+not|never|must\s+not|cannot|can\s+not)\s+"
+            r"(?:use|touch|go\s+(?:into|in|on)|build\s+(?:on|in)|put\s+anything\s+(?:on|in))|"
+            r"(?:and\s+)?(?:stay|keep)\s+out\s+of)\s+the\s+(left|right|front|back)\s+"
             r"(?:half|side|part|end)(?:\s+of\s+the\s+table)?\b",
             re.IGNORECASE,
         ),
-        "{region_avoided}",
-        "",
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
     ),
     (
         re.compile(
