@@ -1570,3 +1570,41 @@ def test_a_relation_said_before_its_subject_and_a_distance_away():
         "a stack of two at the front, behind it a stack of four, and behind that one a stack of six"
     )
     assert sorted(s.height for s in r.spec.structures) == [2, 4, 6]
+
+
+# -- against an edge of the workspace -----------------------------------------------------------
+WS = {"back": (0, 0.80), "front": (0, 0.20), "left": (1, 0.55), "right": (1, 0.05)}
+
+
+@pytest.mark.parametrize(
+    "command, side",
+    [
+        ("a 3 by 2 pad pushed as far forward as it can go", "front"),
+        ("stack 5 cubes as far to the right as possible", "right"),
+        ("a wall 4 long, flush with the back edge of the table", "back"),
+        ("a block 2x2x2 all the way over to the left", "left"),
+        ("two cubes in a row, at the front, the furthest they can go", "front"),
+        ("a row of six parallel to the right edge", "right"),
+    ],
+)
+def test_a_structure_said_against_an_edge_touches_that_boundary(command, side):
+    r = plan(command)
+    assert r.status == "success", (r.error, r.notes)
+    lo, hi = boxes(r)
+    d, bound = WS[side]
+    reach = hi[:, d].max() if side in ("back", "left") else lo[:, d].min()
+    assert np.isclose(reach, bound, atol=1e-6), (side, reach)
+    assert any("edge of the workspace" in n for n in r.notes)
+
+
+def test_a_distance_from_an_edge_is_not_against_it_and_a_plain_side_is_not_an_edge():
+    _, hi = boxes(plan("a tower of 2 set 10 cm from the left edge"))
+    assert np.isclose(hi[:, 1].max(), 0.55 - 0.10, atol=0.026)  # 10 cm in, not flush
+    _, hi = boxes(plan("a tower of 2 on the left"))
+    assert hi[:, 1].max() < 0.55 - 0.04  # the left region, not the boundary
+
+
+def test_parallel_to_a_side_edge_runs_front_to_back():
+    lo, hi = boxes(plan("a row of five parallel to the left edge"))
+    assert hi[:, 0].max() - lo[:, 0].min() > 0.2  # five parts along x
+    assert np.isclose(hi[:, 1].max(), 0.55)

@@ -105,7 +105,7 @@ def stated_numbers(command: str) -> set[float]:
     return out
 
 
-_PLACE = ("at_x", "at_y", "region", "axis", "dims", "part", "shape")
+_PLACE = ("at_x", "at_y", "region", "edge", "axis", "dims", "part", "shape")
 
 
 def disagreement(rules: Spec, model: Spec, stated: set[float] | None = None) -> str | None:

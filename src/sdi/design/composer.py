@@ -132,6 +132,19 @@ def _target(spec: StructureSpec, cell: CellConfig) -> tuple[float | None, float 
         rx, ry = regions[spec.region]
         x = rx if x is None else x
         y = ry if y is None else y
+    if spec.edge:
+        # against a side of the workspace: the boundary itself, which `_clamp` turns into as
+        # far that way as the footprint fits
+        ws = cell.workspace
+        bounds = {"back": (ws.x_max, None), "front": (ws.x_min, None),
+                  "left": (None, ws.y_max), "right": (None, ws.y_min)}  # fmt: skip
+        cx, cy = cell.design.regions.get("centre", cell.design.anchor)
+        for side in spec.edge:
+            bx, by = bounds[side]
+            x = bx if bx is not None and spec.at_x is None else x
+            y = by if by is not None and spec.at_y is None else y
+        x = cx if x is None else x
+        y = cy if y is None else y
     return x, y
 
 
@@ -197,7 +210,8 @@ def _place_all(
     """Footprint centres: stated coordinates exactly, regions and the rest nearest free spot.
 
     Stated coordinates are kept (an unstated axis may slide to avoid another structure); a
-    named region is a preference the structure is pulled into and moved from to stay clear;
+    named region, or an edge of the workspace, is a preference the structure is pulled into
+    and moved from to stay clear;
     structures with neither go side by side along y around the anchor (along x, front to
     back, when `line` is "x").
     """
@@ -247,8 +261,10 @@ def _place_all(
             )
         put(k, spot)
     # 2. named regions, 3. the rest side by side along y around the anchor
-    regional = [k for k, p in enumerate(placed) if centres[k] is None and p.spec.region]
-    free = [k for k, p in enumerate(placed) if centres[k] is None and not p.spec.region]
+    regional = [
+        k for k, p in enumerate(placed) if centres[k] is None and (p.spec.region or p.spec.edge)
+    ]
+    free = [k for k in range(len(placed)) if centres[k] is None and k not in regional]
     wants: list[tuple[int, np.ndarray, str]] = []
     for k in regional:
         x, y = _target(placed[k].spec, cell)

@@ -25,7 +25,7 @@ from sdi.spec.structure_spec import (
     family_slots,
 )
 
-COMMON = frozenset({"shape", "axis", "yaw_deg", "at_x", "at_y", "region", "part"})
+COMMON = frozenset({"shape", "axis", "yaw_deg", "at_x", "at_y", "region", "edge", "part"})
 
 
 @dataclass(frozen=True)

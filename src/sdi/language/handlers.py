@@ -368,6 +368,14 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" running {other} "
 
 
+def _edge(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "as far forward as it can go": against that edge of the workspace."""
+    said, groups = _said(m)
+    side = {"forward": "front", "forwards": "front", "backward": "back", "backwards": "back"}
+    st.notes.append(f"read '{said}' as against that edge of the workspace")
+    return f" at the {side.get(groups[0], groups[0])} edge "
+
+
 def _every_side(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a solid block 100 mm on every side": a block's sides all that size (a flat family's
     "5 on each side" is read by the grammar)."""
@@ -548,6 +556,7 @@ HANDLERS: dict[str, Handler] = {
     "{more_like}": _more_like,
     "{distribute}": _distribute,
     "{not_axis}": _not_axis,
+    "{edge}": _edge,
     "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,

@@ -1427,6 +1427,9 @@ def _another(text: str) -> str:
 
 
 # "two towers of 3, one at the far left, one at the far right" (handler: one item per copy)
+_CLOSE_TO_IT = r"(?:\s*,?\s*(?:close|near|right|next)\s+(?:to\s+)?it\b)?"
+"""', close to it' after an edge: the edge, said again."""
+
 _REWRITES += [
     # "a 3x3 pad with a 2x2 pad on top of it and a cube on top of that": after a relation's
     # pronoun, "and a …" starts the next structure (its own clause)
@@ -1482,6 +1485,63 @@ _REWRITES += [
         ),
         "{not_axis}",
         "",
+    ),
+    # Against a side of the workspace: "hugging the right boundary", "flush with the back
+    # edge", "parallel to the left edge, close to it", "as far back as it can go", "all the
+    # way to the left", "at the back, the furthest it can" (the grammar reads "at the back
+    # edge" into the structure's `edge`)
+    (  # "parallel to the left edge": it runs front to back, along that edge
+        re.compile(r"\bparallel\s+(?:to|with)\s+the\s+(left|right)\s+edge\b" + _CLOSE_TO_IT, re.I),
+        " along x at the {0} edge ",
+        "read '{0}' as running front to back against that edge of the workspace",
+    ),
+    (
+        re.compile(r"\bparallel\s+(?:to|with)\s+the\s+(back|front)\s+edge\b" + _CLOSE_TO_IT, re.I),
+        " along y at the {0} edge ",
+        "read '{0}' as running left to right against that edge of the workspace",
+    ),
+    (
+        re.compile(
+            r"\b(?:(?:right|up|snug|tight)\s+)*(?:hugging|flush\s+(?:with|against|to)|against|"
+            r"along|alongside|touching|close\s+to|next\s+to|near|by)\s+the\s+"
+            r"(left|right|back|front)\s+(?:edge|boundary|border|limit)"
+            r"(?:\s+of\s+the\s+(?:table|workspace|work\s*space|work\s*area|cell|area))?"
+            + _CLOSE_TO_IT,
+            re.IGNORECASE,
+        ),
+        " at the {0} edge ",
+        "read '{0}' as against that edge of the workspace",
+    ),
+    (
+        re.compile(
+            r"\b(?:(?:pushed|moved|shoved|slid|placed|set|put)\s+)?as\s+far\s+"
+            r"(?:to\s+the\s+|towards?\s+the\s+|over\s+to\s+the\s+)?"
+            r"(left|right|back|front|forwards?|backwards?)\s+as\s+(?:[\w']+\s+){0,3}?"
+            r"(?:go|goes|get|gets|possible|fit|fits|reach|reaches|allowed|permitted|can)\b"
+            r"(?:\s+(?:go|get|fit|reach))?",
+            re.IGNORECASE,
+        ),
+        "{edge}",
+        "read '{0}' as against that edge of the workspace",
+    ),
+    (
+        re.compile(
+            r"\ball\s+the\s+way\s+(?:to\s+the\s+|at\s+the\s+|over\s+to\s+the\s+|"
+            r"(?:to\s+the\s+)?)(left|right|back|front)\b",
+            re.IGNORECASE,
+        ),
+        " at the {0} edge ",
+        "read '{0}' as against that edge of the workspace",
+    ),
+    (
+        re.compile(
+            r"\b(?:far\s+(?:away\s+)?)?(?:at|to|in|on)\s+the\s+(left|right|back|front)\s*,?\s*"
+            r"(?:the\s+|as\s+)?(?:furthest|farthest|far)\s+(?:as\s+)?(?:[\w']+\s+){0,2}?"
+            r"(?:can|possible|go|goes)\b(?:\s+go)?",
+            re.IGNORECASE,
+        ),
+        " at the {0} edge ",
+        "read '{0}' as against that edge of the workspace",
     ),
 ]
 

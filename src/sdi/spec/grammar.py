@@ -33,6 +33,7 @@ from sdi.spec.structure_spec import SpecDraft, StructureDraft
 
 _TOKEN = re.compile(r"\d+(?:\.\d+)?|\.\d+|[a-z]+|[=:(),;°×*+&\-/]")
 _SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "", "'": "", "°": " deg ", "\u00a0": " "}
+_SIDES = ("left", "right", "front", "back")
 
 # Default parameters of each family by vague size class (S, M, L). Keys are StructureDraft fields.
 SIZE_TABLE: dict[str, dict[str, tuple[int, int, int]]] = {
@@ -1036,6 +1037,16 @@ class _Parser:
                 p.setdefault("_regions", []).append("corner")
                 take(k)
                 continue
+            sides = [self.word(j) for j in (k - 1, k - 2) if self.word(j) in _SIDES]
+            if (
+                w in ("edge", "edges", "boundary", "border")
+                and sides
+                and "from" not in (self.word(k - 3), self.word(k - 4))
+            ):
+                # "along the back edge", "hugging the right boundary": against that side
+                p.setdefault("_edges", []).append(sides[0])
+                take(k)
+                continue
             if w in (
                 "apart",
                 "spaced",
@@ -1296,6 +1307,7 @@ class _Parser:
         shape = h.shape
         sizes = p.pop("_sizes", [])
         regions = p.pop("_regions", [])
+        edges = p.pop("_edges", [])
         count = p.pop("_count", None)
         loose = p.pop("_loose", [])
         tower_height = p.pop("_tower_height", None)
@@ -1467,6 +1479,8 @@ class _Parser:
         region = _region(regions)
         if region:
             p["region"] = region
+        if edges:
+            p["edge"] = tuple(dict.fromkeys(edges))
         if self.beam and shape in ("tower", "row", "grid", "wall"):
             p["part"] = "beam"
         kwargs = {k: v for k, v in p.items() if k in StructureDraft.model_fields}

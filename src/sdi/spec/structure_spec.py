@@ -28,6 +28,7 @@ Shape = Literal[
 SHAPES: tuple[str, ...] = Shape.__args__  # type: ignore[attr-defined]
 
 Count = int | None
+Side = Literal["left", "right", "front", "back"]
 
 # The slots, one type each: a family declares the ones it uses (with its own description
 # where the meaning is its own).
@@ -47,8 +48,8 @@ GapM = Annotated[float | None, Field(ge=0, le=0.5, description="gap between neig
 # Every field, in the order `describe` lists them.
 FIELDS: tuple[str, ...] = (
     "shape", "count", "length", "width", "height", "steps", "span", "spans", "dims",
-    "length_m", "width_m", "height_m", "axis", "yaw_deg", "at_x", "at_y", "region", "part",
-    "gap_m",
+    "length_m", "width_m", "height_m", "axis", "yaw_deg", "at_x", "at_y", "region", "edge",
+    "part", "gap_m",
 )  # fmt: skip
 
 
@@ -62,6 +63,9 @@ class _Structure(BaseModel):
     at_x: float | None = Field(None, description="footprint centre x, m")
     at_y: float | None = Field(None, description="footprint centre y, m")
     region: str | None = Field(None, description="named region of the cell (left, back right…)")
+    edge: tuple[Side, ...] = Field(
+        (), description="sides of the workspace it stands against (as far that way as it fits)"
+    )
     part: str = Field("cube", description="part type name from the cell configuration")
 
     @model_validator(mode="before")
@@ -80,10 +84,12 @@ class _Structure(BaseModel):
 
     def describe(self) -> str:
         """Short human summary, e.g. ``tower height=3 at (0.4, ·)``."""
-        values = self.model_dump(exclude_none=True, exclude={"part", "yaw_deg"})
+        values = self.model_dump(exclude_none=True, exclude={"part", "yaw_deg", "edge"})
         parts = [f"{k}={values[k]}" for k in FIELDS if k in values and k != "shape"]
         if self.yaw_deg:
             parts.append(f"yaw={self.yaw_deg:g}°")
+        if self.edge:
+            parts.append(f"edge={'+'.join(self.edge)}")
         if self.part != "cube":
             parts.append(f"part={self.part}")
         return " ".join([values["shape"], *parts])
@@ -333,6 +339,9 @@ class StructureDraft(BaseModel):
     at_x: float | None = Field(None, description="footprint centre x, m")
     at_y: float | None = Field(None, description="footprint centre y, m")
     region: str | None = Field(None, description="named region of the cell (left, back right…)")
+    edge: tuple[Side, ...] = Field(
+        (), description="sides of the workspace it stands against (as far that way as it fits)"
+    )
     part: str = Field("cube", description="part type name from the cell configuration")
     gap_m: GapM = None
 
@@ -350,7 +359,6 @@ class SpecDraft(BaseModel):
 
 
 RelationKind = Literal["on_top_of", "around", "next_to"]
-Side = Literal["left", "right", "front", "back"]
 Anchor = Literal["corners", "ends", "corner", "end"]
 
 
