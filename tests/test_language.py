@@ -1608,3 +1608,36 @@ def test_parallel_to_a_side_edge_runs_front_to_back():
     lo, hi = boxes(plan("a row of five parallel to the left edge"))
     assert hi[:, 0].max() - lo[:, 0].min() > 0.2  # five parts along x
     assert np.isclose(hi[:, 1].max(), 0.55)
+
+
+# -- a bound the structure must stay below ------------------------------------------------------
+@pytest.mark.parametrize(
+    "command, levels",
+    [
+        ("a stack that stays below 4 cubes high", 3),
+        ("a tower, keep it under seven tall", 6),
+        ("a column less than 15 cm tall", 2),  # whole 5 cm parts strictly below 15 cm
+        ("a staircase with fewer than five steps", 4),
+        ("a pyramid lower than 4 levels", 3),
+    ],
+)
+def test_a_strict_upper_bound_builds_the_most_below_it(command, levels):
+    r = plan(command)
+    assert r.status == "success", (r.error, r.notes)
+    _, hi = boxes(r)
+    assert np.isclose(hi[:, 2].max(), 0.05 * levels)
+    assert any("the most below" in n for n in r.notes)
+
+
+def test_a_bound_on_a_gate_bounds_the_whole_gate_not_its_pillars():
+    r = plan("a gate for the hallway, but keep it under 5 cubes tall")
+    _, hi = boxes(r)
+    assert hi[:, 2].max() <= 0.20 + 1e-9  # pillars and the beam on them, below 5 parts
+    r = plan("a gate whose pillars are under 5 cubes tall")
+    _, hi = boxes(r)
+    assert np.isclose(hi[:, 2].max(), 0.25)  # pillars 4, the beam on them
+
+
+def test_a_bound_nothing_fits_below_is_reported():
+    r = plan("a tower under 1 cube tall")
+    assert r.status != "success" and any("nothing can be built below" in n for n in r.notes)

@@ -264,6 +264,46 @@ def _at_most(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" , {groups[1]} high "
 
 
+def _below(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "keep it under six bricks tall", "fewer than 5 steps": the most below the bound."""
+    said, groups = _said(m)
+    bound = words_to_numbers([groups[0]])[0]
+    unit, what = groups[1].strip(), groups[2].strip()
+    limit = f"{bound} {unit}" if unit in _MM else bound
+    if not bound.isdigit():
+        return m.group(0)
+    most = int(bound) - 1
+    if unit in _MM:
+        most = -(-int(bound) * _MM[unit] // 50) - 1  # whole 5 cm parts strictly below
+        unit = "cubes"
+    what = "high" if what in ("tall", "in height") else what
+    if not what.endswith("s") and what != "high":
+        what += "s"
+    if most < 1:
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': nothing can be built below that")
+        return " "
+    roofed = [
+        w for w in re.findall(r"[a-z]+", m.string.lower())
+        if lx.SHAPE_WORDS.get(w) in ("bridge", "canopy")
+    ]  # fmt: skip
+    pillars = re.search(r"\b(?:pillars?|legs?|posts?)\b", m.string, re.I)
+    if what == "high" and roofed and not pillars:
+        # the whole gate stays below the bound: its pillars one part lower, under the beam
+        if most < 2:
+            return m.group(0)
+        st.notes.append(
+            f"read '{said}' as the whole {roofed[0]} at most {most} high: pillars {most - 1} high"
+        )
+        return f" , {most - 1} high "
+    size = f"{most} {what}" if what != "high" else f"{most} {unit + ' ' if unit else ''}high"
+    st.notes.append(f"read '{said}' as {size} (the most below {limit})")
+    return f" , {size} "
+
+
+_MM = {"cm": 10, "mm": 1, "centimetres": 10, "centimeters": 10}
+
+
 def _unsupported(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "floating above the table", "down into the table": nothing SDI builds can do that."""
     said = _said(m)[0]
@@ -557,6 +597,7 @@ HANDLERS: dict[str, Handler] = {
     "{distribute}": _distribute,
     "{not_axis}": _not_axis,
     "{edge}": _edge,
+    "{below}": _below,
     "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,

@@ -869,6 +869,19 @@ _REWRITES += [
         " ",
         "'{0}': built solid",
     ),
+    (  # "keep it under six bricks tall", "fewer than 5 steps": the most below the bound
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+|and\s+)?(?:keep(?:ing)?\s+(?:it|them|the\s+\w+)\s+|"
+            r"(?:that\s+|which\s+)?(?:stays?|is|are|remains?)\s+)?"
+            r"(?:under|below|beneath|less\s+than|fewer\s+than|lower\s+than|shorter\s+than)\s+"
+            r"(\d+|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\s*"
+            r"(cubes?|bricks?|blocks?|parts?|cm|mm|centimet(?:re|er)s)?\s*"
+            r"(tall|high|in\s+height|levels?|layers?|steps?|floors?|tiers?|storeys?)\b",
+            re.IGNORECASE,
+        ),
+        "{below}",
+        "",
+    ),
     (  # "don't make the pillars taller than 2": at most 2, built 2
         re.compile(
             r",?\s*\b(?:but\s+)?(?:do\s+not|never)\s+(?:make|build|let)\s+(it|them|the\s+\w+)\s+"
