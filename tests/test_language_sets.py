@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to fourteenth dev sets (dev2 … dev14) are held to the same checks and share no
+second to fifteenth dev sets (dev2 … dev15) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ from sdi.bench.language_dev11 import CASES as DEV11
 from sdi.bench.language_dev12 import CASES as DEV12
 from sdi.bench.language_dev13 import CASES as DEV13
 from sdi.bench.language_dev14 import CASES as DEV14
+from sdi.bench.language_dev15 import CASES as DEV15
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -257,6 +258,7 @@ SETS = {
     "dev7": (DEV7, 120, 10, 0), "dev8": (DEV8, 120, 10, 0), "dev9": (DEV9, 120, 10, 0),
     "dev10": (DEV10, 120, 10, 0), "dev11": (DEV11, 150, 8, 15), "dev12": (DEV12, 150, 8, 15),
     "dev13": (DEV13, 160, 8, 15), "dev14": (DEV14, 160, 8, 15),
+    "dev15": (DEV15, 160, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -265,6 +267,7 @@ HARD = {
     "dev12": ("relation", "numbers", "dimensions", "sequence"),
     "dev13": ("relation", "numbers", "dimensions", "sequence"),
     "dev14": ("relation", "numbers", "dimensions", "sequence"),
+    "dev15": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -325,6 +328,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV12,
         *DEV13,
         *DEV14,
+        *DEV15,
         *TEST,
     ):
         out = case.accept(result)
@@ -359,6 +363,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev12.py",
         "language_dev13.py",
         "language_dev14.py",
+        "language_dev15.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -2354,5 +2359,135 @@ def _dev14(case_id: str) -> Case:
 )
 def test_dev14_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev14(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev15
+
+
+def _dev15(case_id: str) -> Case:
+    return next(c for c in DEV15 if c.id == case_id)
+
+
+_L4_ARMS = [*_row_y(0.40, 0.20, 4), *_row_x(0.45, 0.20, 3)]  # arms of 4 sharing the corner
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev15-rel-01",  # a 2-tower one cube clear to the left (+y) of a 4-tower
+            res(*column(0.45, 0.30, 4), *column(0.45, 0.40, 2)),
+            res(*column(0.45, 0.30, 4), *column(0.45, 0.20, 2)),
+        ),
+        (
+            "dev15-rel-13",  # a 3x3 plinth with a 2-cube column on each corner
+            res(
+                *grid(0.40, 0.25, 3, 3),
+                *[c for x in (0.40, 0.50) for y in (0.25, 0.35) for c in column(x, y, 2, z0=C)],
+            ),
+            res(
+                *grid(0.40, 0.25, 3, 3),
+                *[c for x in (0.40, 0.45) for y in (0.25, 0.35) for c in column(x, y, 2, z0=C)],
+            ),
+        ),
+        (
+            "dev15-rel-19",  # 3-towers left and right of a 6-tower, 2 cubes clear
+            res(*column(0.45, 0.15, 3), *column(0.45, 0.30, 6), *column(0.45, 0.45, 3)),
+            res(*column(0.45, 0.15, 6), *column(0.45, 0.30, 3), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev15-rel-19",  # the centre-to-centre reading of "in distance of 2 cubes"
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.30, 6), *column(0.45, 0.40, 3)),
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.30, 6), *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev15-rel-20",  # a one-high fence round a 3-tower, apart from it
+            res(*ring(0.35, 0.20, 5), *column(0.45, 0.30, 3)),
+            res(*ring(0.35, 0.20, 5), *column(0.70, 0.30, 3)),
+        ),
+        (
+            "dev15-rel-20",  # or hugging it (one structure)
+            res(*ring(0.40, 0.25, 3), *column(0.45, 0.30, 3)),
+            res(*ring(0.40, 0.25, 3, high=3), *column(0.45, 0.30, 3)),
+        ),
+        (
+            "dev15-rel-21",  # an L of 4-arms, a 2-tower in the inside corner touching both
+            res(*_L4_ARMS, *column(0.45, 0.25, 2)),
+            res(*_L4_ARMS, *column(0.45, 0.15, 2)),
+        ),
+        (
+            "dev15-seq-02",  # a 6x2 wall with both end cubes of the top course taken off
+            res(*_row_y(0.45, 0.20, 6), *_row_y(0.45, 0.25, 4, z0=C)),
+            res(*_row_y(0.45, 0.20, 6), *_row_y(0.45, 0.20, 4, z0=C)),
+        ),
+        (
+            "dev15-seq-12",  # 3, (removed), 3+3: a 3-tower three cubes left of a 6-tower
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.20, 6)),
+            res(*column(0.45, 0.40, 6), *column(0.45, 0.20, 3)),
+        ),
+        (
+            "dev15-seq-18",  # a 3-pillar gate with a 2-cube column over each pillar
+            res(
+                *_bridge(0.45, 0.30, 3),
+                *column(0.45, 0.25, 2, z0=4 * C),
+                *column(0.45, 0.35, 2, z0=4 * C),
+            ),
+            res(*_bridge(0.45, 0.30, 3), *column(0.45, 0.30, 2, z0=4 * C)),
+        ),
+        (
+            "dev15-num-16",  # four 3-towers a cube apart: a line or a square cluster
+            res(*[c for x in (0.40, 0.50) for y in (0.25, 0.35) for c in column(x, y, 3)]),
+            res(*[c for y in (0.15, 0.25, 0.35, 0.50) for c in column(0.45, y, 3)]),
+        ),
+        (
+            "dev15-neg-12",  # a 3x3x3 block without the centre cube of the top layer
+            res(
+                *grid(0.40, 0.25, 3, 3, layers=2),
+                *[
+                    c
+                    for c in grid(0.40, 0.25, 3, 3, z0=2 * C)
+                    if not (
+                        math.isclose(c["position"][0], 0.45)
+                        and math.isclose(c["position"][1], 0.30)
+                    )
+                ],
+            ),
+            res(*grid(0.40, 0.25, 3, 3, layers=3)),
+        ),
+        (
+            "dev15-dim-13",  # 4 deep (x), 3 wide (y), 2 high
+            res(*grid(0.40, 0.25, 4, 3, layers=2)),
+            res(*grid(0.40, 0.25, 3, 4, layers=2)),
+        ),
+        (
+            "dev15-dim-18",  # three 5-wide terraces climbing to the back
+            res(*[c for j in range(5) for c in _stairs_x(0.40, 0.20 + C * j, (1, 2, 3))]),
+            res(*[c for j in range(5) for c in _stairs_x(0.40, 0.20 + C * j, (3, 2, 1))]),
+        ),
+        (
+            "dev15-reg-11",  # a 3x3 slab 10 cm from the front border (x 0.20), edge or centre
+            res(*grid(0.325, 0.25, 3, 3)),
+            res(*grid(0.45, 0.25, 3, 3)),
+        ),
+        (
+            "dev15-open-12",  # mirror-symmetric: a 2x2 block between two equal towers
+            res(
+                *column(0.45, 0.20, 3), *grid(0.425, 0.275, 2, 2, layers=2), *column(0.45, 0.40, 3)
+            ),
+            res(
+                *column(0.45, 0.20, 3), *grid(0.425, 0.275, 2, 2, layers=2), *column(0.45, 0.40, 2)
+            ),
+        ),
+        (
+            "dev15-bad-13",  # x = 0.95 is outside the cell: refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.30, 4)),
+        ),
+    ],
+)
+def test_dev15_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev15(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
