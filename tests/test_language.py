@@ -1641,3 +1641,41 @@ def test_a_bound_on_a_gate_bounds_the_whole_gate_not_its_pillars():
 def test_a_bound_nothing_fits_below_is_reported():
     r = plan("a tower under 1 cube tall")
     assert r.status != "success" and any("nothing can be built below" in n for n in r.notes)
+
+
+# -- claims: what the command says must hold of the whole reading ------------------------------
+@pytest.mark.parametrize(
+    "command",
+    [
+        "five cubes in a line, none stacked, each one flat on the table",
+        "a 4 by 4 ring, please leave it empty inside",
+        "two stacks of 4 but they should never touch each other",
+        "a wall 3 long 2 high and nothing else on the table",
+        "a 2x2 slab with nothing on top of it",
+    ],
+)
+def test_a_claim_the_reading_keeps_is_noted_and_the_plan_succeeds(command):
+    r = plan(command)
+    assert r.status == "success", (r.error, r.notes)
+    assert any(": holds," in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command, claim",
+    [
+        ("a tower of 4 cubes, not stacked", "not stacked"),  # a tower is stacked
+        ("a 3x3 pad with a cube on top, and nothing on top of it at all", "nothing on top"),
+        ("a tower of 2 and they must not touch", "must not touch"),  # one structure
+        ("a 3 by 3 block with nothing inside", "nothing inside"),  # nothing hollow to be empty
+    ],
+)
+def test_a_claim_the_reading_breaks_makes_it_partial_naming_the_words(command, claim):
+    r = plan(command)
+    assert r.status == "partial", (r.error, r.notes)
+    assert any(n.startswith("ignored '") and claim in n for n in r.notes), r.notes
+
+
+def test_claims_are_cut_from_the_text_and_kept_on_the_reading():
+    reading = read("a row of 4, lying flat on the table, nothing else")
+    assert "flat" not in reading.text and "else" not in reading.text
+    assert not reading.material

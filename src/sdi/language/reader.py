@@ -40,7 +40,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import LimitError, SpecError
-from sdi.language import coherence, corrections, spacing, typos
+from sdi.language import claims, coherence, corrections, spacing, typos
 from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
@@ -77,6 +77,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     st.notes += corrected
     text = corrections.correct(text, st.notes)
     text = spacing.take_gap(text, st)
+    text = claims.take(text, st)
     text = rewrite(text, st)
     text = text.strip()
     doc = parse(text)
@@ -147,6 +148,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         ) from None
     spec = spacing.apply_gap(spec, st)
     coherence.check(doc, spec, st, {k for p in phrases for k in p.tokens})
+    claims.check(spec, st)
     return Reading(
         command=command,
         text=text.strip(),

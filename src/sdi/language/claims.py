@@ -1,0 +1,108 @@
+"""Claims: what a command says must hold of the whole reading, checked against it.
+
+"A row of 6, not stacked, all on the table", "two towers and they mustn't touch", "a ring
+without anything inside it", "one tower, nothing else": these words add no structure, size
+or place — they state a property of what is built. `take` cuts them out of the text before
+the grammar reads it (so they are not left over as unused words), and `check` tests each
+against the finished reading: a claim that holds becomes a note saying so; one that does
+not is material (the plan is `partial`), with a note naming the words.
+"""
+
+from __future__ import annotations
+
+import re
+
+from sdi.language.state import ReadState
+from sdi.spec.structure_spec import Spec
+
+_N = r"(?:,\s*)?\b(?:and\s+|but\s+)?"  # the joint before a claim
+_THEM = r"(?:they|them|it|the\s+\w+|both|all|each|none\s+of\s+them)"
+_INSIDE = r"(?:inside|within|in\s+the\s+(?:middle|centre|center)|in\s+it)(?:\s+(?:it|of\s+it))?"
+
+_CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
+    (kind, re.compile(pattern, re.IGNORECASE))
+    for kind, pattern in (
+        # nothing stands on anything: every structure one layer on the table
+        ("flat", _N + r"(?:(?:all\s+|each\s+)?(?:not|never)|none(?:\s+of\s+them)?)\s+"
+                      r"stacked(?:\s+up)?(?:\s+on\s+(?:each\s+other|one\s+another|top\s+of\s+each\s+other))?\b"),
+        ("flat", _N + r"(?:all|each(?:\s+one)?|every\s+one|both)\s+(?:of\s+them\s+)?"
+                      r"(?:lying\s+|laid\s+)?(?:flat\s+|directly\s+|straight\s+)?on\s+the\s+(?:table|ground|floor)\b"),
+        ("flat", _N + r"(?:lying|laid|lie|lay|laying)\s+flat"
+                      r"(?:\s+on\s+the\s+(?:table|ground|floor))?\b"),
+        # nothing on top of what is named
+        ("bare", _N + r"(?:please\s+)?(?:do\s+not|never)\s+(?:stack|put|place|build)\s+"
+                      r"anything\s+(?:else\s+)?(?:on\s+top\s+of|on|onto|above)\s+" + _THEM + r"\b"),
+        ("bare", _N + r"(?:with\s+)?nothing\s+(?:else\s+)?(?:on\s+top|on\s+it|on\s+them|above\s+it)"
+                      r"(?:\s+of\s+(?:it|them))?(?:\s+at\s+all)?\b"),
+        # separate structures with space between them
+        ("apart", _N + _THEM + r"\s+(?:must|should|may|can|do|does|will|shall)\s*(?:not|never)\s+"
+                       r"touch(?:\s+(?:each\s+other|one\s+another))?\b"),
+        # a hollow structure left empty
+        ("empty", _N + r"(?:with\s+)?(?:nothing|no\s+(?:cubes?|parts?|blocks?|bricks?))\s+"
+                       + _INSIDE + r"\b"),
+        ("empty", _N + r"without\s+anything\s+" + _INSIDE + r"\b"),
+        ("empty", _N + r"inside\s+(?:it\s+)?nothing\b"),
+        ("empty", _N + r"(?:left\s+)?empty\s+(?:inside|in\s+the\s+(?:middle|centre|center))\b"),
+        # only what is named
+        ("only", _N + r"nothing\s+else(?:\s+on\s+the\s+table)?\b"),
+        ("only", _N + r"no\s+other\s+(?:things?|structures?|parts?|objects?|stuff)"
+                      r"(?:\s+on\s+the\s+table)?\b"),
+        ("only", _N + r"no\s+more\s*,?\s*(?:and\s+)?no\s+less\b"),
+    )
+)  # fmt: skip
+
+_HOLDS = {
+    "flat": "every structure is one layer on the table",
+    "bare": "nothing stands on another structure",
+    "apart": "the structures stand apart",
+    "empty": "nothing stands inside it",
+    "only": "only what is named is built",
+}
+_HOLLOW = frozenset({"enclosure", "castle", "u_shape"})
+
+
+def take(text: str, st: ReadState) -> str:
+    """`text` without the claims it states, each kept in `st.claims`."""
+    for kind, pattern in _CLAIMS:
+
+        def cut(m: re.Match[str], kind: str = kind) -> str:
+            st.claims.append((kind, m.group(0).strip(" ,")))
+            return " , "
+
+        text = pattern.sub(cut, text)
+    return text
+
+
+def _one_layer(spec: Spec) -> bool:
+    for s in spec.structures:
+        if s.shape in ("row", "grid"):
+            continue
+        height = getattr(s, "height", None) or (s.count if s.shape == "tower" else None)
+        if height != 1:
+            return False
+    return True
+
+
+def _holds(kind: str, spec: Spec) -> bool:
+    on_top = any(r.kind == "on_top_of" for r in spec.relations)
+    if kind == "flat":
+        return _one_layer(spec) and not on_top
+    if kind == "bare":
+        return not on_top
+    if kind == "apart":
+        touching = any(r.gap_m == 0 for r in spec.relations) or spec.gap_m == 0
+        return len(spec.structures) >= 2 and not touching and not on_top
+    if kind == "empty":
+        hollow = any(s.shape in _HOLLOW for s in spec.structures)
+        return hollow and not any(r.kind == "around" for r in spec.relations)
+    return kind == "only"
+
+
+def check(spec: Spec, st: ReadState) -> None:
+    """A note for each claim that holds; material and a note for each that does not."""
+    for kind, said in st.claims:
+        if _holds(kind, spec):
+            st.notes.append(f"'{said}': holds, {_HOLDS[kind]}")
+        else:
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': the reading does not keep it ({_HOLDS[kind]})")
