@@ -1679,3 +1679,35 @@ def test_claims_are_cut_from_the_text_and_kept_on_the_reading():
     reading = read("a row of 4, lying flat on the table, nothing else")
     assert "flat" not in reading.text and "else" not in reading.text
     assert not reading.material
+
+
+# -- non-native forms: "in the length", decimal commas, "the double of", "side of" ---------------
+@pytest.mark.parametrize(
+    "command, slots",
+    [
+        ("build a wall with 5 cubes in the length and 2 in the height", {"length": 5, "height": 2}),
+        ("a wall, 20 cm in the length, in the height of 10 cm", {"length_m": 0.2, "height_m": 0.1}),
+        ("a row 0,25 m long", {"length_m": 0.25}),
+        ("a slab of 0,25 x 0,1 m", {"length": 5, "width": 2}),
+        ("a tower whose height is the double of 3 cubes", {"height": 6}),
+    ],
+)
+def test_non_native_size_forms_fill_the_slots(command, slots):
+    (s,) = read(command).spec.structures
+    assert {k: getattr(s, k) for k in slots} == slots
+
+
+def test_a_list_with_commas_is_not_a_decimal():
+    heights = [s.height for s in read("three towers of 2,3 and 4").spec.structures]
+    assert heights == [2, 3, 4]
+
+
+@pytest.mark.parametrize("side", ["left", "right", "front", "back"])
+def test_on_the_side_of_a_structure_is_a_relation_not_a_region(side):
+    spec = read(f"a 3 by 3 pad and a tower of 2 on the {side} side of the pad").spec
+    (r,) = spec.relations
+    assert (r.kind, r.side, spec.structures[r.subject].shape) == ("next_to", side, "tower")
+    assert spec.structures[r.subject].region is None
+    hand = "-hand" if side in ("left", "right") else ""
+    spec = read(f"a tower of 2 on the {side}{hand} side of the table").spec
+    assert not spec.relations and spec.structures[0].region == side

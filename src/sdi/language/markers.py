@@ -16,6 +16,9 @@ if TYPE_CHECKING:
     from spacy.tokens import Doc
 
 
+_SIDE_WORDS = (("left", "left"), ("right", "right"), ("front", "front"), ("back", "back"),
+               ("rear", "back"))  # fmt: skip
+
 # Relation markers: words → (kind, side). Kinds: on (subject on object), around (subject
 # encloses object), inside (object encloses subject), next (beside, `side`), join (subject
 # joins the object's pillars), joined (the object joins the subject's pillars).
@@ -85,6 +88,12 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("in", "front", "of", "it"), "next_implicit", "front"),
     (("behind", "it"), "next_implicit", "back"),
     (("to", "the", "left", "of"), "next", "left"),
+    *(
+        ((prep, "the", side, "side", "of"), "next", where)
+        for prep in ("on", "to", "at", "by")
+        for side, where in _SIDE_WORDS
+    ),
+    (("at", "the", "front", "of"), "next", "front"),
     (("left", "from"), "next", "left"),
     (("right", "from"), "next", "right"),
     (("left", "of"), "next", "left"),

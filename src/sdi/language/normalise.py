@@ -31,6 +31,13 @@ _NOT_A_NUMBER = re.compile(r"(?<![\w])(nan|inf|infinity)(?![\w])", re.IGNORECASE
 
 
 _DECIMAL_COMMA = re.compile(r"(?<=[=:])\s*(-?\d+),(\d+)\b(?!\s*(?:,|and)\s*\d)")
+# "0,3 m", "0,2 x 0,15 m", "1,5 metres": a decimal comma before a unit or a size's "x"/"by"
+# (a list "3,4 and 5 towers" has no unit after it)
+_DECIMAL_COMMA_UNIT = re.compile(
+    r"(?<![\d,])(0|[1-9]\d?),(\d{1,3})(?=\s*(?:mm|cm|m|met(?:re|er)s?|x|by)\b)"
+    r"|(?<![\d,])(0),(\d{1,3})\b(?!,\d)",
+    re.IGNORECASE,
+)
 
 
 _REFERENCE_NO = re.compile(
@@ -214,13 +221,27 @@ _HOMOPHONES = [
 
 
 _UNIT_SAID = r"(?:mm|cm|m|millimet(?:re|er)s?|centimet(?:re|er)s?|met(?:re|er)s?|cubes?)"
-_MEASURE = rf"(\d+(?:\.\d+)?\s*{_UNIT_SAID}?)(?![\w.])"
+_MEASURE = rf"(\d+(?:\.\d+)?\s*{_UNIT_SAID}?)(?!\w|\.\d)"
 _DIM_WORD = {"length": "long", "height": "high", "width": "wide", "depth": "deep",
              "thickness": "thick", "l": "long", "h": "high", "w": "wide", "d": "deep"}  # fmt: skip
 # "with length of 0.3 meter and height of 0.1 meter": the value with its dimension word
 _NAMED_DIM = re.compile(
     r"\b(?:with\s+)?(?:a\s+)?(length|height|width|depth|thickness)\s+(?:of\s+|is\s+|[:=]\s*)?"
     + _MEASURE,
+    re.IGNORECASE,
+)
+# "4 cubes in the length and 3 in the height", "in the height of 20 cm": a value with its
+# dimension, said the way many non-native speakers say it
+_IN_THE_DIM = re.compile(
+    _MEASURE + r"\s+in\s+(?:the\s+)?(length|height|width|depth|thickness)\b", re.IGNORECASE
+)
+_IN_THE_DIM_OF = re.compile(
+    r"\bin\s+(?:the\s+)?(length|height|width|depth|thickness)\s+of\s+" + _MEASURE, re.IGNORECASE
+)
+# "the height is the double of 4 cubes": that value, doubled
+_DOUBLE_OF = re.compile(
+    r"\b(?:the\s+)?(double|twice|triple|thrice)\s+(?:of\s+)?(?:the\s+)?(\d+)(?=\s*(?:cubes?|"
+    r"parts?|blocks?|bricks?|levels?|layers?|floors?|high|tall|long|wide)\b)",
     re.IGNORECASE,
 )
 # a drawing's "L 250 mm, H 100 mm" (capitals: "a h 3" is no height)
@@ -396,6 +417,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     text = _DECIMAL_COMMA.sub(comma, text)
 
+    def unit_comma(m: re.Match[str]) -> str:
+        whole, part = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+        notes.append(f"read '{whole},{part}' as {whole}.{part}")
+        return f"{whole}.{part}"
+
+    text = _DECIMAL_COMMA_UNIT.sub(unit_comma, text)
+
     def reference(m: re.Match[str]) -> str:
         time = re.search(r"\d[:.]\d\d$|[ap]\.?m\.?$", m.group(0).lower())
         what = "a time of day" if time else "a reference number"
@@ -448,6 +476,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         text = pattern.sub(heard, text)
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
     text = _OPPOSITES.sub(lambda m: f"{m.group(1)} to {m.group(2)}", text)  # "front-back"
+    text = re.sub(r"\b(left|right)[- ]?hand(?=\s+side\b)", r"\1", text, flags=re.I)
     text = _CSV_AT.sub(_csv_at, text)
     quantities: list[int] = []
     text = _QUANTITY.sub(lambda m: _quantity(m, notes, quantities), text)
@@ -467,6 +496,16 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _N_ON_M.sub(_n_by_m, text)  # "a block two on two", "base three on three"
     for pattern, repl in _CLEAR:
         text = pattern.sub(repl, text)
+    text = _IN_THE_DIM.sub(lambda m: f" {m.group(1).strip()} {_DIM_WORD[m.group(2).lower()]} ",
+                           text)  # fmt: skip
+    text = _IN_THE_DIM_OF.sub(_dimensioned, text)
+
+    def times(m: re.Match[str]) -> str:
+        factor = 3 if m.group(1).lower() in ("triple", "thrice") else 2
+        notes.append(f"read '{m.group(0).strip()}' as {factor * int(m.group(2))}")
+        return f" {factor * int(m.group(2))}"
+
+    text = _DOUBLE_OF.sub(times, text)
     text = _NAMED_DIM.sub(_dimensioned, text)
     text = _LETTER_DIM.sub(_dimensioned, text)
     text = _DIM_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3).strip()} {m.group(2)} ", text)

@@ -993,7 +993,7 @@ _REWRITES += [
     (  # "cubes six, in one column": a count after its noun
         re.compile(
             r"\b(cubes|blocks|bricks|towers|stacks|rows|walls)\s+(two|three|four|five|six|seven|eight|nine|ten|"
-            r"\d+)\b(?=\s*(?:$|[,.;]))",
+            r"\d+)\b(?!\.\d)(?=\s*(?:$|[,.;]))",
             re.IGNORECASE,
         ),
         " {1} {0} ",
@@ -1001,7 +1001,7 @@ _REWRITES += [
     ),
     (  # "each of cubes 5": each of 5 cubes
         re.compile(
-            r"\bof\s+(cubes|blocks|bricks)\s+(\d+)\b(?!\s*(?:by|x|cm|mm|m|dm|in|inch|inches|ft|feet|"
+            r"\bof\s+(cubes|blocks|bricks)\s+(\d+)\b(?!\.\d)(?!\s*(?:by|x|cm|mm|m|dm|in|inch|inches|ft|feet|"
             r"tall|high|long|wide|deep|thick)\b)",
             re.IGNORECASE,
         ),
