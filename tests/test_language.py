@@ -150,6 +150,31 @@ def test_typos_are_corrected_and_reported():
     assert sum("corrected" in n for n in reading.notes) == 3
 
 
+@pytest.mark.parametrize(
+    "command, shape, slots, fixed",
+    [
+        # misspellings the English word list keeps, a hundred times rarer than the word meant
+        ("a colum of 4 cubes", "tower", {"height": 4}, "column"),
+        ("a wall 5 long, hight 3", "wall", {"length": 5, "height": 3}, "height"),
+        # an English word where only a part word fits: after a number
+        ("a row of 6 cubs", "row", {"length": 6}, "cubes"),
+        # the same letters win a tie ("heigh" is one letter away too)
+        ("a wall with 4 in the length and 2 in the heigth", "wall", {"length": 4, "height": 2},
+         "height"),
+    ],
+)  # fmt: skip
+def test_misspellings_english_keeps_are_corrected_where_they_stand(command, shape, slots, fixed):
+    reading = read(command)
+    (s,) = reading.spec.structures
+    assert s.shape == shape and {k: getattr(s, k) for k in slots} == slots
+    assert any(n.startswith("corrected") and n.endswith(f"'{fixed}'") for n in reading.notes)
+
+
+@pytest.mark.parametrize("command", ["a lone cube on the left", "the cubs want a tower of 3"])
+def test_an_english_word_is_not_corrected_to_a_structure_word(command):
+    assert not any(n.startswith("corrected") for n in read(command).notes)
+
+
 def test_a_derived_word_is_not_a_typo():
     reading = read("a stubbyish tower of 2")
     assert not any("corrected" in n for n in reading.notes)

@@ -72,9 +72,9 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             "the command is empty; say what to build, e.g. 'a 3-cube tower'", understood={}
         )
     st = ReadState(command, cell)
-    text = normalise(command, st.notes)
-    text, corrected = typos.correct(text)
-    st.notes += corrected
+    text, corrected = typos.correct(command)
+    text = normalise(text, st.notes)
+    st.notes[:0] = corrected
     text = corrections.correct(text, st.notes)
     text = spacing.take_gap(text, st)
     text = claims.take(text, st)

@@ -1,21 +1,26 @@
 """Typo correction: an unknown word close to a word the Specifier knows is read as that word.
 
-A word is a candidate only if it is unknown both to the lexicon and to the English pipeline's
-vocabulary, has at least four letters, and lies within a Damerau–Levenshtein distance of 1
-(words of up to five letters) or 2 (longer words) of exactly one best lexicon word. Every
+A word is a candidate only if it is unknown both to the lexicon and to a list of English words,
+has at least four letters, and lies within a Damerau–Levenshtein distance of 1 (words of up
+to five letters) or 2 (longer words) of exactly one best lexicon word; on a tie, the word with
+the same letters wins ("heigth" is "height", not "heigh"). An English word is corrected only
+where nothing else fits (after a number, one letter from a part word: "4 cubs") or when it is
+a hundred times rarer than the lexicon word one letter away ("hight"). Every
 correction is reported ("corrected 'brige' to 'bridge'").
 """
 
 from __future__ import annotations
 
 import re
+from functools import cache
+from importlib import resources
 
 from rapidfuzz import fuzz, process
 from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.language import words
-from sdi.language.syntax import pipeline
 from sdi.spec import lexicon as lx
+from sdi.spec.numbers import NUMBER_WORDS
 
 _WORD = re.compile(r"[A-Za-z]+")
 _SHAPES = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES)
@@ -27,12 +32,47 @@ _CHOICES = sorted(words.CORRECTABLE)  # what a word may be corrected to
 
 
 _CUT_SHORT = ("tall", "long", "high", "wide", "deep")
-_SWAPPED_OFTEN = frozenset({"front", "back", "left", "right", "tall", "long", "wide", "high"})
-"""Dimension words a three-letter typo may have lost its last letter from."""
+
+
+@cache
+def _frequencies() -> dict[str, int]:
+    """How often each of the 82 765 most frequent English words occurs (SymSpell's list, from
+    Google Books n-grams intersected with SCOWL). spaCy's string store is no word list: it holds
+    every token its model saw, "litle" and "heigth" among them."""
+    text = (resources.files("symspellpy") / "frequency_dictionary_en_82_765.txt").read_text()
+    return {w: int(f) for w, f in (line.split(" ", 1) for line in text.splitlines() if line)}
 
 
 def _vocab_has(word: str) -> bool:
-    return word in pipeline().vocab.strings
+    return word in _frequencies()
+
+
+_RARER = 100
+"""A listed word this many times rarer than a lexicon word one letter away is a misspelling
+of it that the list keeps ("hight" for height, "colum" for column; "lone" is 49× rarer than
+"long" and stays)."""
+
+
+def _misspelt(w: str) -> bool:
+    """`w` is on the list but every lexicon word one letter away is a hundred times more
+    frequent: a misspelling the list keeps."""
+    freq = _frequencies()
+    found = process.extract(w, _CHOICES, scorer=DamerauLevenshtein.distance, score_cutoff=1)
+    return bool(found) and all(freq.get(c, 0) >= _RARER * freq[w] for c, _, _ in found)
+
+
+_PARTS = sorted(w for w in lx.PART_WORDS if w.isalpha() and len(w) > 3)
+_NUMBER = re.compile(r"(?:\d+|" + "|".join(NUMBER_WORDS) + r")\s+$", re.IGNORECASE)
+
+
+def _slot_word(w: str, m: re.Match[str]) -> str | None:
+    """The part word an English word after a number stands for, by one letter ("4 cubs",
+    "2 cubse apart"); None elsewhere ("the cubs at the zoo")."""
+    if not _NUMBER.search(m.string[max(0, m.start() - 12) : m.start()]):
+        return None
+    hits = [c for c in _PARTS if DamerauLevenshtein.distance(w, c) == 1]
+    plural = [c for c in hits if c.endswith("s") == w.endswith("s")]
+    return hits[0] if len(hits) == 1 else plural[0] if len(plural) == 1 else None
 
 
 def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
@@ -60,7 +100,11 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             choices_here = [c for c in _CHOICES if c in _SHAPES and len(c) > len(w)]
         else:
             choices_here = _CHOICES
-        if _vocab_has(w) and (not aggressive or len(w) > 3):
+        if _vocab_has(w) and not _misspelt(w) and (not aggressive or len(w) > 3):
+            slot = _slot_word(w, m)
+            if slot:  # "4 cubs": the only word that fits where it stands
+                notes.append(f"corrected '{raw}' to '{slot}'")
+                return slot
             return raw  # an English word ("walk", "tour") is not a typo, even for a last try
         limit = 1 if len(w) <= 5 else 2
         found = process.extract(
@@ -77,7 +121,7 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
                 return raw
         best = min(d for _, d, _ in found)
         top = [c for c, d, _ in found if d == best]
-        swapped = [c for c in top if sorted(c) == sorted(w) and c in _SWAPPED_OFTEN]
+        swapped = [c for c in top if sorted(c) == sorted(w)]
         if len(top) > 1 and swapped:
             top = swapped  # "fornt": two letters of a place word swapped, not "fort"
         if len(top) > 1:
