@@ -1736,3 +1736,28 @@ def test_on_the_side_of_a_structure_is_a_relation_not_a_region(side):
     hand = "-hand" if side in ("left", "right") else ""
     spec = read(f"a tower of 2 on the {side}{hand} side of the table").spec
     assert not spec.relations and spec.structures[0].region == side
+
+
+# -- what a speech recogniser writes for a structure word ---------------------------------------
+@pytest.mark.parametrize(
+    "command, shape, slots",
+    [
+        ("um a tour of 4 cubes please", "tower", {"height": 4}),
+        ("a pier a mid of two levels", "pyramid", {"height": 2}),
+        ("a stair case with five steps", "staircase", {"steps": 5}),
+        ("put down a 4 by 2 slap", "grid", {"length": 4, "width": 2}),
+        ("a rope of seven cubes", "row", {"length": 7}),
+        ("a wall sick long and three high", "wall", {"length": 6, "height": 3}),
+    ],
+)
+def test_a_misheard_structure_word_is_read_where_only_it_fits(command, shape, slots):
+    reading = read(command)
+    (s,) = reading.spec.structures
+    assert s.shape == shape and {k: getattr(s, k) for k in slots} == slots
+    assert any(n.startswith("read '") for n in reading.notes)
+
+
+def test_the_same_words_elsewhere_are_left_alone():
+    reading = read("after the tour of the plant, a tower of 2; feeling sick of waiting")
+    assert [s.shape for s in reading.spec.structures] == ["tower"]
+    assert not any("as 'tower'" in n or "as 'six'" in n for n in reading.notes)

@@ -201,12 +201,27 @@ _WON = re.compile(
     re.I,
 )
 
+_SAID_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
+# what a speech recogniser writes for a structure word, where only that word fits: "a tour of
+# five cubes", "two tours of 3", "a peer amid", "a stare case", "a 3 by 3 slap", "a rope of 6"
+_SHAPE_HEARD = [
+    (re.compile(r"\b(?:peer|pier|pair|pierre)\s+a\s*mid(s?)\b", re.I), r"pyramid\1"),
+    (re.compile(r"\b(?:stare|stair)[\s-]+case(s?)\b", re.I), r"staircase\1"),
+    (re.compile(r"\btour(s?)\b(?=\s+(?:of\s+)?" + _SAID_NUMBER + r")", re.I), r"tower\1"),
+    (re.compile(r"(?:(?<=\d\s)|(?<=\btwo\s)|(?<=\bthree\s)|(?<=\bfour\s)|(?<=\bfive\s))"
+                r"tour(s?)\b", re.I), r"tower\1"),
+    (re.compile(r"\bslap(s?)\b(?=\s+(?:of\s+)?" + _SAID_NUMBER + r")|(?<=\d\s)slap(s?)\b", re.I),
+     r"slab\1\2"),
+    (re.compile(r"\brope(s?)\b(?=\s+of\s+" + _SAID_NUMBER + r")", re.I), r"row\1"),
+]  # fmt: skip
+
 _HOMOPHONES = [
     (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d))", re.I), "two "),
     (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
     (re.compile(r"\bfor\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "four "),
     (re.compile(r"(?<=\bof\s)for\s*$", re.I), "four"),
     (re.compile(r"\bate\s+(?=" + _COUNTED + r"\b)", re.I), "eight "),
+    (re.compile(r"\bsick\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "six "),
     # a speech recogniser's numbers: "a wall for long to high", "a tower of to in front of
     # it", "tree levels", "just won cube" (a number word where only a number fits)
     (re.compile(r"\bto\s+(?=(?:high|tall|long|wide|deep)\b)", re.I), "two "),  # not "too tall"
@@ -466,6 +481,14 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _SLASH_XY.sub(
         lambda m: f"x = {m.group(1)} {m.group(3)}, y = {m.group(2)} {m.group(3)}", text
     )
+    for pattern, repl in _SHAPE_HEARD:
+
+        def shape_heard(m: re.Match[str], repl: str = repl) -> str:
+            out = m.expand(repl)
+            notes.append(f"read '{m.group(0).strip()}' as '{out}'")
+            return out
+
+        text = pattern.sub(shape_heard, text)
     for pattern, repl in _HOMOPHONES:
 
         def heard(m: re.Match[str], repl: str = repl) -> str:
