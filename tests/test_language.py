@@ -1761,3 +1761,32 @@ def test_the_same_words_elsewhere_are_left_alone():
     reading = read("after the tour of the plant, a tower of 2; feeling sick of waiting")
     assert [s.shape for s in reading.spec.structures] == ["tower"]
     assert not any("as 'tower'" in n or "as 'six'" in n for n in reading.notes)
+
+
+# -- the choice left to SDI -----------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "command, shape",
+    [
+        ("build whatever you like", "tower"),
+        ("dealer's choice, go", "tower"),
+        ("something with a beam on top, sizes up to you", "bridge"),
+        ("my nephew is six, surprise him... no wait, surprise me", "tower"),
+    ],
+)
+def test_a_command_that_leaves_the_choice_to_sdi_builds_a_default_and_says_so(command, shape):
+    r = plan(command)
+    assert r.status == "success", (r.error, r.notes)
+    assert [s.shape for s in r.spec.structures] == [shape]
+    assert any("the choice left to SDI" in n for n in r.notes)
+
+
+def test_a_family_with_its_sizes_left_to_sdi_uses_the_defaults_and_says_so():
+    r = plan("a pyramid, number of levels your call")
+    assert r.status == "success" and r.spec.structures[0].shape == "pyramid"
+    assert any("left to SDI" in n for n in r.notes)
+
+
+def test_nothing_to_go_on_is_still_an_error_and_a_word_near_a_shape_is_not_one():
+    assert plan("build something").status == "error"
+    reading = read("she wants a tower of 2")
+    assert not any("corrected" in n for n in reading.notes)  # "she" is no "shed"

@@ -16,7 +16,10 @@ from sdi.language.state import ReadState
 from sdi.spec.structure_spec import Spec
 
 _N = r"(?:,\s*)?\b(?:and\s+|but\s+)?"  # the joint before a claim
-_THEM = r"(?:they|them|it|the\s+\w+|both|all|each|none\s+of\s+them)"
+_THEM = (
+    r"(?:they|them|it|both|all|each|none\s+of\s+them|"
+    r"the\s+(?!(?:left|right|front|back|middle|centre|center|table|side|edge)\b)\w+)"
+)
 _INSIDE = r"(?:inside|within|in\s+the\s+(?:middle|centre|center)|in\s+it)(?:\s+(?:it|of\s+it))?"
 
 _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(

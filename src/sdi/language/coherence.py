@@ -155,6 +155,12 @@ _LABELS = frozenset(
 )  # fmt: skip
 
 
+_PEOPLE = frozenset(
+    {"she", "he", "who", "kid", "child", "son", "daughter", "baby", "boy", "girl", "nephew",
+     "niece", "grandson", "granddaughter", "brother", "sister", "cousin", "friend"}
+)  # fmt: skip
+
+
 def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]]:
     """The numbers the operator wrote inside the structures' phrases (not ones a rewrite put
     in, not ages, times or percentages)."""
@@ -170,6 +176,10 @@ def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]
             continue  # "test 1 2 3": counting aloud, not a size
         if tok.i > 0 and doc[tok.i - 1].lower_ in _LABELS:
             continue  # "round two", "phase 3": a name, not a size
+        before = [t.lower_ for t in doc[max(0, tok.i - 2) : tok.i]]
+        person = len(before) == 2 and (before[0] in _PEOPLE or doc[tok.i - 2].pos_ == "PROPN")
+        if person and before[1] in ("is", "'s", "s", "aged", "turns", "turned"):
+            continue  # "she's four", "Emma is six": an age
         value = words_to_numbers([tok.lower_])[0]
         try:
             v = float(value)

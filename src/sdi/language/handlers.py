@@ -416,6 +416,14 @@ def _edge(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" at the {side.get(groups[0], groups[0])} edge "
 
 
+def _delegated(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "whatever size works", "your call on sizes": SDI chooses, with its defaults."""
+    said = _said(m)[0]
+    st.delegated = said
+    st.notes.append(f"'{said}': left to SDI, which uses its default sizes")
+    return " , "
+
+
 def _every_side(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a solid block 100 mm on every side": a block's sides all that size (a flat family's
     "5 on each side" is read by the grammar)."""
@@ -597,6 +605,7 @@ HANDLERS: dict[str, Handler] = {
     "{distribute}": _distribute,
     "{not_axis}": _not_axis,
     "{edge}": _edge,
+    "{delegated}": _delegated,
     "{below}": _below,
     "{every_side}": _every_side,
     "{times}": _times,

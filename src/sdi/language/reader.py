@@ -89,7 +89,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         # then read a structure-less description ("something small") as a tower
         retry, fixed = typos.correct(text, aggressive=True)
         if not fixed:
-            retry, fixed = _open(text)
+            retry, fixed = _open(text, st.delegated)
         if fixed:
             st = ReadState(command, cell, notes=said + fixed)  # not the failed reading's
             text = retry
@@ -261,10 +261,19 @@ _GENERIC_NOUNS = re.compile(
 )
 
 
-def _open(text: str) -> tuple[str, list[str]]:
-    """An open description with no family named: the family its size words suggest."""
+_SPANNED = re.compile(r"\b(?:beams?|lintels?|spans?|symmetr\w*|either\s+side|both\s+sides)\b", re.I)
+
+
+def _open(text: str, delegated: str | None) -> tuple[str, list[str]]:
+    """An open description with no family named: the family its size words suggest; when the
+    choice was left to SDI ("build whatever you like"), a small bridge if a beam or a
+    symmetry is asked for, else a tower of 3."""
     m = _GENERIC_NOUNS.search(text)
     said = set(re.findall(r"[a-z]+", text.lower()))
+    if delegated and not (m and said & set(lx.SIZE_WORDS)):
+        family = "bridge with pillars of 2" if _SPANNED.search(text) else "tower of 3"
+        note = f"no structure named and the choice left to SDI: built a {family}"
+        return f"{text} , a {family}", [note]
     if not m or not said & set(lx.SIZE_WORDS):
         return text, []  # "build something": nothing to go on
     if said & {"wide", "flat", "low", "broad", "long", "spread"}:

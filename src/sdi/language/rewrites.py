@@ -1499,6 +1499,29 @@ _REWRITES += [
         "{not_axis}",
         "",
     ),
+    # The choice left to SDI: "whatever size works", "your call on sizes", "at your
+    # discretion", "surprise me", "I don't care how many steps" (the defaults are used)
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:(?:of\s+|in\s+)?(?:whatever|any)\s+(?:size|sizes|height|heights|shape|"
+            r"shapes|form|proportions?|kind|design|dimensions?|number\s+of\s+\w+)"
+            r"(?:\s+(?:you\s+(?:like|want|think|choose|prefer|fancy)|(?:that\s+)?works|is\s+fine))?"
+            r"|(?:at\s+(?:your|the\s+operator'?s?)\s+discretion)"
+            r"|(?:(?:of\s+|in\s+)?your\s+(?:own\s+)?(?:choice|call|pick|design|proportions|"
+            r"preference)(?:\s+on\s+(?:the\s+)?\w+)?)"
+            r"|up\s+to\s+you|(?:you|sdi|the\s+robot)\s+(?:can\s+|may\s+)?(?:decide|choose|pick)"
+            r"(?:\s+the\s+(?:form|shape|size|sizes|design|height))?"
+            r"|how(?:ever)?\s+you\s+(?:want|like)|as\s+you\s+(?:like|wish|see\s+fit)"
+            r"|free\s+design|dealer'?s\s+choice|surprise\s+me(?:\s+with)?"
+            r"|i\s+do\s*n[o']?t\s+care\s+(?:how\s+(?:many|big|tall|high)(?:\s+\w+)?|about\s+the\s+\w+)"
+            r"|ur\s+choice|(?:just\s+)?whatever(?:\s+you\s+(?:like|want|think))?"
+            r"|anything(?:\s+you\s+(?:like|want))?|something\s+(?:fun|nice|cool|interesting|"
+            r"pretty|creative|different|quick|simple))\b",
+            re.IGNORECASE,
+        ),
+        "{delegated}",
+        "",
+    ),
     # Against a side of the workspace: "hugging the right boundary", "flush with the back
     # edge", "parallel to the left edge, close to it", "as far back as it can go", "all the
     # way to the left", "at the back, the furthest it can" (the grammar reads "at the back

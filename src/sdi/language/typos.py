@@ -131,6 +131,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             if len(ranked) > 1 and fuzz.ratio(w, ranked[0]) == fuzz.ratio(w, ranked[1]):
                 return raw
             top = ranked[:1]
+        if aggressive and _vocab_has(w) and _frequencies().get(top[0], 0) < _frequencies()[w]:
+            return raw  # "she" is no "shed": a word more common than the one it is near
         notes.append(f"corrected '{raw}' to '{top[0]}'")
         return top[0]
 
