@@ -1790,3 +1790,49 @@ def test_nothing_to_go_on_is_still_an_error_and_a_word_near_a_shape_is_not_one()
     assert plan("build something").status == "error"
     reading = read("she wants a tower of 2")
     assert not any("corrected" in n for n in reading.notes)  # "she" is no "shed"
+
+
+# -- a structure described again, flanked, or stood on its corners or centre ---------------------
+def test_an_apposition_describes_the_structure_named_before_it():
+    (s,) = read("a stack, a tall one").spec.structures
+    assert s.shape == "tower" and s.height is not None and s.height >= 5
+    spec = read("three stacks, a low one, a medium one and a tall one").spec
+    heights = sorted(s.height for s in spec.structures)
+    assert len(heights) == 3 and heights[0] < heights[1] < heights[2]
+    (s,) = read("a wall around the sheep, a square one, 5 cubes on each side").spec.structures
+    assert (s.shape, s.length, s.width) == ("enclosure", 5, 5)  # a closed fence is a ring
+
+
+def test_a_likeness_after_a_structure_is_a_description_and_a_wish_is_not_a_likeness():
+    reading = read("a 2 by 2 block, 3 high, a bit like a chimney")
+    assert [s.shape for s in reading.spec.structures] == ["block"] and not reading.material
+    assert [s.shape for s in read("we would like a wall 4 long").spec.structures] == ["wall"]
+
+
+def test_one_on_each_side_flanks_it_left_and_right_with_the_gap_said():
+    r = plan("a 2x2 slab with a stack of 3 on each side of it, with a little gap")
+    assert r.status == "success", (r.error, r.notes)
+    columns: dict[tuple[float, float], int] = {}
+    for p in r.layout:
+        xy = (round(p.position[0], 3), round(p.position[1], 3))
+        columns[xy] = columns.get(xy, 0) + 1
+    stacks = sorted(xy for xy, n in columns.items() if n == 3)
+    slab = [xy for xy, n in columns.items() if n == 1]
+    assert len(stacks) == 2 and len(slab) == 4
+    assert stacks[0][0] == stacks[1][0]  # same x: left and right of the slab, not front and back
+    slab_y = (min(y for _, y in slab), max(y for _, y in slab))
+    # one part of clear space between each stack and the slab (centres 0.05 + 0.05 apart)
+    assert np.isclose(slab_y[0] - stacks[0][1], 0.10) and np.isclose(stacks[1][1] - slab_y[1], 0.10)
+
+
+@pytest.mark.parametrize(
+    "command, anchored",
+    [
+        ("a 4 by 4 pad and a cube on its corners", "corners"),
+        ("a 4x4 slab; a stack of 2 at all its four corners", "corners"),
+        ("a 3x3 slab with a column of 3 rising from its middle", None),
+    ],
+)
+def test_corners_and_centre_said_without_each_are_relations(command, anchored):
+    (r,) = read(command).spec.relations
+    assert (r.kind, r.at) == ("on_top_of", anchored)

@@ -353,9 +353,12 @@ def _beside(
     return unit
 
 
-def _at_anchors(base: _Placed, sub: _Placed, kind: str, at: str, cell: CellConfig) -> _Placed:
+def _at_anchors(
+    base: _Placed, sub: _Placed, kind: str, at: str, cell: CellConfig, gap: float | None = None
+) -> _Placed:
     """One copy of `sub` at each corner or end of `base`: on its top face (``on_top_of``)
-    or against its two ends on the ground, touching them (``next_to``)."""
+    or against its two ends on the ground, `gap` away (``next_to``; touching by default). A
+    square base's ends are its left and right sides."""
     sub_bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
     if kind == "on_top_of":
         top, _ = _top(base)
@@ -382,8 +385,8 @@ def _at_anchors(base: _Placed, sub: _Placed, kind: str, at: str, cell: CellConfi
             offsets = [s * room[long] * np.eye(2)[long] for s in (-1.0, 1.0)]
         anchors, dz = [centre + off for off in offsets], top - sub_bottom
     else:
-        long = int(np.argmax(base.half))
-        reach = base.half[long] + sub.half[long]
+        long = 1 if base.half[1] >= base.half[0] - 1e-9 else 0
+        reach = base.half[long] + sub.half[long] + (gap or 0.0)
         base_bottom = float((base.z - np.array([d[2] for d in base.sizes]) / 2).min())
         anchors = [s * reach * np.eye(2)[long] for s in (-1.0, 1.0)]
         dz = base_bottom - sub_bottom
@@ -429,7 +432,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                     )
                 base = _merge(base, sub, np.zeros(2), 0.0)
             elif rel.at is not None:
-                base = _at_anchors(base, unit(c), rel.kind, rel.at, cell)
+                base = _at_anchors(base, unit(c), rel.kind, rel.at, cell, rel.gap_m)
             else:
                 sub = unit(c)
                 if rel.kind == "on_top_of":

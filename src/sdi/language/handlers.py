@@ -50,25 +50,36 @@ def _no_beams(m: re.Match[str], st: ReadState, note: str) -> str:
 def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     if re.search(r"\b(?:castle|fort|fortress|citadel)s?\b", m.string, re.IGNORECASE):
         return m.group(0)  # "a castle with a tower at each corner": the family's own
-    if re.search(r"\bsides?\b", m.group(0), re.IGNORECASE) and re.search(
-        r"\d+\s*(?:cubes?|parts?|blocks?|cm|mm|m|in|inch(?:es)?|ft|feet|foot)?\s*(?:long\s*)?$",
-        m.string[: m.start()],
+    sided = re.search(r"\b(?:each|every|all)\s+(?:\w+\s+)?sides?\b", m.group(0), re.IGNORECASE)
+    if (
+        sided
+        and not m.group(1)
+        and re.search(
+            r"(?<!\bof\s)(?<![\w.])\d+(?:\.\d+)?\s*(?:cubes?|parts?|blocks?|cm|mm|m|in|inch(?:es)?|ft|feet|foot)?"
+            r"\s*(?:long\s*)?$",
+            m.string[: m.start()],
+        )
     ):
         return m.group(0)  # "a courtyard 5 cubes on each side": a size
     said = re.sub(r"\s+of\s+an?$", "", _said(m)[0])
     at = "corners" if "corner" in said.lower() else "ends" if " end" in said.lower() else None
     if at and re.search(r"\b(?:one|either)\b", said, re.IGNORECASE):
         at = at[:-1]  # "on one corner": a single copy
-    if at is None:  # "on each side": which sides (all four? the long ones?) is not said
+    flanking = at is None and re.search(r"\b(?:either|both|each)\b", said, re.IGNORECASE)
+    if flanking:  # "a tower on each side of it", "on either side": one at each of its ends
+        at = "ends"
+    elif at is None:  # "on one side": which side is not said
         st.material.append(said)
-        st.notes.append(f"ignored '{said}': which sides of the structure is not clear")
+        st.notes.append(f"ignored '{said}': which side of the structure is not clear")
         return " "
     on = re.match(r"\s*,?\s*(?:stacked|resting|standing|sitting)?\s*on\b", m.group(0), re.I)
     on_top = re.search(r"\bon\s+top\s*,?\s*$", m.string[: m.start()], re.IGNORECASE)
-    kind = "on_top_of" if on or on_top or at == "corners" else "next_to"
+    kind = "on_top_of" if (on or on_top or at == "corners") and not flanking else "next_to"
     st.anchors.append((kind, at))
     st.notes.append(
-        f"read '{said}' as " + (f"one at each of its {at}" if at.endswith("s") else f"on one {at}")
+        f"read '{said}' as "
+        + (f"one at each of its {at}" if at.endswith("s") else f"on one {at}")
+        + (" (one on each side, along its length)" if flanking else "")
     )
     if on_top and not m.group(1):
         return " "  # "a wall with a cube on top at each end"

@@ -202,7 +202,7 @@ _REWRITES += [
     (
         re.compile(
             r"\b(one|a)\s+(\w+)(\s+of\s+\d+)?\s+on\s+each\s+side(?:\s*,?\s*(?:the\s+)?left\s+and\s+"
-            r"(?:the\s+)?right)?\b",
+            r"(?:the\s+)?right)?\b(?!\s+of\s+(?:it|them|the|that|this)\b)",
             re.IGNORECASE,
         ),
         " {0} {1}{2} on the left and another {1}{2} on the right ",
@@ -567,7 +567,8 @@ _REWRITES += [
     # dimensions
     (
         re.compile(
-            r"\b(?:each|both|every)\s+(?:arm|leg|side|wing|branch)s?\s+(?:is\s+|are\s+)?(\d+|[a-z]+)"
+            r"\b(?:each|both|every)\s+(?:arm|leg|side|wing|branch)s?\s+(?:is\s+|are\s+)?"
+            r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
             r"(?:\s+(?:cubes?|parts?|blocks?))?(?:\s+long)?",
             re.IGNORECASE,
         ),
@@ -770,15 +771,37 @@ _REWRITES += [
     ),
     (re.compile(r",?\s*\bnot\s+filled(?:\s+in)?\b", re.IGNORECASE), " ", ""),
     (re.compile(r"\b(?:underneath|beneath|below)\s*(?=[,;.]|$)", re.IGNORECASE), " ", ""),
+    (  # "two towers of four, one either side of a block": a tower on each side of it
+        re.compile(
+            r"\b(?:two|2)\s+((?:[\w-]+\s+){0,2}?)(" + _SHAPE_ALT + r")s\b((?:\s+(?:of|with)\s+"
+            r"[\w\s-]+?)?)\s*,?\s*one\s+(?:on\s+|at\s+)?(?:either|each)\s+(?:side|end)\s+of\b",
+            re.IGNORECASE,
+        ),
+        " a {0}{1}{2} on either side of ",
+        "read '{0}' as one on each side of it",
+    ),
     (
         re.compile(
-            r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at)\s+(?:top\s+of\s+)?(?:each|both|"
-            r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:ends|end|sides|side|corners|corner)"
+            r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at)\s+(?:top\s+of\s+)?(?:(?:each|both|"
+            r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:four\s+|4\s+|two\s+|2\s+)?"
+            r"(?:ends|end|sides|side|corners|corner)"
+            r"|(?:all\s+)?(?:its|their)\s+(?:four\s+|4\s+|two\s+|2\s+)?(?:corners|ends)"
+            r"|(?:all\s+)?the\s+(?:four\s+|4\s+|two\s+|2\s+)?(?:corners|ends)"
+            r"(?=\s+of\s+(?:it|them|the)\b))"
             r"(?:\s+of\s+(it|them|the\s+\w+|an?\b))?",
             re.IGNORECASE,
         ),
         "{placement}",
         "",
+    ),
+    (  # "a column rising from its centre": on top of it, centred
+        re.compile(
+            r"\b(?:rising|growing|sticking\s+up|coming\s+up|going\s+up)\s+(?:up\s+)?(?:from|out\s+of)\s+"
+            r"(?:its|the)\s+(?:centre|center|middle)(?:\s+of\s+(it|them|the\s+\w+))?",
+            re.IGNORECASE,
+        ),
+        " on top of it ",
+        "read '{0}' as on top of it, centred",
     ),
     (
         re.compile(
@@ -1693,7 +1716,74 @@ def _count_of_plural(text: str, st: ReadState) -> str:
     return _PLURAL_THEN_COUNT.sub(counted, text)
 
 
+_ONE = (
+    r"(?:a|an)\s+(?!(?:same|other|second|new|first|last|next|different|single)\b)([a-z]+)\s+one\b"
+    r"(?!\s+(?:cubes?|parts?|blocks?|bricks?|high|tall|long|wide|deep|thick|layers?|levels?)\b)"
+)
+_WANTERS = frozenset({"i", "we", "you", "they", "d", "would", "should", "do", "really", "id"})
+_APPOSED_LIST = re.compile(
+    r"(?<=,)\s*"
+    + _ONE
+    + r"((?:\s*(?:,|and|,\s*and)\s*"
+    + _ONE.replace("([a-z]+)", "[a-z]+")
+    + r")+)",
+    re.IGNORECASE,
+)
+_APPOSED = re.compile(
+    r"(?<=,)\s*" + _ONE + r"(?!\s+(?:of|with|that|which|on|at|in|to|next|behind|beside|and)\b)",
+    re.IGNORECASE,
+)
+"""'two towers, a big one and a small one': one of each; 'a fence, a square one': the
+structure named before, described again."""
+_CLOSED = frozenset({"square", "rectangular", "closed", "round", "circular"})
+_CLOSED_WALL = re.compile(
+    r"\b(square|rectangular|closed|round|circular)\s+(?:fence|wall|border|barrier)(s?)\b", re.I
+)
+_LIKE_A = re.compile(
+    r"(?:,\s*|\s+)\b(?:just\s+|sort\s+of\s+|a\s+bit\s+)?(?:like|resembling|similar\s+to|"
+    r"looking\s+like|in\s+the\s+style\s+of)\s+(?:a|an)\s+[^,.;:!?]*",
+    re.IGNORECASE,
+)
+
+
+def _described_again(text: str, st: ReadState) -> str:
+    """Apposition and likeness: 'a fence, a square one' is that fence, square; 'two towers, a
+    big one and a small one' one of each; 'a block 2 by 3, like a little tower house' the
+    block, the likeness a description (with a structure named before it)."""
+
+    def listed(m: re.Match[str]) -> str:
+        words = re.findall(_ONE, m.group(0), re.IGNORECASE)
+        return " " + " and ".join(f"one {w}" for w in words) + " "
+
+    text = _APPOSED_LIST.sub(listed, text)
+
+    def again(m: re.Match[str]) -> str:
+        adjective = m.group(1).lower()
+        if adjective in NUMBER_WORDS or (adjective in lx.SHAPE_WORDS and adjective not in _CLOSED):
+            return m.group(0)
+        st.notes.append(f"read '{m.group(0).strip()}' as the structure named before it")
+        return f" {adjective} " if adjective not in _CLOSED else f" , {adjective}-closed , "
+
+    text = _APPOSED.sub(again, text)
+    # "a fence, a square one": the fence closed, as a ring
+    text = re.sub(r"\b(fence|wall|border|barrier)(s?)\b([^.;]*?)\s*,\s*(\w+)-closed\s*,",
+                  r"\4 ring\2\3 ,", text, flags=re.IGNORECASE)  # fmt: skip
+    text = _CLOSED_WALL.sub(lambda m: f"{m.group(1)} ring{m.group(2)}", text)
+
+    def likeness(m: re.Match[str]) -> str:
+        before = re.findall(r"[a-z]+", text[: m.start()].lower())
+        if before and before[-1] in _WANTERS and not m.group(0).lstrip().startswith(","):
+            return m.group(0)  # "I'd like a pyramid": the verb
+        if not any(w in lx.SHAPE_WORDS for w in before):
+            return m.group(0)  # "something like a park bench": the likeness is all there is
+        st.notes.append(f"read '{m.group(0).strip(' ,')}' as a description, not a structure")
+        return " "
+
+    return _LIKE_A.sub(likeness, text)
+
+
 def rewrite(text: str, st: ReadState) -> str:
+    text = _described_again(text, st)
     text = _floors_as_levels(text, st)
     text = _count_of_plural(text, st)
     text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)

@@ -41,6 +41,14 @@ _OFFSET = re.compile(
     r"behind|further\s+back)\b)",
     re.IGNORECASE,
 )
+# "with a bit of space", "a little gap", "slightly apart": a small gap, one part wide
+_VAGUE = re.compile(
+    r",?\s*\b(?:each\s+)?(?:with\s+|leaving\s+|leave\s+|and\s+)?(?:(?:a|some)\s+)?(?:(?:little|small|"
+    r"tiny|bit\s+of|some|narrow)\s+)+(?:gap|space|room|distance)"
+    r"(?:\s+between(?:\s+(?:them|the\s+two))?|\s+(?:to|from)\s+(?:it|them|the\s+\w+))?"
+    r"|\b(?:a\s+)?(?:little|bit|tad)\s+apart\b|\bslightly\s+apart\b",
+    re.IGNORECASE,
+)
 _INSIDE = re.compile(r"between\s+(?:each|every|the)\s+(?:cube|part|block)s?\b", re.IGNORECASE)
 _PLURAL_SHAPES = re.compile(
     r"\b(?:two|three|four|five|\d+|both|pair\s+of|couple\s+of)\s+(?:\w+\s+)?(?:towers|stacks|walls|"
@@ -96,6 +104,11 @@ def take_gap(text: str, st: ReadState) -> str:
             st.gap_m = gap
             st.notes.append(f"read '{m.group(0).strip(' ,')}' as {gap:g} m between the structures")
             return text[: m.start()] + " " + text[m.end() :]
+    v = _VAGUE.search(text)
+    if v is not None:
+        st.gap_m = part_m
+        st.notes.append(f"read '{v.group(0).strip(' ,')}' as a small gap: one part ({part_m:g} m)")
+        return text[: v.start()] + " " + text[v.end() :]
     o = _OFFSET.search(text)
     if o is not None:
         gap = _metres(o.group(1), o.group(2), part_m)
@@ -110,7 +123,7 @@ def apply_gap(spec: Spec, st: ReadState) -> Spec:
     """The stated gap on the relations beside (else between the separate structures)."""
     if st.gap_m is None:
         return spec
-    beside = [r for r in spec.relations if r.kind == "next_to" and r.at is None]
+    beside = [r for r in spec.relations if r.kind == "next_to" and r.at in (None, "ends", "end")]
     if beside:
         relations = tuple(
             r.model_copy(update={"gap_m": st.gap_m}) if r in beside else r for r in spec.relations
