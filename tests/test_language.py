@@ -1836,3 +1836,22 @@ def test_one_on_each_side_flanks_it_left_and_right_with_the_gap_said():
 def test_corners_and_centre_said_without_each_are_relations(command, anchored):
     (r,) = read(command).spec.relations
     assert (r.kind, r.at) == ("on_top_of", anchored)
+
+
+# -- corrections said in full, and a hedged number ------------------------------------------------
+def test_a_correction_said_with_its_reason_replaces_the_number():
+    (s,) = read("a wall 4 long. Sorry, no, 6 long, the 4 was a typo.").spec.structures
+    assert (s.shape, s.length) == ("wall", 6)
+
+
+def test_a_corrected_phrase_said_in_full_replaces_the_old_phrase():
+    spec = read("two stacks of 5 no actually make that three stacks of 5 one cube apart").spec
+    assert [s.height for s in spec.structures] == [5, 5, 5]
+    assert spec.gap_m == 0.05
+
+
+def test_a_hedged_number_is_used_when_it_is_the_only_number():
+    (s,) = read("a stack, not too high, perhaps five?").spec.structures
+    assert s.height == 5
+    (s,) = read("a stack of four, maybe five").spec.structures
+    assert s.height == 4  # the first number; the hedge is an alternative

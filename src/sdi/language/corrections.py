@@ -16,6 +16,7 @@ _MARKER = re.compile(
     r"\s*[,;—–-]+\s*no\s*[,!]\s*|"  # "a stack of 3 to the left of it - no, to the right"
     r"\s*[,.;:!—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
+    r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|"
     r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*|"
     r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment)\s*:\s*",  # a ticket's later line
@@ -49,7 +50,7 @@ _AND_NOT_OLD = re.compile(rf"\s*,?\s*(?:and\s+)?not\s+{_NUMBER}(?:\s+[a-z]+)?$",
 _NOT_OLD = re.compile(r"^(?:no\s*,?\s*)?not\s+[^,;.]+?\s*[,;]\s*|^no\s*,\s*", re.IGNORECASE)
 _FILLER = re.compile(
     r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|the|a|"
-    r"an|to|on|at|in|of)\s+)+",
+    r"an|to|on|at|in|of|with)\s+)+",
     re.I,
 )
 
@@ -147,14 +148,19 @@ def _another_structure(before: str, after: str, notes: list[str]) -> str | None:
 
 
 def _with_noun(before: str, value: str, rest: str, notes: list[str]) -> str | None:
-    """ "five steps, no, six steps": the number said last with the same noun, replaced."""
-    m = re.fullmatch(rf"({_NUMBER})\s+([a-z]+?)s?", value, re.IGNORECASE)
-    if m is None:
+    """ "five steps, no, six steps": the number said last with the same noun, replaced; "three
+    towers of three, no, make that four towers of three a cube apart": the whole phrase."""
+    m = re.match(rf"({_NUMBER})\s+([a-z]+?)s?\b", value, re.IGNORECASE)
+    if m is None or (m.end() < len(value) and m.group(2).lower() not in lx.SHAPE_WORDS):
         return None
     olds = list(re.finditer(rf"\b({_NUMBER})\s+{m.group(2)}s?\b", before, re.IGNORECASE))
     if not olds:
         return None
     old = olds[-1]
+    if m.end() < len(value):  # the phrase said again, in full: it replaces the old one
+        notes.append(f"corrected by the command itself: '{before[old.start():].strip()}' → "
+                     f"'{value}'")  # fmt: skip
+        return before[: old.start()] + value + rest
     notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
     return before[: old.start(1)] + m.group(1) + before[old.end(1) :] + rest
 
@@ -168,8 +174,18 @@ def _not_a_but_b(text: str, notes: list[str]) -> str:
     return text[: m.start()] + new + text[m.end() :]
 
 
+# "…, the 5 was wrong": the retraction a correction ends with, said of the number it replaces
+_WAS_WRONG = re.compile(
+    rf"\s*,?\s*\b(?:the\s+)?{_NUMBER}\s+(?:was|is)\s+(?:wrong|a\s+mistake|a\s+typo|incorrect|"
+    r"not\s+right)\b",
+    re.IGNORECASE,
+)
+
+
 def correct(text: str, notes: list[str]) -> str:
     """`text` with every "old …, no wait, new" replaced by the corrected wording."""
+    if _MARKER.search(text):
+        text = _WAS_WRONG.sub(" ", text)
     text = _names_again(text, notes)
     text = _not_a_but_b(text, notes)
     text = _SPOKEN_NO.sub(r"\1, no, ", text)

@@ -10,7 +10,7 @@ from collections.abc import Callable
 from sdi.errors import SpecError
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import words_to_numbers
+from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
 
 
 def _split(m: re.Match[str], st: ReadState) -> str:
@@ -419,6 +419,22 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" running {other} "
 
 
+def _maybe(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "three, maybe four": the first number; "not too tall, maybe four?": the only one."""
+    said, groups = _said(m)
+    value = words_to_numbers([groups[0]])[0]
+    before = m.string[: m.start()]
+    if not value.isdigit():
+        return m.group(0)
+    after = m.string[m.end() : m.end() + 12]
+    number = r"\d|\b(?:" + "|".join(NUMBER_WORDS) + r")\b"
+    if re.search(number, before, re.I) or re.match(r"\s*(?:or|to|-)\s*(?:" + number + ")", after):
+        st.notes.append(note.format(said))
+        return " "
+    st.notes.append(f"read '{said}' as {value}, the only number said")
+    return f" , {value} "
+
+
 def _edge(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "as far forward as it can go": against that edge of the workspace."""
     said, groups = _said(m)
@@ -616,6 +632,7 @@ HANDLERS: dict[str, Handler] = {
     "{distribute}": _distribute,
     "{not_axis}": _not_axis,
     "{edge}": _edge,
+    "{maybe}": _maybe,
     "{delegated}": _delegated,
     "{below}": _below,
     "{every_side}": _every_side,

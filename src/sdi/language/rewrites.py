@@ -486,7 +486,7 @@ _REWRITES += [
     ),
     (
         re.compile(r",?\s*\b(?:or\s+)?(?:maybe|perhaps|possibly)\s+(\d+|[a-z]+)\b", re.IGNORECASE),
-        " ",
+        "{maybe}",
         "'{0}': used the first number",
     ),
     (
