@@ -1855,3 +1855,18 @@ def test_a_hedged_number_is_used_when_it_is_the_only_number():
     assert s.height == 5
     (s,) = read("a stack of four, maybe five").spec.structures
     assert s.height == 4  # the first number; the hedge is an alternative
+
+
+def test_a_negated_beam_does_not_hide_the_gap_between_towers():
+    spec = read("three pillars of 2 with no beam on them, standing two cubes apart").spec
+    assert len(spec.structures) == 3 and spec.gap_m == 0.10
+
+
+def test_structures_of_counted_parts_standing_in_a_row_are_side_by_side_not_a_row():
+    spec = read("two stacks of three cubes placed in a row, a cube's width between them").spec
+    assert [s.shape for s in spec.structures] == ["tower", "tower"] and spec.gap_m == 0.05
+
+
+def test_a_label_before_a_size_is_dropped_and_the_size_kept():
+    (s,) = read("Summary version: 4x2 slab").spec.structures
+    assert (s.shape, s.length, s.width) == ("grid", 4, 2)

@@ -200,10 +200,13 @@ def _in_a_row(m: re.Match[str], st: ReadState, note: str) -> str:
     "in a line front to back": one behind the other; "cubes in a row" is a row (left to the
     grammar)."""
     before = re.findall(r"[a-z]+", m.string[: m.start()].lower())
+    while before and before[-1] in ("standing", "placed", "arranged", "set", "lined", "up"):
+        before.pop()  # "three columns of four cubes standing in a row": how they stand
     noun = before[-1] if before else ""
-    plural = [w for w in before[-4:] if w.endswith("s") and w in lx.SHAPE_WORDS
+    plural = [w for w in before[-5:] if w.endswith("s") and w in lx.SHAPE_WORDS
               and w not in lx.AMBIGUOUS_SHAPES and w not in ("rows", "lines")]  # fmt: skip
-    if not plural or noun in ("cubes", "blocks", "bricks", "parts"):
+    counted_parts = len(before) >= 3 and before[-3] == "of"  # "columns of four cubes"
+    if not plural or (noun in ("cubes", "blocks", "bricks", "parts") and not counted_parts):
         return m.group(0)
     then = m.string[m.end() :].lower()
     if re.match(

@@ -440,6 +440,14 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _DECIMAL_COMMA_UNIT.sub(unit_comma, text)
 
     def reference(m: re.Match[str]) -> str:
+        if re.search(r"\d\s*x\s*\d", m.group(0), re.I) or re.match(
+            r"\s*(?:x|by|cubes?|blocks?|bricks?|parts?|high|tall|long|wide|levels?|layers?)\b",
+            m.string[m.end() :],
+            re.I,
+        ):
+            # "short version: 3x3 slab", "item: 4 cubes": the label goes, the size stays
+            number = re.search(r"\d", m.group(0))
+            return " " + m.group(0)[number.start() :] if number else m.group(0)
         time = re.search(r"\d[:.]\d\d$|[ap]\.?m\.?$", m.group(0).lower())
         what = "a time of day" if time else "a reference number"
         notes.append(f"ignored '{m.group(0)}': {what}, not a size")

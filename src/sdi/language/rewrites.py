@@ -1099,7 +1099,8 @@ _REWRITES += [
     ),
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
-            r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d))\s+in\s+(?:a|one|a\s+single)\s+(?:row|line)"
+            r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
+            r"(?<=set)|(?<=lined\sup))\s+in\s+(?:a|one|a\s+single)\s+(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
             r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:from\s+)?(?:the\s+)?"
             r"(?:front|back|left|right)\s+to\s+(?:the\s+)?(?:front|back|left|right)\b))",

@@ -19,7 +19,7 @@ from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import Spec
 
 _N = r"(\d+(?:\.\d+)?|a\s+couple\s+of|a\s+pair\s+of|a|an|one|two|three|four|five|six)"
-_UNIT = r"(cubes?|parts?|blocks?|bricks?|pieces?|cm|mm|m)"
+_UNIT = r"(cubes?|parts?|blocks?|bricks?|pieces?|cm|mm|m)(?:'s|s')?"  # "a cube's space"
 _GAP = re.compile(
     r",?\s*\b(?:with\s+|leaving\s+|leave\s+|keep\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?"
     + _N + r"(?:[- ]?" + _UNIT + r")?"
@@ -27,6 +27,7 @@ _GAP = re.compile(
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+away(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
+    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:of\s+)?width\s+between(?:\s+(?:them|the\s+two|each))?"
     + r"|(?:at\s+)?(?:a\s+)?distance\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT + r")?)"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,
@@ -50,9 +51,11 @@ _VAGUE = re.compile(
     re.IGNORECASE,
 )
 _INSIDE = re.compile(r"between\s+(?:each|every|the)\s+(?:cube|part|block)s?\b", re.IGNORECASE)
+_PLURALS = "|".join(
+    sorted((w for w in lx.SHAPE_WORDS if w.endswith("s") and w.isalpha()), key=len, reverse=True)
+)
 _PLURAL_SHAPES = re.compile(
-    r"\b(?:two|three|four|five|\d+|both|pair\s+of|couple\s+of)\s+(?:\w+\s+)?(?:towers|stacks|walls|"
-    r"rows|columns|pyramids|pads|slabs|blocks|bridges|staircases|rings|lines)\b"
+    r"\b(?:two|three|four|five|\d+|both|pair\s+of|couple\s+of)\s+(?:\w+\s+)?(?:" + _PLURALS + r")\b"
     r"|\b(?:another|second|identical|copy|same)\b|\bits\b|\bof\s+it\b",
     re.IGNORECASE,
 )
@@ -65,8 +68,13 @@ def _several(text: str) -> bool:
     """The command names more than one structure (two shape nouns, a counted plural, a copy)
     and none that spans a gap of its own (a bridge's gap is its span)."""
     said = re.findall(r"[a-z]+", text.lower())
-    if any(lx.SHAPE_WORDS.get(w) in _SPANNING or w in ("bridge", "span") for w in said):
-        return False
+    negated = {i + 2 for i, w in enumerate(said) if w in ("no", "without", "not")}
+    negated |= {i + 1 for i, w in enumerate(said) if w in ("no", "without", "not")}
+    if any(
+        (lx.SHAPE_WORDS.get(w) in _SPANNING or w in ("bridge", "span")) and i not in negated
+        for i, w in enumerate(said)
+    ):
+        return False  # "two columns without any lintel, a cube apart": no span to say a gap of
     shapes = [
         w for w in re.findall(r"[a-z]+", text.lower())
         if w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES
