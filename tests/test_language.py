@@ -1870,3 +1870,10 @@ def test_structures_of_counted_parts_standing_in_a_row_are_side_by_side_not_a_ro
 def test_a_label_before_a_size_is_dropped_and_the_size_kept():
     (s,) = read("Summary version: 4x2 slab").spec.structures
     assert (s.shape, s.length, s.width) == ("grid", 4, 2)
+
+
+def test_a_wall_one_deep_and_n_wide_is_n_long_across_the_robot():
+    (s,) = read("wall: 2 high, 5 wide, 1 deep").spec.structures
+    assert (s.shape, s.length, s.height, s.axis) == ("wall", 5, 2, "y")
+    (s,) = read("a wall 3 long and 2 wide").spec.structures
+    assert s.shape == "block"  # two parts deep: no wall

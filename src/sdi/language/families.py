@@ -85,6 +85,15 @@ def check_family(
         # "a wall 40 cm wide, 2 high": a wall one part deep is as wide as it is long
         notes.append(f"read the {spec.shape}'s width {spec.width_m:g} m as its length")
         spec = spec.model_copy(update={"length_m": spec.width_m, "width_m": None})
+    if (
+        spec.shape in ("row", "wall")
+        and spec.width is not None
+        and spec.width > 1
+        and (spec.length == 1)
+    ):
+        # "3 wide, 1 deep - wall": one part deep, so as long as it is wide, across the robot
+        notes.append(f"read the {spec.shape} {spec.width} wide and 1 deep as {spec.width} long")
+        spec = spec.model_copy(update={"length": spec.width, "width": None, "axis": "y"})
     if spec.shape in ("row", "wall") and spec.width is not None and spec.width > 1:
         wide = "grid" if spec.shape == "row" and (spec.height or 1) == 1 else "block"
         notes.append(f"a {spec.shape} {spec.width} wide is a {wide}: built a {wide}")
