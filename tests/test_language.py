@@ -1877,3 +1877,18 @@ def test_a_wall_one_deep_and_n_wide_is_n_long_across_the_robot():
     assert (s.shape, s.length, s.height, s.axis) == ("wall", 5, 2, "y")
     (s,) = read("a wall 3 long and 2 wide").spec.structures
     assert s.shape == "block"  # two parts deep: no wall
+
+
+def test_one_more_after_a_stacked_copy_goes_on_top_again():
+    spec = read("lay a row of 3, then another row of 3 on top, then one more").spec
+    assert sorted((r.subject, r.object, r.kind) for r in spec.relations) == [
+        (1, 0, "on_top_of"),
+        (2, 1, "on_top_of"),
+    ]
+    spec = read("a row of 3, another row of 3 beside it, and another one").spec
+    assert all(r.kind != "on_top_of" for r in spec.relations)  # nothing was stacked
+
+
+def test_that_one_is_the_structure_referred_to():
+    (s,) = read("stack three cubes, then put two more on top of that one").spec.structures
+    assert (s.shape, s.height) == ("tower", 5)

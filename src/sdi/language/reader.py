@@ -49,7 +49,7 @@ from sdi.language.normalise import normalise
 from sdi.language.reading import Reading
 from sdi.language.rewrites import rewrite
 from sdi.language.slots import fill_slots
-from sdi.language.state import ReadState
+from sdi.language.state import Phrase, ReadState
 from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
@@ -99,6 +99,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     if not structures:
         no_structure(st, doc, command)
     relations, drafts = relate(phrases, rels, structures, st)
+    relations = _stacking_on(relations, drafts, phrases, st)
     drafts = _apart(drafts, st)
     touch = _TOUCHING.search(text)
     if touch and any(r.kind == "next_to" and r.gap_m is None for r in relations):
@@ -236,6 +237,37 @@ def _ordered(
     st.notes.append(f"'{said}': the {'biggest' if most == 'max' else 'smallest'} one "
                     f"{'in the middle' if where == 'middle' else 'on the ' + where}")  # fmt: skip
     return [*rest[:at], specs[pick], *rest[at:]]
+
+
+_ONE_MORE = re.compile(
+    r"^[\s,]*(?:and\s+)*(?:then\s+)?(?:one\s+more|another|a\s+third|one\s+again)(?:\s+[a-z]+)?"
+    r"(?:\s+(?:time|too|again))?[\s.!,]*$",
+    re.IGNORECASE,
+)
+
+
+def _stacking_on(
+    relations: list[Relation], drafts: list[StructureDraft], phrases: list[Phrase], st: ReadState
+) -> list[Relation]:
+    """ "a row of four, then another row on top, and then one more": a copy said with no place
+    of its own right after one stacked on the one before it goes on top again."""
+    subject_of = {r.subject: r for r in relations}
+    out = list(relations)
+    for p in phrases:
+        k = p.first
+        if p.count != 1 or k in subject_of or k < 2 or not _ONE_MORE.match(p.text.strip()):
+            continue
+        below = subject_of.get(k - 1)
+        same = drafts[k].shape == drafts[k - 1].shape
+        if below is None or below.kind != "on_top_of" or below.at is not None or not same:
+            continue
+        rel = Relation(kind="on_top_of", subject=k, object=k - 1)
+        out.append(rel)
+        subject_of[k] = rel
+        st.notes.append(
+            f"read '{p.text.strip(' ,')}' as another {drafts[k].shape} on top, like the one before"
+        )
+    return out
 
 
 def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:

@@ -794,6 +794,14 @@ _REWRITES += [
         "{placement}",
         "",
     ),
+    (  # "put two more on top of that one": that one is it
+        re.compile(
+            r"(?<=\b(?:of|on|to|by|at)\s)(?:that|this)\s+one\b(?!\s+(?:of|with|high|tall|long)\b)",
+            re.IGNORECASE,
+        ),
+        "it",
+        "",
+    ),
     (  # "a column rising from its centre": on top of it, centred
         re.compile(
             r"\b(?:rising|growing|sticking\s+up|coming\s+up|going\s+up)\s+(?:up\s+)?(?:from|out\s+of)\s+"
