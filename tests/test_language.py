@@ -1892,3 +1892,27 @@ def test_one_more_after_a_stacked_copy_goes_on_top_again():
 def test_that_one_is_the_structure_referred_to():
     (s,) = read("stack three cubes, then put two more on top of that one").spec.structures
     assert (s.shape, s.height) == ("tower", 5)
+
+
+# -- the gap between a bridge's own supports ------------------------------------------------------
+@pytest.mark.parametrize(
+    "command, span",
+    [
+        ("a gate whose posts stand 10 cm apart", 2),
+        ("a bridge, the clearance between the pillars is 50 mm", 1),
+        ("two stacks of 3 with a beam across them, 2 cubes apart", 2),
+    ],
+)
+def test_a_gap_between_supports_is_the_span(command, span):
+    r = plan(command)
+    assert r.status == "success", (r.error, r.notes)
+    (s,) = r.spec.structures
+    assert (s.shape, s.span) == ("bridge", span)
+    ys = sorted({round(p.position[1], 3) for p in r.layout if p.size[1] < 0.1})
+    assert np.isclose(ys[-1] - ys[0] - 0.05, 0.05 * span)  # clear space between the pillars
+
+
+def test_a_gap_between_bridges_is_between_them_and_a_span_too_wide_is_refused():
+    assert read("two bridges 10 cm apart").spec.gap_m == 0.10
+    r = plan("a bridge with pillars 20 cm apart")
+    assert r.status == "failure" and "span" in r.error  # no beam that long

@@ -76,6 +76,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = normalise(text, st.notes)
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes)
+    text = spacing.take_span(text, st)
     text = spacing.take_gap(text, st)
     text = claims.take(text, st)
     text = rewrite(text, st)
@@ -109,6 +110,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             for r in relations
         ]
         st.notes.append(f"read '{touch.group(0)}' as no gap between the structures beside")
+    drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]

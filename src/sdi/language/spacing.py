@@ -16,7 +16,7 @@ import re
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
-from sdi.spec.structure_spec import Spec
+from sdi.spec.structure_spec import Spec, StructureDraft
 
 _N = r"(\d+(?:\.\d+)?|a\s+couple\s+of|a\s+pair\s+of|a|an|one|two|three|four|five|six)"
 _UNIT = r"(cubes?|parts?|blocks?|bricks?|pieces?|cm|mm|m)(?:'s|s')?"  # "a cube's space"
@@ -64,17 +64,24 @@ _PLURAL_SHAPES = re.compile(
 _SPANNING = frozenset({"bridge", "arch", "canopy"})
 
 
+def _spanning_named(said: list[str], beams: bool = False) -> bool:
+    """A bridge, arch, table or span (or, with `beams`, a beam) is named and not negated ("two
+    columns without any lintel, a cube apart" names none)."""
+    negated = {i + d for i, w in enumerate(said) if w in ("no", "without", "not") for d in (1, 2)}
+    words = ("bridge", "span", "beam", "beams") if beams else ("bridge", "span")
+    return any(
+        (lx.SHAPE_WORDS.get(w) in _SPANNING or w in words) and i not in negated
+        for i, w in enumerate(said)
+    )
+
+
 def _several(text: str) -> bool:
     """The command names more than one structure (two shape nouns, a counted plural, a copy)
     and none that spans a gap of its own (a bridge's gap is its span)."""
     said = re.findall(r"[a-z]+", text.lower())
-    negated = {i + 2 for i, w in enumerate(said) if w in ("no", "without", "not")}
-    negated |= {i + 1 for i, w in enumerate(said) if w in ("no", "without", "not")}
-    if any(
-        (lx.SHAPE_WORDS.get(w) in _SPANNING or w in ("bridge", "span")) and i not in negated
-        for i, w in enumerate(said)
-    ):
-        return False  # "two columns without any lintel, a cube apart": no span to say a gap of
+    plural = any(w.endswith("s") and lx.SHAPE_WORDS.get(w) in _SPANNING for w in said)
+    if _spanning_named(said) and not plural:
+        return False  # a bridge's gap is its span; "two bridges 10 cm apart" is between them
     shapes = [
         w for w in re.findall(r"[a-z]+", text.lower())
         if w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES
@@ -95,6 +102,52 @@ def _metres(value: str, unit: str | None, part_m: float) -> float | None:
     if unit in lx.UNITS_M:
         return n * lx.UNITS_M[unit]
     return n * part_m  # cubes, parts, blocks
+
+
+_SUPPORTS = r"(?:pillars|legs|towers|supports|columns|posts|piers|stacks|uprights)"
+_SPAN = re.compile(
+    r",?\s*\b(?:with\s+)?(?:a\s+)?(?:clear\s+|inner\s+)?span(?:\s+between\s+(?:the\s+)?"
+    + _SUPPORTS + r")?\s+(?:of\s+|is\s+|[:=]\s*)?" + _N + r"(?:[- ]?" + _UNIT + r")?"
+    + r"|,?\s*\b(?:with\s+)?(?:the\s+|its\s+)?" + _SUPPORTS
+    + r"\s+(?:are\s+|standing\s+|set\s+|placed\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+apart"
+    + r"|,?\s*\b(?:and\s+)?(?:the\s+)?(?:inner\s+|clear\s+)?(?:distance|gap|space|spacing|"
+    r"clearance|opening)\s+(?:of|between)\s+(?:the\s+)?(?:" + _SUPPORTS + r"|them)"
+    + r"\s+(?:is\s+|of\s+|[:=]\s*)?"
+    + _N + r"[- ]?" + _UNIT
+    + r"|,?\s*\bbetween\s+(?:them|the\s+" + _SUPPORTS + r")\s+(?:is\s+|a\s+gap\s+of\s+)?" + _N
+    + r"[- ]?" + _UNIT
+    + r"|,?\s*\b" + _N + r"[- ]?" + _UNIT
+    + r"\s+(?:of\s+)?(?:gap\s+|space\s+|clearance\s+)?between\s+(?:them|the\s+" + _SUPPORTS + r")"
+    + r"|\bspanning\s+an?\s+" + _N + r"[- ]?" + _UNIT + r"\s+gap",
+    re.IGNORECASE,
+)  # fmt: skip
+"""A bridge's, arch's or table's own gap: "pillars 10 cm apart", "between them 5 cm", "the
+distance of the pillars is 5 cm", "a span of 2"."""
+
+
+_APART = re.compile(r",?\s*\b" + _N + r"[- ]?" + _UNIT + r"\s+apart\b", re.IGNORECASE)
+
+
+def take_span(text: str, st: ReadState) -> str:
+    """`text` without the gap between a spanning structure's supports; the gap in `st.span_m`."""
+    said = re.findall(r"[a-z]+", text.lower())
+    if not _spanning_named(said, beams=True):
+        return text
+    m = _SPAN.search(text)
+    several = any(w.endswith("s") and lx.SHAPE_WORDS.get(w) in _SPANNING for w in said)
+    if m is None and not several:
+        m = _APART.search(text)  # "two towers of five three cubes apart and a beam across them"
+    if m is None:
+        return text
+    groups = list(m.groups())
+    pairs = [(groups[i], groups[i + 1]) for i in range(0, len(groups), 2)]
+    value, unit = next(((v, u) for v, u in pairs if v is not None), (None, None))
+    span = _metres(value, unit, st.cell.cube[0]) if value else None
+    if span is None or not 0 < span <= 0.5:
+        return text
+    st.span_m = span
+    st.notes.append(f"read '{m.group(0).strip(' ,')}' as {span:g} m between the supports")
+    return text[: m.start()] + " " + text[m.end() :]
 
 
 def take_gap(text: str, st: ReadState) -> str:
@@ -143,3 +196,24 @@ def apply_gap(spec: Spec, st: ReadState) -> Spec:
     st.material.append(f"gap {st.gap_m:g} m")
     st.notes.append(f"ignored the gap of {st.gap_m:g} m: there are no two structures side by side")
     return spec
+
+
+def apply_span(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
+    """The stated gap between supports as the span (in parts) of the one spanning structure."""
+    if st.span_m is None:
+        return drafts
+    spanning = [k for k, d in enumerate(drafts) if d.shape in _SPANNING and d.span is None]
+    parts = st.span_m / st.cell.cube[0]
+    if not spanning and st.gap_m is None:
+        st.gap_m = st.span_m  # "two towers three cubes apart and a beam across them": between
+        return drafts  # the towers, as said, for the beam to reach across or not
+    if len(spanning) != 1 or abs(parts - round(parts)) > 1e-6 or round(parts) < 1:
+        st.material.append(f"span {st.span_m:g} m")
+        st.notes.append(
+            f"ignored the gap of {st.span_m:g} m between supports: "
+            + ("it is no whole number of parts" if len(spanning) == 1 else
+               "no single bridge, arch or table to give it to")
+        )  # fmt: skip
+        return drafts
+    k = spanning[0]
+    return [*drafts[:k], drafts[k].model_copy(update={"span": round(parts)}), *drafts[k + 1 :]]
