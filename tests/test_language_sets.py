@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to fifteenth dev sets (dev2 … dev15) are held to the same checks and share no
+second to sixteenth dev sets (dev2 … dev16) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ from sdi.bench.language_dev12 import CASES as DEV12
 from sdi.bench.language_dev13 import CASES as DEV13
 from sdi.bench.language_dev14 import CASES as DEV14
 from sdi.bench.language_dev15 import CASES as DEV15
+from sdi.bench.language_dev16 import CASES as DEV16
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -259,6 +260,7 @@ SETS = {
     "dev10": (DEV10, 120, 10, 0), "dev11": (DEV11, 150, 8, 15), "dev12": (DEV12, 150, 8, 15),
     "dev13": (DEV13, 160, 8, 15), "dev14": (DEV14, 160, 8, 15),
     "dev15": (DEV15, 160, 8, 15),
+    "dev16": (DEV16, 160, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -268,6 +270,7 @@ HARD = {
     "dev13": ("relation", "numbers", "dimensions", "sequence"),
     "dev14": ("relation", "numbers", "dimensions", "sequence"),
     "dev15": ("relation", "numbers", "dimensions", "sequence"),
+    "dev16": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -329,6 +332,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV13,
         *DEV14,
         *DEV15,
+        *DEV16,
         *TEST,
     ):
         out = case.accept(result)
@@ -364,6 +368,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev13.py",
         "language_dev14.py",
         "language_dev15.py",
+        "language_dev16.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -2489,5 +2494,157 @@ _L4_ARMS = [*_row_y(0.40, 0.20, 4), *_row_x(0.45, 0.20, 3)]  # arms of 4 sharing
 )
 def test_dev15_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev15(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev16
+
+
+def _dev16(case_id: str) -> Case:
+    return next(c for c in DEV16 if c.id == case_id)
+
+
+def _without(objs, *cells):
+    """`objs` less the cubes whose (x, y) centre is one of `cells`."""
+    return [
+        c
+        for c in objs
+        if not any(
+            math.isclose(c["position"][0], x) and math.isclose(c["position"][1], y)
+            for x, y in cells
+        )
+    ]
+
+
+# a 3-level pyramid centred at (0.50, 0.30): 3x3, 2x2, one cube
+_PYR3_AT_50 = [
+    *grid(0.45, 0.25, 3, 3),
+    *grid(0.475, 0.275, 2, 2, z0=C),
+    cube(0.50, 0.30, 2 * C + C / 2),
+]
+_WALL3X2 = [*_row_y(0.45, 0.25, 3), *_row_y(0.45, 0.25, 3, z0=C)]
+_WALL5X2 = [*_row_y(0.45, 0.20, 5), *_row_y(0.45, 0.20, 5, z0=C)]
+_BLOCK222 = grid(0.425, 0.275, 2, 2, layers=2)  # centred on (0.45, 0.30)
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev16-rel-04",  # a 2-tower 0.10 m (centre to centre) left of a 5-tower at (0.45, 0.30)
+            res(*column(0.45, 0.30, 5), *column(0.45, 0.40, 2)),
+            res(*column(0.45, 0.30, 5), *column(0.45, 0.45, 2)),  # 0.10 m clear instead
+        ),
+        (
+            "dev16-rel-05",  # a 3-tower a cube clear beyond the top end of 3 steps
+            res(*_stairs_x(0.35, 0.30, (1, 2, 3)), *column(0.55, 0.30, 3)),
+            res(*_stairs_x(0.35, 0.30, (1, 2, 3)), *column(0.25, 0.30, 3)),  # at the low end
+        ),
+        (
+            "dev16-rel-08",  # a one-high ring round a 3-level pyramid, one cube of floor between
+            res(*_PYR3_AT_50, *ring(0.35, 0.15, 7)),
+            res(*_PYR3_AT_50, *ring(0.30, 0.10, 9)),  # two cubes of floor
+        ),
+        (
+            "dev16-rel-11",  # a 3x2 wall with a 4-tower touching the middle of its back face
+            res(*_WALL3X2, *column(0.50, 0.30, 4)),
+            res(*_WALL3X2, *column(0.40, 0.30, 4)),  # in front of it
+        ),
+        (
+            "dev16-rel-13",  # a 5x2 wall along y with a 4-tower flush at both ends
+            res(*_WALL5X2, *column(0.45, 0.15, 4), *column(0.45, 0.45, 4)),
+            res(*_WALL5X2, *column(0.45, 0.45, 4)),  # one end only
+        ),
+        (
+            "dev16-rel-18",  # a central 2x2x2 block, a 3-tower a cube clear on each side
+            res(
+                *_BLOCK222,
+                *column(0.325, 0.30, 3),
+                *column(0.575, 0.30, 3),
+                *column(0.45, 0.425, 3),
+                *column(0.45, 0.175, 3),
+            ),
+            res(
+                *_BLOCK222,
+                *column(0.325, 0.30, 3),
+                *column(0.575, 0.30, 3),
+                *column(0.45, 0.425, 3),
+                *column(0.575, 0.20, 3),  # a second one behind, none on the right
+            ),
+        ),
+        (
+            "dev16-seq-08",  # the left-hand (+y) column raised to 5, a cube clear of the 3
+            res(*column(0.45, 0.35, 5), *column(0.45, 0.25, 3)),
+            res(*column(0.45, 0.35, 3), *column(0.45, 0.25, 5)),
+        ),
+        (
+            "dev16-seq-09",  # a 3x5 grid less its four corner cubes
+            res(
+                *_without(
+                    grid(0.40, 0.20, 3, 5), (0.40, 0.20), (0.40, 0.40), (0.50, 0.20), (0.50, 0.40)
+                )
+            ),
+            res(*grid(0.40, 0.20, 3, 5)),
+        ),
+        (
+            "dev16-num-08",  # columns of 2, 4, 6, 8 from left (+y) to right, apart
+            res(
+                *column(0.45, 0.45, 2),
+                *column(0.45, 0.35, 4),
+                *column(0.45, 0.25, 6),
+                *column(0.45, 0.15, 8),
+            ),
+            res(
+                *column(0.45, 0.45, 8),
+                *column(0.45, 0.35, 6),
+                *column(0.45, 0.25, 4),
+                *column(0.45, 0.15, 2),
+            ),
+        ),
+        (
+            "dev16-num-08",  # or touching, still rising to the right
+            res(
+                *column(0.45, 0.40, 2),
+                *column(0.45, 0.35, 4),
+                *column(0.45, 0.30, 6),
+                *column(0.45, 0.25, 8),
+            ),
+            res(
+                *column(0.45, 0.40, 2),
+                *column(0.45, 0.35, 6),
+                *column(0.45, 0.30, 4),
+                *column(0.45, 0.25, 8),
+            ),
+        ),
+        (
+            "dev16-num-16",  # six 2-stacks in two lanes of three
+            res(*[c for x in (0.40, 0.55) for y in (0.20, 0.30, 0.40) for c in column(x, y, 2)]),
+            res(*[c for y in (0.10, 0.18, 0.26, 0.34, 0.42, 0.50) for c in column(0.45, y, 2)]),
+        ),
+        (
+            "dev16-neg-13",  # a 5x2 wall without the middle cube of its top course
+            res(*_without(_WALL5X2[5:], (0.45, 0.30)), *_WALL5X2[:5]),
+            res(*_row_y(0.45, 0.20, 5), *_row_y(0.45, 0.20, 4, z0=C)),  # an end cube left out
+        ),
+        (
+            "dev16-reg-08",  # both towers wholly in the left half (y ≥ 0.30)
+            res(*column(0.45, 0.45, 4), *column(0.45, 0.35, 2)),
+            res(*column(0.45, 0.45, 4), *column(0.45, 0.25, 2)),
+        ),
+        (
+            "dev16-wo-12",  # a 5-tower set down against a 3-level pyramid (one structure)
+            res(*_pyr(0.40, 0.25, 3), *column(0.55, 0.30, 5)),
+            res(*_pyr(0.40, 0.25, 3), *column(0.55, 0.30, 4)),
+        ),
+        (
+            "dev16-bad-02",  # 14 high is past the cell: refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.30, 10)),
+        ),
+    ],
+)
+def test_dev16_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev16(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
