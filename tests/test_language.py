@@ -1916,3 +1916,61 @@ def test_a_gap_between_bridges_is_between_them_and_a_span_too_wide_is_refused():
     assert read("two bridges 10 cm apart").spec.gap_m == 0.10
     r = plan("a bridge with pillars 20 cm apart")
     assert r.status == "failure" and "span" in r.error  # no beam that long
+
+
+# -- a programmer's notation and texting ---------------------------------------------------------
+@pytest.mark.parametrize(
+    "command, shape, slots",
+    [
+        ("wall(length=6, height=2)", "wall", {"length": 6, "height": 2}),
+        ("slab(4, 3)", "grid", {"length": 4, "width": 3}),
+        ("stairs(steps=4)", "staircase", {"steps": 4}),
+        ("tower(h=2*4)", "tower", {"height": 8}),
+        ("towr(h=3)", "tower", {"height": 3}),  # a family name misspelt before its brackets
+    ],
+)
+def test_a_call_notation_names_the_family_and_its_sizes(command, shape, slots):
+    (s,) = read(command).spec.structures
+    assert s.shape == shape and {k: getattr(s, k) for k in slots} == slots
+
+
+def test_a_call_with_dx_dy_sizes_along_the_axes():
+    r = plan("block(dx=2, dy=4, dz=1)")
+    lo, hi = boxes(r)
+    assert np.allclose(hi.max(axis=0) - lo.min(axis=0), [0.10, 0.20, 0.05])
+
+
+def test_a_position_with_a_height_above_the_table_is_reported():
+    r = plan("tower(h=2) @ (0.45, 0.30, 0.20)")
+    assert r.status == "partial" and any("z = 0.20" in n for n in r.notes)
+    assert plan("tower(h=2) @ (0.45, 0.30, 0.0)").status == "success"
+
+
+def test_texting_shorthand():
+    (s,) = read("can u do a 4x4 square w a hole in the middle").spec.structures
+    assert s.shape == "enclosure"
+    assert len(read("2 towers of 3 n put a beam across").spec.structures) == 1  # a bridge
+    (s,) = read("a tower idk how tall, u pick").spec.structures
+    assert s.shape == "tower"
+
+
+# -- words the grammar consults: kept, or reported ------------------------------------------------
+def test_a_hole_in_the_middle_makes_it_hollow():
+    for command in ("a 4x4 pad with an opening in the middle", "a hollow slab 3 by 3"):
+        (s,) = read(command).spec.structures
+        assert s.shape == "enclosure", command
+
+
+def test_a_beam_put_across_towers_joins_them():
+    (s,) = read("two stacks of 3, then place a plank across them").spec.structures
+    assert s.shape == "bridge"
+
+
+@pytest.mark.parametrize(
+    "command, word",
+    [("two towers of 2 and a girder", "girder"), ("a 2x2 block, hollow", "hollow")],
+)
+def test_a_consulted_word_the_reading_builds_nothing_for_is_reported(command, word):
+    r = plan(command)
+    assert r.status == "partial", r.notes
+    assert any(n.startswith(f"ignored '{word}': the reading builds nothing") for n in r.notes)

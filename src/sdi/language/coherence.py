@@ -313,8 +313,41 @@ def _places_lost(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> list[
     return lost
 
 
+# Words the grammar consults without marking them used, and what a reading that keeps them
+# builds: a beam ("two towers of 3 and put a beam across"), an opening ("a pad 3 by 3, hollow").
+_KEPT_BY = (
+    (frozenset({"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "girders"}),
+     frozenset({"bridge", "canopy", "arch", "castle"}), "nothing with a beam"),
+    (frozenset({"hollow", "hole", "opening"}),
+     frozenset({"enclosure", "castle", "u_shape", "bridge", "arch", "canopy"}), "nothing hollow"),
+)  # fmt: skip
+
+
+def _consulted_lost(doc: Doc, spec: Spec) -> list[tuple[str, str]]:
+    """Consulted words the reading builds nothing for, with what it lacks ("two towers of 3
+    and put a beam across" read as two towers): (word, lack) pairs."""
+    lost = []
+    shapes = {s.shape for s in spec.structures}
+    beams = any(s.part == "beam" for s in spec.structures)
+    for words, families, lack in _KEPT_BY:
+        if shapes & families or (beams and "beam" in words):
+            continue
+        for tok in doc:
+            if tok.lower_ not in words:
+                continue
+            before = {t.lower_ for t in doc[max(0, tok.i - 3) : tok.i]}
+            after = {t.lower_ for t in doc[tok.i + 1 : tok.i + 3]}
+            if not (before | after) & (_NEGATIONS | {"none", "nope", "skip"}):
+                lost.append((tok.text, lack))
+                break
+    return lost
+
+
 def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     """Notes and material for what the sentence structure says and the reading does not."""
+    for word, lack in _consulted_lost(doc, spec):
+        st.material.append(word)
+        st.notes.append(f"ignored '{word}': the reading builds {lack}")
     for cue in _negated_kept(doc, spec):
         st.material.append(cue)
         st.notes.append(f"ignored '{cue}': the reading still builds what these words exclude")

@@ -422,6 +422,19 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" running {other} "
 
 
+def _xyz(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "at (0.50, 0.30, 0.70)": x and y place it; a z above the table cannot be built."""
+    x, y, z = m.group(1), m.group(2), m.group(3)
+    if abs(float(z)) > 1e-9:
+        said = m.group(0).strip()
+        st.material.append(said)
+        st.notes.append(
+            f"ignored z = {z} in '{said}': every structure stands on the table (z = 0); "
+            "say where it stands on the table, or stack it on another structure"
+        )
+    return f" ( {x} , {y} ) "
+
+
 def _maybe(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "three, maybe four": the first number; "not too tall, maybe four?": the only one."""
     said, groups = _said(m)
@@ -636,6 +649,7 @@ HANDLERS: dict[str, Handler] = {
     "{not_axis}": _not_axis,
     "{edge}": _edge,
     "{maybe}": _maybe,
+    "{xyz}": _xyz,
     "{delegated}": _delegated,
     "{below}": _below,
     "{every_side}": _every_side,

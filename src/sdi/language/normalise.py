@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import re
 
+from rapidfuzz.distance import DamerauLevenshtein
+
 from sdi.errors import SpecError
 from sdi.spec import lexicon as lx
 
@@ -151,8 +153,61 @@ _SHORTHAND = [
     (re.compile(r"\bw/o\b", re.I), "without"),
     (re.compile(r"\bw/(?=\s|\w)", re.I), "with "),
     (re.compile(r"(?<=\d)\s+n\s+(?=\d)", re.I), " and "),
+    # texting: "2 stacks of 4 n put a bridge", "a 3x3 square w a hole", "u pick"
+    (
+        re.compile(r"(?<=[a-z0-9])\s+n\s+(?=(?:put|then|a|an|the|make|stack|add|build)\b)", re.I),
+        " and ",
+    ),
+    (re.compile(r"(?<=[a-z0-9])\s+w\s+(?=(?:a|an|the|one|two|\d)\b)", re.I), " with "),
+    (re.compile(r"idk\b", re.I), "I do not know"),
     (re.compile(r"\b(\d+)\s*x\s+(?=[a-z]{3,})(?!by\b|cubes?\b)", re.I), r"\1 "),
 ]
+
+
+# a programmer's notation: "tower(h=5)", "wall(len=5, h=2)", "block(2,2,2)", "box(dx=3, dy=2,
+# dz=4)", "row(n=4)", "ring(outer=5x5, h=2)", "tower(h=2*3)": the family with its sizes in words
+_CALL = re.compile(r"\b([a-z_]+)\(\s*([^()]*?)\s*\)", re.IGNORECASE)
+_ARG_WORD = {
+    "h": "high", "height": "high", "dz": "high", "z": "high", "levels": "levels", "lvls": "levels",
+    "len": "long", "length": "long", "l": "long", "dx": "deep", "w": "wide", "width": "wide",
+    "dy": "wide", "d": "deep", "depth": "deep", "steps": "steps", "legs": "legs", "n": "count",
+    "count": "count", "num": "count", "outer": "", "size": "",
+}  # fmt: skip
+
+
+def _arg_value(value: str) -> str | None:
+    product = re.fullmatch(r"(\d+)\s*\*\s*(\d+)", value)
+    if product:
+        return str(int(product.group(1)) * int(product.group(2)))
+    plain = re.fullmatch(r"\d+(?:\.\d+)?(?:\s*(?:mm|cm|m))?|\d+x\d+(?:x\d+)?", value)
+    return value if plain else None
+
+
+def _call(m: re.Match[str], notes: list[str]) -> str:
+    name, args = m.group(1).lower(), [a.strip() for a in m.group(2).split(",") if a.strip()]
+    if name not in lx.SHAPE_WORDS and len(name) >= 3:
+        # "wal(len=4)": what stands before the brackets can only be a family name
+        near = [w for w in lx.SHAPE_WORDS if DamerauLevenshtein.distance(name, w) == 1]
+        if len(near) == 1:
+            notes.append(f"corrected '{m.group(1)}' to '{near[0]}'")
+            name = near[0]
+    if name not in lx.SHAPE_WORDS or not args:
+        return m.group(0)
+    plain = [_arg_value(a) for a in args]
+    if all(plain):
+        said = " x ".join(p for p in plain if p) if len(args) > 1 else plain[0] or ""
+        return f" {name} {said} "
+    words = []
+    for arg in args:
+        key, _, value = arg.partition("=")
+        key, value = key.strip().lower(), _arg_value(value.strip())
+        if key not in _ARG_WORD or value is None:
+            return m.group(0)
+        word = _ARG_WORD[key]
+        words.append(f"of {value}" if word == "count" else f"{value} {word}".strip())
+    out = f" {name} {' , '.join(words)} "
+    notes.append(f"read '{m.group(0)}' as '{out.strip()}'")
+    return out
 
 
 _OPPOSITES = re.compile(r"\b(front|back|left|right)\s*[-–/]\s*(back|front|right|left)\b", re.I)
@@ -371,6 +426,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return " "
 
     text = _UNRELATED.sub(unrelated, text)
+    text = _CALL.sub(lambda m: _call(m, notes), text)
 
     def labelled(m: re.Match[str]) -> str:
         values = [v.strip() for v in re.split(r"\s*[x×*]\s*", m.group("values"))]

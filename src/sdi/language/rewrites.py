@@ -762,6 +762,15 @@ _REWRITES += [
         " spaced 5 cm apart ",
         "read '{0}' as a part's width apart",
     ),
+    (  # "a 4x4 square with a hole in the middle": hollow
+        re.compile(
+            r"\b(?:with|w)\s+(?:a|an|one)\s+(?:\w+\s+)?(?:hole|opening|void|gap|empty\s+space)\s+"
+            r"(?:in\s+(?:the\s+)?(?:middle|centre|center)|inside|in\s+it)(?:\s+of\s+it)?",
+            re.IGNORECASE,
+        ),
+        " hollow ",
+        "read '{0}' as hollow",
+    ),
     (
         re.compile(
             r"\b(square|rectangle|ring|grid)\b(\s+of\s+cubes)?\s*,?\s*hollow\b", re.IGNORECASE
@@ -792,6 +801,23 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{placement}",
+        "",
+    ),
+    (  # "@ (0.50, 0.30, 0.70)": a position with a height above the table
+        re.compile(
+            r"\(\s*(-?\d+(?:\.\d+)?)\s*,\s*(-?\d+(?:\.\d+)?)\s*,\s*(-?\d+(?:\.\d+)?)\s*\)",
+            re.IGNORECASE,
+        ),
+        "{xyz}",
+        "",
+    ),
+    (  # "two towers of 3 and put a beam across": the beam, joining them
+        re.compile(
+            r"\b(?:put|place|lay|add|set|stick|pop)\s+(?=(?:a|an|one|the)\s+(?:long\s+|single\s+)?"
+            r"(?:beam|plank|lintel|girder)\s+(?:across|over|on\s+top|on\s+them|spanning))",
+            re.IGNORECASE,
+        ),
+        " ",
         "",
     ),
     (  # "put two more on top of that one": that one is it

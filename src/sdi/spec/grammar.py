@@ -590,8 +590,11 @@ class _Parser:
                 )
             ):
                 h.shape = "pack"  # "a compact pile of 8 cubes"
-            if h.shape == "grid" and self.word(h.index - 1) in ("hollow", "empty", "open"):
-                h.shape = "enclosure"
+            if h.shape == "grid" and (
+                self.word(h.index - 1) in ("hollow", "empty", "open")
+                or (len(self.hits) == 1 and self._said_hollow())
+            ):
+                h.shape = "enclosure"  # "a 4x4 pad, hollow": the one structure named
             if h.shape == "block" and self.word(h.index - 1) in ("hollow", "empty"):
                 h.shape = "enclosure"
         # the word "cube" as a shape is one part ("a single cube") unless sized: see `build`
@@ -1573,6 +1576,12 @@ class _Parser:
             return hit
         return None
 
+    def _said_hollow(self) -> bool:
+        return any(
+            t.text == "hollow" and self.word(j - 1) not in ("not", "no")
+            for j, t in enumerate(self.toks)
+        )
+
     def parse(self) -> SpecDraft:
         if not self.toks:
             raise SpecError("the command is empty; say what to build, e.g. 'a 3-cube tower'")
@@ -1588,6 +1597,8 @@ class _Parser:
                     + " (e.g. 'a tower of 4 cubes', 'a 3 by 3 grid on the left')",
                     understood=self.understood(),
                 )
+            if hit.shape == "grid" and self._said_hollow():  # "a hollow pad 3 by 3": by its size
+                hit.shape = "enclosure"
             self.hits = [hit]
         self.segment()
         for h in self.hits:
