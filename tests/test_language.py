@@ -1974,3 +1974,13 @@ def test_a_consulted_word_the_reading_builds_nothing_for_is_reported(command, wo
     r = plan(command)
     assert r.status == "partial", r.notes
     assert any(n.startswith(f"ignored '{word}': the reading builds nothing") for n in r.notes)
+
+
+def test_texting_and_warehouse_words():
+    (s,) = read("pls a lil tower in the left lane").spec.structures
+    assert (s.shape, s.region) == ("tower", "left") and s.height is not None and s.height <= 3
+    (s,) = read("stack 4 in the front-right bay").spec.structures
+    assert s.region == "front right"
+    spec = read("a pad 3x3 n stick a tower of 2 behind the middle of it").spec
+    (r,) = spec.relations
+    assert (r.kind, r.side) == ("next_to", "back")

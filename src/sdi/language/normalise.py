@@ -154,12 +154,24 @@ _SHORTHAND = [
     (re.compile(r"\bw/(?=\s|\w)", re.I), "with "),
     (re.compile(r"(?<=\d)\s+n\s+(?=\d)", re.I), " and "),
     # texting: "2 stacks of 4 n put a bridge", "a 3x3 square w a hole", "u pick"
-    (
-        re.compile(r"(?<=[a-z0-9])\s+n\s+(?=(?:put|then|a|an|the|make|stack|add|build)\b)", re.I),
-        " and ",
-    ),
+    (re.compile(r"(?<=[a-z0-9])\s+n\s+(?=[a-z]{2,})", re.I), " and "),
     (re.compile(r"(?<=[a-z0-9])\s+w\s+(?=(?:a|an|the|one|two|\d)\b)", re.I), " with "),
-    (re.compile(r"idk\b", re.I), "I do not know"),
+    # a warehouse's places: "the back-left bay", "the left lane", "front lane"
+    (
+        re.compile(
+            r"\b((?:front|back|rear|left|right|middle|centre|center)(?:[- ](?:left|right))?)"
+            r"\s+(?:lane|bay|zone|section|quadrant|strip)\b",
+            re.I,
+        ),
+        r"\1",
+    ),
+    (re.compile(r"\bidk\b", re.I), "I do not know"),
+    (re.compile(r"\bidc\b", re.I), "I do not care"),
+    (re.compile(r"\bdunno\b", re.I), "I do not know"),
+    (re.compile(r"\blil\b", re.I), "little"),
+    (re.compile(r"\bsmth\b|\bsth\b", re.I), "something"),
+    (re.compile(r"\bcn\s+u\b", re.I), "can you"),
+    (re.compile(r"\b(?:u|ya)\s+(?=pick|choose|decide)", re.I), "you "),
     (re.compile(r"\b(\d+)\s*x\s+(?=[a-z]{3,})(?!by\b|cubes?\b)", re.I), r"\1 "),
 ]
 

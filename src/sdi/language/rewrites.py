@@ -820,6 +820,15 @@ _REWRITES += [
         " ",
         "",
     ),
+    (  # "a tower right behind the middle of it": behind it, centred on it
+        re.compile(
+            r"\b(behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|next\s+to|beside|against)\s+"
+            r"the\s+(?:middle|centre|center)\s+of\s+(it|them|the\s+\w+)",
+            re.IGNORECASE,
+        ),
+        " {0} {1} ",
+        "",
+    ),
     (  # "put two more on top of that one": that one is it
         re.compile(
             r"(?<=\b(?:of|on|to|by|at)\s)(?:that|this)\s+one\b(?!\s+(?:of|with|high|tall|long)\b)",
@@ -1571,7 +1580,8 @@ _REWRITES += [
             r"(?:\s+the\s+(?:form|shape|size|sizes|design|height))?"
             r"|how(?:ever)?\s+you\s+(?:want|like)|as\s+you\s+(?:like|wish|see\s+fit)"
             r"|free\s+design|dealer'?s\s+choice|surprise\s+me(?:\s+with)?"
-            r"|i\s+do\s*n[o']?t\s+care\s+(?:how\s+(?:many|big|tall|high)(?:\s+\w+)?|about\s+the\s+\w+)"
+            r"|i\s+do\s*n[o']?t\s+(?:care|know|mind)\s+(?:how\s+(?:many|big|tall|high|long|wide)"
+            r"(?:\s+\w+)?|about\s+the\s+\w+)"
             r"|ur\s+choice|(?:just\s+)?whatever(?:\s+you\s+(?:like|want|think))?"
             r"|anything(?:\s+you\s+(?:like|want))?|something\s+(?:fun|nice|cool|interesting|"
             r"pretty|creative|different|quick|simple))\b",
