@@ -1984,3 +1984,19 @@ def test_texting_and_warehouse_words():
     spec = read("a pad 3x3 n stick a tower of 2 behind the middle of it").spec
     (r,) = spec.relations
     assert (r.kind, r.side) == ("next_to", "back")
+
+
+def test_no_source_file_holds_a_control_character():
+    """A pattern written through a non-raw string once put a backspace where its ``\\b`` was, and
+    the rule silently never matched."""
+    from pathlib import Path
+
+    import sdi
+
+    root = Path(sdi.__file__).parent
+    bad = [
+        str(p.relative_to(root))
+        for p in root.rglob("*.py")
+        if any(ord(c) < 32 and c not in "\n\t\r" for c in p.read_text(encoding="utf-8"))
+    ]
+    assert not bad
