@@ -2000,3 +2000,40 @@ def test_no_source_file_holds_a_control_character():
         if any(ord(c) < 32 and c not in "\n\t\r" for c in p.read_text(encoding="utf-8"))
     ]
     assert not bad
+
+
+def test_one_on_each_of_four_sides_stands_on_every_side():
+    r = plan("a 2x2 block 2 high with a stack of 2 on each of its four sides, one cube clear")
+    assert r.status == "success", (r.error, r.notes)
+    columns: dict[tuple[float, float], int] = {}
+    for p in r.layout:
+        xy = (round(p.position[0], 3), round(p.position[1], 3))
+        columns[xy] = columns.get(xy, 0) + 1
+    assert len(columns) == 4 + 4 and all(n == 2 for n in columns.values())
+    cx = sum(x for x, _ in columns) / 8
+    cy = sum(y for _, y in columns) / 8
+    by_distance = sorted(columns, key=lambda xy: (xy[0] - cx) ** 2 + (xy[1] - cy) ** 2)
+    block, stacks = by_distance[:4], by_distance[4:]
+    lo = (min(x for x, _ in block), min(y for _, y in block))
+    hi = (max(x for x, _ in block), max(y for _, y in block))
+    # one stack in front, behind, left and right, each one cube clear of the block's face
+    sides = sorted(
+        ("front" if x < lo[0] else "back" if x > hi[0] else "right" if y < lo[1] else "left")
+        for x, y in stacks
+    )
+    assert sides == ["back", "front", "left", "right"]
+    for x, y in stacks:
+        clear = max(lo[0] - x, x - hi[0], lo[1] - y, y - hi[1]) - 0.05
+        assert np.isclose(clear, 0.05)
+
+
+def test_more_cubes_stacked_on_the_middle_of_a_floor_are_a_column_on_it():
+    spec = read("lay a 3x3 slab, then stack 3 more on the middle one").spec
+    assert [s.shape for s in spec.structures] == ["grid", "tower"]
+    (r,) = spec.relations
+    assert r.kind == "on_top_of" and spec.structures[1].height == 3
+
+
+def test_the_top_taken_off_a_pyramid_is_reported_not_a_smaller_pyramid():
+    r = plan("a pyramid of 4 levels, then take the top level off")
+    assert r.status == "partial" and r.spec.structures[0].height == 4

@@ -357,8 +357,8 @@ def _at_anchors(
     base: _Placed, sub: _Placed, kind: str, at: str, cell: CellConfig, gap: float | None = None
 ) -> _Placed:
     """One copy of `sub` at each corner or end of `base`: on its top face (``on_top_of``)
-    or against its two ends on the ground, `gap` away (``next_to``; touching by default). A
-    square base's ends are its left and right sides."""
+    or against its two ends (or all four sides) on the ground, `gap` away (``next_to``;
+    touching by default). A square base's ends are its left and right sides."""
     sub_bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
     if kind == "on_top_of":
         top, _ = _top(base)
@@ -386,9 +386,13 @@ def _at_anchors(
         anchors, dz = [centre + off for off in offsets], top - sub_bottom
     else:
         long = 1 if base.half[1] >= base.half[0] - 1e-9 else 0
-        reach = base.half[long] + sub.half[long] + (gap or 0.0)
+        axes = (0, 1) if at == "sides" else (long,)
         base_bottom = float((base.z - np.array([d[2] for d in base.sizes]) / 2).min())
-        anchors = [s * reach * np.eye(2)[long] for s in (-1.0, 1.0)]
+        anchors = [
+            s * (base.half[d] + sub.half[d] + (gap or 0.0)) * np.eye(2)[d]
+            for d in axes
+            for s in (-1.0, 1.0)
+        ]
         dz = base_bottom - sub_bottom
     if not at.endswith("s"):  # "on one corner", "at one end": the first of them
         anchors = anchors[:1]

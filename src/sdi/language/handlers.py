@@ -65,8 +65,13 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     at = "corners" if "corner" in said.lower() else "ends" if " end" in said.lower() else None
     if at and re.search(r"\b(?:one|either)\b", said, re.IGNORECASE):
         at = at[:-1]  # "on one corner": a single copy
-    flanking = at is None and re.search(r"\b(?:either|both|each)\b", said, re.IGNORECASE)
-    if flanking:  # "a tower on each side of it", "on either side": one at each of its ends
+    all_four = re.search(r"\b(?:four|4|all)\b", said, re.IGNORECASE)
+    flanking = at is None and (
+        re.search(r"\b(?:either|both|each)\b", said, re.IGNORECASE) or all_four
+    )
+    if flanking and all_four:  # "a tower on each of its 4 sides": one on every side
+        at = "sides"
+    elif flanking:  # "a tower on each side of it", "on either side": one at each of its ends
         at = "ends"
     elif at is None:  # "on one side": which side is not said
         st.material.append(said)
@@ -79,7 +84,7 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     st.notes.append(
         f"read '{said}' as "
         + (f"one at each of its {at}" if at.endswith("s") else f"on one {at}")
-        + (" (one on each side, along its length)" if flanking else "")
+        + (" (one on each side, along its length)" if flanking and at == "ends" else "")
     )
     if on_top and not m.group(1):
         return " "  # "a wall with a cube on top at each end"

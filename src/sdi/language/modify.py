@@ -297,6 +297,16 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         pick = {"first": 0, "second": 1, "third": 2, "last": target.count - 1}
         index = target.first + min(pick[ordinal.group(1).lower()], target.count - 1)
     last = structures[index]
+    if op == "-" and last.shape == "pyramid" and re.search(r"\btop\b", p.text, re.I):
+        return None  # its top taken off a pyramid is a cut-off pyramid, not a smaller one
+    if (
+        op == "+"
+        and last.shape in ("grid", "row", "enclosure", "wall", "block")
+        and re.search(
+            r"\bon\s+(?:the\s+)?(?:middle|centre|center|one|a|each|the\s+\w+\s+end)\b", p.text, re.I
+        )
+    ):
+        return None  # "stack 2 more on the middle one": a column on it, not a layer more
     key = key or ("steps" if last.shape == "staircase" else "height")
     now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
     if op == "/" and now % n:

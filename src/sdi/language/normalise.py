@@ -381,7 +381,14 @@ def _n_by_m(m: re.Match[str]) -> str:
 # "50 mm clear", "clearance 2 cubes"; and "no infill" of what is hollow anyway
 _CLEAR = [
     (re.compile(r"\bclear\s+(?=(?:gap|space|distance|spacing)\b)", re.I), ""),
-    (re.compile(r"(\d+(?:\.\d+)?\s*(?:mm|cm|m|cubes?))\s+clear(?:ance)?\b", re.I), r"\1 gap"),
+    (
+        re.compile(
+            r"((?:\d+(?:\.\d+)?|a|one|two|three|four)\s*(?:mm|cm|m|cubes?|parts?))\s+"
+            r"clear(?:ance)?\b",
+            re.I,
+        ),
+        r"\1 gap",
+    ),
     (re.compile(r"\bclearance\b", re.I), "gap"),
     (re.compile(r"\b(?:no|without)\s+(?:infill|fill|filling)\b|\bunfilled\b", re.I), "hollow"),
 ]

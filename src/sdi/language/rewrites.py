@@ -280,6 +280,16 @@ _REWRITES += [
         " {0} ",
         "",
     ),
+    (  # "then stack 2 more on the middle one": a column of 2 standing on its middle
+        re.compile(
+            r"\b(?:stack|put|add|place|pile)\s+(\d+|two|three|four|five|six)\s+(?:more\s+)?(?:cubes?\s+)?"
+            r"on\s+(?:top\s+of\s+)?(?:the\s+)?(?:middle|centre|center)(?:\s+(?:one|cube|part))?"
+            r"(?:\s+of\s+(?:it|them))?",
+            re.IGNORECASE,
+        ),
+        " a tower of {0} on top of it ",
+        "read '{0}' as a column on its middle",
+    ),
     (
         re.compile(r"\bon\s+(?:its|the)\s+(?:centre|center|middle|top)\b(?!\s+of)", re.I),
         " on top ",
@@ -795,6 +805,7 @@ _REWRITES += [
             r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:four\s+|4\s+|two\s+|2\s+)?"
             r"(?:ends|end|sides|side|corners|corner)"
             r"|(?:all\s+)?(?:its|their)\s+(?:four\s+|4\s+|two\s+|2\s+)?(?:corners|ends)"
+            r"|all\s+(?:four|4)\s+(?:sides|corners)"
             r"|(?:all\s+)?the\s+(?:four\s+|4\s+|two\s+|2\s+)?(?:corners|ends)"
             r"(?=\s+of\s+(?:it|them|the)\b))"
             r"(?:\s+of\s+(it|them|the\s+\w+|an?\b))?",

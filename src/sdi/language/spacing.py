@@ -184,7 +184,9 @@ def apply_gap(spec: Spec, st: ReadState) -> Spec:
     """The stated gap on the relations beside (else between the separate structures)."""
     if st.gap_m is None:
         return spec
-    beside = [r for r in spec.relations if r.kind == "next_to" and r.at in (None, "ends", "end")]
+    beside = [
+        r for r in spec.relations if r.kind == "next_to" and r.at in (None, "ends", "end", "sides")
+    ]
     if beside:
         relations = tuple(
             r.model_copy(update={"gap_m": st.gap_m}) if r in beside else r for r in spec.relations

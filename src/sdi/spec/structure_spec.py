@@ -359,7 +359,7 @@ class SpecDraft(BaseModel):
 
 
 RelationKind = Literal["on_top_of", "around", "next_to"]
-Anchor = Literal["corners", "ends", "corner", "end"]
+Anchor = Literal["corners", "ends", "corner", "end", "sides"]
 
 
 class Relation(BaseModel):
@@ -372,7 +372,8 @@ class Relation(BaseModel):
 
     ``at`` makes the relation distributive — one copy of `subject` at each anchor: on the
     object's top face at its four ``corners`` or two ``ends`` (``on_top_of``), or against its
-    two ``ends`` on the ground (``next_to``: "a tower at both ends of the wall").
+    two ``ends`` or all four ``sides`` on the ground (``next_to``: "a tower at both ends of the
+    wall", "a tower on each of its four sides").
     """
 
     model_config = ConfigDict(frozen=True, extra="forbid")
@@ -392,6 +393,8 @@ class Relation(BaseModel):
     def _anchor(self) -> Relation:
         if self.at is not None and self.kind == "around":
             raise ValueError("at: a ring around a structure has no corners or ends to stand at")
+        if self.at == "sides" and self.kind != "next_to":
+            raise ValueError("at: copies on all four sides stand beside the structure")
         if self.at is not None and self.side is not None:
             raise ValueError("at: copies at the corners or ends have no single side")
         if self.gap_m is not None and self.kind != "next_to":
