@@ -2037,3 +2037,23 @@ def test_more_cubes_stacked_on_the_middle_of_a_floor_are_a_column_on_it():
 def test_the_top_taken_off_a_pyramid_is_reported_not_a_smaller_pyramid():
     r = plan("a pyramid of 4 levels, then take the top level off")
     assert r.status == "partial" and r.spec.structures[0].height == 4
+
+
+# -- where things may not go ---------------------------------------------------------------------
+@pytest.mark.parametrize(
+    "command, regions",
+    [
+        ("put everything on the right side: a tower of 2 and a row of 3", ["right", "right"]),
+        ("a stack of 3; never put it anywhere near the back edge", ["front"]),
+        ("a stack of 3, on no account to be placed on the right", ["left"]),
+        ("a row of 4 that keeps out of the front third of the table", ["back"]),
+        ("a 2x2 pad, then keep it in the left part", ["left"]),
+    ],
+)
+def test_where_a_structure_may_not_go_or_must_stay(command, regions):
+    assert [s.region for s in read(command).spec.structures] == regions
+
+
+def test_no_second_layer_is_a_claim_the_reading_keeps_or_breaks():
+    assert plan("a 3 by 2 slab, no second layer").status == "success"
+    assert plan("a 3 by 2 block 2 high, no second layer").status == "partial"

@@ -30,6 +30,9 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
                       r"stacked(?:\s+up)?(?:\s+on\s+(?:each\s+other|one\s+another|top\s+of\s+each\s+other))?\b"),
         ("flat", _N + r"(?:all|each(?:\s+one)?|every\s+one|both)\s+(?:of\s+them\s+)?"
                       r"(?:lying\s+|laid\s+)?(?:flat\s+|directly\s+|straight\s+)?on\s+the\s+(?:table|ground|floor)\b"),
+        ("flat", _N + r"(?:but\s+)?(?:no|without\s+a|not\s+a)\s+(?:second|2nd|third|3rd|other|"
+                      r"extra|further|more)\s+(?:layers?|levels?|courses?|tiers?)"
+                      r"(?:\s*,?\s*just\s+flat)?\b"),
         ("flat", _N + r"(?:lying|laid|lie|lay|laying)\s+flat"
                       r"(?:\s+on\s+the\s+(?:table|ground|floor))?\b"),
         # nothing on top of what is named

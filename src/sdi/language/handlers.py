@@ -427,6 +427,14 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" running {other} "
 
 
+def _region_all(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "keep everything in the left half": a region for every structure that has none."""
+    said, groups = _said(m)
+    st.region_all = groups[0]
+    st.notes.append(f"read '{said}' as every structure on the {groups[0]}")
+    return " , "
+
+
 def _xyz(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "at (0.50, 0.30, 0.70)": x and y place it; a z above the table cannot be built."""
     x, y, z = m.group(1), m.group(2), m.group(3)
@@ -655,6 +663,7 @@ HANDLERS: dict[str, Handler] = {
     "{edge}": _edge,
     "{maybe}": _maybe,
     "{xyz}": _xyz,
+    "{region_all}": _region_all,
     "{delegated}": _delegated,
     "{below}": _below,
     "{every_side}": _every_side,

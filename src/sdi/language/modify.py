@@ -54,7 +54,8 @@ MODIFY = [
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
     _op(
-        r"\b(?:move|shift|put|place|slide)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|at|on)\s+(?:the\s+)?"
+        r"\b(?:move|shift|put|place|slide|keep)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|at|on|in)\s+"
+        r"(?:the\s+)?"
         r"(left|right|front|back|middle|centre|center)\b",
         "region",
     ),

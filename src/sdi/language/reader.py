@@ -114,6 +114,14 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]
+    if st.region_all:
+        related = {r.subject for r in relations}
+        specs = [
+            s
+            if s.region or s.at_x is not None or s.at_y is not None or k in related
+            else s.model_copy(update={"region": st.region_all})
+            for k, s in enumerate(specs)
+        ]
     if st.no_beams:
         for s in specs:
             if s.shape in ("bridge", "arch", "canopy") or s.part == "beam":

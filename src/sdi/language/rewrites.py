@@ -29,6 +29,35 @@ _LEVEL_ORDINAL = re.compile(
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "on no account to be placed on the left": not on the left
+        re.compile(
+            r"\bon\s+no\s+account\s+(?:(?:is\s+it\s+|are\s+they\s+)?to\s+(?:be\s+)?)?"
+            r"(?:placed|put|built|set|go|stand|be)?\b",
+            re.IGNORECASE,
+        ),
+        " not ",
+        "",
+    ),
+    (  # "do not put it anywhere near the front edge": at the other side
+        re.compile(
+            r"\b(?:do\s+not|never)\s+(?:put|place|build|set|stand)\s+(?:it|them|anything)\s+"
+            r"(?:anywhere\s+)?(?:near|close\s+to|next\s+to|by|at|on|in)\s+the\s+(left|right|front|back)"
+            r"(?:\s+(?:edge|side|half|part|end))?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (  # "keep everything in the left half": every structure there
+        re.compile(
+            r"\b(?:keep|put|place|build)\s+(?:everything|it\s+all|all\s+of\s+it|them\s+all|all\s+of\s+them|"
+            r"all\s+(?:the\s+)?structures)\s+(?:in|on|at|to)\s+the\s+(left|right|front|back)"
+            r"(?:\s+(?:half|side|part|end))?(?:\s+of\s+the\s+(?:table|workspace|cell|bench))?",
+            re.IGNORECASE,
+        ),
+        "{region_all}",
+        "",
+    ),
     (  # "not left, not right - in the middle": neither side of that axis
         re.compile(
             r"\b(?:(?:which|that)\s+)?(?:should\s+|must\s+|is\s+|are\s+)?not\s+(?:be\s+)?(?:on\s+|at\s+|in\s+)?"
@@ -451,8 +480,9 @@ _REWRITES += [
         re.compile(
             r",?\s*\b(?:(?:but\s+|and\s+)?(?:do\s+not|never|must\s+not|cannot|can\s+not)\s+"
             r"(?:use|touch|go\s+(?:into|in|on)|build\s+(?:on|in)|put\s+anything\s+(?:on|in))|"
-            r"(?:and\s+)?(?:stay|keep)\s+out\s+of)\s+the\s+(left|right|front|back)\s+"
-            r"(?:half|side|part|end)(?:\s+of\s+the\s+table)?\b",
+            r"(?:and\s+)?(?:stays?|keep(?:s|ing)?(?:\s+(?:it|them|everything))?)\s+out\s+of)\s+the\s+"
+            r"(left|right|front|back|middle|centre|center)(?:\s+(?:half|side|part|end|quarter|third|"
+            r"strip|edge))?(?:\s+of\s+the\s+(?:table|workspace|work\s+area|cell|bench))?\b",
             re.IGNORECASE,
         ),
         " on the {opposite} ",
