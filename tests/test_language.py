@@ -2057,3 +2057,10 @@ def test_where_a_structure_may_not_go_or_must_stay(command, regions):
 def test_no_second_layer_is_a_claim_the_reading_keeps_or_breaks():
     assert plan("a 3 by 2 slab, no second layer").status == "success"
     assert plan("a 3 by 2 block 2 high, no second layer").status == "partial"
+
+
+def test_a_beam_laid_across_two_towers_named_apart_joins_them_with_the_gap_as_span():
+    r = plan("a stack of 2, then another stack of 2 two cubes apart, then lay a plank across both")
+    assert r.status == "success", (r.error, r.notes)
+    (s,) = r.spec.structures
+    assert (s.shape, s.height, s.span) == ("bridge", 2, 2)

@@ -257,6 +257,18 @@ def _join(
         n = towers[0].length or 2
         towers = [towers[0].model_copy(update={"shape": "tower", "height": 1, "length": None,
                                                "gap_m": None})] * n  # fmt: skip
+    if len(towers) == 1 and towers[0].shape == "tower":
+        # "stack 3 high, then a second stack of 3, then lay a beam across the two": the tower
+        # named just before it is the other pillar
+        before = [
+            q.first for q in phrases[:pillars]
+            if q.count == 1 and q.spec is not None and q.first not in drop
+            and replace.get(q.first, structures[q.first]).shape == "tower"
+        ]  # fmt: skip
+        if before:
+            idx = [before[-1], *idx]
+            towers = [replace.get(k, structures[k]) for k in idx]
+            st.notes.append("read the beam's towers as the last two named")
     if len(towers) < 2 or any(t.shape != "tower" for t in towers):
         shapes = ", ".join(t.shape for t in towers)
         st.material.append("relation joined")

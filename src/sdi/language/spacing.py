@@ -201,7 +201,11 @@ def apply_gap(spec: Spec, st: ReadState) -> Spec:
 
 
 def apply_span(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
-    """The stated gap between supports as the span (in parts) of the one spanning structure."""
+    """The stated gap between supports as the span (in parts) of the one spanning structure
+    (a gap said between two towers that a beam then joins is that bridge's span)."""
+    alone = len(drafts) == 1 and drafts[0].shape in _SPANNING
+    if st.span_m is None and st.gap_m is not None and alone:
+        st.span_m, st.gap_m = st.gap_m, None
     if st.span_m is None:
         return drafts
     spanning = [k for k, d in enumerate(drafts) if d.shape in _SPANNING and d.span is None]
