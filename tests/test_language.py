@@ -2064,3 +2064,16 @@ def test_a_beam_laid_across_two_towers_named_apart_joins_them_with_the_gap_as_sp
     assert r.status == "success", (r.error, r.notes)
     (s,) = r.spec.structures
     assert (s.shape, s.height, s.span) == ("bridge", 2, 2)
+
+
+def test_single_parts_left_out_are_reported_and_a_climb_towards_my_left_turns_the_stairs():
+    r = plan("a wall 4 long 3 high, but remove the end cubes of the top course")
+    assert r.status == "partial" and r.spec.structures[0].height == 3
+    assert len(r.spec.structures) == 1
+    (s,) = read("stairs of 4 steps that climb towards my right").spec.structures
+    assert s.axis == "y"
+
+
+def test_the_middle_of_the_bench_is_the_centre_of_the_work_surface():
+    (s,) = read("a tower of 3 in the middle of the bench").spec.structures
+    assert (s.shape, s.region) == ("tower", "centre")

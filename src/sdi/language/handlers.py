@@ -427,6 +427,17 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" running {other} "
 
 
+def _parts_out(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "leave out the middle cube on the top row": single parts SDI cannot leave out."""
+    said = _said(m)[0]
+    st.material.append(said)
+    st.notes.append(
+        f"ignored '{said}': SDI builds each structure whole and cannot leave single parts out; "
+        "describe the shape that remains instead"
+    )
+    return " "
+
+
 def _region_all(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "keep everything in the left half": a region for every structure that has none."""
     said, groups = _said(m)
@@ -664,6 +675,7 @@ HANDLERS: dict[str, Handler] = {
     "{maybe}": _maybe,
     "{xyz}": _xyz,
     "{region_all}": _region_all,
+    "{parts_out}": _parts_out,
     "{delegated}": _delegated,
     "{below}": _below,
     "{every_side}": _every_side,

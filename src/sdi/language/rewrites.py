@@ -29,6 +29,17 @@ _LEVEL_ORDINAL = re.compile(
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "wall 5 long, but leave out the middle cube on the top row": parts SDI cannot leave out
+        re.compile(
+            r",?\s*\b(?:but\s+|and\s+)?(?:leave\s+out|remove|skip|omit|take\s+out|without)\s+the\s+"
+            r"(?:middle|centre|center|end|first|last|corner|top|bottom|outer|two\s+end)\s+"
+            r"(?:cubes?|parts?|bricks?|blocks?)\s+(?:on|of|in|from)\s+the\s+(?:top|bottom|middle|"
+            r"first|second|last|upper|lower)\s+(?:row|layer|course|level|tier)\b",
+            re.IGNORECASE,
+        ),
+        "{parts_out}",
+        "",
+    ),
     (  # "on no account to be placed on the left": not on the left
         re.compile(
             r"\bon\s+no\s+account\s+(?:(?:is\s+it\s+|are\s+they\s+)?to\s+(?:be\s+)?)?"
@@ -250,7 +261,8 @@ _REWRITES += [
     (
         re.compile(
             r",?\s*\b(?:(?:climbing|rising|ascending|going|stepping)\s+up|climbing|rising|"
-            r"ascending)\s+(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+)?"
+            r"ascending|(?:it\s+|they\s+)?(?:to\s+)?(?:climbs?|rises?|ascends?))\s+"
+            r"(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+|my\s+|your\s+|our\s+)?"
             r"(left|right|front|back)\b|,?\s*\bup\s+to(?:wards)?\s+the\s+(left|right|front|back)\s+"
             r"(?:climbing|rising|ascending|going)\b",
             re.IGNORECASE,
@@ -868,6 +880,15 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         " {0} {1} ",
+        "",
+    ),
+    (  # "the whole thing in the middle of the bench": the work surface's centre
+        re.compile(
+            r"\b(?:in|at)\s+the\s+(?:very\s+)?(?:middle|centre|center)\s+of\s+the\s+"
+            r"(?:bench|table|workspace|work\s*space|work\s+area|cell|work\s+table|site)\b",
+            re.IGNORECASE,
+        ),
+        " in the centre ",
         "",
     ),
     (  # "put two more on top of that one": that one is it
