@@ -534,7 +534,7 @@ def pyramid_levels(bs: Boxes) -> list[int] | None:
     return counts
 
 
-_SYMS = [
+SYMMETRIES = [
     lambda i, j: (i, j),
     lambda i, j: (-i, j),
     lambda i, j: (i, -j),
@@ -544,11 +544,12 @@ _SYMS = [
     lambda i, j: (j, -i),
     lambda i, j: (-j, -i),
 ]
+"""The eight turns and mirror images of a plan cell (i, j) about the origin."""
 
 
 def _normal_forms(cs: Iterable[tuple[int, int]]) -> list[frozenset[tuple[int, int]]]:
     out = []
-    for f in _SYMS:
+    for f in SYMMETRIES:
         pts = [f(i, j) for i, j in cs]
         mi, mj = min(p[0] for p in pts), min(p[1] for p in pts)
         out.append(frozenset((i - mi, j - mj) for i, j in pts))

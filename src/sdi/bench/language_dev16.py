@@ -248,18 +248,6 @@ def _collinear(result: Mapping[str, Any]) -> k.Reason:
     return "not in one straight line"
 
 
-_TURNS = (
-    lambda i, j: (i, j),
-    lambda i, j: (-i, j),
-    lambda i, j: (i, -j),
-    lambda i, j: (-i, -j),
-    lambda i, j: (j, i),
-    lambda i, j: (-j, i),
-    lambda i, j: (j, -i),
-    lambda i, j: (-j, -i),
-)
-
-
 def _plan(*rows: str) -> k.Check:
     """One structure on the table whose column heights, cell by cell, are `rows` (a digit a
     cell, "." for an empty cell) in any turn or mirror image; every column full from the
@@ -276,7 +264,7 @@ def _plan(*rows: str) -> k.Check:
             tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
         if len(vox) != sum(tops.values()):
             return "columns not full"
-        for turn in _TURNS:
+        for turn in bx.SYMMETRIES:
             moved = {turn(i, j): h for (i, j), h in tops.items()}
             mi = min(i for i, _ in moved)
             mj = min(j for _, j in moved)
