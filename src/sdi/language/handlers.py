@@ -323,15 +323,20 @@ def _below(m: re.Match[str], st: ReadState, note: str) -> str:
 _MM = {"cm": 10, "mm": 1, "centimetres": 10, "centimeters": 10}
 
 
-def _unsupported(m: re.Match[str], st: ReadState, note: str) -> str:
-    """ "floating above the table", "down into the table": nothing SDI builds can do that."""
+def _cannot(m: re.Match[str], st: ReadState, why: str) -> str:
+    """Words asking for what SDI cannot build: material, with why, and cut from the text."""
     said = _said(m)[0]
     st.material.append(said)
-    st.notes.append(
-        f"ignored '{said}': every structure stands on the table, resting on it or on parts "
-        "below it; nothing can float, go below the table or stand on the robot or a person"
-    )
+    st.notes.append(f"ignored '{said}': {why}")
     return " "
+
+
+def _unsupported(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "floating above the table", "down into the table": nothing SDI builds can do that."""
+    return _cannot(
+        m, st, "every structure stands on the table, resting on it or on parts below it; "
+        "nothing can float, go below the table or stand on the robot or a person",
+    )  # fmt: skip
 
 
 _KEYED = {"length": "long", "len": "long", "width": "wide", "depth": "deep", "height": "high",
@@ -429,13 +434,10 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
 
 def _parts_out(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "leave out the middle cube on the top row": single parts SDI cannot leave out."""
-    said = _said(m)[0]
-    st.material.append(said)
-    st.notes.append(
-        f"ignored '{said}': SDI builds each structure whole and cannot leave single parts out; "
-        "describe the shape that remains instead"
-    )
-    return " "
+    return _cannot(
+        m, st, "SDI builds each structure whole and cannot leave single parts out; describe "
+        "the shape that remains instead",
+    )  # fmt: skip
 
 
 def _region_all(m: re.Match[str], st: ReadState, note: str) -> str:
