@@ -2077,3 +2077,11 @@ def test_single_parts_left_out_are_reported_and_a_climb_towards_my_left_turns_th
 def test_the_middle_of_the_bench_is_the_centre_of_the_work_surface():
     (s,) = read("a tower of 3 in the middle of the bench").spec.structures
     assert (s.shape, s.region) == ("tower", "centre")
+
+
+def test_removing_the_tallest_of_towers_named_apart_leaves_the_others():
+    r = plan("a stack of 2, a stack of 5 and a stack of 3, then remove the tallest one")
+    assert r.status == "success", (r.error, r.notes)
+    assert sorted(s.height for s in r.spec.structures) == [2, 3]
+    r = plan("two stacks of 3, then take away the tallest one")
+    assert r.status == "partial"  # no single tallest: the command does not say which

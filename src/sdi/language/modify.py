@@ -125,8 +125,9 @@ MODIFY = [
     ),
     # "5 towers of 2 in a line, then take away the middle one": one structure fewer
     _op(
-        r"\b(?:take\s+(?:out|away)|remove|leave\s+out|drop|skip)\s+the\s+(middle|first|last)\s+"
-        r"(?:one|tower|stack|column|pillar|row|wall)\b",
+        r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip)\s+the\s+(middle|first|last|"
+        r"tallest|highest|biggest|shortest|lowest|smallest)\s+(?:one|tower|stack|column|pillar|row|"
+        r"wall)\b",
         "drop",
     ),
 ]
@@ -258,18 +259,35 @@ def _hollow(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
 
 def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
           structures: list[StructureDraft]) -> str | None:  # fmt: skip
-    """ "5 towers, then take away the middle one": one of several named together left out."""
-    target = built[-1]
+    """ "5 towers, then take away the middle one": one of several named together left out;
+    "three towers of 2, 3 and 4, then remove the tallest one": the one of a kind by height."""
     which = m.group(1).lower()
-    if target.count < 2 or (which == "middle" and target.count % 2 == 0):
-        return None  # one structure, or no single middle one
-    at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
-    del structures[target.first + at]
+    target = built[-1]
+    if which in ("first", "last", "middle"):
+        if target.count < 2 or (which == "middle" and target.count % 2 == 0):
+            return None  # one structure, or no single middle one
+        at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
+        index = target.first + at
+    else:
+        indices = [q.first + k for q in built for k in range(q.count)]
+        heights = {i: structures[i].height for i in indices if structures[i].shape == "tower"}
+        if len(heights) < 2 or None in heights.values():
+            return None
+        pick = max if which in ("tallest", "highest", "biggest") else min
+        extreme = pick(h for h in heights.values() if h is not None)
+        found = [i for i, h in heights.items() if h == extreme]
+        if len(found) != 1:
+            return None  # no single one: the command does not say which
+        index = found[0]
+    gone = structures.pop(index)
+    owner = next(q for q in built if q.first <= index < q.first + q.count)
     for q in before:
-        if q.count and q.first > target.first:
+        if q.count and q.first > index:
             q.first -= 1
-    target.count -= 1
-    return f"{target.count} left of the {target.count + 1}"
+    owner.count -= 1
+    left = sum(q.count for q in built)
+    size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
+    return f"{left} left of the {left + 1}{size}"
 
 
 def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],

@@ -28,6 +28,12 @@ _COUNT_ONLY = re.compile(
 )
 
 
+_DROPS = re.compile(
+    r"^\W*(?:then\s+)?(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip)\s+the\s+\w+est\b",
+    re.IGNORECASE,
+)
+
+
 def fill_slots(
     phrases: list[Phrase], rels: list[PhraseRelation], st: ReadState, doc: Doc
 ) -> list[StructureDraft]:
@@ -48,6 +54,8 @@ def fill_slots(
             if q.clause < p.clause and q.count
             for i in range(q.first, q.first + q.count)
         ]
+        if _DROPS.search(p.text) and modify(p, phrases[:k], structures, st):
+            continue  # "then remove the tallest one": a change, not a reference to it
         pick = pick_structure(p.text, structures, earlier)
         if pick is not None and structures:
             p.structure = pick
