@@ -1784,6 +1784,8 @@ def test_a_family_with_its_sizes_left_to_sdi_uses_the_defaults_and_says_so():
     r = plan("a pyramid, number of levels your call")
     assert r.status == "success" and r.spec.structures[0].shape == "pyramid"
     assert any("left to SDI" in n for n in r.notes)
+    r = plan("you choose the wall length, one wall only")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["wall"]
 
 
 def test_nothing_to_go_on_is_still_an_error_and_a_word_near_a_shape_is_not_one():

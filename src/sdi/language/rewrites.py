@@ -1645,6 +1645,8 @@ _REWRITES += [
             r"|i\s+do\s*n[o']?t\s+(?:care|know|mind)\s+(?:how\s+(?:many|big|tall|high|long|wide)"
             r"(?:\s+\w+)?|about\s+the\s+\w+)"
             r"|ur\s+choice|(?:just\s+)?whatever(?:\s+you\s+(?:like|want|think))?"
+            r"|(?:you\s+)?(?:pick|choose|select|decide\s+on)\s+(?:a|the|any)\s+"
+            r"(?:(?:tower|wall|stack|row|pyramid|bridge)\s+)?(?:height|size|length|number\s+of\s+\w+)"
             r"|anything(?:\s+you\s+(?:like|want))?|something\s+(?:fun|nice|cool|interesting|"
             r"pretty|creative|different|quick|simple))\b",
             re.IGNORECASE,
