@@ -183,7 +183,14 @@ def test_log_of_a_good_database_still_works(tmp_path):
 
 @pytest.mark.parametrize(
     ("content", "needle"),
-    [(None, "no such file"), (b"\xff\xfe[", "not UTF-8"), (b"[{", "not valid JSON")],
+    [
+        (None, "no such file"),
+        (b"\xff\xfe[", "not UTF-8"),
+        (b"[{", "not valid JSON"),
+        # a run's state is MessagePack, which has no integers past 64 bits: found by the fuzz
+        (b'[{"op": "translate", "id": "c1", "dx": 1' + b"0" * 40 + b"}]", "edits[0].dx is 1"),
+        (b'[{"op": "translate", "id": "c1", "dy": NaN}]', "edits[0].dy is nan"),
+    ],
 )
 def test_resume_edit_files(tmp_path, content, needle):
     edits = tmp_path / "edits.json"

@@ -173,10 +173,33 @@ def _arms(arms: str | None, cell: CellConfig, as_json: bool) -> list[str] | None
     return names
 
 
+def _plain_numbers(value: Any, where: str, path: Path) -> None:
+    """Every number in an edits file is finite and fits 64 bits (a run's state is stored as
+    MessagePack, which has no larger integers): else bad input naming where it is."""
+    if isinstance(value, bool):
+        return
+    if isinstance(value, int) and not -(2**63) <= value < 2**64:
+        raise InputError(
+            f"{path}: {where or 'the value'} is {str(value)[:12]}…, far beyond any size or "
+            "position in the cell; give metres (e.g. 0.4)",
+            field="edits",
+        )
+    if isinstance(value, float) and not math.isfinite(value):
+        raise InputError(
+            f"{path}: {where or 'the value'} is {value}; give a finite number", field="edits"
+        )
+    if isinstance(value, dict):
+        for key, item in value.items():
+            _plain_numbers(item, f"{where}.{key}" if where else str(key), path)
+    elif isinstance(value, list):
+        for k, item in enumerate(value):
+            _plain_numbers(item, f"{where}[{k}]" if where else f"edits[{k}]", path)
+
+
 def _read_edits(path: Path) -> Any:
     """The edits JSON of ``--edit`` or the interactive ``e FILE``; bad files are bad input."""
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
+        edits = json.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
         raise InputError(f"no such file: {path}; check the path", field="edits") from None
     except IsADirectoryError:
@@ -195,6 +218,11 @@ def _read_edits(path: Path) -> Any:
         ) from None
     except RecursionError:
         raise InputError(f"{path} is nested too deeply to be edits", field="edits") from None
+    try:
+        _plain_numbers(edits, "", path)
+    except RecursionError:
+        raise InputError(f"{path} is nested too deeply to be edits", field="edits") from None
+    return edits
 
 
 ForceOption = Annotated[
