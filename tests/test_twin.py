@@ -96,6 +96,7 @@ def test_reorder_sets_the_assembly_order_and_the_inspector_checks_it():
         ({"op": "move", "id": "zz", "position": [0.4, 0.3, 0.025]}, "id"),
         ({"op": "move", "id": "c1", "position": [0.4, "a", 0.025]}, "position"),
         ({"op": "move", "id": "c1", "position": [0.4, float("nan"), 0.025]}, "position"),
+        ({"op": "move", "id": "c1", "position": [10**400, 0.3, 0.025]}, "position"),
         ({"op": "rotate", "id": "c1", "by_deg": 45}, "by_deg"),
         ({"op": "insert", "part": "brick", "position": [0.4, 0.3, 0.025]}, "part"),
         ({"op": "hint", "index": 0}, "index"),
