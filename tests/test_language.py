@@ -2087,3 +2087,16 @@ def test_removing_the_tallest_of_towers_named_apart_leaves_the_others():
     assert sorted(s.height for s in r.spec.structures) == [2, 3]
     r = plan("two stacks of 3, then take away the tallest one")
     assert r.status == "partial"  # no single tallest: the command does not say which
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "one layer of 8 cubes in two rows",
+        "two rows of four, 1 layer",
+        "2 rows of 4 cubes, one layer",
+    ],
+)
+def test_one_layer_said_of_rows_is_a_floor_not_another_structure(command):
+    (s,) = read(command).spec.structures
+    assert (s.shape, s.length, s.width) == ("grid", 4, 2)

@@ -432,6 +432,17 @@ def _not_axis(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" running {other} "
 
 
+def _one_layer(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "two rows of four, 1 layer": what a floor is anyway; said of a wall or a block, its
+    height."""
+    before = [lx.SHAPE_WORDS.get(w) for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())]
+    stacked = [f for f in before if f in ("wall", "block", "tower", "enclosure", "castle")]
+    if stacked:
+        return " , 1 high "
+    st.notes.append(f"'{_said(m)[0]}': one layer, as built")
+    return " "
+
+
 def _parts_out(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "leave out the middle cube on the top row": single parts SDI cannot leave out."""
     return _cannot(
@@ -678,6 +689,7 @@ HANDLERS: dict[str, Handler] = {
     "{xyz}": _xyz,
     "{region_all}": _region_all,
     "{parts_out}": _parts_out,
+    "{one_layer}": _one_layer,
     "{delegated}": _delegated,
     "{below}": _below,
     "{every_side}": _every_side,

@@ -29,6 +29,25 @@ _LEVEL_ORDINAL = re.compile(
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "a single layer of 8 cubes in two rows": one layer, of that
+        re.compile(
+            r"\b(?:a|one)\s+(?:single\s+|flat\s+)?(?:layer|level|course)\s+(?:made\s+)?of\s+"
+            r"(?=(?:\d+|two|three|four|five|six|seven|eight|nine|ten|twelve)\s+(?:rows?|lines?|"
+            r"cubes?\s+in\s+(?:\d+|two|three|four)\s+rows?))",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
+    (  # "two rows of four, 1 layer": one part high, not a structure of its own
+        re.compile(
+            r",\s*(?:in\s+)?(?:just\s+)?(?:one|a\s+single|1|single)\s+(?:layer|level|course)"
+            r"(?:\s+(?:only|high|thick|tall|deep))?(?=\s*(?:$|[,.;!]))",
+            re.IGNORECASE,
+        ),
+        "{one_layer}",
+        "",
+    ),
     (  # "wall 5 long, but leave out the middle cube on the top row": parts SDI cannot leave out
         re.compile(
             r",?\s*\b(?:but\s+|and\s+)?(?:leave\s+out|remove|skip|omit|take\s+out|without)\s+the\s+"
@@ -1771,7 +1790,7 @@ _BY_HOW_MUCH = re.compile(
 
 _LOOSE_CUBES = re.compile(
     r"\b(two|three|four|2|3|4)\s+(?:single\s+|loose\s+|separate\s+)?(?:cubes|bricks)\s*,\s*"
-    r"(?=one\b)",
+    r"(?=one\b(?!\s+(?:layer|level|course|high|tall|thick|deep)\b))",
     re.IGNORECASE,
 )
 """'two cubes, one in the back left corner and one …': structures of one part each."""
