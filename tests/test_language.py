@@ -2100,3 +2100,10 @@ def test_removing_the_tallest_of_towers_named_apart_leaves_the_others():
 def test_one_layer_said_of_rows_is_a_floor_not_another_structure(command):
     (s,) = read(command).spec.structures
     assert (s.shape, s.length, s.width) == ("grid", 4, 2)
+
+
+def test_the_expected_result_said_is_a_description_and_a_bridge_thing_a_beam():
+    spec = read("a pad 4 by 2, then a pad 4 by 2 on it; it should come out as a block").spec
+    assert [s.shape for s in spec.structures] == ["grid", "grid"]
+    (s,) = read("two stacks of 2 and lay a bridge piece across the top").spec.structures
+    assert s.shape == "bridge"

@@ -883,6 +883,15 @@ _REWRITES += [
         "{xyz}",
         "",
     ),
+    (  # "put a bridge thing across the top": a beam
+        re.compile(
+            r"\b(?:a|the|some)\s+(?:bridge|roof|lintel)\s+(?:thing|piece|bit|part)\b"
+            r"(?=\s+(?:across|over|on\s+top|on\s+them))",
+            re.IGNORECASE,
+        ),
+        " a beam ",
+        "read '{0}' as a beam",
+    ),
     (  # "two towers of 3 and put a beam across": the beam, joining them
         re.compile(
             r"\b(?:put|place|lay|add|set|stick|pop)\s+(?=(?:a|an|one|the)\s+(?:long\s+|single\s+)?"
@@ -1870,7 +1879,9 @@ _CLOSED_WALL = re.compile(
 )
 _LIKE_A = re.compile(
     r"(?:,\s*|\s+)\b(?:just\s+|sort\s+of\s+|a\s+bit\s+)?(?:like|resembling|similar\s+to|"
-    r"looking\s+like|in\s+the\s+style\s+of)\s+(?:a|an)\s+[^,.;:!?]*",
+    r"looking\s+like|in\s+the\s+style\s+of|(?:it\s+|that\s+|so\s+(?:it|that\s+it)\s+)?"
+    r"(?:should|will|would|ought\s+to)\s+(?:come\s+out|end\s+up|turn\s+out|look)\s+(?:as|like))"
+    r"\s+(?:a|an)\s+[^,.;:!?]*",
     re.IGNORECASE,
 )
 
