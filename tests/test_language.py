@@ -2107,3 +2107,14 @@ def test_the_expected_result_said_is_a_description_and_a_bridge_thing_a_beam():
     assert [s.shape for s in spec.structures] == ["grid", "grid"]
     (s,) = read("two stacks of 2 and lay a bridge piece across the top").spec.structures
     assert s.shape == "bridge"
+
+
+def test_a_structure_beside_them_both_stands_beside_the_whole_group():
+    r = plan("two stacks of 2, and a row of 5 in front of them both")
+    assert r.status == "success", (r.error, r.notes)
+    stacks = [p for p in r.layout if p.position[2] > 0.05]  # the stacks' upper cubes
+    row = [p for p in r.layout if p.position[0] == min(q.position[0] for q in r.layout)]
+    assert len(stacks) == 2 and len(row) == 5
+    ys = [p.position[1] for p in stacks]
+    lo, hi = min(p.position[1] for p in row), max(p.position[1] for p in row)
+    assert lo < min(ys) and max(ys) < hi  # the row runs in front of both stacks

@@ -5,6 +5,8 @@ enclosure, towers "joined by" a beam become a bridge standing on them, and a str
 
 from __future__ import annotations
 
+import re
+
 from sdi.language.nouns import COPY_WORDS, beam_only
 from sdi.language.references import resolve
 from sdi.language.state import Phrase, PhraseRelation, ReadState
@@ -156,6 +158,17 @@ def relate(
         if at is not None:
             st.anchors.remove(at)
             side = None
+        group = _group(phrases, r.object, obj, s_idx, relations) if kind == "next_to" else []
+        if group and at is None:
+            # "a row in front of them both": the group side by side as one unit, and the
+            # subject beside the whole of it
+            o_idx = group[0]
+            along = "back" if st.line == "x" else "left"
+            relations.extend(
+                Relation(kind="next_to", subject=m, object=group[0], side=along) for m in group[1:]
+            )
+            said = phrases[r.object].text if r.object is not None else "them"
+            st.notes.append(f"read '{said}' as the {len(group)} together")
         relations.append(
             Relation(kind=kind, subject=s_idx, object=o_idx, side=side, at=at[1] if at else None)
         )
@@ -192,6 +205,29 @@ def _enclosing(host: StructureDraft, st: ReadState) -> StructureDraft:
                               part=host.part, region=host.region, at_x=host.at_x,
                               at_y=host.at_y)  # fmt: skip
     return host
+
+
+_GROUP_WORDS = re.compile(
+    r"^(?:them(?:\s+both|\s+all)?|both(?:\s+of\s+them)?|all\s+of\s+them|the\s+(?:two|three|four)"
+    r"(?:\s+of\s+them)?|all\s+(?:three|four))$",
+    re.IGNORECASE,
+)
+
+
+def _group(
+    phrases: list[Phrase], ref: int | None, obj: int, subject: int, relations: list[Relation]
+) -> list[int]:
+    """The structures a plural reference ("them both", "the two") names as a relation's object,
+    when they stand free (no relation of their own yet): else []."""
+    if ref is None or not _GROUP_WORDS.match(phrases[ref].text.strip(" ,.")):
+        return []
+    p = phrases[obj]
+    # "two towers of 2 and a row of 4 behind them": the ones named before the subject
+    group = [k for k in range(p.first, p.first + p.count) if k < subject or subject < p.first]
+    related = {r.subject for r in relations} | {r.object for r in relations}
+    if len(group) < 2 or related & set(group):
+        return []
+    return group
 
 
 def _copy_if_asked(
