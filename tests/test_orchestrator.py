@@ -213,6 +213,9 @@ def test_edits_all_or_nothing():
     with pytest.raises(InputError, match=r"edits\[1\]"):
         apply_edits(layout, [{"op": "remove", "id": "c2"}, {"op": "teleport", "id": "c1"}])
     assert layout.ids == ["c1", "c2"]
+    for bad in (10**400, float("nan"), True):  # past any float, not finite, not a number
+        with pytest.raises(InputError, match=r"edits\[0\]\.position"):
+            apply_edits(layout, [{"op": "insert", "id": "n1", "position": [bad, 0.3, 0.025]}])
 
 
 def test_a_phase_past_its_wall_clock_limit_goes_to_the_failure_report(tmp_path):

@@ -23,18 +23,30 @@ from sdi.model.layout import Layout
 from sdi.model.part import Part, quat_from_yaw
 
 
+def finite3(value: Any) -> tuple[float, float, float] | None:
+    """`value` as three finite floats (a position, m), or None when it is not one — also for
+    an integer past any float, which a JSON body may hold (`math.isfinite` would raise)."""
+    if not (isinstance(value, list | tuple) and len(value) == 3):
+        return None
+    out = []
+    for v in value:
+        if isinstance(v, bool) or not isinstance(v, int | float):
+            return None
+        try:
+            f = float(v)
+        except OverflowError:
+            return None
+        if not math.isfinite(f):
+            return None
+        out.append(f)
+    return (out[0], out[1], out[2])
+
+
 def _vec(edit: dict[str, Any], key: str, k: int) -> tuple[float, float, float]:
-    value = edit.get(key)
-    if not (
-        isinstance(value, list | tuple)
-        and len(value) == 3
-        and all(
-            isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
-            for v in value
-        )
-    ):
+    value = finite3(edit.get(key))
+    if value is None:
         raise InputError(f"needs {key} as three finite numbers (metres)", field=f"edits[{k}].{key}")
-    return (float(value[0]), float(value[1]), float(value[2]))
+    return value
 
 
 @dataclass(frozen=True)

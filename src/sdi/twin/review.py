@@ -23,7 +23,7 @@ from sdi.execute.record import layout_hash
 from sdi.inspector.verifier import Report, verify
 from sdi.model.cell import CellConfig
 from sdi.model.layout import Layout
-from sdi.orchestrator.edits import apply_edits
+from sdi.orchestrator.edits import apply_edits, finite3
 
 Edit = dict[str, Any]
 
@@ -55,22 +55,11 @@ def snap(position: list[float], size: tuple[float, float, float], cell: CellConf
             round(size[2] / 2 + k * level, 6)]  # fmt: skip
 
 
-def _finite(v: float) -> bool:
-    try:
-        return math.isfinite(v)
-    except OverflowError:  # an integer past any float (a JSON body may hold one)
-        return False
-
-
 def _vec3(value: Any, name: str) -> list[float]:
-    if not (
-        isinstance(value, list)
-        and len(value) == 3
-        and all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
-        and all(_finite(v) for v in value)
-    ):
+    xyz = finite3(value)
+    if xyz is None or not isinstance(value, list):
         raise InputError("needs three finite numbers (metres)", field=name)
-    return [float(v) for v in value]
+    return list(xyz)
 
 
 @dataclass
