@@ -75,17 +75,18 @@ def _spanning_named(said: list[str], beams: bool = False) -> bool:
     )
 
 
+def _spanning_plural(said: list[str]) -> bool:
+    """Several bridges, arches or tables are named ("two bridges")."""
+    return any(w.endswith("s") and lx.SHAPE_WORDS.get(w) in _SPANNING for w in said)
+
+
 def _several(text: str) -> bool:
     """The command names more than one structure (two shape nouns, a counted plural, a copy)
     and none that spans a gap of its own (a bridge's gap is its span)."""
     said = re.findall(r"[a-z]+", text.lower())
-    plural = any(w.endswith("s") and lx.SHAPE_WORDS.get(w) in _SPANNING for w in said)
-    if _spanning_named(said) and not plural:
+    if _spanning_named(said) and not _spanning_plural(said):
         return False  # a bridge's gap is its span; "two bridges 10 cm apart" is between them
-    shapes = [
-        w for w in re.findall(r"[a-z]+", text.lower())
-        if w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES
-    ]  # fmt: skip
+    shapes = [w for w in said if w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES]
     return len(shapes) >= 2 or bool(_PLURAL_SHAPES.search(text))
 
 
@@ -102,6 +103,16 @@ def _metres(value: str, unit: str | None, part_m: float) -> float | None:
     if unit in lx.UNITS_M:
         return n * lx.UNITS_M[unit]
     return n * part_m  # cubes, parts, blocks
+
+
+def _measured(m: re.Match[str], part_m: float) -> float | None:
+    """The distance a gap pattern matched, m: its alternatives capture (number, unit) pairs, the
+    first that matched is the one said; None outside (0, 0.5] m."""
+    groups = m.groups()
+    pairs = [(groups[i], groups[i + 1]) for i in range(0, len(groups), 2)]
+    value, unit = next(((v, u) for v, u in pairs if v is not None), (None, None))
+    metres = _metres(value, unit, part_m) if value else None
+    return metres if metres is not None and 0 < metres <= 0.5 else None
 
 
 _SUPPORTS = r"(?:pillars|legs|towers|supports|columns|posts|piers|stacks|uprights)"
@@ -134,16 +145,10 @@ def take_span(text: str, st: ReadState) -> str:
     if not _spanning_named(said, beams=True):
         return text
     m = _SPAN.search(text)
-    several = any(w.endswith("s") and lx.SHAPE_WORDS.get(w) in _SPANNING for w in said)
-    if m is None and not several:
+    if m is None and not _spanning_plural(said):
         m = _APART.search(text)  # "two towers of five three cubes apart and a beam across them"
-    if m is None:
-        return text
-    groups = list(m.groups())
-    pairs = [(groups[i], groups[i + 1]) for i in range(0, len(groups), 2)]
-    value, unit = next(((v, u) for v, u in pairs if v is not None), (None, None))
-    span = _metres(value, unit, st.cell.cube[0]) if value else None
-    if span is None or not 0 < span <= 0.5:
+    span = _measured(m, st.cell.cube[0]) if m is not None else None
+    if m is None or span is None:
         return text
     st.span_m = span
     st.notes.append(f"read '{m.group(0).strip(' ,')}' as {span:g} m between the supports")
@@ -157,11 +162,8 @@ def take_gap(text: str, st: ReadState) -> str:
     part_m = st.cell.cube[0]
     m = _GAP.search(text)
     if m is not None:
-        groups = [g for g in m.groups()]
-        pairs = [(groups[i], groups[i + 1]) for i in range(0, len(groups), 2)]
-        value, unit = next(((v, u) for v, u in pairs if v is not None), (None, None))
-        gap = _metres(value, unit, part_m) if value else None
-        if gap is not None and 0 < gap <= 0.5:
+        gap = _measured(m, part_m)
+        if gap is not None:
             st.gap_m = gap
             st.notes.append(f"read '{m.group(0).strip(' ,')}' as {gap:g} m between the structures")
             return text[: m.start()] + " " + text[m.end() :]
