@@ -206,9 +206,8 @@ def _call(m: re.Match[str], notes: list[str]) -> str:
     if name not in lx.SHAPE_WORDS or not args:
         return m.group(0)
     plain = [_arg_value(a) for a in args]
-    if all(plain):
-        said = " x ".join(p for p in plain if p) if len(args) > 1 else plain[0] or ""
-        return f" {name} {said} "
+    if all(plain):  # "block(2,2,2)": sizes in order
+        return f" {name} {' x '.join(p for p in plain if p)} "
     words = []
     for arg in args:
         key, _, value = arg.partition("=")
@@ -354,7 +353,23 @@ def _letter_list(m: re.Match[str]) -> str:
 
 
 def _dimensioned(m: re.Match[str]) -> str:
-    return f" {m.group(2).strip()} {_DIM_WORD[m.group(1).lower()]} "
+    """ "height of 20 cm" and "20 cm in the height" alike: the value, then its word."""
+    first, second = m.group(1), m.group(2)
+    dim, value = (first, second) if first.lower() in _DIM_WORD else (second, first)
+    return f" {value.strip()} {_DIM_WORD[dim.lower()]} "
+
+
+def _expand_noted(pairs: list[tuple[re.Pattern[str], str]], text: str, notes: list[str]) -> str:
+    """Each pattern replaced by its template, each replacement noted."""
+    for pattern, repl in pairs:
+
+        def expand(m: re.Match[str], repl: str = repl) -> str:
+            out = m.expand(repl)
+            notes.append(f"read '{m.group(0).strip()}' as '{out.strip()}'")
+            return out
+
+        text = pattern.sub(expand, text)
+    return text
 
 
 # "side 20 cm, thick 10 cm", "high 3": the dimension word said before its value, as a list item
@@ -564,14 +579,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _SLASH_XY.sub(
         lambda m: f"x = {m.group(1)} {m.group(3)}, y = {m.group(2)} {m.group(3)}", text
     )
-    for pattern, repl in _SHAPE_HEARD:
-
-        def shape_heard(m: re.Match[str], repl: str = repl) -> str:
-            out = m.expand(repl)
-            notes.append(f"read '{m.group(0).strip()}' as '{out}'")
-            return out
-
-        text = pattern.sub(shape_heard, text)
+    text = _expand_noted(_SHAPE_HEARD, text, notes)
     for pattern, repl in _HOMOPHONES:
 
         def heard(m: re.Match[str], repl: str = repl) -> str:
@@ -590,20 +598,11 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         text = f"{text.rstrip(' ./;,')} , {quantities[0]} of them"
     text = _LETTER_LIST.sub(_letter_list, text)  # "h=2/h=4/h=6": one value each
     text = _LETTER_EQ.sub(_letter_eq, text)
-    for pattern, repl in _SHORTHAND:
-
-        def expand(m: re.Match[str], repl: str = repl) -> str:
-            out = m.expand(repl)
-            if notes is not None:
-                notes.append(f"read '{m.group(0).strip()}' as '{out.strip()}'")
-            return out
-
-        text = pattern.sub(expand, text)
+    text = _expand_noted(_SHORTHAND, text, notes)
     text = _N_ON_M.sub(_n_by_m, text)  # "a block two on two", "base three on three"
     for pattern, repl in _CLEAR:
         text = pattern.sub(repl, text)
-    text = _IN_THE_DIM.sub(lambda m: f" {m.group(1).strip()} {_DIM_WORD[m.group(2).lower()]} ",
-                           text)  # fmt: skip
+    text = _IN_THE_DIM.sub(_dimensioned, text)
     text = _IN_THE_DIM_OF.sub(_dimensioned, text)
 
     def times(m: re.Match[str]) -> str:
