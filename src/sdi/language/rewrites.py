@@ -1706,8 +1706,8 @@ _REWRITES += [
             + _CLOSE_TO_IT,
             re.IGNORECASE,
         ),
-        " at the {0} edge ",
-        "read '{0}' as against that edge of the workspace",
+        "{edge}",
+        "",
     ),
     (
         re.compile(
@@ -1719,7 +1719,7 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{edge}",
-        "read '{0}' as against that edge of the workspace",
+        "",
     ),
     (
         re.compile(
@@ -1727,8 +1727,8 @@ _REWRITES += [
             r"(?:to\s+the\s+)?)(left|right|back|front)\b",
             re.IGNORECASE,
         ),
-        " at the {0} edge ",
-        "read '{0}' as against that edge of the workspace",
+        "{edge}",
+        "",
     ),
     (
         re.compile(
@@ -1737,8 +1737,8 @@ _REWRITES += [
             r"(?:can|possible|go|goes)\b(?:\s+go)?",
             re.IGNORECASE,
         ),
-        " at the {0} edge ",
-        "read '{0}' as against that edge of the workspace",
+        "{edge}",
+        "",
     ),
 ]
 
