@@ -950,3 +950,100 @@ def top_centred(tol: float = 0.03) -> Check:
         return None
 
     return f
+
+
+# -- shared by dev15 and dev16 (its writer had copied these from dev15) -----------------------
+
+
+def separate_structures(result: Mapping[str, Any]) -> list[list[Box]] | str:
+    """The separate structures of a layout inside the workspace, or why there are none."""
+    bs = bx.boxes(result)
+    if not bs:
+        return "no layout"
+    if not bx.in_workspace(bs):
+        return "a part outside the workspace"
+    return bx.components(bs)
+
+
+def in_order(
+    axis: str, *checks: Check, gaps: tuple[int, ...] = (), max_gap: float | None = None
+) -> Pred:
+    """Exactly len(checks) separate structures in one line front to back (axis "x") or left
+    to right (axis "y"), the i-th in that order passing checks[i]; with `gaps`, neighbours all
+    the same one of those gaps apart (clear, ± 1.5 cm); with `max_gap`, no neighbours further
+    apart than that (m)."""
+
+    def f(result: Mapping[str, Any]) -> Reason:
+        comps = separate_structures(result)
+        if isinstance(comps, str):
+            return comps
+        if len(comps) != len(checks):
+            return f"{len(comps)} separate structures, want {len(checks)}"
+        if axis == "x":
+            comps = sorted(comps, key=lambda g: bx.centre(g)[0])
+        else:
+            comps = sorted(comps, key=lambda g: -bx.centre(g)[1])
+        for i, (g, c) in enumerate(zip(comps, checks, strict=True)):
+            r = c(g)
+            if r:
+                return f"structure {i + 1} along {axis}: {r}"
+        line = {"x": ("front", "back"), "y": ("left", "right")}[axis]
+        pairs = list(itertools.pairwise(comps))
+        if any(bx.side_of(a, b) not in line for a, b in pairs):
+            return f"not in one line along {axis}"
+        if max_gap is not None and any(bx.separation(a, b) > max_gap for a, b in pairs):
+            return f"neighbours more than {max_gap} m apart"
+        if not gaps:
+            return None
+        for n in gaps:
+            if all(gap_of(n)(a, b) is None for a, b in pairs):
+                return None
+        return f"neighbours not evenly {' or '.join(map(str, gaps))} cube(s) apart"
+
+    return f
+
+
+def in_line(n: int, check: Check, *gaps: int) -> Pred:
+    """n structures passing `check` in a line along x or y, neighbours `gaps` apart."""
+    return any_of(in_order("x", *[check] * n, gaps=gaps), in_order("y", *[check] * n, gaps=gaps))
+
+
+def plan_heights(*rows: str) -> Check:
+    """One structure on the table whose column heights, cell by cell, are `rows` (a digit a
+    cell, "." for an empty cell) in any turn or mirror image; every column full from the
+    table up."""
+    want = {(i, j): int(ch) for i, row in enumerate(rows) for j, ch in enumerate(row) if ch != "."}
+
+    def f(bs: Boxes) -> Reason:
+        r = on_table(bs)
+        if r:
+            return r
+        vox = bx.voxels(bs)
+        tops: dict[tuple[int, int], int] = {}
+        for i, j, z in vox:
+            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
+        if len(vox) != sum(tops.values()):
+            return "columns not full"
+        for turn in bx.SYMMETRIES:
+            moved = {turn(i, j): h for (i, j), h in tops.items()}
+            mi = min(i for i, _ in moved)
+            mj = min(j for _, j in moved)
+            if {(i - mi, j - mj): h for (i, j), h in moved.items()} == want:
+                return None
+        return f"column heights {sorted(tops.values())} not in the wanted plan"
+
+    return f
+
+
+def centred_in(tol: float = 0.02) -> Rel:
+    """A (a ring) surrounds B, with B's footprint centre at A's (± tol)."""
+
+    def rel(a: Boxes, b: Boxes) -> Reason:
+        if not bx.encloses(a, b):
+            return "the ring does not surround the other"
+        (ax, ay), (bx0, by0) = bx.centre(a), bx.centre(b)
+        if abs(ax - bx0) > tol or abs(ay - by0) > tol:
+            return f"inner at ({bx0:.3f}, {by0:.3f}), ring centre ({ax:.3f}, {ay:.3f})"
+        return None
+
+    return rel

@@ -35,7 +35,6 @@ beam 0.15 m; left = +y, back = +x (away from the robot at x = 0, y = 0.30).
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Mapping
 from typing import Any
 
@@ -55,16 +54,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _comps(result: Mapping[str, Any]) -> list[list[bx.Box]] | str:
-    """The separate structures of a layout inside the workspace, or why there are none."""
-    bs = bx.boxes(result)
-    if not bs:
-        return "no layout"
-    if not bx.in_workspace(bs):
-        return "a part outside the workspace"
-    return bx.components(bs)
-
-
 def _gaps(*ns: int, side: str | None = None) -> k.Rel:
     """A and B are one of `ns` cubes apart (clear, ± 1.5 cm); A on `side` of B when given."""
 
@@ -78,44 +67,6 @@ def _gaps(*ns: int, side: str | None = None) -> k.Rel:
         return first
 
     return rel
-
-
-def _order(axis: str, *checks: k.Check, gaps: tuple[int, ...] = ()) -> k.Pred:
-    """Exactly len(checks) separate structures in one line front to back (axis "x") or left
-    to right (axis "y"), the i-th in that order passing checks[i]; when `gaps` is given, all
-    neighbours are the same one of those gaps apart (clear, ± 1.5 cm)."""
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = _comps(result)
-        if isinstance(comps, str):
-            return comps
-        if len(comps) != len(checks):
-            return f"{len(comps)} separate structures, want {len(checks)}"
-        if axis == "x":
-            comps = sorted(comps, key=lambda g: bx.centre(g)[0])
-        else:
-            comps = sorted(comps, key=lambda g: -bx.centre(g)[1])
-        for i, (g, c) in enumerate(zip(comps, checks, strict=True)):
-            r = c(g)
-            if r:
-                return f"structure {i + 1} along {axis}: {r}"
-        line = {"x": (_F, _B), "y": (_L, _R)}[axis]
-        pairs = list(itertools.pairwise(comps))
-        if any(bx.side_of(a, b) not in line for a, b in pairs):
-            return f"not in one line along {axis}"
-        if not gaps:
-            return None
-        for n in gaps:
-            if all(k.gap_of(n)(a, b) is None for a, b in pairs):
-                return None
-        return f"neighbours not evenly {' or '.join(map(str, gaps))} cube(s) apart"
-
-    return f
-
-
-def _line(n: int, check: k.Check, *gaps: int) -> k.Pred:
-    """n structures passing `check` in a line along x or y, neighbours `gaps` apart."""
-    return k.any_of(_order("x", *[check] * n, gaps=gaps), _order("y", *[check] * n, gaps=gaps))
 
 
 def _spaced(n: int, check: k.Check, gap: int) -> k.Pred:
@@ -145,33 +96,6 @@ def _pieces(lo: int, hi: int) -> k.Pred:
             return r
         n = len(bx.components(bx.boxes(result)))
         return None if lo <= n <= hi else f"{n} separate structures, want {lo}–{hi}"
-
-    return f
-
-
-def _plan(*rows: str) -> k.Check:
-    """One structure standing on the table whose column heights, cell by cell, are `rows`
-    (a digit per cell, "." for an empty cell), in any turn or mirror image; every column full
-    from the table up."""
-    want = {(i, j): int(ch) for i, row in enumerate(rows) for j, ch in enumerate(row) if ch != "."}
-
-    def f(bs: k.Boxes) -> k.Reason:
-        r = k.on_table(bs)
-        if r:
-            return r
-        vox = bx.voxels(bs)
-        tops: dict[tuple[int, int], int] = {}
-        for i, j, z in vox:
-            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
-        if len(vox) != sum(tops.values()):
-            return "columns not full"
-        for turn in bx.SYMMETRIES:
-            moved = {turn(i, j): h for (i, j), h in tops.items()}
-            mi = min(i for i, _ in moved)
-            mj = min(j for _, j in moved)
-            if {(i - mi, j - mj): h for (i, j), h in moved.items()} == want:
-                return None
-        return f"column heights {sorted(tops.values())} not in the wanted plan"
 
     return f
 
@@ -218,24 +142,10 @@ RING5 = k.all_of(k.ring_of(high=1, inner=(3, 3)), k.dims(5, 5))
 RING4 = k.all_of(k.ring_of(high=1, inner=(2, 2)), k.dims(4, 4))
 
 
-def _centred_in(tol: float = 0.02) -> k.Rel:
-    """A (a ring) surrounds B, with B's footprint centre at A's (± tol)."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        if not bx.encloses(a, b):
-            return "the ring does not surround the other"
-        (ax, ay), (bx0, by0) = bx.centre(a), bx.centre(b)
-        if abs(ax - bx0) > tol or abs(ay - by0) > tol:
-            return f"inner at ({bx0:.3f}, {by0:.3f}), ring centre ({ax:.3f}, {ay:.3f})"
-        return None
-
-    return rel
-
-
 # an L with both arms 4 (sharing the corner) or 5 (4 beyond the corner), a 2-cube tower in
 # the inside corner touching both arms
-_L4_TOWER = _plan("1111", "12..", "1...", "1...")
-_L5_TOWER = _plan("11111", "12...", "1....", "1....", "1....")
+_L4_TOWER = k.plan_heights("1111", "12..", "1...", "1...")
+_L5_TOWER = k.plan_heights("11111", "12...", "1....", "1....", "1....")
 
 
 CASES: list[Case] = [
@@ -294,7 +204,7 @@ CASES: list[Case] = [
         REL,
         "A courtyard: a ring of cubes one high, five by five outside, with a single column of "
         "three standing in the middle of it as a monument.",
-        k.pair(RING5, T(3), _centred_in()),
+        k.pair(RING5, T(3), k.centred_in()),
     ),
     _c(
         "rel-09",
@@ -319,7 +229,7 @@ CASES: list[Case] = [
         REL,
         "so um three towers in a line two then four then six going front to back okay and uh "
         "a cube gap between each one",
-        _order("x", T(2), T(4), T(6), gaps=(1,)),
+        k.in_order("x", T(2), T(4), T(6), gaps=(1,)),
     ),
     _c(
         "rel-12",
@@ -361,7 +271,7 @@ CASES: list[Case] = [
         REL,
         "A small colonnade: three columns of four cubes standing in a row left to right, a "
         "cube's space between them, no lintel.",
-        _order("y", T(4), T(4), T(4), gaps=(1,)),
+        k.in_order("y", T(4), T(4), T(4), gaps=(1,)),
     ),
     _c(
         "rel-18",
@@ -375,7 +285,7 @@ CASES: list[Case] = [
         REL,
         "Make a tower with 6 floors. Left from it, in distance of 2 cubes, a tower with the half "
         "height. Right from it the same.",
-        _order("y", T(3), T(6), T(3), gaps=(1, 2)),
+        k.in_order("y", T(3), T(6), T(3), gaps=(1, 2)),
     ),
     _c(
         "rel-20",
@@ -532,13 +442,13 @@ CASES: list[Case] = [
         "num-02",
         NUM,
         "Qty 3 towers, 2 cubes each, in a line, 1 cube spacing.",
-        _line(3, T(2), 1),
+        k.in_line(3, T(2), 1),
     ),
     _c(
         "num-03",
         NUM,
         "A colonnade of five slender columns, each three cubes high, spaced one cube apart.",
-        _line(5, T(3), 1),
+        k.in_line(5, T(3), 1),
     ),
     _c("num-04", NUM, "let's do a tower as tall as Emma is old, she's six", one(T(6))),
     _c("num-05", NUM, "Make me a tower with 8 floors, please.", one(T(8))),
@@ -800,7 +710,7 @@ CASES: list[Case] = [
         "typ-08",
         TYP,
         "A colonade of three colums, four cubes high, one cube apart",
-        _line(3, T(4), 1),
+        k.in_line(3, T(4), 1),
     ),
     _c(
         "typ-09",

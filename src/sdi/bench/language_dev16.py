@@ -36,7 +36,6 @@ beam 0.15 m; left = +y, back = +x (away from the robot at x = 0, y = 0.30).
 
 from __future__ import annotations
 
-import itertools
 from collections.abc import Mapping
 from typing import Any
 
@@ -54,16 +53,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 
 
 # ---------------------------------------------------------------- local checks
-
-
-def _comps(result: Mapping[str, Any]) -> list[list[bx.Box]] | str:
-    """The separate structures of a layout inside the workspace, or why there are none."""
-    bs = bx.boxes(result)
-    if not bs:
-        return "no layout"
-    if not bx.in_workspace(bs):
-        return "a part outside the workspace"
-    return bx.components(bs)
 
 
 def _either(*rels: k.Rel) -> k.Rel:
@@ -98,57 +87,14 @@ def _apart(lo: float, hi: float | None = None) -> k.Rel:
     return rel
 
 
-def _order(
-    axis: str, *checks: k.Check, gaps: tuple[int, ...] = (), max_gap: float | None = None
-) -> k.Pred:
-    """Exactly len(checks) separate structures in one line front to back (axis "x") or left
-    to right (axis "y"), the i-th in that order passing checks[i]; with `gaps`, neighbours all
-    the same one of those gaps apart (clear, ± 1.5 cm); with `max_gap`, no neighbours further
-    apart than that (m)."""
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = _comps(result)
-        if isinstance(comps, str):
-            return comps
-        if len(comps) != len(checks):
-            return f"{len(comps)} separate structures, want {len(checks)}"
-        if axis == "x":
-            comps = sorted(comps, key=lambda g: bx.centre(g)[0])
-        else:
-            comps = sorted(comps, key=lambda g: -bx.centre(g)[1])
-        for i, (g, c) in enumerate(zip(comps, checks, strict=True)):
-            r = c(g)
-            if r:
-                return f"structure {i + 1} along {axis}: {r}"
-        line = {"x": (_F, _B), "y": (_L, _R)}[axis]
-        pairs = list(itertools.pairwise(comps))
-        if any(bx.side_of(a, b) not in line for a, b in pairs):
-            return f"not in one line along {axis}"
-        if max_gap is not None and any(bx.separation(a, b) > max_gap for a, b in pairs):
-            return f"neighbours more than {max_gap} m apart"
-        if not gaps:
-            return None
-        for n in gaps:
-            if all(k.gap_of(n)(a, b) is None for a, b in pairs):
-                return None
-        return f"neighbours not evenly {' or '.join(map(str, gaps))} cube(s) apart"
-
-    return f
-
-
-def _line(n: int, check: k.Check, *gaps: int) -> k.Pred:
-    """n structures passing `check` in a line along x or y, neighbours `gaps` apart."""
-    return k.any_of(_order("x", *[check] * n, gaps=gaps), _order("y", *[check] * n, gaps=gaps))
-
-
 def _either_way(*checks: k.Check, max_gap: float | None = None) -> k.Pred:
     """The structures in a line along x or y, in this order or the reverse."""
     rev = checks[::-1]
     return k.any_of(
-        _order("x", *checks, max_gap=max_gap),
-        _order("x", *rev, max_gap=max_gap),
-        _order("y", *checks, max_gap=max_gap),
-        _order("y", *rev, max_gap=max_gap),
+        k.in_order("x", *checks, max_gap=max_gap),
+        k.in_order("x", *rev, max_gap=max_gap),
+        k.in_order("y", *checks, max_gap=max_gap),
+        k.in_order("y", *rev, max_gap=max_gap),
     )
 
 
@@ -157,7 +103,7 @@ def _some(*checks: k.Check) -> k.Pred:
     both = k.all_of(*checks)
 
     def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = _comps(result)
+        comps = k.separate_structures(result)
         if isinstance(comps, str):
             return comps
         reasons = [both(g) for g in comps]
@@ -171,7 +117,7 @@ def _gap_between(check: k.Check, n: int, axis: str | None = None) -> k.Pred:
     by side along `axis` ("x" front–back, "y" left–right) when given."""
 
     def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = _comps(result)
+        comps = k.separate_structures(result)
         if isinstance(comps, str):
             return comps
         two = [g for g in comps if check(g) is None]
@@ -194,7 +140,7 @@ def _on_every_side(mid: k.Check, arm: k.Check, gap: int) -> k.Pred:
     (left, right, front, back), each `gap` cubes clear of it (± 1.5 cm)."""
 
     def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = _comps(result)
+        comps = k.separate_structures(result)
         if isinstance(comps, str):
             return comps
         if len(comps) != 5:
@@ -219,7 +165,7 @@ def _lanes(n_lanes: int, per_lane: int) -> k.Pred:
     each: their centres share one of `n_lanes` coordinates across the lanes (± 2 cm)."""
 
     def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = _comps(result)
+        comps = k.separate_structures(result)
         if isinstance(comps, str):
             return comps
         for axis in (0, 1):
@@ -238,7 +184,7 @@ def _lanes(n_lanes: int, per_lane: int) -> k.Pred:
 
 def _collinear(result: Mapping[str, Any]) -> k.Reason:
     """Every structure's centre on one line along x or along y (± 2 cm)."""
-    comps = _comps(result)
+    comps = k.separate_structures(result)
     if isinstance(comps, str):
         return comps
     for axis in (0, 1):
@@ -246,33 +192,6 @@ def _collinear(result: Mapping[str, Any]) -> k.Reason:
         if max(vs) - min(vs) <= 0.02:
             return None
     return "not in one straight line"
-
-
-def _plan(*rows: str) -> k.Check:
-    """One structure on the table whose column heights, cell by cell, are `rows` (a digit a
-    cell, "." for an empty cell) in any turn or mirror image; every column full from the
-    table up."""
-    want = {(i, j): int(ch) for i, row in enumerate(rows) for j, ch in enumerate(row) if ch != "."}
-
-    def f(bs: k.Boxes) -> k.Reason:
-        r = k.on_table(bs)
-        if r:
-            return r
-        vox = bx.voxels(bs)
-        tops: dict[tuple[int, int], int] = {}
-        for i, j, z in vox:
-            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
-        if len(vox) != sum(tops.values()):
-            return "columns not full"
-        for turn in bx.SYMMETRIES:
-            moved = {turn(i, j): h for (i, j), h in tops.items()}
-            mi = min(i for i, _ in moved)
-            mj = min(j for _, j in moved)
-            if {(i - mi, j - mj): h for (i, j), h in moved.items()} == want:
-                return None
-        return f"column heights {sorted(tops.values())} not in the wanted plan"
-
-    return f
 
 
 def _upper_side(side: str, z: int) -> k.Check:
@@ -309,26 +228,12 @@ def _with_column(h: int, rest: k.Check) -> k.Check:
     return f
 
 
-def _centred_in(tol: float = 0.02) -> k.Rel:
-    """A (a ring) surrounds B, with B's footprint centre at A's (± tol)."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        if not bx.encloses(a, b):
-            return "the ring does not surround the other"
-        (ax, ay), (bx0, by0) = bx.centre(a), bx.centre(b)
-        if abs(ax - bx0) > tol or abs(ay - by0) > tol:
-            return f"inner at ({bx0:.3f}, {by0:.3f}), ring centre ({ax:.3f}, {ay:.3f})"
-        return None
-
-    return rel
-
-
 def _ring_clear(n: int) -> k.Rel:
     """A (a ring) surrounds B, centred on it, with exactly `n` cubes of free floor between B's
     footprint and the ring on every side."""
 
     def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        r = _centred_in()(a, b)
+        r = k.centred_in()(a, b)
         if r:
             return r
         fx, fy = bx.footprint_cubes(b)
@@ -448,7 +353,7 @@ CASES: list[Case] = [
         "rel-07",
         REL,
         "Fence off a bay 5 cubes by 5, one high, and put a stack of 3 right in the middle of it.",
-        k.pair(RING5, T(3), _centred_in()),
+        k.pair(RING5, T(3), k.centred_in()),
     ),
     _c(
         "rel-08",
@@ -476,7 +381,7 @@ CASES: list[Case] = [
         REL,
         "cn u make a lil wall 3 long 2 high n stick a tower of 4 right behind the middle of it "
         "touching",
-        one(_plan("222", ".4."), _upper_side(_B, 2)),
+        one(k.plan_heights("222", ".4."), _upper_side(_B, 2)),
     ),
     _c(
         "rel-12",
@@ -496,7 +401,7 @@ CASES: list[Case] = [
                     k.runs("y"),
                     k.any_of(k.profile(4, 2, 2, 2, 2, 2, 4), k.profile(4, 2, 2, 2, 4)),
                 ),
-                _plan("22222", "4...4"),
+                k.plan_heights("22222", "4...4"),
             )
         ),
     ),
@@ -562,13 +467,13 @@ CASES: list[Case] = [
         REL,
         "Three-step staircase, and a stack of 4 on the floor against its top end, touching, "
         "like a ramp up to the stack.",
-        one(k.any_of(k.profile(1, 2, 3, 4), _plan("1234", "123."))),
+        one(k.any_of(k.profile(1, 2, 3, 4), k.plan_heights("1234", "123."))),
     ),
     _c(
         "rel-23",
         REL,
         "Four stacks of 3 in a line, one cube's gap between each stack.",
-        _line(4, T(3), 1),
+        k.in_line(4, T(3), 1),
     ),
     # ------------------------------------------------------------------ sequence
     _c(
@@ -624,7 +529,7 @@ CASES: list[Case] = [
         "seq-09",
         SEQ,
         "1) grid 3x5, one layer  2) remove the 4 corner cubes",
-        one(_plan(".111.", "11111", ".111.")),
+        one(k.plan_heights(".111.", "11111", ".111.")),
     ),
     _c(
         "seq-10",
@@ -736,9 +641,9 @@ CASES: list[Case] = [
         NUM,
         "Four columns, of heights two, four, six and eight cubes respectively, standing in a "
         "line from left to right.",
-        k.any_of(_order("y", T(2), T(4), T(6), T(8)), one(k.lr_profile(2, 4, 6, 8))),
+        k.any_of(k.in_order("y", T(2), T(4), T(6), T(8)), one(k.lr_profile(2, 4, 6, 8))),
     ),
-    _c("num-09", NUM, "n_towers=5, h=2 each, spacing 0.10 m c-c", _line(5, T(2), 1)),
+    _c("num-09", NUM, "n_towers=5, h=2 each, spacing 0.10 m c-c", k.in_line(5, T(2), 1)),
     _c(
         "num-10",
         NUM,
@@ -901,7 +806,7 @@ CASES: list[Case] = [
         "neg-05",
         NEG,
         "grid 4x4, h=1, no corners",
-        one(_plan(".11.", "1111", "1111", ".11.")),
+        one(k.plan_heights(".11.", "1111", "1111", ".11.")),
     ),
     _c("neg-06", NEG, "Stack 5 high, not on the right side. Left lane.", one(T(5), reg("left"))),
     _c(
