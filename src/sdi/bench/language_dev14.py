@@ -122,20 +122,6 @@ def _between_gaps(mid: k.Check, end: k.Check, gap: int) -> k.Pred:
     return f
 
 
-def _centred_in(tol: float = 0.02) -> k.Rel:
-    """A (a ring) surrounds B, and B's footprint centre is A's (± tol)."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        if not bx.encloses(a, b):
-            return "the ring does not surround the other"
-        (ax, ay), (bx0, by0) = bx.centre(a), bx.centre(b)
-        if abs(ax - bx0) > tol or abs(ay - by0) > tol:
-            return f"inner centred at ({bx0:.3f}, {by0:.3f}), ring at ({ax:.3f}, {ay:.3f})"
-        return None
-
-    return rel
-
-
 def _second_centred(tol: float = 0.03) -> k.Check:
     """The parts of the second level (from the bottom) are centred (± tol) over the bottom
     level — whatever stands higher up."""
@@ -266,7 +252,7 @@ CASES: tuple[Case, ...] = (
         REL,
         "Exercise 5: Build a square ring of cubes, 5 by 5 and one cube high. Put a tower of 2 "
         "cubes inside it, exactly in the centre.",
-        k.pair(RING5, T(2), _centred_in()),
+        k.pair(RING5, T(2), k.centred_in()),
     ),
     _c(
         "rel-09",
@@ -718,7 +704,7 @@ CASES: tuple[Case, ...] = (
         "wo-13",
         WO,
         "Exercise 12: Inside a ring of 5 by 5 cubes, one high, a single cube in the centre.",
-        k.pair(RING5, T(1), _centred_in()),
+        k.pair(RING5, T(1), k.centred_in()),
     ),
     # ------------------------------------------------------------------ filler
     _c(
