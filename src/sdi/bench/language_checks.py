@@ -893,6 +893,14 @@ def xprofile(*hs: int) -> Check:
     return f
 
 
+def _column_tops(vox: set[tuple[int, int, int]]) -> dict[tuple[int, int], int]:
+    """Each footprint cell's column height, in cubes (its top voxel + 1)."""
+    tops: dict[tuple[int, int], int] = {}
+    for i, j, z in vox:
+        tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
+    return tops
+
+
 def cell_heights(*hs: int) -> Check:
     """One structure on the table whose footprint cells carry columns of exactly these heights
     (in any arrangement), every column full from the table up — e.g. a tower built against a
@@ -903,9 +911,7 @@ def cell_heights(*hs: int) -> Check:
         if r:
             return r
         vox = bx.voxels(bs)
-        tops: dict[tuple[int, int], int] = {}
-        for i, j, z in vox:
-            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
+        tops = _column_tops(vox)
         got = sorted(tops.values())
         if got != sorted(hs):
             return f"column heights {got}, want {sorted(hs)}"
@@ -1019,9 +1025,7 @@ def plan_heights(*rows: str) -> Check:
         if r:
             return r
         vox = bx.voxels(bs)
-        tops: dict[tuple[int, int], int] = {}
-        for i, j, z in vox:
-            tops[(i, j)] = max(tops.get((i, j), 0), z + 1)
+        tops = _column_tops(vox)
         if len(vox) != sum(tops.values()):
             return "columns not full"
         for turn in bx.SYMMETRIES:
