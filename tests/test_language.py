@@ -526,8 +526,16 @@ def test_two_sizes_in_metres_go_to_two_sides_or_are_reported():
 def test_which_side_runs_left_to_right_is_read():
     s = read("a 2 by 4 slab, long side left to right").spec.structures[0]
     assert (s.length, s.width, s.axis) == (4, 2, "y")
+    # a gloss that says what width or depth means confirms it; it does not turn the slab
     t = read("a slab 10 cm wide (left to right) and 20 cm deep").spec.structures[0]
-    assert t.axis == "x"
+    assert (t.width_m, t.length_m) == (pytest.approx(0.20), pytest.approx(0.10))
+    g = plan("a grid 2 cubes deep (away from the robot) and 5 cubes wide")
+    lo, hi = boxes(g)
+    assert g.status == "success" and len(lo) == 10
+    assert (hi[:, 0].max() - lo[:, 0].min(), hi[:, 1].max() - lo[:, 1].min()) == (
+        pytest.approx(0.10, abs=0.01),
+        pytest.approx(0.25, abs=0.01),
+    )
 
 
 def test_a_slab_minus_its_middle_is_a_ring():
@@ -2118,3 +2126,50 @@ def test_a_structure_beside_them_both_stands_beside_the_whole_group():
     ys = [p.position[1] for p in stacks]
     lo, hi = min(p.position[1] for p in row), max(p.position[1] for p in row)
     assert lo < min(ys) and max(ys) < hi  # the row runs in front of both stacks
+
+
+def test_a_second_cube_on_the_middle_one_is_one_cube_there():
+    r = plan("a row of 3, then put a second cube on the middle one")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 4
+    up = lo[:, 2] > 0.04
+    assert up.sum() == 1
+    ground = (lo[~up] + hi[~up]) / 2
+    top = ((lo[up] + hi[up]) / 2)[0]
+    assert np.allclose(top[:2], np.median(ground[:, :2], axis=0), atol=0.005)
+
+
+def test_a_verb_left_at_the_end_names_no_structure():
+    r = plan("cubes six, in one column, please stack")
+    lo, _ = boxes(r)
+    assert r.status == "success" and len(lo) == 6
+    assert np.ptp(lo[:, 0]) < 1e-6 and np.ptp(lo[:, 1]) < 1e-6  # one column of six
+    assert len(boxes(plan("a wall of 4, now build"))[0]) == 4
+
+
+def test_next_to_at_the_start_is_a_relation_and_a_bare_name_later_sizes_it():
+    s = read("next to the pyramid a tower of 5 pls, pyramid 3 levels").spec
+    assert sorted((x.shape, x.height) for x in s.structures) == [("pyramid", 3), ("tower", 5)]
+    assert [r.kind for r in s.relations] == ["next_to"]
+    t = read("behind the wall a tower of 3, wall 4 long").spec
+    assert [(x.shape, getattr(x, "length", None)) for x in t.structures] == [
+        ("tower", None),
+        ("wall", 4),
+    ]
+    (rel,) = t.relations
+    assert (t.structures[rel.subject].shape, rel.side) == ("tower", "back")
+
+
+def test_a_row_on_top_of_a_wall_runs_along_the_wall():
+    r = plan("a wall 4 long along x, with a row of 3 on top")
+    assert r.status == "success", r.notes
+    lo, _ = boxes(r)
+    top = lo[:, 2] >= lo[:, 2].max() - 1e-6
+    assert top.sum() == 3 and np.ptp(lo[top, 1]) < 1e-6  # along x, on the wall
+    # on the wall's own top, not on the taller tower set beside it
+    q = plan("a tower of 3 in front of a wall, then a row of 2 on top of the wall")
+    assert q.status == "success", q.notes
+    (tower,) = [o for o in q.layout.objects if o.position[2] > 0.1 and o.position[0] < 0.45]
+    row = [o for o in q.layout.objects if o.position[2] > 0.1 and o.position[0] > 0.45]
+    assert len(row) == 2 and {o.position[0] for o in row} != {tower.position[0]}

@@ -310,14 +310,27 @@ def _merge(base: _Placed, other: _Placed, dxy: np.ndarray, dz: float) -> _Placed
     )
 
 
-def _top(p: _Placed) -> tuple[float, np.ndarray]:
-    """Height of the unit's top face, m, and the footprint centre of the parts that reach it."""
+def _top(p: _Placed) -> tuple[float, np.ndarray, np.ndarray]:
+    """Height of the unit's top face, m, and the footprint centre and half extents of the
+    parts that reach it."""
     tops = p.z + np.array([d[2] for d in p.sizes]) / 2
     top = float(tops.max())
     high = tops > top - 1e-6
     half = _footprint_half(p.yaws, p.sizes)[high]
     lo, hi = (p.xy[high] - half).min(axis=0), (p.xy[high] + half).max(axis=0)
-    return top, (lo + hi) / 2
+    return top, (lo + hi) / 2, (hi - lo) / 2
+
+
+def _along_top(sub: _Placed, top_half: np.ndarray, cell: CellConfig) -> _Placed:
+    """A structure whose axis was not said, set on a top it overhangs but would fit on if
+    turned ("a wall along x, with a row of 3 on top"): turned to run along that top."""
+    s = sub.spec
+    fits = bool(np.all(sub.half <= top_half + 1e-6))
+    if s.axis is not None or s.yaw_deg or fits or np.any(sub.half[::-1] > top_half + 1e-6):
+        return sub
+    turned = s.model_copy(update={"axis": "x" if (s.axis or "y") == "y" else "y"})
+    sizes = part_sizes(cell, turned.part)
+    return _orient(turned, generate(turned, sizes), sizes)
 
 
 _SIDES = {"left": (1, 1.0), "right": (1, -1.0), "back": (0, 1.0), "front": (0, -1.0)}
@@ -361,7 +374,7 @@ def _at_anchors(
     touching by default). A square base's ends are its left and right sides."""
     sub_bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
     if kind == "on_top_of":
-        top, _ = _top(base)
+        top, _, _ = _top(base)
         high = base.z + np.array([d[2] for d in base.sizes]) / 2 > top - 1e-6
         half = _footprint_half(base.yaws, base.sizes)[high]
         lo, hi = (base.xy[high] - half).min(axis=0), (base.xy[high] + half).max(axis=0)
@@ -420,7 +433,10 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
             return units[k]
         base = placed[k]
         assert base is not None
-        for c in children.get(k, []):
+        # on the object's own top first: "a tower in front of a wall, a row on top of the
+        # wall" stands on the wall, not on the taller tower merged beside it
+        ordered = sorted(children.get(k, []), key=lambda c: subject_of[c].kind != "on_top_of")
+        for c in ordered:
             rel = subject_of[c]
             if rel.kind == "around":
                 sub_spec = _ring_for(spec.structures[c], base, cell)
@@ -440,7 +456,9 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
             else:
                 sub = unit(c)
                 if rel.kind == "on_top_of":
-                    top, centre = _top(base)
+                    top, centre, top_half = _top(base)
+                    if c not in children:
+                        sub = units[c] = _along_top(sub, top_half, cell)
                     bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
                     base = _merge(base, sub, centre, top - bottom)
                 else:

@@ -51,13 +51,18 @@ def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:
     out: list[tuple[list[int], bool]] = []
     for c in clauses:
         sequenced = bool(c) and doc[c[0]].lower_ in _SEQUENCE | {"then", "finally", "lastly"}
-        while c and doc[c[0]].lower_ in _LEADS | _SEQUENCE:
+        while c and doc[c[0]].lower_ in _LEADS | _SEQUENCE and not _next_to(doc, c[0]):
             c = c[1:]
         while c and doc[c[-1]].is_punct:
             c = c[:-1]
         if c:
             out.append((c, sequenced))
     return out
+
+
+def _next_to(doc: Doc, i: int) -> bool:
+    """ "Next to the pyramid a tower of 5": "next" begins a relation, not a step."""
+    return doc[i].lower_ == "next" and i + 1 < len(doc) and doc[i + 1].lower_ == "to"
 
 
 def _starts_clause(doc: Doc, tok: Token) -> bool:

@@ -275,6 +275,7 @@ def _clause_phrases(
         cur.append(i)
     segments.append(cur)
     lead = [i for i in segments[0] if doc[i].lower_ not in words.HARMLESS and not doc[i].is_space]
+    trailing: list[int] = []  # a phrase of its own after the fronted relation's subject
     if markers and not lead:
         # "On top of two 2-cube towers, a beam.": the subject follows the object, after the
         # first comma of the last segment (or the verb: "To the right of a tower goes a row")
@@ -285,20 +286,24 @@ def _clause_phrases(
         pronoun_first = bool(last) and doc[last[0]].lower_ in ("it", "them", "that", "this")
         if cut is None and pronoun_first:
             cut = 0  # "on it a tower of 3": the pronoun is the object
-        if cut is None:
-            # "behind the wall 3 long and 2 high a 3-cube tower": a second noun phrase
-            articles = [
-                n
-                for n, i in enumerate(last)
-                if n > 0
-                and doc[i].lower_ in ("a", "an")
-                and names_structure(doc, last[n : n + 5])
-                and names_structure(doc, last[:n])
-            ]
+        # "behind the wall 3 long and 2 high a 3-cube tower": a second noun phrase (before a
+        # comma: "next to the pyramid a tower of 5, pyramid 3 levels")
+        named_after = bool(commas) and names_structure(doc, last[commas[0] + 1 :])
+        articles = [
+            n
+            for n, i in enumerate(last)
+            if n > 0
+            and doc[i].lower_ in ("a", "an")
+            and (not named_after or n < commas[0])
+            and names_structure(doc, last[n : n + 5])
+            and names_structure(doc, last[:n])
+        ]
+        if cut is None or (articles and not pronoun_first):
             cut = articles[0] - 1 if articles else None
             if cut is not None:
-                segments[0] = last[cut + 1 :]
+                segments[0] = last[cut + 1 : commas[0] if named_after else None]
                 segments[-1] = last[: cut + 1]
+                trailing = last[commas[0] + 1 :] if named_after else []
                 cut = None
         if cut is not None and names_structure(doc, last[cut + 1 :]):
             segments[0] = last[cut + 1 :]
@@ -340,6 +345,8 @@ def _clause_phrases(
     base = len(phrases)
     for seg in segments:
         phrases.append(Phrase(tokens=seg, clause=ci))
+    if trailing:
+        phrases.append(Phrase(tokens=trailing, clause=ci))
     # relate the segments: marker j sits between segment j and j + 1
     for j, (_, _, kind, side) in enumerate(markers):
         before, after = base + j, base + j + 1

@@ -64,6 +64,30 @@ def definite(
     return matches[0]
 
 
+def named_ahead(
+    p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
+) -> int | None:
+    """ "next to the pyramid a tower of 5, pyramid 3 levels": a bare family name with sizes,
+    after a structure of that family was only pointed at ("the pyramid"), gives that one's
+    sizes; it is not a second one."""
+    m = re.match(r"^\W*(\w+)", p.text)
+    if not m or len(spec.structures) != 1:
+        return None
+    family = lx.SHAPE_WORDS.get(m.group(1).lower())
+    said = spec.structures[0].model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True)
+    if family is None or family != spec.structures[0].shape or not said:
+        return None
+    pointed = [
+        i for q in before if q.count and q.spec is not None
+        and re.match(r"^\W*(?:the|that|this)\s+\w+\W*$", q.text, re.IGNORECASE)
+        for i in range(q.first, q.first + q.count)
+        if structures[i].shape == family
+        and not structures[i].model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True)
+    ]  # fmt: skip
+    same = [i for i, s in enumerate(structures) if s.shape == family]
+    return pointed[0] if len(pointed) == 1 and same == pointed else None
+
+
 def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | None:
     """ "Steps: 5. Shape: staircase.": a bare family name in a later clause names the one
     structure described before, not a second one."""

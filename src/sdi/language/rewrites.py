@@ -219,6 +219,7 @@ _COUNTED_NOUN = (
     r"(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|wide|levels?|steps?|x)\b)"
 )
 _NUMBER_WORD = "one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve"
+_GLOSS_LEAD = r"(?:(?:so\s+|that\s+is\s+|i\.?e\.?\s+)?(?:going|running|measured|counted)\s+)?"
 
 
 _REWRITES += [
@@ -315,11 +316,13 @@ _REWRITES += [
         " a 1-cube tower ",
         "",
     ),
-    # "a cube at the back left and a cube at the front right": a loose cube is a structure of
-    # its own (not a unit: "a cube high", "a cube's width", "a cube of space", "a cube tower")
+    # "a cube at the back left and a cube at the front right", "stack a second cube on it": a
+    # loose cube is a structure of its own (not a unit: "a cube high", "a cube's width", "a cube
+    # of space", "a cube tower")
     (
         re.compile(
-            r"\b(a|an)\s+(?:cube|brick)\b(?!'|\s*(?:-|" + _CUBE_NOT_ALONE + r")\b)",
+            r"\b(a|an)\s+(?:(?:second|third|fourth|further|extra|additional|spare)\s+)?"
+            r"(?:cube|brick)\b(?!'|\s*(?:-|" + _CUBE_NOT_ALONE + r")\b)",
             re.IGNORECASE,
         ),
         " {0} 1-cube tower ",
@@ -469,6 +472,47 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "put ",
+        "",
+    ),
+    # "six cubes in one column, please stack", "a tower of 5, build it please": a verb left at
+    # the end of a clause names no structure of its own
+    (
+        re.compile(
+            r"(?:,|\band\b|\bplease\b|\bthen\b|\bnow\b)\s*(?:please\s+|now\s+|just\s+)?"
+            r"(?:build|make|do)(?:\s+(?:it|please|now|away))*(?=\s*(?:[.!?;]|$))",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
+    (  # "cubes six, in one column, please stack": said of the parts, the verb is how they stand
+        re.compile(
+            r"(?:,|\band\b|\bplease\b|\bthen\b|\bnow\b)\s*(?:please\s+|now\s+|just\s+)?"
+            r"(?:stack|pile)(?:\s+(?:it|up|'em|please|now|them\s+up))*(?=\s*(?:[.!?;]|$))",
+            re.IGNORECASE,
+        ),
+        ", stacked ",
+        "",
+    ),
+    # "2 cubes deep (away from the robot)", "5 wide, left to right": a gloss that says what
+    # depth or width is already means it; it does not turn the structure
+    (
+        re.compile(
+            r"\b(deep|in\s+depth)\s*[(,-]?\s*" + _GLOSS_LEAD + r"(?:away\s+from\s+(?:the\s+)?"
+            r"(?:robot|me|you|us)|(?:from\s+)?front\s+to\s+back|(?:from\s+)?back\s+to\s+front|"
+            r"towards?\s+the\s+back)\s*\)?",
+            re.IGNORECASE,
+        ),
+        " {0} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(wide|in\s+width)\s*[(,-]?\s*" + _GLOSS_LEAD + r"(?:(?:from\s+)?left\s+to\s+right|"
+            r"(?:from\s+)?right\s+to\s+left|across(?:\s+the\s+(?:table|robot))?|sideways)\s*\)?",
+            re.IGNORECASE,
+        ),
+        " {0} ",
         "",
     ),
     (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),

@@ -12,7 +12,14 @@ from sdi.language import words
 from sdi.language.accounting import account, is_chatter
 from sdi.language.modify import MODIFY, REMOVAL, continues, modify
 from sdi.language.nouns import BEAMS, beam_only
-from sdi.language.references import copies, definite, pick_structure, refers_to, same_as_before
+from sdi.language.references import (
+    copies,
+    definite,
+    named_ahead,
+    pick_structure,
+    refers_to,
+    same_as_before,
+)
 from sdi.language.state import Phrase, PhraseRelation, ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.grammar import parse_phrase
@@ -147,6 +154,8 @@ def fill_slots(
             st.notes.append(f"'{p.text}' names the {same} described before")
             continue
         named = definite(p, spec, phrases[:k], structures)
+        if named is None:
+            named = named_ahead(p, spec, phrases[:k], structures)
         if named is not None:
             # "…; the staircase has 3 steps": more about the staircase named before
             said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
