@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to sixteenth dev sets (dev2 … dev16) are held to the same checks and share no
+second to seventeenth dev sets (dev2 … dev17) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -31,6 +31,7 @@ from sdi.bench.language_dev13 import CASES as DEV13
 from sdi.bench.language_dev14 import CASES as DEV14
 from sdi.bench.language_dev15 import CASES as DEV15
 from sdi.bench.language_dev16 import CASES as DEV16
+from sdi.bench.language_dev17 import CASES as DEV17
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -261,6 +262,7 @@ SETS = {
     "dev13": (DEV13, 160, 8, 15), "dev14": (DEV14, 160, 8, 15),
     "dev15": (DEV15, 160, 8, 15),
     "dev16": (DEV16, 160, 8, 15),
+    "dev17": (DEV17, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -271,6 +273,7 @@ HARD = {
     "dev14": ("relation", "numbers", "dimensions", "sequence"),
     "dev15": ("relation", "numbers", "dimensions", "sequence"),
     "dev16": ("relation", "numbers", "dimensions", "sequence"),
+    "dev17": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -333,6 +336,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV14,
         *DEV15,
         *DEV16,
+        *DEV17,
         *TEST,
     ):
         out = case.accept(result)
@@ -369,6 +373,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev14.py",
         "language_dev15.py",
         "language_dev16.py",
+        "language_dev17.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -2646,5 +2651,181 @@ _BLOCK222 = grid(0.425, 0.275, 2, 2, layers=2)  # centred on (0.45, 0.30)
 )
 def test_dev16_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev16(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev17
+
+
+def _dev17(case_id: str) -> Case:
+    return next(c for c in DEV17 if c.id == case_id)
+
+
+def _jenga(layers, turn=True):
+    """Layers of three beams on a 3x3 footprint centred on (0.45, 0.30), the first along x,
+    each next one turned 90° about z when `turn`."""
+    out = []
+    for i in range(layers):
+        z = C / 2 + C * i
+        if turn and i % 2:
+            out += [beam(x, 0.30, z, YAW90) for x in (0.40, 0.45, 0.50)]
+        else:
+            out += [beam(0.45, y, z) for y in (0.25, 0.30, 0.35)]
+    return out
+
+
+_STAIRS5_X = _stairs_x(0.35, 0.30, (1, 2, 3, 4, 5))  # climbing back, top step at x 0.55
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev17-rel-01",  # 6 in ≈ 3 and 4 in ≈ 2 cubes, two inches ≈ one cube clear
+            res(*column(0.45, 0.25, 3), *column(0.45, 0.35, 2)),
+            res(*column(0.45, 0.25, 3), *column(0.45, 0.40, 2)),  # two cubes clear
+        ),
+        (
+            "dev17-rel-09",  # of two towers, the second from the left (the -y one) raised to 6
+            res(*column(0.45, 0.35, 4), *column(0.45, 0.25, 6)),
+            res(*column(0.45, 0.35, 6), *column(0.45, 0.25, 4)),
+        ),
+        (
+            "dev17-rel-14",  # the leftmost of three 2-stacks raised to 5, a cube between each
+            res(*column(0.45, 0.40, 5), *column(0.45, 0.30, 2), *column(0.45, 0.20, 2)),
+            res(*column(0.45, 0.40, 2), *column(0.45, 0.30, 2), *column(0.45, 0.20, 5)),
+        ),
+        (
+            "dev17-rel-15",  # a 4-tower a cube behind the top of 4 steps climbing back
+            res(*_stairs_x(0.30, 0.30, (1, 2, 3, 4)), *column(0.55, 0.30, 4)),
+            res(*_stairs_x(0.30, 0.30, (1, 2, 3, 4)), *column(0.45, 0.40, 4)),  # to one side
+        ),
+        (
+            "dev17-rel-19",  # revised: the 3-tower on the right-hand end cube of a front row of 5
+            res(*_row_y(0.35, 0.20, 5), *column(0.35, 0.20, 3, z0=C)),
+            res(*_row_y(0.35, 0.20, 5), *column(0.35, 0.30, 3, z0=C)),  # the first version
+        ),
+        (
+            "dev17-rel-19",  # the mirror image: on the left-hand end
+            res(*_row_y(0.35, 0.20, 5), *column(0.35, 0.20, 3, z0=C)),
+            res(*_row_y(0.35, 0.20, 5), *column(0.35, 0.40, 3, z0=C)),
+        ),
+        (
+            "dev17-rel-22",  # a central 5-stack, a 2-stack a cube clear on each of its sides
+            res(
+                *column(0.45, 0.30, 5),
+                *column(0.35, 0.30, 2),
+                *column(0.55, 0.30, 2),
+                *column(0.45, 0.40, 2),
+                *column(0.45, 0.20, 2),
+            ),
+            res(
+                *column(0.45, 0.30, 5),
+                *column(0.35, 0.30, 2),
+                *column(0.55, 0.30, 2),
+                *column(0.45, 0.40, 2),
+                *column(0.65, 0.30, 2),  # a second one behind, none on the right
+            ),
+        ),
+        (
+            "dev17-seq-01",  # 4 → 5, left → right: the last word wins
+            res(*column(0.45, 0.15, 5)),
+            res(*column(0.45, 0.45, 5)),
+        ),
+        (
+            "dev17-seq-17",  # a 6-stack flagpole a block past the top of 5 steps
+            res(*_STAIRS5_X, *column(0.65, 0.30, 6)),
+            res(*_STAIRS5_X, *column(0.25, 0.30, 6)),  # at the bottom end
+        ),
+        (
+            "dev17-seq-20",  # the middle 2-stack moved onto the right one: 4 right, 2 left
+            res(*column(0.45, 0.15, 4), *column(0.45, 0.45, 2)),
+            res(*column(0.45, 0.15, 2), *column(0.45, 0.45, 4)),
+        ),
+        (
+            "dev17-seq-21",  # two 3-towers, a beam across, one cube at mid-span: 8 parts
+            res(
+                *column(0.45, 0.25, 3),
+                *column(0.45, 0.35, 3),
+                beam(0.45, 0.30, 0.175, YAW90),
+                cube(0.45, 0.30, 0.225),
+            ),
+            res(
+                *column(0.45, 0.25, 3),
+                *column(0.45, 0.35, 3),
+                beam(0.45, 0.30, 0.175, YAW90),
+                cube(0.45, 0.25, 0.225),  # over one pillar, not mid-span
+            ),
+        ),
+        (
+            "dev17-seq-22",  # 4 towers front to back, the third raised to 4, the last removed
+            res(*column(0.30, 0.30, 2), *column(0.40, 0.30, 2), *column(0.50, 0.30, 4)),
+            res(*column(0.30, 0.30, 2), *column(0.40, 0.30, 4), *column(0.50, 0.30, 2)),
+        ),
+        (
+            "dev17-num-22",  # a Jenga-style tower: 4 layers of 3 beams, each turned across
+            res(*_jenga(4)),
+            res(*_jenga(4, turn=False)),
+        ),
+        (
+            "dev17-dim-05",  # "around 5 inches" = 2.5 cubes: 2 or 3
+            res(*column(0.45, 0.30, 3)),
+            res(*column(0.45, 0.30, 5)),
+        ),
+        (
+            "dev17-dim-05",
+            res(*column(0.45, 0.30, 2)),
+            res(*column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev17-dim-13",  # a Tetris L lying flat
+            res(*_row_x(0.40, 0.30, 3), cube(0.40, 0.35, 0.025)),
+            res(*_row_x(0.40, 0.30, 4)),  # an I-piece
+        ),
+        (
+            "dev17-dim-13",  # or standing: a column of 3 with a foot
+            res(*column(0.45, 0.30, 3), cube(0.50, 0.30, 0.025)),
+            res(*column(0.45, 0.30, 3), cube(0.50, 0.30, 0.025), cube(0.40, 0.30, 0.025)),
+        ),
+        (
+            "dev17-dim-14",  # 4 steps, each 2 in (1 cube) high and 4 in (2 cubes) deep
+            res(*_stairs_x(0.30, 0.30, (1, 1, 2, 2, 3, 3, 4, 4))),
+            res(*_stairs_x(0.30, 0.30, (1, 2, 3, 4))),
+        ),
+        (
+            "dev17-typo-13",  # a Tetris T standing: a row of 3, one on the middle
+            res(*_row_y(0.45, 0.25, 3), cube(0.45, 0.30, 0.075)),
+            res(*_row_y(0.45, 0.25, 3), cube(0.45, 0.25, 0.075)),  # that is an L
+        ),
+        (
+            "dev17-neg-11",  # 6 in ≈ 3 cubes or more of floor to the left edge (y 0.55)
+            res(*column(0.45, 0.375, 4)),
+            res(*column(0.45, 0.45, 4)),
+        ),
+        (
+            "dev17-reg-02",  # 8 in left of the middle line: y ≈ 0.503
+            res(*column(0.45, 0.50, 3)),
+            res(*column(0.45, 0.40, 3)),
+        ),
+        (
+            "dev17-reg-07",  # an 8-inch row within an inch of the back edge (x 0.80)
+            res(*_row_y(0.775, 0.20, 4)),
+            res(*_row_y(0.70, 0.20, 4)),
+        ),
+        (
+            "dev17-reg-11",  # the left tower moved to the back, the right one left alone
+            res(*column(0.65, 0.40, 3), *column(0.45, 0.15, 3)),
+            res(*column(0.45, 0.45, 3), *column(0.45, 0.15, 3)),  # nothing moved
+        ),
+        (
+            "dev17-bad-02",  # a yard (≈ 18 cubes) is past the cell: refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.30, 10)),
+        ),
+    ],
+)
+def test_dev17_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev17(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
