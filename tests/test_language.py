@@ -1422,7 +1422,7 @@ def test_a_pyramids_bottom_count_and_one_foot():
     assert read("a pyramid with 5 cubes on the bottom").spec.structures[0].length == 5
     assert read("a wall 35 cm long and a foot high").spec.structures[0].height_m == 0.3048
     s = read("a 2x2 block, not taller than 10 cm").spec.structures[0]
-    assert s.height_m == 0.1
+    assert s.height == 2  # the whole parts within 10 cm
 
 
 def test_a_size_compared_with_the_one_said_before():
@@ -2173,3 +2173,58 @@ def test_a_row_on_top_of_a_wall_runs_along_the_wall():
     (tower,) = [o for o in q.layout.objects if o.position[2] > 0.1 and o.position[0] < 0.45]
     row = [o for o in q.layout.objects if o.position[2] > 0.1 and o.position[0] > 0.45]
     assert len(row) == 2 and {o.position[0] for o in row} != {tower.position[0]}
+
+
+@pytest.mark.parametrize(
+    ("said", "mm"),
+    [
+        ("a 6 inch stack", "152.4 mm"),
+        ("two inches apart", "50.8 mm"),
+        ("a foot-long row", "304.8 mm long"),
+        ("1 ft 6 in tall", "457.2 mm"),
+        ("a foot and a half tall", "457.2 mm"),
+        ("1 1/2 inches apart", "38.1 mm"),
+        ("a gap of 3/4 of an inch", "19 mm"),
+        ("half an inch apart", "12.7 mm"),
+        ('a 6" tower', "152.4 mm"),
+        ("a 6 by 6 inch pad", "152.4 mm by 152.4 mm"),
+        ("tower 10in tall", "254 mm"),
+        ("a yard tall", "914.4 mm"),
+    ],
+)
+def test_imperial_lengths_are_read_in_millimetres_and_noted(said, mm):
+    from sdi.language.units import to_millimetres
+
+    notes: list[str] = []
+    assert mm in to_millimetres(said, notes)
+    assert notes and notes[0].startswith("read '")
+
+
+@pytest.mark.parametrize(
+    "said", ["put 2 in each corner", "4 in a row", "3 in the back", "at the foot of the wall"]
+)
+def test_in_and_foot_that_are_no_length_stay(said):
+    from sdi.language.units import to_millimetres
+
+    notes: list[str] = []
+    assert to_millimetres(said, notes) == said and notes == []
+
+
+def test_inches_size_and_space_structures():
+    r = plan("Put a 6 inch stack and a 4 inch stack about two inches apart.")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert sorted(np.round(hi[:, 2], 3))[-1] == pytest.approx(0.15)  # 6 in: 3 cubes
+    assert len(lo) == 5 and r.spec.gap_m == pytest.approx(0.0508)
+    # a yard is beyond the cell: refused, not built smaller
+    assert plan("A tower a yard tall.").status != "success"
+    # a change in inches counts whole parts
+    s = read("Lay a 6 by 6 inch pad, then build it up to 4 inches tall.").spec.structures[0]
+    assert (s.length, s.width, s.height) == (3, 3, 2)
+
+
+def test_an_upper_bound_in_length_builds_the_whole_parts_within_it():
+    for said in ("a tower no taller than 18 cm", "a tower at most 18 cm tall",
+                 "A tower no taller than 7 inches, but as tall as that allows."):  # fmt: skip
+        r = plan(said)
+        assert r.status == "success" and len(r.layout.objects) == 3, (said, r.notes)

@@ -295,6 +295,21 @@ def _below(m: re.Match[str], st: ReadState, note: str) -> str:
     if unit in _MM:
         most = -(-int(bound) * _MM[unit] // 50) - 1  # whole 5 cm parts strictly below
         unit = "cubes"
+    return _bounded(m, st, said, most, unit, what, f"the most below {limit}")
+
+
+def _within(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "no taller than 177.8 mm", "at most 18 cm high": the whole parts within the bound."""
+    said, groups = _said(m)
+    value, unit = (groups[0], groups[1]) if groups[0] else (groups[2], groups[3])
+    most = int(float(value) * _MM[unit] / 50 + 1e-9)  # whole 5 cm parts, not above it
+    return _bounded(m, st, said, most, "cubes", "high", f"the most within {value} {unit}")
+
+
+def _bounded(
+    m: re.Match[str], st: ReadState, said: str, most: int, unit: str, what: str, why: str
+) -> str:
+    """The most a bound allows, as the size to build (or said to be nothing buildable)."""
     what = "high" if what in ("tall", "in height") else what
     if not what.endswith("s") and what != "high":
         what += "s"
@@ -316,11 +331,11 @@ def _below(m: re.Match[str], st: ReadState, note: str) -> str:
         )
         return f" , {most - 1} high "
     size = f"{most} {what}" if what != "high" else f"{most} {unit + ' ' if unit else ''}high"
-    st.notes.append(f"read '{said}' as {size} (the most below {limit})")
+    st.notes.append(f"read '{said}' as {size} ({why})")
     return f" , {size} "
 
 
-_MM = {"cm": 10, "mm": 1, "centimetres": 10, "centimeters": 10}
+_MM = {"cm": 10, "mm": 1, "centimetres": 10, "centimeters": 10, "m": 1000}
 
 
 def _cannot(m: re.Match[str], st: ReadState, why: str) -> str:
@@ -692,6 +707,7 @@ HANDLERS: dict[str, Handler] = {
     "{one_layer}": _one_layer,
     "{delegated}": _delegated,
     "{below}": _below,
+    "{within}": _within,
     "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,

@@ -15,7 +15,7 @@ from sdi.spec.grammar import PRIMARY, parse_phrase
 from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import StructureDraft
 
-_N = r"(\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|another|one\s+more)"
+_N = r"(\d+(?:\.\d+)?|a|an|one|two|three|four|five|six|seven|eight|nine|ten|another|one\s+more)"
 
 
 _UNIT = (
@@ -156,6 +156,7 @@ def modify(
         m = pattern.search(p.text)
         if not m:
             continue
+        m = _in_parts(pattern, m, st)
         change = _CHANGES.get(op, _resize)
         note = change(m, op, p, before, built, structures)
         if note is None:
@@ -165,6 +166,24 @@ def modify(
         p.modified = True  # the phrase is a change of that structure, not one of its own
         return True
     return False
+
+
+def _in_parts(pattern: re.Pattern[str], m: re.Match[str], st: ReadState) -> re.Match[str]:
+    """ "build it up to 101.6 mm": a length where a change counts parts, as whole parts."""
+    if not m.lastindex or not m.group(1):
+        return m
+    unit = re.match(r"\s*(mm|cm|m)\b", m.string[m.end(1) :])
+    try:
+        metres = float(m.group(1)) * lx.UNITS_M[unit.group(1)] if unit else None
+    except ValueError:
+        return m
+    if unit is None or metres is None:
+        return m
+    part = st.cell.cube[2]
+    parts = max(1, round(metres / part))
+    st.notes.append(f"read '{m.group(1)} {unit.group(1)}' as {parts} parts ({parts * part:g} m)")
+    text = m.string[: m.start(1)] + str(parts) + m.string[m.end(1) + unit.end() :]
+    return pattern.search(text) or m
 
 
 Change = Callable[

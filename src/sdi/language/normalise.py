@@ -8,9 +8,10 @@ import re
 from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.errors import SpecError
+from sdi.language.units import to_millimetres
 from sdi.spec import lexicon as lx
 
-_SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "\u00a0": " "}
+_SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "″": '"', "\u00a0": " "}
 
 
 _DIMS = re.compile(r"(?<=\d)\s*[x*]\s*(?=\d)", re.IGNORECASE)
@@ -54,30 +55,9 @@ _REFERENCE_NO = re.compile(
 
 
 _METRE_WORDS = [
-    # "6 in tall", "a row 10 in long": "in" after a number and before a dimension is inches
-    (
-        re.compile(
-            r"\b(\d+(?:\.\d+)?)\s*in\b(?=\.?\s*(?:tall|high|wide|long|deep|across|thick)\b)",
-            re.I,
-        ),
-        r"\1 inches",
-    ),
     (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
-    # "a foot high", "an inch wide": one of the unit (not "at the foot of the wall")
-    (
-        re.compile(
-            r"\ba\s+foot\s+(?=(?:high|tall|long|wide|deep|across|thick|apart|away)\b)", re.I
-        ),
-        "1 foot ",
-    ),
-    (
-        re.compile(
-            r"\ban\s+inch\s+(?=(?:high|tall|long|wide|deep|across|thick|apart|away)\b)", re.I
-        ),
-        "1 inch ",
-    ),
 ]
 
 
@@ -556,6 +536,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f" {metres:g} m "
 
     text = _FRACTION_OF_METRE.sub(fraction, text)
+    text = to_millimetres(text, notes)  # "a 6 inch stack", "a foot-long row"
     for pattern, repl in _METRE_WORDS:
         text = pattern.sub(repl, text)
     for m in re.finditer(r"\d+(?:\.\d+)?", text):

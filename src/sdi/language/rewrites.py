@@ -358,6 +358,28 @@ _REWRITES += [
         " on top ",
         "",
     ),
+    (  # "no taller than 7 inches, but as tall as that allows": the bound's most, built
+        re.compile(
+            r",?\s*\b(?:but\s+|and\s+)?(?:as\s+(?:tall|high|big|long)\s+as\s+(?:that|it|this|"
+            r"the\s+(?:limit|bound|rule))\s+(?:allows|permits|lets\s+(?:it|you|me|us))|"
+            r"as\s+(?:tall|high)\s+as\s+(?:allowed|permitted))\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': the most the bound allows, as built",
+    ),
+    # "no taller than 177.8 mm", "at most 18 cm high": the whole parts within the bound
+    (
+        re.compile(
+            r"(?:,\s*)?\b(?:but\s+)?(?:(?:no|not|never)\s+(?:taller|higher)\s+than\s+"
+            r"(\d+(?:\.\d+)?)\s*(mm|cm|m)\b(?:\s+(?:tall|high))?|(?:at\s+most|no\s+more\s+than|"
+            r"not\s+more\s+than|max(?:imum)?(?:\s+of)?)\s+(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+"
+            r"(?:tall|high|in\s+height)\b)",
+            re.IGNORECASE,
+        ),
+        "{within}",
+        "",
+    ),
     # "no taller than 2 cubes" → 2 cubes high; "no more than 3 steps" → 3 steps
     (
         re.compile(

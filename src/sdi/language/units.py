@@ -1,0 +1,163 @@
+"""Lengths said in inches, feet and yards ("a 6 inch stack", "two inches apart", "a
+foot-long row", "3/4 of an inch", "1 ft 6 in", "6 by 6 inch"), turned into millimetres, which
+the rest of the front end reads, each with a note. pint's unit registry knows the units and
+converts them; this module only finds where an operator said one."""
+
+from __future__ import annotations
+
+import re
+from fractions import Fraction
+from functools import cache
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    import pint
+
+_WORDS = {"a": 1, "an": 1, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6,
+          "seven": 7, "eight": 8, "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}  # fmt: skip
+
+_PART = {"half": Fraction(1, 2), "quarter": Fraction(1, 4), "third": Fraction(1, 3)}
+
+_N = (
+    r"(?:\d+/\d+\s+of\s+an?|\d+(?:\.\d+)?(?:\s+\d+/\d+|-\d+/\d+)?|\d+/\d+|"
+    r"(?:(?:a|one|three)\s+)?(?:half|quarter|third)s?(?:\s+of)?\s+an?|"
+    + "|".join(sorted(_WORDS, key=len, reverse=True))
+    + r")"
+)
+
+# what may follow a length: a dimension, a spacing, a size pair, or the structure it sizes
+_AFTER = (
+    r"(?=[\s-]*(?:tall|high|wide|long|deep|across|thick|apart|away|gap|spacing|space|clear|"
+    r"in\s+(?:height|length|width|depth|diameter)|from|off|to\s+the|x\b|by\b|×|square|on\s+"
+    r"(?:a|each)\s+side|each|per|tower|stack|column|pillar|wall|row|line|pad|slab|block|cubes?|"
+    r"blocks?|bricks?|platform|base|floor|layer|step|stairs?|staircase|pyramid|bridge|beam|gate|"
+    r"arch|ring|fence|square|grid|high)\b|\s*[,.;:)!?]|\s*$)"
+)
+
+# a bare "in" is inches only before a dimension, a size pair or what it sizes ("6 in tall", "a
+# 6 in tower"; not "2 in each corner", "3 in the back", "4 in a row")
+_AFTER_IN = (
+    r"(?=[\s-]*(?:tall|high|wide|long|deep|across|thick|apart|gap|clear|x\b|by\b|×|square|"
+    r"tower|stack|column|pillar|wall|row|pad|slab|block|cubes?|blocks?|platform|base|step|"
+    r"staircase|pyramid|bridge|beam)\b)"
+)
+
+_UNIT = r"(inch(?:es)?|\"|foot|feet|ft\b\.?|yards?|yds?\b\.?)"
+_IN = r"(in\b\.?)"
+
+_PINT_UNIT = {"in": "inch", '"': "inch", "ft": "foot", "yd": "yard", "yds": "yard"}
+
+_COMPOUND = re.compile(
+    r"\b(" + _N + r")\s*(?:foot|feet|ft\.?|')\s*(?:and\s+)?(" + _N + r")\s*"
+    r"(?:inch(?:es)?|in\b\.?|\")" + _AFTER,
+    re.IGNORECASE,
+)
+_AND_A_HALF = re.compile(
+    r"\b(" + _N + r")\s+and\s+a\s+half\s+" + _UNIT + _AFTER
+    + r"|\b(an?|one)\s+" + _UNIT + r"\s+and\s+a\s+half\b" + _AFTER,
+    re.IGNORECASE,
+)  # fmt: skip
+_PAIR = re.compile(
+    r"\b("
+    + _N
+    + r")\s*(?:x|by|×)\s*("
+    + _N
+    + r")(?:\s*(?:x|by|×)\s*("
+    + _N
+    + r"))?[\s-]*"
+    + r"(inch(?:es)?|\"|foot|feet|ft\b\.?|yards?|yds?\b\.?|in\b\.?)"
+    + _AFTER,
+    re.IGNORECASE,
+)
+_SINGLE = re.compile(
+    r"\b(" + _N + r")[\s-]*" + _UNIT + _AFTER + r"|\b(" + _N + r")[\s-]*" + _IN + _AFTER_IN,
+    re.IGNORECASE,
+)
+
+
+@cache
+def _registry() -> pint.UnitRegistry:
+    import pint  # its registry takes a quarter of a second to build: only when it is needed
+
+    return pint.UnitRegistry()
+
+
+def _value(said: str) -> Fraction | None:
+    """ "6", "1.5", "3/4", "1 1/2", "1-1/2", "two", "half an", "three quarters of an"."""
+    s = re.sub(r"\s+", " ", said.strip().lower())
+    words = s.split(" ")
+    if words[-1] in ("a", "an") and len(words) > 1:  # "half an", "a quarter of an", "3/4 of an"
+        words = [w for w in words[:-1] if w != "of"]
+        if len(words) == 1 and "/" in words[0]:
+            return _value(words[0])
+        share = _PART.get(words[-1].rstrip("s"))
+        count = _WORDS.get(words[0], 1) if len(words) > 1 else 1
+        return None if share is None else count * share
+    if s in _WORDS:
+        return Fraction(_WORDS[s])
+    m = re.fullmatch(r"(\d+)(?:[\s-](\d+)/(\d+))?|(\d+)/(\d+)|(\d+\.\d+)", s)
+    if not m:
+        return None
+    if m.group(6):
+        return Fraction(m.group(6))
+    if m.group(4):
+        return Fraction(int(m.group(4)), int(m.group(5))) if int(m.group(5)) else None
+    whole = Fraction(int(m.group(1)))
+    if m.group(2):
+        return whole + Fraction(int(m.group(2)), int(m.group(3))) if int(m.group(3)) else None
+    return whole
+
+
+def _mm(value: Fraction, unit: str) -> float:
+    name = unit.lower().rstrip(".")
+    name = _PINT_UNIT.get(name, name)
+    q = _registry().Quantity(float(value), name).to("millimeter")
+    return round(float(q.magnitude), 1)
+
+
+def _article(said: str) -> str:
+    """ "a foot long" → "a 304.8 mm long": the article stays when it was the number."""
+    return "a " if said.strip().lower() in ("a", "an") else ""
+
+
+def to_millimetres(text: str, notes: list[str]) -> str:
+    """`text` with every imperial length it says in millimetres, each conversion noted."""
+    if not re.search(r"inch|in\b|\"|\bf(?:oo|ee)?t\b|\byards?\b|\byds?\b|'", text, re.I):
+        return text
+
+    def said_as(m: re.Match[str], mm: str, article: str = "") -> str:
+        notes.append(f"read '{m.group(0).strip()}' as {mm}")
+        return f" {article}{mm} "
+
+    def compound(m: re.Match[str]) -> str:
+        feet, inches = _value(m.group(1)), _value(m.group(2))
+        if feet is None or inches is None:
+            return m.group(0)
+        return said_as(m, f"{_mm(feet, 'foot') + _mm(inches, 'inch'):g} mm")
+
+    def and_a_half(m: re.Match[str]) -> str:
+        n, unit = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+        v = _value(n)
+        if v is None:
+            return m.group(0)
+        half = _mm(v + Fraction(1, 2), unit)
+        return said_as(m, f"{half:g} mm", "" if m.group(1) else _article(n))
+
+    def pair(m: re.Match[str]) -> str:
+        vs = [_value(g) for g in m.groups()[:3] if g]
+        if any(v is None for v in vs):
+            return m.group(0)
+        return said_as(m, " by ".join(f"{_mm(v, m.group(4)):g} mm" for v in vs if v is not None))
+
+    def single(m: re.Match[str]) -> str:
+        n, unit = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+        v = _value(n)
+        if v is None:
+            return m.group(0)
+        return said_as(m, f"{_mm(v, unit):g} mm", _article(n))
+
+    text = _COMPOUND.sub(compound, text)
+    text = _AND_A_HALF.sub(and_a_half, text)
+    text = _PAIR.sub(pair, text)
+    text = _SINGLE.sub(single, text)
+    return re.sub(r"(\d mm)\s*-(?=[a-z])", r"\1 ", text)  # "a foot-long row"
