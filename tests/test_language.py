@@ -2228,3 +2228,20 @@ def test_an_upper_bound_in_length_builds_the_whole_parts_within_it():
                  "A tower no taller than 7 inches, but as tall as that allows."):  # fmt: skip
         r = plan(said)
         assert r.status == "success" and len(r.layout.objects) == 3, (said, r.notes)
+
+
+def test_undo_takes_back_the_step_before_and_says_so():
+    r = plan("Row of 4 going left to right. Then a tower of 3 next to it. Undo the last one.")
+    assert r.status == "success" and len(r.layout.objects) == 4, r.notes
+    assert any("taken back" in n and "tower" in n for n in r.notes)
+    s = read("a row of 3. then a tower of 5 behind it. scratch that. a wall 4 long behind it")
+    assert [x.shape for x in s.spec.structures] == ["row", "wall"]
+    (rel,) = s.spec.relations  # "behind it": behind the row, the tower being gone
+    assert (rel.subject, rel.object, rel.side) == (1, 0, "back")
+    # a group's last one is one of the group; a step's last one is the step
+    t = read("5 towers of 2 in a line, then remove the last one").spec
+    assert len(t.structures) == 4
+    u = read("a tower of 3, then a tower of 2 next to it, remove the last one").spec
+    assert [x.height for x in u.structures] == [3]
+    # with nothing before it, there is nothing to take back: not silently dropped
+    assert plan("a tower of 3. undo").status != "success"

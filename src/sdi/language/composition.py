@@ -62,6 +62,10 @@ def relate(
             continue
         s_ref = phrases[subj].ref is not None
         subj = resolve(phrases, subj)
+        if phrases[subj].undone or (
+            r.object is not None and phrases[resolve(phrases, r.object)].undone
+        ):
+            continue  # "… next to it. Undo the last one.": taken back with its structure
         if not phrases[subj].count or phrases[subj].spec is None:
             if phrases[subj].tokens and r.kind == "on" and obj is not None:
                 # "a beam on top of the two towers": the beam joins them

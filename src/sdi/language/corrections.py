@@ -217,6 +217,10 @@ def correct(text: str, notes: list[str]) -> str:
             if replaced is not None:
                 text = replaced
                 continue
+        if not value and re.search(r"scratch|forget|cancel", m.group(0), re.I):
+            # "a tower of 5 behind it. scratch that. a wall …": the step before, taken back
+            text = before.rstrip(" ,;:—–-") + ". then undo that. " + rest.lstrip(" .,;")
+            continue
         if kind is None:  # a correction in words of its own: a clause the later stages read
             text = before.rstrip(" ,;:—–-") + ". then " + after
             continue

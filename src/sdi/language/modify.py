@@ -130,6 +130,14 @@ MODIFY = [
         r"wall)\b",
         "drop",
     ),
+    # "… Then a tower of 3 next to it. Undo the last one.", "scratch that": the step before, gone
+    _op(
+        r"\b(?:undo|scratch|cancel|forget|scrap|take\s+back|delete|remove|get\s+rid\s+of)\s+"
+        r"(?:the\s+)?(?:last|latest|previous)\s+(?:one|step|thing|bit|structure|addition|"
+        r"command|change|instruction)\b|\b(?:undo|scratch|cancel|take\s+back)\s+(?:that|it|this)"
+        r"\b|^\W*(?:and\s+)?undo\W*$",
+        "undo",
+    ),
 ]
 
 
@@ -282,6 +290,8 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     "three towers of 2, 3 and 4, then remove the tallest one": the one of a kind by height."""
     which = m.group(1).lower()
     target = built[-1]
+    if which == "last" and target.count == 1:
+        return _undo(m, op, p, before, built, structures)  # "remove the last one": the last step
     if which in ("first", "last", "middle"):
         if target.count < 2 or (which == "middle" and target.count % 2 == 0):
             return None  # one structure, or no single middle one
@@ -307,6 +317,33 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     left = sum(q.count for q in built)
     size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
     return f"{left} left of the {left + 1}{size}"
+
+
+def _sizes(s: StructureDraft) -> dict[str, float]:
+    """The sizes a structure was given (to say what was taken back)."""
+    keys = {"length", "width", "height", "steps", "count", "length_m", "width_m", "height_m"}
+    return {k: v for k, v in s.model_dump(include=keys).items() if isinstance(v, int | float)}
+
+
+def _undo(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+          structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "Then a wall behind them. Undo the last one.": the structures of the step before are
+    taken back (taking back the only step leaves nothing to build: refused)."""
+    target = built[-1]
+    if len(built) < 2:
+        raise SpecError(
+            f"'{m.group(0).strip()}' takes back the only thing named: nothing is left to build; "
+            "say what to build instead",
+            understood={"structures": [s.shape for s in structures]},
+        )
+    gone = structures[target.first : target.first + target.count]
+    del structures[target.first : target.first + target.count]
+    for q in before:
+        if q.count and q.first > target.first:
+            q.first -= target.count
+    target.count, target.undone = 0, True
+    said = [f"the {s.shape}" + "".join(f" {k} {v:g}" for k, v in _sizes(s).items()) for s in gone]
+    return f"the step before taken back: {' and '.join(said)} not built"
 
 
 def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
@@ -362,7 +399,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
 
 _CHANGES: dict[str, Change] = {
     "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars,
-    "hollow": _hollow, "drop": _drop,
+    "hollow": _hollow, "drop": _drop, "undo": _undo,
 }  # fmt: skip
 """The changes that are not a size of the last structure (`_resize` does those)."""
 

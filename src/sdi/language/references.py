@@ -127,7 +127,11 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
     words_ = [w for w in said if w not in ("the", "of")]
     if not words_ or len(words_) > 6:
         return None
-    built = [j for j, q in enumerate(before) if q.spec is not None or q.ref is not None]
+    built = [
+        j
+        for j, q in enumerate(before)
+        if (q.spec is not None or q.ref is not None) and not q.undone
+    ]
     others = [j for j in built if partner is None or resolve(before, j) != partner]
     built = others or built
     if words_[0] == "that":  # "… next to it, and another one next to that": the one just named

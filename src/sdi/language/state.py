@@ -22,6 +22,7 @@ class Phrase:
     ref: int | None = None  # a pure reference: the phrase it refers to
     side: str | None = None  # "it on the right": the side the reference names
     modified: bool = False  # "then add two more cubes to it": changed an earlier structure
+    undone: bool = False  # "… Undo the last one.": its structures were taken back
     structure: int | None = None  # "the first one", "the smaller one": which structure
     unused: list[str] = field(default_factory=list)
 
