@@ -2245,3 +2245,43 @@ def test_undo_takes_back_the_step_before_and_says_so():
     assert [x.height for x in u.structures] == [3]
     # with nothing before it, there is nothing to take back: not silently dropped
     assert plan("a tower of 3. undo").status != "success"
+
+
+def test_a_typo_of_a_relation_word_is_corrected():
+    r = plan("Please tower of cubes five, in the left sied.")
+    assert "corrected 'sied' to 'side'" in r.notes
+    assert [s.shape for s in r.spec.structures] == ["tower"]  # not a shed
+    assert "corrected 'anothr' to 'another'" in read("row of 4. thn anothr one on top").notes
+
+
+def test_a_count_before_a_singular_name_with_its_size_after_is_a_count():
+    assert [s.height for s in read("I want 3 tower of 3 cube.").spec.structures] == [3, 3, 3]
+    assert len(read("make 2 wall, long 4").spec.structures) == 2
+    # not the last number of a size group, and not a size with an article
+    assert len(read("make a 2x2 block, 2 high, and a 5 cube tower next to it").spec.structures) == 2
+    assert [s.height for s in read("a 5 tower").spec.structures] == [5]
+
+
+def test_a_count_and_an_equal_height_said_of_the_whole_are_checked():
+    r = plan("Tower, 5 cube. Also tower, 5 cube. Total 2 tower, same height.")
+    assert r.status == "success" and len(r.spec.structures) == 2, r.notes
+    assert any("holds" in n and "Total 2 tower" in n for n in r.notes)
+    bad = plan("a tower of 3 and a tower of 4, same height")
+    assert bad.status == "partial" and "same height" in (bad.error or "")
+    assert plan("a tower of 3 and a tower of 2, total 3 tower").status == "partial"
+    # "none of them the same height" says the opposite; a count naming them is no claim
+    assert len(read("three towers in total, each 2 high").spec.structures) == 3
+    assert not any("holds" in n for n in read("a handful of towers, none the same height").notes)
+
+
+def test_a_bare_singular_name_after_a_relation_word_is_the_one_named():
+    r = plan("Wall, long 6, high 2. In front of wall, one tower of 3 cube. Not touch.")
+    s = r.spec
+    assert [x.shape for x in s.structures] == ["wall", "tower"]
+    (rel,) = s.relations
+    assert (rel.subject, rel.object, rel.side) == (1, 0, "front")
+    lo, hi = boxes(r)
+    column = np.ptp(lo[:, 1], axis=0) > 0  # the wall's parts spread along y
+    wall_front = lo[:, 0].max()
+    tower_back = hi[hi[:, 0] < wall_front, 0].max()
+    assert column and wall_front - tower_back > 0.01  # "not touch": apart

@@ -13,7 +13,9 @@ from __future__ import annotations
 import re
 
 from sdi.language.state import ReadState
-from sdi.spec.structure_spec import Spec
+from sdi.spec import lexicon as lx
+from sdi.spec.numbers import words_to_numbers
+from sdi.spec.structure_spec import Spec, StructureSpec
 
 _N = r"(?:,\s*)?\b(?:and\s+|but\s+)?"  # the joint before a claim
 _THEM = (
@@ -21,6 +23,13 @@ _THEM = (
     r"the\s+(?!(?:left|right|front|back|middle|centre|center|table|side|edge)\b)\w+)"
 )
 _INSIDE = r"(?:inside|within|in\s+the\s+(?:middle|centre|center)|in\s+it)(?:\s+(?:it|of\s+it))?"
+
+_FAMILY = (
+    r"(?:"
+    + "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
+    + r")"
+)
+_COUNT = r"(\d+|two|three|four|five|six|seven|eight|nine|ten)"
 
 _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
     (kind, re.compile(pattern, re.IGNORECASE))
@@ -54,6 +63,14 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
         ("only", _N + r"no\s+other\s+(?:things?|structures?|parts?|objects?|stuff)"
                       r"(?:\s+on\s+the\s+table)?\b"),
         ("only", _N + r"no\s+more\s*,?\s*(?:and\s+)?no\s+less\b"),
+        # how many of a family there are: "total 2 tower", "three towers in all"
+        ("count", _N + r"(?:in\s+)?total(?:\s+of)?\s*:?\s*" + _COUNT + r"\s+(" + _FAMILY + r")\b"),
+        ("count", _N + r"(?:so\s+)?" + _COUNT + r"\s+(" + _FAMILY + r")\s+(?:in\s+total|in\s+all|"
+                       r"altogether|overall)\b"),
+        # every structure as high as the others
+        ("same", _N + r"(?:all\s+|both\s+)?(?:(?:of\s+)?the\s+)?same\s+height\b"
+                      r"(?:\s+as\s+(?:each\s+other|one\s+another))?(?!\s+as\b)"),
+        ("same", _N + r"(?:all\s+|both\s+)?(?:equally\s+(?:high|tall)|equal\s+(?:in\s+)?height)\b"),
     )
 )  # fmt: skip
 
@@ -63,6 +80,8 @@ _HOLDS = {
     "apart": "the structures stand apart",
     "empty": "nothing stands inside it",
     "only": "only what is named is built",
+    "count": "as many as said",
+    "same": "every structure as high as the others",
 }
 _HOLLOW = frozenset({"enclosure", "castle", "u_shape"})
 
@@ -72,6 +91,12 @@ def take(text: str, st: ReadState) -> str:
     for kind, pattern in _CLAIMS:
 
         def cut(m: re.Match[str], kind: str = kind) -> str:
+            if kind == "count" and not _named_before(m):
+                return m.group(0)  # "three towers in total, each 2 high": they are named here
+            if kind == "same" and re.search(
+                r"\b(?:none|not|no|never|nor)\b[^,.;]*$", m.string[: m.start()], re.I
+            ):
+                return m.group(0)  # "none of them the same height": the opposite
             st.claims.append((kind, m.group(0).strip(" ,")))
             return " , "
 
@@ -101,13 +126,37 @@ def _holds(kind: str, spec: Spec) -> bool:
     if kind == "empty":
         hollow = any(s.shape in _HOLLOW for s in spec.structures)
         return hollow and not any(r.kind == "around" for r in spec.relations)
+    if kind == "same":
+        heights = {_height(s) for s in spec.structures}
+        return len(spec.structures) >= 2 and len(heights) == 1 and None not in heights
     return kind == "only"
+
+
+def _height(s: StructureSpec) -> int | None:
+    return getattr(s, "height", None) or (getattr(s, "count", None) if s.shape == "tower" else None)
+
+
+def _named_before(m: re.Match[str]) -> bool:
+    """The family a count claim counts was named before the claim."""
+    family = lx.SHAPE_WORDS.get(m.group(2).lower())
+    before = re.findall(r"[a-z]+", m.string[: m.start()].lower())
+    return any(lx.SHAPE_WORDS.get(w) == family for w in before)
+
+
+def _counted(said: str, spec: Spec) -> bool:
+    """ "total 2 tower": as many structures of that family as said."""
+    m = re.search(_COUNT + r"\s+(" + _FAMILY + r")\b", said, re.IGNORECASE)
+    if m is None:
+        return False
+    n = int(words_to_numbers([m.group(1).lower()])[0])
+    family = lx.SHAPE_WORDS.get(m.group(2).lower())
+    return sum(s.shape == family for s in spec.structures) == n
 
 
 def check(spec: Spec, st: ReadState) -> None:
     """A note for each claim that holds; material and a note for each that does not."""
     for kind, said in st.claims:
-        if _holds(kind, spec):
+        if _counted(said, spec) if kind == "count" else _holds(kind, spec):
             st.notes.append(f"'{said}': holds, {_HOLDS[kind]}")
         else:
             st.material.append(said)

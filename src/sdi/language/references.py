@@ -157,10 +157,11 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
             if spec is not None and any(s.shape in ("bridge", "arch", "canopy")
                                         for s in spec.structures):  # fmt: skip
                 return resolve(before, j)
+    bare = len(said) == 1 and said[0] in lx.SHAPE_WORDS and not said[0].endswith("s")
     if (
         len(words_) <= 2
         and words_[-1] in GENERIC | BASES | set(lx.SHAPE_WORDS) | {"cube", "block", "brick"}
-        and rest.startswith(("the", "its"))
+        and (rest.startswith(("the", "its")) or bare)  # "in front of wall": the wall named
     ):
         noun = words_[-1]
         if noun in ("base", "foundation", "bottom", "first", "platform", "plinth"):

@@ -868,7 +868,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r",?\s*\b(?:but\s+)?(?:not\s+touching(?:\s+each\s+other)?|spaced\s+out|spread\s+out|"
+            r",?\s*\b(?:but\s+)?(?:(?:not|no|never|without)\s+touch(?:ing)?(?:\s+each\s+other|"
+            r"\s+one\s+another)?|spaced\s+out|spread\s+out|"
             r"with\s+gaps?\s+between\s+them)\b",
             re.IGNORECASE,
         ),
@@ -1920,6 +1921,32 @@ def _count_of_plural(text: str, st: ReadState) -> str:
     return _PLURAL_THEN_COUNT.sub(counted, text)
 
 
+_COUNTED_SINGULAR = re.compile(
+    r"(?<!\ba\s)(?<!\ban\s)(?<!\bthe\s)(?<!\bone\s)(?<!\bthat\s)(?<!\bthis\s)"
+    r"\b([2-9]|1[0-2]|two|three|four|five|six|seven|eight|nine|ten)\s+([a-z]+)\b(?!-)"
+    r"(?=\s*,?\s*(?:of|with)\s+(?:\d|one|two|three|four|five|six|seven|eight|nine|ten)\b|"
+    r"\s*,\s*(?:(?:long|high|tall|wide)\s+\d|\d+\s+(?:long|high|tall|wide|cubes?)\b))",
+    re.IGNORECASE,
+)
+
+
+def _counted_singular(text: str, st: ReadState) -> str:
+    """ "I want 3 tower of 3 cube", "make 2 wall, long 4": a count before a structure's singular
+    name, its size said after it, is that many of them (not a tower 3 high)."""
+
+    def counted(m: re.Match[str]) -> str:
+        noun = m.group(2).lower()
+        if lx.SHAPE_WORDS.get(noun) is None or noun in lx.SELDOM_STRUCTURES or noun.endswith("s"):
+            return m.group(0)
+        if re.search(r"(?:\bx|\bby|[*×]|\d)\s*$", m.string[: m.start()], re.I):
+            return m.group(0)  # "a 2 x 2 block, 2 high": the last of a size group
+        plural = noun + ("es" if noun.endswith(("ch", "sh", "x")) else "s")
+        st.notes.append(f"read '{m.group(0)}' as {m.group(1)} {plural}")
+        return f"{m.group(1)} {plural}"
+
+    return _COUNTED_SINGULAR.sub(counted, text)
+
+
 _ONE = (
     r"(?:a|an)\s+(?!(?:same|other|second|new|first|last|next|different|single)\b)([a-z]+)\s+one\b"
     r"(?!\s+(?:cubes?|parts?|blocks?|bricks?|high|tall|long|wide|deep|thick|layers?|levels?)\b)"
@@ -1992,6 +2019,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _described_again(text, st)
     text = _floors_as_levels(text, st)
     text = _count_of_plural(text, st)
+    text = _counted_singular(text, st)
     text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)
     text = _ONE_OF.sub(r"\1another one \2 ", text)
     text = _SAME_AGAIN.sub(" another one ", text)

@@ -28,7 +28,13 @@ _SUFFIXES = {"y", "ed", "ing", "er", "est", "ly", "ish", "ie", "ies"}
 
 
 _KNOWN = frozenset(words.VOCABULARY)
-_CHOICES = sorted(words.CORRECTABLE)  # what a word may be corrected to
+# Words that carry a relation, a place or a step, which a typo may stand for ("the left sied",
+# "thn anothr one") though they are not content of their own (left unused, they are no loss).
+_FUNCTION = {"side", "sides", "then", "another", "other", "each", "every", "edge", "edges", "top",
+             "bottom", "middle", "centre", "center", "after", "first", "second", "third", "last",
+             "across", "along", "same", "space", "gap", "level", "layer"}  # fmt: skip
+_TARGETS = words.CORRECTABLE | _FUNCTION  # what a word may be corrected to
+_CHOICES = sorted(_TARGETS)
 
 
 _CUT_SHORT = ("tall", "long", "high", "wide", "deep")
@@ -87,7 +93,7 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             return raw
         if len(w) == 3:  # three letters: only a swap of two neighbours ("teh")
             swaps = {w[:i] + w[i + 1] + w[i] + w[i + 2 :] for i in range(2)}
-            hit = sorted(swaps & words.CORRECTABLE)
+            hit = sorted(swaps & _TARGETS)
             cut = [d for d in _CUT_SHORT if d.startswith(w)]  # "tal", "lon": a letter lost
             if not hit and len(cut) == 1:
                 notes.append(f"corrected '{raw}' to '{cut[0]}'")
