@@ -2285,3 +2285,33 @@ def test_a_bare_singular_name_after_a_relation_word_is_the_one_named():
     wall_front = lo[:, 0].max()
     tower_back = hi[hi[:, 0] < wall_front, 0].max()
     assert column and wall_front - tower_back > 0.01  # "not touch": apart
+
+
+def test_a_relation_word_corrected_to_another_side_keeps_the_relation():
+    s = read("tower of 3 in the middle. now a tower of 5 behind it. no wait, in front of it.").spec
+    (rel,) = s.relations
+    assert (rel.kind, rel.subject, rel.side) == ("next_to", 1, "front")
+    assert getattr(s.structures[1], "region", None) is None  # not "at the front of the table"
+
+
+def _columns(r):
+    cols: dict[tuple[float, float], int] = {}
+    for o in r.layout.objects:
+        key = (round(o.position[0], 3), round(o.position[1], 3))
+        cols[key] = cols.get(key, 0) + 1
+    return cols
+
+
+def test_the_tallest_goes_where_it_is_said_along_the_line():
+    r = plan("three towers of 2, 4 and 6 in a straight line front to back, tallest at the back, "
+             "5 cm clear spacing")  # fmt: skip
+    assert r.status == "success", r.notes
+    cols = sorted(_columns(r).items())  # front (small x) to back
+    assert len({y for (_, y), _ in cols}) == 1 and cols[-1][1] == 6
+    assert r.spec.gap_m == pytest.approx(0.05)
+    left = sorted(_columns(plan("three towers of 2, 4 and 6, tallest on the left")).items(),
+                  key=lambda kv: kv[0][1])  # fmt: skip
+    assert left[-1][1] == 6  # left is +y
+    # a line front to back has no left end: said so, not silently ignored
+    odd = plan("three towers of 2, 4 and 6 in a line front to back, the tallest on the left")
+    assert odd.status == "partial"

@@ -227,6 +227,9 @@ def _different(specs: list[StructureSpec], st: ReadState) -> list[StructureSpec]
     return out
 
 
+_AT = {"front": "at the ", "back": "at the "}
+
+
 def _ordered(
     specs: list[StructureSpec], relations: list[Relation], st: ReadState
 ) -> list[StructureSpec]:
@@ -243,9 +246,14 @@ def _ordered(
         return specs
     pick = sizes.index(max(sizes) if most == "max" else min(sizes))
     rest = [s for k, s in enumerate(specs) if k != pick]
-    at = {"middle": len(specs) // 2, "right": 0, "left": len(specs) - 1}[where]
-    st.notes.append(f"'{said}': the {'biggest' if most == 'max' else 'smallest'} one "
-                    f"{'in the middle' if where == 'middle' else 'on the ' + where}")  # fmt: skip
+    if (where in ("front", "back") and st.line != "x") or (where in ("left", "right") and st.line):
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': the structures do not stand in a line that way")
+        return specs
+    at = {"middle": len(specs) // 2, "right": 0, "left": len(specs) - 1, "front": 0,
+          "back": len(specs) - 1}[where]  # fmt: skip
+    place = "in the middle" if where == "middle" else _AT.get(where, "on the ") + where
+    st.notes.append(f"'{said}': the {'biggest' if most == 'max' else 'smallest'} one {place}")
     return [*rest[:at], specs[pick], *rest[at:]]
 
 

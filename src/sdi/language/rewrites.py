@@ -1046,10 +1046,10 @@ _REWRITES += [
     ),
     (  # "with the tallest one in the middle": the order of several structures
         re.compile(
-            r",?\s*(?:and\s+|with\s+)?the\s+(tallest|highest|biggest|largest|longest|shortest|"
+            r",?\s*(?:and\s+|with\s+)?(?:the\s+)?(tallest|highest|biggest|largest|longest|shortest|"
             r"lowest|smallest)\s+(?:one|tower|stack|column|pillar|wall|row)?\s*(?:(?:goes|is|"
             r"stands|should\s+be)\s+)?(?:in\s+the\s+(?:middle|centre|center)|(?:on|at|to)\s+the\s+"
-            r"(left|right))\b",
+            r"(left|right|front|back))\b",
             re.IGNORECASE,
         ),
         "{extreme_at}",
@@ -1300,7 +1300,8 @@ _REWRITES += [
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
-            r"(?<=set)|(?<=lined\sup))\s+in\s+(?:a|one|a\s+single)\s+(?:row|line)"
+            r"(?<=set)|(?<=lined\sup))\s+in\s+(?:a|one|a\s+single)\s+(?:straight\s+|neat\s+)?"
+            r"(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
             r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:from\s+)?(?:the\s+)?"
             r"(?:front|back|left|right)\s+to\s+(?:the\s+)?(?:front|back|left|right)\b))",

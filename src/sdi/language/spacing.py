@@ -23,7 +23,7 @@ _UNIT = r"(cubes?|parts?|blocks?|bricks?|pieces?|cm|mm|m)(?:'s|s')?"  # "a cube'
 _GAP = re.compile(
     r",?\s*\b(?:with\s+|leaving\s+|leave\s+|keep\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?"
     + _N + r"(?:[- ]?" + _UNIT + r")?"
-    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gaps?|spaces?|apart|aisle)\b"
+    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gaps?|spaces?|spacing|apart|aisle)\b"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+away(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
