@@ -2315,3 +2315,21 @@ def test_the_tallest_goes_where_it_is_said_along_the_line():
     # a line front to back has no left end: said so, not silently ignored
     odd = plan("three towers of 2, 4 and 6 in a line front to back, the tallest on the left")
     assert odd.status == "partial"
+
+
+def test_levels_labelled_in_order_stand_each_on_the_one_before():
+    r = plan("level 1: 4x4 floor. level 2: 3x3 on top. level 3: 2x2. level 4: 1 block. gg")
+    assert r.status == "success", r.notes
+    levels: dict[float, int] = {}
+    for o in r.layout.objects:
+        levels[round(o.position[2], 3)] = levels.get(round(o.position[2], 3), 0) + 1
+    assert [levels[z] for z in sorted(levels)] == [16, 9, 4, 1]
+
+
+def test_an_expected_result_is_checked_against_the_reading():
+    ok = plan("Step 1: place a 2 x 3 base, one layer. Step 2: add a second identical layer. "
+              "Expected result: a 2 x 3 x 2 block.")  # fmt: skip
+    assert ok.status == "success" and len(ok.layout.objects) == 12, ok.notes
+    assert any("holds" in n and "Expected result" in n for n in ok.notes)
+    bad = plan("a 2x3 slab, then add a second identical layer. Expected result: a 2 x 3 x 3 block.")
+    assert bad.status == "partial" and "Expected result" in (bad.error or "")

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import re
 
+from sdi.errors import SpecError
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -156,8 +157,57 @@ def _counted(said: str, spec: Spec) -> bool:
 def check(spec: Spec, st: ReadState) -> None:
     """A note for each claim that holds; material and a note for each that does not."""
     for kind, said in st.claims:
+        if kind == "result":
+            _result(said, spec, st)
+            continue
         if _counted(said, spec) if kind == "count" else _holds(kind, spec):
             st.notes.append(f"'{said}': holds, {_HOLDS[kind]}")
         else:
             st.material.append(said)
             st.notes.append(f"ignored '{said}': the reading does not keep it ({_HOLDS[kind]})")
+
+
+_SIZES = ("length", "width", "height", "steps", "count")
+
+
+def _result(said: str, spec: Spec, st: ReadState) -> None:
+    """ "Expected result: a 2 x 3 x 2 block", "should come out as a block 2 deep": the result
+    the command describes, read on its own and compared with what the reading builds."""
+    from sdi.language.reader import read  # the description is a command of its own
+
+    described = re.sub(r"^.*?(?=\b(?:a|an)\s)", "", said, count=1, flags=re.IGNORECASE)
+    try:
+        (want,) = read(described, st.cell).spec.structures
+    except (SpecError, ValueError):
+        st.notes.append(f"read '{said}' as a description, not a structure")
+        return
+    if len(spec.structures) != 1:
+        st.notes.append(f"read '{said}' as a description of the {len(spec.structures)} "
+                        "structures together; not checked")  # fmt: skip
+        return
+    (got,) = spec.structures
+    if _same(want, got):
+        st.notes.append(f"'{said}': holds, the reading builds that")
+        return
+    st.material.append(said)
+    st.notes.append(f"ignored '{said}': the reading builds a {got.shape} "
+                    f"{_sizes(got)}, not what it describes")  # fmt: skip
+
+
+def _sizes(s: StructureSpec) -> str:
+    d = s.model_dump(include=set(_SIZES), exclude_none=True)
+    return " ".join(f"{k} {v}" for k, v in d.items()) or "of its default size"
+
+
+def _same(want: StructureSpec, got: StructureSpec) -> bool:
+    """The described structure is the one built: its family, and every size it gives (a
+    footprint in either turn)."""
+    if want.shape != got.shape:
+        return False
+    w = want.model_dump(include=set(_SIZES), exclude_none=True)
+    g = got.model_dump(include=set(_SIZES), exclude_none=True)
+    foot_w = sorted(v for k, v in w.items() if k in ("length", "width"))
+    foot_g = sorted(v for k, v in g.items() if k in ("length", "width"))
+    if foot_w and foot_w != foot_g[: len(foot_w)] and foot_w != foot_g[-len(foot_w) :]:
+        return False
+    return all(g.get(k) == v for k, v in w.items() if k not in ("length", "width"))

@@ -37,7 +37,7 @@ MODIFY = [
     _op(r"\b(?:add|put|stack|place)\s+" + _N + _UNIT + r"\s+(?:to|on|onto)\s+" + _REF + r"\b", "+"),
     _op(
         r"\badd\s+(?:a|one|another)\s+(?:second|third|fourth|fifth|new|further|extra|more)?"
-        r"\s*(?:layer|level|tier|storey|course)\b",
+        r"\s*(?:(?:identical|same|matching|similar|equal)\s+)?(?:layer|level|tier|storey|course)\b",
         "+1",
     ),
     _op(

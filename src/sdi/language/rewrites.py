@@ -14,7 +14,7 @@ from sdi.language.handlers import HANDLERS
 from sdi.language.normalise import SPACES
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import NUMBER_WORDS
+from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
 
 _OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front",
              "middle": "left", "centre": "left", "center": "left"}  # fmt: skip
@@ -330,7 +330,7 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\b(one|1)\s+(?:lonely\s+|lone\s+|little\s+|small\s+|extra\s+)?(?:cube|brick)\s+"
+            r"\b(one|1)\s+(?:lonely\s+|lone\s+|little\s+|small\s+|extra\s+)?(?:cube|brick|block)\s+"
             r"(?=(?:on|at|in|inside|near|beside|by|into)\s+(?:the|each|every|both|its|their|a|top)\b|"
             r"(?:sitting|standing|resting)\b)",
             re.IGNORECASE,
@@ -1974,9 +1974,16 @@ _CLOSED_WALL = re.compile(
 _LIKE_A = re.compile(
     r"(?:,\s*|\s+)\b(?:just\s+|sort\s+of\s+|a\s+bit\s+)?(?:like|resembling|similar\s+to|"
     r"looking\s+like|in\s+the\s+style\s+of|(?:it\s+|that\s+|so\s+(?:it|that\s+it)\s+)?"
-    r"(?:should|will|would|ought\s+to)\s+(?:come\s+out|end\s+up|turn\s+out|look)\s+(?:as|like))"
+    r"(?:should|will|would|ought\s+to)\s+(?:come\s+out|end\s+up|turn\s+out|look)\s+(?:as|like)|"
+    r"(?:expected|end|final)(?:\s+(?:result|outcome|shape))?\s*(?:should\s+be|will\s+be|is)?\s*:|"
+    r"(?:the\s+)?(?:result|outcome)\s*(?:should\s+be|will\s+be|is)?\s*:)"
     r"\s+(?:a|an)\s+[^,.;:!?]*",
     re.IGNORECASE,
+)
+
+
+_RESULT = re.compile(
+    r"\b(?:come\s+out|end\s+up|turn\s+out|expected|result|outcome|final|end)\b", re.IGNORECASE
 )
 
 
@@ -2010,13 +2017,45 @@ def _described_again(text: str, st: ReadState) -> str:
             return m.group(0)  # "I'd like a pyramid": the verb
         if not any(w in lx.SHAPE_WORDS for w in before):
             return m.group(0)  # "something like a park bench": the likeness is all there is
-        st.notes.append(f"read '{m.group(0).strip(' ,')}' as a description, not a structure")
+        said = m.group(0).strip(" ,")
+        if _RESULT.search(said):  # "Expected result: a 2 x 3 x 2 block": checked at the end
+            st.claims.append(("result", said))
+        else:
+            st.notes.append(f"read '{said}' as a description, not a structure")
         return " "
 
     return _LIKE_A.sub(likeness, text)
 
 
+_LEVEL_LABEL = re.compile(
+    r"(?:^|(?<=[.;,!\n]))\s*(?:level|layer|tier|floor|storey|story|lvl)\s*"
+    r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*[:=)-]\s*",
+    re.IGNORECASE,
+)
+
+
+def _level_labels(text: str, st: ReadState) -> str:
+    """ "level 1: 4x4 floor. level 2: 3x3 on top. level 3: 2x2.": each level labelled after
+    the first stands on the one before it."""
+    labels = list(_LEVEL_LABEL.finditer(text))
+    numbers = [int(words_to_numbers([m.group(1).lower()])[0]) for m in labels]
+    if len(labels) < 2 or numbers != list(range(numbers[0], numbers[0] + len(numbers))):
+        return text
+    out = [text[: labels[0].start()]]
+    for i, m in enumerate(labels):
+        end = labels[i + 1].start() if i + 1 < len(labels) else len(text)
+        segment = text[m.end() : end].strip()
+        said = re.match(r"[^.;!?]*", segment).group(0).rstrip(" ,")  # type: ignore[union-attr]
+        rest = segment[len(said) :].lstrip(".;!? ")
+        if i and not re.search(r"\bon\s+(?:top|it|that)\b", said, re.IGNORECASE):
+            said += " on top"
+        out.append(f" then {said}. {rest}" if i else f" {said}. {rest}")
+    st.notes.append("read the levels labelled in order as each on top of the one before")
+    return "".join(out)
+
+
 def rewrite(text: str, st: ReadState) -> str:
+    text = _level_labels(text, st)
     text = _described_again(text, st)
     text = _floors_as_levels(text, st)
     text = _count_of_plural(text, st)
