@@ -2333,3 +2333,31 @@ def test_an_expected_result_is_checked_against_the_reading():
     assert any("holds" in n and "Expected result" in n for n in ok.notes)
     bad = plan("a 2x3 slab, then add a second identical layer. Expected result: a 2 x 3 x 3 block.")
     assert bad.status == "partial" and "Expected result" in (bad.error or "")
+
+
+def test_a_change_said_on_its_own_halves_or_doubles_the_size_before():
+    assert [s.height for s in read("tower of 8. too much, half of that.").spec.structures] == [4]
+    assert [s.height for s in read("a tower of 3. no, double it").spec.structures] == [6]
+    # said of another structure, it is a comparison, not a change
+    two = read("Two towers, one 3 high and the other one twice that.").spec.structures
+    assert 3 in [s.height for s in two]
+    # a clause of such words left unused is never chatter
+    assert plan("a tower of 3. half as much again, roughly").status == "partial"
+
+
+def test_rows_counted_per_row_or_by_columns_make_one_floor():
+    for said in ("Grid of 4 rows, 3 cubes per row, one layer", "a grid of 4 rows of 3",
+                 "a grid with 4 rows and 3 columns"):  # fmt: skip
+        (g,) = read(said).spec.structures
+        assert (g.shape, g.length, g.width) == ("grid", 3, 4), said
+    w = read("a wall of 2 rows with 7 in each").spec.structures
+    assert [(s.shape, s.length, s.height) for s in w] == [("wall", 7, 2)]
+    (fewer,) = read("Grid of 4 rows, 3 cubes per row. Then remove the last row.").spec.structures
+    assert (fewer.length, fewer.width) == (3, 3)
+    top = read("spawn a 2x2 block 3 high. then break the top layer lol").spec.structures
+    assert [s.height for s in top] == [2]
+
+
+def test_a_removal_sdi_cannot_make_is_reported_not_read_as_a_pointer():
+    r = plan("a 3x3 pyramid. then remove the first one")
+    assert r.status == "partial" and "remove the first one" in (r.error or "")

@@ -24,6 +24,7 @@ if TYPE_CHECKING:
 _USABLE = (
     set(lx.SHAPE_WORDS) | set(lx.SIZE_WORDS) | set(lx.DIMENSION_WORDS) | set(lx.REGION_WORDS)
     | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | BEAMS
+    | words.SIGNIFICANT  # "too much, half of that": a change of a size, never chatter
 ) - lx.AMBIGUOUS_SHAPES - {"well", "item", "items", "object", "objects", "unit"}  # fmt: skip
 
 

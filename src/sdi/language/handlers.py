@@ -654,9 +654,14 @@ def _rows(m: re.Match[str], st: ReadState, note: str) -> str:
 
 
 def _rows_of(m: re.Match[str], st: ReadState, note: str) -> str:
-    groups = _said(m)[1]
+    """ "2 rows with 7 in each", "4 rows, 3 cubes per row", "4 rows and 3 columns": 4 rows of
+    3 (a wall's rows are its courses)."""
+    groups = [g for g in _said(m)[1] if g]
     walls = re.search(r"\b(?:wall|walls|fence)\b", m.string[: m.start()], re.IGNORECASE)
-    return f" {groups[0]} {'levels' if walls else 'rows'} of {groups[1]} "
+    said = f" {groups[0]} {'levels' if walls else 'rows'} of {groups[1]} "
+    if not re.search(r"\b(?:in\s+each|each|apiece)\s*$", m.group(0), re.IGNORECASE):
+        st.notes.append(f"read '{m.group(0).strip()}' as{said.rstrip()}")
+    return said
 
 
 def _layers(m: re.Match[str], st: ReadState, note: str) -> str:

@@ -27,6 +27,15 @@ _UNIT = (
 _REF = r"(?:it|them|the\s+\w+(?:\s+one)?)"
 
 
+# a change said on its own ("too much, half of that", "no, double it"), not a comparison that
+# sizes another structure ("and the other one twice that", "one double that height")
+_CHANGE_LEAD = (
+    r"(?:^\W*|\btoo\s+(?:much|many|tall|high|big|small|short|low|little)\W+|"
+    r"\bmake\s+(?:it|them)\s+|^\W*no\W+)"
+)
+_NO_NOUN = r"(?!\s+(?:height|size|length|width|tall|high|long|wide|big|many|much))"
+
+
 def _op(pattern: str, op: str) -> tuple[re.Pattern[str], str]:
     return re.compile(pattern, re.IGNORECASE), op
 
@@ -78,6 +87,14 @@ MODIFY = [
         r"\b(?:take|knock|lift)\s+off\s+(?:its|the)\s+top\s+(?:row|level|layer|course|tier)\b", "-1"
     ),
     _op(r"\b(?:cut|chop)\s+(?:it|them)\s+in\s+(half)\b|\bhalve\s+(?:it|them)\b", "/"),
+    # "tower of 8. too much, half of that.": the size said before, halved or doubled
+    _op(
+        _CHANGE_LEAD
+        + r"(?:(half)\s+(?:of\s+)?(?:that|it|this)|halve\s+(?:that|this))\b"
+        + _NO_NOUN,
+        "/",
+    ),
+    _op(_CHANGE_LEAD + r"(double|twice)\s+(?:that|it|this)\b" + _NO_NOUN, "*"),
     _op(
         r"\bmake\s+(?:it|them|the\s+\w+)\s+"
         + _N
@@ -102,7 +119,8 @@ MODIFY = [
         "-1",
     ),
     _op(
-        r"\b(?:take\s+away|take\s+off|remove|knock\s+off|leave\s+off|drop)\s+the\s+(?:very\s+)?"
+        r"\b(?:take\s+away|take\s+off|remove|knock\s+off|leave\s+off|drop|break(?:\s+off)?|"
+        r"knock\s+down|smash|destroy|delete|pull\s+off|mine)\s+the\s+(?:very\s+)?"
         r"(?:highest|top|topmost|uppermost|last)\s+(?:step|stair|level|layer|course|tier|row)\b",
         "-1",
     ),
@@ -360,7 +378,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     else:
         word = re.sub(r"\s+", " ", (m.group(1) or ("2" if op == "/" else "1")).lower())
         word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
-                "triple": "3", "half": "2"}.get(word, word)  # fmt: skip
+                "triple": "3", "half": "2", "twice": "2"}.get(word, word)  # fmt: skip
         value = words_to_numbers([word])[0]
         if not value.isdigit():
             return None
@@ -382,6 +400,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         )
     ):
         return None  # "stack 2 more on the middle one": a column on it, not a layer more
+    if last.shape == "grid" and op == "-" and re.search(r"\brow\b", m.group(0), re.I):
+        key = "width"  # "4 rows of 3. Then remove the last row.": one row fewer
     key = key or ("steps" if last.shape == "staircase" else "height")
     now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
     if op == "/" and now % n:

@@ -516,6 +516,36 @@ _REWRITES += [
         ", stacked ",
         "",
     ),
+    # "4 rows, 3 cubes per row", "4 rows and 3 columns": rows of that many
+    (
+        re.compile(
+            r"\b(\d+|"
+            + _NUMBER_WORD
+            + r")\s+rows?\s*,?\s*(?:with\s+|of\s+)?(\d+|"
+            + _NUMBER_WORD
+            + r")\s+(?:cubes?|blocks?|parts?|bricks?)\s+"
+            r"(?:per|in\s+each|each|a|in\s+every|for\s+each)\s+row\b|\b(\d+|"
+            + _NUMBER_WORD
+            + r")\s+rows?\s+(?:and|by|x|with)\s+(\d+|"
+            + _NUMBER_WORD
+            + r")\s+columns?\b",
+            re.IGNORECASE,
+        ),
+        "{rows_of}",
+        "",
+    ),
+    # "a grid of 4 rows of 3", "a slab with 2 rows of 5": the rows are the floor, not a second
+    (
+        re.compile(
+            r"\b(?:a\s+|an\s+|one\s+|the\s+)?(?:grid|slab|pad|floor|platform|layer|mat|patch|"
+            r"rectangle)\s+(?:of|with|made\s+(?:of|from)|in|having)\s+(?=(?:\d+|"
+            + _NUMBER_WORD
+            + r")\s+rows?\s+of\b)",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
     # "2 cubes deep (away from the robot)", "5 wide, left to right": a gloss that says what
     # depth or width is already means it; it does not turn the structure
     (

@@ -63,9 +63,11 @@ def fill_slots(
             if q.clause < p.clause and q.count
             for i in range(q.first, q.first + q.count)
         ]
-        if _DROPS.search(p.text) and modify(p, phrases[:k], structures, st):
+        dropping = _DROPS.search(p.text)
+        if dropping and modify(p, phrases[:k], structures, st):
             continue  # "then remove the tallest one": a change, not a reference to it
-        pick = pick_structure(p.text, structures, earlier)
+        # a removal SDI could not make is reported below, never read as a pointer to one
+        pick = None if dropping else pick_structure(p.text, structures, earlier)
         if pick is not None and structures:
             p.structure = pick
             p.ref = next(
