@@ -2361,3 +2361,48 @@ def test_rows_counted_per_row_or_by_columns_make_one_floor():
 def test_a_removal_sdi_cannot_make_is_reported_not_read_as_a_pointer():
     r = plan("a 3x3 pyramid. then remove the first one")
     assert r.status == "partial" and "remove the first one" in (r.error or "")
+
+
+def test_a_staircase_kept_from_one_way_climbs_another():
+    s = read("build stairs, 4 steps, but dont make them go towards me, make them go up to the "
+             "right").spec.structures[0]  # fmt: skip
+    assert (s.axis, s.yaw_deg, s.steps) == ("y", 180.0, 4)  # as "going up to the right"
+    assert (s.axis, s.yaw_deg) == tuple(
+        getattr(read("a staircase of 4 steps going up to the right").spec.structures[0], k)
+        for k in ("axis", "yaw_deg")
+    )
+    t = read("stairs of 3, not going towards me")
+    assert t.spec.structures[0].axis == "x" and any("climbing towards the back" in n
+                                                     for n in t.notes)  # fmt: skip
+
+
+def test_a_place_glossed_in_brackets_is_the_place_meant():
+    r = read("make a 5 block tower but don't put it on the spawn point (the middle)")
+    assert r.spec.structures[0].region not in (None, "centre")
+    assert read("a tower by the loading side (i.e. the front)").spec.structures[0].region == (
+        "front"
+    )
+
+
+def test_same_again_but_copies_with_the_change():
+    s = read("Put a 2x2 slab, one layer, front left. Same again but back right, and 2 layers.")
+    _, b = s.spec.structures
+    assert (b.length, b.width, b.height, b.region) == (2, 2, 2, "back right")
+    w = read("a wall 4 long and 2 high, then another one but 3 high").spec.structures
+    assert [(x.length, x.height) for x in w] == [(4, 2), (4, 3)]
+    assert [x.height for x in read("a tower of 3 and another tower of 5").spec.structures] == [
+        3,
+        5,
+    ]
+
+
+def test_on_top_of_all_and_a_walled_area():
+    s = read("a line of 5. then a line of 3 on it. at the end one cube on the top of all.").spec
+    assert [(r.subject, r.object) for r in s.relations] == [(1, 0), (2, 1)]
+    assert read("a walled area, 5 by 5").spec.structures[0].shape == "enclosure"
+    assert read("an arena 6 by 6").spec.structures[0].shape == "enclosure"
+
+
+def test_a_word_of_a_contraction_is_no_typo():
+    r = read("two towers of 2 that aren't touching each other")
+    assert not any("arena" in n for n in r.notes) and r.complete

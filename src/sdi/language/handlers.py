@@ -671,6 +671,25 @@ def _layers(m: re.Match[str], st: ReadState, note: str) -> str:
     return f"{layers}-layer"
 
 
+def _not_climb(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "stairs that do not go up towards the back": they climb the other way; "don't make
+    them go towards me, make them go up to the right": the way said after it."""
+    said, groups = _said(m)
+    side = groups[0] or "front"  # "towards me", "to the robot": the robot's side
+    later = re.search(
+        r"\b(?:go(?:es|ing)?\s+up|climb\w*|ris\w*|ascend\w*)\s+(?:to(?:wards?)?|toward)\s+"
+        r"(?:the\s+)?(left|right|front|back)\b",
+        m.string[m.end() :],
+        re.IGNORECASE,
+    )
+    if later and later.group(1).lower() != side:
+        st.notes.append(f"'{said}': holds, it climbs towards the {later.group(1).lower()}")
+        return " , "
+    opposite = {"left": "right", "right": "left", "front": "back", "back": "front"}[side]
+    st.notes.append(f"read '{said}' as climbing towards the {opposite}")
+    return f" climbing towards the {opposite} "
+
+
 # Rewrites whose replacement is computed: the `_REWRITES` entry names one of these.
 HANDLERS: dict[str, Handler] = {
     "{split}": lambda m, st, note: _split(m, st),
@@ -713,6 +732,7 @@ HANDLERS: dict[str, Handler] = {
     "{delegated}": _delegated,
     "{below}": _below,
     "{within}": _within,
+    "{not_climb}": _not_climb,
     "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,

@@ -54,6 +54,16 @@ _REFERENCE_NO = re.compile(
 )
 
 
+# a name of a place glossed in brackets with a place the cell knows: "the spawn point (the
+# middle)", "the loading side (i.e. the front)"
+_PLACE_GLOSS = re.compile(
+    r"\bthe\s+(?:[a-z-]+\s+){1,3}?\(\s*(?:i\.?e\.?,?\s+|aka\s+|=\s*)?"
+    r"(the\s+(?:middle|centre|center|left|right|front|back)(?:\s+(?:left|right))?"
+    r"(?:\s+(?:side|edge|corner|half))?)\s*\)",
+    re.IGNORECASE,
+)
+
+
 _METRE_WORDS = [
     (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
@@ -460,6 +470,12 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f" {said} "
 
     text = _LABELLED.sub(labelled, text)  # "250mm x 100mm (L x H)": the label says which
+
+    def glossed(m: re.Match[str]) -> str:
+        notes.append(f"read '{m.group(0).strip()}' as {m.group(1)}")
+        return f" {m.group(1)} "
+
+    text = _PLACE_GLOSS.sub(glossed, text)  # "the spawn point (the middle)": the place meant
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
     # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before
     text = re.sub(

@@ -24,16 +24,24 @@ def copies(
         return spec
     out = list(spec.structures)
     for k, s in enumerate(out):
-        if s.model_dump(include=set(_SIZES), exclude_defaults=True):
-            continue
+        said = s.model_dump(include=set(_SIZES), exclude_defaults=True)
         pool = [*(earlier or []), *out[:k]]
         first = next((o for o in reversed(pool) if o.shape == s.shape), None)
-        if k == 0 and first is None:
+        if first is None or (said and not _BUT.search(text)):
             continue
-        if first is not None:
-            out[k] = s.model_copy(update=first.model_dump(include=set(_SIZES)))
+        # "same again but back right, and 2 layers": the first's sizes, what is said instead
+        out[k] = s.model_copy(update={**first.model_dump(include=set(_SIZES)), **said})
+        if said:
+            changed = ", ".join(f"{key} {v}" for key, v in said.items())
+            st.notes.append(f"another {s.shape}: the same size as the first but {changed}")
+        else:
             st.notes.append(f"another {s.shape}: the same size as the first")
     return spec.model_copy(update={"structures": tuple(out)})
+
+
+_BUT = re.compile(r"\b(?:but|except|only|instead)\b", re.IGNORECASE)
+"""'another one but 2 high': a copy with a size changed (without it, a size said is the copy's
+own: 'another tower of 5')."""
 
 
 def definite(

@@ -71,8 +71,8 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     (  # "do not put it anywhere near the front edge": at the other side
         re.compile(
             r"\b(?:do\s+not|never)\s+(?:put|place|build|set|stand)\s+(?:it|them|anything)\s+"
-            r"(?:anywhere\s+)?(?:near|close\s+to|next\s+to|by|at|on|in)\s+the\s+(left|right|front|back)"
-            r"(?:\s+(?:edge|side|half|part|end))?\b",
+            r"(?:anywhere\s+)?(?:near|close\s+to|next\s+to|by|at|on|in)\s+the\s+"
+            r"(left|right|front|back|middle|centre|center)(?:\s+(?:edge|side|half|part|end))?\b",
             re.IGNORECASE,
         ),
         " on the {opposite} ",
@@ -268,19 +268,23 @@ _REWRITES += [
         " {0} {1}{2} on the left and another {1}{2} on the right ",
         "",
     ),
-    # "a staircase that does not go up towards the back": it climbs the other way
+    # "a staircase that does not go up towards the back", "do not make them go towards me": it
+    # climbs the other way (or the way said elsewhere)
     (
         re.compile(
-            r"\b(?:that\s+|which\s+|and\s+)?(?:they\s+|it\s+)?(?:does|do|must|should|may|shall)\s+not\s+"
-            r"(?:go\s+up|climb|rise|ascend|lead\s+up)\s+(?:towards?|to)\s+the\s+(back|front|left|right)\b",
+            r",?\s*\b(?:but\s+)?(?:that\s+|which\s+|and\s+)?(?:they\s+|it\s+)?(?:(?:does|do|must|"
+            r"should|may|shall)\s+not|not|never)\s+(?:make\s+(?:it|them)\s+)?(?:go(?:ing)?\s+up|"
+            r"going|climbing|rising|go|climb|rise|ascend|lead\s+up)"
+            r"\s+(?:towards?|to)\s+(?:the\s+(back|front|left|right)|(me|us|the\s+robot))\b",
             re.IGNORECASE,
         ),
-        " climbing towards the {opposite} ",
-        "read '{0}' as climbing towards the {opposite}",
+        "{not_climb}",
+        "",
     ),
     (
         re.compile(
             r",?\s*\b(?:(?:climbing|rising|ascending|going|stepping)\s+up|climbing|rising|"
+            r"(?:make\s+(?:it|them)\s+)?(?:go|goes)\s+up|"
             r"ascending|(?:it\s+|they\s+)?(?:to\s+)?(?:climbs?|rises?|ascends?))\s+"
             r"(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+|my\s+|your\s+|our\s+)?"
             r"(left|right|front|back)\b|,?\s*\bup\s+to(?:wards)?\s+the\s+(left|right|front|back)\s+"
@@ -566,6 +570,24 @@ _REWRITES += [
         ),
         " {0} ",
         "",
+    ),
+    (  # "one cube on the top of all": on top of the last, the highest
+        re.compile(
+            r"\bon\s+(?:the\s+)?(?:very\s+)?top\s+of\s+(?:all|everything|it\s+all|all\s+of\s+it|"
+            r"the\s+whole\s+thing|the\s+lot|all\s+that|them\s+all|all\s+of\s+them)\b",
+            re.IGNORECASE,
+        ),
+        " on top ",
+        "",
+    ),
+    (  # "a walled area", "a fenced yard": a ring
+        re.compile(
+            r"\b(?:walled|fenced)(?:[\s-]+in)?\s+(?:area|space|yard|court|garden|square|"
+            r"plot|zone|region)\b",
+            re.IGNORECASE,
+        ),
+        " enclosure ",
+        "read '{0}' as an enclosure",
     ),
     (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),
     (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
@@ -1862,7 +1884,9 @@ _EVERY_SIDE = re.compile(
     r"(?:every|each|all|a)\s+(?:sides?|edges?)\b",
     re.IGNORECASE,
 )
-_SAME_AGAIN = re.compile(r"\bthe\s+same\s+(?:again|once\s+more|one\s+again)\b", re.I)
+_SAME_AGAIN = re.compile(
+    r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?", re.I
+)
 _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
     r"((?:\s+(?:of|with)\s+[\w\s-]+?)?)\s*[:,]\s*(one\s+[^.;]*)",
@@ -2092,7 +2116,10 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _counted_singular(text, st)
     text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)
     text = _ONE_OF.sub(r"\1another one \2 ", text)
-    text = _SAME_AGAIN.sub(" another one ", text)
+    text = _SAME_AGAIN.sub(
+        lambda m: " another one but " if m.group(0).rstrip().endswith("but") else " another one ",
+        text,
+    )
     text = _EVERY_SIDE.sub(lambda m: HANDLERS["{every_side}"](m, st, ""), text)
     tall = _TALL_NOUN.search(text)
     if tall and not re.search(r"\d|\b(?:" + "|".join(lx.SIZE_WORDS) + r")\b", text, re.I):

@@ -89,8 +89,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     def fix(m: re.Match[str]) -> str:
         raw = m.group(0)
         w = raw.lower()
-        if len(w) < 3 or w in _KNOWN:
-            return raw
+        if len(w) < 3 or w in _KNOWN or m.string[m.end() : m.end() + 1] in ("'", "’"):
+            return raw  # "aren't", "couldn't": a word of a contraction, not a typo
         if len(w) == 3:  # three letters: only a swap of two neighbours ("teh")
             swaps = {w[:i] + w[i + 1] + w[i] + w[i + 2 :] for i in range(2)}
             hit = sorted(swaps & _TARGETS)

@@ -259,6 +259,8 @@ _add(
 _add(
     "enclosure",
     "enclosure",
+    "arena",
+    "arenas",
     "corral",
     "paddock",
     "enclosures",
