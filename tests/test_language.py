@@ -2406,3 +2406,34 @@ def test_on_top_of_all_and_a_walled_area():
 def test_a_word_of_a_contraction_is_no_typo():
     r = read("two towers of 2 that aren't touching each other")
     assert not any("arena" in n for n in r.notes) and r.complete
+
+
+def test_size_words_before_their_numbers_after_a_family_name():
+    w = read("Make one wall long 7 and high 2.").spec.structures[0]
+    assert (w.shape, w.length, w.height) == ("wall", 7, 2)
+    b = read("A block large 3, long 4, high 2.").spec.structures[0]
+    assert (b.length, b.width, b.height) == (4, 3, 2)
+
+
+def test_misspelt_units_and_changes_in_units_or_without_a_noun():
+    assert read("make a 6 inhc tower").spec.structures[0].height_m == pytest.approx(0.1524)
+    s = read("Stack it up to 10 inches, then pull the top 2 inches off.").spec.structures[0]
+    assert (s.height, s.height_m) == (4, None)
+    t = read("tower of 6 please. hmm too tall, take off 2. actually take off one more.")
+    assert [x.height for x in t.spec.structures] == [3]
+    r = read("row of 7. no make it 3 less.").spec.structures[0]
+    assert (r.shape, r.length) == ("row", 4)
+    # more than a change: reported, not half done
+    assert plan("tower of 7, then pull the top 3 cubes off and set them down as a separate "
+                "tower next to it").status == "partial"  # fmt: skip
+
+
+def test_two_rows_next_to_each_other_stand_alongside():
+    r = plan("row of 4. and another row like that next to it, touching.")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 8
+    assert (hi[:, 0].max() - lo[:, 0].min(), hi[:, 1].max() - lo[:, 1].min()) == (
+        pytest.approx(0.10, abs=0.01),
+        pytest.approx(0.20, abs=0.01),
+    )

@@ -352,11 +352,13 @@ def _beside(
     base: _Placed, sub: _Placed, side: str | None, cell: CellConfig, gap: float | None = None
 ) -> _Placed:
     """`sub` `gap` (else one structure gap) from `base` on `side`; with no side, to the left
-    if the pair fits across the workspace that way, else behind."""
+    if the pair fits across the workspace that way, else behind — but two long structures
+    running left to right (rows, walls) stand alongside, one behind the other."""
     ws = cell.workspace
     extent = np.array([ws.x_max - ws.x_min, ws.y_max - ws.y_min])
     gap = cell.design.structure_gap if gap is None else gap
-    for name in [side] if side else ["left", "back"]:
+    along_y = all(p.half[1] >= 2 * p.half[0] for p in (base, sub))
+    for name in [side] if side else (["back", "left"] if along_y else ["left", "back"]):
         d, sign = _SIDES[name]
         dxy = np.zeros(2)
         dxy[d] = sign * (base.half[d] + sub.half[d] + gap)

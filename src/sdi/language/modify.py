@@ -82,7 +82,18 @@ MODIFY = [
     _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
     _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
     _op(r"\b(double|triple)\s+(?:it|them)\s+in\s+height\b", "*"),
-    _op(r"\b(?:take|knock|lift)\s+(?:away|off)\s+" + _N + r"\s+(?:cubes?|levels?|layers?)\b", "-"),
+    _op(
+        r"\b(?:take|knock|lift|pull)\s+(?:away|off)\s+"
+        + _N
+        + r"(?:\s+(?:more\s+)?(?:cubes?|levels?|layers?)\b|(?:\s+more)?(?=\s*(?:[,.;!?]|$)))",
+        "-",
+    ),
+    # "row of 7. no make it 3 less", "make it two shorter": that many fewer
+    _op(
+        r"\bmake\s+(?:it|them)\s+" + _N + r"\s+(?:cubes?\s+|levels?\s+)?(?:less|fewer|shorter|"
+        r"lower|smaller)\b",
+        "-main",
+    ),
     _op(
         r"\b(?:take|knock|lift)\s+off\s+(?:its|the)\s+top\s+(?:row|level|layer|course|tier)\b", "-1"
     ),
@@ -108,9 +119,9 @@ MODIFY = [
         "-",
     ),
     _op(
-        r"\b(?:take|knock|lift)\s+(?:off\s+)?(?:the\s+)?top\s+"
+        r"\b(?:take|knock|lift|pull)\s+(?:off\s+)?(?:the\s+)?top\s+"
         + _N
-        + r"?\s*(?:cubes?\s+|levels?\s+)?off\b",
+        + r"?\s*(?:cubes?\s+|levels?\s+|(?:mm|cm|m)\s+)?off\b",
         "-",
     ),
     _op(
@@ -183,8 +194,14 @@ def modify(
         if not m:
             continue
         m = _in_parts(pattern, m, st)
-        change = _CHANGES.get(op, _resize)
-        note = change(m, op, p, before, built, structures)
+        if _NAMES_MORE.search(p.text[m.end() :]):
+            return False  # "pull the top 3 off and set them down as a tower": more than a change
+        change = _CHANGES.get(op)
+        note = (
+            change(m, op, p, before, built, structures)
+            if change is not None
+            else _resize(m, op, p, before, built, structures, st.cell.cube[2])
+        )
         if note is None:
             return False
         st.notes.append(f"'{m.group(0).strip()}': {note}")
@@ -192,6 +209,15 @@ def modify(
         p.modified = True  # the phrase is a change of that structure, not one of its own
         return True
     return False
+
+
+_NAMES_MORE = re.compile(
+    r"\b(?:" + "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()
+                                and w not in lx.AMBIGUOUS_SHAPES | {"table", "tables"}),
+                               key=len, reverse=True))
+    + r")\b",
+    re.IGNORECASE,
+)  # fmt: skip
 
 
 def _in_parts(pattern: re.Pattern[str], m: re.Match[str], st: ReadState) -> re.Match[str]:
@@ -365,12 +391,13 @@ def _undo(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
 
 
 def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
-            structures: list[StructureDraft]) -> str | None:  # fmt: skip
+            structures: list[StructureDraft], part_m: float) -> str | None:  # fmt: skip
     """ "add two more cubes", "make it 4", "halve it": a size of a structure named before
-    (the last, or the one an ordinal picks)."""
+    (the last, or the one an ordinal picks); a size said in metres counts in parts of
+    `part_m`."""
     key = None
-    if op == "=main":  # "make it 4": the size the structure was given, or its main one
-        key, op = _main_slot(structures[_last_index(built)]), "="
+    if op.endswith("main"):  # "make it 4", "make it 3 less": the size it was given, or its main
+        key, op = _main_slot(structures[_last_index(built)]), op[0]
         if key is None:
             return None
     if op in ("+1", "-1"):
@@ -403,7 +430,9 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     if last.shape == "grid" and op == "-" and re.search(r"\brow\b", m.group(0), re.I):
         key = "width"  # "4 rows of 3. Then remove the last row.": one row fewer
     key = key or ("steps" if last.shape == "staircase" else "height")
-    now = getattr(last, key) or (1 if last.shape in ("grid", "row", "enclosure") else 3)
+    metres = getattr(last, f"{key}_m", None)  # "stack it up to 10 inches": in whole parts
+    said = getattr(last, key) or (round(metres / part_m) if metres else None)
+    now = said or (1 if last.shape in ("grid", "row", "enclosure") else 3)
     if op == "/" and now % n:
         return None
     new = {"+": now + n, "-": now - n, "=": n, "*": now * n, "/": now // n}[op]
@@ -412,8 +441,11 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     shape = last.shape
     if key == "height" and new > 1 and shape in ("grid", "row"):
         shape = "block" if shape == "grid" else "wall"
-    structures[index] = last.model_copy(update={key: new, "shape": shape})
-    was = f" (was {now})" if getattr(last, key) else ""
+    update: dict[str, object] = {key: new, "shape": shape}
+    if metres:
+        update[f"{key}_m"] = None
+    structures[index] = last.model_copy(update=update)
+    was = f" (was {now})" if said else ""
     return f"the {last.shape} now has {key} {new}{was}"
 
 

@@ -363,12 +363,17 @@ def _expand_noted(pairs: list[tuple[re.Pattern[str], str]], text: str, notes: li
 
 
 # "side 20 cm, thick 10 cm", "high 3": the dimension word said before its value, as a list item
+_FAMILY_SAID = "|".join(
+    sorted((w for w in lx.SHAPE_WORDS if w.isalpha() and len(w) > 2), key=len, reverse=True)
+)
+# "wall, long 6, high 2", "a wall long 7 and high 2", "a block large 3": the size word first
 _DIM_FIRST = re.compile(
-    r"(^|[,;:]\s*|\band\s+)(thick|high|tall|long|wide|deep)\s+(\d+(?:\.\d+)?\s*"
-    + _UNIT_SAID
-    + r"?)(?=\s*(?:$|[,;.]|\band\b))",
+    r"(^|[,;:]\s*|\band\s+|\b(?:" + _FAMILY_SAID + r")\s+)(thick|high|tall|long|wide|deep|large|"
+    r"broad)\s+(\d+(?:\.\d+)?\s*" + _UNIT_SAID + r"?)(?=\s*(?:$|[,;.]|\band\b))",
     re.IGNORECASE,
 )
+
+_LARGE = {"large": "wide", "broad": "wide"}  # "a block large 3": as wide
 
 _NUM_WORD = r"(?:\d+|two|three|four|five|six|seven|eight|nine|ten)"
 _N_ON_M = re.compile(
@@ -610,7 +615,10 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _DOUBLE_OF.sub(times, text)
     text = _NAMED_DIM.sub(_dimensioned, text)
     text = _LETTER_DIM.sub(_dimensioned, text)
-    text = _DIM_FIRST.sub(lambda m: f"{m.group(1)}{m.group(3).strip()} {m.group(2)} ", text)
+    text = _DIM_FIRST.sub(
+        lambda m: f"{m.group(1)}{m.group(3).strip()} {_LARGE.get(m.group(2).lower(), m.group(2))} ",
+        text,
+    )
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
 
     def plus(m: re.Match[str]) -> str:

@@ -1667,6 +1667,7 @@ _ARTICLES = frozenset({"a", "an", "another", "the", "it", "them", "one", "two", 
 
 
 _ONE_MORE = re.compile(
+    r"(?<!\boff\s)(?<!\baway\s)"  # "take off one more": a change, not another structure
     r"\b(?:and\s+|then\s+|plus\s+)?(?:just\s+)?one\s+more\b(?!\s+(?:cube|block|brick|part|level|"
     r"layer|step|row|course|tier|time|on|of)\w*)",
     re.IGNORECASE,

@@ -32,7 +32,8 @@ _KNOWN = frozenset(words.VOCABULARY)
 # "thn anothr one") though they are not content of their own (left unused, they are no loss).
 _FUNCTION = {"side", "sides", "then", "another", "other", "each", "every", "edge", "edges", "top",
              "bottom", "middle", "centre", "center", "after", "first", "second", "third", "last",
-             "across", "along", "same", "space", "gap", "level", "layer"}  # fmt: skip
+             "across", "along", "same", "space", "gap", "level", "layer", "inch", "inches",
+             "foot", "feet", "wait", "sorry"}  # fmt: skip
 _TARGETS = words.CORRECTABLE | _FUNCTION  # what a word may be corrected to
 _CHOICES = sorted(_TARGETS)
 
