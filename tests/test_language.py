@@ -2437,3 +2437,50 @@ def test_two_rows_next_to_each_other_stand_alongside():
         pytest.approx(0.10, abs=0.01),
         pytest.approx(0.20, abs=0.01),
     )
+
+
+def test_tetris_pieces_are_the_families_that_build_them():
+    cases = {
+        "build a tetris L-piece out of cubes": ("l_shape", 4),
+        "make me a tetirs T-peice": ("t_shape", 4),
+        "make a tetris piece, any one": ("l_shape", 4),
+        "a row of 4 standing on end": ("tower", 4),
+    }
+    for said, (shape, parts) in cases.items():
+        r = plan(said)
+        assert r.status == "success" and len(r.layout.objects) == parts, (said, r.notes)
+        assert [s.shape for s in r.spec.structures] == [shape], said
+    two = read("stand two I-pieces on end, one on top of the other").spec
+    assert [s.height for s in two.structures] == [4, 4] and len(two.relations) == 1
+    assert plan("an S-piece").status == "error"  # no family builds it: said, not guessed
+
+
+def test_each_one_the_cells_own_part_size_and_inch_coordinates():
+    s = read("Three stacks, each one 4 inches high.").spec.structures
+    assert len(s) == 3 and read("Three stacks, each one 4 inches high.").complete
+    assert [x.height for x in read("stack half a dozen of the 2-inch blocks").spec.structures] == [
+        6
+    ]
+    t = read("Put a 3-high stack at x = 18 in, y = 12 in.").spec.structures[0]
+    assert (t.at_x, t.at_y) == (pytest.approx(0.4572), pytest.approx(0.3048))
+
+
+def test_a_comparison_with_that_and_one_of_n_after_a_singular():
+    assert [s.height for s in read("Two towers, one 3 high and the other one twice that.")
+            .spec.structures] == [3, 6]  # fmt: skip
+    assert [s.height for s in read("One tower of six cubes and one of four").spec.structures] == [
+        6,
+        4,
+    ]
+    # after a plural, "one of 3 and one of 5" names the ones counted
+    assert [s.height for s in read("two towers, one of 3 and one of 5").spec.structures] == [3, 5]
+
+
+def test_a_gap_said_of_two_structures_side_by_side_or_between_them():
+    assert read("Two inches between them, the two stacks, each 6 inches.").spec.gap_m == (
+        pytest.approx(0.0508)
+    )
+    r = read("drop an O-piece and an I-piece side by side with a little gap").spec
+    assert r.gap_m == pytest.approx(0.05) and all(
+        getattr(s, "gap_m", None) is None for s in r.structures
+    )

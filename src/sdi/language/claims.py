@@ -57,6 +57,7 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
         ("empty", _N + r"(?:with\s+)?(?:nothing|no\s+(?:cubes?|parts?|blocks?|bricks?))\s+"
                        + _INSIDE + r"\b"),
         ("empty", _N + r"without\s+anything\s+" + _INSIDE + r"\b"),
+        ("empty", _N + r"(?:and\s+)?(?:with\s+)?no\s+(?:cubes?|blocks?|parts?|bricks?)\s+there\b"),
         ("empty", _N + r"inside\s+(?:it\s+)?nothing\b"),
         ("empty", _N + r"(?:left\s+)?empty\s+(?:inside|in\s+the\s+(?:middle|centre|center))\b"),
         # only what is named

@@ -690,6 +690,18 @@ def _not_climb(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" climbing towards the {opposite} "
 
 
+def _part_size(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "stack half a dozen of the 2-inch blocks": a part size said is the cell's own part
+    when it is within 15 % of it (else left for the reading to report)."""
+    said, groups = _said(m)
+    mm = float(groups[0]) * _MM[groups[1]]
+    cube = st.cell.cube[0] * 1000
+    if abs(mm - cube) > 0.15 * cube:
+        return m.group(0)
+    st.notes.append(f"read '{said}' as the cell's {cube:g} mm {groups[2]}")
+    return f" of {groups[2]} "
+
+
 # Rewrites whose replacement is computed: the `_REWRITES` entry names one of these.
 HANDLERS: dict[str, Handler] = {
     "{split}": lambda m, st, note: _split(m, st),
@@ -732,6 +744,7 @@ HANDLERS: dict[str, Handler] = {
     "{delegated}": _delegated,
     "{below}": _below,
     "{within}": _within,
+    "{part_size}": _part_size,
     "{not_climb}": _not_climb,
     "{every_side}": _every_side,
     "{times}": _times,

@@ -292,17 +292,27 @@ def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
     """ "Three rows, spaced out", "a 2x2 pad and a 3x3 pad, not touching": with several
     structures a vague "apart" is about the structures (which stand apart anyway), not the
     parts inside each one."""
-    if len(drafts) < 2 or not any(n.endswith("as a part's width apart") for n in st.notes):
+    spaced = any(n.endswith("as a part's width apart") for n in st.notes)
+    between = _SIDE_BY_SIDE_GAP.search(st.command)  # "… side by side with a little gap"
+    if len(drafts) < 2 or not (spaced or between):
         return drafts
     out = []
     for d in drafts:
         if d.shape in ("row", "grid") and d.gap_m is not None:
+            if between and st.gap_m is None:
+                st.gap_m = d.gap_m
+                st.notes.append(f"read '{between.group(0)}' as {d.gap_m:g} m between them")
             d = d.model_copy(update={"gap_m": None})
             note = "several structures spaced out: the structures stand apart, each one whole"
             if note not in st.notes:
                 st.notes.append(note)
         out.append(d)
     return out
+
+
+_SIDE_BY_SIDE_GAP = re.compile(
+    r"\bside\s+by\s+side\s*,?\s*(?:with|leaving)\s+(?:a\s+)?(?:\w+\s+){0,2}?(?:gap|space)\b", re.I
+)
 
 
 _GENERIC_NOUNS = re.compile(

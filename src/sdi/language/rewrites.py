@@ -423,7 +423,8 @@ _REWRITES += [
         re.compile(
             r"\b(grid|square|layer|slab|pad|patch|platform|block)\b([^.;]{0,20}?)\s*,?\s*(?:without|minus|"
             r"but\s+not|except(?:\s+for)?|leave\s+out|leaving\s+out|leave\s+off)\s+(?:the\s+|a\s+|its\s+)?"
-            r"(?:middle|centre|center|inner|central)(?:\s+(?:cubes?|ones?|parts?|pieces?|column))?",
+            r"(?:middle|centre|center|inner|central)(?:\s+(?:cubes?|ones?|parts?|pieces?|column|blocks?|"
+            r"bricks?))?",
             re.IGNORECASE,
         ),
         " hollow {0} {1} ",
@@ -588,6 +589,19 @@ _REWRITES += [
         ),
         " enclosure ",
         "read '{0}' as an enclosure",
+    ),
+    (  # "three stacks, each one 4 inches high": each of them
+        re.compile(r"\beach\s+one\s+(?=\d|(?:" + _NUMBER_WORD + r")\b)", re.IGNORECASE),
+        " each ",
+        "",
+    ),
+    (  # "half a dozen of the 2-inch blocks": the size of the cell's own parts, said
+        re.compile(
+            r"\b(?:of\s+)?(?:the|these|those|our)\s+(\d+(?:\.\d+)?)\s*(mm|cm)\s+(cubes?|blocks?|bricks?)\b",
+            re.IGNORECASE,
+        ),
+        "{part_size}",
+        "",
     ),
     (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),
     (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
@@ -1568,6 +1582,14 @@ _REWRITES += [
         "{compared}",
         "",
     ),
+    (  # "the other one twice that": the number said last, changed
+        re.compile(
+            r"(?<=\bone\s)(twice|double|thrice|half)\s+(?:of\s+)?(that)\b(?!\s+(?:height|size))",
+            re.IGNORECASE,
+        ),
+        "{compared}",
+        "",
+    ),
     (  # "one twice as tall" (as the one before): the number said last, changed
         re.compile(
             r"\b(twice|double|thrice|half|(?:\d+|two|three|four|five)\s+times)\s+as\s+"
@@ -1926,8 +1948,20 @@ _LOOSE_CUBES = re.compile(
     re.IGNORECASE,
 )
 """'two cubes, one in the back left corner and one …': structures of one part each."""
-_ONE_OF = re.compile(r"(\bthen\s+)one\s+(of|with)\s+(?=\d)", re.IGNORECASE)
+_ONE_OF = re.compile(
+    r"(\bthen\s+|\band\s+|,\s*)one\s+(of|with)\s+(?=(?:\d|" + _NUMBER_WORD + r")\b)", re.IGNORECASE
+)
 """'a tower of 2, then one of 3': another of the structure named before."""
+
+
+def _one_of(m: re.Match[str]) -> str:
+    """ "One tower of six cubes and one of four": another one; "two towers, one of 3 and one
+    of 5" names the ones counted before, not more."""
+    sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1].lower()
+    named = [w for w in re.findall(r"[a-z]+", sentence) if w in lx.SHAPE_WORDS]
+    if m.group(1).strip() != "then" and named and named[-1].endswith("s"):
+        return m.group(0)
+    return f"{m.group(1)}another one {m.group(2)} "
 
 
 _FLOORS = re.compile(r"\b(\d+|" + "|".join(NUMBER_WORDS) + r")\s+(floors?)\b", re.I)
@@ -2109,14 +2143,64 @@ def _level_labels(text: str, st: ReadState) -> str:
     return "".join(out)
 
 
+_PIECE = re.compile(
+    r"\b(?:(a|an|one|two|three|four|\d+)\s+)?(?:tetris\s+|tetromino\s+)?"
+    r"(?:(?<![a-z])([LTIOJ])[- ]?(?:pieces?|tetrominos?|tetrominoes|blocks?)|"
+    r"(?:tetris|tetromino)\s+(?:pieces?|shapes?|blocks?)(?:\s*,?\s*any\s+one)?)\b"
+    r"((?:\s*,?\s*(?:standing|stood|set|placed))?\s+(?:on\s+(?:its\s+|their\s+)?end|upright|"
+    r"vertical(?:ly)?))?",
+    re.IGNORECASE,
+)
+_PIECES = {
+    "I": ("row of 4", "rows of 4"), "O": ("2 by 2 slab", "2 by 2 slabs"),
+    "L": ("L shape 3 by 2", "L shapes 3 by 2"), "J": ("L shape 3 by 2", "L shapes 3 by 2"),
+    "T": ("T shape 3 by 2", "T shapes 3 by 2"),
+}  # fmt: skip
+
+
+def _tetris(text: str, st: ReadState) -> str:
+    """ "a Tetris L-piece", "an O-piece", "two I-pieces on end": the four-cube pieces as the
+    families that build them (S and Z have none: left for the reading to report)."""
+
+    def piece(m: re.Match[str]) -> str:
+        count = (m.group(1) or "a").lower()
+        letter = (m.group(2) or "L").upper()
+        if letter not in _PIECES:
+            return m.group(0)
+        many = count not in ("a", "an", "one")
+        what = _PIECES[letter][1 if many else 0]
+        if letter == "I" and m.group(3):  # stood on end: a column
+            what = "towers of 4" if many else "tower of 4"
+        article = "an" if what.startswith(("L", "I")) and not many else "a"
+        said = f"{count if many else article} {what}"
+        st.notes.append(f"read '{m.group(0).strip()}' as {said}")
+        return f" {said} "
+
+    return _PIECE.sub(piece, text)
+
+
+_ON_END = re.compile(
+    r"\b(a|one)\s+row\s+of\s+(\d+|" + _NUMBER_WORD + r")(?:\s+cubes?)?\s*,?\s*"
+    r"(?:standing\s+|stood\s+|set\s+|placed\s+)?(?:on\s+(?:its\s+)?end|upright|vertical(?:ly)?)\b",
+    re.IGNORECASE,
+)
+
+
 def rewrite(text: str, st: ReadState) -> str:
     text = _level_labels(text, st)
+    text = _tetris(text, st)
+
+    def on_end(m: re.Match[str]) -> str:
+        st.notes.append(f"read '{m.group(0).strip()}' as a tower of {m.group(2)}")
+        return f" {m.group(1)} tower of {m.group(2)} "
+
+    text = _ON_END.sub(on_end, text)
     text = _described_again(text, st)
     text = _floors_as_levels(text, st)
     text = _count_of_plural(text, st)
     text = _counted_singular(text, st)
     text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)
-    text = _ONE_OF.sub(r"\1another one \2 ", text)
+    text = _ONE_OF.sub(_one_of, text)
     text = _SAME_AGAIN.sub(
         lambda m: " another one but " if m.group(0).rstrip().endswith("but") else " another one ",
         text,

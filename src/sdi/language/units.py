@@ -27,7 +27,7 @@ _N = (
 
 # what may follow a length: a dimension, a spacing, a size pair, or the structure it sizes
 _AFTER = (
-    r"(?=[\s-]*(?:tall|high|wide|long|deep|across|thick|apart|away|gap|spacing|space|clear|"
+    r"(?=[\s-]*(?:tall|high|wide|long|deep|across|thick|apart|away|gap|spacing|space|clear|between|"
     r"in\s+(?:height|length|width|depth|diameter)|from|off|to\s+the|x\b|by\b|×|square|on\s+"
     r"(?:a|each)\s+side|each|per|tower|stack|column|pillar|wall|row|line|pad|slab|block|cubes?|"
     r"blocks?|bricks?|platform|base|floor|layer|step|stairs?|staircase|pyramid|bridge|beam|gate|"
@@ -68,6 +68,10 @@ _PAIR = re.compile(
     + r"(inch(?:es)?|\"|foot|feet|ft\b\.?|yards?|yds?\b\.?|in\b\.?)"
     + _AFTER,
     re.IGNORECASE,
+)
+# a coordinate in inches: "x = 18 in, y = 12 in"
+_COORD = re.compile(
+    r"([=:]\s*)(" + _N + r")\s*" + _IN + r"(?=\s*(?:[,;)]|\.(?!\d)|$|and\b))", re.IGNORECASE
 )
 _SINGLE = re.compile(
     r"\b(" + _N + r")[\s-]*" + _UNIT + _AFTER + r"|\b(" + _N + r")[\s-]*" + _IN + _AFTER_IN,
@@ -159,5 +163,14 @@ def to_millimetres(text: str, notes: list[str]) -> str:
     text = _COMPOUND.sub(compound, text)
     text = _AND_A_HALF.sub(and_a_half, text)
     text = _PAIR.sub(pair, text)
+
+    def coord(m: re.Match[str]) -> str:
+        v = _value(m.group(2))
+        if v is None:
+            return m.group(0)
+        notes.append(f"read '{m.group(2)} {m.group(3)}' as {_mm(v, 'inch'):g} mm")
+        return f"{m.group(1)}{_mm(v, 'inch'):g} mm"
+
+    text = _COORD.sub(coord, text)
     text = _SINGLE.sub(single, text)
     return re.sub(r"(\d mm)\s*-(?=[a-z])", r"\1 ", text)  # "a foot-long row"
