@@ -2484,3 +2484,30 @@ def test_a_gap_said_of_two_structures_side_by_side_or_between_them():
     assert r.gap_m == pytest.approx(0.05) and all(
         getattr(s, "gap_m", None) is None for s in r.structures
     )
+
+
+def test_structures_listed_left_to_right_stand_in_that_order():
+    r = plan("three towers of 1, 2 and 3, from left to right")
+    by_y = sorted(_columns(r).items(), key=lambda kv: -kv[0][1])  # left (+y) first
+    assert [h for _, h in by_y] == [1, 2, 3]
+    one = plan("a row of 5 running left to right")  # a single structure runs that way
+    assert np.ptp([o.position[0] for o in one.layout.objects]) == 0
+
+
+def test_another_like_that_copies_the_one_before():
+    s = read("A wall 4 long, 2 high. And another like that, behind it, with a cube gap.").spec
+    assert [(x.length, x.height) for x in s.structures] == [(4, 2), (4, 2)]
+    (rel,) = s.relations
+    assert (rel.side, rel.gap_m) == ("back", pytest.approx(0.05))
+
+
+def test_a_part_count_and_free_standing_said_of_the_whole_are_checked():
+    r = plan("The deliverable is 2 walls of 5 x 2 cubes and 1 tower of 5; total part count 25.")
+    assert r.status == "success" and len(r.layout.objects) == 25, r.notes
+    assert plan("three towers of 2, 7 cubes in total").status == "partial"
+    # counted by the generators: a pyramid of 3 tiers is 6 parts here, not the 14 said
+    assert plan("replicate: pyramid, 3 tiers, 14 cubes in total").status == "partial"
+    # the only size of the structure is no claim
+    assert [s.height for s in read("a tower, 6 cubes in total").spec.structures] == [6]
+    free = read("two 3-high towers and a 2 x 2 block; all three items free-standing")
+    assert len(free.spec.structures) == 3 and any("holds" in n for n in free.notes)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import re
 
-from sdi.errors import SpecError
+from sdi.errors import SDIError, SpecError
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -69,6 +69,15 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
         ("count", _N + r"(?:in\s+)?total(?:\s+of)?\s*:?\s*" + _COUNT + r"\s+(" + _FAMILY + r")\b"),
         ("count", _N + r"(?:so\s+)?" + _COUNT + r"\s+(" + _FAMILY + r")\s+(?:in\s+total|in\s+all|"
                        r"altogether|overall)\b"),
+        # each structure standing on its own on the table
+        ("bare", _N + r"(?:(?:all|each|both)\s+)?(?:(?:of\s+)?(?:the\s+)?(?:two|three|four|five|"
+                      r"\d+)\s+)?(?:items?|structures?|pieces?|of\s+them|parts?)?\s*(?:are\s+|is\s+|"
+                      r"must\s+be\s+|shall\s+be\s+)?free[\s-]?standing\b"),
+        # how many parts in all: "total part count 25", "Expected: 8 parts total"
+        ("parts", _N + r"(?:(?:the\s+)?total\s+)?(?:part|cube|block)\s+count\s*(?:of|is|=|:)?\s*"
+                       r"(\d+)\b"),
+        ("parts", _N + r"(?:expected\s*:\s*)?(\d+)\s+(?:parts|cubes|blocks)\s+(?:in\s+)?(?:total|"
+                       r"in\s+all|altogether|overall)\b"),
         # every structure as high as the others
         ("same", _N + r"(?:all\s+|both\s+)?(?:(?:of\s+)?the\s+)?same\s+height\b"
                       r"(?:\s+as\s+(?:each\s+other|one\s+another))?(?!\s+as\b)"),
@@ -95,6 +104,8 @@ def take(text: str, st: ReadState) -> str:
         def cut(m: re.Match[str], kind: str = kind) -> str:
             if kind == "count" and not _named_before(m):
                 return m.group(0)  # "three towers in total, each 2 high": they are named here
+            if kind == "parts" and not _SIZED.search(m.string[: m.start()]):
+                return m.group(0)  # "a tower, 6 cubes in total": the tower's only size
             if kind == "same" and re.search(
                 r"\b(?:none|not|no|never|nor)\b[^,.;]*$", m.string[: m.start()], re.I
             ):
@@ -138,6 +149,9 @@ def _height(s: StructureSpec) -> int | None:
     return getattr(s, "height", None) or (getattr(s, "count", None) if s.shape == "tower" else None)
 
 
+_SIZED = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.I)
+
+
 def _named_before(m: re.Match[str]) -> bool:
     """The family a count claim counts was named before the claim."""
     family = lx.SHAPE_WORDS.get(m.group(2).lower())
@@ -160,6 +174,9 @@ def check(spec: Spec, st: ReadState) -> None:
     for kind, said in st.claims:
         if kind == "result":
             _result(said, spec, st)
+            continue
+        if kind == "parts":
+            _total(said, spec, st)
             continue
         if _counted(said, spec) if kind == "count" else _holds(kind, spec):
             st.notes.append(f"'{said}': holds, {_HOLDS[kind]}")
@@ -212,3 +229,29 @@ def _same(want: StructureSpec, got: StructureSpec) -> bool:
     if foot_w and foot_w != foot_g[: len(foot_w)] and foot_w != foot_g[-len(foot_w) :]:
         return False
     return all(g.get(k) == v for k, v in w.items() if k not in ("length", "width"))
+
+
+def _parts(s: StructureSpec, st: ReadState) -> int | None:
+    """How many parts the family's generator makes of `s` (None: it cannot make it)."""
+    from sdi.design.composer import part_sizes  # the generators count, as they will build
+    from sdi.design.shapes import generate
+
+    try:
+        return len(generate(s, part_sizes(st.cell, s.part)))
+    except (SDIError, ValueError):
+        return None
+
+
+def _total(said: str, spec: Spec, st: ReadState) -> None:
+    """ "total part count 25": as many parts as the reading builds, where the families say."""
+    want = int(re.findall(r"\d+", said)[-1])
+    counts = [_parts(s, st) for s in spec.structures]
+    if any(c is None for c in counts):
+        st.notes.append(f"'{said}': not checked, a structure cannot be built as read")
+        return
+    got = sum(c for c in counts if c is not None)
+    if got == want:
+        st.notes.append(f"'{said}': holds, {got} parts")
+        return
+    st.material.append(said)
+    st.notes.append(f"ignored '{said}': the reading builds {got} parts")

@@ -194,6 +194,14 @@ def _all_different(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+def _listing_said(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "three towers of 1, 2 and 3 from left to right": the order they are named in, if
+    there are several; the words stay for a structure that runs that way."""
+    if st.listing is None:
+        st.listing = f"{m.group(1).lower()} to {m.group(2).lower()}"
+    return m.group(0)
+
+
 def _listing(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "three things, left to right: …": the structures named from left to right."""
     st.listing = f"{m.group(1).lower()} to {m.group(2).lower()}"
@@ -728,6 +736,7 @@ HANDLERS: dict[str, Handler] = {
     "{arrangement}": _arrangement,
     "{all_different}": _all_different,
     "{listing}": _listing,
+    "{listing_said}": _listing_said,
     "{in_a_row}": _in_a_row,
     "{layers_word}": _layers_word,
     "{height_list}": _height_list,

@@ -204,8 +204,8 @@ def _listed(
     right to left in the order named, so a list given from the left is placed reversed."""
     if st.listing is None or len(specs) < 2 or relations:
         return specs
-    if st.listing == "left to right":
-        st.notes.append("the structures named left to right, placed in that order")
+    if st.listing in ("left to right", "back to front"):
+        st.notes.append(f"the structures named {st.listing}, placed in that order")
         return specs[::-1]
     return specs
 

@@ -1396,6 +1396,16 @@ _REWRITES += [
         "{listing}",
         "",
     ),
+    (  # "three towers of 1, 2 and 3, from left to right": the order too (the words stay: a
+        # single structure runs that way)
+        re.compile(
+            r"(?<!running\s)(?<!going\s)(?<!oriented\s)(?<!aligned\s)(?<!facing\s)"
+            r"\b(?:from\s+)?(?:the\s+)?(left|right|front|back)\s+to\s+(?:the\s+)?(right|left|back|front)\b",
+            re.IGNORECASE,
+        ),
+        "{listing_said}",
+        "",
+    ),
     (  # "four stacks of 2 arranged in a square": an arrangement SDI does not make
         re.compile(
             r",?\s*\b(?:arranged|set\s+out|laid\s+out|placed|standing)\s+in\s+a\s+"
@@ -1907,6 +1917,12 @@ _EVERY_SIDE = re.compile(
     r"(?:every|each|all|a)\s+(?:sides?|edges?)\b",
     re.IGNORECASE,
 )
+_LIKE_THAT = re.compile(
+    r"\banother\s+(?:one\s+)?(?:just\s+|exactly\s+)?like\s+(?:that|it|this|the\s+(?:first|last|"
+    r"previous|other)(?:\s+one)?)\b",
+    re.IGNORECASE,
+)
+"""'And another like that, behind it': another of the one named before."""
 _SAME_AGAIN = re.compile(
     r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?", re.I
 )
@@ -2201,6 +2217,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _counted_singular(text, st)
     text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)
     text = _ONE_OF.sub(_one_of, text)
+    text = _LIKE_THAT.sub(" another one ", text)
     text = _SAME_AGAIN.sub(
         lambda m: " another one but " if m.group(0).rstrip().endswith("but") else " another one ",
         text,
