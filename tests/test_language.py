@@ -2511,3 +2511,42 @@ def test_a_part_count_and_free_standing_said_of_the_whole_are_checked():
     assert [s.height for s in read("a tower, 6 cubes in total").spec.structures] == [6]
     free = read("two 3-high towers and a 2 x 2 block; all three items free-standing")
     assert len(free.spec.structures) == 3 and any("holds" in n for n in free.notes)
+
+
+def test_in_cubes_is_a_unit_gloss_and_x3_after_a_name_is_a_count():
+    s = read("four towers of heights 1, 2, 3 and 4 (in cubes), free-standing").spec.structures
+    assert [x.height for x in s] == [1, 2, 3, 4]
+    assert [x.height for x in read("make a tower x3, each one 4 blocks").spec.structures] == [
+        4,
+        4,
+        4,
+    ]
+    (row,) = read("row x5 along X").spec.structures  # a work order's length
+    assert row.length == 5
+
+
+def test_distances_from_the_robot_and_the_middle_line_are_coordinates():
+    t = read("Put a 4 inch tower about 16 inches out from the robot.").spec.structures[0]
+    assert t.at_x == pytest.approx(0.4064)
+    u = read("Tower of 6 inches, 8 inches left of the middle line.").spec.structures[0]
+    assert u.at_y == pytest.approx(0.5032)  # the workspace's middle is y = 0.30; left is +y
+    assert read("a tower 10 cm behind the centre").spec.structures[0].at_x == pytest.approx(0.6)
+
+
+def test_rejection_conditions_are_constraints():
+    r = read("Nonconformance if the two towers touch. Build: towers of 5 and 2, 50 mm clear.")
+    assert [x.height for x in r.spec.structures] == [5, 2] and r.spec.gap_m == pytest.approx(0.05)
+    b = read("Reject if any part is within 10 cm of the front edge. Required: a 2x2 block, 3 high")
+    assert [x.region for x in b.spec.structures] == ["back"]
+    row = read("A row 8 inches long, sitting right up at the back edge, within an inch of it.")
+    assert row.complete and row.spec.structures[0].edge == ("back",)
+
+
+def test_a_copy_said_with_an_offset_stands_off_the_one_before():
+    s = read("1) row x5 along X (front to back). 2) duplicate it 1 cube to the left, parallel").spec
+    assert [(x.shape, x.length) for x in s.structures] == [("row", 5), ("row", 5)]
+    (rel,) = s.relations
+    assert (rel.subject, rel.object, rel.side, rel.gap_m) == (1, 0, "left", pytest.approx(0.05))
+    t = read("a wall. then a tower 2 cubes behind").spec
+    (r2,) = t.relations
+    assert (r2.side, r2.gap_m) == ("back", pytest.approx(0.1))

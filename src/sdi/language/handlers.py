@@ -482,6 +482,16 @@ def _region_all(m: re.Match[str], st: ReadState, note: str) -> str:
     return " , "
 
 
+def _keep_off(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "Reject if any part is within 10 cm of the front edge": every structure on the other
+    side of the table."""
+    said, groups = _said(m)
+    side = {"left": "right", "right": "left", "front": "back", "back": "front"}[groups[0]]
+    st.region_all = st.region_all or side
+    st.notes.append(f"read '{said}' as every structure on the {side}")
+    return " , "
+
+
 def _xyz(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "at (0.50, 0.30, 0.70)": x and y place it; a z above the table cannot be built."""
     x, y, z = m.group(1), m.group(2), m.group(3)
@@ -698,6 +708,24 @@ def _not_climb(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" climbing towards the {opposite} "
 
 
+def _offset(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "16 inches out from the robot": x from the robot's base; "8 inches left of the middle
+    line", "10 cm behind the centre": from the middle of the workspace."""
+    said, groups = _said(m)
+    metres = float(groups[0]) * _MM[groups[1]] / 1000
+    ws = st.cell.workspace
+    if groups[2]:
+        y = (ws.y_min + ws.y_max) / 2 + (metres if groups[2] == "left" else -metres)
+        where = f"y = {y:.4g} m"
+    elif groups[3]:
+        x = (ws.x_min + ws.x_max) / 2 + (-metres if groups[3].startswith("in") else metres)
+        where = f"x = {x:.4g} m"
+    else:
+        where = f"x = {metres:.4g} m"  # the robot stands at x = 0
+    st.notes.append(f"read '{said}' as at {where}")
+    return f" at {where} "
+
+
 def _part_size(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "stack half a dozen of the 2-inch blocks": a part size said is the cell's own part
     when it is within 15 % of it (else left for the reading to report)."""
@@ -754,6 +782,8 @@ HANDLERS: dict[str, Handler] = {
     "{below}": _below,
     "{within}": _within,
     "{part_size}": _part_size,
+    "{offset}": _offset,
+    "{keep_off}": _keep_off,
     "{not_climb}": _not_climb,
     "{every_side}": _every_side,
     "{times}": _times,

@@ -64,6 +64,40 @@ _PLACE_GLOSS = re.compile(
 )
 
 
+_FAMILY_SAID = "|".join(
+    sorted((w for w in lx.SHAPE_WORDS if w.isalpha() and len(w) > 2), key=len, reverse=True)
+)
+
+
+# "a tower x3", "pyramid ×2": that many of it (not a coordinate: "x 3" and "x=3" have a space
+# or a sign; "x3" straight after the family name is a count)
+_TIMES_N = re.compile(
+    r"\b(?:a\s+|an\s+|one\s+)?(" + _FAMILY_SAID + r")\s*[x×](\d+)\b"
+    r"(?![.,]\d|\s*(?:x|by|cm|mm|m)\b)",
+    re.IGNORECASE,
+)
+
+
+# "a row of 5. then another row 1 cube to the left": to the left of the one before, that far
+_OFFSET_FROM_LAST = re.compile(
+    r"\b(\d+(?:\.\d+)?|a|one|two|three|four|five)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:to\s+the\s+"
+    r"(left|right)|(behind|in\s+front))\b(?!\s+(?:of|side|edge|half|corner|end)\b)",
+    re.IGNORECASE,
+)
+
+
+def _from_last(m: re.Match[str]) -> str:
+    """The offset said of a structure after another: from the one before (the first
+    structure named has nothing to be beside: left as said)."""
+    before = m.string[: m.start()].lower()
+    said = re.findall(r"[a-z]+", before)
+    if len(re.split(r"[.;]|\bthen\b", before)) < 2 or not any(w in lx.SHAPE_WORDS for w in said):
+        return m.group(0)
+    if m.group(3):
+        return f"{m.group(1)} {m.group(2)} to its {m.group(3)}"
+    return f"{m.group(1)} {m.group(2)} {'in front of' if m.group(4) != 'behind' else 'behind'} it"
+
+
 _METRE_WORDS = [
     (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
     (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
@@ -363,9 +397,6 @@ def _expand_noted(pairs: list[tuple[re.Pattern[str], str]], text: str, notes: li
 
 
 # "side 20 cm, thick 10 cm", "high 3": the dimension word said before its value, as a list item
-_FAMILY_SAID = "|".join(
-    sorted((w for w in lx.SHAPE_WORDS if w.isalpha() and len(w) > 2), key=len, reverse=True)
-)
 # "wall, long 6, high 2", "a wall long 7 and high 2", "a block large 3": the size word first
 _DIM_FIRST = re.compile(
     r"(^|[,;:]\s*|\band\s+|\b(?:" + _FAMILY_SAID + r")\s+)(thick|high|tall|long|wide|deep|large|"
@@ -481,6 +512,18 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f" {m.group(1)} "
 
     text = _PLACE_GLOSS.sub(glossed, text)  # "the spawn point (the middle)": the place meant
+
+    def times(m: re.Match[str]) -> str:
+        noun = m.group(1).lower()
+        if noun in ("row", "line", "rows", "lines"):  # "row x5": a work order's five along
+            notes.append(f"read '{m.group(0).strip()}' as a {noun} of {m.group(2)}")
+            return f" a {noun} of {m.group(2)} "
+        plural = noun + ("es" if noun.endswith(("ch", "sh", "x")) else "s")
+        notes.append(f"read '{m.group(0).strip()}' as {m.group(2)} {plural}")
+        return f" {m.group(2)} {plural} "
+
+    text = _TIMES_N.sub(times, text)  # "make a tower x3": three of them
+    text = _OFFSET_FROM_LAST.sub(_from_last, text)  # "then another row 1 cube to the left"
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
     # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before
     text = re.sub(

@@ -68,6 +68,27 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
         " not ",
         "",
     ),
+    (  # "Nonconformance if the two towers touch": they must not
+        re.compile(
+            r"\b(?:non-?conformance|reject(?:ed)?|fail(?:ed|ure)?|not\s+acceptable|unacceptable|nok)\s+"
+            r"if\s+(?:the\s+)?(?:two\s+|both\s+|any\s+)?(?:towers?|structures?|stacks?|items?|parts?|"
+            r"they|of\s+them)?\s*(?:touch|touches|are\s+touching|is\s+touching)\b(?:\s+each\s+other)?",
+            re.IGNORECASE,
+        ),
+        " not touching ",
+        "",
+    ),
+    (  # "Reject if any part is within 10 cm of the front edge": everything at the other side
+        re.compile(
+            r"\b(?:non-?conformance|reject(?:ed)?|fail(?:ed|ure)?|not\s+acceptable|unacceptable|nok)\s+"
+            r"if\s+(?:any|a)\s+(?:part|cube|piece|structure)\s+(?:is\s+)?(?:within|closer\s+than|nearer\s+"
+            r"than)\s+\d+(?:\.\d+)?\s*(?:mm|cm|m)\s+(?:of|to|from)\s+the\s+(left|right|front|back)"
+            r"(?:\s+(?:edge|side))?\b",
+            re.IGNORECASE,
+        ),
+        "{keep_off}",
+        "",
+    ),
     (  # "do not put it anywhere near the front edge": at the other side
         re.compile(
             r"\b(?:do\s+not|never)\s+(?:put|place|build|set|stand)\s+(?:it|them|anything)\s+"
@@ -371,6 +392,27 @@ _REWRITES += [
         ),
         " ",
         "'{0}': the most the bound allows, as built",
+    ),
+    (  # "sitting right up at the back edge, within an inch of it": flush, as built
+        re.compile(
+            r"(?<=edge)(?:[^.;]{0,40}?),?\s*\bwithin\s+(?:a\s+|an\s+)?\d+(?:\.\d+)?\s*(?:mm|cm)\s+of\s+"
+            r"(?:it|that|the\s+(?:\w+\s+)?edge)\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': the structure stands flush against the edge, within that",
+    ),
+    # "16 inches out from the robot", "8 inches left of the middle line": a coordinate
+    (
+        re.compile(
+            r"\b(?:about\s+|around\s+|roughly\s+|some\s+)?(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:(?:out|away)\s+"
+            r"from\s+the\s+robot(?:'s\s+base|\s+base)?|(?:to\s+the\s+)?(left|right)\s+of\s+the\s+"
+            r"(?:middle|centre|center)(?:[\s-]*line)?|(in\s+front\s+of|behind)\s+the\s+(?:middle|centre|"
+            r"center)(?:[\s-]*line)?)\b",
+            re.IGNORECASE,
+        ),
+        "{offset}",
+        "",
     ),
     # "no taller than 177.8 mm", "at most 18 cm high": the whole parts within the bound
     (
@@ -1919,10 +1961,11 @@ _EVERY_SIDE = re.compile(
 )
 _LIKE_THAT = re.compile(
     r"\banother\s+(?:one\s+)?(?:just\s+|exactly\s+)?like\s+(?:that|it|this|the\s+(?:first|last|"
-    r"previous|other)(?:\s+one)?)\b",
+    r"previous|other)(?:\s+one)?)\b|\b(?:duplicate|copy|clone)\s+(?:it|that|this)\b",
     re.IGNORECASE,
 )
-"""'And another like that, behind it': another of the one named before."""
+"""'And another like that, behind it', 'duplicate it 1 cube to the left': another of the
+one named before."""
 _SAME_AGAIN = re.compile(
     r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?", re.I
 )

@@ -28,7 +28,8 @@ _N = (
 # what may follow a length: a dimension, a spacing, a size pair, or the structure it sizes
 _AFTER = (
     r"(?=[\s-]*(?:tall|high|wide|long|deep|across|thick|apart|away|gap|spacing|space|clear|between|"
-    r"in\s+(?:height|length|width|depth|diameter)|from|off|to\s+the|x\b|by\b|×|square|on\s+"
+    r"in\s+(?:height|length|width|depth|diameter)|from|off|out|to\s+the|left|right|behind|"
+    r"in\s+front|of\s+(?:it|the|space|clearance|room)|x\b|by\b|×|square|on\s+"
     r"(?:a|each)\s+side|each|per|tower|stack|column|pillar|wall|row|line|pad|slab|block|cubes?|"
     r"blocks?|bricks?|platform|base|floor|layer|step|stairs?|staircase|pyramid|bridge|beam|gate|"
     r"arch|ring|fence|square|grid|high)\b|\s*[,.;:)!?]|\s*$)"
@@ -38,8 +39,8 @@ _AFTER = (
 # 6 in tower"; not "2 in each corner", "3 in the back", "4 in a row")
 _AFTER_IN = (
     r"(?=[\s-]*(?:tall|high|wide|long|deep|across|thick|apart|gap|clear|x\b|by\b|×|square|"
-    r"tower|stack|column|pillar|wall|row|pad|slab|block|cubes?|blocks?|platform|base|step|"
-    r"staircase|pyramid|bridge|beam)\b)"
+    r"tower|stack|column|pillar|wall|row|pad|slab|platform|base|step|staircase|pyramid|bridge|"
+    r"beam)\b)"
 )
 
 _UNIT = r"(inch(?:es)?|\"|foot|feet|ft\b\.?|yards?|yds?\b\.?)"
