@@ -513,7 +513,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     text = _PLACE_GLOSS.sub(glossed, text)  # "the spawn point (the middle)": the place meant
 
-    def times(m: re.Match[str]) -> str:
+    def many(m: re.Match[str]) -> str:
         noun = m.group(1).lower()
         if noun in ("row", "line", "rows", "lines"):  # "row x5": a work order's five along
             notes.append(f"read '{m.group(0).strip()}' as a {noun} of {m.group(2)}")
@@ -522,7 +522,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         notes.append(f"read '{m.group(0).strip()}' as {m.group(2)} {plural}")
         return f" {m.group(2)} {plural} "
 
-    text = _TIMES_N.sub(times, text)  # "make a tower x3": three of them
+    text = _TIMES_N.sub(many, text)  # "make a tower x3": three of them
     text = _OFFSET_FROM_LAST.sub(_from_last, text)  # "then another row 1 cube to the left"
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
     # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before
