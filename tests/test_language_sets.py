@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to seventeenth dev sets (dev2 … dev17) are held to the same checks and share no
+second to eighteenth dev sets (dev2 … dev18) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -32,6 +32,7 @@ from sdi.bench.language_dev14 import CASES as DEV14
 from sdi.bench.language_dev15 import CASES as DEV15
 from sdi.bench.language_dev16 import CASES as DEV16
 from sdi.bench.language_dev17 import CASES as DEV17
+from sdi.bench.language_dev18 import CASES as DEV18
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -263,6 +264,7 @@ SETS = {
     "dev15": (DEV15, 160, 8, 15),
     "dev16": (DEV16, 160, 8, 15),
     "dev17": (DEV17, 170, 8, 15),
+    "dev18": (DEV18, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -274,6 +276,7 @@ HARD = {
     "dev15": ("relation", "numbers", "dimensions", "sequence"),
     "dev16": ("relation", "numbers", "dimensions", "sequence"),
     "dev17": ("relation", "numbers", "dimensions", "sequence"),
+    "dev18": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -337,6 +340,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV15,
         *DEV16,
         *DEV17,
+        *DEV18,
         *TEST,
     ):
         out = case.accept(result)
@@ -374,6 +378,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev15.py",
         "language_dev16.py",
         "language_dev17.py",
+        "language_dev18.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -2827,5 +2832,198 @@ _STAIRS5_X = _stairs_x(0.35, 0.30, (1, 2, 3, 4, 5))  # climbing back, top step a
 )
 def test_dev17_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev17(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev18
+
+
+def _dev18(case_id: str) -> Case:
+    return next(c for c in DEV18 if c.id == case_id)
+
+
+def _spaced(x0, y0, nx, ny, pitch, high=1):
+    """An nx × ny array of columns `high` cubes tall, `pitch` m apart centre to centre."""
+    return [
+        c
+        for i in range(nx)
+        for j in range(ny)
+        for c in column(x0 + pitch * i, y0 + pitch * j, high)
+    ]
+
+
+_FLAT4X2 = [*_row_y(0.45, 0.20, 4), *_row_y(0.45, 0.20, 4, z0=C)]  # y 0.20–0.35, x 0.45
+_CHECKER = [
+    cube(0.40 + C * i, 0.25 + C * j, 0.025) for i in range(4) for j in range(4) if (i + j) % 2 == 0
+]
+_L_ARMS4 = [*_row_y(0.40, 0.20, 4), *_row_x(0.45, 0.20, 3)]  # arms of 4 sharing the corner
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev18-rel-21",  # a bare "stage left" of the flat: the robot's left (+y) …
+            res(*_FLAT4X2, *column(0.45, 0.45, 3)),
+            res(*_FLAT4X2, *column(0.60, 0.275, 3)),  # upstage of it, not to a side
+        ),
+        (
+            "dev18-rel-21",  # … or the performer's left, the robot's right (-y)
+            res(*_FLAT4X2, *column(0.45, 0.10, 3)),
+            res(*_FLAT4X2, *column(0.30, 0.275, 3)),  # downstage of it
+        ),
+        (
+            "dev18-fil-12",  # glossed: the actor's left facing the house = the robot's right
+            res(*column(0.30, 0.15, 5)),
+            res(*column(0.30, 0.45, 5)),
+        ),
+        (
+            "dev18-reg-04",  # glossed: the performer's right facing the audience = +y
+            res(*column(0.45, 0.50, 4)),
+            res(*column(0.45, 0.10, 4)),
+        ),
+        (
+            "dev18-reg-02",  # a bare "downstage left": either side, but not the middle
+            res(*grid(0.30, 0.10, 2, 2)),
+            res(*grid(0.275, 0.275, 2, 2)),
+        ),
+        (
+            "dev18-rel-19",  # A1 and C3 of a touching 3 x 3 grid: opposite corners
+            res(*column(0.40, 0.25, 2), *column(0.50, 0.35, 2)),
+            res(*column(0.40, 0.25, 2), *column(0.50, 0.25, 2)),  # A1 and C1
+        ),
+        (
+            "dev18-rel-24",  # rows A–C front to back, columns 1–4 left to right: A1 and C4
+            res(*column(0.40, 0.40, 3), *column(0.50, 0.25, 3)),
+            res(*column(0.40, 0.25, 3), *column(0.50, 0.40, 3)),  # A4 and C1
+        ),
+        (
+            "dev18-num-01",  # a 3 x 4 array: touching (a plate) …
+            res(*grid(0.40, 0.25, 3, 4)),
+            res(*grid(0.40, 0.25, 3, 4)[:-1]),  # a position left empty
+        ),
+        (
+            "dev18-num-01",  # … or evenly spaced
+            res(*_spaced(0.35, 0.15, 3, 4, 0.10)),
+            res(*_spaced(0.35, 0.15, 3, 4, 0.10)[:-1], cube(0.60, 0.48, 0.025)),  # off the grid
+        ),
+        (
+            "dev18-num-02",  # 2 x 6 positions one cube clear of each other
+            res(*_spaced(0.25, 0.25, 6, 2, 0.10)),
+            res(*grid(0.40, 0.25, 6, 2)),  # touching
+        ),
+        (
+            "dev18-num-03",  # a checkerboard on the table …
+            res(*_CHECKER),
+            res(*grid(0.40, 0.25, 4, 4)),
+        ),
+        (
+            "dev18-num-03",  # … or on top of a 4 x 4 plate
+            res(
+                *grid(0.40, 0.25, 4, 4),
+                *[{**c, "position": [*c["position"][:2], 0.075]} for c in _CHECKER],
+            ),
+            res(*grid(0.40, 0.25, 4, 4), *grid(0.40, 0.25, 4, 2, z0=C)),  # half covered
+        ),
+        (
+            "dev18-rel-14",  # a spaced 2 x 3 array with a 4-high marker on its right
+            res(*_spaced(0.40, 0.20, 2, 3, 0.10), *column(0.45, 0.08, 4)),
+            res(*_spaced(0.40, 0.20, 2, 3, 0.10), *column(0.45, 0.52, 4)),  # on its left
+        ),
+        (
+            "dev18-neg-11",  # a 2 x 3 array of 2-high stacks, none touching
+            res(*_spaced(0.40, 0.20, 2, 3, 0.10, high=2)),
+            res(*grid(0.40, 0.25, 2, 3, layers=2)),
+        ),
+        (
+            "dev18-rel-08",  # OCR "l0 crn apart": 10 cm clear (2 cubes) …
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.35, 2)),
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.40, 2)),  # 15 cm clear
+        ),
+        (
+            "dev18-rel-08",  # … or 10 cm centre to centre (1 cube clear)
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.30, 2)),
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev18-dim-13",  # OCR "2O cm 1ong and l5 cm high": 4 long, 3 high
+            res(*[c for h in range(3) for c in _row_y(0.45, 0.20, 4, z0=C * h)]),
+            res(*_row_y(0.45, 0.20, 4)),  # "l5" misread as 5 cm
+        ),
+        (
+            "dev18-dim-01",  # a 2 by 3 by 4 cuboid standing on its 2 × 3 face …
+            res(*grid(0.40, 0.25, 2, 3, layers=4)),
+            res(*grid(0.40, 0.25, 2, 3, layers=3)),
+        ),
+        (
+            "dev18-dim-01",  # … or lying on its 3 × 4 face
+            res(*grid(0.40, 0.25, 3, 4, layers=2)),
+            res(*grid(0.40, 0.25, 3, 3, layers=2)),
+        ),
+        (
+            "dev18-rel-11",  # two walls of 4, 2 high, perpendicular, sharing a vertex
+            res(*_L_ARMS4, *[{**c, "position": [*c["position"][:2], 0.075]} for c in _L_ARMS4]),
+            res(
+                *_row_y(0.40, 0.20, 4),
+                *_row_y(0.40, 0.20, 4, z0=C),
+                *_row_y(0.50, 0.20, 4),
+                *_row_y(0.50, 0.20, 4, z0=C),
+            ),  # parallel, not perpendicular
+        ),
+        (
+            "dev18-dim-04",  # a triangular prism: 3 × 4 base, a ridge of 4 along the middle
+            res(*grid(0.40, 0.25, 3, 4), *_row_y(0.45, 0.25, 4, z0=C)),
+            res(*grid(0.40, 0.25, 3, 4), *_row_y(0.40, 0.25, 4, z0=C)),  # ridge on an edge
+        ),
+        (
+            "dev18-seq-11",  # reflected in the front-back middle line: moved …
+            res(*column(0.45, 0.20, 3)),
+            res(*column(0.45, 0.40, 3)),  # left where it was
+        ),
+        (
+            "dev18-seq-11",  # … or copied
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.20, 3)),
+            res(*column(0.45, 0.40, 3), *column(0.45, 0.10, 3)),
+        ),
+        (
+            "dev18-open-10",  # symmetric about the middle line y = 0.30
+            res(*column(0.60, 0.20, 2), *column(0.60, 0.40, 2)),
+            res(*column(0.60, 0.20, 2), *column(0.60, 0.40, 3)),
+        ),
+        (
+            "dev18-rel-04",  # a 2-stack in the plate's centre well: standing on it …
+            res(*grid(0.40, 0.25, 3, 3), *column(0.45, 0.30, 2, z0=C)),
+            res(*grid(0.40, 0.25, 3, 3), *column(0.40, 0.25, 2, z0=C)),  # on a corner
+        ),
+        (
+            "dev18-rel-04",  # … or down in the well
+            res(*_without(grid(0.40, 0.25, 3, 3), (0.45, 0.30)), *column(0.45, 0.30, 2)),
+            res(*_without(grid(0.40, 0.25, 3, 3), (0.45, 0.30)), *column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev18-seq-17",  # OCR: 4 steps rising left, the top step taken off
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3))),
+            res(*_stairs_y(0.45, 0.20, (1, 2, 3, 4))),
+        ),
+        (
+            "dev18-neg-07",  # three towers, all different, none over 4
+            res(*column(0.30, 0.30, 1), *column(0.45, 0.30, 3), *column(0.60, 0.30, 4)),
+            res(*column(0.30, 0.30, 2), *column(0.45, 0.30, 2), *column(0.60, 0.30, 3)),
+        ),
+        (
+            "dev18-open-09",  # any prism: a staircase extruded 3 wide
+            res(*[c for y in (0.25, 0.30, 0.35) for c in _stairs_x(0.40, y, (1, 2, 3))]),
+            res(*_pyr(0.40, 0.25, 3)),
+        ),
+        (
+            "dev18-bad-13",  # OCR "l5" = 15 levels, past the cell: refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*column(0.45, 0.30, 5)),
+        ),
+    ],
+)
+def test_dev18_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev18(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
