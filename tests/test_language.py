@@ -2550,3 +2550,59 @@ def test_a_copy_said_with_an_offset_stands_off_the_one_before():
     t = read("a wall. then a tower 2 cubes behind").spec
     (r2,) = t.relations
     assert (r2.side, r2.gap_m) == ("back", pytest.approx(0.1))
+
+
+@pytest.mark.parametrize(
+    ("scanned", "read_as"),
+    [
+        ("Bui1d a tovver of 4", "Build a tower of 4"),
+        ("a wa11 2O cm 1ong", "a wall 20 cm long"),
+        ("l0 crn apart", "10 cm apart"),
+        ("PIace a pyrarnid in the rniddle", "Place a pyramid in the middle"),
+        ("tvv0 tovvers 0n t0p", "two towers on top"),
+        ("PIease bui1d a tow er of 6 cu bes.", "Please build a tower of 6 cubes."),
+        ("N0 tovver ta11er than 4", "No tower taller than 4"),
+        ("5tep l: a row", "step 1: a row"),
+    ],
+)
+def test_a_scanners_confusions_are_read_back_and_noted(scanned, read_as):
+    from sdi.language.scanned import unscan
+
+    text, notes = unscan(scanned)
+    assert text == read_as and notes
+
+
+@pytest.mark.parametrize(
+    "kept", ["t0: row(n=4)", "at A1 and C3", "a 1x1 tower", "rnig 6x6", "put it in to the box"]
+)
+def test_labels_sizes_and_typos_are_no_scanner_confusion(kept):
+    from sdi.language.scanned import unscan
+
+    assert unscan(kept)[0] == kept
+
+
+def test_stage_directions_are_the_performers():
+    r = read("Set a 2 by 2 riser, one cube tall, downstage left.").spec.structures[0]
+    assert (r.shape, r.region) == ("grid", "front right")  # stage left: the cell's right
+    t = read("Upstage of the 3-high tower, one cube back from it, a 2 by 2 riser.").spec
+    (rel,) = t.relations
+    assert (rel.side, rel.gap_m) == ("back", pytest.approx(0.05))
+    s = read("I need a flight of six treads.").spec.structures[0]
+    assert (s.shape, s.steps) == ("staircase", 6)
+
+
+def test_slavic_and_dutch_speakers_phrasing():
+    s = read("Build wall long 5, high 2, and behind of wall put pyramid from 2 levels").spec
+    assert [(x.shape, getattr(x, "height", None)) for x in s.structures] == [
+        ("wall", 2),
+        ("pyramid", 2),
+    ]
+    assert read("Hoi! a wall of 6 long and 2 high. Dank je!").complete
+    assert [x.height for x in read("Build a tower whose height is the square of 3.")
+            .spec.structures] == [9]  # fmt: skip
+
+
+def test_an_array_of_stacks_is_said_not_built_as_one_slab():
+    r = plan("a 2 x 3 array of 2-high stacks, and make sure no two stacks touch")
+    assert r.status == "partial" and len(r.spec.structures) == 6
+    assert all(s.height == 2 for s in r.spec.structures)

@@ -51,6 +51,9 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
         ("bare", _N + r"(?:with\s+)?nothing\s+(?:else\s+)?(?:on\s+top|on\s+it|on\s+them|above\s+it)"
                       r"(?:\s+of\s+(?:it|them))?(?:\s+at\s+all)?\b"),
         # separate structures with space between them
+        ("apart", _N + r"(?:and\s+)?(?:make\s+sure\s+(?:that\s+)?|ensure\s+(?:that\s+)?|so\s+"
+                       r"that\s+)?no\s+two(?:\s+(?:of\s+them|\w+))?\s+(?:touch|are\s+touching|"
+                       r"touching)\b"),
         ("apart", _N + _THEM + r"\s+(?:must|should|may|can|do|does|will|shall)\s*(?:not|never)\s+"
                        r"touch(?:\s+(?:each\s+other|one\s+another))?\b"),
         # a hollow structure left empty

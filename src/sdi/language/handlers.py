@@ -253,6 +253,18 @@ def _arrangement(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+def _array_of(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a 2 x 3 array of 2-high stacks": six stacks; the array itself is an arrangement SDI
+    does not make (separate structures stand side by side in a line): said."""
+    said, groups = _said(m)
+    n = int(groups[0]) * int(groups[1])
+    st.material.append(f"a {groups[0]} x {groups[1]} array")
+    st.notes.append(f"ignored the {groups[0]} x {groups[1]} array in '{said}': separate "
+                    "structures are placed side by side in a line")  # fmt: skip
+    high = f" of {groups[2]}" if groups[2] else ""
+    return f" {n} {groups[3]}{high} "
+
+
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cube in each corner of the table": one copy in each corner region. Without "of
     the table" only when no other structure is named (then the corners may be its own)."""
@@ -695,7 +707,7 @@ def _not_climb(m: re.Match[str], st: ReadState, note: str) -> str:
     said, groups = _said(m)
     side = groups[0] or "front"  # "towards me", "to the robot": the robot's side
     later = re.search(
-        r"\b(?:go(?:es|ing)?\s+up|climb\w*|ris\w*|ascend\w*)\s+(?:to(?:wards?)?|toward)\s+"
+        r"\b(?:(?:go(?:es|ing)?\s+)?up|climb\w*|ris\w*|ascend\w*)\s+(?:to(?:wards?)?|toward)\s+"
         r"(?:the\s+)?(left|right|front|back)\b",
         m.string[m.end() :],
         re.IGNORECASE,
@@ -762,6 +774,7 @@ HANDLERS: dict[str, Handler] = {
     "{also_a}": _also_a,
     "{negative}": _negative,
     "{arrangement}": _arrangement,
+    "{array_of}": _array_of,
     "{all_different}": _all_different,
     "{listing}": _listing,
     "{listing_said}": _listing_said,

@@ -276,6 +276,22 @@ def _clause_phrases(
     segments.append(cur)
     lead = [i for i in segments[0] if doc[i].lower_ not in words.HARMLESS and not doc[i].is_space]
     trailing: list[int] = []  # a phrase of its own after the fronted relation's subject
+    first = segments[0]
+    if (
+        len(markers) == 1
+        and lead
+        and first
+        and doc[first[-1]].lower_ in ("and", ",")
+        and names_structure(doc, first)
+    ):
+        # "Build a wall 5 long, and behind the wall put a pyramid": a relation said first in
+        # a clause of its own after the structure before; the verb ends its object
+        last = segments[-1]
+        verbs = [n for n, i in enumerate(last) if doc[i].lower_ in _FRONTED_VERBS and n]
+        if verbs and names_structure(doc, last[verbs[0] + 1 :]):
+            phrases.append(Phrase(tokens=first, clause=ci))
+            segments[0], segments[-1] = last[verbs[0] + 1 :], last[: verbs[0]]
+            lead = []
     if markers and not lead:
         # "On top of two 2-cube towers, a beam.": the subject follows the object, after the
         # first comma of the last segment (or the verb: "To the right of a tower goes a row")

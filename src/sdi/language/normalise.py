@@ -78,6 +78,63 @@ _TIMES_N = re.compile(
 )
 
 
+# a stage's directions, said from the performer facing the audience (at the front): downstage
+# is the front, upstage the back, stage left the cell's right and stage right its left
+_STAGE = re.compile(
+    r"\b(?:(down|up)[\s-]?stage|centre[\s-]stage|center[\s-]stage)(?:\s+(left|right|centre|center))?\b"
+    r"|\bstage\s+(left|right)\b",
+    re.IGNORECASE,
+)
+
+
+_STAGE_OF = re.compile(r"\b(down|up)[\s-]?stage\s+(?:of|from)\b", re.IGNORECASE)
+
+
+def _stage(text: str, notes: list[str]) -> str:
+    # "upstage of the tower": behind it (a relation, not a place on the table)
+    text = _STAGE_OF.sub(
+        lambda m: " in front of " if m.group(1).lower() == "down" else " behind ", text
+    )
+
+    def place(m: re.Match[str]) -> str:
+        depth = {"down": "front", "up": "back"}.get((m.group(1) or "").lower(), "")
+        side = (m.group(2) or m.group(3) or "").lower()
+        side = {"left": "right", "right": "left"}.get(side, "")  # the performer's left
+        said = " ".join(w for w in (depth, side) if w) or "centre"
+        notes.append(f"read '{m.group(0)}' as {'the ' + said} (stage directions are the "
+                     "performer's, facing the front)")  # fmt: skip
+        towards = re.search(r"\b(?:towards?|toward|to|at|in|on)\s*$", m.string[: m.start()], re.I)
+        return f" the {said} " if towards else f" at the {said} "
+
+    return _STAGE.sub(place, text)
+
+
+_FOREIGN_COURTESY = re.compile(
+    r"\b(?:hoi|doei|dank\s+(?:je|u)(?:\s+wel)?|bedankt|dzi(?:ę|e)kuj(?:ę|e)|spasibo|"
+    r"danke(?:\s+sch(?:ö|oe)n)?|gracias|merci(?:\s+beaucoup)?|grazie|privet|cze(?:ść|sc))\b[!.,]?",
+    re.IGNORECASE,
+)
+_IDIOMS = re.compile(
+    r"\b(?:break\s+a\s+leg|good\s+luck|(?:a\s+)?quick\s+one(?:\s+before\s+the\s+(?:half|break|show|"
+    r"break|end\s+of\s+(?:the\s+)?shift))?|fingers\s+crossed|knock\s+yourself\s+out)\b[!.,:]?",
+    re.IGNORECASE,
+)
+_SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.IGNORECASE)
+# a Slavic or Dutch speaker's prepositions: "tower from 5 cubes" (of), "behind of wall", "near
+# to wall"
+_SLAVIC = [
+    (re.compile(r"\b(" + _FAMILY_SAID + r")\s+from\s+(?=\d|(?:one|two|three|four|five|six|"
+                r"seven|eight|nine|ten)\b)", re.IGNORECASE), r"\1 of "),
+    (re.compile(r"\b(behind|beside|left|right)\s+of\s+(?=(?:" + _FAMILY_SAID + r")\b)",
+                re.IGNORECASE), r"\1 of the "),
+    (re.compile(r"\bbehind\s+of\b", re.IGNORECASE), "behind"),
+    (re.compile(r"\bnear\s+to\b", re.IGNORECASE), "near"),
+    # "one cube back from it": that far behind it
+    (re.compile(r"\b(\d+|a|one|two|three|four)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:back|away|out)\s+"
+                r"from\s+(it|them|that)\b", re.IGNORECASE), r"\1 \2 away from \3"),
+]  # fmt: skip
+
+
 # "a row of 5. then another row 1 cube to the left": to the left of the one before, that far
 _OFFSET_FROM_LAST = re.compile(
     r"\b(\d+(?:\.\d+)?|a|one|two|three|four|five)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:to\s+the\s+"
@@ -523,6 +580,18 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f" {m.group(2)} {plural} "
 
     text = _TIMES_N.sub(many, text)  # "make a tower x3": three of them
+    text = _stage(text, notes)  # "downstage left": the front, on the performer's left
+    text = _FOREIGN_COURTESY.sub(" ", text)  # "Hoi!", "Dank je!": greetings, not words to read
+    text = _IDIOMS.sub(" ", text)  # "Break a leg, everyone!", "quick one before the half"
+
+    def squared(m: re.Match[str]) -> str:
+        n = int(m.group(1) or m.group(2))
+        notes.append(f"read '{m.group(0).strip()}' as {n * n}")
+        return f" {n * n} "
+
+    text = _SQUARED.sub(squared, text)  # "the square of 3", "3 squared"
+    for pattern, repl in _SLAVIC:
+        text = pattern.sub(repl, text)  # "tower from 5 cubes", "behind of wall", "near to"
     text = _OFFSET_FROM_LAST.sub(_from_last, text)  # "then another row 1 cube to the left"
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
     # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before

@@ -402,6 +402,25 @@ _REWRITES += [
         " ",
         "'{0}': the structure stands flush against the edge, within that",
     ),
+    (  # "perpendicular to the front edge": running front to back
+        re.compile(r"\bperpendicular\s+to\s+the\s+(front|back)(?:\s+(?:edge|side))?\b", re.I),
+        " running front to back ",
+        "read '{0}' as running front to back",
+    ),
+    (
+        re.compile(r"\bperpendicular\s+to\s+the\s+(left|right)(?:\s+(?:edge|side))?\b", re.I),
+        " running left to right ",
+        "read '{0}' as running left to right",
+    ),
+    (  # "a square of 4 by 4 blocks, only the edge": a ring
+        re.compile(
+            r",?\s*\b(?:only|just)\s+(?:the\s+)?(?:edge|edges|border|outline|rim|outside|perimeter)\b"
+            r"(?:\s+of\s+it)?",
+            re.IGNORECASE,
+        ),
+        " hollow ",
+        "read '{0}' as hollow, a ring",
+    ),
     # "16 inches out from the robot", "8 inches left of the middle line": a coordinate
     (
         re.compile(
@@ -778,7 +797,8 @@ _REWRITES += [
             r"use)\s+(?:a|an|the|any)?\s*(?:"
             + _SHAPE_ALT
             + r")\b(?!\s+(?:taller|higher|shorter|longer|wider|bigger|smaller|larger|more|any|"
-            r"too|so|than|over|under|above|below|exceed|of\b))"
+            r"too|so|than|over|under|above|below|exceed|of\b|on\b|in\b|at\b|to\s+the\b|near\b|"
+            r"next\b|beside\b|behind\b|by\b))"
             r"\s*[,;:.]*\s*(?:(?:i\s+)?(?:want|need|would\s+like)\s+)?"
             r"(?:just\s+|only\s+|but\s+|instead\s*,?\s*)?",
             re.IGNORECASE,
@@ -1446,6 +1466,15 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{listing_said}",
+        "",
+    ),
+    (  # "a 2 x 3 array of 2-high stacks": that many stacks, in an arrangement SDI does not make
+        re.compile(
+            r"\b(?:a\s+|an\s+)?(\d+)\s*(?:x|by)\s*(\d+)\s+(?:array|grid|rack|matrix|pattern|layout)\s+of\s+"
+            r"(?:(\d+)[- ](?:high|tall|cube)\s+)?(stacks|towers|columns|pillars|posts)\b",
+            re.IGNORECASE,
+        ),
+        "{array_of}",
         "",
     ),
     (  # "four stacks of 2 arranged in a square": an arrangement SDI does not make

@@ -42,7 +42,7 @@ _CUT_SHORT = ("tall", "long", "high", "wide", "deep")
 
 
 @cache
-def _frequencies() -> dict[str, int]:
+def english_frequency() -> dict[str, int]:
     """How often each of the 82 765 most frequent English words occurs (SymSpell's list, from
     Google Books n-grams intersected with SCOWL). spaCy's string store is no word list: it holds
     every token its model saw, "litle" and "heigth" among them."""
@@ -51,7 +51,7 @@ def _frequencies() -> dict[str, int]:
 
 
 def _vocab_has(word: str) -> bool:
-    return word in _frequencies()
+    return word in english_frequency()
 
 
 _RARER = 100
@@ -63,7 +63,7 @@ of it that the list keeps ("hight" for height, "colum" for column; "lone" is 49Ã
 def _misspelt(w: str) -> bool:
     """`w` is on the list but every lexicon word one letter away is a hundred times more
     frequent: a misspelling the list keeps."""
-    freq = _frequencies()
+    freq = english_frequency()
     found = process.extract(w, _CHOICES, scorer=DamerauLevenshtein.distance, score_cutoff=1)
     return bool(found) and all(freq.get(c, 0) >= _RARER * freq[w] for c, _, _ in found)
 
@@ -138,7 +138,11 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             if len(ranked) > 1 and fuzz.ratio(w, ranked[0]) == fuzz.ratio(w, ranked[1]):
                 return raw
             top = ranked[:1]
-        if aggressive and _vocab_has(w) and _frequencies().get(top[0], 0) < _frequencies()[w]:
+        if (
+            aggressive
+            and _vocab_has(w)
+            and english_frequency().get(top[0], 0) < english_frequency()[w]
+        ):
             return raw  # "she" is no "shed": a word more common than the one it is near
         notes.append(f"corrected '{raw}' to '{top[0]}'")
         return top[0]

@@ -119,7 +119,8 @@ SIGNIFICANT = _words(
     times taller shorter higher lower bigger smaller wider narrower longer deeper shallower
     thicker thinner tallest shortest highest lowest biggest smallest widest longest
     below underneath beneath floating hanging hovering suspended upside inverted
-    sunk sunken buried turn rotate twist flip mirror mirrored
+    sunk sunken buried turn rotate twist flip mirror mirrored reflect reflected reflection
+    checkerboard chessboard alternate alternating
     """
 )
 

@@ -328,6 +328,8 @@ SELDOM_STRUCTURES = frozenset(
      "mass", "bulk", "core", "cache", "angle", "well", "steps", "tiles"}
 )  # fmt: skip
 _add("grid", "pallet", "pallets")  # a pallet load: one layer unless a height is given
+_add("grid", "riser", "risers", "rostrum", "rostra", "cuboid", "cuboids")  # a stage's platforms
+_add("staircase", "flight", "flights")  # "a flight of 3 treads"
 _add("wall", "parapet", "parapets", "balustrade", "balustrades")
 _add("u_shape", "u", "horseshoe", "horseshoes", "bracket", "channel", "trough")
 _add("t_shape", "t", "junction")
