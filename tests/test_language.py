@@ -2606,3 +2606,31 @@ def test_an_array_of_stacks_is_said_not_built_as_one_slab():
     r = plan("a 2 x 3 array of 2-high stacks, and make sure no two stacks touch")
     assert r.status == "partial" and len(r.spec.structures) == 6
     assert all(s.height == 2 for s in r.spec.structures)
+
+
+def test_plate_positions_wells_and_likenesses():
+    s = read("Put down a 3 x 3 plate, one cube thick, and stand a 2-high stack in its centre well.")
+    (rel,) = s.spec.relations
+    assert rel.kind == "on_top_of" and s.spec.structures[rel.subject].shape == "tower"
+    b2 = read("In position B2 of a 3 x 3 plate, one layer thick, stand a 3-high stack.")
+    assert [r.kind for r in b2.spec.relations] == ["on_top_of"] and b2.complete
+    assert not read("put a 2-high stack in position A1 of a 3 x 3 plate").complete  # said
+    a1 = read("Put a 2-high stack in the back-left corner of the table, like position A1 on a "
+              "plate.").spec.structures  # fmt: skip
+    assert [(x.shape, x.region) for x in a1] == [("tower", "back left")]
+
+
+def test_a_wall_not_named_is_the_tables_edge_and_a_progression_of_heights():
+    t = read("Make tower from 4 cubes, but not in middle, near to wall on back.").spec
+    assert [(x.shape, x.region) for x in t.structures] == [("tower", "back")]
+    p = read("Build four towers; first from 1 cube, every next one cube higher.").spec
+    assert [x.height for x in p.structures] == [1, 2, 3, 4]
+    assert read("Hoi! a wall of 6 long and 2 high. Dank je!").spec.structures[0].shape == "wall"
+
+
+def test_removals_said_after_a_place_and_a_checkerboard_are_reported():
+    r = plan("Make wall from 6 cubes long, 3 high. Then from top row take out two cubes on ends.")
+    assert r.status == "partial" and len(r.spec.structures) == 1
+    assert plan("Make a checkerboard on a 4 x 4 plate: fill every other position").status != (
+        "success"
+    )

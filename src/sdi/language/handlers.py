@@ -738,6 +738,42 @@ def _offset(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" at {where} "
 
 
+def _plate_position(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "in position B2 of a 3 x 3 plate": on top of the plate; a structure on another stands
+    centred on it, so only the centre position is kept, any other is reported."""
+    said, groups = _said(m)
+    row, col = ord(groups[0].upper()) - ord("A"), int(groups[1]) - 1
+    rows, cols = (int(groups[3]), int(groups[4])) if groups[3] else (0, 0)
+    if rows and 2 * row + 1 == rows and 2 * col + 1 == cols:
+        st.notes.append(f"read '{said.strip()}' as on top of it, at its centre")
+    else:
+        st.material.append(f"position {groups[0].upper()}{groups[1]}")
+        st.notes.append(f"ignored position {groups[0].upper()}{groups[1]}: a structure set on "
+                        "another stands centred on it")  # fmt: skip
+    return f" on top of {groups[2]} "
+
+
+def _wall_edge(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "near to wall on back" with no wall named before: the table's back edge."""
+    said, groups = _said(m)
+    if re.search(r"\bwalls?\b", m.string[: m.start()], re.IGNORECASE):
+        return m.group(0)  # a wall named before: that one
+    side = groups[0] or groups[1]
+    st.notes.append(f"read '{said}' as at the {side} (no wall is named: the table's edge)")
+    return f" at the {side} "
+
+
+def _progression(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "four towers; first from 1 cube, every next one cube higher": 1, 2, 3 and 4."""
+    said, groups = _said(m)
+    said_step = "1" if groups[3] == "a" else groups[3]
+    n, first, step = (int(words_to_numbers([g])[0]) for g in (groups[0], groups[2], said_step))
+    heights = [first + k * step for k in range(n)]
+    listed = ", ".join(str(h) for h in heights[:-1]) + f" and {heights[-1]}"
+    st.notes.append(f"read '{said}' as {groups[1]} of {listed}")
+    return f" {n} {groups[1]} of {listed} "
+
+
 def _part_size(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "stack half a dozen of the 2-inch blocks": a part size said is the cell's own part
     when it is within 15 % of it (else left for the reading to report)."""
@@ -796,6 +832,9 @@ HANDLERS: dict[str, Handler] = {
     "{within}": _within,
     "{part_size}": _part_size,
     "{offset}": _offset,
+    "{wall_edge}": _wall_edge,
+    "{plate_position}": _plate_position,
+    "{progression}": _progression,
     "{keep_off}": _keep_off,
     "{not_climb}": _not_climb,
     "{every_side}": _every_side,

@@ -173,7 +173,7 @@ MODIFY = [
 _SPANNING = ("bridge", "arch", "canopy")
 
 REMOVAL = re.compile(
-    r"^(?:\w+\s+){0,2}?(?:take|takes|pull|pulls|remove|removes|push|pushes|move|moves|shift|"
+    r"^(?:\w+\s+){0,4}?(?:take|takes|pull|pulls|remove|removes|push|pushes|move|moves|shift|"
     r"leave\s+out|leave\s+off|omit|skip|drop|"
     r"slide|swap|delete|knock|cut|subtract|shove|merge|join\s+up)\b"
     r"(?!.*\b(?:tower|wall|row|pyramid|staircase|bridge|grid|block|ring|castle|arch)s?\b.*\b"

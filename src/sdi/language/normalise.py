@@ -114,6 +114,14 @@ _FOREIGN_COURTESY = re.compile(
     r"danke(?:\s+sch(?:ö|oe)n)?|gracias|merci(?:\s+beaucoup)?|grazie|privet|cze(?:ść|sc))\b[!.,]?",
     re.IGNORECASE,
 )
+
+
+def courtesy(text: str) -> str:
+    """`text` without greetings and thanks in other languages ("Hoi!", "Dank je!"), read before
+    typo correction (which would make "Dank" a rank)."""
+    return _FOREIGN_COURTESY.sub(" ", text)
+
+
 _IDIOMS = re.compile(
     r"\b(?:break\s+a\s+leg|good\s+luck|(?:a\s+)?quick\s+one(?:\s+before\s+the\s+(?:half|break|show|"
     r"break|end\s+of\s+(?:the\s+)?shift))?|fingers\s+crossed|knock\s+yourself\s+out)\b[!.,:]?",
@@ -581,7 +589,6 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     text = _TIMES_N.sub(many, text)  # "make a tower x3": three of them
     text = _stage(text, notes)  # "downstage left": the front, on the performer's left
-    text = _FOREIGN_COURTESY.sub(" ", text)  # "Hoi!", "Dank je!": greetings, not words to read
     text = _IDIOMS.sub(" ", text)  # "Break a leg, everyone!", "quick one before the half"
 
     def squared(m: re.Match[str]) -> str:

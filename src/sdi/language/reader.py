@@ -45,7 +45,7 @@ from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
 from sdi.language.markers import find_phrases
-from sdi.language.normalise import normalise
+from sdi.language.normalise import courtesy, normalise
 from sdi.language.reading import Reading
 from sdi.language.rewrites import rewrite
 from sdi.language.slots import fill_slots
@@ -72,7 +72,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             "the command is empty; say what to build, e.g. 'a 3-cube tower'", understood={}
         )
     st = ReadState(command, cell)
-    text, unscanned = scanned.unscan(command)  # "bui1d a tovver 0f l0": a scanner's letters
+    text, unscanned = scanned.unscan(courtesy(command))  # "bui1d a tovver 0f": a scanner's
     text, corrected = typos.correct(text)
     corrected[:0] = unscanned
     text = normalise(text, st.notes)

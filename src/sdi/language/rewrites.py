@@ -421,6 +421,52 @@ _REWRITES += [
         " hollow ",
         "read '{0}' as hollow, a ring",
     ),
+    (  # "stand a 2-high stack in its centre well", "in position B2 of a 3 x 3 plate": on it
+        re.compile(
+            r"\b(?:in|into|on|at)\s+(?:its|the)\s+(?:centre|center|middle|central)\s+(?:well|position|"
+            r"hole|spot|slot|cell)\b",
+            re.IGNORECASE,
+        ),
+        " on top of it ",
+        "read '{0}' as on top of it, centred",
+    ),
+    (  # "in position B2 of a 3 x 3 plate": on top of the plate, at that position
+        re.compile(
+            r"\b(?:in|at|on|into)\s+(?:position|well|slot|cell)\s+([A-H])(\d{1,2})\s+(?:of|on|in)\s+"
+            r"(a|an|the|its|this)\s+(?=(?:(\d+)\s*(?:x|by)\s*(\d+)\s+)?)",
+            re.IGNORECASE,
+        ),
+        "{plate_position}",
+        "",
+    ),
+    (  # "like position A1 on a plate": a likeness, not a place of its own
+        re.compile(
+            r",?\s*\b(?:just\s+)?like\s+(?:position|well|slot|cell)\s+[A-Z]\d+(?:\s+(?:on|of|in)\s+(?:a|the)\s+"
+            r"(?:plate|rack|grid|tray|board))?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "read '{0}' as a description, not a place",
+    ),
+    (  # "near to wall on back", "against the back wall" (no wall named): the table's edge
+        re.compile(
+            r"\b(?:near|by|against|along|at|next\s+to|close\s+to)\s+(?:the\s+)?(?:wall\s+(?:on|at)\s+(?:the\s+)?"
+            r"(back|front|left|right)|(back|front|left|right)\s+wall)\b",
+            re.IGNORECASE,
+        ),
+        "{wall_edge}",
+        "",
+    ),
+    (  # "four towers; first from 1 cube, every next one cube higher": 1, 2, 3 and 4
+        re.compile(
+            r"\b(\d+|two|three|four|five|six)\s+(towers|stacks|columns|pillars)\s*[;:,]?\s*(?:the\s+)?first\s+"
+            r"(?:of|from|with|is|one)?\s*(\d+)(?:\s+cubes?)?\s*,?\s*(?:and\s+)?(?:every|each)\s+(?:next|"
+            r"following|other|subsequent)(?:\s+one)?\s+(\d+|one|two|a)\s+(?:cubes?\s+)?(?:higher|taller|more)\b",
+            re.IGNORECASE,
+        ),
+        "{progression}",
+        "",
+    ),
     # "16 inches out from the robot", "8 inches left of the middle line": a coordinate
     (
         re.compile(

@@ -94,8 +94,6 @@ _add(
     "pads",
     "slab",
     "slabs",
-    "checkerboard",
-    "chessboard",
     "square",
     "squares",
     "rectangle",
