@@ -2634,3 +2634,50 @@ def test_removals_said_after_a_place_and_a_checkerboard_are_reported():
     assert plan("Make a checkerboard on a 4 x 4 plate: fill every other position").status != (
         "success"
     )
+
+
+def test_cuboids_flats_and_a_square_based_pyramid():
+    (b,) = read("Build a cube with an edge length of 3.").spec.structures
+    assert (b.shape, b.length, b.width, b.height) == ("block", 3, 3, 3)
+    r = plan("A square-based pyramid of 3 layers with a total of 14 cubes.")
+    assert r.status == "success" and len(r.layout.objects) == 14, r.notes
+    (w,) = read("a flat 6 wide and 4 high running across the stage").spec.structures
+    assert (w.shape, w.length, w.height) == ("wall", 6, 4)
+    (g,) = read("not a tower: a flat 2 by 2 patch").spec.structures  # "flat" the adjective
+    assert g.shape == "grid"
+
+
+def test_non_native_between_each_and_a_wall_that_is():
+    s = read("Make 4 towers, in each 3 cubes, in one line, between them one cube.").spec
+    assert [x.height for x in s.structures] == [3, 3, 3, 3] and s.gap_m == pytest.approx(0.05)
+    t = read("Put tower from 2 cubes near to wall, on front side of it. Wall is long 6 and high 3.")
+    assert [(x.shape, getattr(x, "length", None)) for x in t.spec.structures] == [
+        ("tower", None),
+        ("wall", 6),
+    ]
+    (rel,) = t.spec.relations
+    assert rel.side == "front"
+    u = read("Set a flight of 3 treads rising upstage. Actually, give it 4 treads.")
+    (st,) = u.spec.structures
+    assert (st.steps, st.axis) == (4, "x")
+
+
+def test_a_gap_said_with_a_tower_and_a_copy_with_a_gap():
+    s = read("Put a bridge with pillars of 3 high and next to it on the right side a tower of 4 "
+             "high, with one block in between.").spec  # fmt: skip
+    assert all(getattr(x, "gap_m", None) is None for x in s.structures)
+    c = read("4 cubes stacked = one 200 mm column; make two of those, 150 mm apart").spec
+    assert [x.height for x in c.structures] == [4, 4] and c.gap_m == pytest.approx(0.15)
+
+
+def test_one_of_several_changed_is_reported_and_strike_takes_back():
+    r = plan("Build two walls with 5 cubes in the length. The first wall has 2 cubes in the "
+             "height, the second one more.")  # fmt: skip
+    assert r.status == "partial" and len(r.spec.structures) == 2
+    s = read("Build a flat 5 wide and 3 high across the back. Then strike it and put a 4-high "
+             "tower there instead.").spec  # fmt: skip
+    assert [(x.shape, x.height) for x in s.structures] == [("tower", 4)]
+    assert plan("a tower of 3. undo").status == "error"
+    ring = read("a ring one cube high, 5 x 5 outside, with a single 3-high tower standing at its "
+                "center, not touching the ring.").spec  # fmt: skip
+    assert [r.kind for r in ring.relations] == ["around"]

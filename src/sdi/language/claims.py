@@ -45,6 +45,9 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
                       r"(?:\s*,?\s*just\s+flat)?\b"),
         ("flat", _N + r"(?:lying|laid|lie|lay|laying)\s+flat"
                       r"(?:\s+on\s+the\s+(?:table|ground|floor))?\b"),
+        # standing on another structure, not on the table
+        ("raised", _N + r"(?:but\s+)?not\s+(?:standing\s+|directly\s+)?on\s+(?:the\s+)?"
+                        r"(?:table|floor|ground)\b"),
         # nothing on top of what is named
         ("bare", _N + r"(?:please\s+)?(?:do\s+not|never)\s+(?:stack|put|place|build)\s+"
                       r"anything\s+(?:else\s+)?(?:on\s+top\s+of|on|onto|above)\s+" + _THEM + r"\b"),
@@ -95,6 +98,7 @@ _HOLDS = {
     "empty": "nothing stands inside it",
     "only": "only what is named is built",
     "count": "as many as said",
+    "raised": "it stands on another structure",
     "same": "every structure as high as the others",
 }
 _HOLLOW = frozenset({"enclosure", "castle", "u_shape"})
@@ -142,6 +146,8 @@ def _holds(kind: str, spec: Spec) -> bool:
     if kind == "empty":
         hollow = any(s.shape in _HOLLOW for s in spec.structures)
         return hollow and not any(r.kind == "around" for r in spec.relations)
+    if kind == "raised":
+        return on_top
     if kind == "same":
         heights = {_height(s) for s in spec.structures}
         return len(spec.structures) >= 2 and len(heights) == 1 and None not in heights

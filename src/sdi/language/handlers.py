@@ -218,7 +218,7 @@ def _in_a_row(m: re.Match[str], st: ReadState, note: str) -> str:
     noun = before[-1] if before else ""
     plural = [w for w in before[-5:] if w.endswith("s") and w in lx.SHAPE_WORDS
               and w not in lx.AMBIGUOUS_SHAPES and w not in ("rows", "lines")]  # fmt: skip
-    counted_parts = len(before) >= 3 and before[-3] == "of"  # "columns of four cubes"
+    counted_parts = any(w in ("of", "each") for w in before[-3:-1])  # "of four cubes"
     if not plural or (noun in ("cubes", "blocks", "bricks", "parts") and not counted_parts):
         return m.group(0)
     then = m.string[m.end() :].lower()

@@ -63,6 +63,10 @@ MODIFY = [
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
     _op(
+        r"\bgive\s+(?:it|them)\s+" + _N + r"\s+(?:steps|treads|stairs|levels|layers|tiers|cubes)\b",
+        "=main",
+    ),
+    _op(
         r"\b(?:move|shift|put|place|slide|keep)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|at|on|in)\s+"
         r"(?:the\s+)?"
         r"(left|right|front|back|middle|centre|center)\b",
@@ -372,14 +376,8 @@ def _sizes(s: StructureDraft) -> dict[str, float]:
 def _undo(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
           structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "Then a wall behind them. Undo the last one.": the structures of the step before are
-    taken back (taking back the only step leaves nothing to build: refused)."""
+    taken back (if nothing is named after, nothing is left to build: the reader refuses)."""
     target = built[-1]
-    if len(built) < 2:
-        raise SpecError(
-            f"'{m.group(0).strip()}' takes back the only thing named: nothing is left to build; "
-            "say what to build instead",
-            understood={"structures": [s.shape for s in structures]},
-        )
     gone = structures[target.first : target.first + target.count]
     del structures[target.first : target.first + target.count]
     for q in before:

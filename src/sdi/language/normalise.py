@@ -103,7 +103,10 @@ def _stage(text: str, notes: list[str]) -> str:
         said = " ".join(w for w in (depth, side) if w) or "centre"
         notes.append(f"read '{m.group(0)}' as {'the ' + said} (stage directions are the "
                      "performer's, facing the front)")  # fmt: skip
-        towards = re.search(r"\b(?:towards?|toward|to|at|in|on)\s*$", m.string[: m.start()], re.I)
+        before = m.string[: m.start()]
+        if re.search(r"\b(?:ris\w*|climb\w*|ascend\w*|up)\s*$", before, re.I):
+            return f" towards the {said} "  # "treads rising upstage"
+        towards = re.search(r"\b(?:towards?|toward|to|at|in|on)\s*$", before, re.I)
         return f" the {said} " if towards else f" at the {said} "
 
     return _STAGE.sub(place, text)
@@ -137,6 +140,50 @@ _SLAVIC = [
                 re.IGNORECASE), r"\1 of the "),
     (re.compile(r"\bbehind\s+of\b", re.IGNORECASE), "behind"),
     (re.compile(r"\bnear\s+to\b", re.IGNORECASE), "near"),
+    # "in each 3 cubes", "between them one cube": the number after its preposition
+    (re.compile(r"\bin\s+each\s+(?=\d|(?:one|two|three|four|five|six)\b)", re.I), "each "),
+    (re.compile(r"\bbetween\s+(them|each|the\s+towers?|the\s+stacks?)\s+(one|a|\d+|two|three)\s+"
+                r"(cubes?|blocks?|parts?)\b", re.I), r"\2 \3 between \1"),
+    (re.compile(r"\bwith\s+(one|a|\d+|two|three)\s+(cubes?|blocks?|parts?)\s+(?:in\s+)?between\b",
+                re.I), r"with \1 \2 gap"),
+    # "near to wall, on front side of it": in front of the wall
+    (re.compile(r"\b(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
+                r"front\s+side\s+of\s+it\b", re.I), r"in front of the \1"),
+    (re.compile(r"\b(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
+                r"back\s+side\s+of\s+it\b", re.I), r"behind the \1"),
+    (re.compile(r"\b(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
+                r"(left|right)\s+side\s+of\s+it\b", re.I), r"to the \2 of the \1"),
+    # "Wall is long 6 and high 3": the sizes of the one named
+    (re.compile(r"\b(" + _FAMILY_SAID + r")\s+(?:is|are)\s+(?=(?:long|high|tall|wide|deep)\s+\d)",
+                re.I), r"\1 "),
+    # "a square-based pyramid": a square pyramid
+    (re.compile(r"\bsquare[\s-]+based\b", re.I), "square"),
+    # "a cube with an edge length of 3": a block 3 on every side
+    (re.compile(r"\b(?:a\s+)?(?:big\s+|large\s+|solid\s+)?cube\s+(?:with\s+(?:an?\s+)?(?:edge|side)s?"
+                r"(?:\s+length)?\s+(?:of\s+)?|of\s+(?:edge|side)\s+(?:length\s+)?)(\d+)\b", re.I),
+     r"a \1 by \1 by \1 block"),
+    # "one that is half as high": one half as high
+    (re.compile(r"\b(one|another)\s+(?:that|which)\s+(?:is|are)\s+(?=(?:twice|half|double|\d+\s+times|"
+                r"one|two|a)\b)", re.I), r"\1 "),
+    # "a flat 6 wide and 4 high" (a stage's flat): a wall
+    (re.compile(r"\b(a|an|one|two|three|four|each|the|both)\s+flat(s?)\b(?=\s*(?:\d+\s*(?:cubes?\s+)?"
+                r"(?:wide|high|tall)\b|,|each\b|(?<=s)\s))", re.I), r"\1 wall\2"),
+    # "the table's line of symmetry", "the centre line": the middle across the table
+    (re.compile(r"\b(?:on|along|at)\s+(?:the\s+)?(?:table'?s\s+)?(?:line\s+of\s+symmetry|centre\s*line|"
+                r"center\s*line|middle\s+line)\b(?:\s*,\s*(?:the\s+one\s+)?(running\s+front\s+to\s+back))?",
+                re.I), r" in the centre \1 "),
+    # "From the desk of Mr. Harris:": a letterhead
+    (re.compile(r"\bfrom\s+the\s+desk\s+of\s+[^:]{1,40}:", re.I), " "),
+    # "a ring …, with a tower standing at its center": in its middle (not the table's)
+    (re.compile(r"\b(?:standing\s+|placed\s+|set\s+)?(?:at|in)\s+its\s+(?:very\s+)?(?:centre|center|"
+                r"middle)\b", re.I), " in the middle "),
+    # "with a tower in the middle, not touching the ring": inside it, clear of it anyway
+    (re.compile(r"\b(in\s+the\s+middle)\s*,?\s*(?:but\s+)?not\s+touching\s+(?:it|them|the\s+\w+)\b",
+                re.I), r"\1"),
+    # "then strike it and put a tower there instead": the one before taken back, then the new
+    (re.compile(r"\b(?:strike|remove|take\s+down|scrap|dismantle|clear\s+away|get\s+rid\s+of)\s+"
+                r"(?:it|that|this)\s+and\s+(?=(?:put|build|place|make|set|stand)\b)", re.I),
+     "undo that. then "),
     # "one cube back from it": that far behind it
     (re.compile(r"\b(\d+|a|one|two|three|four)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:back|away|out)\s+"
                 r"from\s+(it|them|that)\b", re.IGNORECASE), r"\1 \2 away from \3"),

@@ -99,6 +99,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             doc = parse(text)
             phrases, rels = find_phrases(doc)
             structures = fill_slots(phrases, rels, st, doc)
+    undone = [p.text for p in phrases if p.undone]
+    if not structures and undone:
+        raise SpecError(
+            f"'{command.strip()[:60]}' takes back the only thing it names: nothing is left to "
+            "build; say what to build instead",
+            understood={},
+        )
     if not structures:
         no_structure(st, doc, command)
     relations, drafts = relate(phrases, rels, structures, st)
@@ -296,10 +303,17 @@ def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
     parts inside each one."""
     spaced = any(n.endswith("as a part's width apart") for n in st.notes)
     between = _SIDE_BY_SIDE_GAP.search(st.command)  # "… side by side with a little gap"
-    if len(drafts) < 2 or not (spaced or between):
+    towers = any(d.shape == "tower" and d.gap_m is not None for d in drafts)
+    if len(drafts) < 2 or not (spaced or between or towers):
         return drafts
     out = []
     for d in drafts:
+        if d.shape == "tower" and d.gap_m is not None:
+            # "a tower of 4, with one block in between": a tower has no gaps of its own
+            st.gap_m = d.gap_m if st.gap_m is None else st.gap_m
+            st.notes.append(f"read the gap said with the tower as {d.gap_m:g} m between them")
+            out.append(d.model_copy(update={"gap_m": None}))
+            continue
         if d.shape in ("row", "grid") and d.gap_m is not None:
             if between and st.gap_m is None:
                 st.gap_m = d.gap_m

@@ -25,12 +25,14 @@ def copies(
     out = list(spec.structures)
     for k, s in enumerate(out):
         said = s.model_dump(include=set(_SIZES), exclude_defaults=True)
+        spacing = {k: v for k, v in said.items() if k == "gap_m"}  # how far apart: no size
+        said = {k: v for k, v in said.items() if k != "gap_m"}
         pool = [*(earlier or []), *out[:k]]
         first = next((o for o in reversed(pool) if o.shape == s.shape), None)
         if first is None or (said and not _BUT.search(text)):
             continue
         # "same again but back right, and 2 layers": the first's sizes, what is said instead
-        out[k] = s.model_copy(update={**first.model_dump(include=set(_SIZES)), **said})
+        out[k] = s.model_copy(update={**first.model_dump(include=set(_SIZES)), **said, **spacing})
         if said:
             changed = ", ".join(f"{key} {v}" for key, v in said.items())
             st.notes.append(f"another {s.shape}: the same size as the first but {changed}")
@@ -87,7 +89,8 @@ def named_ahead(
         return None
     pointed = [
         i for q in before if q.count and q.spec is not None
-        and re.match(r"^\W*(?:the|that|this)\s+\w+\W*$", q.text, re.IGNORECASE)
+        and (m2 := re.match(r"^\W*(?:(?:the|that|this)\s+)?(\w+)(?:\W|$)", q.text, re.IGNORECASE))
+        and lx.SHAPE_WORDS.get(m2.group(1).lower()) == family
         for i in range(q.first, q.first + q.count)
         if structures[i].shape == family
         and not structures[i].model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True)

@@ -1043,7 +1043,8 @@ _REWRITES += [
     (
         re.compile(
             r",?\s*\b(?:but\s+)?(?:(?:not|no|never|without)\s+touch(?:ing)?(?:\s+each\s+other|"
-            r"\s+one\s+another)?|spaced\s+out|spread\s+out|"
+            r"\s+one\s+another|\s+it|\s+them|\s+the\s+(?:ring|wall|row|tower|base|slab|enclosure))?|"
+            r"spaced\s+out|spread\s+out|"
             r"with\s+gaps?\s+between\s+them)\b",
             re.IGNORECASE,
         ),
@@ -1474,7 +1475,7 @@ _REWRITES += [
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
-            r"(?<=set)|(?<=lined\sup))\s+in\s+(?:a|one|a\s+single)\s+(?:straight\s+|neat\s+)?"
+            r"(?<=set)|(?<=lined\sup)|(?<=s,))\s+in\s+(?:a|one|a\s+single)\s+(?:straight\s+|neat\s+)?"
             r"(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
             r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:from\s+)?(?:the\s+)?"
@@ -1817,6 +1818,7 @@ _ARTICLES = frozenset({"a", "an", "another", "the", "it", "them", "one", "two", 
 
 _ONE_MORE = re.compile(
     r"(?<!\boff\s)(?<!\baway\s)"  # "take off one more": a change, not another structure
+    r"(?<!\bsecond\s)(?<!\bother\s)(?<!\bthird\s)"  # "the second one more": a size of it
     r"\b(?:and\s+|then\s+|plus\s+)?(?:just\s+)?one\s+more\b(?!\s+(?:cube|block|brick|part|level|"
     r"layer|step|row|course|tier|time|on|of)\w*)",
     re.IGNORECASE,

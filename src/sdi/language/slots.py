@@ -167,6 +167,15 @@ def fill_slots(
             st.notes.append(f"'{p.text}': more about the {spec.structures[0].shape} named before")
             p.count = 0
             continue
+        ordinal = _ORDINAL_OF.match(p.text)
+        family = lx.SHAPE_WORDS.get(ordinal.group(1).lower()) if ordinal else None
+        if family and sum(s.shape == family for s in structures) >= 2:
+            # "Two walls … The first wall has 2 cubes in the height": one of several named
+            # together, changed — SDI does not change one of them; never a new one
+            st.material.append(p.text)
+            st.notes.append(f"ignored '{p.text}': SDI cannot change one of several "
+                            f"{family}s named together; give each its own size")  # fmt: skip
+            continue
         p.spec = spec
         p.first = len(structures)
         p.count = len(spec.structures)
@@ -185,6 +194,11 @@ def fill_slots(
         st.material.append(text)
         st.notes.append(f"ignored '{text}': no structure named there")
     return structures
+
+
+_ORDINAL_OF = re.compile(
+    r"^\W*the\s+(?:first|second|third|fourth|last|other|left|right|front|back)\s+(\w+)", re.I
+)
 
 
 _COMPONENT = re.compile(r"\b(?:pillars?|legs?|posts?|supports?|uprights?|piers?)\b", re.I)

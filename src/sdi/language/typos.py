@@ -33,7 +33,8 @@ _KNOWN = frozenset(words.VOCABULARY)
 _FUNCTION = {"side", "sides", "then", "another", "other", "each", "every", "edge", "edges", "top",
              "bottom", "middle", "centre", "center", "after", "first", "second", "third", "last",
              "across", "along", "same", "space", "gap", "level", "layer", "inch", "inches",
-             "foot", "feet", "wait", "sorry", "tetris", "piece"}  # fmt: skip
+             "foot", "feet", "wait", "sorry", "tetris", "piece", "downstage",
+             "upstage"}  # fmt: skip
 _TARGETS = words.CORRECTABLE | _FUNCTION  # what a word may be corrected to
 _CHOICES = sorted(_TARGETS)
 
