@@ -2681,3 +2681,11 @@ def test_one_of_several_changed_is_reported_and_strike_takes_back():
     ring = read("a ring one cube high, 5 x 5 outside, with a single 3-high tower standing at its "
                 "center, not touching the ring.").spec  # fmt: skip
     assert [r.kind for r in ring.relations] == ["around"]
+
+
+def test_a_structure_named_in_passing_then_described_is_one():
+    s = read("I like a tower. Build a tower of 5.").spec
+    assert [x.height for x in s.structures] == [5]
+    # a place makes the first one of its own; so does "another"
+    assert len(read("a tower on the left. a tower of 5").spec.structures) == 2
+    assert len(read("I like a tower. Build another tower of 5.").spec.structures) == 2

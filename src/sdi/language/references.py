@@ -99,6 +99,33 @@ def named_ahead(
     return pointed[0] if len(pointed) == 1 and same == pointed else None
 
 
+def named_again(
+    p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
+) -> int | None:
+    """ "The kids want to see a bridge … could you do one with pillars about three cubes
+    tall": a structure named in passing (no size, no place) and then described in a later
+    clause is one structure, not two — unless the later words make it another ("another",
+    "second", a count)."""
+    if len(spec.structures) != 1 or set(re.findall(r"[a-z]+", p.text.lower())) & (
+        COPY_WORDS | {"two", "three", "four", "more", "also", "other", "both", "each"}
+    ):
+        return None
+    said = spec.structures[0]
+    if not said.model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True):
+        return None
+    same = [i for i, s in enumerate(structures) if s.shape == said.shape]
+    if len(same) != 1:
+        return None
+    first = structures[same[0]]
+    owner = next((q for q in before if q.count and q.first <= same[0] < q.first + q.count), None)
+    bare = not first.model_dump(
+        include=set(_SIZES) - {"part"} | {"region", "at_x", "at_y"}, exclude_defaults=True
+    )
+    if owner is None or owner.clause == p.clause or owner.count != 1 or not bare:
+        return None
+    return same[0]
+
+
 def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | None:
     """ "Steps: 5. Shape: staircase.": a bare family name in a later clause names the one
     structure described before, not a second one."""

@@ -15,6 +15,7 @@ from sdi.language.nouns import BEAMS, beam_only
 from sdi.language.references import (
     copies,
     definite,
+    named_again,
     named_ahead,
     pick_structure,
     refers_to,
@@ -160,6 +161,8 @@ def fill_slots(
         named = definite(p, spec, phrases[:k], structures)
         if named is None:
             named = named_ahead(p, spec, phrases[:k], structures)
+        if named is None:
+            named = named_again(p, spec, phrases[:k], structures)
         if named is not None:
             # "…; the staircase has 3 steps": more about the staircase named before
             said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
