@@ -2689,3 +2689,13 @@ def test_a_structure_named_in_passing_then_described_is_one():
     # a place makes the first one of its own; so does "another"
     assert len(read("a tower on the left. a tower of 5").spec.structures) == 2
     assert len(read("I like a tower. Build another tower of 5.").spec.structures) == 2
+
+
+def test_a_cross_by_its_arms_and_a_top_left_off_is_said():
+    (c,) = read("a cross with arms 2 cubes long").spec.structures
+    assert (c.shape, c.length) == ("cross", 5)
+    r = plan("a pyramid on a 4x4 base, but stop before the single top cube")
+    assert r.status == "partial"
+    assert plan("ok robot back online after e-stop reset, pls do bridge pillars 2 high").status == (
+        "success"
+    )

@@ -753,6 +753,22 @@ def _plate_position(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" on top of {groups[2]} "
 
 
+def _unmade(m: re.Match[str], st: ReadState, note: str) -> str:
+    """A part left off that the families cannot leave off ("stop before the top cube"): said."""
+    said = m.group(0).strip(" ,")
+    st.material.append(said)
+    st.notes.append(f"ignored '{said}': SDI builds the structure whole; say its size instead")
+    return " "
+
+
+def _cross_arms(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a cross with arms 2 cubes long": arms from the middle cube, so each bar is 5."""
+    said, groups = _said(m)
+    arm = int(words_to_numbers([groups[0]])[0])
+    st.notes.append(f"read '{said}' as arms of {arm} from the middle cube: bars of {2 * arm + 1}")
+    return f"cross {2 * arm + 1} wide "
+
+
 def _wall_edge(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "near to wall on back" with no wall named before: the table's back edge."""
     said, groups = _said(m)
@@ -833,6 +849,8 @@ HANDLERS: dict[str, Handler] = {
     "{part_size}": _part_size,
     "{offset}": _offset,
     "{wall_edge}": _wall_edge,
+    "{cross_arms}": _cross_arms,
+    "{unmade}": _unmade,
     "{plate_position}": _plate_position,
     "{progression}": _progression,
     "{keep_off}": _keep_off,

@@ -467,6 +467,24 @@ _REWRITES += [
         "{progression}",
         "",
     ),
+    (  # "a pyramid …, but stop before the single top cube": a top left off, which SDI cannot
+        re.compile(
+            r",?\s*\b(?:but\s+)?stop\s+(?:before|short\s+of)\s+(?:the\s+|its\s+)?(?:single\s+|very\s+)?"
+            r"(?:top|last)(?:\s+(?:cube|level|layer|one|tier))?\b",
+            re.IGNORECASE,
+        ),
+        "{unmade}",
+        "",
+    ),
+    (  # "a cross with arms 2 cubes long": each arm from the middle, a bar of 5
+        re.compile(
+            r"\bcross\s+with\s+(?:arms?|each\s+arm)\s+(?:of\s+)?(\d+|one|two|three|four)\s*(?:cubes?\s+)?"
+            r"(?:long\b)?",
+            re.IGNORECASE,
+        ),
+        "{cross_arms}",
+        "",
+    ),
     # "16 inches out from the robot", "8 inches left of the middle line": a coordinate
     (
         re.compile(
