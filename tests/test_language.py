@@ -2699,3 +2699,22 @@ def test_a_cross_by_its_arms_and_a_top_left_off_is_said():
     assert plan("ok robot back online after e-stop reset, pls do bridge pillars 2 high").status == (
         "success"
     )
+
+
+def test_parallel_walls_units_apart():
+    r = plan("Build two walls, each 5 long and 2 high, parallel to each other and 3 units apart.")
+    assert r.status == "success", r.notes
+    xs = sorted({round(o.position[0], 3) for o in r.layout.objects})
+    assert len(xs) == 2 and xs[1] - xs[0] == pytest.approx(0.20)  # one behind the other, 3 clear
+    assert len({round(o.position[1], 3) for o in r.layout.objects}) == 5
+
+
+def test_the_work_table_is_no_table_to_span_and_its_front_side():
+    r = read("Place three towers of heights 2, 4 and 2 in a straight line, 1 unit apart, symmetric "
+             "about the middle of the table.").spec  # fmt: skip
+    assert [x.height for x in r.structures] == [2, 4, 2] and r.gap_m == pytest.approx(0.05)
+    assert all(x.region is None for x in r.structures)  # a line stands centred anyway
+    s = read("Put a tower of five bricks on the table and a 2 by 2 block one brick away from it, "
+             "on its front side.").spec  # fmt: skip
+    (rel,) = s.relations
+    assert (rel.side, rel.gap_m) == ("front", pytest.approx(0.05))

@@ -84,6 +84,9 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
                        r"(\d+)\b"),
         ("parts", _N + r"(?:expected\s*:\s*)?(\d+)\s+(?:parts|cubes|blocks)\s+(?:in\s+)?(?:total|"
                        r"in\s+all|altogether|overall)\b"),
+        # long structures running the same way
+        ("parallel", _N + r"(?:(?:both|all|that\s+are|which\s+are|they\s+are)\s+)?parallel"
+                           r"(?:\s+to\s+(?:each\s+other|one\s+another))?\b(?!\s+to\s+the\b)"),
         # every structure as high as the others
         ("same", _N + r"(?:all\s+|both\s+)?(?:(?:of\s+)?the\s+)?same\s+height\b"
                       r"(?:\s+as\s+(?:each\s+other|one\s+another))?(?!\s+as\b)"),
@@ -99,6 +102,7 @@ _HOLDS = {
     "only": "only what is named is built",
     "count": "as many as said",
     "raised": "it stands on another structure",
+    "parallel": "they run the same way",
     "same": "every structure as high as the others",
 }
 _HOLLOW = frozenset({"enclosure", "castle", "u_shape"})
@@ -113,6 +117,8 @@ def take(text: str, st: ReadState) -> str:
                 return m.group(0)  # "three towers in total, each 2 high": they are named here
             if kind == "parts" and not _SIZED.search(m.string[: m.start()]):
                 return m.group(0)  # "a tower, 6 cubes in total": the tower's only size
+            if kind == "parallel" and st.line is None and not _RUNS_X.search(m.string):
+                st.line = "x"  # walls running left to right stand parallel one behind the other
             if kind == "same" and re.search(
                 r"\b(?:none|not|no|never|nor)\b[^,.;]*$", m.string[: m.start()], re.I
             ):
@@ -148,6 +154,15 @@ def _holds(kind: str, spec: Spec) -> bool:
         return hollow and not any(r.kind == "around" for r in spec.relations)
     if kind == "raised":
         return on_top
+    if kind == "parallel":
+        long = [s for s in spec.structures if s.shape in ("wall", "row")]
+        beside = [r for r in spec.relations if r.kind == "next_to"]
+        sides = {r.side for r in beside}
+        along = {s.axis or "y" for s in long}
+        # side by side across their length: behind or in front for walls running left-right
+        facing = sides <= ({"front", "back", None} if along == {"y"} else {"left", "right", None})
+        lined = (spec.line == "x") == (along == {"y"}) or bool(beside)
+        return len(long) >= 2 and len(along) == 1 and facing and lined
     if kind == "same":
         heights = {_height(s) for s in spec.structures}
         return len(spec.structures) >= 2 and len(heights) == 1 and None not in heights
@@ -158,6 +173,7 @@ def _height(s: StructureSpec) -> int | None:
     return getattr(s, "height", None) or (getattr(s, "count", None) if s.shape == "tower" else None)
 
 
+_RUNS_X = re.compile(r"\bfront\s+to\s+back\b|\balong\s+x\b|\bback\s+to\s+front\b", re.I)
 _SIZED = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.I)
 
 

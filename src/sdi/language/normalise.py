@@ -153,6 +153,9 @@ _SLAVIC = [
                 r"back\s+side\s+of\s+it\b", re.I), r"behind the \1"),
     (re.compile(r"\b(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
                 r"(left|right)\s+side\s+of\s+it\b", re.I), r"to the \2 of the \1"),
+    # "… one brick away from it, on its front side": in front of it
+    (re.compile(r"\b(?:on|at)\s+its\s+front\s+side\b", re.I), "in front of it"),
+    (re.compile(r"\b(?:on|at)\s+its\s+back\s+side\b", re.I), "behind it"),
     # "Wall is long 6 and high 3": the sizes of the one named
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+(?:is|are)\s+(?=(?:long|high|tall|wide|deep)\s+\d)",
                 re.I), r"\1 "),
@@ -184,6 +187,9 @@ _SLAVIC = [
     (re.compile(r"\b(?:strike|remove|take\s+down|scrap|dismantle|clear\s+away|get\s+rid\s+of)\s+"
                 r"(?:it|that|this)\s+and\s+(?=(?:put|build|place|make|set|stand)\b)", re.I),
      "undo that. then "),
+    # "3 units apart", "leave 2 units between them": a unit of the cube world is a cube
+    (re.compile(r"\b(\d+|one|two|three|four|five|six)\s+units?\b(?!\s+of\s+(?:measure|length))",
+                re.I), r"\1 cubes"),
     # "one cube back from it": that far behind it
     (re.compile(r"\b(\d+|a|one|two|three|four)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:back|away|out)\s+"
                 r"from\s+(it|them|that)\b", re.IGNORECASE), r"\1 \2 away from \3"),

@@ -32,7 +32,10 @@ def copies(
         if first is None or (said and not _BUT.search(text)):
             continue
         # "same again but back right, and 2 layers": the first's sizes, what is said instead
-        out[k] = s.model_copy(update={**first.model_dump(include=set(_SIZES)), **said, **spacing})
+        turned = {"axis": first.axis} if s.axis is None and first.axis else {}  # the same way
+        out[k] = s.model_copy(
+            update={**first.model_dump(include=set(_SIZES)), **said, **spacing, **turned}
+        )
         if said:
             changed = ", ".join(f"{key} {v}" for key, v in said.items())
             st.notes.append(f"another {s.shape}: the same size as the first but {changed}")

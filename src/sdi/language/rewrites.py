@@ -476,6 +476,15 @@ _REWRITES += [
         "{unmade}",
         "",
     ),
+    (  # "in a line, symmetric about the middle of the table": a line stands centred anyway
+        re.compile(
+            r",?\s*\bsymmetric(?:al(?:ly)?)?\s+(?:about|around|on|across)\s+(?:the\s+)?(?:middle|centre|"
+            r"center)(?:\s+line)?(?:\s+of\s+the\s+(?:table|workspace|cell))?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "'{0}': the structures stand centred on the table",
+    ),
     (  # "a cross with arms 2 cubes long": each arm from the middle, a bar of 5
         re.compile(
             r"\bcross\s+with\s+(?:arms?|each\s+arm)\s+(?:of\s+)?(\d+|one|two|three|four)\s*(?:cubes?\s+)?"

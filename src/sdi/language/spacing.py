@@ -71,7 +71,9 @@ def _spanning_named(said: list[str], beams: bool = False) -> bool:
     negated = {i + d for i, w in enumerate(said) if w in ("no", "without", "not") for d in (1, 2)}
     words = ("bridge", "span", "beam", "beams") if beams else ("bridge", "span")
     return any(
-        (lx.SHAPE_WORDS.get(w) in _SPANNING or w in words) and i not in negated
+        (lx.SHAPE_WORDS.get(w) in _SPANNING or w in words)
+        and i not in negated
+        and not (w in ("table", "tables") and i and said[i - 1] in ("the", "of"))  # the work table
         for i, w in enumerate(said)
     )
 
