@@ -2718,3 +2718,11 @@ def test_the_work_table_is_no_table_to_span_and_its_front_side():
              "on its front side.").spec  # fmt: skip
     (rel,) = s.relations
     assert (rel.side, rel.gap_m) == ("front", pytest.approx(0.05))
+
+
+def test_a_change_to_each_or_all_of_them_changes_every_one():
+    for said in ("three towers of 2, then add one more cube to each",
+                 "Make three towers of 2 and then make all of them one higher."):  # fmt: skip
+        assert [x.height for x in read(said).spec.structures] == [3, 3, 3], said
+    last = read("three towers of 2, then add one more cube to the last one").spec.structures
+    assert [x.height for x in last] == [2, 2, 3]

@@ -24,7 +24,9 @@ _UNIT = (
 )
 
 
-_REF = r"(?:it|them|the\s+\w+(?:\s+one)?)"
+_REF = (
+    r"(?:it|them|the\s+\w+(?:\s+one)?|each(?:\s+of\s+them|\s+one)?|all\s+of\s+them|them\s+all|both)"
+)
 
 
 # a change said on its own ("too much, half of that", "no, double it"), not a comparison that
@@ -111,7 +113,7 @@ MODIFY = [
     ),
     _op(_CHANGE_LEAD + r"(double|twice)\s+(?:that|it|this)\b" + _NO_NOUN, "*"),
     _op(
-        r"\bmake\s+(?:it|them|the\s+\w+)\s+"
+        r"\bmake\s+(?:it|them|the\s+\w+|all\s+of\s+them|them\s+all|each(?:\s+of\s+them)?|both)\s+"
         + _N
         + r"\s+(?:steps|cubes?\s+(?:high|tall)|levels?|layers?|high|tall|storeys?)\b",
         "=",
@@ -444,7 +446,20 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         update[f"{key}_m"] = None
     structures[index] = last.model_copy(update=update)
     was = f" (was {now})" if said else ""
+    if _EVERY.search(p.text) and target.count > 1 and index == _last_index(built):
+        # "three towers of 2, then add one more cube to each": all of them, alike
+        for i in range(target.first, target.first + target.count):
+            if structures[i].shape == last.shape and getattr(structures[i], key) == said:
+                structures[i] = structures[i].model_copy(update=update)
+        return f"each {last.shape} now has {key} {new}{was}"
     return f"the {last.shape} now has {key} {new}{was}"
+
+
+_EVERY = re.compile(
+    r"\b(?:to\s+each|each\s+of\s+them|all\s+of\s+them|them\s+all|every\s+one|each\s+one|"
+    r"both(?:\s+of\s+them)?|on\s+each|all\s+\w+s\b)",
+    re.IGNORECASE,
+)
 
 
 _CHANGES: dict[str, Change] = {
