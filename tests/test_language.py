@@ -2726,3 +2726,8 @@ def test_a_change_to_each_or_all_of_them_changes_every_one():
         assert [x.height for x in read(said).spec.structures] == [3, 3, 3], said
     last = read("three towers of 2, then add one more cube to the last one").spec.structures
     assert [x.height for x in last] == [2, 2, 3]
+
+
+def test_a_second_of_the_same_size_runs_the_same_way():
+    s = read("first a row of 4 going away from the robot, then a second row of 4 alongside it")
+    assert [(x.length, x.axis) for x in s.spec.structures] == [(4, "x"), (4, "x")]

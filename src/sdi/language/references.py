@@ -29,7 +29,12 @@ def copies(
         said = {k: v for k, v in said.items() if k != "gap_m"}
         pool = [*(earlier or []), *out[:k]]
         first = next((o for o in reversed(pool) if o.shape == s.shape), None)
-        if first is None or (said and not _BUT.search(text)):
+        if first is None:
+            continue
+        if said and not _BUT.search(text):
+            same = all(getattr(first, key) == v for key, v in said.items())
+            if same and s.axis is None and first.axis:  # "a second row of 4": the same way
+                out[k] = s.model_copy(update={"axis": first.axis})
             continue
         # "same again but back right, and 2 layers": the first's sizes, what is said instead
         turned = {"axis": first.axis} if s.axis is None and first.axis else {}  # the same way

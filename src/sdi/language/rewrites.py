@@ -1502,11 +1502,13 @@ _REWRITES += [
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
-            r"(?<=set)|(?<=lined\sup)|(?<=s,))\s+in\s+(?:a|one|a\s+single)\s+(?:straight\s+|neat\s+)?"
+            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,))\s+in\s+(?:a|one|a\s+single)\s+"
+            r"(?:straight\s+|neat\s+)?"
             r"(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
-            r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:from\s+)?(?:the\s+)?"
-            r"(?:front|back|left|right)\s+to\s+(?:the\s+)?(?:front|back|left|right)\b))",
+            r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:running\s+|going\s+)?"
+            r"(?:from\s+)?(?:the\s+)?(?:front|back|left|right)\s+to\s+(?:the\s+)?"
+            r"(?:front|back|left|right)\b))",
             re.IGNORECASE,
         ),
         "{in_a_row}",
