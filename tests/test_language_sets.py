@@ -1,7 +1,7 @@
 """The language evaluation sets: the raw-JSON geometry, the acceptance checks on hand-built
 layouts (each must pass the right layout and fail a wrong one), scoring, and the sets
 themselves — sizes, unique ids, no shared commands, and the frozen test set's hash. The
-second to eighteenth dev sets (dev2 … dev18) are held to the same checks and share no
+second to nineteenth dev sets (dev2 … dev19) are held to the same checks and share no
 command with any other set."""
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ from sdi.bench.language_dev15 import CASES as DEV15
 from sdi.bench.language_dev16 import CASES as DEV16
 from sdi.bench.language_dev17 import CASES as DEV17
 from sdi.bench.language_dev18 import CASES as DEV18
+from sdi.bench.language_dev19 import CASES as DEV19
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -265,6 +266,7 @@ SETS = {
     "dev16": (DEV16, 160, 8, 15),
     "dev17": (DEV17, 170, 8, 15),
     "dev18": (DEV18, 170, 8, 15),
+    "dev19": (DEV19, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -277,6 +279,7 @@ HARD = {
     "dev16": ("relation", "numbers", "dimensions", "sequence"),
     "dev17": ("relation", "numbers", "dimensions", "sequence"),
     "dev18": ("relation", "numbers", "dimensions", "sequence"),
+    "dev19": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -341,6 +344,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV16,
         *DEV17,
         *DEV18,
+        *DEV19,
         *TEST,
     ):
         out = case.accept(result)
@@ -379,6 +383,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev16.py",
         "language_dev17.py",
         "language_dev18.py",
+        "language_dev19.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
@@ -3025,5 +3030,155 @@ _L_ARMS4 = [*_row_y(0.40, 0.20, 4), *_row_x(0.45, 0.20, 3)]  # arms of 4 sharing
 )
 def test_dev18_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev18(case_id)
+    assert case.accept(right) is None
+    assert case.accept(wrong) is not None
+
+
+# ---------------------------------------------------------------- dev19
+
+
+def _dev19(case_id: str) -> Case:
+    return next(c for c in DEV19 if c.id == case_id)
+
+
+def _hurdle_y(x, y, legs):
+    """Two posts `legs` high at y ± one cube, a beam across them along y."""
+    return [*column(x, y - C, legs), *column(x, y + C, legs), beam(x, y, C * legs + C / 2, YAW90)]
+
+
+def _lifted(objs, dz):
+    return [{**c, "position": [*c["position"][:2], c["position"][2] + dz]} for c in objs]
+
+
+_TIERS_432 = [  # three tiers, two layers each: 4 by 4, 3 by 3, 2 by 2, centred on (0.475, 0.275)
+    *grid(0.40, 0.20, 4, 4, layers=2),
+    *grid(0.425, 0.225, 3, 3, layers=2, z0=2 * C),
+    *grid(0.45, 0.25, 2, 2, layers=2, z0=4 * C),
+]
+_WALL5X2_Y = [*_row_y(0.45, 0.20, 5), *_row_y(0.45, 0.20, 5, z0=C)]  # y 0.20–0.40
+
+
+@pytest.mark.parametrize(
+    ("case_id", "right", "wrong"),
+    [
+        (
+            "dev19-rel-04",  # podium in separate blocks: second on the left (+y), third right
+            res(*column(0.45, 0.40, 2), *column(0.45, 0.30, 3), *column(0.45, 0.20, 1)),
+            res(*column(0.45, 0.40, 1), *column(0.45, 0.30, 3), *column(0.45, 0.20, 2)),
+        ),
+        (
+            "dev19-rel-04",  # … or one stepped block, heights 2, 3, 1 from left to right
+            res(*_stairs_y(0.45, 0.25, (1, 3, 2))),
+            res(*_stairs_y(0.45, 0.25, (2, 3, 1))),  # mirrored: second place on the right
+        ),
+        (
+            "dev19-seq-05",  # "touching it on the left": one block only
+            res(*_stairs_y(0.45, 0.25, (1, 3, 2))),
+            res(*column(0.45, 0.40, 2), *column(0.45, 0.30, 3), *column(0.45, 0.20, 1)),
+        ),
+        (
+            "dev19-num-04",  # gold 4 in the middle, silver 3 on its left, bronze 2 on its right
+            res(*_stairs_y(0.45, 0.25, (2, 4, 3))),
+            res(*_stairs_y(0.45, 0.25, (3, 4, 2))),
+        ),
+        (
+            "dev19-dim-01",  # tiers 4 by 4, 3 by 3, 2 by 2, two layers each
+            res(*_TIERS_432),
+            res(*_TIERS_432[:41], *_lifted(_TIERS_432[50:], -C)),  # middle tier one layer
+        ),
+        (
+            "dev19-seq-01",  # a 1 by 1 tier two layers high on the middle of a 3 by 3 by 2
+            res(*grid(0.40, 0.25, 3, 3, layers=2), *column(0.45, 0.30, 2, z0=2 * C)),
+            res(*grid(0.40, 0.25, 3, 3, layers=2), *column(0.40, 0.25, 2, z0=2 * C)),
+        ),
+        (
+            "dev19-typo-09",  # "a weding cake with 3 teirs, each one smaler"
+            res(*_pyr(0.40, 0.25, 3)),
+            res(*_PYR2),
+        ),
+        (
+            "dev19-seq-03",  # three tiers less the top one: two tiers, here two layers each
+            res(*grid(0.40, 0.25, 3, 3, layers=2), *grid(0.425, 0.275, 2, 2, layers=2, z0=2 * C)),
+            res(*_pyr(0.40, 0.25, 3)),  # the top tier left on
+        ),
+        (
+            "dev19-num-06",  # '{"towers": [3, 5, 2]}': three towers, any arrangement
+            res(*column(0.30, 0.20, 3), *column(0.60, 0.45, 5), *column(0.45, 0.30, 2)),
+            res(*column(0.30, 0.20, 3), *column(0.60, 0.45, 5), *column(0.45, 0.30, 5)),
+        ),
+        (
+            "dev19-num-17",  # gap_cm=10: 10 cm clear (2 cubes) …
+            res(*[c for j in range(3) for c in column(0.45, 0.15 + 0.15 * j, 4)]),
+            res(*[c for j in range(3) for c in column(0.45, 0.10 + 0.20 * j, 4)]),  # 3 clear
+        ),
+        (
+            "dev19-num-17",  # … or 10 cm centre to centre (1 cube clear)
+            res(*[c for j in range(3) for c in column(0.45, 0.20 + 0.10 * j, 4)]),
+            res(*[c for j in range(3) for c in column(0.45, 0.20 + 0.10 * j, 3)]),
+        ),
+        (
+            "dev19-typo-03",  # "to towrs of for": two towers of four
+            res(*column(0.45, 0.20, 4), *column(0.45, 0.40, 4)),
+            res(*column(0.45, 0.30, 4)),
+        ),
+        (
+            "dev19-num-10",  # "ate blox in a rowe": a row of eight
+            res(*_row_y(0.45, 0.10, 8)),
+            res(*_row_y(0.45, 0.10, 5)),
+        ),
+        (
+            "dev19-rel-10",  # "rite next to it tuching": one structure, columns of 6 and 2
+            res(*column(0.45, 0.30, 6), *column(0.45, 0.35, 2)),
+            res(*column(0.45, 0.30, 6), *column(0.45, 0.40, 2)),
+        ),
+        (
+            "dev19-dim-06",  # a goal 2 wide, posts 3: a beam bearing on both posts …
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 3), beam(0.45, 0.275, 0.175, YAW90)),
+            res(*column(0.45, 0.25, 3), *column(0.45, 0.35, 3), beam(0.45, 0.30, 0.175, YAW90)),
+        ),
+        (
+            "dev19-dim-06",  # … or a crossbar of four cubes
+            res(*column(0.45, 0.20, 3), *column(0.45, 0.35, 3), *_row_y(0.45, 0.20, 4, z0=3 * C)),
+            res(*column(0.45, 0.20, 2), *column(0.45, 0.35, 2), *_row_y(0.45, 0.20, 4, z0=2 * C)),
+        ),
+        (
+            "dev19-rel-06",  # two hurdles "two cubes high", 3 clear along x: legs of 2 …
+            res(*_hurdle_y(0.30, 0.30, 2), *_hurdle_y(0.50, 0.30, 2)),
+            res(*_hurdle_y(0.30, 0.30, 2), *_hurdle_y(0.45, 0.30, 2)),  # 2 clear
+        ),
+        (
+            "dev19-rel-06",  # … or legs of 1 under a bar whose top is 2 cubes up
+            res(*_hurdle_y(0.30, 0.30, 1), *_hurdle_y(0.50, 0.30, 1)),
+            res(*_hurdle_y(0.30, 0.30, 3), *_hurdle_y(0.50, 0.30, 3)),
+        ),
+        (
+            "dev19-neg-11",  # three hurdles, the middle one two bare posts
+            res(
+                *_hurdle_y(0.30, 0.30, 2),
+                *column(0.45, 0.25, 2),
+                *column(0.45, 0.35, 2),
+                *_hurdle_y(0.60, 0.30, 2),
+            ),
+            res(*_hurdle_y(0.30, 0.30, 2), *_hurdle_y(0.45, 0.30, 2), *_hurdle_y(0.60, 0.30, 2)),
+        ),
+        (
+            "dev19-rel-13",  # a 3-tower touching the wall on its right (-y)
+            res(*_WALL5X2_Y, *column(0.45, 0.15, 3)),
+            res(*_WALL5X2_Y, *column(0.45, 0.45, 3)),
+        ),
+        (
+            "dev19-bad-09",  # 12 tiers: past the cell; refuse, or say what changed
+            {"status": "error", "layout": None},
+            res(*_pyr(0.40, 0.25, 3)),
+        ),
+        (
+            "dev19-bad-13",  # wholly in Hindi: a noted reading is honest, a silent one is not
+            res(*column(0.45, 0.30, 5), notes=["read as Hindi: a tower of five cubes"]),
+            res(*column(0.45, 0.30, 5)),
+        ),
+    ],
+)
+def test_dev19_predicates_on_hand_built_layouts(case_id, right, wrong):
+    case = _dev19(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
