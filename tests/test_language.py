@@ -2731,3 +2731,41 @@ def test_a_change_to_each_or_all_of_them_changes_every_one():
 def test_a_second_of_the_same_size_runs_the_same_way():
     s = read("first a row of 4 going away from the robot, then a second row of 4 alongside it")
     assert [(x.length, x.axis) for x in s.spec.structures] == [(4, "x"), (4, "x")]
+
+
+@pytest.mark.parametrize(
+    ("data", "shapes"),
+    [
+        ('{"shape": "tower", "count": 3, "height": 4}', [("tower", 4)] * 3),
+        ("- type: wall\n  length: 5\n  height: 2\n- type: tower\n  height: 3\n  behind: wall",
+         [("wall", 2), ("tower", 3)]),
+        ("towers: [2, 3, 4]\nspacing: 1", [("tower", 2), ("tower", 3), ("tower", 4)]),
+        ("n_towers=2\nheight=4\ngap_cm=10", [("tower", 4)] * 2),
+        ('// owner: @dmitri\n{"shape": "wall", "length": 4, "height": 3}', [("wall", 3)]),
+        ("```yaml\n# generated\nshape: staircase\nsteps: 3\n```", [("staircase", None)]),
+        ('{"shape": "pyramid", "levels": 3,}', [("pyramid", 3)]),
+        ("steps:\n  - build: {shape: tower, height: 3}\n  - add: {cubes: 2, to: tower}",
+         [("tower", 5)]),
+    ],
+)  # fmt: skip
+def test_commands_written_as_data_are_read(data, shapes):
+    r = read(data)
+    got = [(s.shape, getattr(s, "height", None)) for s in r.spec.structures]
+    assert got == shapes and any(n.startswith("read the data as") for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "words",
+    ["[ticket #882] [prio: low] Build: cross shape, 5x5. /cc @ops", "Spec: staircase, n=6 steps.",
+     "h=4, base 2x2, block", "Note: build a tower of 3"],
+)  # fmt: skip
+def test_words_with_brackets_or_colons_are_not_data(words):
+    from sdi.language.structured import looks_like_data
+
+    assert not looks_like_data(words)
+
+
+def test_malformed_data_is_refused_with_the_parsers_message():
+    r = plan('{"shape": "tower", "height": }')
+    assert r.status == "error" and "height" in (r.error or "")
+    assert "does not parse" in (plan('{"shape": "tower" "height": 3}').error or "")

@@ -40,7 +40,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import LimitError, SpecError
-from sdi.language import claims, coherence, corrections, scanned, spacing, typos
+from sdi.language import claims, coherence, corrections, scanned, spacing, structured, typos
 from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
@@ -72,7 +72,8 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             "the command is empty; say what to build, e.g. 'a 3-cube tower'", understood={}
         )
     st = ReadState(command, cell)
-    text, unscanned = scanned.unscan(courtesy(command))  # "bui1d a tovver 0f": a scanner's
+    text = structured.as_words(command, st.notes)  # '{"shape": "tower", "height": 4}'
+    text, unscanned = scanned.unscan(courtesy(text))  # "bui1d a tovver 0f": a scanner's
     text, corrected = typos.correct(text)
     corrected[:0] = unscanned
     text = normalise(text, st.notes)
