@@ -2769,3 +2769,19 @@ def test_malformed_data_is_refused_with_the_parsers_message():
     r = plan('{"shape": "tower", "height": }')
     assert r.status == "error" and "height" in (r.error or "")
     assert "does not parse" in (plan('{"shape": "tower" "height": 3}').error or "")
+
+
+def test_words_spelt_as_they_sound_and_a_childs_homophones():
+    r = read("a big towr of 6 and a litle won of 2 rite next to it tuching")
+    assert [x.height for x in r.spec.structures] == [6, 2]
+    (rel,) = r.spec.relations
+    assert rel.gap_m == 0.0 and any("sounds like" in n for n in r.notes)
+    assert read("a reely big brij with legs of 3").spec.structures[0].shape == "bridge"
+    s = read("sum stares of 3 steps that go up to the rite").spec.structures[0]
+    assert (s.shape, s.steps) == ("staircase", 3)
+    t = read("5 steps my stares shud have, going up to the back").spec.structures[0]
+    assert (t.shape, t.steps) == ("staircase", 5)  # "shud" is should, not a shed
+    # letters swapped stay a typo, gibberish and other languages sound like nothing
+    assert read("a rign 4 by 4").spec.structures[0].shape == "enclosure"
+    assert plan("jjjjjjj kkk").status == "error"
+    assert plan("haz una torre de cinco cubos por favor").status == "error"

@@ -312,6 +312,9 @@ _SHORTHAND = [
     (re.compile(r"\bdunno\b", re.I), "I do not know"),
     (re.compile(r"\blil\b", re.I), "little"),
     (re.compile(r"\bsmth\b|\bsth\b", re.I), "something"),
+    (re.compile(r"\bshud\b", re.I), "should"),
+    (re.compile(r"\bwud\b", re.I), "would"),
+    (re.compile(r"\bcud\b", re.I), "could"),
     (re.compile(r"\bcn\s+u\b", re.I), "can you"),
     (re.compile(r"\b(?:u|ya)\s+(?=pick|choose|decide)", re.I), "you "),
     (re.compile(r"\b(\d+)\s*x\s+(?=[a-z]{3,})(?!by\b|cubes?\b)", re.I), r"\1 "),
@@ -429,6 +432,31 @@ _HOMOPHONES = [
     (re.compile(r"\bfor\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "four "),
     (re.compile(r"(?<=\bof\s)for\s*$", re.I), "four"),
     (re.compile(r"\bate\s+(?=" + _COUNTED + r"\b)", re.I), "eight "),
+    # a child's spelling by ear: "a litle won", "fore towrs", "on the rite", "sum stares"
+    (
+        re.compile(
+            r"(?<!\bi\s)(?<!\bwe\s)(?<!\bhas\s)(?<!\bhave\s)(?<!\bhad\s)\bwon\b"
+            r"(?=\s+(?:of|more|cube|block|on|next|rite|right|left)\b|\s*[!.,]|\s*$)",
+            re.I,
+        ),
+        "one",
+    ),
+    (re.compile(r"\bfore\s+(?=" + _COUNTED + r"\b)", re.I), "four "),
+    (
+        re.compile(
+            r"\bsum\b(?=\s+(?:stairs|stares|steps|cubes|blocks|towers?|things?|bricks)\b)", re.I
+        ),
+        "some",
+    ),
+    (re.compile(r"(?<=\bthe\s)rite\b|\brite\b(?=\s+(?:next|side|of|hand)\b)", re.I), "right"),
+    (re.compile(r"(?<=\bto\s)rite\b|(?<=\bon\s)rite\b", re.I), "right"),
+    (
+        re.compile(
+            r"(?:(?<=\bsum\s)|(?<=\bsome\s)|(?<=\bthe\s)|(?<=\bmy\s)|(?<=\bof\s))stares\b", re.I
+        ),
+        "stairs",
+    ),
+    (re.compile(r"\bstares\b(?=\s+(?:of|with|that|go|going)\b)", re.I), "stairs"),
     (re.compile(r"\bsick\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "six "),
     # a speech recogniser's numbers: "a wall for long to high", "a tower of to in front of
     # it", "tree levels", "just won cube" (a number word where only a number fits)

@@ -15,6 +15,7 @@ import re
 from functools import cache
 from importlib import resources
 
+import jellyfish
 from rapidfuzz import fuzz, process
 from rapidfuzz.distance import DamerauLevenshtein
 
@@ -83,6 +84,34 @@ def _slot_word(w: str, m: re.Match[str]) -> str | None:
     return hits[0] if len(hits) == 1 else plural[0] if len(plural) == 1 else None
 
 
+@cache
+def _by_sound() -> dict[str, list[str]]:
+    """The words a misspelling may stand for, by their Metaphone key (jellyfish)."""
+    out: dict[str, list[str]] = {}
+    for word in sorted(_TARGETS | _SPOKEN):
+        if word.isalpha() and len(word) >= 3:
+            out.setdefault(jellyfish.metaphone(word), []).append(word)
+    return out
+
+
+_TEXTED = frozenset({"shud", "wud", "cud", "smth", "pls", "plz", "thx", "lil", "dunno"})
+"""Words of a text message the normaliser expands ("shud" is should, not a shed)."""
+
+_SPOKEN = frozenset({"really", "something", "please", "small", "touching", "instead", "knock",
+                     "should", "goes", "podium", "crossbar", "goalposts", "blocks", "stairs",
+                     "smaller", "wedding", "pancakes", "tiers", "each", "make"})  # fmt: skip
+"""Everyday words a child or a hurried writer spells by ear, beside the lexicon's own."""
+
+
+def _sounds_like(w: str) -> str | None:
+    """The one known word that sounds like `w` (Metaphone), if there is exactly one — of a
+    word with a vowel ("jjjjjjj" sounds like nothing)."""
+    if len(w) < 4 or not re.search(r"[aeiouy]", w) or re.search(r"(.)\1\1", w):
+        return None
+    same = _by_sound().get(jellyfish.metaphone(w), [])
+    return same[0] if len(same) == 1 else None
+
+
 def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     """`text` with typos replaced, and a note per correction. `aggressive` also corrects
     words the English vocabulary knows ("wal"), for a command nothing else could read."""
@@ -91,7 +120,12 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     def fix(m: re.Match[str]) -> str:
         raw = m.group(0)
         w = raw.lower()
-        if len(w) < 3 or w in _KNOWN or m.string[m.end() : m.end() + 1] in ("'", "’"):
+        if (
+            len(w) < 3
+            or w in _KNOWN
+            or w in _TEXTED
+            or m.string[m.end() : m.end() + 1] in ("'", "’")
+        ):
             return raw  # "aren't", "couldn't": a word of a contraction, not a typo
         if len(w) == 3:  # three letters: only a swap of two neighbours ("teh")
             swaps = {w[:i] + w[i + 1] + w[i] + w[i + 2 :] for i in range(2)}
@@ -119,6 +153,10 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             w, choices_here, scorer=DamerauLevenshtein.distance, score_cutoff=limit, limit=3
         )
         if not found:
+            heard = None if _vocab_has(w) else _sounds_like(w)
+            if heard:  # "brij", "blox", "sumthing": spelt as it sounds
+                notes.append(f"corrected '{raw}' to '{heard}' (it sounds like it)")
+                return heard
             return raw
         if any(w.startswith(c) and w[len(c) :] in _SUFFIXES for c, _, _ in found):
             return raw  # "chunky", "stacked": a derived form of a word, not a typo
@@ -139,6 +177,14 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             if len(ranked) > 1 and fuzz.ratio(w, ranked[0]) == fuzz.ratio(w, ranked[1]):
                 return raw
             top = ranked[:1]
+        heard = None if _vocab_has(w) else _sounds_like(w)
+        if (
+            heard
+            and heard != top[0]
+            and sorted(top[0]) != sorted(w)  # "rign": letters swapped, not a sound
+            and jellyfish.metaphone(top[0]) != jellyfish.metaphone(w)
+        ):
+            top = [heard]  # "blox" sounds like blocks, not box
         if (
             aggressive
             and _vocab_has(w)
