@@ -55,26 +55,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _either(*rels: k.Rel) -> k.Rel:
-    """Any one of the relations holds between A and B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        first: k.Reason = None
-        for r in rels:
-            why = r(a, b)
-            if why is None:
-                return None
-            first = first or why
-        return first
-
-    return rel
-
-
-def _gaps(*ns: int, side: str | None = None) -> k.Rel:
-    """A and B are one of `ns` cubes apart (clear, ± 1.5 cm); A on `side` of B when given."""
-    return _either(*[k.gap_of(n, side) for n in ns])
-
-
 def _apart(lo: float, hi: float | None = None) -> k.Rel:
     """A and B are at least `lo` m (and at most `hi` m, when given) apart, clear."""
 
@@ -98,20 +78,6 @@ def _either_way(*checks: k.Check, max_gap: float | None = None) -> k.Pred:
     )
 
 
-def _some(*checks: k.Check) -> k.Pred:
-    """Some separate structure of the layout passes every check."""
-    both = k.all_of(*checks)
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = k.separate_structures(result)
-        if isinstance(comps, str):
-            return comps
-        reasons = [both(g) for g in comps]
-        return None if None in reasons else f"no structure fits: {reasons[0]}"
-
-    return f
-
-
 def _gap_between(check: k.Check, n: int, axis: str | None = None) -> k.Pred:
     """Exactly two structures pass `check`; they are `n` cubes apart (clear, ± 1.5 cm), side
     by side along `axis` ("x" front–back, "y" left–right) when given."""
@@ -131,31 +97,6 @@ def _gap_between(check: k.Check, n: int, axis: str | None = None) -> k.Pred:
             if bx.side_of(two[0], two[1]) not in line:
                 return f"not side by side along {axis}"
         return None
-
-    return f
-
-
-def _on_every_side(mid: k.Check, arm: k.Check, gap: int) -> k.Pred:
-    """Five structures: one passing `mid`, and four passing `arm`, one on each of its sides
-    (left, right, front, back), each `gap` cubes clear of it (± 1.5 cm)."""
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = k.separate_structures(result)
-        if isinstance(comps, str):
-            return comps
-        if len(comps) != 5:
-            return f"{len(comps)} separate structures, want 5"
-        first: k.Reason = None
-        for i, c in enumerate(comps):
-            others = comps[:i] + comps[i + 1 :]
-            r = mid(c) or next((arm(o) for o in others if arm(o)), None)
-            r = r or next((k.gap_of(gap)(o, c) for o in others if k.gap_of(gap)(o, c)), None)
-            if r is None and {bx.side_of(o, c) for o in others} != set(k.SIDES):
-                r = "not one on each side"
-            if r is None:
-                return None
-            first = first or r
-        return first
 
     return f
 
@@ -194,40 +135,6 @@ def _collinear(result: Mapping[str, Any]) -> k.Reason:
     return "not in one straight line"
 
 
-def _upper_side(side: str, z: int) -> k.Check:
-    """The parts from `z` cubes up lie to `side` of the structure's footprint centre."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        upper = [b for b in bs if b.lo[2] >= z * bx.CUBE - bx.TOL]
-        if not upper:
-            return f"nothing from {z} cubes up"
-        got = bx.sides(upper, bs, margin=0.01)
-        return None if side in got else f"the tall part is {sorted(got) or 'central'}, not {side}"
-
-    return f
-
-
-def _with_column(h: int, rest: k.Check) -> k.Check:
-    """One structure: a full column of exactly `h` cubes standing on the table, touching the
-    rest, which passes `rest` (a tower set down against another structure)."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        first: k.Reason = None
-        for col in bx.columns(bs):
-            if len(col) != h or k.tower(h)(col) is not None or col[0].lo[2] > bx.TOL:
-                continue
-            others = [b for b in bs if all(b is not c for c in col)]
-            if not others:
-                continue
-            r = rest(others)
-            if r is None:
-                return None
-            first = first or r
-        return first or f"no {h}-cube column against the rest"
-
-    return f
-
-
 def _ring_clear(n: int) -> k.Rel:
     """A (a ring) surrounds B, centred on it, with exactly `n` cubes of free floor between B's
     footprint and the ring on every side."""
@@ -253,16 +160,6 @@ def _at_high_end(a: k.Boxes, b: k.Boxes) -> k.Reason:
     if bx.side_of(a, b) != up:
         return f"A is {bx.side_of(a, b)} of the stairs, which climb towards {up}"
     return _apart(0.035, 0.25)(a, b)
-
-
-def _min_x(x: float) -> k.Check:
-    """Every part lies at x ≥ `x` (m), i.e. that far back from the robot or more."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        lo = min(b.lo[0] for b in bs)
-        return None if lo >= x - bx.TOL else f"a part reaches x {lo:.3f}, want ≥ {x}"
-
-    return f
 
 
 def _min_y(y: float) -> k.Check:
@@ -381,7 +278,7 @@ CASES: list[Case] = [
         REL,
         "cn u make a lil wall 3 long 2 high n stick a tower of 4 right behind the middle of it "
         "touching",
-        one(k.plan_heights("222", ".4."), _upper_side(_B, 2)),
+        one(k.plan_heights("222", ".4."), k.upper_side(_B, 2)),
     ),
     _c(
         "rel-12",
@@ -432,15 +329,15 @@ CASES: list[Case] = [
         "one high, dead centre between them.",
         k.all_of(
             k.between_(PALLET22, T(3)),
-            _some(T(3), reg("left")),
-            _some(T(3), reg("right")),
+            k.some(T(3), reg("left")),
+            k.some(T(3), reg("right")),
         ),
     ),
     _c(
         "rel-18",
         REL,
         "block(2,2,2) at workspace centre; tower(h=3) on each of its 4 sides, clearance 1 cube",
-        _on_every_side(k.all_of(k.block(2, 2, 2), reg("centre")), T(3), 1),
+        k.on_every_side(k.all_of(k.block(2, 2, 2), reg("centre")), T(3), 1),
     ),
     _c(
         "rel-19",
@@ -460,7 +357,7 @@ CASES: list[Case] = [
         REL,
         "I require two walls, each 250 mm long and 100 mm high, parallel to one another and "
         "100 mm apart, so as to form a corridor leading away from me.",
-        k.pair(WALL_X, WALL_X, _either(k.parallel_gap(2), k.parallel_gap(1))),
+        k.pair(WALL_X, WALL_X, k.either(k.parallel_gap(2), k.parallel_gap(1))),
     ),
     _c(
         "rel-22",
@@ -800,7 +697,7 @@ CASES: list[Case] = [
         "neg-04",
         NEG,
         "Two columns of three cubes, not joined at the top in any way, 100 mm apart.",
-        k.pair(T(3), T(3), _gaps(1, 2)),
+        k.pair(T(3), T(3), k.gaps(1, 2)),
     ),
     _c(
         "neg-05",
@@ -867,7 +764,7 @@ CASES: list[Case] = [
         "typo-05",
         TYP,
         "Tower of 4, keep it clera of the frnot edge.",
-        one(T(4), _min_x(0.245)),
+        one(T(4), k.min_x(0.245)),
     ),
     _c(
         "typo-06",
@@ -943,7 +840,7 @@ CASES: list[Case] = [
         "next to the pyramid a tower of 5 pls, pyramid 3 levels",
         k.any_of(
             k.pair(T(5), k.pyramid(3), _near),
-            one(_with_column(5, k.pyramid(3))),
+            one(k.with_column(5, k.pyramid(3))),
         ),
     ),
     # ------------------------------------------------------------------ filler
@@ -1083,7 +980,7 @@ CASES: list[Case] = [
         "reg-13",
         REG,
         "Tower of 6 dead centre, and nothing within 10 cm of the robot-side edge.",
-        one(T(6), reg("centre"), _min_x(0.295)),
+        one(T(6), reg("centre"), k.min_x(0.295)),
     ),
     _c(
         "reg-14",
@@ -1117,7 +1014,7 @@ CASES: list[Case] = [
         OPEN,
         "Any structure you like, provided it is no taller than 20 cm and stays out of the front "
         "quarter of the table.",
-        k.all_of(k.anything, k.layout(k.all_of(k.low(4), _min_x(0.345)))),
+        k.all_of(k.anything, k.layout(k.all_of(k.low(4), k.min_x(0.345)))),
     ),
     _c(
         "open-06",

@@ -45,8 +45,6 @@ beam 0.15 m; left = +y, back = +x (away from the robot at x = 0, y = 0.30).
 from __future__ import annotations
 
 import itertools
-from collections.abc import Mapping
-from typing import Any
 
 from sdi.bench import boxes as bx
 from sdi.bench import language_checks as k
@@ -64,36 +62,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 
 
 # ---------------------------------------------------------------- local checks
-
-
-def _either(*rels: k.Rel) -> k.Rel:
-    """Any one of the relations holds between A and B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        first: k.Reason = None
-        for r in rels:
-            why = r(a, b)
-            if why is None:
-                return None
-            first = first or why
-        return first
-
-    return rel
-
-
-def _gaps(*ns: int, side: str | None = None) -> k.Rel:
-    """A and B are one of `ns` cubes apart (clear, ± 1.5 cm); A on `side` of B when given."""
-    return _either(*[k.gap_of(n, side) for n in ns])
-
-
-def _within(hi: float) -> k.Rel:
-    """A and B are separate and no more than `hi` m apart, clear."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        gap = bx.separation(a, b)
-        return None if 0 < gap <= hi else f"{gap:.3f} m apart, want 0–{hi} m"
-
-    return rel
 
 
 def _partly(side: str) -> k.Rel:
@@ -117,79 +85,6 @@ def _either_way(*checks: k.Check) -> k.Pred:
     )
 
 
-def _some(*checks: k.Check) -> k.Pred:
-    """Some separate structure of the layout passes every check."""
-    both = k.all_of(*checks)
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = k.separate_structures(result)
-        if isinstance(comps, str):
-            return comps
-        reasons = [both(g) for g in comps]
-        return None if None in reasons else f"no structure fits: {reasons[0]}"
-
-    return f
-
-
-def _on_every_side(mid: k.Check, arm: k.Check, gap: int) -> k.Pred:
-    """Five structures: one passing `mid`, and four passing `arm`, one on each of its sides
-    (left, right, front, back), each `gap` cubes clear of it (± 1.5 cm)."""
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = k.separate_structures(result)
-        if isinstance(comps, str):
-            return comps
-        if len(comps) != 5:
-            return f"{len(comps)} separate structures, want 5"
-        first: k.Reason = None
-        for i, c in enumerate(comps):
-            others = comps[:i] + comps[i + 1 :]
-            r = mid(c) or next((arm(o) for o in others if arm(o)), None)
-            r = r or next((k.gap_of(gap)(o, c) for o in others if k.gap_of(gap)(o, c)), None)
-            if r is None and {bx.side_of(o, c) for o in others} != set(k.SIDES):
-                r = "not one on each side"
-            if r is None:
-                return None
-            first = first or r
-        return first
-
-    return f
-
-
-def _upper_side(side: str, z: int) -> k.Check:
-    """The parts from `z` cubes up lie to `side` of the structure's footprint centre."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        upper = [b for b in bs if b.lo[2] >= z * bx.CUBE - bx.TOL]
-        if not upper:
-            return f"nothing from {z} cubes up"
-        got = bx.sides(upper, bs, margin=0.01)
-        return None if side in got else f"the tall part is {sorted(got) or 'central'}, not {side}"
-
-    return f
-
-
-def _with_column(h: int, rest: k.Check) -> k.Check:
-    """One structure: a full column of exactly `h` cubes standing on the table, touching the
-    rest, which passes `rest` (a tower set down against another structure)."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        first: k.Reason = None
-        for col in bx.columns(bs):
-            if len(col) != h or k.tower(h)(col) is not None or col[0].lo[2] > bx.TOL:
-                continue
-            others = [b for b in bs if all(b is not c for c in col)]
-            if not others:
-                continue
-            r = rest(others)
-            if r is None:
-                return None
-            first = first or r
-        return first or f"no {h}-cube column against the rest"
-
-    return f
-
-
 def _beyond_top(n: int) -> k.Rel:
     """A stands beyond the end B (a staircase) climbs towards, `n` cubes clear (± 1.5 cm)."""
 
@@ -202,16 +97,6 @@ def _beyond_top(n: int) -> k.Rel:
         return k.gap_of(n)(a, b)
 
     return rel
-
-
-def _min_x(x: float) -> k.Check:
-    """Every part lies at x ≥ `x` (m), i.e. that far back from the robot or more."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        lo = min(b.lo[0] for b in bs)
-        return None if lo >= x - bx.TOL else f"a part reaches x {lo:.3f}, want ≥ {x}"
-
-    return f
 
 
 def _reaches_x(x: float) -> k.Check:
@@ -331,7 +216,7 @@ CASES: list[Case] = [
         REL,
         "tower of 3 in the middle. now a tower of 5 behind it. no wait, in front of it. leave a "
         "cube gap.",
-        k.all_of(k.pair(T(5), T(3), k.gap_of(1, _F)), _some(T(3), reg("centre"))),
+        k.all_of(k.pair(T(5), T(3), k.gap_of(1, _F)), k.some(T(3), reg("centre"))),
     ),
     _c(
         "rel-05",
@@ -385,7 +270,7 @@ CASES: list[Case] = [
         "rel-12",
         REL,
         "drop an O-piece and an I-piece side by side with a little gap",
-        k.pair(O_PIECE, I_PIECE, _within(0.15)),
+        k.pair(O_PIECE, I_PIECE, k.within(0.15)),
     ),
     _c(
         "rel-13",
@@ -432,7 +317,7 @@ CASES: list[Case] = [
         REL,
         "make a row of 5 along the front, left to right. then a tower of 3 on the middle cube. "
         "actually, on the last cube on the right.",
-        one(k.plan_heights("11114"), k.runs("y"), _upper_side(_R, 1), reg("front")),
+        one(k.plan_heights("11114"), k.runs("y"), k.upper_side(_R, 1), reg("front")),
     ),
     _c(
         "rel-20",
@@ -452,7 +337,7 @@ CASES: list[Case] = [
         REL,
         "build a 5-stack in the middle and surround it with four 2-stacks, one on each side, a "
         "block of space each",
-        _on_every_side(k.all_of(T(5), reg("centre")), T(2), 1),
+        k.on_every_side(k.all_of(T(5), reg("centre")), T(2), 1),
     ),
     _c(
         "rel-23",
@@ -570,9 +455,9 @@ CASES: list[Case] = [
         k.any_of(
             k.all_of(
                 k.pair(T(4), k.pyramid(3), k.all_rels(k.on_side(_L), _near)),
-                _some(k.pyramid(3), reg("centre")),
+                k.some(k.pyramid(3), reg("centre")),
             ),
-            one(_with_column(4, k.pyramid(3))),
+            one(k.with_column(4, k.pyramid(3))),
         ),
     ),
     _c(
@@ -831,7 +716,7 @@ CASES: list[Case] = [
         "neg-03",
         NEG,
         "Two tower of 4, they must not touch, the distance is not more of 10 cm.",
-        k.pair(T(4), T(4), _within(0.115)),
+        k.pair(T(4), T(4), k.within(0.115)),
     ),
     _c(
         "neg-04",
@@ -843,7 +728,7 @@ CASES: list[Case] = [
         "neg-05",
         NEG,
         "Reject if any part is within 10 cm of the front edge. Required: a 2 x 2 block, 3 high.",
-        one(k.block(2, 2, 3), _min_x(0.30)),
+        one(k.block(2, 2, 3), k.min_x(0.30)),
     ),
     _c(
         "neg-06",
@@ -931,7 +816,7 @@ CASES: list[Case] = [
         "typo-12",
         TYP,
         "put two 8 incg towers 4 inchs apart",
-        k.pair(T(4), T(4), _gaps(1, 2)),  # 4 in clear ≈ 2 cubes, or centre to centre ≈ 1 clear
+        k.pair(T(4), T(4), k.gaps(1, 2)),  # 4 in clear ≈ 2 cubes, or centre to centre ≈ 1 clear
     ),
     _c("typo-13", TYP, "make me a tetirs T-peice", one(T_PIECE)),
     # ------------------------------------------------------------------ word order
@@ -1034,7 +919,7 @@ CASES: list[Case] = [
         FIL,
         "Okay, the boss wants this by lunch so no pressure, ha. Two stacks, 6 inches each, about "
         "4 inches apart, side by side. Appreciate ya.",
-        k.pair(T(3), T(3), _gaps(1, 2)),
+        k.pair(T(3), T(3), k.gaps(1, 2)),
     ),
     _c(
         "fil-07",

@@ -74,36 +74,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _either(*rels: k.Rel) -> k.Rel:
-    """Any one of the relations holds between A and B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        first: k.Reason = None
-        for r in rels:
-            why = r(a, b)
-            if why is None:
-                return None
-            first = first or why
-        return first
-
-    return rel
-
-
-def _gaps(*ns: int, side: str | None = None) -> k.Rel:
-    """A and B are one of `ns` cubes apart (clear, ± 1.5 cm); A on `side` of B when given."""
-    return _either(*[k.gap_of(n, side) for n in ns])
-
-
-def _within(hi: float) -> k.Rel:
-    """A and B are separate and no more than `hi` m apart, clear."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        gap = bx.separation(a, b)
-        return None if 0 < gap <= hi else f"{gap:.3f} m apart, want 0–{hi} m"
-
-    return rel
-
-
 def _offset(dx: int, dy: int) -> k.Rel:
     """A's footprint centre lies `dx` cubes along x and `dy` along y from B's (± 1 cm)."""
 
@@ -114,29 +84,6 @@ def _offset(dx: int, dy: int) -> k.Rel:
         return None
 
     return rel
-
-
-def _some(*checks: k.Check) -> k.Pred:
-    """Some separate structure of the layout passes every check."""
-    both = k.all_of(*checks)
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = k.separate_structures(result)
-        if isinstance(comps, str):
-            return comps
-        reasons = [both(g) for g in comps]
-        return None if None in reasons else f"no structure fits: {reasons[0]}"
-
-    return f
-
-
-def _line(*checks: k.Check, gaps: tuple[int, ...] = ()) -> k.Pred:
-    """The structures in a line along x or y, in this order or the reverse (neighbours one of
-    `gaps` cubes apart, when given)."""
-    rev = checks[::-1]
-    return k.any_of(
-        *[k.in_order(axis, *cs, gaps=gaps) for axis in ("x", "y") for cs in (checks, rev)]
-    )
 
 
 def _centre_y_min(lo: float) -> k.Check:
@@ -423,7 +370,7 @@ CASES: list[Case] = [
         "rel-08",
         REL,
         "Bui1d a tovver of 4 and a 5econd tovver of 2, l0 crn apart.",
-        k.pair(T(4), T(2), _gaps(1, 2)),  # 10 cm clear = 2 cubes; centre to centre = 1 clear
+        k.pair(T(4), T(2), k.gaps(1, 2)),  # 10 cm clear = 2 cubes; centre to centre = 1 clear
     ),
     _c(
         "rel-09",
@@ -431,7 +378,7 @@ CASES: list[Case] = [
         "PIace a pyrarnid of 3 leve1s in the rniddle and a tovver of 3 in fr0nt of it.",
         k.all_of(
             k.pair(T(3), k.pyramid(3), k.all_rels(k.on_side(_F), _near)),
-            _some(k.pyramid(3), reg("centre")),
+            k.some(k.pyramid(3), reg("centre")),
         ),
     ),
     _c(
@@ -439,7 +386,7 @@ CASES: list[Case] = [
         REL,
         "Build two walls, each 5 long and 2 high, parallel to each other and 3 units apart.",
         k.pair(  # 3 clear between the faces, or 3 between the walls' centre lines (2 clear)
-            k.wall(5, 2), k.wall(5, 2), _either(k.parallel_gap(3), k.parallel_gap(2))
+            k.wall(5, 2), k.wall(5, 2), k.either(k.parallel_gap(3), k.parallel_gap(2))
         ),
     ),
     _c(
@@ -461,7 +408,7 @@ CASES: list[Case] = [
         REL,
         "Place three towers of heights 2, 4 and 2 in a straight line, 1 unit apart, symmetric "
         "about the middle of the table.",
-        k.all_of(_line(T(2), T(4), T(2), gaps=(1,)), _some(T(4), reg("centre"))),
+        k.all_of(k.line(T(2), T(4), T(2), gaps=(1,)), k.some(T(4), reg("centre"))),
     ),
     _c(
         "rel-14",
@@ -492,7 +439,7 @@ CASES: list[Case] = [
         REL,
         "Put two towers from 4 cubes, distance between them three cubes, and in middle between "
         "them one small tower from 2 cubes.",
-        _line(T(4), T(2), T(4), gaps=(1,)),
+        k.line(T(4), T(2), T(4), gaps=(1,)),
     ),
     _c(
         "rel-18",
@@ -519,7 +466,7 @@ CASES: list[Case] = [
         REL,
         "Put a 3-high tower stage left of a 4-wide flat 2 high, not touching it.",
         # a bare "stage left": the performer's left (the robot's right) or the robot's left
-        k.pair(T(3), k.wall(4, 2), k.all_rels(_either(k.on_side(_L), k.on_side(_R)), _near)),
+        k.pair(T(3), k.wall(4, 2), k.all_rels(k.either(k.on_side(_L), k.on_side(_R)), _near)),
     ),
     _c(
         "rel-22",
@@ -749,13 +696,13 @@ CASES: list[Case] = [
         NUM,
         "Make a rack of 4 positions in a line, one cube gap between positions, with stacks 1, "
         "2, 3 and 4 high in that order.",
-        _line(T(1), T(2), T(3), T(4), gaps=(1,)),
+        k.line(T(1), T(2), T(3), T(4), gaps=(1,)),
     ),
     _c(
         "num-16",
         NUM,
         "Build a tower of 6 and next to it one that is half as high, with a small gap.",
-        k.pair(T(3), T(6), _within(0.15)),
+        k.pair(T(3), T(6), k.within(0.15)),
     ),
     _c(
         "num-17",
@@ -780,7 +727,7 @@ CASES: list[Case] = [
         "num-21",
         NUM,
         "Make row of towers: first 2, second 3, third 4 cubes. Between towers one cube.",
-        _line(T(2), T(3), T(4), gaps=(1,)),
+        k.line(T(2), T(3), T(4), gaps=(1,)),
     ),
     _c(
         "num-22",
@@ -925,7 +872,7 @@ CASES: list[Case] = [
         "neg-05",
         NEG,
         "Build two towers from 3 cubes, not touching, but distance not more than one cube.",
-        k.pair(T(3), T(3), _within(bx.CUBE + 0.015)),
+        k.pair(T(3), T(3), k.within(bx.CUBE + 0.015)),
     ),
     _c(
         "neg-06",

@@ -75,21 +75,6 @@ def _c(id_: str, phenomenon: str, text: str, accept: k.Pred) -> Case:
 # ---------------------------------------------------------------- local checks
 
 
-def _either(*rels: k.Rel) -> k.Rel:
-    """Any one of the relations holds between A and B."""
-
-    def rel(a: k.Boxes, b: k.Boxes) -> k.Reason:
-        first: k.Reason = None
-        for r in rels:
-            why = r(a, b)
-            if why is None:
-                return None
-            first = first or why
-        return first
-
-    return rel
-
-
 def _apart(n: int) -> k.Rel:
     """A and B are at least `n` cubes apart, clear (− 1.5 cm)."""
 
@@ -98,20 +83,6 @@ def _apart(n: int) -> k.Rel:
         return None if gap >= n * bx.CUBE - 0.015 else f"{gap:.3f} m apart, want ≥ {n} cube(s)"
 
     return rel
-
-
-def _some(*checks: k.Check) -> k.Pred:
-    """Some separate structure of the layout passes every check."""
-    both = k.all_of(*checks)
-
-    def f(result: Mapping[str, Any]) -> k.Reason:
-        comps = k.separate_structures(result)
-        if isinstance(comps, str):
-            return comps
-        reasons = [both(g) for g in comps]
-        return None if None in reasons else f"no structure fits: {reasons[0]}"
-
-    return f
 
 
 def _count(lo: int, hi: int | None = None) -> k.Pred:
@@ -126,15 +97,6 @@ def _count(lo: int, hi: int | None = None) -> k.Pred:
         return None if lo <= n <= top else f"{n} separate structures, want {lo}–{top}"
 
     return f
-
-
-def _line(*checks: k.Check, gaps: tuple[int, ...] = ()) -> k.Pred:
-    """The structures in a line along x or y, in this order or the reverse (neighbours one of
-    `gaps` cubes apart, when given)."""
-    rev = checks[::-1]
-    return k.any_of(
-        *[k.in_order(axis, *cs, gaps=gaps) for axis in ("x", "y") for cs in (checks, rev)]
-    )
 
 
 def _line_any(*checks: k.Check, gaps: tuple[int, ...] = ()) -> k.Pred:
@@ -408,7 +370,7 @@ CASES: list[Case] = [
         "cupcake just in front of it, not touching.",
         k.all_of(
             k.pair(T(1), k.block(3, 3, 2), k.all_rels(k.on_side(_F), _near)),
-            _some(k.block(3, 3, 2), reg("back")),
+            k.some(k.block(3, 3, 2), reg("back")),
         ),
     ),
     _c(
@@ -487,7 +449,7 @@ CASES: list[Case] = [
         "am, left and right.",
         k.all_of(
             k.in_order("y", T(3), k.pyramid(2), T(3)),
-            _some(k.pyramid(2), reg("centre")),
+            k.some(k.pyramid(2), reg("centre")),
         ),
     ),
     _c(
@@ -530,7 +492,7 @@ CASES: list[Case] = [
         "out in front of the goal.",
         k.all_of(
             k.pair(T(1), _goal(2), k.on_side(_F)),
-            _some(_goal(2), reg("back")),
+            k.some(_goal(2), reg("back")),
         ),
     ),
     _c(
@@ -697,7 +659,7 @@ CASES: list[Case] = [
         "num-05",
         NUM,
         "Set out four low hurdles in a line, legs one cube high, gaps of one cube between hurdles.",
-        _line(*[_goal(1)] * 4, gaps=(1,)),
+        k.line(*[_goal(1)] * 4, gaps=(1,)),
     ),
     _c("num-06", NUM, '{"towers": [3, 5, 2]}', k.structures(T(3), T(5), T(2))),
     _c("num-07", NUM, "towers: [2, 2, 2, 2]\nspacing: 1", k.in_line(4, T(2), 1)),
@@ -719,7 +681,7 @@ CASES: list[Case] = [
         "num-12",
         NUM,
         "Make three towers, heights 2, 4 and 6 only, in one line, one cube gap each.",
-        _line(T(2), T(4), T(6), gaps=(1,)),
+        k.line(T(2), T(4), T(6), gaps=(1,)),
     ),
     _c(
         "num-13",
