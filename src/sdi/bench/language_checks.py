@@ -1174,3 +1174,13 @@ def line(*checks: Check, gaps: tuple[int, ...] = ()) -> Pred:
     `gaps` cubes apart, when given)."""
     rev = checks[::-1]
     return any_of(*[in_order(axis, *cs, gaps=gaps) for axis in ("x", "y") for cs in (checks, rev)])
+
+
+def centre_y_min(lo: float) -> Check:
+    """The footprint centre at y ≥ `lo` (m): over to the left."""
+
+    def f(bs: Boxes) -> Reason:
+        y = bx.centre(bs)[1]
+        return None if y >= lo else f"centre y {y:.3f}, want ≥ {lo}"
+
+    return f

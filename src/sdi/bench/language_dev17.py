@@ -119,16 +119,6 @@ def _max_y(y: float) -> k.Check:
     return f
 
 
-def _centre_y_min(lo: float) -> k.Check:
-    """The footprint centre at y ≥ `lo` (m): far over to the left."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        y = bx.centre(bs)[1]
-        return None if y >= lo else f"centre y {y:.3f}, want ≥ {lo}"
-
-    return f
-
-
 def _has_beam(bs: k.Boxes) -> k.Reason:
     """At least one part is a beam (three cubes long)."""
     if any(bx.cubes(max(b.size)) == 3 for b in bs):
@@ -1037,7 +1027,7 @@ CASES: list[Case] = [
         "reg-13",
         REG,
         "build a wall 5 long, 2 high, on the left edge of the map, running front to back",
-        one(k.wall(5, 2), k.runs("x"), _centre_y_min(0.45)),
+        one(k.wall(5, 2), k.runs("x"), k.centre_y_min(0.45)),
     ),
     # ------------------------------------------------------------------ open
     _c("open-01", OPEN, "sandbox mode: build whatever u want", k.anything),

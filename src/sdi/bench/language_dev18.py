@@ -86,16 +86,6 @@ def _offset(dx: int, dy: int) -> k.Rel:
     return rel
 
 
-def _centre_y_min(lo: float) -> k.Check:
-    """The footprint centre at y ≥ `lo` (m): far over to the left."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        y = bx.centre(bs)[1]
-        return None if y >= lo else f"centre y {y:.3f}, want ≥ {lo}"
-
-    return f
-
-
 def _centre_x_min(lo: float) -> k.Check:
     """The footprint centre at x ≥ `lo` (m): far back, near the back edge."""
 
@@ -1172,7 +1162,7 @@ CASES: list[Case] = [
         "reg-07",
         REG,
         "Put tower from 3 cubes near to left edge of table.",
-        one(T(3), _centre_y_min(0.45)),
+        one(T(3), k.centre_y_min(0.45)),
     ),
     _c(
         "reg-08",

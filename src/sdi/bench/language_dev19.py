@@ -138,16 +138,6 @@ def _centre_x_max(hi: float) -> k.Check:
     return f
 
 
-def _centre_y_min(lo: float) -> k.Check:
-    """The footprint centre at y ≥ `lo` (m): right over at the left edge."""
-
-    def f(bs: k.Boxes) -> k.Reason:
-        y = bx.centre(bs)[1]
-        return None if y >= lo else f"centre y {y:.3f}, want ≥ {lo}"
-
-    return f
-
-
 def _tier_stack(bs: k.Boxes) -> list[tuple[int, int, int]] | str:
     """The tiers of a cake, bottom first, as (short side, long side, layers) in cubes; or why
     `bs` is not one. Every level is one part thick, a full rectangle without overlaps, standing
@@ -1156,7 +1146,7 @@ CASES: list[Case] = [
         "reg-14",
         REG,
         "Pipe a row of 4 cupcakes along the left edge, running front to back.",
-        one(k.row(4), k.runs("x"), _centre_y_min(0.45)),
+        one(k.row(4), k.runs("x"), k.centre_y_min(0.45)),
     ),
     # ------------------------------------------------------------------ open
     _c(
