@@ -2785,3 +2785,15 @@ def test_words_spelt_as_they_sound_and_a_childs_homophones():
     assert read("a rign 4 by 4").spec.structures[0].shape == "enclosure"
     assert plan("jjjjjjj kkk").status == "error"
     assert plan("haz una torre de cinco cubos por favor").status == "error"
+
+
+def test_indian_english_focus_words_and_a_command_partly_in_another_language():
+    s = read("Make three towers, heights 2, 4 and 6 only, in one line, one cube gap each.").spec
+    assert [x.height for x in s.structures] == [2, 4, 6] and s.gap_m == pytest.approx(0.05)
+    e = read("Make three towers of height 2. Then put one-one cube on each.").spec
+    assert [x.height for x in e.structures] == [3, 3, 3]
+    c = plan("Exercise three: lay a 3x3 slab and set one cube on each of its four corners.")
+    assert c.status == "success" and len(c.layout.objects) == 9 + 4  # one on each corner
+    h = plan("Ek tower banao, chaar cube ka, left side mein.")
+    assert h.status == "partial" and "does not know" in " ".join(h.notes)
+    assert not any("mini" in n for n in h.notes)  # no size read into a word by its sound

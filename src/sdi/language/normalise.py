@@ -190,6 +190,10 @@ _SLAVIC = [
     # "3 units apart", "leave 2 units between them": a unit of the cube world is a cube
     (re.compile(r"\b(\d+|one|two|three|four|five|six)\s+units?\b(?!\s+of\s+(?:measure|length))",
                 re.I), r"\1 cubes"),
+    # Indian English: "one-one cube on each" (one each), "heights 2, 4 and 6 only", "in the
+    # left side only" (a focus word, no limit of its own)
+    (re.compile(r"\b(one|two|three)-\1\b", re.I), r"\1"),
+    (re.compile(r"(?<=\d)\s+only\b|\s+only\b(?=\s*(?:[,.;!]|$))", re.I), ""),
     # "one cube back from it": that far behind it
     (re.compile(r"\b(\d+|a|one|two|three|four)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:back|away|out)\s+"
                 r"from\s+(it|them|that)\b", re.IGNORECASE), r"\1 \2 away from \3"),

@@ -168,6 +168,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
     spec = spacing.apply_gap(spec, st)
+    said_words = re.findall(r"[A-Za-z]{2,}", text)
+    unknown = list(dict.fromkeys(w for w in said_words if not typos.known_word(w)))
+    if len(unknown) >= 3 and len(unknown) >= 0.25 * len(said_words):
+        # "Ek tower banao, chaar cube ka": a command partly in another language
+        st.material.append("words SDI does not know")
+        st.notes.append(f"ignored {', '.join(repr(w) for w in unknown[:6])}: words SDI does "
+                        "not know (another language?); say it in English")  # fmt: skip
     coherence.check(doc, spec, st, {k for p in phrases for k in p.tokens})
     claims.check(spec, st)
     return Reading(

@@ -356,7 +356,8 @@ _REWRITES += [
     (
         re.compile(
             r"\b(one|1)\s+(?:lonely\s+|lone\s+|little\s+|small\s+|extra\s+)?(?:cube|brick|block)\s+"
-            r"(?=(?:on|at|in|inside|near|beside|by|into)\s+(?:the|each|every|both|its|their|a|top)\b|"
+            r"(?=(?:on|at|in|inside|near|beside|by|into)\s+(?:the|its|their|a|top|"
+            r"(?:each|every)(?!\s*(?:[.!,;]|$)))\b|"
             r"(?:sitting|standing|resting)\b)",
             re.IGNORECASE,
         ),
@@ -1502,7 +1503,7 @@ _REWRITES += [
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
-            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,))\s+in\s+(?:a|one|a\s+single)\s+"
+            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,)|(?<=\d,))\s+in\s+(?:a|one|a\s+single)\s+"
             r"(?:straight\s+|neat\s+)?"
             r"(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"

@@ -169,7 +169,8 @@ def take_gap(text: str, st: ReadState) -> str:
         if gap is not None:
             st.gap_m = gap
             st.notes.append(f"read '{m.group(0).strip(' ,')}' as {gap:g} m between the structures")
-            return text[: m.start()] + " " + text[m.end() :]
+            rest = re.sub(r"^\s*(?:each|apiece|between\s+each)\b", "", text[m.end() :], flags=re.I)
+            return text[: m.start()] + " " + rest  # "one cube gap each": the same gap
     v = _VAGUE.search(text)
     if v is not None:
         st.gap_m = part_m

@@ -52,6 +52,12 @@ def english_frequency() -> dict[str, int]:
     return {w: int(f) for w, f in (line.split(" ", 1) for line in text.splitlines() if line)}
 
 
+def known_word(word: str) -> bool:
+    """`word` is English (the frequency list) or one of SDI's own words."""
+    w = word.lower()
+    return w in _KNOWN or w in english_frequency()
+
+
 def _vocab_has(word: str) -> bool:
     return word in english_frequency()
 
@@ -88,7 +94,8 @@ def _slot_word(w: str, m: re.Match[str]) -> str | None:
 def _by_sound() -> dict[str, list[str]]:
     """The words a misspelling may stand for, by their Metaphone key (jellyfish)."""
     out: dict[str, list[str]] = {}
-    for word in sorted(_TARGETS | _SPOKEN):
+    nouns = (_TARGETS - set(lx.SIZE_WORDS)) | _SPOKEN  # never a size by ear ("mein" is no mini)
+    for word in sorted(nouns):
         if word.isalpha() and len(word) >= 3:
             out.setdefault(jellyfish.metaphone(word), []).append(word)
     return out
