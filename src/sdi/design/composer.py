@@ -328,7 +328,7 @@ def _along_top(sub: _Placed, top_half: np.ndarray, cell: CellConfig) -> _Placed:
     fits = bool(np.all(sub.half <= top_half + 1e-6))
     if s.axis is not None or s.yaw_deg or fits or np.any(sub.half[::-1] > top_half + 1e-6):
         return sub
-    turned = s.model_copy(update={"axis": "x" if (s.axis or "y") == "y" else "y"})
+    turned = s.model_copy(update={"axis": "x"})  # its axis was not said: y, turned to x
     sizes = part_sizes(cell, turned.part)
     return _orient(turned, generate(turned, sizes), sizes)
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import SDIError, SpecError
+from sdi.language.nouns import shape_alternation
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -25,11 +26,7 @@ _THEM = (
 )
 _INSIDE = r"(?:inside|within|in\s+the\s+(?:middle|centre|center)|in\s+it)(?:\s+(?:it|of\s+it))?"
 
-_FAMILY = (
-    r"(?:"
-    + "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
-    + r")"
-)
+_FAMILY = r"(?:" + shape_alternation() + r")"
 _COUNT = r"(\d+|two|three|four|five|six|seven|eight|nine|ten)"
 
 _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(

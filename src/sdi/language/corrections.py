@@ -233,14 +233,14 @@ def correct(text: str, notes: list[str]) -> str:
             return text
         old = olds[-1]
         notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
-        if kind == "region" and old.group(0).lower() == "behind" and value.lower() in _BEHIND:
-            value = _BEHIND[value.lower()]  # "behind it. no wait, in front of it"
+        if kind == "region" and old.group(0).lower() == "behind" and value.lower() in _SIDES:
+            value = lx.BESIDE_PHRASE[value.lower()]  # "behind it. no wait, in front of it"
         text = before[: old.start()] + value + before[old.end() :] + rest
     return text
 
 
-_BEHIND = {"front": "in front of", "left": "to the left of", "right": "to the right of"}
-"""What stands in for "behind" (a relation word) when a correction names another side."""
+_SIDES = ("front", "left", "right")
+"""The other sides a correction of "behind" (a relation word) may name."""
 
 
 def _bare_counts(text: str) -> list[re.Match[str]]:

@@ -498,7 +498,7 @@ def _keep_off(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "Reject if any part is within 10 cm of the front edge": every structure on the other
     side of the table."""
     said, groups = _said(m)
-    side = {"left": "right", "right": "left", "front": "back", "back": "front"}[groups[0]]
+    side = lx.OPPOSITE_SIDE[groups[0]]
     st.region_all = st.region_all or side
     st.notes.append(f"read '{said}' as every structure on the {side}")
     return " , "
@@ -715,7 +715,7 @@ def _not_climb(m: re.Match[str], st: ReadState, note: str) -> str:
     if later and later.group(1).lower() != side:
         st.notes.append(f"'{said}': holds, it climbs towards the {later.group(1).lower()}")
         return " , "
-    opposite = {"left": "right", "right": "left", "front": "back", "back": "front"}[side]
+    opposite = lx.OPPOSITE_SIDE[side]
     st.notes.append(f"read '{said}' as climbing towards the {opposite}")
     return f" climbing towards the {opposite} "
 

@@ -8,6 +8,7 @@ import re
 from collections.abc import Callable
 
 from sdi.errors import SpecError
+from sdi.language.nouns import shape_alternation
 from sdi.language.state import Phrase, ReadState
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
@@ -218,12 +219,9 @@ def modify(
 
 
 _NAMES_MORE = re.compile(
-    r"\b(?:" + "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()
-                                and w not in lx.AMBIGUOUS_SHAPES | {"table", "tables"}),
-                               key=len, reverse=True))
-    + r")\b",
+    r"\b(?:" + shape_alternation(exclude=lx.AMBIGUOUS_SHAPES | {"table", "tables"}) + r")\b",
     re.IGNORECASE,
-)  # fmt: skip
+)
 
 
 def _in_parts(pattern: re.Pattern[str], m: re.Match[str], st: ReadState) -> re.Match[str]:

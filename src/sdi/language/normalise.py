@@ -8,6 +8,7 @@ import re
 from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.errors import SpecError
+from sdi.language.nouns import shape_alternation
 from sdi.language.units import to_millimetres
 from sdi.spec import lexicon as lx
 
@@ -64,9 +65,7 @@ _PLACE_GLOSS = re.compile(
 )
 
 
-_FAMILY_SAID = "|".join(
-    sorted((w for w in lx.SHAPE_WORDS if w.isalpha() and len(w) > 2), key=len, reverse=True)
-)
+_FAMILY_SAID = shape_alternation(min_len=3)
 
 
 # "a tower x3", "pyramid ×2": that many of it (not a coordinate: "x 3" and "x=3" have a space
@@ -131,9 +130,10 @@ _IDIOMS = re.compile(
     re.IGNORECASE,
 )
 _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.IGNORECASE)
-# a Slavic or Dutch speaker's prepositions: "tower from 5 cubes" (of), "behind of wall", "near
-# to wall"
-_SLAVIC = [
+# phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
+# speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
+# English focus words — and of other trades and notes, each read as the plain words it means
+_PHRASINGS = [
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+from\s+(?=\d|(?:one|two|three|four|five|six|"
                 r"seven|eight|nine|ten)\b)", re.IGNORECASE), r"\1 of "),
     (re.compile(r"\b(behind|beside|left|right)\s+of\s+(?=(?:" + _FAMILY_SAID + r")\b)",
@@ -146,16 +146,6 @@ _SLAVIC = [
                 r"(cubes?|blocks?|parts?)\b", re.I), r"\2 \3 between \1"),
     (re.compile(r"\bwith\s+(one|a|\d+|two|three)\s+(cubes?|blocks?|parts?)\s+(?:in\s+)?between\b",
                 re.I), r"with \1 \2 gap"),
-    # "near to wall, on front side of it": in front of the wall
-    (re.compile(r"\b(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
-                r"front\s+side\s+of\s+it\b", re.I), r"in front of the \1"),
-    (re.compile(r"\b(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
-                r"back\s+side\s+of\s+it\b", re.I), r"behind the \1"),
-    (re.compile(r"\b(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
-                r"(left|right)\s+side\s+of\s+it\b", re.I), r"to the \2 of the \1"),
-    # "… one brick away from it, on its front side": in front of it
-    (re.compile(r"\b(?:on|at)\s+its\s+front\s+side\b", re.I), "in front of it"),
-    (re.compile(r"\b(?:on|at)\s+its\s+back\s+side\b", re.I), "behind it"),
     # "Wall is long 6 and high 3": the sizes of the one named
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+(?:is|are)\s+(?=(?:long|high|tall|wide|deep)\s+\d)",
                 re.I), r"\1 "),
@@ -200,6 +190,21 @@ _SLAVIC = [
 ]  # fmt: skip
 
 
+# "near to wall, on front side of it", "… one brick away from it, on its front side": the side
+# said after what it is beside
+_SIDE_OF = re.compile(
+    r"\b(?:(?:near|next\s+to|beside|by|close\s+to)\s+(?:the\s+)?(\w+)\s*,\s*on\s+(?:the\s+)?"
+    r"(front|back|left|right)\s+side\s+of\s+it|(?:on|at)\s+its\s+(front|back)\s+side)\b",
+    re.IGNORECASE,
+)
+
+
+def _side_of(m: re.Match[str]) -> str:
+    if m.group(3):
+        return f"{lx.BESIDE_PHRASE[m.group(3).lower()]} it"
+    return f"{lx.BESIDE_PHRASE[m.group(2).lower()]} the {m.group(1)}"
+
+
 # "a row of 5. then another row 1 cube to the left": to the left of the one before, that far
 _OFFSET_FROM_LAST = re.compile(
     r"\b(\d+(?:\.\d+)?|a|one|two|three|four|five)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:to\s+the\s+"
@@ -217,7 +222,8 @@ def _from_last(m: re.Match[str]) -> str:
         return m.group(0)
     if m.group(3):
         return f"{m.group(1)} {m.group(2)} to its {m.group(3)}"
-    return f"{m.group(1)} {m.group(2)} {'in front of' if m.group(4) != 'behind' else 'behind'} it"
+    side = "back" if m.group(4).lower() == "behind" else "front"
+    return f"{m.group(1)} {m.group(2)} {lx.BESIDE_PHRASE[side]} it"
 
 
 _METRE_WORDS = [
@@ -682,8 +688,9 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f" {n * n} "
 
     text = _SQUARED.sub(squared, text)  # "the square of 3", "3 squared"
-    for pattern, repl in _SLAVIC:
+    for pattern, repl in _PHRASINGS:
         text = pattern.sub(repl, text)  # "tower from 5 cubes", "behind of wall", "near to"
+    text = _SIDE_OF.sub(_side_of, text)  # "near to wall, on front side of it"
     text = _OFFSET_FROM_LAST.sub(_from_last, text)  # "then another row 1 cube to the left"
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
     # "three layers (27 cubes)": a total in an aside is its own item, not a size of the word before

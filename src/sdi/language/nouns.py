@@ -5,6 +5,7 @@ names a structure rather than a place, a space or one of a structure's own compo
 from __future__ import annotations
 
 import re
+from collections.abc import Collection
 from typing import TYPE_CHECKING
 
 from sdi.language import words
@@ -162,3 +163,10 @@ def beam_only(text: str) -> bool:
         and all(w in BEAMS or w in lx.PART_WORDS for w in said)
         and any(w in BEAMS for w in said)
     )
+
+
+def shape_alternation(*, exclude: Collection[str] = (), min_len: int = 1) -> str:
+    """The structure words as a regex alternation, longest first (so "towers" is tried before
+    "tower"): one-word names only, without `exclude`, at least `min_len` letters."""
+    said = (w for w in lx.SHAPE_WORDS if w.isalpha() and len(w) >= min_len and w not in exclude)
+    return "|".join(sorted(said, key=len, reverse=True))

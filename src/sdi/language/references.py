@@ -6,13 +6,18 @@ from __future__ import annotations
 
 import re
 
-from sdi.language.nouns import BASES, COPY_WORDS, GENERIC, LEAD_VERBS, PRONOUNS
+from sdi.language.nouns import BASES, COPY_WORDS, GENERIC, LEAD_VERBS, PRONOUNS, shape_alternation
 from sdi.language.state import Phrase, ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.structure_spec import SpecDraft, StructureDraft
 
 _SIZES = ("count", "length", "width", "height", "steps", "span", "spans", "dims",
           "length_m", "width_m", "height_m", "gap_m", "part")  # fmt: skip
+
+
+def _sized(s: StructureDraft) -> dict[str, object]:
+    """The sizes a structure was given (its part kind aside)."""
+    return s.model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True)
 
 
 def copies(
@@ -92,7 +97,7 @@ def named_ahead(
     if not m or len(spec.structures) != 1:
         return None
     family = lx.SHAPE_WORDS.get(m.group(1).lower())
-    said = spec.structures[0].model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True)
+    said = _sized(spec.structures[0])
     if family is None or family != spec.structures[0].shape or not said:
         return None
     pointed = [
@@ -101,7 +106,7 @@ def named_ahead(
         and lx.SHAPE_WORDS.get(m2.group(1).lower()) == family
         for i in range(q.first, q.first + q.count)
         if structures[i].shape == family
-        and not structures[i].model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True)
+        and not _sized(structures[i])
     ]  # fmt: skip
     same = [i for i, s in enumerate(structures) if s.shape == family]
     return pointed[0] if len(pointed) == 1 and same == pointed else None
@@ -119,15 +124,15 @@ def named_again(
     ):
         return None
     said = spec.structures[0]
-    if not said.model_dump(include=set(_SIZES) - {"part"}, exclude_defaults=True):
+    if not _sized(said):
         return None
     same = [i for i, s in enumerate(structures) if s.shape == said.shape]
     if len(same) != 1:
         return None
     first = structures[same[0]]
     owner = next((q for q in before if q.count and q.first <= same[0] < q.first + q.count), None)
-    bare = not first.model_dump(
-        include=set(_SIZES) - {"part"} | {"region", "at_x", "at_y"}, exclude_defaults=True
+    bare = not _sized(first) and not first.model_dump(
+        include={"region", "at_x", "at_y"}, exclude_defaults=True
     )
     if owner is None or owner.clause == p.clause or owner.count != 1 or not bare:
         return None
@@ -137,9 +142,7 @@ def named_again(
 def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | None:
     """ "Steps: 5. Shape: staircase.": a bare family name in a later clause names the one
     structure described before, not a second one."""
-    if len(spec.structures) != 1 or spec.structures[0].model_dump(
-        include=set(_SIZES) - {"part"}, exclude_defaults=True
-    ):
+    if len(spec.structures) != 1 or _sized(spec.structures[0]):
         return None
     said = set(re.findall(r"[a-z]+", p.text.lower()))
     if said & (COPY_WORDS | {"and", "also", "more", "two", "three", "other", "plus", "then"}):
@@ -150,9 +153,7 @@ def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | No
     prev = built[-1].spec
     assert prev is not None
     shape = spec.structures[0].shape
-    described = prev.structures[-1].model_dump(
-        include=set(_SIZES) - {"part"}, exclude_defaults=True
-    )
+    described = _sized(prev.structures[-1])
     return shape if prev.structures[-1].shape == shape and described else None
 
 
@@ -236,7 +237,7 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
 _PICK = re.compile(
     r"^(?:\w+\s+)?the\s+(first|second|third|fourth|last|smaller|smallest|larger|largest|bigger|"
     r"biggest|taller|tallest|shorter|shortest|lower|higher)(?:\s+(?:one|"
-    + "|".join(sorted(w for w in lx.SHAPE_WORDS if w.isalpha()))
+    + shape_alternation()
     + r"))?$",
     re.IGNORECASE,
 )

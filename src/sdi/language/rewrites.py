@@ -12,18 +12,25 @@ import re
 
 from sdi.language.handlers import HANDLERS
 from sdi.language.normalise import SPACES
+from sdi.language.nouns import shape_alternation
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
 
-_OPPOSITE = {"left": "right", "right": "left", "front": "back", "back": "front",
-             "middle": "left", "centre": "left", "center": "left"}  # fmt: skip
+_OPPOSITE = {**lx.OPPOSITE_SIDE, "middle": "left", "centre": "left", "center": "left"}
 
 
 _LEVEL_ORDINAL = re.compile(
     r"\b(?:as|for|on|to form)\s+(?:the|a)\s+(?:second|third|fourth|fifth|next|top|final|last|"
     r"upper|new)\s+(?:level|layer|tier|storey|story|floor|row)\b",
     re.IGNORECASE,
+)
+
+
+# a quality document's condition for rejecting the build: "Nonconformance if …", "Reject if …"
+_REJECT_IF = (
+    r"\b(?:non-?conformance|reject(?:ed)?|fail(?:ed|ure)?|not\s+acceptable|unacceptable|nok)\s+"
+    r"if\s+"
 )
 
 
@@ -70,8 +77,8 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     ),
     (  # "Nonconformance if the two towers touch": they must not
         re.compile(
-            r"\b(?:non-?conformance|reject(?:ed)?|fail(?:ed|ure)?|not\s+acceptable|unacceptable|nok)\s+"
-            r"if\s+(?:the\s+)?(?:two\s+|both\s+|any\s+)?(?:towers?|structures?|stacks?|items?|parts?|"
+            _REJECT_IF
+            + r"(?:the\s+)?(?:two\s+|both\s+|any\s+)?(?:towers?|structures?|stacks?|items?|parts?|"
             r"they|of\s+them)?\s*(?:touch|touches|are\s+touching|is\s+touching)\b(?:\s+each\s+other)?",
             re.IGNORECASE,
         ),
@@ -80,9 +87,9 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     ),
     (  # "Reject if any part is within 10 cm of the front edge": everything at the other side
         re.compile(
-            r"\b(?:non-?conformance|reject(?:ed)?|fail(?:ed|ure)?|not\s+acceptable|unacceptable|nok)\s+"
-            r"if\s+(?:any|a)\s+(?:part|cube|piece|structure)\s+(?:is\s+)?(?:within|closer\s+than|nearer\s+"
-            r"than)\s+\d+(?:\.\d+)?\s*(?:mm|cm|m)\s+(?:of|to|from)\s+the\s+(left|right|front|back)"
+            _REJECT_IF
+            + r"(?:any|a)\s+(?:part|cube|piece|structure)\s+(?:is\s+)?(?:within|closer\s+than|"
+            r"nearer\s+than)\s+\d+(?:\.\d+)?\s*(?:mm|cm|m)\s+(?:of|to|from)\s+the\s+(left|right|front|back)"
             r"(?:\s+(?:edge|side))?\b",
             re.IGNORECASE,
         ),
@@ -225,7 +232,7 @@ _REWRITES += [
 _ENCLOSURES = "|".join(
     sorted((w for w, f in lx.SHAPE_WORDS.items() if f == "enclosure" and w.isalpha()), key=len)
 )
-_SHAPE_ALT = "|".join(sorted((w for w in lx.SHAPE_WORDS if w.isalpha()), key=len, reverse=True))
+_SHAPE_ALT = shape_alternation()
 # structure nouns that are never a part of another ("2 more steps" adds to a staircase)
 _STRUCTURE_ALT = "|".join(
     sorted(

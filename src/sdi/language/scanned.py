@@ -12,13 +12,12 @@ import itertools
 import re
 
 from sdi.language import words
-from sdi.language.typos import english_frequency
+from sdi.language.typos import english_frequency, known_word
 
-_SWAPS: tuple[tuple[str, tuple[str, ...]], ...] = (
-    ("rn", ("m",)), ("vv", ("w",)), ("0", ("o",)), ("1", ("l", "i")), ("5", ("s",)),
-    ("8", ("b",)), ("|", ("l",)), ("q", ("g",)), ("I", ("l",)),
-)  # fmt: skip
-_CONFUSABLE = re.compile(r"rn|vv|[0158|qI]")
+_SWAPS = {"rn": ("m",), "vv": ("w",), "0": ("o",), "1": ("l", "i"), "5": ("s",), "8": ("b",),
+          "|": ("l",), "q": ("g",), "I": ("l",)}  # fmt: skip
+"""What a scanner's character (or pair) may stand for."""
+_CONFUSABLE = re.compile("|".join(re.escape(c) for c in sorted(_SWAPS, key=len, reverse=True)))
 _LABEL = re.compile(r"[A-Za-z][0-9]")
 _SIZE = re.compile(r"[0-9lI]+[xX][0-9lI]+")
 _TOKEN = re.compile(r"[A-Za-z0-9|]+")
@@ -34,8 +33,7 @@ _SHORT = frozenset({"no", "on", "of", "in", "to", "is", "it", "so", "or"})
 
 
 def _known(word: str) -> bool:
-    w = word.lower()
-    return w in words.VOCABULARY or w in english_frequency() or w in _CONTRACTED
+    return known_word(word) or word.lower() in _CONTRACTED
 
 
 def _readings(token: str) -> list[str]:
@@ -44,8 +42,7 @@ def _readings(token: str) -> list[str]:
     k = 0
     for m in _CONFUSABLE.finditer(token):
         parts.append((token[k : m.start()],))
-        alternatives = next(alt for said, alt in _SWAPS if said == m.group(0))
-        parts.append((m.group(0), *alternatives))
+        parts.append((m.group(0), *_SWAPS[m.group(0)]))
         k = m.end()
     parts.append((token[k:],))
     out = ["".join(p) for p in itertools.islice(itertools.product(*parts), 256)]

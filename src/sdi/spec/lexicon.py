@@ -738,3 +738,12 @@ JOIN_WORDS = {
     "spanning",
     "between",
 }
+
+
+OPPOSITE_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
+"""The side across from each side of the table or of a structure."""
+
+BESIDE_PHRASE = {
+    "front": "in front of", "back": "behind", "left": "to the left of", "right": "to the right of",
+}  # fmt: skip
+"""The words that set a structure on each side of another."""
