@@ -2797,3 +2797,63 @@ def test_indian_english_focus_words_and_a_command_partly_in_another_language():
     h = plan("Ek tower banao, chaar cube ka, left side mein.")
     assert h.status == "partial" and "does not know" in " ".join(h.notes)
     assert not any("mini" in n for n in h.notes)  # no size read into a word by its sound
+
+
+def test_words_that_take_parts_out_or_count_by_the_dozen_are_not_dropped_silently():
+    # "skip the four corners" is an exclusion SDI does not build: said, never a silent grid
+    r = plan("A 4 by 4 tray of cupcakes, one cube each, but skip the four corners")
+    assert r.status == "partial" and any("skip" in n for n in r.notes)
+    # "half a dozen" is six: a tower of one is not what was asked
+    r = read("Half a dozen pancakes in one stack, one cube each.")
+    assert not r.complete and "Half a dozen" in r.material
+    # "two dozen cubes" as a 4 by 6 slab: 24 parts, the number shows
+    assert plan("two dozen cubes as a 4 by 6 slab").status == "success"
+
+
+def test_knocking_the_first_structure_down_takes_it_back():
+    for command in (
+        "bild a wall of 3 and then nock it down and bild a towr of 3 insted",
+        "build a row of 4, then demolish it and make a tower of 2 instead",
+    ):
+        r = read(command)
+        assert [s.shape for s in r.spec.structures] == ["tower"], command
+
+
+def test_places_that_disagree_for_one_structure_are_reported_unless_the_last_one_wins():
+    r = read("a tower of 3 on the left, in the middle")
+    assert r.spec.structures[0].region == "left" and not r.complete
+    assert any("disagree" in n for n in r.notes)
+    # a correction: the last place said is the one built
+    r = read("build a tower of 4. and put it on the left side. no sorry, the right side.")
+    assert r.spec.structures[0].region == "right" and r.complete
+    # neither side: the middle
+    r = read("Make pyramid of 2 levels, not on the left side, not on the right side, in the middle")
+    assert r.spec.structures[0].region == "centre" and r.complete
+
+
+def test_a_relation_to_a_face_of_a_structure_is_a_relation_cue():
+    # "against its tall end", "round the edge of the top": related to a structure's face;
+    # built side by side, that is not what was asked
+    for command in ("a row of 3 and a tower of 4 against its end",
+                    "Two layers of 3 by 3 for the base, then a border of cubes round the edge "
+                    "of the top"):  # fmt: skip
+        r = read(command)
+        assert len(r.spec.structures) == 2 and not r.spec.relations, command
+        assert not r.complete, command
+
+
+def test_an_expected_result_of_several_structures_is_checked_by_its_part_count():
+    r = read("two towers of 4 side by side, touching. Expected result: a 1 x 3 x 4 block")
+    assert not r.complete and any("that result 12" in n for n in r.notes)
+    r = read("two towers of 4 side by side, touching. Expected result: a 1 x 2 x 4 block")
+    assert r.complete
+    # a description with a size left to its default is not counted ("2 deep and 4 high")
+    r = read("two towers of 4, touching - should come out as a block 2 deep and 4 high")
+    assert r.complete and any("not checked" in n for n in r.notes)
+
+
+def test_separate_structures_said_touching_stand_with_no_gap():
+    r = plan("two towers of 4 side by side, touching")
+    assert r.status == "success"
+    ys = sorted({round(o.position[1], 4) for o in r.layout.objects})
+    assert len(ys) == 2 and abs((ys[1] - ys[0]) - 0.05) < 1e-6  # one cube apart: faces touch

@@ -222,8 +222,21 @@ def _result(said: str, spec: Spec, st: ReadState) -> None:
         st.notes.append(f"read '{said}' as a description, not a structure")
         return
     if len(spec.structures) != 1:
+        # several structures said to make one: at least as many parts as it has
+        counts = [_parts(s, st) for s in spec.structures]
+        wanted = _parts(want, st)
+        total = sum(c for c in counts if c is not None)
+        numbers = [w for w in words_to_numbers(re.findall(r"[a-z]+|\d+", described.lower()))
+                   if w.isdigit()]  # fmt: skip
+        sized = len(numbers) >= len(want.model_fields_set & set(_SIZES))  # no default in it
+        if sized and wanted is not None and None not in counts and total != wanted:
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': the reading builds {total} parts in "
+                            f"{len(spec.structures)} structures, that result {wanted}")  # fmt: skip
+            return
         st.notes.append(f"read '{said}' as a description of the {len(spec.structures)} "
-                        "structures together; not checked")  # fmt: skip
+                        "structures together; their parts add up, the arrangement is not "
+                        "checked")  # fmt: skip
         return
     (got,) = spec.structures
     if _same(want, got):

@@ -51,6 +51,9 @@ _COMPOSITE = frozenset(
 )
 
 
+_FACES = frozenset({"edge", "edges", "rim", "top", "perimeter", "side", "sides", "border", "end"})
+
+
 def _structural(tok: Token) -> bool:
     """`tok` (a relation word's object) names a structure or points at one: its head noun,
     not the phrases hanging from it ("on the left and a row …")."""
@@ -61,7 +64,9 @@ def _structural(tok: Token) -> bool:
         (w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES)
         or w in _POINTERS
         or w in ("base", "foundation", "platform", "slab", "pad")
-    )
+        or (w == "top" and tok.head.lower_ == "of" and tok.head.head.lower_ in _FACES)
+        or (w in _FACES and any(c.dep_ == "poss" and c.lower_ in _POINTERS for c in tok.children))
+    )  # "against its tall end"
 
 
 def _work_table(tok: Token) -> bool:
@@ -83,10 +88,22 @@ def _relation_cues(doc: Doc) -> list[str]:
                        if c.dep_ == "pobj"]  # fmt: skip
         if any(o.lower_ in ("other", "another") for o in objects):
             continue  # "next to each other", "on top of one another": side by side words
+        for o in list(objects):  # "round the edge of the top", "along the rim of the base"
+            while o.lower_ in _FACES and (of := _of(o)) is not None:
+                objects.append(of)
+                o = of
         if any(_structural(o) for o in objects):
             span = doc[tok.i : max(o.i for o in objects) + 1]
             cues.append(span.text)
     return cues
+
+
+def _of(tok: Token) -> Token | None:
+    """The object of `tok`'s "of" ("the edge of the top" → top)."""
+    return next(
+        (c for p in tok.children if p.lower_ == "of" for c in p.children if c.dep_ == "pobj"),
+        None,
+    )
 
 
 def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
@@ -167,6 +184,16 @@ def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]
     said = set(re.findall(r"\d+(?:\.\d+)?|[a-z]+", command.lower()))
     out = []
     for tok in doc:
+        if tok.lower_ == "dozen" and tok.i in tokens:  # "half a dozen", "a dozen", "two dozen"
+            half = any(t.lower_ == "half" for t in doc[max(0, tok.i - 2) : tok.i])
+            times = words_to_numbers([doc[tok.i - 1].lower_])[0] if tok.i else ""
+            if times.isdigit():
+                out.append((doc[tok.i - 1 : tok.i + 1].text, 12.0 * int(times)))
+                continue
+            start = next(t.i for t in doc[max(0, tok.i - 2) : tok.i + 1] if t.lower_ in
+                         ("half", "dozen"))  # fmt: skip
+            out.append((doc[start : tok.i + 1].text, 6.0 if half else 12.0))
+            continue
         if not tok.like_num or tok.i not in tokens or tok.lower_ not in said:
             continue
         after = [t.lower_ for t in doc[tok.i + 1 : tok.i + 3] if t.lower_ != "-"]
@@ -292,10 +319,20 @@ def _places_lost(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> list[
     shown.update(r.side or "" for r in spec.relations)
     noted = " ".join(st.notes).lower()
     lost = []
+    for tok, place in _place_words(doc, tokens):
+        if place not in shown and tok.lower_ not in noted:
+            lost.append(tok.text)
+    return lost
+
+
+def _place_words(doc: Doc, tokens: set[int]) -> list[tuple[Token, str]]:
+    """The place words of the structures' phrases ("at the back left"), with the side each
+    names; not "put it back", "left to right" or "right next to it"."""
 
     def word(i: int) -> str:
         return doc[i].lower_ if 0 <= i < len(doc) else ""
 
+    out = []
     for tok in doc:
         place = _PLACES.get(tok.lower_)
         if place is None or tok.i not in tokens or tok.pos_ in ("VERB", "AUX"):
@@ -308,9 +345,27 @@ def _places_lost(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> list[
             continue  # "left to right", "front-to-back": a direction, not a place
         if tok.lower_ == "right" and (tok.i == 0 or word(tok.i + 1) in _RIGHT_AS_ADVERB):
             continue  # "right then, …", "right next to it", "right-hand"
-        if place not in shown and tok.lower_ not in noted:
-            lost.append(tok.text)
-    return lost
+        out.append((tok, place))
+    return out
+
+
+def _places_at_odds(doc: Doc, spec: Spec, tokens: set[int]) -> str | None:
+    """One structure, no relation, and places said for it on both sides of an axis ("on the
+    right, on the left"): the reading can stand on one of them only."""
+    if len(spec.structures) != 1 or spec.relations or spec.structures[0].region is None:
+        return None
+    said = _place_words(doc, tokens)
+    said += [(t, "centre") for t in doc if t.i in tokens and t.lower_ in ("middle", "centre",
+             "center") and t.head.lower_ in ("in", "at")]  # fmt: skip
+    said.sort(key=lambda tp: tp[0].i)
+    sides = {p for _, p in said}
+    region = spec.structures[0].region or ""
+    across = {"left", "right"} <= sides or ("centre" in sides and sides & {"left", "right"})
+    if not (across or {"front", "back"} <= sides):
+        return None
+    if said[-1][1] in region.split() or (said[-1][1] == "centre" and region == "centre"):
+        return None  # the last place said wins: a correction ("on the left. no, the right")
+    return ", ".join(dict.fromkeys(t.text for t, _ in said))
 
 
 # Words the grammar consults without marking them used, and what a reading that keeps them
@@ -351,9 +406,16 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     for cue in _negated_kept(doc, spec):
         st.material.append(cue)
         st.notes.append(f"ignored '{cue}': the reading still builds what these words exclude")
-    for word in dict.fromkeys(_places_lost(doc, spec, st, tokens)):
+    lost = list(dict.fromkeys(_places_lost(doc, spec, st, tokens)))
+    for word in lost:
         st.material.append(word)
         st.notes.append(f"ignored '{word}': no structure of the reading stands there")
+    odds = None if lost else _places_at_odds(doc, spec, tokens)
+    if odds:
+        where = spec.structures[0].region
+        st.material.append(odds)
+        st.notes.append(f"ignored '{odds}': places that disagree for one structure; "
+                        f"built on the {where}")  # fmt: skip
     n = len(spec.structures)
     if n >= 2 and not spec.relations:
         for cue in _relation_cues(doc):

@@ -174,8 +174,12 @@ _PHRASINGS = [
     (re.compile(r"\b(in\s+the\s+middle)\s*,?\s*(?:but\s+)?not\s+touching\s+(?:it|them|the\s+\w+)\b",
                 re.I), r"\1"),
     # "then strike it and put a tower there instead": the one before taken back, then the new
-    (re.compile(r"\b(?:strike|remove|take\s+down|scrap|dismantle|clear\s+away|get\s+rid\s+of)\s+"
-                r"(?:it|that|this)\s+and\s+(?=(?:put|build|place|make|set|stand)\b)", re.I),
+    (re.compile(r"\b(?:strike|remove|take\s+down|scrap|dismantle|clear\s+away|get\s+rid\s+of|"
+                r"demolish|destroy)\s+(?:it|that|this)\s+and\s+(?:then\s+)?"
+                r"(?=(?:put|build|place|make|set|stand)\b)", re.I), "undo that. then "),
+    # "knock it down and build a tower instead", "tear that down, then make …"
+    (re.compile(r"\b(?:k?nock|tear|pull|take|break)\s+(?:it|that|this)\s+(?:down|over|apart)\s*"
+                r"(?:,\s*)?(?:and\s+)?(?:then\s+)?(?=(?:put|build|place|make|set|stand)\b)", re.I),
      "undo that. then "),
     # "3 units apart", "leave 2 units between them": a unit of the cube world is a cube
     (re.compile(r"\b(\d+|one|two|three|four|five|six)\s+units?\b(?!\s+of\s+(?:measure|length))",

@@ -120,6 +120,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             for r in relations
         ]
         st.notes.append(f"read '{touch.group(0)}' as no gap between the structures beside")
+    elif touch and not relations and st.gap_m is None and len(drafts) >= 2:
+        # "two towers of 4 side by side, touching": the separate structures stand touching
+        st.gap_m = 0.0
+        said = touch.group(0).lower().split()
+        st.material = [w for w in st.material if w.lower() not in said]
+        st.notes = [n for n in st.notes if not any(n.startswith(f"ignored '{w}'") for w in said)]
+        st.notes.append(f"read '{touch.group(0)}' as no gap between the structures")
     drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:

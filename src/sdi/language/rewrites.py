@@ -119,8 +119,8 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     (  # "not left, not right - in the middle": neither side of that axis
         re.compile(
             r"\b(?:(?:which|that)\s+)?(?:should\s+|must\s+|is\s+|are\s+)?not\s+(?:be\s+)?(?:on\s+|at\s+|in\s+)?"
-            r"(?:the\s+)?(left|right|front|back)\s*(?:,|or|nor|and)?\s*(?:not\s+)?(?:on\s+|at\s+|in\s+)?"
-            r"(?:the\s+)?(left|right|front|back)\b",
+            r"(?:the\s+)?(left|right|front|back)(?:\s+side)?\s*(?:,|or|nor|and)?\s*(?:not\s+)?"
+            r"(?:on\s+|at\s+|in\s+)?(?:the\s+)?(left|right|front|back)(?:\s+side)?\b",
             re.IGNORECASE,
         ),
         "{neither_side}",

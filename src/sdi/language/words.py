@@ -121,6 +121,9 @@ SIGNIFICANT = _words(
     below underneath beneath floating hanging hovering suspended upside inverted
     sunk sunken buried turn rotate twist flip mirror mirrored reflect reflected reflection
     checkerboard chessboard alternate alternating
+    skip skipping skipped omit omitting omitted except excepting excluding exclude excluded
+    missing instead demolish demolished destroy destroyed dismantle dismantled
+    topple toppled scrap scrapped dozen dozens
     """
 )
 
