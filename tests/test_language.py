@@ -2857,3 +2857,11 @@ def test_separate_structures_said_touching_stand_with_no_gap():
     assert r.status == "success"
     ys = sorted({round(o.position[1], 4) for o in r.layout.objects})
     assert len(ys) == 2 and abs((ys[1] - ys[0]) - 0.05) < 1e-6  # one cube apart: faces touch
+
+
+def test_a_bridge_named_then_described_as_towers_and_a_beam_is_one_bridge():
+    r = read("I want a bridge. Two towers of 3 with a beam across them.")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 3)]
+    # another one said: two bridges
+    r = read("a bridge on the left, and another one: two towers of 3 joined by a beam")
+    assert [s.shape for s in r.spec.structures] == ["bridge", "bridge"]

@@ -1334,7 +1334,7 @@ CASES: list[Case] = [
         "A colonnade of fifteen columns, one cube apart, in a single line.",  # 29 cubes long
         k.honest(k.anything),
     ),
-    _c("bad-11", BAD, "???", k.honest()),
+    _c("bad-11", BAD, "hello?? is this thing on?? ok never mind", k.honest()),
     _c(
         "bad-12",
         BAD,

@@ -352,6 +352,20 @@ def _join(
     )
     replace[idx[0]] = bridge
     drop.update(idx[1:])
+    named = [
+        q for q in phrases[: min(p for p in (pillars, joiner) if p is not None)]
+        if q.count == 1 and q.spec is not None and q.first not in drop and q.ref is None
+        and replace.get(q.first, structures[q.first]).shape == "bridge"
+        and not _NUMBER.search(q.text)  # nothing sized: a name of what follows
+    ]  # fmt: skip
+    if named and not _MORE_WORDS.search(st.command):
+        # "I want a bridge. Two towers of 3 with a beam across them.": the bridge described
+        drop.add(named[-1].first)
+        st.notes.append(f"read '{named[-1].text.strip()}' as the bridge the towers and beam make")
+
+
+_NUMBER = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.I)
+_MORE_WORDS = re.compile(r"\b(?:another|second|more|two\s+bridges|both)\b", re.IGNORECASE)
 
 
 def unstack(s: StructureSpec, st: ReadState) -> StructureSpec:
