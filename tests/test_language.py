@@ -2865,3 +2865,11 @@ def test_a_bridge_named_then_described_as_towers_and_a_beam_is_one_bridge():
     # another one said: two bridges
     r = read("a bridge on the left, and another one: two towers of 3 joined by a beam")
     assert [s.shape for s in r.spec.structures] == ["bridge", "bridge"]
+
+
+def test_towers_joined_at_the_top_carry_a_beam_not_each_other():
+    for command in ("two columns of 4, joined at the top", "two towers of 3 connected at the top",
+                    "Build an arch. Two columns of 4, joined at the top."):  # fmt: skip
+        r = read(command)
+        assert [s.shape for s in r.spec.structures] == ["bridge"], command
+        assert not any(rel.kind == "on_top_of" for rel in r.spec.relations), command

@@ -355,13 +355,14 @@ def _join(
     named = [
         q for q in phrases[: min(p for p in (pillars, joiner) if p is not None)]
         if q.count == 1 and q.spec is not None and q.first not in drop and q.ref is None
-        and replace.get(q.first, structures[q.first]).shape == "bridge"
+        and replace.get(q.first, structures[q.first]).shape in ("bridge", "arch")
         and not _NUMBER.search(q.text)  # nothing sized: a name of what follows
     ]  # fmt: skip
     if named and not _MORE_WORDS.search(st.command):
         # "I want a bridge. Two towers of 3 with a beam across them.": the bridge described
         drop.add(named[-1].first)
-        st.notes.append(f"read '{named[-1].text.strip()}' as the bridge the towers and beam make")
+        st.notes.append(f"read '{named[-1].text.strip()}' as the bridge the towers and beam make "
+                        "(their pillars and beam)")  # fmt: skip
 
 
 _NUMBER = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.I)

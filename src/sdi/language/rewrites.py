@@ -745,6 +745,16 @@ _REWRITES += [
         "{part_size}",
         "",
     ),
+    (  # "two columns of 4, joined at the top": towers joined at the top are a bridge's pillars
+        re.compile(
+            r"\b(towers|pillars|columns|stacks|posts)\b([^.;]*?)\b(?:joined|connected|linked|"
+            r"bridged|tied)\s+(?:together\s+)?(?:at|across|along|over)\s+(?:the\s+)?tops?\b"
+            r"(?!\s+(?:by|with))",
+            re.IGNORECASE,
+        ),
+        "{0}{1} joined at the top by a beam ",
+        "read '{0}' as the towers joined by a beam across the top",
+    ),
     (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),
     (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
     (re.compile(r"\bnothing\s+(?:fancy|else|special|more)\b", re.IGNORECASE), " ", ""),
