@@ -2873,3 +2873,11 @@ def test_towers_joined_at_the_top_carry_a_beam_not_each_other():
         r = read(command)
         assert [s.shape for s in r.spec.structures] == ["bridge"], command
         assert not any(rel.kind == "on_top_of" for rel in r.spec.relations), command
+
+
+def test_a_structure_kept_off_a_side_stands_on_the_other():
+    r = read("dont put the pyramid on the left. put it on the right. 2 levels.")
+    assert [(s.shape, s.region) for s in r.spec.structures] == [("pyramid", "right")]
+    assert r.complete
+    r = read("never place the tower on the front side, 4 high")
+    assert [(s.region, s.height) for s in r.spec.structures] == [("back", 4)]

@@ -296,6 +296,14 @@ def _neither_side(m: re.Match[str], st: ReadState, note: str) -> str:
     return " " if placed else " in the centre "
 
 
+def _neg_place(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "do not put the pyramid on the left": the pyramid on the other side."""
+    said, groups = _said(m)
+    side = lx.OPPOSITE_SIDE[groups[2]]
+    st.notes.append(f"read '{said}' as on the {side}")
+    return f" {groups[0]} {groups[1]} on the {side} "
+
+
 def _at_most(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "don't make the pillars taller than 2": the most allowed is what is built."""
     said, groups = _said(m)
@@ -814,6 +822,7 @@ HANDLERS: dict[str, Handler] = {
     "{keyed_size}": _keyed_size,
     "{copies_of}": _copies_of,
     "{neither_side}": _neither_side,
+    "{neg_place}": _neg_place,
     "{unsupported}": _unsupported,
     "{at_most}": _at_most,
     "{corners}": _corners,

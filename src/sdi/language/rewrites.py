@@ -96,6 +96,16 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
         "{keep_off}",
         "",
     ),
+    (  # "do not put the pyramid on the left": it, on the other side
+        re.compile(
+            r"\b(?:do\s+not|never)\s+(put|place|build|set|stand)\s+(the\s+\w+|it|them)\s+"
+            r"(?:on|in|at)\s+the\s+(left|right|front|back)(?:\s+(?:side|half|part|end))?\b"
+            r"(?!\s+(?:of|edge))",
+            re.IGNORECASE,
+        ),
+        "{neg_place}",
+        "",
+    ),
     (  # "do not put it anywhere near the front edge": at the other side
         re.compile(
             r"\b(?:do\s+not|never)\s+(?:put|place|build|set|stand)\s+(?:it|them|anything)\s+"
