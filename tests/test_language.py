@@ -2881,3 +2881,56 @@ def test_a_structure_kept_off_a_side_stands_on_the_other():
     assert r.complete
     r = read("never place the tower on the front side, 4 high")
     assert [(s.region, s.height) for s in r.spec.structures] == [("back", 4)]
+
+
+@pytest.mark.parametrize(
+    ("command", "want"),
+    [
+        ("a tower of 4 cubes of height", [("tower", 4)]),
+        ("Put a pyramid of 2 floors in the right part", [("pyramid", 2)]),
+        ("A wall of 3 of length and 2 of height", [("wall", 2)]),
+        ("A wall of eight long and half so high, please.", [("wall", 4)]),
+        ("tower of 3 - no 6 - at the back", [("tower", 6)]),
+        ("A row of 6 along the front. Oh and build it up: make it two layers. No, three.",
+         [("wall", 3)]),
+    ],
+)  # fmt: skip
+def test_word_orders_of_other_languages_and_spoken_corrections(command, want):
+    r = read(command)
+    assert [(s.shape, s.height) for s in r.spec.structures] == want, r.notes
+    assert r.complete, r.notes
+
+
+def test_romance_and_german_places_gaps_and_by():
+    r = read("Put a pyramid of 2 floors in the right part")
+    assert r.spec.structures[0].region == "right"
+    r = read("A platform of 20 per 20 centimetres, one cube thick")
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (4, 4)
+    r = read("A 3-high tower, left beside it a row of 4 cubes, one cube gap between, bitte.")
+    assert r.complete and [(x.kind, x.side, x.gap_m) for x in r.spec.relations] == [
+        ("next_to", "left", 0.05)
+    ]
+    r = read("a tower of 4 and, at its left, a wall 3 long and 2 high, separated by one cube")
+    assert r.complete and [(x.side, x.gap_m) for x in r.spec.relations] == [("left", 0.05)]
+    # "50 mm clearance between rows": the trailing word is kept for what follows it
+    assert read("a tower of 4 and a row of 3, one cube gap between them").complete
+
+
+def test_a_count_corrected_after_a_plural_is_the_count_of_structures():
+    r = read("Four towers of 2, make that five, in a row, a cube apart.")
+    assert [s.height for s in r.spec.structures] == [2] * 5
+    assert any("'Four' → 'five'" in n for n in r.notes)
+    r = read("At the front, a row of 5, make that 6, running left to right.")
+    assert [s.length for s in r.spec.structures] == [6] and r.complete
+
+
+def test_structures_said_to_rise_one_way_stand_getting_taller_that_way():
+    r = read("three towers of 5, 2 and 3, getting taller from left to right")
+    assert [s.height for s in r.spec.structures] == [5, 3, 2]  # placed from the right
+    r = read("three towers of 2, 4 and 6 in one line, ascending from right to left")
+    assert [s.height for s in r.spec.structures] == [2, 4, 6]
+    r = read("a staircase of 4 steps ascending from right to left")
+    assert r.spec.structures[0].axis == "y" and r.complete
+    # "then on the right, same.": another one the same there
+    r = read("on the left, a tower. 3 high. no, 4 high. then on the right, same.")
+    assert [(s.region, s.height) for s in r.spec.structures] == [("left", 4), ("right", 4)]

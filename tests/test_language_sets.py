@@ -34,6 +34,8 @@ from sdi.bench.language_dev16 import CASES as DEV16
 from sdi.bench.language_dev17 import CASES as DEV17
 from sdi.bench.language_dev18 import CASES as DEV18
 from sdi.bench.language_dev19 import CASES as DEV19
+from sdi.bench.language_dev20 import CASES as DEV20
+from sdi.bench.language_dev21 import CASES as DEV21
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -267,6 +269,8 @@ SETS = {
     "dev17": (DEV17, 170, 8, 15),
     "dev18": (DEV18, 170, 8, 15),
     "dev19": (DEV19, 170, 8, 15),
+    "dev20": (DEV20, 170, 8, 15),
+    "dev21": (DEV21, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -280,6 +284,8 @@ HARD = {
     "dev17": ("relation", "numbers", "dimensions", "sequence"),
     "dev18": ("relation", "numbers", "dimensions", "sequence"),
     "dev19": ("relation", "numbers", "dimensions", "sequence"),
+    "dev20": ("relation", "numbers", "dimensions", "sequence"),
+    "dev21": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -345,6 +351,8 @@ def test_every_predicate_answers_without_raising(result):
         *DEV17,
         *DEV18,
         *DEV19,
+        *DEV20,
+        *DEV21,
         *TEST,
     ):
         out = case.accept(result)
@@ -384,6 +392,8 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev17.py",
         "language_dev18.py",
         "language_dev19.py",
+        "language_dev20.py",
+        "language_dev21.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

@@ -343,7 +343,11 @@ def _place_words(doc: Doc, tokens: set[int]) -> list[tuple[Token, str]]:
             word(tok.i + 1) in ("to", "-") and word(tok.i + 2) in _PLACES
         ):
             continue  # "left to right", "front-to-back": a direction, not a place
-        if tok.lower_ == "right" and (tok.i == 0 or word(tok.i + 1) in _RIGHT_AS_ADVERB):
+        if (
+            tok.lower_ == "right"
+            and word(tok.i - 1) != "the"
+            and (tok.i == 0 or word(tok.i + 1) in _RIGHT_AS_ADVERB)
+        ):
             continue  # "right then, …", "right next to it", "right-hand"
         out.append((tok, place))
     return out

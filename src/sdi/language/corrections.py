@@ -13,7 +13,8 @@ from sdi.spec import lexicon as lx
 from sdi.spec.numbers import TENS, UNITS
 
 _MARKER = re.compile(
-    r"\s*[,;—–-]+\s*no\s*[,!]\s*|"  # "a stack of 3 to the left of it - no, to the right"
+    r"\s*[,.!;—–-]+\s*no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
+    r"ten)\b))|"  # "a stack of 3 to the left of it - no, to the right", "3 - no 6 -", ". No, 3"
     r"\s*[,.;:!—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
@@ -59,6 +60,12 @@ _OF_IT = re.compile(
     r"(?:\s+(?:hand\s+)?side)?\s+of\s+(?:it|that|them|this|those|the\s+\w+(?:\s+\w+)?)$", re.I
 )
 _PARTS = re.compile(r"\s+(?:cubes?|blocks?|parts?|pieces?|bricks?)$", re.IGNORECASE)
+
+
+def _value(said: str) -> str | None:
+    """The kind of a value said on its own ("five", "6 cubes", "3 by 4", "the left")."""
+    value = _PARTS.sub("", _FILLER.sub("", said.strip()).strip(" ,.;!?"))
+    return _kind(value) if value and not _names_structure(value) else None
 
 
 def _kind(value: str) -> str | None:
@@ -196,6 +203,13 @@ def correct(text: str, notes: list[str]) -> str:
         before, after = text[: m.start()], text[m.end() :]
         head = re.split(r"(?<=[.;!?])\s|,\s*(?=and\b|then\b)", after, maxsplit=1)
         said, rest = head[0], after[len(head[0]) :]
+        stop = re.search(r"[.;!?]+\s*$", said)
+        if stop:  # "no, 4 high. then on the right": the sentence ends where it ended
+            said, rest = said[: stop.start()], stop.group(0) + rest
+        first = re.match(r"[^,;—–-]+", said)
+        if first and first.end() < len(said.rstrip(" .!?")) and _value(first.group(0)) is not None:
+            # "four towers of 2, make that five, in a row": the value, then the command goes on
+            said, rest = first.group(0), after[first.end() :]
         value = _FILLER.sub("", _NOT_OLD.sub("", said.strip())).strip(" ,.;!?")
         value = _AND_NOT_OLD.sub("", _NOT_OLD_SPOKEN.sub("", value))  # "h=6, not 8"
         value = _PARTS.sub("", value)
@@ -232,6 +246,10 @@ def correct(text: str, notes: list[str]) -> str:
         if not olds:
             return text
         old = olds[-1]
+        counted = _COUNTED.search(before) if kind == "count" else None
+        if counted and counted.end() >= len(before.rstrip(" ,;:—–-")):
+            # "four towers of 2, make that five": the count of the structures is what was counted
+            old = next((o for o in olds if o.start() == counted.start(1)), old)
         notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
         if kind == "region" and old.group(0).lower() == "behind" and value.lower() in _SIDES:
             value = lx.BESIDE_PHRASE[value.lower()]  # "behind it. no wait, in front of it"
@@ -241,6 +259,9 @@ def correct(text: str, notes: list[str]) -> str:
 
 _SIDES = ("front", "left", "right")
 """The other sides a correction of "behind" (a relation word) may name."""
+
+
+_COUNTED = re.compile(rf"\b({_NUMBER})\s+(?:[a-z]+\s+)?[a-z]+s\s+(?:of|with)\s+{_NUMBER}\b", re.I)
 
 
 def _bare_counts(text: str) -> list[re.Match[str]]:

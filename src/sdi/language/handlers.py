@@ -674,6 +674,18 @@ def _across_them(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {m.group(1) or 'across'} them "
 
 
+def _rise_order(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "ascending from right to left": a staircase climbs that way; several structures stand
+    in a line getting taller that way."""
+    said, groups = _said(m)
+    if {groups[0], groups[1]} not in ({"left", "right"}, {"front", "back"}):
+        return m.group(0)
+    if re.search(r"\b(?:stair\w*|steps?|flight)\b", m.string, re.IGNORECASE):
+        return f" climbing to the {groups[1]} "
+    st.order = (said, "rise", groups[1])
+    return " "
+
+
 def _climb(m: re.Match[str], st: ReadState, note: str) -> str:
     # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
     return {
@@ -823,6 +835,7 @@ HANDLERS: dict[str, Handler] = {
     "{copies_of}": _copies_of,
     "{neither_side}": _neither_side,
     "{neg_place}": _neg_place,
+    "{rise_order}": _rise_order,
     "{unsupported}": _unsupported,
     "{at_most}": _at_most,
     "{corners}": _corners,

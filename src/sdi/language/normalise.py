@@ -4,6 +4,7 @@ forms — before anything reads it. Numbers SDI cannot use (not finite, past 10�
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 from rapidfuzz.distance import DamerauLevenshtein
 
@@ -111,9 +112,17 @@ def _stage(text: str, notes: list[str]) -> str:
     return _STAGE.sub(place, text)
 
 
+_DIMENSION_ADJ = {
+    "height": "high", "high": "high", "length": "long", "long": "long", "width": "wide",
+    "wide": "wide", "depth": "deep", "thickness": "thick",
+}  # fmt: skip
+
 _FOREIGN_COURTESY = re.compile(
     r"\b(?:hoi|doei|dank\s+(?:je|u)(?:\s+wel)?|bedankt|dzi(?:ę|e)kuj(?:ę|e)|spasibo|"
-    r"danke(?:\s+sch(?:ö|oe)n)?|gracias|merci(?:\s+beaucoup)?|grazie|privet|cze(?:ść|sc))\b[!.,]?",
+    r"danke(?:\s+sch(?:ö|oe)n)?|gracias|merci(?:\s+beaucoup)?|grazie|privet|cze(?:ść|sc)|bitte(?:\s+sch(?:ö|oe)n)?|"
+    r"guten\s+(?:morgen|tag|abend)|hallo|tsch(?:ü|ue)ss|por\s+favor|obrigad[oa]|muito\s+obrigad[oa]|"
+    r"hola|buenos\s+d[ií]as|bom\s+dia|ol[aá]|ciao|buongiorno|prego|bonjour|s'il\s+vous\s+pla[iî]t|"
+    r"ja|jawohl|genau|fertig|kisses|besos|beijos)\b[!.,]?",
     re.IGNORECASE,
 )
 
@@ -133,7 +142,7 @@ _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.I
 # phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
-_PHRASINGS = [
+_PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+from\s+(?=\d|(?:one|two|three|four|five|six|"
                 r"seven|eight|nine|ten)\b)", re.IGNORECASE), r"\1 of "),
     (re.compile(r"\b(behind|beside|left|right)\s+of\s+(?=(?:" + _FAMILY_SAID + r")\b)",
@@ -146,6 +155,37 @@ _PHRASINGS = [
                 r"(cubes?|blocks?|parts?)\b", re.I), r"\2 \3 between \1"),
     (re.compile(r"\bwith\s+(one|a|\d+|two|three)\s+(cubes?|blocks?|parts?)\s+(?:in\s+)?between\b",
                 re.I), r"with \1 \2 gap"),
+    # Romance and German word order: "4 cubes of height", "3 of length and 2 of height", "5 of
+    # thickness", "a height of 4" stays; "20 per 20" is 20 by 20; "in the right part" is on the
+    # right; "half so high" is half as high; "the double of" is twice
+    (re.compile(r"\b(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten)\s+"
+                r"((?:cubes?|blocks?|parts?|floors?|levels?|storeys?|cm|mm|centimet(?:re|er)s?)\s+)?"
+                r"(?:of\s+(height|length|width|depth|thickness|high|long|wide)|"
+                r"in\s+(height|length|width|depth|thickness))\b", re.I),  # "8 in long": inches
+     lambda m: m.group(1) + " " + (m.group(2) or "")
+     + _DIMENSION_ADJ[(m.group(3) or m.group(4)).lower()]),
+    (re.compile(r"(?<=\d)\s*(cm|mm|m)?\s+per\s+(?=\d)", re.I), r" \1 by "),
+    (re.compile(r"\b(?:in|on|at)\s+the\s+(left|right|front|back|rear)(?:\s+(?:hand|most))?\s+"
+                r"(?:part|zone|portion|sector)\b(?!\s+of\b)", re.I), r"on the \1"),
+    (re.compile(r"\bhalf\s+so\s+(high|tall|long|wide|big)\b", re.I), r"half as \1"),
+    (re.compile(r"\b(?:the\s+)?double\s+of\s+(?:the\s+)?(?:cubes?|height|size|it|that)\b", re.I),
+     "twice as high"),
+    (re.compile(r"\b(" + _FAMILY_SAID + r")\s+of\s+(?=(?:\d+|one|two|three|four|five|six|seven|"
+                r"eight|nine|ten)\s+(?:cubes?\s+)?(?:long|high|tall|wide|deep)\b)", re.I), r"\1 "),
+    (re.compile(r"\bat\s+its\s+(left|right)(?:\s+side)?\b", re.I), r"to the \1 of it"),
+    (re.compile(r"\b(left|right)\s+(?:beside|next\s+to)\s+(it|them)\b", re.I), r"to the \1 of \2"),
+    # "at 1 cube of distance to the back, other equal" (a Romance speaker): 1 cube behind it,
+    # another the same; "After," is then
+    (re.compile(r"\bat\s+(\d+|one|two|three|a)\s+(cubes?|cm|mm)\s+of\s+distance\s+(?:to|at|on)\s+the\s+"
+                r"(back|left|right|front)\b", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)} " + {"back": "behind it", "front": "in front of it"}.get(
+         m.group(3).lower(), f"to the {m.group(3).lower()} of it")),
+    (re.compile(r"\b(?:an?\s+)?other\s+(?:one\s+)?(?:equal|identical|the\s+same|same)\b", re.I),
+     "another one the same"),
+    (re.compile(r"(^|[.;!]\s*)(?:and\s+)?after\s*,", re.I), r"\1then"),
+    # "then on the right, same.": another one the same there
+    (re.compile(r"\b(on|at|in)\s+the\s+(left|right|front|back)\s*,?\s+(?:the\s+)?same(?:\s+(?:again|"
+                r"thing|one))?\s*(?=[.;!]|$)", re.I), r"another one the same \1 the \2"),
     # "Wall is long 6 and high 3": the sizes of the one named
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+(?:is|are)\s+(?=(?:long|high|tall|wide|deep)\s+\d)",
                 re.I), r"\1 "),

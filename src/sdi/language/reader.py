@@ -268,6 +268,14 @@ def _ordered(
         st.material.append(said)
         st.notes.append(f"ignored '{said}': no row of like structures of different sizes to order")
         return specs
+    if most == "rise":  # taller towards `where`: the list stands from the right (or front)
+        if (where in ("front", "back")) != (st.line == "x"):
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': the structures do not stand in a line that way")
+            return specs
+        up = sorted(range(len(specs)), key=lambda k: sizes[k], reverse=where in ("right", "front"))
+        st.notes.append(f"'{said}': the structures stand getting taller to the {where}")
+        return [specs[k] for k in up]
     pick = sizes.index(max(sizes) if most == "max" else min(sizes))
     rest = [s for k, s in enumerate(specs) if k != pick]
     if (where in ("front", "back") and st.line != "x") or (where in ("left", "right") and st.line):

@@ -319,6 +319,16 @@ _REWRITES += [
         "{not_climb}",
         "",
     ),
+    (  # "three towers of 2, 4 and 6, ascending from right to left": taller towards the left
+        re.compile(
+            r",?\s*\b(?:ascending|rising|climbing|increasing|growing|getting\s+taller|going\s+up)"
+            r"(?:\s+in\s+height)?\s+from\s+(?:the\s+)?(left|right|front|back)\s+to\s+(?:the\s+)?"
+            r"(left|right|front|back)\b",
+            re.IGNORECASE,
+        ),
+        "{rise_order}",
+        "",
+    ),
     (
         re.compile(
             r",?\s*\b(?:(?:climbing|rising|ascending|going|stepping)\s+up|climbing|rising|"
@@ -1223,6 +1233,15 @@ _REWRITES += [
         ),
         "it",
         "",
+    ),
+    (  # "and erect upon its central cube a column of three": on top of it, centred
+        re.compile(
+            r"\b(?:up)?on\s+its\s+(?:central|centre|center|middle)\s+(?:cube|part|block|cell|position|"
+            r"square|brick)\b",
+            re.IGNORECASE,
+        ),
+        " on top of it ",
+        "read '{0}' as on top of it, centred",
     ),
     (  # "a column rising from its centre": on top of it, centred
         re.compile(

@@ -29,7 +29,9 @@ _GAP = re.compile(
     + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:of\s+)?width\s+between(?:\s+(?:them|the\s+two|each))?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between\s+(?:them|the\s+two|each\s+other)\b"
-    + r"|(?:at\s+)?(?:a\s+)?distance\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT + r")?)"
+    + r"|(?:at\s+)?(?:a\s+)?distance\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT + r")?"
+    + r"|(?:separated|spaced|parted)\s+by\s+" + _N + r"[- ]?" + _UNIT
+    + r"|(?:at\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+of\s+(?:distance|separation|space))"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,
 )  # fmt: skip
@@ -169,7 +171,13 @@ def take_gap(text: str, st: ReadState) -> str:
         if gap is not None:
             st.gap_m = gap
             st.notes.append(f"read '{m.group(0).strip(' ,')}' as {gap:g} m between the structures")
-            rest = re.sub(r"^\s*(?:each|apiece|between\s+each)\b", "", text[m.end() :], flags=re.I)
+            rest = re.sub(
+                r"^\s*(?:each|apiece|between\s+each|(?:in\s+)?between(?:\s+(?:them|the\s+"
+                r"two|both)\b|(?=\s*(?:[,.;!?]|$))))",
+                "",
+                text[m.end() :],
+                flags=re.I,
+            )
             return text[: m.start()] + " " + rest  # "one cube gap each": the same gap
     v = _VAGUE.search(text)
     if v is not None:
