@@ -2934,3 +2934,25 @@ def test_structures_said_to_rise_one_way_stand_getting_taller_that_way():
     # "then on the right, same.": another one the same there
     r = read("on the left, a tower. 3 high. no, 4 high. then on the right, same.")
     assert [(s.region, s.height) for s in r.spec.structures] == [("left", 4), ("right", 4)]
+
+
+def test_a_coordinate_without_a_unit_is_in_the_unit_that_puts_it_on_the_table():
+    r = read("Column of 6 at x 700 y 100.")
+    s = r.spec.structures[0]
+    assert (s.at_x, s.at_y) == pytest.approx((0.7, 0.1)) and r.complete
+    assert any("700 mm" in n for n in r.notes)
+    s = read("a tower at x 45 y 30").spec.structures[0]
+    assert (s.at_x, s.at_y) == pytest.approx((0.45, 0.3))
+    assert plan("At x 550 y 350: pyramid, 2 levels, base 3 x 3.").status == "success"
+
+
+def test_a_structure_moved_after_it_was_placed_stands_where_it_was_moved():
+    s = read("Place a column of 5 at x 350 y 250. Then relocate it 200 mm in +x.").spec.structures
+    assert [(x.at_x, x.at_y, x.height) for x in s] == [pytest.approx((0.55, 0.25, 5))]
+    s = read("a tower of 3 at x 0.4 y 0.3, then shift it 2 cubes to the left").spec.structures
+    assert [(x.at_x, x.at_y) for x in s] == [pytest.approx((0.4, 0.4))]
+    r = read("Put a 2x2 block, 2 high, at the back right. Then move it to the front left.")
+    assert [x.region for x in r.spec.structures] == ["front left"] and r.complete
+    # a copy set off from the first is no move
+    r = read("1) row x5 along X (front to back). 2) duplicate it 1 cube to the left, parallel")
+    assert len(r.spec.structures) == 2

@@ -70,10 +70,16 @@ MODIFY = [
         "=main",
     ),
     _op(
-        r"\b(?:move|shift|put|place|slide|keep)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|at|on|in)\s+"
-        r"(?:the\s+)?"
-        r"(left|right|front|back|middle|centre|center)\b",
+        r"\b(?:move|shift|put|place|slide|keep|relocate)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|"
+        r"at|on|in)\s+(?:the\s+)?"
+        r"(left|right|front|back|middle|centre|center)(?:\s+(left|right))?\b",
         "region",
+    ),
+    _op(  # "relocate it 200 mm in +x", "shift it 2 cubes to the left"
+        r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?(\d+(?:\.\d+)?|one|two|three|"
+        r"four|five|a)\s*(mm|cm|m|cubes?)\s+(?:in|along|towards?|to(?:\s+the)?)\s+(?:the\s+)?"
+        r"([+-]\s*[xy]|left|right|front|back)\b",
+        "offset",
     ),
     _op(
         r"\bfill\s+(?:it\s+|them\s+)?in(?:\s+the\s+(?:middle|centre|center|inside|hole|gap))?\b|"
@@ -204,11 +210,12 @@ def modify(
         if _NAMES_MORE.search(p.text[m.end() :]):
             return False  # "pull the top 3 off and set them down as a tower": more than a change
         change = _CHANGES.get(op)
-        note = (
-            change(m, op, p, before, built, structures)
-            if change is not None
-            else _resize(m, op, p, before, built, structures, st.cell.cube[2])
-        )
+        if op == "offset":
+            note = _offset(m, built, structures, st.cell.cube[0])
+        elif change is not None:
+            note = change(m, op, p, before, built, structures)
+        else:
+            note = _resize(m, op, p, before, built, structures, st.cell.cube[2])
         if note is None:
             return False
         st.notes.append(f"'{m.group(0).strip()}': {note}")
@@ -279,13 +286,42 @@ def _fill(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
 def _region(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
             structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "move it to the left": the structure named last goes there."""
-    place = m.group(1).lower()
+    place = " ".join(g.lower() for g in m.groups() if g)
     place = {"middle": "centre", "center": "centre"}.get(place, place)
     index = _last_index(built)
+    was = structures[index].region
     structures[index] = structures[index].model_copy(
         update={"region": place, "at_x": None, "at_y": None}
     )
-    return f"the {structures[index].shape} goes {place}"
+    return f"the {structures[index].shape} goes {place}" + (f" (was {was})" if was else "")
+
+
+_DIRECTIONS = {
+    "+x": ("at_x", 1),
+    "back": ("at_x", 1),
+    "-x": ("at_x", -1),
+    "front": ("at_x", -1),
+    "+y": ("at_y", 1),
+    "left": ("at_y", 1),
+    "-y": ("at_y", -1),
+    "right": ("at_y", -1),
+}
+
+
+def _offset(m: re.Match[str], built: list[Phrase], structures: list[StructureDraft],
+            part_m: float) -> str | None:  # fmt: skip
+    """ "relocate it 200 mm in +x": the structure named last moves that far, from where it was
+    said to stand (a structure placed by region or relation has no position to move from)."""
+    index = _last_index(built)
+    s = structures[index]
+    key, sign = _DIRECTIONS[re.sub(r"\s+", "", m.group(3).lower())]
+    if getattr(s, key) is None:
+        return None
+    amount = float({"a": "1"}.get(m.group(1).lower()) or words_to_numbers([m.group(1).lower()])[0])
+    unit = m.group(2).lower()
+    metres = amount * (part_m if unit.startswith("cube") else lx.UNITS_M[unit])
+    structures[index] = s.model_copy(update={key: round(getattr(s, key) + sign * metres, 6)})
+    return f"the {s.shape} moves {metres:g} m to {key[-1]} = {getattr(structures[index], key):g} m"
 
 
 def _dims(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],

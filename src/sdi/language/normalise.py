@@ -186,6 +186,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "then on the right, same.": another one the same there
     (re.compile(r"\b(on|at|in)\s+the\s+(left|right|front|back)\s*,?\s+(?:the\s+)?same(?:\s+(?:again|"
                 r"thing|one))?\s*(?=[.;!]|$)", re.I), r"another one the same \1 the \2"),
+    # "then shift it 2 cubes to the left": a move by that much, never a relation to itself
+    (re.compile(r"\b(move|shift|slide|relocate|push|nudge)\s+(it|them)\s+(?:by\s+)?(\d+(?:\.\d+)?|one|two|"
+                r"three|four|five|a)\s*(mm|cm|m|cubes?)\s+(?:to\s+the|towards\s+the|to\s+its)\s+"
+                r"(left|right)\b", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)} {m.group(3)} {m.group(4)} in "
+     + ("+y" if m.group(5).lower() == "left" else "-y")),
     # "Wall is long 6 and high 3": the sizes of the one named
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+(?:is|are)\s+(?=(?:long|high|tall|wide|deep)\s+\d)",
                 re.I), r"\1 "),

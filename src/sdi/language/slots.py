@@ -111,7 +111,8 @@ def fill_slots(
                 _carry_notes(prev.spec.notes, st)
                 st.notes.append(f"read '{p.text}' as the {prev.spec.structures[0].shape}'s own")
                 continue
-        if REMOVAL.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
+        moved = any(op in ("region", "offset") and pattern.search(p.text) for pattern, op in MODIFY)
+        if REMOVAL.match(p.text) and not moved and [q for q in phrases[:k] if q.spec is not None]:
             # "then pull out the middle cube", "push them together": a change SDI cannot
             # make to a structure it built; never a new structure read from those words
             st.material.append(p.text)

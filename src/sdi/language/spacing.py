@@ -35,6 +35,7 @@ _GAP = re.compile(
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,
 )  # fmt: skip
+_MOVED = re.compile(r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s*$", re.IGNORECASE)
 # "2 cubes to its right", "10 cm in front of it": a relation with its distance
 _OFFSET = re.compile(
     r"(?<!\bof\s)(?<!\bwith\s)(?<!\bby\s)\b"
@@ -185,6 +186,8 @@ def take_gap(text: str, st: ReadState) -> str:
         st.notes.append(f"read '{v.group(0).strip(' ,')}' as a small gap: one part ({part_m:g} m)")
         return text[: v.start()] + " " + text[v.end() :]
     o = _OFFSET.search(text)
+    if o is not None and _MOVED.search(text[: o.start()]):
+        o = None  # "then shift it 2 cubes to the left": a move of the structure, read later
     if o is not None:
         gap = _metres(o.group(1), o.group(2), part_m)
         if gap is not None and 0 < gap <= 0.5:

@@ -204,15 +204,20 @@ class _Parser:
     def is_num(self, k: int) -> bool:
         return 0 <= k < len(self.toks) and self.toks[k].kind == "num"
 
-    def _metres(self, k: int) -> tuple[float, int]:
-        """Value of the number at k in metres and the index after it (with its unit)."""
+    def _metres(self, k: int, axis: str | None = None) -> tuple[float, int]:
+        """Value of the number at k in metres and the index after it (with its unit). A
+        coordinate said without a unit is in the unit that puts it on the table: "x 45" is
+        45 cm, "x 450" 450 mm."""
         value = self.toks[k].value
         if k + 1 < len(self.toks) and self.word(k + 1) in lx.UNITS_M:
             self.toks[k + 1].used = True
             return value * lx.UNITS_M[self.word(k + 1)], k + 2
         if abs(value) > 2.0:
-            self.notes.append(f"read {value:g} without a unit as {value:g} cm")
-            return value / 100.0, k + 1
+            ws = self.cell.workspace
+            lo, hi = {"x": (ws.x_min, ws.x_max), "y": (ws.y_min, ws.y_max)}.get(axis or "", (0, 1))
+            unit = "cm" if lo <= value / 100.0 <= hi or not lo <= value / 1000.0 <= hi else "mm"
+            self.notes.append(f"read {value:g} without a unit as {value:g} {unit}")
+            return value * lx.UNITS_M[unit], k + 1
         return value, k + 1
 
     # -- pass 1: coordinates, rotation, axes, dimension groups, measurements --------------
@@ -230,7 +235,7 @@ class _Parser:
                                               "value", "equals", "equal", "to", "at"):  # fmt: skip
                     j += 1
                 if self.is_num(j) and not (j + 1 < n and t[j + 1].text in ("x", "by")):
-                    metres, end = self._metres(j)
+                    metres, end = self._metres(j, w)
                     self.coords.append((k, w, metres))
                     for m in range(k, end):
                         t[m].used = True
@@ -257,8 +262,8 @@ class _Parser:
                     if j2 < n and t[j2].text == ",":
                         j2 += 1
                     if self.is_num(j2):
-                        x, _ = self._metres(j)
-                        y, end = self._metres(j2)
+                        x, _ = self._metres(j, "x")
+                        y, end = self._metres(j2, "y")
                         if end < n and t[end].text == "," and self.is_num(end + 1):
                             end += 2
                         if end < n and t[end].text == ")":
