@@ -2956,3 +2956,24 @@ def test_a_structure_moved_after_it_was_placed_stands_where_it_was_moved():
     # a copy set off from the first is no move
     r = read("1) row x5 along X (front to back). 2) duplicate it 1 cube to the left, parallel")
     assert len(r.spec.structures) == 2
+
+
+@pytest.mark.parametrize(
+    ("command", "heights"),
+    [
+        ("build for towers won of each height from won to for", [1, 2, 3, 4]),
+        ("three towers going up by won each starting at too", [2, 3, 4]),
+        ("Three towers, the first 2 high and each next one 2 higher, bitte in one line.",
+         [2, 4, 6]),
+        ("uh i want to towers of ate please", [8, 8]),
+    ],
+)  # fmt: skip
+def test_a_series_of_heights_and_numbers_a_recogniser_spells_as_words(command, heights):
+    r = read(command)
+    assert sorted(s.height for s in r.spec.structures) == heights, r.notes
+    assert {s.shape for s in r.spec.structures} == {"tower"} and r.complete
+
+
+def test_four_towers_from_one_to_six_is_no_series():
+    r = read("four towers, one of each height from one to six")
+    assert not (r.complete and sorted(s.height for s in r.spec.structures) == [1, 2, 3, 4])

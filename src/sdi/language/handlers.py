@@ -807,7 +807,22 @@ def _progression(m: re.Match[str], st: ReadState, note: str) -> str:
     heights = [first + k * step for k in range(n)]
     listed = ", ".join(str(h) for h in heights[:-1]) + f" and {heights[-1]}"
     st.notes.append(f"read '{said}' as {groups[1]} of {listed}")
-    return f" {n} {groups[1]} of {listed} "
+    return f" {n} {groups[1]} of {listed}"
+
+
+def _series(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "four towers, one of each height from one to four", "three towers going up by one each
+    starting at two": the heights of the series, one after another."""
+    g = {k: words_to_numbers([v.lower()])[0] for k, v in m.groupdict().items() if v}
+    n, first = int(g["n"]), int(g["first"])
+    step = 1 if g.get("step", "1") == "a" else int(g.get("step", "1"))
+    if "last" in g and int(g["last"]) - first + 1 != n:
+        return m.group(0)  # "four towers from one to six": no series of one step
+    heights = [first + k * step for k in range(n)]
+    listed = ", ".join(str(h) for h in heights[:-1]) + f" and {heights[-1]}"
+    kind = m.group("kind")
+    st.notes.append(f"read '{m.group(0).strip()}' as {kind} of {listed}")
+    return f" {n} {kind} of {listed}"
 
 
 def _part_size(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -836,6 +851,7 @@ HANDLERS: dict[str, Handler] = {
     "{neither_side}": _neither_side,
     "{neg_place}": _neg_place,
     "{rise_order}": _rise_order,
+    "{series}": _series,
     "{unsupported}": _unsupported,
     "{at_most}": _at_most,
     "{corners}": _corners,

@@ -525,6 +525,22 @@ _HOMOPHONES = [
     (re.compile(r"(?<=\bof\s)for\b" + _NOT_A_NOUN_NEXT, re.I), "four"),
     (_TREE, "three "),
     (_WON, "one "),
+    # "of each height from won to for", "going up by won each starting at too", "ate long",
+    # "towers of ate", "for by tree"
+    (re.compile(r"(?<=\bfrom\s)won\b|(?<=\bby\s)won\b", re.I), "one"),
+    (re.compile(r"(?<=\bto\s)for\b(?=\s*(?:[,.;!]|$|and\b|then\b))", re.I), "four"),
+    (re.compile(r"(?<=\bat\s)too\b(?=\s*(?:[,.;!]|$|from\b|and\b|on\b|in\b))", re.I), "two"),
+    (
+        re.compile(
+            r"\bate\s+(?=(?:long|high|tall|wide|deep|by)\b)|(?<=\bof\s)ate\b|(?<=\bby\s)ate\b", re.I
+        ),
+        "eight ",
+    ),
+    (
+        re.compile(r"\bfor\s+(?=by\s+(?:\d|tree|three|too|two|to|for|four|five|six)\b)", re.I),
+        "four ",
+    ),
+    (re.compile(r"(?<=\bby\s)tree\b", re.I), "three"),
     (re.compile(r"(?<=\d)\s+bye\s+(?=\d)", re.I), " by "),
     (re.compile(r"\b(?:el|ell)\s+(?=shape|shaped)", re.I), "L "),
     (re.compile(r"\btee\s+(?=shape|shaped)", re.I), "T "),

@@ -488,11 +488,32 @@ _REWRITES += [
     (  # "four towers; first from 1 cube, every next one cube higher": 1, 2, 3 and 4
         re.compile(
             r"\b(\d+|two|three|four|five|six)\s+(towers|stacks|columns|pillars)\s*[;:,]?\s*(?:the\s+)?first\s+"
-            r"(?:of|from|with|is|one)?\s*(\d+)(?:\s+cubes?)?\s*,?\s*(?:and\s+)?(?:every|each)\s+(?:next|"
+            r"(?:of|from|with|is|one)?\s*(\d+)(?:\s+cubes?)?(?:\s+(?:high|tall))?\s*,?\s*(?:and\s+)?(?:every|each)\s+(?:next|"
             r"following|other|subsequent)(?:\s+one)?\s+(\d+|one|two|a)\s+(?:cubes?\s+)?(?:higher|taller|more)\b",
             re.IGNORECASE,
         ),
         "{progression}",
+        "",
+    ),
+    (  # "four towers, one of each height from one to four": 1, 2, 3 and 4
+        re.compile(
+            r"\b(?P<n>\d+|two|three|four|five|six)\s+(?P<kind>towers|stacks|columns|pillars)\s*,?\s*"
+            r"one\s+(?:of\s+)?each\s+(?:height|size)\s+from\s+(?P<first>\d+|one|two|three|four|five)"
+            r"\s+(?:to|through|up\s+to)\s+(?P<last>\d+|two|three|four|five|six|seven|eight|nine|ten)\b",
+            re.IGNORECASE,
+        ),
+        "{series}",
+        "",
+    ),
+    (  # "three towers going up by one each starting at two": 2, 3 and 4
+        re.compile(
+            r"\b(?P<n>\d+|two|three|four|five|six)\s+(?P<kind>towers|stacks|columns|pillars)\s*,?\s*"
+            r"(?:going\s+up|rising|climbing|increasing|growing|getting\s+taller)\s+by\s+"
+            r"(?P<step>\d+|one|two|a)(?:\s+cubes?)?(?:\s+each(?:\s+time)?)?\s*,?\s*(?:starting|beginning)\s+"
+            r"(?:at|from|with)\s+(?P<first>\d+|one|two|three|four|five)(?:\s+cubes?)?\b",
+            re.IGNORECASE,
+        ),
+        "{series}",
         "",
     ),
     (  # "a pyramid …, but stop before the single top cube": a top left off, which SDI cannot
@@ -1549,7 +1570,8 @@ _REWRITES += [
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
-            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,)|(?<=\d,))\s+in\s+(?:a|one|a\s+single)\s+"
+            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,)|(?<=\d,)|(?<=er)|(?<=er,))\s+in\s+"
+            r"(?:a|one|a\s+single)\s+"
             r"(?:straight\s+|neat\s+)?"
             r"(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
