@@ -2977,3 +2977,43 @@ def test_a_series_of_heights_and_numbers_a_recogniser_spells_as_words(command, h
 def test_four_towers_from_one_to_six_is_no_series():
     r = read("four towers, one of each height from one to six")
     assert not (r.complete and sorted(s.height for s in r.spec.structures) == [1, 2, 3, 4])
+
+
+def test_a_warehouse_operators_words():
+    r = read("Two pallet stacks, 2 by 2 footprint, three layers each, and leave an aisle two "
+             "cubes wide between them.")  # fmt: skip
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("block", 2, 2, 3)
+    ] * 2
+    assert r.spec.gap_m == pytest.approx(0.1) and r.complete
+    r = read("Build a stack 3 pallets high, each pallet a 2 by 2 layer.")
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("block", 2, 2, 3)
+    ]
+    r = read("couple of 4-stacks, back of the cell, touching")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 4)] * 2
+    assert r.spec.gap_m == 0.0
+    r = read("Give me 2 stacks of 4, single cubes, with an aisle of one between them.")
+    assert [s.height for s in r.spec.structures] == [4, 4] and r.complete
+    # "a 3-pillar bridge" is three pillars, not a pillar of three
+    r = read("a 3-pillar bridge, pillars 3 cubes")
+    assert [(s.shape, s.spans) for s in r.spec.structures] == [("bridge", 2)]
+    # "an aisle away from the robot" is no gap
+    assert "gap" not in read("Row of cubes 40 cm long, running down the aisle away from the "
+                             "robot.").text  # fmt: skip
+
+
+def test_several_structures_in_one_region_stand_in_a_line_there():
+    r = plan("three towers of 2 at the back")
+    xs = {round(o.position[0], 3) for o in r.layout.objects}
+    ys = {round(o.position[1], 3) for o in r.layout.objects}
+    assert r.status == "success" and len(xs) == 1 and len(ys) == 3
+    assert min(xs) > 0.5  # all three at the back
+
+
+def test_the_bigger_one_behind_orders_two_structures_front_to_back():
+    r = read("the bigger one behind. two towers, 5 and 2. a cube gap.")
+    assert r.spec.line == "x" and [s.height for s in r.spec.structures] == [2, 5]
+    r = read("Stack of 4 over on the front left, and a line of 5 behind it with a bit of a gap.")
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("back", 0.05)]
+    assert r.spec.structures[1].gap_m is None and r.spec.structures[0].height == 4

@@ -266,10 +266,21 @@ def _place_all(
     ]
     free = [k for k in range(len(placed)) if centres[k] is None and k not in regional]
     wants: list[tuple[int, np.ndarray, str]] = []
-    for k in regional:
-        x, y = _target(placed[k].spec, cell)
-        assert x is not None and y is not None
-        wants.append((k, _clamp(np.array([x, y]), placed[k].half, cell, (0, 1)), "region"))
+    groups: dict[tuple[str | None, tuple[str, ...]], list[int]] = {}
+    for k in regional:  # several in one region ("three towers at the back") stand in a line
+        groups.setdefault((placed[k].spec.region, tuple(placed[k].spec.edge)), []).append(k)
+    for members in groups.values():
+        region = placed[members[0]].spec.region or ""
+        along = 0 if line == "x" or (region in ("left", "right")) else 1
+        widths = [2 * placed[k].half[along] for k in members]
+        start = -(sum(widths) + gap * max(0, len(members) - 1)) / 2
+        for k, w in zip(members, widths, strict=True):
+            x, y = _target(placed[k].spec, cell)
+            assert x is not None and y is not None
+            want = np.array([x, y])
+            want[along] += start + w / 2
+            start += w + gap
+            wants.append((k, _clamp(want, placed[k].half, cell, (0, 1)), "region"))
     d = 0 if line == "x" else 1
     widths = [2 * placed[k].half[d] for k in free]
     s0 = anchor[d] - (sum(widths) + gap * max(0, len(free) - 1)) / 2

@@ -152,8 +152,13 @@ def _extreme_at(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "with the tallest one in the middle": where the biggest (or smallest) of several
     structures stands; the reader orders them (`st.order`)."""
     said = m.group(0).strip(" ,")
-    most = "min" if m.group(1).lower() in ("shortest", "lowest", "smallest") else "max"
-    st.order = (said, most, (m.group(2) or "middle").lower())
+    small = ("shortest", "lowest", "smallest", "shorter", "lower", "smaller")
+    most = "min" if m.group(1).lower() in small else "max"
+    where = (m.group(2) or "").lower() or {"behind": "back"}.get((m.group(3) or "").lower(), "")
+    where = where or ("front" if m.group(3) else "middle")
+    if where in ("front", "back") and st.line is None:
+        st.line = "x"  # "the bigger one behind": one behind the other
+    st.order = (said, most, where)
     return " "
 
 

@@ -192,6 +192,30 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(left|right)\b", re.I),
      lambda m: f"{m.group(1)} {m.group(2)} {m.group(3)} {m.group(4)} in "
      + ("+y" if m.group(5).lower() == "left" else "-y")),
+    # a warehouse's words: "pallet stacks" are blocks, "3 pallets high" three layers, an aisle
+    # is the gap between; "4 singles" four single cubes; "over on the left" is on the left;
+    # "a 5-tower", "4-stacks" are towers of that height
+    (re.compile(r"\bpallet[\s-]+(stacks?|loads?)\b", re.I),
+     lambda m: "stacks" if m.group(0).lower().endswith("s") else "block"),
+    (re.compile(r"(?<=\d)\s+pallets\s+(high|tall)\b", re.I), r" layers \1"),
+    (re.compile(r"\b(?:an?\s+)?aisles?\s+(?:of\s+)?(\d+|one|two|three|a)\b\s*(cubes?|cm|mm)?(?:\s+wide)?",
+                re.I),
+     lambda m: f"a gap of {m.group(1)} {m.group(2) or 'cube'}"),
+    (re.compile(r"\b(\d+|one|two|three|a)[- ](cubes?|cm|mm)\s+aisles?\b", re.I), r"\1 \2 gap"),
+    (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+singles\b", re.I),
+     r"\1 single cubes"),
+    # "two 2 by 2 blocks": structures of that footprint (a "block" counted is a part)
+    (re.compile(r"\b(\d+|two|three|four|five|six)\s+(\d+\s*(?:x|by)\s*\d+(?:\s*(?:x|by)\s*\d+)?)\s+blocks\b",
+                re.I), r"\1 \2 pads"),
+    # "2 stacks of 4, single cubes,": what they are made of, as every stack is
+    (re.compile(r"(\b(?:stacks?|towers?|columns?|rows?|lines?)\s+of\s+(?:\d+|one|two|three|four|five|six|"
+                r"seven|eight|nine|ten))\s*,\s*(?:all\s+)?single\s+cubes\b", re.I), r"\1"),
+    (re.compile(r"\bover\s+(?=(?:on|at|in|by)\s+the\b)", re.I), ""),
+    (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)-(stack|tower|column)(s?)\b"
+                r"(?!\s+(?:" + _FAMILY_SAID + r")\b)", re.I), r"\2\3 of \1"),
+    # "a stack 3 pallets high, each pallet a 2 by 2 layer": the stack's footprint
+    (re.compile(r",?\s*each\s+(?:pallet|layer|level|course|tier)\s+(?:is\s+)?(?:a\s+)?(\d+\s*(?:x|by)\s*\d+)"
+                r"(?:\s+(?:layer|pallet|level|course|tier))?", re.I), r", \1"),
     # "Wall is long 6 and high 3": the sizes of the one named
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+(?:is|are)\s+(?=(?:long|high|tall|wide|deep)\s+\d)",
                 re.I), r"\1 "),

@@ -112,6 +112,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     relations, drafts = relate(phrases, rels, structures, st)
     relations = _stacking_on(relations, drafts, phrases, st)
     drafts = _apart(drafts, st)
+    relations, drafts = _gap_of_relation(relations, drafts, st)
     touch = _TOUCHING.search(text)
     if touch and any(r.kind == "next_to" and r.gap_m is None for r in relations):
         # "directly to its left, touching it": no gap between the two
@@ -347,6 +348,31 @@ def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
                 st.notes.append(note)
         out.append(d)
     return out
+
+
+def _gap_of_relation(
+    relations: list[Relation], drafts: list[StructureDraft], st: ReadState
+) -> tuple[list[Relation], list[StructureDraft]]:
+    """ "a line of 5 behind it with a bit of a gap": one gap, between the line and the one it
+    stands beside, not between the line's own parts."""
+    if not _ONE_GAP.search(st.command):
+        return relations, drafts
+    out = []
+    for r in relations:
+        d = drafts[r.subject]
+        if r.kind == "next_to" and r.gap_m is None and d.shape in ("row", "grid") and d.gap_m:
+            st.notes.append(f"read the gap said with the {d.shape} as {d.gap_m:g} m between it "
+                            "and the structure beside it")  # fmt: skip
+            drafts[r.subject] = d.model_copy(update={"gap_m": None})
+            r = r.model_copy(update={"gap_m": d.gap_m})
+        out.append(r)
+    return out, drafts
+
+
+_ONE_GAP = re.compile(
+    r"\bwith\s+(?:a|one)\s+(?:bit\s+of\s+a\s+|small\s+|little\s+|tiny\s+|slight\s+)?gap\b(?!s)",
+    re.I,
+)
 
 
 _SIDE_BY_SIDE_GAP = re.compile(

@@ -1317,9 +1317,10 @@ _REWRITES += [
     (  # "with the tallest one in the middle": the order of several structures
         re.compile(
             r",?\s*(?:and\s+|with\s+)?(?:the\s+)?(tallest|highest|biggest|largest|longest|shortest|"
-            r"lowest|smallest)\s+(?:one|tower|stack|column|pillar|wall|row)?\s*(?:(?:goes|is|"
+            r"lowest|smallest|taller|higher|bigger|larger|longer|shorter|lower|smaller)\s+"
+            r"(?:one|tower|stack|column|pillar|wall|row)?\s*(?:(?:goes|is|"
             r"stands|should\s+be)\s+)?(?:in\s+the\s+(?:middle|centre|center)|(?:on|at|to)\s+the\s+"
-            r"(left|right|front|back))\b",
+            r"(left|right|front|back)|(behind|in\s+front))\b",
             re.IGNORECASE,
         ),
         "{extreme_at}",
@@ -1575,7 +1576,8 @@ _REWRITES += [
             r"(?:straight\s+|neat\s+)?"
             r"(?:row|line)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|"
-            r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:running\s+|going\s+)?"
+            r"spaced\s+out|apart))?\b(?=\s*(?:,|\.|;|then\b|and\b|$|(?:at|on|in|along)\s+the\s+(?:back|"
+            r"front|left|right|middle|centre|center)\b|(?:running\s+|going\s+)?"
             r"(?:from\s+)?(?:the\s+)?(?:front|back|left|right)\s+to\s+(?:the\s+)?"
             r"(?:front|back|left|right)\b))",
             re.IGNORECASE,

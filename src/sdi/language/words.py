@@ -38,7 +38,7 @@ CONSULTED = _words(
     sideways lengthwise crosswise away towards toward cm mm m metre metres meter meters
     centimetre centimetres centimeter centimeters millimetre millimetres millimeter
     millimeters inside interior hole opening cavity void courtyard beam beams plank planks
-    bar bars girder girders lintel lintels stacked stacking piled pile stack
+    bar bars girder girders lintel lintels stacked stacking piled pile stack footprint
     """
 )
 
