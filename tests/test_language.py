@@ -3017,3 +3017,61 @@ def test_the_bigger_one_behind_orders_two_structures_front_to_back():
     r = read("Stack of 4 over on the front left, and a line of 5 behind it with a bit of a gap.")
     assert [(x.side, x.gap_m) for x in r.spec.relations] == [("back", 0.05)]
     assert r.spec.structures[1].gap_m is None and r.spec.structures[0].height == 4
+
+
+def test_a_structure_on_a_named_corner_of_anothers_top():
+    r = plan("A 3 by 3 slab, one course, with a 2-storey column standing on its rear left corner.")
+    assert r.status == "success"
+    top = {(round(o.position[0], 3), round(o.position[1], 3)) for o in r.layout.objects
+           if o.position[2] > 0.03}  # fmt: skip
+    xs = [o.position[0] for o in r.layout.objects]
+    ys = [o.position[1] for o in r.layout.objects]
+    assert top == {(round(max(xs), 3), round(max(ys), 3))}  # back (+x), left (+y)
+    # "on the back left corner" alone is the table's corner
+    r2 = read("a tower on the back left corner")
+    assert [s.region for s in r2.spec.structures] == ["back left"] and not r2.spec.relations
+
+
+def test_taking_back_what_was_named():
+    r = read("Put a tower of 4 on the left and a wall of 4 by 2 on the right. Actually forget "
+             "the wall.")  # fmt: skip
+    assert [(s.shape, s.region) for s in r.spec.structures] == [("tower", "left")] and r.complete
+    with pytest.raises(SpecError, match="takes back"):
+        read("A tower of 4. No, 6. No wait, scratch all of that, don't build anything.")
+    r = read("ok so I said a tower of 3 earlier but scratch that, different thing entirely "
+             "today: a pyramid of 2 levels.")  # fmt: skip
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("pyramid", 2)]
+    # "don't build anything at the back" is a place, not a retraction
+    r = read("don't build anything at the back, put a tower of 3 at the front")
+    assert [(s.shape, s.region) for s in r.spec.structures] == [("tower", "front")]
+
+
+def test_taking_down_what_stands_on_the_table_is_not_a_build():
+    with pytest.raises(SpecError, match="clear table"):
+        read("Take down the castle from last night.")
+    r = plan("remove the tower from yesterday and build a wall of 4")
+    assert r.status == "partial" and any("clear table" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    ("command", "shape", "size"),
+    [
+        ("Realize a tower with half a dozen cubes plus one.", "tower", 7),
+        ("Please a row of ten cubes, all in one line from left to right.", "row", 10),
+        ("ok new batch incoming, ignore the racket from line 3. row of 4 please", "row", 4),
+    ],
+)
+def test_sums_a_redundant_line_and_a_production_lines_name(command, shape, size):
+    r = read(command)
+    assert [(s.shape, getattr(s, "height", None) or s.length) for s in r.spec.structures] == [
+        (shape, size)
+    ]
+
+
+def test_a_stack_touching_a_pallets_edge_and_a_rise_along_an_axis():
+    r = read("Drop a single-layer 4 by 2 pallet at the back, and put a 3-high stack in front of "
+             "it, touching the pallet's front edge.")  # fmt: skip
+    assert len(r.spec.structures) == 2
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("front", 0.0)]
+    s = read("Staircase, 3 steps, rising in -y.").spec.structures[0]
+    assert (s.axis, s.yaw_deg) == ("y", 180.0)  # climbing towards the right (-y)

@@ -393,7 +393,7 @@ def _at_anchors(
         lo, hi = (base.xy[high] - half).min(axis=0), (base.xy[high] + half).max(axis=0)
         centre, room = (lo + hi) / 2, (hi - lo) / 2 - sub.half  # where a copy's centre may go
         long = int(np.argmax(hi - lo))
-        if at.startswith("corner"):
+        if at.startswith("corner") or at.endswith(" corner"):
             if np.any(room < sub.half - 1e-9):  # two copies side by side would touch
                 raise InfeasibleError(
                     f"on each corner: the {base.spec.shape}'s top face is too small for four "
@@ -401,6 +401,10 @@ def _at_anchors(
                     parameter="length",
                 )
             offsets = [np.array([sx * room[0], sy * room[1]]) for sx in (-1, 1) for sy in (-1, 1)]
+            if " " in at:  # "back left corner": that one (back = +x, left = +y)
+                fb, lr = at.split()[:2]
+                offsets = [np.array([(1 if fb == "back" else -1) * room[0],
+                                     (1 if lr == "left" else -1) * room[1]])]  # fmt: skip
         else:
             if room[long] < sub.half[long] - 1e-9:
                 raise InfeasibleError(

@@ -353,12 +353,13 @@ def _place_words(doc: Doc, tokens: set[int]) -> list[tuple[Token, str]]:
     return out
 
 
-def _places_at_odds(doc: Doc, spec: Spec, tokens: set[int]) -> str | None:
+def _places_at_odds(doc: Doc, spec: Spec, tokens: set[int], gone: str) -> str | None:
     """One structure, no relation, and places said for it on both sides of an axis ("on the
-    right, on the left"): the reading can stand on one of them only."""
+    right, on the left"): the reading can stand on one of them only. Places of structures
+    taken back or moved (`gone`, their notes) are not its own."""
     if len(spec.structures) != 1 or spec.relations or spec.structures[0].region is None:
         return None
-    said = _place_words(doc, tokens)
+    said = [(t, p) for t, p in _place_words(doc, tokens) if p not in gone]
     said += [(t, "centre") for t in doc if t.i in tokens and t.lower_ in ("middle", "centre",
              "center") and t.head.lower_ in ("in", "at")]  # fmt: skip
     said.sort(key=lambda tp: tp[0].i)
@@ -414,7 +415,8 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     for word in lost:
         st.material.append(word)
         st.notes.append(f"ignored '{word}': no structure of the reading stands there")
-    odds = None if lost else _places_at_odds(doc, spec, tokens)
+    gone = " ".join(n for n in st.notes if "taken back" in n or "(was " in n).lower()
+    odds = None if lost else _places_at_odds(doc, spec, tokens, gone)
     if odds:
         where = spec.structures[0].region
         st.material.append(odds)

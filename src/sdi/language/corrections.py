@@ -142,9 +142,13 @@ def _another_structure(before: str, after: str, notes: list[str]) -> str | None:
     cuts = [m.end() for m in _CLAUSE_CUT.finditer(before.rstrip(" ,;:—–-"))]
     start = cuts[-1] if cuts else 0
     taken_back = before[start:].strip(" ,;:—–-")
+    taken_back = re.sub(r"\s+(?:but|and|or)$", "", taken_back, flags=re.I)  # "… earlier but"
     if not _names_structure(taken_back):
         return None
     new = re.sub(r"\s*\binstead\b", "", _MAKE_IT.sub("", after.strip()), flags=re.I).strip()
+    lead = re.search(r"(?:^|[:;,—–-]\s*)((?:an?|one)\s.*)$", new, re.IGNORECASE | re.DOTALL)
+    if lead and not _names_structure(new[: lead.start(1)]):
+        new = lead.group(1)  # "scratch that, different thing entirely today: a pyramid of 2"
     if not re.match(r"(?:an?|one)\s", new, re.IGNORECASE):
         return None  # "actually make the pillars 4": a change of the structure, not another
     place = _PLACE.search(taken_back)

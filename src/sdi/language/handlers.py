@@ -270,6 +270,18 @@ def _array_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {n} {groups[3]}{high} "
 
 
+def _top_corner(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a column standing on its rear left corner": on top of the structure, at that corner
+    of its top face; "on the back left corner" alone is the table's."""
+    said, groups = _said(m)
+    if "its" not in said.lower().split() and " of " not in said.lower():
+        return m.group(0)
+    corner = f"{'back' if groups[0] in ('back', 'rear') else 'front'} {groups[1]} corner"
+    st.anchors.append(("on_top_of", corner))
+    st.notes.append(f"read '{said}' as on top of it, at its {corner}")
+    return " on top "
+
+
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cube in each corner of the table": one copy in each corner region. Without "of
     the table" only when no other structure is named (then the corners may be its own)."""
@@ -857,6 +869,7 @@ HANDLERS: dict[str, Handler] = {
     "{neg_place}": _neg_place,
     "{rise_order}": _rise_order,
     "{series}": _series,
+    "{top_corner}": _top_corner,
     "{unsupported}": _unsupported,
     "{at_most}": _at_most,
     "{corners}": _corners,

@@ -172,6 +172,20 @@ MODIFY = [
         r"wall)\b",
         "drop",
     ),
+    # "a tower on the left and a wall on the right. Actually forget the wall.": that one, gone
+    _op(
+        r"\b(?:forget|remove|drop|scrap|cancel|skip|lose|ditch|delete|get\s+rid\s+of|take\s+away|"
+        r"leave\s+out|quit)\s+(?:about\s+)?the\s+("
+        + shape_alternation(exclude=lx.AMBIGUOUS_SHAPES)
+        + r")\b(?!\s*(?:'s|of)\b)",
+        "drop_family",
+    ),
+    # "A tower of 4. No wait, scratch all of that": everything named before, gone
+    _op(
+        r"\b(?:scratch|cancel|forget|scrap|undo|drop|delete|clear)\s+(?:all\s+(?:of\s+)?(?:that|it|this|"
+        r"the\s+above|them)|everything|the\s+whole\s+(?:thing|lot))\b",
+        "undo_all",
+    ),
     # "… Then a tower of 3 next to it. Undo the last one.", "scratch that": the step before, gone
     _op(
         r"\b(?:undo|scratch|cancel|forget|scrap|take\s+back|delete|remove|get\s+rid\s+of)\s+"
@@ -403,6 +417,29 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     return f"{left} left of the {left + 1}{size}"
 
 
+def _drop_family(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+                 structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "… and a wall on the right. Actually forget the wall.": the one structure of that family
+    named before, taken back (of several, the command does not say which: not changed)."""
+    family = lx.SHAPE_WORDS.get(m.group(1).lower())
+    indices = [q.first + k for q in built for k in range(q.count)]
+    found = [i for i in indices if structures[i].shape == family]
+    if len(found) != 1 or len(indices) < 2:
+        return None
+    index = found[0]
+    gone = structures.pop(index)
+    owner = next(q for q in built if q.first <= index < q.first + q.count)
+    for q in before:
+        if q.count and q.first > index:
+            q.first -= 1
+    owner.count -= 1
+    if owner.count == 0:
+        owner.undone = True  # its relations go with it
+    said = ", ".join(f"{k} {v:g}" for k, v in _sizes(gone).items())
+    where = f", on the {gone.region}" if gone.region else ""
+    return f"the {gone.shape} taken back ({said or 'its default size'}{where})"
+
+
 def _sizes(s: StructureDraft) -> dict[str, float]:
     """The sizes a structure was given (to say what was taken back)."""
     keys = {"length", "width", "height", "steps", "count", "length_m", "width_m", "height_m"}
@@ -422,6 +459,18 @@ def _undo(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     target.count, target.undone = 0, True
     said = [f"the {s.shape}" + "".join(f" {k} {v:g}" for k, v in _sizes(s).items()) for s in gone]
     return f"the step before taken back: {' and '.join(said)} not built"
+
+
+def _undo_all(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+              structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "scratch all of that": every structure named before is taken back (with nothing named
+    after, nothing is left to build: the reader refuses)."""
+    said = [f"the {s.shape}" + "".join(f" {k} {v:g}" for k, v in _sizes(s).items())
+            for s in structures]  # fmt: skip
+    structures.clear()
+    for q in built:
+        q.count, q.undone = 0, True
+    return f"everything before taken back: {' and '.join(said)} not built"
 
 
 def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
@@ -498,7 +547,8 @@ _EVERY = re.compile(
 
 _CHANGES: dict[str, Change] = {
     "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars,
-    "hollow": _hollow, "drop": _drop, "undo": _undo,
+    "hollow": _hollow, "drop": _drop, "drop_family": _drop_family, "undo": _undo,
+    "undo_all": _undo_all,
 }  # fmt: skip
 """The changes that are not a size of the last structure (`_resize` does those)."""
 

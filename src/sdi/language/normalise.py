@@ -12,6 +12,7 @@ from sdi.errors import SpecError
 from sdi.language.nouns import shape_alternation
 from sdi.language.units import to_millimetres
 from sdi.spec import lexicon as lx
+from sdi.spec.numbers import words_to_numbers
 
 _SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "″": '"', "\u00a0": " "}
 
@@ -112,6 +113,14 @@ def _stage(text: str, notes: list[str]) -> str:
     return _STAGE.sub(place, text)
 
 
+def _plus(m: re.Match[str]) -> str:
+    """ "half a dozen cubes plus one": the sum."""
+    said = m.group(1).lower()
+    first = 6 if said.startswith("half") else 12 if "dozen" in said else int(
+        words_to_numbers([said])[0])  # fmt: skip
+    return f"{first + int(words_to_numbers([m.group(3).lower()])[0])} {m.group(2) or ''}"
+
+
 _DIMENSION_ADJ = {
     "height": "high", "high": "high", "length": "long", "long": "long", "width": "wide",
     "wide": "wide", "depth": "deep", "thickness": "thick",
@@ -210,6 +219,25 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "2 stacks of 4, single cubes,": what they are made of, as every stack is
     (re.compile(r"(\b(?:stacks?|towers?|columns?|rows?|lines?)\s+of\s+(?:\d+|one|two|three|four|five|six|"
                 r"seven|eight|nine|ten))\s*,\s*(?:all\s+)?single\s+cubes\b", re.I), r"\1"),
+    # "half a dozen cubes plus one": seven; "a row of ten cubes, all in one line": a row is one
+    # line; "the racket from line 3": a production line's name; "the pallet's front edge": it
+    (re.compile(r"\b(half\s+a\s+dozen|a\s+dozen|\d+|two|three|four|five|six|seven|eight|nine|ten)\s+"
+                r"(cubes?\s+|blocks?\s+)?plus\s+(\d+|one|two|three|four|five)\b(?:\s+(?:more|extra))?",
+                re.I), _plus),
+    (re.compile(r"(\b(?:row|line)\s+of\s+[^.;]*?)\s*,?\s*(?:all\s+)?in\s+(?:a|one)\s+(?:single\s+|straight\s+)?"
+                r"line\b", re.I), r"\1"),
+    (re.compile(r"\b(?:from|on|at|in)\s+(?:production\s+)?line\s+\d+\b", re.I), " "),
+    (re.compile(r"\bthe\s+(" + _FAMILY_SAID + r")'s\s+(?:front|back|rear|left|right|near|far)?\s*"
+                r"(?:edge|side|face|end)\b", re.I), "it"),
+    # "rising in -y", "do not rise toward +y": the side of the table that axis points to
+    (re.compile(r"\b(climbing|climbs?|rising|rises?|ascending|ascends?|going\s+up|goes\s+up)\s+(?:in|along|"
+                r"towards?|to)\s+(?:the\s+)?([+-])\s*([xy])\b", re.I),
+     lambda m: f"{m.group(1)} to the " + {"+x": "back", "-x": "front", "+y": "left", "-y": "right"}[
+         m.group(2) + m.group(3).lower()]),
+    # "…, don't build anything": everything before taken back
+    (re.compile(r"\b(?:(?:do\s+not|don'?t)\s+build\s+anything(?:\s+at\s+all)?|build\s+nothing)\b"
+                r"(?!\s*(?:at|on|in|near|behind|to|there|here|left|right|front|back|beside|next|within|"
+                r"inside|outside|around|between|under|over)\b)", re.I), "scratch all of that"),
     (re.compile(r"\bover\s+(?=(?:on|at|in|by)\s+the\b)", re.I), ""),
     (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)-(stack|tower|column)(s?)\b"
                 r"(?!\s+(?:" + _FAMILY_SAID + r")\b)", re.I), r"\2\3 of \1"),

@@ -108,6 +108,9 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             understood={},
         )
     if not structures:
+        down = next((n for n in st.notes if "cannot take down" in n), None)
+        if down is not None:
+            raise SpecError(down.removeprefix("ignored "), understood=understood_summary(doc))
         no_structure(st, doc, command)
     relations, drafts = relate(phrases, rels, structures, st)
     relations = _stacking_on(relations, drafts, phrases, st)

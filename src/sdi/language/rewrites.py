@@ -1264,6 +1264,15 @@ _REWRITES += [
         " on top of it ",
         "read '{0}' as on top of it, centred",
     ),
+    (  # "with a 2-storey column standing on its rear left corner": on top, at that corner
+        re.compile(
+            r",?\s*\b(?:standing|sitting|resting|placed|set|stood|mounted|stacked)?\s*(?:up)?on\s+(?:its|the)\s+"
+            r"(back|rear|front)[\s-]+(left|right)(?:[\s-]+hand)?\s+corner(?:\s+of\s+(?:it|the\s+\w+))?\b",
+            re.IGNORECASE,
+        ),
+        "{top_corner}",
+        "",
+    ),
     (  # "a column rising from its centre": on top of it, centred
         re.compile(
             r"\b(?:rising|growing|sticking\s+up|coming\s+up|going\s+up)\s+(?:up\s+)?(?:from|out\s+of)\s+"

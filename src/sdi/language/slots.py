@@ -111,6 +111,21 @@ def fill_slots(
                 _carry_notes(prev.spec.notes, st)
                 st.notes.append(f"read '{p.text}' as the {prev.spec.structures[0].shape}'s own")
                 continue
+        said_shapes = [w for w in re.findall(r"[a-z]+", p.text.lower()) if w in lx.SHAPE_WORDS]
+        alone = not [q for q in phrases[:k] if q.spec is not None] and len(said_shapes) == 1
+        down = _TAKE_DOWN.match(p.text)
+        if down and not alone and not [q for q in phrases[:k] if q.spec is not None]:
+            said = p.text[: down.end()].strip() + " " + said_shapes[0]
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': SDI builds on a clear table and cannot take down "
+                            "what already stands there")  # fmt: skip
+        if down and alone:
+            # "Take down the castle from last night.": nothing named before to take down
+            st.material.append(p.text)
+            st.notes.append(f"ignored '{p.text.strip()}': SDI builds on a clear table and cannot "
+                            "take down what already stands there; clear it, then say what to "
+                            "build")  # fmt: skip
+            continue
         moved = any(op in ("region", "offset") and pattern.search(p.text) for pattern, op in MODIFY)
         if REMOVAL.match(p.text) and not moved and [q for q in phrases[:k] if q.spec is not None]:
             # "then pull out the middle cube", "push them together": a change SDI cannot
@@ -198,6 +213,13 @@ def fill_slots(
         st.material.append(text)
         st.notes.append(f"ignored '{text}': no structure named there")
     return structures
+
+
+_TAKE_DOWN = re.compile(
+    r"^\W*(?:please\s+)?(?:take|tear|knock|pull)\s+down\b|^\W*(?:please\s+)?(?:demolish|dismantle|"
+    r"clear\s+away|remove|destroy)\s+the\b",
+    re.IGNORECASE,
+)
 
 
 _ORDINAL_OF = re.compile(

@@ -123,7 +123,7 @@ SIGNIFICANT = _words(
     checkerboard chessboard alternate alternating
     skip skipping skipped omit omitting omitted except excepting excluding exclude excluded
     missing instead demolish demolished destroy destroyed dismantle dismantled
-    topple toppled scrap scrapped dozen dozens
+    topple toppled scrap scrapped dozen dozens quit
     """
 )
 

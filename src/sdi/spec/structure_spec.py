@@ -359,7 +359,10 @@ class SpecDraft(BaseModel):
 
 
 RelationKind = Literal["on_top_of", "around", "next_to"]
-Anchor = Literal["corners", "ends", "corner", "end", "sides"]
+Anchor = Literal[
+    "corners", "ends", "corner", "end", "sides",
+    "back left corner", "back right corner", "front left corner", "front right corner",
+]  # fmt: skip
 
 
 class Relation(BaseModel):
@@ -395,6 +398,8 @@ class Relation(BaseModel):
             raise ValueError("at: a ring around a structure has no corners or ends to stand at")
         if self.at == "sides" and self.kind != "next_to":
             raise ValueError("at: copies on all four sides stand beside the structure")
+        if self.at is not None and " " in self.at and self.kind != "on_top_of":
+            raise ValueError(f"at: '{self.at}' names a corner of the structure's top face")
         if self.at is not None and self.side is not None:
             raise ValueError("at: copies at the corners or ends have no single side")
         if self.gap_m is not None and self.kind != "next_to":
