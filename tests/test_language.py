@@ -3075,3 +3075,31 @@ def test_a_stack_touching_a_pallets_edge_and_a_rise_along_an_axis():
     assert [(x.side, x.gap_m) for x in r.spec.relations] == [("front", 0.0)]
     s = read("Staircase, 3 steps, rising in -y.").spec.structures[0]
     assert (s.axis, s.yaw_deg) == ("y", 180.0)  # climbing towards the right (-y)
+
+
+@pytest.mark.parametrize(
+    ("command", "want"),
+    [
+        ("two towers, 5 and 3 high", [("tower", 5), ("tower", 3)]),
+        ("3 tower, and a row of 2", [("tower", 3), ("row", None)]),
+        ("1 tower, 8 cubes", [("tower", 8)]),
+        ("3 layres of 2 by 3 on one palett", [("block", 3)]),
+        ("Wall: length 350 mm, height 100 mm, thickness 50 mm.", [("wall", None)]),
+    ],
+)
+def test_an_operators_shorthand(command, want):
+    r = read(command)
+    assert [(s.shape, getattr(s, "height", None)) for s in r.spec.structures] == want, r.notes
+    assert r.complete, r.notes
+
+
+def test_sizes_counted_in_cubes_and_gaps_said_off_or_between_each_one():
+    r = read("a hollow rectangle, 6 cubes by 4 cubes on the outside, 2 high")
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("enclosure", 6, 4, 2)
+    ]
+    r = read("make a row of five but dont let them touch like leave a little gap between each one")
+    assert r.complete and [s.gap_m for s in r.spec.structures] == [0.05]
+    r = read("3-step staircase in the middle, and a 2 stack each side of it, left and right, "
+             "one cube off")  # fmt: skip
+    assert [(x.kind, x.at, x.gap_m) for x in r.spec.relations] == [("next_to", "ends", 0.05)]

@@ -100,6 +100,12 @@ def check_family(
         spec = spec.model_copy(update={"shape": wide, "gap_m": None, "count": None})
         if wide == "grid":
             spec = spec.model_copy(update={"height": None})
+    thin = (spec.width == 1) or (spec.width_m is not None and round(spec.width_m / part_m) == 1)
+    if spec.shape in ("row", "wall") and thin and (spec.length or spec.length_m):
+        # "a wall 350 mm long, 50 mm thick": one part thick, as a row or wall is
+        notes.append(f"'{spec.width_m:g} m thick': one part, as a {spec.shape} is" if spec.width_m
+                     else f"'1 wide': one part, as a {spec.shape} is")  # fmt: skip
+        spec = spec.model_copy(update={"width": None, "width_m": None})
     if spec.shape == "row" and spec.height is not None and spec.height > 1:
         notes.append(f"a row {spec.height} high is a wall: built a wall")
         spec = spec.model_copy(update={"shape": "wall", "gap_m": None})

@@ -121,6 +121,10 @@ def _plus(m: re.Match[str]) -> str:
     return f"{first + int(words_to_numbers([m.group(3).lower()])[0])} {m.group(2) or ''}"
 
 
+_BOTH_SIDES = (
+    r"\s*,?\s*(?:left\s+and\s+right|right\s+and\s+left|front\s+and\s+back|back\s+and\s+front)\b"
+)
+
 _DIMENSION_ADJ = {
     "height": "high", "high": "high", "length": "long", "long": "long", "width": "wide",
     "wide": "wide", "depth": "deep", "thickness": "thick",
@@ -238,6 +242,25 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(?:(?:do\s+not|don'?t)\s+build\s+anything(?:\s+at\s+all)?|build\s+nothing)\b"
                 r"(?!\s*(?:at|on|in|near|behind|to|there|here|left|right|front|back|beside|next|within|"
                 r"inside|outside|around|between|under|over)\b)", re.I), "scratch all of that"),
+    # "6 cubes by 4 cubes": 6 by 4; "a 2 stack", "the 4 stack", "3 tower": a stack of 2 …;
+    # "none touching", "none in the front"; "on one pallet" (the structure is the pallet);
+    # "two towers, 5 and 3 high": towers of 5 and 3
+    (re.compile(r"\b(\d+)\s+cubes?\s+(by|x)\s+(\d+)\s+cubes?\b", re.I), r"\1 \2 \3"),
+    (re.compile(r"(^|[.;:,]\s*|\b(?:a|an|the|one|each|every)\s+)([2-9]|10|two|three|four|five|six|seven|eight|"
+                r"nine|ten)\s+(stack|tower|column)\b(?!\s*(?:of|with|s\b))", re.I), r"\1\3 of \2"),
+    (re.compile(r"\bnone\s+(?:of\s+them\s+)?touching\b", re.I), "not touching"),
+    (re.compile(r",\s*none\s+(?:of\s+them\s+)?(?=(?:in|at|on)\s+the\s+(?:front|back|left|right)\b)",
+                re.I), ", not "),
+    (re.compile(r"\s+(?:on|onto)\s+(?:one|a|the|a\s+single)\s+pallet\b(?!\s+of)", re.I), ""),
+    (re.compile(r"\b(\d+|two|three|four|five|six)\s+(towers|stacks|columns|pillars),?\s+((?:\d+\s*,\s*)*\d+"
+                r"\s*,?\s*and\s+\d+)\s+(?:cubes?\s+)?(?:high|tall)\b", re.I), r"\1 \2 of \3"),
+    # "a little gap between each one": gaps; "each side of it, left and right": each side
+    (re.compile(r"\b(gaps?|space|spacing)\s+between\s+(?:each\s+(?:one|cube|block|part|of\s+them)|them\s+all|"
+                r"the\s+cubes)\b", re.I), r"\1"),
+    (re.compile(r"(?<!\bon\s)\b(each|either|both)\s+(sides?)\s+of\s+(it|them)" + _BOTH_SIDES, re.I),
+     r"on \1 \2 of \3"),
+    (re.compile(r"(?<=\bon\s)(each|either|both)\s+(sides?)\s+of\s+(it|them)" + _BOTH_SIDES, re.I),
+     r"\1 \2 of \3"),
     (re.compile(r"\bover\s+(?=(?:on|at|in|by)\s+the\b)", re.I), ""),
     (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)-(stack|tower|column)(s?)\b"
                 r"(?!\s+(?:" + _FAMILY_SAID + r")\b)", re.I), r"\2\3 of \1"),

@@ -24,7 +24,8 @@ _GAP = re.compile(
     r",?\s*\b(?:with\s+|leaving\s+|leave\s+|keep\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?"
     + _N + r"(?:[- ]?" + _UNIT + r")?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:gaps?|spaces?|spacing|apart|aisle)\b"
-    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+away(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
+    + r"|" + _N + r"[- ]?" + _UNIT
+    + r"\s+(?:away|off|out|clear)(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:of\s+)?width\s+between(?:\s+(?:them|the\s+two|each))?"
@@ -35,6 +36,9 @@ _GAP = re.compile(
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,
 )  # fmt: skip
+_BETWEEN_EACH = re.compile(
+    r"^\s*(?:in\s+)?between\s+(?:each\s+(?:one|other|of\s+them)|them(?:\s+all)?)\b", re.IGNORECASE
+)
 _MOVED = re.compile(r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s*$", re.IGNORECASE)
 # "2 cubes to its right", "10 cm in front of it": a relation with its distance
 _OFFSET = re.compile(
@@ -184,7 +188,8 @@ def take_gap(text: str, st: ReadState) -> str:
     if v is not None:
         st.gap_m = part_m
         st.notes.append(f"read '{v.group(0).strip(' ,')}' as a small gap: one part ({part_m:g} m)")
-        return text[: v.start()] + " " + text[v.end() :]
+        rest = _BETWEEN_EACH.sub("", text[v.end() :])
+        return text[: v.start()] + " " + rest
     o = _OFFSET.search(text)
     if o is not None and _MOVED.search(text[: o.start()]):
         o = None  # "then shift it 2 cubes to the left": a move of the structure, read later
