@@ -3103,3 +3103,21 @@ def test_sizes_counted_in_cubes_and_gaps_said_off_or_between_each_one():
     r = read("3-step staircase in the middle, and a 2 stack each side of it, left and right, "
              "one cube off")  # fmt: skip
     assert [(x.kind, x.at, x.gap_m) for x in r.spec.relations] == [("next_to", "ends", 0.05)]
+
+
+def test_an_architects_words():
+    r = read("A colonnade of five columns, three storeys each, running left to right, one cube "
+             "of clear space between neighbouring columns.")  # fmt: skip
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 3)] * 5
+    assert r.spec.gap_m == pytest.approx(0.05) and r.complete
+    r = read("a bridge on two 3-storey piers")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 3)] and r.complete
+    r = read("A ground-floor slab with a 25 by 15 cm footprint, one course thick.")
+    assert r.complete
+
+
+def test_removing_the_only_structure_named_leaves_nothing_to_build():
+    with pytest.raises(SpecError, match="takes back everything"):
+        read("Build a wall of 5 long, 2 high. Then remove the wall. Then remove the tower.")
+    r = read("a wall of 4. remove the wall. a tower of 3")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 3)]

@@ -424,7 +424,7 @@ def _drop_family(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], bui
     family = lx.SHAPE_WORDS.get(m.group(1).lower())
     indices = [q.first + k for q in built for k in range(q.count)]
     found = [i for i in indices if structures[i].shape == family]
-    if len(found) != 1 or len(indices) < 2:
+    if len(found) != 1:
         return None
     index = found[0]
     gone = structures.pop(index)

@@ -121,13 +121,14 @@ def _plus(m: re.Match[str]) -> str:
     return f"{first + int(words_to_numbers([m.group(3).lower()])[0])} {m.group(2) or ''}"
 
 
+_BRIDGE = re.compile(r"\b(?:bridge|arch)\b", re.IGNORECASE)
 _BOTH_SIDES = (
     r"\s*,?\s*(?:left\s+and\s+right|right\s+and\s+left|front\s+and\s+back|back\s+and\s+front)\b"
 )
 
 _DIMENSION_ADJ = {
     "height": "high", "high": "high", "length": "long", "long": "long", "width": "wide",
-    "wide": "wide", "depth": "deep", "thickness": "thick",
+    "wide": "wide", "depth": "deep", "thickness": "thick", "large": "long",
 }  # fmt: skip
 
 _FOREIGN_COURTESY = re.compile(
@@ -173,7 +174,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # right; "half so high" is half as high; "the double of" is twice
     (re.compile(r"\b(\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten)\s+"
                 r"((?:cubes?|blocks?|parts?|floors?|levels?|storeys?|cm|mm|centimet(?:re|er)s?)\s+)?"
-                r"(?:of\s+(height|length|width|depth|thickness|high|long|wide)|"
+                r"(?:of\s+(height|length|width|depth|thickness|high|long|wide|large)|"
                 r"in\s+(height|length|width|depth|thickness))\b", re.I),  # "8 in long": inches
      lambda m: m.group(1) + " " + (m.group(2) or "")
      + _DIMENSION_ADJ[(m.group(3) or m.group(4)).lower()]),
@@ -261,6 +262,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      r"on \1 \2 of \3"),
     (re.compile(r"(?<=\bon\s)(each|either|both)\s+(sides?)\s+of\s+(it|them)" + _BOTH_SIDES, re.I),
      r"\1 \2 of \3"),
+    # an architect's words: "a colonnade of five columns" is five columns, piers are pillars,
+    # "between neighbouring columns" is between them, a "ground-floor slab" a slab
+    (re.compile(r"\b(?:an?\s+)?colonnade\s+(?:of|with)\s+(?=\d|two|three|four|five|six|seven|eight)",
+                re.I), ""),
+    (re.compile(r"\bpier(s?)\b", re.I),  # a bridge's piers are its pillars
+     lambda m: ("pillar" + m.group(1)) if _BRIDGE.search(m.string) else m.group(0)),
+    (re.compile(r"\bbetween\s+(?:neighbouring|neighboring|adjacent)\s+(?:columns|towers|stacks|pillars)\b",
+                re.I), "between them"),
+    (re.compile(r"\bground[\s-]+floor\s+(?=slab|plate|pad|platform|layer)", re.I), ""),
     (re.compile(r"\bover\s+(?=(?:on|at|in|by)\s+the\b)", re.I), ""),
     (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)-(stack|tower|column)(s?)\b"
                 r"(?!\s+(?:" + _FAMILY_SAID + r")\b)", re.I), r"\2\3 of \1"),

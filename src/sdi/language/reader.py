@@ -88,6 +88,12 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     phrases, rels = find_phrases(doc)
     said = list(st.notes)
     structures = fill_slots(phrases, rels, st, doc)
+    if not structures and any(p.undone for p in phrases):
+        raise SpecError(
+            f"'{command.strip()[:60]}' takes back everything it names: nothing is left to "
+            "build; say what to build instead",
+            understood={},
+        )
     if not structures:
         # nothing recognised: correct harder (words the English vocabulary knows too, "wal"),
         # then read a structure-less description ("something small") as a tower
@@ -100,13 +106,6 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             doc = parse(text)
             phrases, rels = find_phrases(doc)
             structures = fill_slots(phrases, rels, st, doc)
-    undone = [p.text for p in phrases if p.undone]
-    if not structures and undone:
-        raise SpecError(
-            f"'{command.strip()[:60]}' takes back the only thing it names: nothing is left to "
-            "build; say what to build instead",
-            understood={},
-        )
     if not structures:
         down = next((n for n in st.notes if "cannot take down" in n), None)
         if down is not None:

@@ -126,7 +126,9 @@ def fill_slots(
                             "take down what already stands there; clear it, then say what to "
                             "build")  # fmt: skip
             continue
-        moved = any(op in ("region", "offset") and pattern.search(p.text) for pattern, op in MODIFY)
+        moved = any(  # "move it to the left": a change MODIFY makes
+            op in _CHANGE_OPS and pattern.search(p.text) for pattern, op in MODIFY
+        )
         if REMOVAL.match(p.text) and not moved and [q for q in phrases[:k] if q.spec is not None]:
             # "then pull out the middle cube", "push them together": a change SDI cannot
             # make to a structure it built; never a new structure read from those words
@@ -215,6 +217,7 @@ def fill_slots(
     return structures
 
 
+_CHANGE_OPS = frozenset({"region", "offset"})
 _TAKE_DOWN = re.compile(
     r"^\W*(?:please\s+)?(?:take|tear|knock|pull)\s+down\b|^\W*(?:please\s+)?(?:demolish|dismantle|"
     r"clear\s+away|remove|destroy)\s+the\b",
