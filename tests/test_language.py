@@ -3121,3 +3121,20 @@ def test_removing_the_only_structure_named_leaves_nothing_to_build():
         read("Build a wall of 5 long, 2 high. Then remove the wall. Then remove the tower.")
     r = read("a wall of 4. remove the wall. a tower of 3")
     assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 3)]
+
+
+def test_structures_asked_about_then_described_are_built_once():
+    r = read("Is it ok to put a small pyramid on top of a block? Maybe a 3 by 3 block two high, "
+             "with a pyramid of 2 levels sitting on it?")  # fmt: skip
+    assert [s.shape for s in r.spec.structures] == ["block", "pyramid"]
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("on_top_of", 1, 0)]
+    # another one said: both built
+    r = read("Can you build a tower? Then another tower of 4 next to it.")
+    assert len(r.spec.structures) == 2
+
+
+def test_what_a_structure_is_for_and_a_size_agreed_are_no_structures():
+    r = read("just give me a 2 by 4 slab, one course, as a plinth study.")
+    assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("grid", 2, 4)]
+    r = read("Yes, the ring: 4 by 4, one high. Or no, let me think... yes, 4 by 4 is fine.")
+    assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("enclosure", 4, 4)]

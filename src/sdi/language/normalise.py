@@ -271,6 +271,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bbetween\s+(?:neighbouring|neighboring|adjacent)\s+(?:columns|towers|stacks|pillars)\b",
                 re.I), "between them"),
     (re.compile(r"\bground[\s-]+floor\s+(?=slab|plate|pad|platform|layer)", re.I), ""),
+    # "…, one course, as a plinth study": what it is for; "yes, 4 by 4 is fine": a size agreed
+    (re.compile(r",?\s*\bas\s+an?\s+(?:\w+\s+)?(?:study|test|demo|mock-?up|example|sample|trial|"
+                r"placeholder|stand-?in|dummy)\b", re.I), ""),
+    (re.compile(r"\b(?:(?:yes|yeah|ok|okay)\s*,?\s*)?(?:\d+\s*(?:x|by)\s*\d+|\d+|one|two|three|four|five|six)"
+                r"\s+(?:is|'s)\s+(?:fine|ok|okay|good|right|correct|perfect|enough)\b", re.I), ""),
     (re.compile(r"\bover\s+(?=(?:on|at|in|by)\s+the\b)", re.I), ""),
     (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)-(stack|tower|column)(s?)\b"
                 r"(?!\s+(?:" + _FAMILY_SAID + r")\b)", re.I), r"\2\3 of \1"),

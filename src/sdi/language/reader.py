@@ -38,6 +38,7 @@ The reading in progress — its phrases, the relations between them and the note
 from __future__ import annotations
 
 import re
+from typing import TYPE_CHECKING
 
 from sdi.errors import LimitError, SpecError
 from sdi.language import claims, coherence, corrections, scanned, spacing, structured, typos
@@ -54,6 +55,9 @@ from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
 from sdi.spec.structure_spec import Relation, Spec, StructureDraft, StructureSpec
+
+if TYPE_CHECKING:
+    from spacy.tokens import Doc
 
 
 def read(command: str, cell: CellConfig | None = None) -> Reading:
@@ -88,6 +92,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     phrases, rels = find_phrases(doc)
     said = list(st.notes)
     structures = fill_slots(phrases, rels, st, doc)
+    structures = _asked_then_described(phrases, structures, st, doc)
     if not structures and any(p.undone for p in phrases):
         raise SpecError(
             f"'{command.strip()[:60]}' takes back everything it names: nothing is left to "
@@ -196,6 +201,44 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         ignored=tuple(dict.fromkeys(st.ignored)),
         material=tuple(dict.fromkeys(st.material)),
     )
+
+
+def _asked_then_described(
+    phrases: list[Phrase], structures: list[StructureDraft], st: ReadState, doc: Doc
+) -> list[StructureDraft]:
+    """ "Is it ok to put a small pyramid on top of a block? Maybe a 3 by 3 block two high, with
+    a pyramid of 2 levels sitting on it?": structures asked about with no size, then described
+    with sizes in a later sentence, are the ones described (built once)."""
+    asked = [
+        q for q in phrases
+        if q.count and q.spec is not None and q.tokens and not _SIZED.search(q.text)
+        and doc[q.tokens[0]].sent.text.rstrip().endswith("?")
+    ]  # fmt: skip
+    if not asked or _ANOTHER.search(st.command):
+        return structures
+    first_sent = doc[asked[0].tokens[0]].sent.start
+    if any(doc[q.tokens[0]].sent.start != first_sent for q in asked):
+        return structures  # one question only
+    later = [q for q in phrases if q.count and q.spec is not None and q.tokens
+             and doc[q.tokens[0]].sent.start > first_sent]  # fmt: skip
+    said = [structures[q.first + k].shape for q in asked for k in range(q.count)]
+    after = [structures[q.first + k].shape for q in later for k in range(q.count)]
+    if not later or any(said.count(f) > after.count(f) for f in set(said)):
+        return structures
+    out = list(structures)
+    for q in sorted(asked, key=lambda q: q.first, reverse=True):
+        del out[q.first : q.first + q.count]
+        for r in phrases:
+            if r.count and r.first > q.first:
+                r.first -= q.count
+        q.count, q.undone = 0, True
+    st.notes.append(f"read the question '{doc[asked[0].tokens[0]].sent.text.strip()}' as asking "
+                    "for the structures described after it")  # fmt: skip
+    return out
+
+
+_SIZED = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.IGNORECASE)
+_ANOTHER = re.compile(r"\b(?:another|second|more|also|too|as\s+well|again)\b", re.IGNORECASE)
 
 
 def _one_each(relations: list[Relation], st: ReadState) -> list[Relation]:
