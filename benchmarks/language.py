@@ -1,4 +1,4 @@
-"""The language front end on the unseen evaluation sets (dev, dev2 … dev14 and frozen test).
+"""The language front end on the unseen evaluation sets (dev, dev2 … dev22 and frozen test).
 
 Every case is planned in-process with `sdi.pipeline.plan` and scored:
 
@@ -8,13 +8,11 @@ Every case is planned in-process with `sdi.pipeline.plan` and scored:
 * honest miss       — not correct, but the status is not ``success``;
 * silent misreading — status ``success`` but the predicate fails (the worst outcome).
 
-Writes `benchmarks/results/language_dev.json`, `language_dev2.json`, `language_dev3.json`,
-`language_dev4.json`, `language_dev5.json`, `language_dev6.json`, `language_dev7.json`,
-`language_dev8.json`, `language_dev9.json`, `language_dev10.json`, `language_dev11.json`,
-`language_dev12.json`, `language_dev13.json`, `language_dev14.json` and `language_test.json`.
+Writes `benchmarks/results/language_<set>.json` for every set of
+`sdi.bench.language_checks.SETS` (dev, dev2 … dev22 and test).
 
-Run: `python benchmarks/language.py [--set dev|dev2|…|dev14|test|both|all]` (`both` = dev and
-test, `all` = dev, dev2 … dev14 and test).
+Run: `python benchmarks/language.py [--set dev|dev2|…|dev22|test|both|all]` (`both` = dev and
+test, `all` = every set).
 """
 
 from __future__ import annotations

@@ -3138,3 +3138,23 @@ def test_what_a_structure_is_for_and_a_size_agreed_are_no_structures():
     assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("grid", 2, 4)]
     r = read("Yes, the ring: 4 by 4, one high. Or no, let me think... yes, 4 by 4 is fine.")
     assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("enclosure", 4, 4)]
+
+
+def test_the_work_table_a_footprint_tower_and_a_single_cube_marker():
+    r = read("Hi Sam - table's clear, I packed the test pieces away. First job: a 2 by 2 block, "
+             "3 high, and a 5-tower on its right with a one-cube gap. Cheers, Priya")  # fmt: skip
+    assert [s.shape for s in r.spec.structures] == ["block", "tower"] and r.complete
+    r = read("a 2x2 tower of 3 on the left")
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("block", 2, 2, 3)
+    ]
+    assert [s.shape for s in read("a 1x1 tower of 3").spec.structures] == ["tower"]
+    r = read("In the middle bay a 2 by 2 stack 3 high, and on either side of it a single-cube "
+             "marker, one cube off.")  # fmt: skip
+    assert [(s.shape, getattr(s, "height", None)) for s in r.spec.structures] == [
+        ("block", 3),
+        ("tower", 1),
+    ]
+    assert [(x.subject, x.object, x.at) for x in r.spec.relations] == [(1, 0, "ends")]
+    # "split it into two stacks" is no reading SDI makes: said, never silent
+    assert not read("Build a 5-high stack, then split it into two stacks side by side").complete

@@ -36,6 +36,7 @@ from sdi.bench.language_dev18 import CASES as DEV18
 from sdi.bench.language_dev19 import CASES as DEV19
 from sdi.bench.language_dev20 import CASES as DEV20
 from sdi.bench.language_dev21 import CASES as DEV21
+from sdi.bench.language_dev22 import CASES as DEV22
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -271,6 +272,7 @@ SETS = {
     "dev19": (DEV19, 170, 8, 15),
     "dev20": (DEV20, 170, 8, 15),
     "dev21": (DEV21, 170, 8, 15),
+    "dev22": (DEV22, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -286,6 +288,7 @@ HARD = {
     "dev19": ("relation", "numbers", "dimensions", "sequence"),
     "dev20": ("relation", "numbers", "dimensions", "sequence"),
     "dev21": ("relation", "numbers", "dimensions", "sequence"),
+    "dev22": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -353,6 +356,7 @@ def test_every_predicate_answers_without_raising(result):
         *DEV19,
         *DEV20,
         *DEV21,
+        *DEV22,
         *TEST,
     ):
         out = case.accept(result)
@@ -394,6 +398,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev19.py",
         "language_dev20.py",
         "language_dev21.py",
+        "language_dev22.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

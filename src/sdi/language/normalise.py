@@ -276,6 +276,20 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"placeholder|stand-?in|dummy)\b", re.I), ""),
     (re.compile(r"\b(?:(?:yes|yeah|ok|okay)\s*,?\s*)?(?:\d+\s*(?:x|by)\s*\d+|\d+|one|two|three|four|five|six)"
                 r"\s+(?:is|'s)\s+(?:fine|ok|okay|good|right|correct|perfect|enough)\b", re.I), ""),
+    # "table's clear", "the table is empty": the work table; "I packed the test pieces away":
+    # what was done before; "a 2x2 tower of 3": a 2 by 2 block 3 high
+    (re.compile(r"\b(?:the\s+)?(?:work\s*)?table(?:'s|\s+is)\s+(?:now\s+)?(?:clear|empty|free|ready|clean)"
+                r"(?:ed)?\b", re.I), ""),
+    (re.compile(r"\b(?:i|we)\s+(?:packed|put|cleared|tidied|took)\s+(?:the\s+)?(?:\w+\s+)?(?:pieces|cubes|parts|"
+                r"blocks|bricks)\s+away\b", re.I), ""),
+    (re.compile(r"\b(\d+)\s*(?:x|by)\s*(\d+)\s+(?:towers?|columns?|stacks?|pillars?)\s+(?:of\s+)?(\d+)(?![/.\d])"
+                r"(?:\s+(?:cubes?|high|tall|levels?|layers?))?\b", re.I),
+     lambda m: f"tower of {m.group(3)}" if m.group(1) == m.group(2) == "1"
+     else f"{m.group(1)} by {m.group(2)} block {m.group(3)} high"),
+    # "a single-cube marker", "a one-cube spacer": one cube standing alone
+    (re.compile(r"\b(an?|one|each|two|three|four)\s+(?:single|one)[- ]cube\s+(?:markers?|posts?|"
+                r"pieces?|spacers?|stops?|pins?|pegs?|cones?|targets?|blocks?)\b", re.I),
+     r"\1 1-cube tower"),
     (re.compile(r"\bover\s+(?=(?:on|at|in|by)\s+the\b)", re.I), ""),
     (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)-(stack|tower|column)(s?)\b"
                 r"(?!\s+(?:" + _FAMILY_SAID + r")\b)", re.I), r"\2\3 of \1"),

@@ -123,7 +123,8 @@ SIGNIFICANT = _words(
     checkerboard chessboard alternate alternating
     skip skipping skipped omit omitting omitted except excepting excluding exclude excluded
     missing instead demolish demolished destroy destroyed dismantle dismantled
-    topple toppled scrap scrapped dozen dozens quit
+    topple toppled scrap scrapped dozen dozens quit remove removed removing delete deleted forget
+    cancel cancelled tear split splitting lift lifted ditch
     """
 )
 
