@@ -3158,3 +3158,14 @@ def test_the_work_table_a_footprint_tower_and_a_single_cube_marker():
     assert [(x.subject, x.object, x.at) for x in r.spec.relations] == [(1, 0, "ends")]
     # "split it into two stacks" is no reading SDI makes: said, never silent
     assert not read("Build a 5-high stack, then split it into two stacks side by side").complete
+
+
+def test_a_bare_structure_beside_sized_ones_is_said_not_silently_built():
+    # "table's clear" once built a default canopy beside the block; any such bare structure
+    # with no size, place or relation among sized ones is reported
+    r = read("a tower of 4 on the left, and a plinth")
+    assert not r.complete and any("'plinth': a block of its default size" in n for n in r.notes)
+    # placed together as said, or with a count, or the sizes left to SDI: no report
+    assert read("a T and a cross next to each other, the T on the left").complete
+    assert read("a tower of 3 next to a bridge").complete
+    assert read("a tower of 3 and a bridge, your call on the sizes").complete

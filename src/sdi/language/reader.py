@@ -192,6 +192,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
                         "not know (another language?); say it in English")  # fmt: skip
     coherence.check(doc, spec, st, {k for p in phrases for k in p.tokens})
     claims.check(spec, st)
+    _bare_among_sized(spec, phrases, st)
     return Reading(
         command=command,
         text=text.strip(),
@@ -237,6 +238,37 @@ def _asked_then_described(
     return out
 
 
+def _bare_among_sized(spec: Spec, phrases: list[Phrase], st: ReadState) -> None:
+    """A structure named with no size or place, unrelated to the others, beside structures the
+    command sizes ("Hi Sam - table's clear …: a 2 by 2 block, 3 high"): a default one built
+    from a word that may not ask for one; said, never a silent success."""
+    if len(spec.structures) < 2 or st.delegated or _TOGETHER.search(st.command):
+        return  # "a T and a cross next to each other": placed together, as said
+    related = {k for r in spec.relations for k in (r.subject, r.object)}
+    sized = [k for k, s in enumerate(spec.structures) if s.model_fields_set - _NO_SIZE]
+    if not sized:
+        return
+    for k, s in enumerate(spec.structures):
+        if k in related or s.model_fields_set - _NO_SIZE:
+            continue
+        own = next((p for p in phrases if p.count and p.first <= k < p.first + p.count), None)
+        if own is not None and own.count == 1:
+            said = own.text.strip()
+        else:  # the word of the command that named it ("plinth"), else its family
+            words = re.findall(r"[a-z]+", (own.text if own is not None else "").lower())
+            said = next((w for w in words if lx.SHAPE_WORDS.get(w) == s.shape), s.shape)
+        if own is not None and own.count == 1 and _SIZED.search(said):
+            continue  # "two of them, and a row": a count said with it
+        st.material.append(said)
+        st.notes.append(f"'{said}': a {s.shape.replace('_', ' ')} of its default size, with no "
+                        "size or place of its own beside the structures sized; say its size "
+                        "if it is meant")  # fmt: skip
+
+
+_TOGETHER = re.compile(
+    r"\b(?:next\s+to|beside)\s+(?:each\s+other|one\s+another)|\bside\s+by\s+side\b", re.IGNORECASE
+)
+_NO_SIZE = frozenset({"shape", "part", "yaw_deg", "edge", "axis"})
 _SIZED = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.IGNORECASE)
 _ANOTHER = re.compile(r"\b(?:another|second|more|also|too|as\s+well|again)\b", re.IGNORECASE)
 
