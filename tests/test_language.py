@@ -3169,3 +3169,21 @@ def test_a_bare_structure_beside_sized_ones_is_said_not_silently_built():
     assert read("a T and a cross next to each other, the T on the left").complete
     assert read("a tower of 3 next to a bridge").complete
     assert read("a tower of 3 and a bridge, your call on the sizes").complete
+
+
+def test_distances_said_centre_to_centre_are_placed_as_clear_gaps():
+    r = read("Column of 3 centred on x 400 y 300. Second column of 3, 100 mm to the left of the "
+             "first, centre to centre.")  # fmt: skip
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("left", pytest.approx(0.05))]
+    r = read("two columns of 4, 150 mm centre to centre, not touching, aligned along x.")
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("back", pytest.approx(0.1))]
+    assert r.complete and [s.height for s in r.spec.structures] == [4, 4]
+    # between structures wider than a part the pitch is no clear gap SDI can place: said
+    assert not read("two 2 by 2 blocks, 300 mm apart centre to centre").complete
+
+
+def test_a_structure_at_stated_coordinates_stays_there_with_another_beside_it():
+    r = plan("Column of 3 centred on x 400 y 300. Second column of 3, 100 mm to the left of the "
+             "first, centre to centre.")  # fmt: skip
+    cols = sorted({(round(o.position[0], 3), round(o.position[1], 3)) for o in r.layout.objects})
+    assert r.status == "success" and cols == [(0.4, 0.3), (0.4, 0.4)]

@@ -10,7 +10,7 @@ layout must pass the verifier, or the Designer says which constraint it breaks.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -35,6 +35,9 @@ class _Placed:
     yaws: np.ndarray  # (n,) rad
     half: np.ndarray  # (2,) footprint half extents x, y, m
     kinds: list[str]
+    # where the structure's own footprint centre is in the unit (a unit of related
+    # structures is centred on all of them; stated coordinates are the structure's own)
+    origin: np.ndarray = field(default_factory=lambda: np.zeros(2))
 
 
 def part_sizes(cell: CellConfig, part: str) -> Sizes:
@@ -233,6 +236,9 @@ def _place_all(
             continue
         x, y = _target(p.spec, cell)
         c = np.array([anchor[0] if x is None else x, anchor[1] if y is None else y])
+        c = c - np.array(
+            [p.origin[0] if x is not None else 0.0, p.origin[1] if y is not None else 0.0]
+        )
         free_axes = tuple(d for d, v in enumerate((p.spec.at_x, p.spec.at_y)) if v is None)
         c = _clamp(c, p.half, cell, free_axes)
         if not _inside(c, p.half, cell):
@@ -318,6 +324,7 @@ def _merge(base: _Placed, other: _Placed, dxy: np.ndarray, dz: float) -> _Placed
         yaws=yaws,
         half=(hi - lo) / 2,
         kinds=[*base.kinds, *other.kinds],
+        origin=base.origin - centre,
     )
 
 

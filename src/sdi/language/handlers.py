@@ -282,6 +282,17 @@ def _top_corner(m: re.Match[str], st: ReadState, note: str) -> str:
     return " on top "
 
 
+def _not_touching(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "not touching", "spaced out": a part's width apart — unless a gap is already said
+    ("150 mm apart, not touching"), which keeps them apart as it is."""
+    said = _said(m)[0]
+    if st.gap_m is not None or st.span_m is not None:
+        st.notes.append(f"'{said}': holds, the gap said keeps them apart")
+        return " "
+    st.notes.append(note.format(said))
+    return " spaced 5 cm apart "
+
+
 def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cube in each corner of the table": one copy in each corner region. Without "of
     the table" only when no other structure is named (then the corners may be its own)."""
@@ -870,6 +881,7 @@ HANDLERS: dict[str, Handler] = {
     "{rise_order}": _rise_order,
     "{series}": _series,
     "{top_corner}": _top_corner,
+    "{not_touching}": _not_touching,
     "{unsupported}": _unsupported,
     "{at_most}": _at_most,
     "{corners}": _corners,

@@ -121,6 +121,9 @@ def _plus(m: re.Match[str]) -> str:
     return f"{first + int(words_to_numbers([m.group(3).lower()])[0])} {m.group(2) or ''}"
 
 
+_APART_SAID = re.compile(
+    r"\b(?:apart|gap|between|clear|centre\s+to\s+centre|center\s+to\s+center)\b", re.I
+)
 _BRIDGE = re.compile(r"\b(?:bridge|arch)\b", re.IGNORECASE)
 _BOTH_SIDES = (
     r"\s*,?\s*(?:left\s+and\s+right|right\s+and\s+left|front\s+and\s+back|back\s+and\s+front)\b"
@@ -290,6 +293,18 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(an?|one|each|two|three|four)\s+(?:single|one)[- ]cube\s+(?:markers?|posts?|"
                 r"pieces?|spacers?|stops?|pins?|pegs?|cones?|targets?|blocks?)\b", re.I),
      r"\1 1-cube tower"),
+    # "two columns of three, left and right": one on the left, one on the right
+    (re.compile(r"(\b(?:two|2|both)\s+(?:\w+\s+){0,5}?(?:towers|columns|stacks|pillars|walls|rows)\b[^.;]*?)"
+                r",\s*(left|front)\s+and\s+(right|back)\b(?!\s+(?:of|side))", re.I),
+     lambda m: m.group(1) + ("" if _APART_SAID.search(m.string)  # side by side, that far apart
+                             else f", one on the {m.group(2)} and one on the {m.group(3)}")),
+    # "aligned along x": one behind the other; "aligned along y": side by side
+    (re.compile(r"\b(?:aligned|lined\s+up)\s+(?:along|on|with)\s+(?:the\s+)?x(?:[\s-]+axis)?\b",
+                re.I),
+     "one behind the other"),
+    (re.compile(r"\b(?:aligned|lined\s+up)\s+(?:along|on|with)\s+(?:the\s+)?y(?:[\s-]+axis)?\b",
+                re.I),
+     "side by side"),
     (re.compile(r"\bover\s+(?=(?:on|at|in|by)\s+the\b)", re.I), ""),
     (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)-(stack|tower|column)(s?)\b"
                 r"(?!\s+(?:" + _FAMILY_SAID + r")\b)", re.I), r"\2\3 of \1"),

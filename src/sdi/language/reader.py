@@ -83,6 +83,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = normalise(text, st.notes)
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes)
+    text = spacing.take_centres(text, st)
     text = spacing.take_span(text, st)
     text = spacing.take_gap(text, st)
     text = claims.take(text, st)
@@ -182,7 +183,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         raise SpecError(
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
-    spec = spacing.apply_gap(spec, st)
+    spec = spacing.pitches(spacing.apply_gap(spec, st), st)
     said_words = re.findall(r"[A-Za-z]{2,}", text)
     unknown = list(dict.fromkeys(w for w in said_words if not typos.known_word(w)))
     if len(unknown) >= 3 and len(unknown) >= 0.25 * len(said_words):

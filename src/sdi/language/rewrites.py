@@ -17,6 +17,13 @@ from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
 
+_NOT_TOUCHING = re.compile(
+    r",?\s*\b(?:but\s+)?(?:(?:not|no|never|without)\s+touch(?:ing)?(?:\s+each\s+other|"
+    r"\s+one\s+another|\s+it|\s+them|\s+the\s+(?:ring|wall|row|tower|base|slab|enclosure))?|"
+    r"spaced\s+out|spread\s+out|"
+    r"with\s+gaps?\s+between\s+them)\b",
+    re.IGNORECASE,
+)
 _OPPOSITE = {**lx.OPPOSITE_SIDE, "middle": "left", "centre": "left", "center": "left"}
 
 
@@ -1126,17 +1133,7 @@ _REWRITES += [
         " with a {0} base ",
         "",
     ),
-    (
-        re.compile(
-            r",?\s*\b(?:but\s+)?(?:(?:not|no|never|without)\s+touch(?:ing)?(?:\s+each\s+other|"
-            r"\s+one\s+another|\s+it|\s+them|\s+the\s+(?:ring|wall|row|tower|base|slab|enclosure))?|"
-            r"spaced\s+out|spread\s+out|"
-            r"with\s+gaps?\s+between\s+them)\b",
-            re.IGNORECASE,
-        ),
-        " spaced 5 cm apart ",
-        "read '{0}' as a part's width apart",
-    ),
+    (_NOT_TOUCHING, "{not_touching}", "read '{0}' as a part's width apart"),
     (re.compile(r"\b(left|right|front|back)\s+half\b", re.IGNORECASE), " {0} ", ""),
     (re.compile(r",?\s*\ball\s+touching(?:\s+each\s+other)?\b", re.IGNORECASE), " ", ""),
     (
@@ -1580,7 +1577,7 @@ _REWRITES += [
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
-            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,)|(?<=\d,)|(?<=er)|(?<=er,))\s+in\s+"
+            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,)|(?<=\d,)|(?<=\d\s,)|(?<=er)|(?<=er,))\s+in\s+"
             r"(?:a|one|a\s+single)\s+"
             r"(?:straight\s+|neat\s+)?"
             r"(?:row|line)"
@@ -2432,6 +2429,8 @@ _ON_END = re.compile(
 
 
 def rewrite(text: str, st: ReadState) -> str:
+    if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
+        text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
     text = _level_labels(text, st)
     text = _tetris(text, st)
 

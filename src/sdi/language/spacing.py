@@ -165,6 +165,48 @@ def take_span(text: str, st: ReadState) -> str:
     return text[: m.start()] + " " + text[m.end() :]
 
 
+_CENTRES = re.compile(
+    r",?\s*\b(?:measured\s+)?(?:from\s+)?(?:centre|center)s?[\s-]+to[\s-]+(?:centre|center)s?\b|,?\s*\bon\s+"
+    r"(?:centres|centers)\b|,?\s*\bc/c\b",
+    re.IGNORECASE,
+)
+
+
+def take_centres(text: str, st: ReadState) -> str:
+    """`text` without "centre to centre": the distances said are between centres, not clear
+    gaps (`pitches` turns them into gaps once the structures are known)."""
+    m = _CENTRES.search(text)
+    if m is None:
+        return text
+    st.centres = m.group(0).strip(" ,")
+    before, after = text[: m.start()], text[m.end() :]
+    if re.search(r"\d\s*(?:mm|cm|m|cubes?)\s*$", before) and not re.match(r"\s*apart\b", after):
+        before += " apart"  # "two columns, 150 mm centre to centre": 150 mm apart
+    return before + after
+
+
+def pitches(spec: Spec, st: ReadState) -> Spec:
+    """Gaps said centre to centre, as clear gaps: between towers one part wide, the pitch less
+    one part; between others the command's measure is not a clear gap SDI can place: said."""
+    if st.centres is None:
+        return spec
+    part = st.cell.cube[0]
+    narrow = all(s.shape == "tower" and getattr(s, "length", None) in (None, 1)
+                 for s in spec.structures)  # fmt: skip
+    if not narrow:
+        st.material.append(st.centres)
+        st.notes.append(f"ignored '{st.centres}': the gaps are placed clear between the "
+                        "structures, not between their centres")  # fmt: skip
+        return spec
+
+    def clear(g: float | None) -> float | None:
+        return None if g is None else round(max(0.0, g - part), 6)
+
+    relations = tuple(r.model_copy(update={"gap_m": clear(r.gap_m)}) for r in spec.relations)
+    st.notes.append(f"read '{st.centres}': the gaps said less one part width ({part:g} m), clear")
+    return spec.model_copy(update={"gap_m": clear(spec.gap_m), "relations": relations})
+
+
 def take_gap(text: str, st: ReadState) -> str:
     """`text` without the gap phrase between structures; the gap in `st.gap_m`."""
     if not _several(text) or _INSIDE.search(text):

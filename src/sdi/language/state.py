@@ -61,3 +61,4 @@ class ReadState:
     delegated: str | None = None  # "your call on sizes", "whatever": the choice left to SDI
     # "not stacked", "they mustn't touch": (kind, what was said), checked on the whole reading
     claims: list[tuple[str, str]] = field(default_factory=list)
+    centres: str | None = None  # "100 mm apart, centre to centre": the gaps said are pitches
