@@ -3187,3 +3187,13 @@ def test_a_structure_at_stated_coordinates_stays_there_with_another_beside_it():
              "first, centre to centre.")  # fmt: skip
     cols = sorted({(round(o.position[0], 3), round(o.position[1], 3)) for o in r.layout.objects})
     assert r.status == "success" and cols == [(0.4, 0.3), (0.4, 0.4)]
+
+
+def test_an_ordinal_names_one_of_the_structures_built_one_by_one():
+    r = read("Build a tower of 5, then another one of 5 to the right of it. Hmm, make the second "
+             "one 3 instead.")  # fmt: skip
+    assert [s.height for s in r.spec.structures] == [5, 3] and r.complete
+    r = read("a tower of 3 and a wall of 4. make the first one 5")
+    assert r.spec.structures[0].height == 5
+    # no third structure: nothing changed, said
+    assert not read("a tower of 3 and a tower of 4. make the third one 5").complete

@@ -65,6 +65,13 @@ MODIFY = [
     ),
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
+    # "Build a tower of 5, then another one of 5 to the right of it. Make the second one 3."
+    _op(
+        r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last)\s+(?:one|tower|stack|column|"
+        r"pillar|row|wall)\s+(?:to\s+|into\s+)?" + _N + r"(?:\s+(?:cubes?|high|tall|long|levels?))?"
+        r"\s*(?:instead)?\s*$",
+        "=main",
+    ),
     _op(
         r"\bgive\s+(?:it|them)\s+" + _N + r"\s+(?:steps|treads|stairs|levels|layers|tiers|cubes)\b",
         "=main",
@@ -479,10 +486,9 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     (the last, or the one an ordinal picks); a size said in metres counts in parts of
     `part_m`."""
     key = None
-    if op.endswith("main"):  # "make it 4", "make it 3 less": the size it was given, or its main
-        key, op = _main_slot(structures[_last_index(built)]), op[0]
-        if key is None:
-            return None
+    main = op.endswith("main")  # "make it 4", "make it 3 less": the size it was given, or its main
+    if main:
+        op = op[0]
     if op in ("+1", "-1"):
         n, op = 1, op[0]
     else:
@@ -495,11 +501,24 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         n = int(value)
     target = built[-1]
     index = _last_index(built)
-    ordinal = re.search(r"\bthe\s+(first|second|third|last)\b", p.text, re.I)
+    ordinal = re.search(r"\bthe\s+(first|second|third|fourth|last)\b", p.text, re.I)
     if ordinal and target.count > 1:
-        pick = {"first": 0, "second": 1, "third": 2, "last": target.count - 1}
-        index = target.first + min(pick[ordinal.group(1).lower()], target.count - 1)
+        pick = {"first": 0, "second": 1, "third": 2, "fourth": 3, "last": target.count - 1}
+        if pick[ordinal.group(1).lower()] >= target.count:
+            return None  # "the third one" of two: no such structure
+        index = target.first + pick[ordinal.group(1).lower()]
+    elif ordinal:  # one structure per phrase: the ordinal counts every structure built
+        every = [q.first + k for q in built for k in range(q.count)]
+        pick = {"first": 0, "second": 1, "third": 2, "fourth": 3, "last": len(every) - 1}
+        at = pick[ordinal.group(1).lower()]
+        if at >= len(every):
+            return None
+        index = every[at]
     last = structures[index]
+    if main:
+        key = _main_slot(last)
+        if key is None:
+            return None
     if op == "-" and last.shape == "pyramid" and re.search(r"\btop\b", p.text, re.I):
         return None  # its top taken off a pyramid is a cut-off pyramid, not a smaller one
     if (
