@@ -3197,3 +3197,9 @@ def test_an_ordinal_names_one_of_the_structures_built_one_by_one():
     assert r.spec.structures[0].height == 5
     # no third structure: nothing changed, said
     assert not read("a tower of 3 and a tower of 4. make the third one 5").complete
+
+
+def test_make_them_changes_every_one_and_typos_of_correction_words():
+    r = read("two towrs of 4 nex to each other, actualy make them 5")
+    assert [s.height for s in r.spec.structures] == [5, 5] and r.complete
+    assert [s.height for s in read("three towers of 2. make them 4").spec.structures] == [4] * 3

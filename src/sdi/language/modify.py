@@ -559,7 +559,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
 
 _EVERY = re.compile(
     r"\b(?:to\s+each|each\s+of\s+them|all\s+of\s+them|them\s+all|every\s+one|each\s+one|"
-    r"both(?:\s+of\s+them)?|on\s+each|all\s+\w+s\b)",
+    r"both(?:\s+of\s+them)?|on\s+each|all\s+\w+s\b|(?:make|raise|lower|extend|change|give)\s+them\b)",
     re.IGNORECASE,
 )
 

@@ -35,12 +35,12 @@ _FUNCTION = {"side", "sides", "then", "another", "other", "each", "every", "edge
              "bottom", "middle", "centre", "center", "after", "first", "second", "third", "last",
              "across", "along", "same", "space", "gap", "level", "layer", "inch", "inches",
              "foot", "feet", "wait", "sorry", "tetris", "piece", "downstage",
-             "upstage"}  # fmt: skip
+             "upstage", "actually", "instead", "height"}  # fmt: skip
 _TARGETS = words.CORRECTABLE | _FUNCTION  # what a word may be corrected to
 _CHOICES = sorted(_TARGETS)
 
 
-_CUT_SHORT = ("tall", "long", "high", "wide", "deep")
+_CUT_SHORT = ("tall", "long", "high", "wide", "deep", "next")  # "tal", "nex": a letter lost
 
 
 @cache
