@@ -3203,3 +3203,15 @@ def test_make_them_changes_every_one_and_typos_of_correction_words():
     r = read("two towrs of 4 nex to each other, actualy make them 5")
     assert [s.height for s in r.spec.structures] == [5, 5] and r.complete
     assert [s.height for s in read("three towers of 2. make them 4").spec.structures] == [4] * 3
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "A column 35 centimetres tall on a single-cube footprint.",
+        "A hollow enclosure: outer footprint 6 by 4, walls one cube thick and two courses high.",
+        "Four storeys, on a single-cube footprint, in the back right corner: the column.",
+    ],
+)
+def test_what_every_column_or_ring_is_anyway_is_no_unused_size(command):
+    assert read(command).complete

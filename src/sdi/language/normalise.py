@@ -298,6 +298,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r",\s*(left|front)\s+and\s+(right|back)\b(?!\s+(?:of|side))", re.I),
      lambda m: m.group(1) + ("" if _APART_SAID.search(m.string)  # side by side, that far apart
                              else f", one on the {m.group(2)} and one on the {m.group(3)}")),
+    # "a column … on a single-cube footprint": as every column is; "walls one cube thick": as a
+    # ring's walls are
+    (re.compile(r",?\s*\b(?:on|with|of)\s+(?:a\s+)?(?:single|one|1)[- ]cube\s+footprint\b", re.I),
+     ""),
+    (re.compile(r",?\s*\b(?:(?:the|its|with)\s+)?(?:walls?|sides?)\s+(?:are\s+|is\s+)?"
+                r"(?:one|1|a\s+single)\s+(?:cube|part|block)\s+thick\b", re.I), ""),
     # "aligned along x": one behind the other; "aligned along y": side by side
     (re.compile(r"\b(?:aligned|lined\s+up)\s+(?:along|on|with)\s+(?:the\s+)?x(?:[\s-]+axis)?\b",
                 re.I),
