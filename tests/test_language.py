@@ -3215,3 +3215,8 @@ def test_make_them_changes_every_one_and_typos_of_correction_words():
 )
 def test_what_every_column_or_ring_is_anyway_is_no_unused_size(command):
     assert read(command).complete
+
+
+def test_a_height_named_first_with_its_level_word():
+    r = read("Height 3 courses, length 300 mm, wall, at the front.")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("wall", 3)] and r.complete

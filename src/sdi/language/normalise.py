@@ -677,6 +677,9 @@ _MEASURE = rf"(\d+(?:\.\d+)?\s*{_UNIT_SAID}?)(?!\w|\.\d)"
 _DIM_WORD = {"length": "long", "height": "high", "width": "wide", "depth": "deep",
              "thickness": "thick", "l": "long", "h": "high", "w": "wide", "d": "deep"}  # fmt: skip
 # "with length of 0.3 meter and height of 0.1 meter": the value with its dimension word
+_HIGH_LEVELS = re.compile(
+    r"\b(\d+)\s+high\s+(?:courses|layers|levels|storeys|stories|floors|tiers|cubes)\b", re.I
+)
 _NAMED_DIM = re.compile(
     r"\b(?:with\s+)?(?:a\s+)?(length|height|width|depth|thickness)\s+(?:of\s+|is\s+|[:=]\s*)?"
     + _MEASURE,
@@ -1016,6 +1019,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     text = _DOUBLE_OF.sub(times, text)
     text = _NAMED_DIM.sub(_dimensioned, text)
+    text = _HIGH_LEVELS.sub(r"\1 high", text)  # "Height 3 courses" read as "3 high courses"
     text = _LETTER_DIM.sub(_dimensioned, text)
     text = _DIM_FIRST.sub(
         lambda m: f"{m.group(1)}{m.group(3).strip()} {_LARGE.get(m.group(2).lower(), m.group(2))} ",
