@@ -3220,3 +3220,84 @@ def test_what_every_column_or_ring_is_anyway_is_no_unused_size(command):
 def test_a_height_named_first_with_its_level_word():
     r = read("Height 3 courses, length 300 mm, wall, at the front.")
     assert [(s.shape, s.height) for s in r.spec.structures] == [("wall", 3)] and r.complete
+
+
+def _columns(r):
+    """(x, y) of each column of cubes with its height in parts, sorted."""
+    cols: dict[tuple[float, float], int] = {}
+    for o in r.layout.objects:
+        key = (round(o.position[0], 3), round(o.position[1], 3))
+        cols[key] = cols.get(key, 0) + 1
+    return sorted(cols.items())
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "Two towers of 4 and between them please a tower of 2 build.",
+        "Make two towers of 4 and a tower of 2. Put the tower of 2 between them.",
+        "two towers of 4 with a tower of 2 between them",
+        "put a tower of 2 between two single towers of 4, one cube gap on each side",
+    ],
+)
+def test_a_structure_said_between_two_stands_between_them(command):
+    r = plan(command)
+    heights = [h for _, h in _columns(r)]
+    assert r.status == "success" and heights == [4, 2, 4], _columns(r)
+
+
+def test_a_gap_said_of_the_outer_two_holds_the_one_between():
+    r = plan("two towers of 4, 3 cubes apart, with a tower of 2 in the middle between them")
+    (a, _), (m, _), (b, _) = (c for c in _columns(r))
+    assert r.status == "success" and round(b[0] - a[0], 3) == 0.2 and round(m[0] - a[0], 3) == 0.1
+
+
+def test_a_wall_between_two_towers_has_them_at_its_ends():
+    r = plan("Between two towers of 4 put a wall 3 long and 2 high, everything touching.")
+    ys = sorted({y for (_, y), _ in _columns(r)})
+    xs = {x for (x, _), _ in _columns(r)}
+    assert r.status == "success" and len(xs) == 1 and len(ys) == 5
+
+
+def test_one_more_on_a_tower_is_a_cube_and_a_cube_on_a_slab_is_not_a_layer():
+    r = plan("Make tower from 3 cubes. Then put on it one more. And one more.")
+    assert r.status == "success" and [h for _, h in _columns(r)] == [5]
+    r = plan("a tower of 4. then put one more on top. then one more")
+    assert r.status == "success" and [h for _, h in _columns(r)] == [6]
+    r = plan("a 2x2 slab, then put one more cube on it")
+    assert sorted(round(o.position[2], 3) for o in r.layout.objects) == [0.025] * 4 + [0.075]
+    r = read("a 2 by 2 block 2 high, then add 4 more cubes on top")
+    assert r.spec.structures[0].height == 3
+    # another structure when one is named or placed beside
+    assert len(read("a tower of 3 on the left. and one more on the right").spec.structures) == 2
+
+
+@pytest.mark.parametrize(
+    ("command", "shape", "height"),
+    [
+        ("bridge with pillars 3 high", "bridge", 3),
+        ("brige w 2 towrs of 3", "bridge", 3),
+        ("a table with four legs of 3 cubes", "canopy", 3),
+        ("an arch with legs of 2", "arch", 2),
+    ],
+)
+def test_a_fragment_with_no_article_and_legs_of_a_height(command, shape, height):
+    r = read(command)
+    assert [(s.shape, s.height) for s in r.spec.structures] == [(shape, height)] and r.complete
+
+
+def test_the_tables_centre_is_a_region_not_a_table():
+    r = read("place a 2x2 block (2 high) at table centre; a 4-cube tower directly on top of it")
+    assert [s.shape for s in r.spec.structures] == ["block", "tower"] and r.complete
+    assert r.spec.structures[0].region == "centre"
+
+
+def test_a_gap_said_after_a_relation_to_a_bridge_is_between_them():
+    r = read("bridge with 3-high legs. single cube in front of it, 2 cubes out")
+    assert [(x.kind, x.side, x.gap_m) for x in r.spec.relations] == [("next_to", "front", 0.1)]
+
+
+def test_a_thing_to_build_that_is_no_structure_is_material():
+    r = read("Can u make a fridge w/ legs of 2")
+    assert not r.complete and any("'fridge'" in n for n in r.spec.notes)
+    assert read("make a tower of 3").complete

@@ -37,6 +37,8 @@ from sdi.bench.language_dev19 import CASES as DEV19
 from sdi.bench.language_dev20 import CASES as DEV20
 from sdi.bench.language_dev21 import CASES as DEV21
 from sdi.bench.language_dev22 import CASES as DEV22
+from sdi.bench.language_dev23 import CASES as DEV23
+from sdi.bench.language_dev24 import CASES as DEV24
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -273,6 +275,8 @@ SETS = {
     "dev20": (DEV20, 170, 8, 15),
     "dev21": (DEV21, 170, 8, 15),
     "dev22": (DEV22, 170, 8, 15),
+    "dev23": (DEV23, 170, 8, 15),
+    "dev24": (DEV24, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -289,6 +293,8 @@ HARD = {
     "dev20": ("relation", "numbers", "dimensions", "sequence"),
     "dev21": ("relation", "numbers", "dimensions", "sequence"),
     "dev22": ("relation", "numbers", "dimensions", "sequence"),
+    "dev23": ("relation", "numbers", "dimensions", "sequence"),
+    "dev24": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -399,6 +405,8 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev20.py",
         "language_dev21.py",
         "language_dev22.py",
+        "language_dev23.py",
+        "language_dev24.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

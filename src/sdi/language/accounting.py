@@ -62,6 +62,29 @@ def _attached(tok: Token) -> bool:
     return False
 
 
+_BUILD_VERBS = frozenset({"make", "build", "construct", "create", "assemble", "stack", "erect"})
+_GENERIC = frozenset({
+    "something", "thing", "things", "structure", "shape", "object", "one", "construction",
+    "build", "model", "copy", "version", "sculpture", "piece", "it", "them", "that", "this",
+    "test", "demo", "try", "start", "go",
+})  # fmt: skip
+
+
+def _built_unknown(tok: Token, word: str) -> bool:
+    """`tok` is the thing a build verb asks for ("make a fridge") and no structure or part."""
+    return (
+        tok.dep_ == "dobj"
+        and tok.pos_ == "NOUN"
+        and tok.head.lemma_.lower() in _BUILD_VERBS
+        and word not in lx.SHAPE_WORDS
+        and word not in lx.PART_WORDS
+        and word not in BEAMS
+        and word not in _GENERIC
+        and word not in words.HARMLESS
+        and not any(c.lower_ in lx.SHAPE_WORDS for c in tok.subtree if c.i != tok.i)
+    )
+
+
 def account(word: str, tok: Token | None, st: ReadState) -> None:
     if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
         return
@@ -73,6 +96,12 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
         (word in words.CORRECTABLE or word in words.NEGATIONS or numeric)
         and word not in words.HARMLESS
     ) or word in words.SIGNIFICANT
+    if tok is not None and _built_unknown(tok, word):
+        # "can you make a fridge with legs of 2": what to build is a thing SDI does not know
+        st.material.append(word)
+        st.ignored.append(word)
+        st.notes.append(f"ignored '{word}': what is asked for is not a structure SDI knows")
+        return
     if tok is not None and not known and not _attached(tok):
         if word not in words.HARMLESS and word not in words.CONSULTED:
             st.ignored.append(word)

@@ -41,6 +41,11 @@ def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:
                 clauses.append(current)
                 current = []
             continue
+        if _verb_after_comma(doc, tok) and any(doc[i].lower_ in lx.SHAPE_WORDS for i in current):
+            # "a tower of 3, add one more cube on top": a step of its own
+            clauses.append(current)
+            current = []
+            continue
         if w in _SEQUENCE and _starts_clause(doc, tok) and current:
             clauses.append(current)
             current = []
@@ -58,6 +63,15 @@ def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:
         if c:
             out.append((c, sequenced))
     return out
+
+
+_STEP_VERBS = {"add", "put", "stack", "place", "lay", "raise", "extend", "remove", "take"}
+
+
+def _verb_after_comma(doc: Doc, tok: Token) -> bool:
+    """`tok` is a comma that a step's verb follows ("…, add one more cube on top")."""
+    nxt = doc[tok.i + 1] if tok.i + 1 < len(doc) else None
+    return tok.lower_ == "," and nxt is not None and nxt.lower_ in _STEP_VERBS
 
 
 def _next_to(doc: Doc, i: int) -> bool:

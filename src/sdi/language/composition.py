@@ -40,8 +40,16 @@ def relate(
         j = resolve(phrases, j)
         return j if phrases[j].count and phrases[j].spec is not None else None
 
-    joiners = {r.object for r in rels if r.kind == "joined"}
+    joiners = {r.object for r in rels if r.kind in ("joined", "between")}
     for r in rels:
+        if r.kind == "between":
+            flanked = _flanked(phrases, r, structures, relations)
+            if flanked:
+                relations.extend(flanked)
+                st.flanked = True
+                st.notes.append("placed between the two, side by side")
+                continue
+            r = PhraseRelation("joined", r.subject, r.object, r.side)
         subj = r.subject
         if phrases[subj].modified or (r.object is not None and phrases[r.object].modified):
             continue  # "add a third layer on it": already a change of that structure
@@ -244,6 +252,73 @@ def _copy_if_asked(
         st.notes.append(f"'{p.text}': the same {other.shape} as the one it stands on or beside")
         return other.model_copy(update={"at_x": None, "at_y": None, "region": None})
     return subject
+
+
+def _flanked(
+    phrases: list[Phrase],
+    r: PhraseRelation,
+    structures: list[StructureDraft],
+    relations: list[Relation],
+) -> list[Relation]:
+    """ "a tower of 2 between them", "between them a tower of 2", "two towers and a cube; put
+    the cube between them": the structure said between stands in a row with the two it is
+    between, in the middle (empty when it is a beam or a spanning structure that joins them,
+    or when the two are not clear)."""
+    own = phrases[r.subject]  # after "between": the two, or "them" with the middle after it
+    said = own.text.strip(" ,.").lower().split()
+    middle: list[int] = []
+    if own.ref is not None:
+        pair = _structures_of(phrases[resolve(phrases, r.subject)])
+    elif said[:1] == ["them"] and own.count:
+        # "between them please a tower of 2": the middle is named after the pronoun
+        earlier = [q for q in phrases[: r.subject] if q.count and q.spec is not None]
+        pair = _structures_of(earlier[-1]) if earlier else []
+        middle = _structures_of(own)
+    else:
+        pair = _structures_of(own)
+    if not middle:
+        before = phrases[resolve(phrases, r.object)] if r.object is not None else None
+        if before is None:
+            return []
+        if phrases[r.object].structure is not None:  # type: ignore[index]
+            middle = [phrases[r.object].structure]  # type: ignore[index, list-item]
+        else:
+            middle = [k for k in _structures_of(before) if k not in pair]
+    if len(pair) > 2:
+        pair, extra = _alike_pair(pair, structures)
+        middle = middle or extra
+    if len(pair) != 2 or len(middle) != 1 or middle[0] in pair:
+        return []
+    x = middle[0]
+    if structures[x].shape in ("bridge", "arch", "canopy") or structures[x].part == "beam":
+        return []
+    related = {rel.subject for rel in relations}
+    if x in related or pair[1] in related:
+        return []
+    a, b = pair
+    # a wall or row between two: at its ends, along its length (left to right)
+    along = "left" if structures[x].shape in ("wall", "row") else "back"
+    return [
+        Relation(kind="next_to", subject=x, object=a, side=along),
+        Relation(kind="next_to", subject=b, object=x, side=along),
+    ]
+
+
+def _structures_of(p: Phrase) -> list[int]:
+    return list(range(p.first, p.first + p.count)) if p.spec is not None else []
+
+
+def _alike_pair(idx: list[int], structures: list[StructureDraft]) -> tuple[list[int], list[int]]:
+    """Of three structures, the two alike ("two towers of 3 and a single cube") and the other."""
+    if len(idx) != 3:
+        return idx, []
+    keys = [structures[k].model_dump(exclude={"region", "at_x", "at_y"}) for k in idx]
+    for odd in range(3):
+        rest = [k for n, k in enumerate(idx) if n != odd]
+        a, b = (keys[n] for n in range(3) if n != odd)
+        if a == b and keys[odd] != a:
+            return rest, [idx[odd]]
+    return idx, []
 
 
 def _between(

@@ -69,6 +69,10 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     flanking = at is None and (
         re.search(r"\b(?:either|both|each)\b", said, re.IGNORECASE) or all_four
     )
+    if flanking and not all_four and re.search(r"\bbetween\b", m.string[: m.start()], re.I):
+        # "a block between two towers, one cube gap on each side": the two gaps of "between"
+        st.notes.append(f"read '{said}' as the gaps on both sides of the one between")
+        return " "
     if flanking and all_four:  # "a tower on each of its 4 sides": one on every side
         at = "sides"
     elif flanking:  # "a tower on each side of it", "on either side": one at each of its ends

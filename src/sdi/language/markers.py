@@ -364,7 +364,7 @@ def _clause_phrases(
     if trailing:
         phrases.append(Phrase(tokens=trailing, clause=ci))
     # relate the segments: marker j sits between segment j and j + 1
-    for j, (_, _, kind, side) in enumerate(markers):
+    for j, (start, _, kind, side) in enumerate(markers):
         before, after = base + j, base + j + 1
         if kind.endswith("_verb"):
             continue
@@ -435,6 +435,7 @@ def _clause_phrases(
         elif kind == "joined":
             rels.append(PhraseRelation("joined", before, after))
         elif kind == "join":
-            rels.append(PhraseRelation("joined", after, before))
+            between = doc[start].lower_ == "between"
+            rels.append(PhraseRelation("between" if between else "joined", after, before))
         elif kind == "topped":
             rels.append(PhraseRelation("on", after, before))

@@ -529,6 +529,16 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         )
     ):
         return None  # "stack 2 more on the middle one": a column on it, not a layer more
+    top_parts = (last.length or 1) * (last.width or 1) if last.shape in ("grid", "block") else 1
+    if (
+        op == "+"
+        and top_parts > 1
+        and re.search(r"\b(?:cubes?|blocks?|bricks?|parts?)\b", p.text, re.I)
+        and not _LAYER_WORDS.search(p.text)
+    ):
+        if n % top_parts:
+            return None  # "a 2x2 slab, then one more cube on it": a cube on it, not a layer
+        n //= top_parts  # "a 2x2 block, add 4 more cubes on top": one layer more
     if last.shape == "grid" and op == "-" and re.search(r"\brow\b", m.group(0), re.I):
         key = "width"  # "4 rows of 3. Then remove the last row.": one row fewer
     key = key or ("steps" if last.shape == "staircase" else "height")
@@ -555,6 +565,13 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
                 structures[i] = structures[i].model_copy(update=update)
         return f"each {last.shape} now has {key} {new}{was}"
     return f"the {last.shape} now has {key} {new}{was}"
+
+
+_LAYER_WORDS = re.compile(
+    r"\b(?:layers?|levels?|courses?|tiers?|rows?|high|tall|taller|higher|storeys?|stories|"
+    r"floors?)\b",
+    re.IGNORECASE,
+)
 
 
 _EVERY = re.compile(

@@ -121,6 +121,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     relations = _stacking_on(relations, drafts, phrases, st)
     drafts = _apart(drafts, st)
     relations, drafts = _gap_of_relation(relations, drafts, st)
+    _gap_around_middle(drafts, st)
     touch = _TOUCHING.search(text)
     if touch and any(r.kind == "next_to" and r.gap_m is None for r in relations):
         # "directly to its left, touching it": no gap between the two
@@ -445,6 +446,27 @@ def _gap_of_relation(
             r = r.model_copy(update={"gap_m": d.gap_m})
         out.append(r)
     return out, drafts
+
+
+def _gap_around_middle(drafts: list[StructureDraft], st: ReadState) -> None:
+    """ "two towers, 3 cubes between them, and a tower of 2 in the middle between them": the
+    gap said of the two outer ones holds the middle one; the gaps beside it are what is left."""
+    said = st.gap_said or ""
+    if not st.flanked or st.gap_m is None or not st.gap_first or not _PAIR_GAP.search(said):
+        return  # said after the middle one was placed: its own gaps
+    middle = [d for d in drafts if d.shape == "tower"]
+    part = st.cell.cube[0]
+    side = (st.gap_m - part) / 2
+    if not middle or side < 0:
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': the one between does not fit in it")
+        return
+    st.notes.append(f"read '{said}' as the gap between the outer two: {side:g} m on each side of "
+                    "the one between")  # fmt: skip
+    st.gap_m = round(side, 4)
+
+
+_PAIR_GAP = re.compile(r"\bbetween\s+(?:them|the\s+two)\b|\bapart\b|\bof\s+each\s+other\b", re.I)
 
 
 _ONE_GAP = re.compile(

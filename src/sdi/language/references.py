@@ -63,7 +63,11 @@ def definite(
     p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
 ) -> int | None:
     """ "the staircase has 3 steps" after a staircase was named: the index of that one."""
-    m = re.match(r"^\W*(?:the|that|this)\s+(\w+)(?:\s+(\w+))?", p.text, re.IGNORECASE)
+    m = re.match(
+        r"^\W*(?:(?:put|place|set|move|stand)\s+)?(?:the|that|this)\s+(\w+)(?:\s+(\w+))?",
+        p.text,
+        re.IGNORECASE,
+    )
     if not m or len(spec.structures) != 1:
         return None
     family = lx.SHAPE_WORDS.get(m.group(1).lower()) or lx.SHAPE_WORDS.get(
@@ -75,9 +79,16 @@ def definite(
         i for q in before if q.count and q.spec is not None
         for i in range(q.first, q.first + q.count) if structures[i].shape == family
     ]  # fmt: skip
+    said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
+    if len(matches) > 1 and said:
+        # "two towers of 4 and a tower of 2. Put the tower of 2 between them": the one that size
+        matches = [
+            i for i in matches
+            if all(structures[i].model_dump(exclude_defaults=True).get(k) == v
+                   for k, v in said.items())
+        ]  # fmt: skip
     if len(matches) != 1:
         return None
-    said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
     known = structures[matches[0]].model_dump(exclude_defaults=True, exclude={"shape"})
     words_ = set(re.findall(r"[a-z]+", p.text[: m.end()].lower()))  # "the T on the left": it
     if any(known.get(k) not in (None, v) for k, v in said.items()) or words_ & (

@@ -43,6 +43,35 @@ _REJECT_IF = (
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "bridge with pillars 3 high", "arch w/ legs of 4": a structure named first, no article
+        # (the parser takes "bridge" for the verb)
+        re.compile(
+            r"(^|[.;!?:\n]\s*)(bridge|arch|gate|tower|wall|pyramid|staircase|"
+            r"canopy|ring|castle|slab|platform|column)\s+"
+            r"(?=(?:with|w/|on|of|at|in|from|made)\b|(?<!tower\s)\d+\s*(?:x|by)\s*\d)",
+            re.IGNORECASE,
+        ),
+        "{0}a {1} ",
+        "",
+    ),
+    (  # "between two single towers of 4": two towers, each a structure of its own
+        re.compile(
+            r"\b(two|three|four|five|six|[2-9])\s+(?:single|separate|individual)\s+"
+            r"(?!(?:cubes|blocks|bricks|parts|pieces)\b)(?=[a-z]+s\b)",
+            re.IGNORECASE,
+        ),
+        "{0} ",
+        "",
+    ),
+    (  # "a table with four legs of 3", "an arch with legs of 2 cubes": legs that high
+        re.compile(
+            r"\b(legs?|posts?|piers?|supports?)\s+of\s+(\d+|one|two|three|four|five|six|seven|"
+            r"eight|nine|ten)(?:\s+(?:cubes?|blocks?|bricks?|storeys?|stories|levels?|floors?|courses?))?\b(?!\s*(?:cm|mm|m|by|x|wide|long)\b)",
+            re.IGNORECASE,
+        ),
+        " {0} {1} high ",
+        "",
+    ),
     (  # "a single layer of 8 cubes in two rows": one layer, of that
         re.compile(
             r"\b(?:a|one)\s+(?:single\s+|flat\s+)?(?:layer|level|course)\s+(?:made\s+)?of\s+"
@@ -1244,6 +1273,16 @@ _REWRITES += [
         " in the centre ",
         "",
     ),
+    (  # "at table centre", "along the bench's front edge": the work surface's region, no table
+        re.compile(
+            r"\b(at|in|on|to|by|near|along|toward|towards)\s+(?:the\s+)?(?:work\s*)?"
+            r"(?:table|bench|workspace|cell)(?:'s|s')?\s+(?=(?:centre|center|middle|front|back|"
+            r"rear|left|right|edge|corner)s?\b)",
+            re.IGNORECASE,
+        ),
+        " {0} the ",
+        "",
+    ),
     (  # "put two more on top of that one": that one is it
         re.compile(
             r"(?<=\b(?:of|on|to|by|at)\s)(?:that|this)\s+one\b(?!\s+(?:of|with|high|tall|long)\b)",
@@ -1926,15 +1965,42 @@ _ONE_MORE = re.compile(
     r"(?<!\boff\s)(?<!\baway\s)"  # "take off one more": a change, not another structure
     r"(?<!\bsecond\s)(?<!\bother\s)(?<!\bthird\s)"  # "the second one more": a size of it
     r"\b(?:and\s+|then\s+|plus\s+)?(?:just\s+)?one\s+more\b(?!\s+(?:cube|block|brick|part|level|"
-    r"layer|step|row|course|tier|time|on|of)\w*)",
+    r"layer|step|row|course|tier|time|of)\w*)",
     re.IGNORECASE,
 )
 """'… and one more next to that': another of the structure named before."""
 
 
+_ON_IT = re.compile(r"\b(?:on(?:to)?\s+(?:top|it|that|this)|on\s+the\s+top|atop)\b", re.I)
+_PLACED = re.compile(r"\b(?:next|beside|behind|front|left|right|side|apart|away|another)\b", re.I)
+
+
+def _one_more(m: re.Match[str], text: str) -> str:
+    """ "a tower of 3. Then put on it one more. And one more.": one more cube on top when
+    the step stacks onto a tower (or repeats a step that did); otherwise another structure."""
+    start = max(text.rfind(c, 0, m.start()) for c in ".;!?\n")
+    step = text[start + 1 : m.start()]
+    step_end = min([i for i in (text.find(c, m.end()) for c in ".;!?\n") if i >= 0] or [len(text)])
+    after = text[m.end() : step_end]
+    before = text[: start + 1]
+    words = re.findall(r"[a-z]+", before.lower())
+    shapes = [w for w in words if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]
+    tower = bool(shapes) and shapes[-1] in ("tower", "towers", "stack", "column", "pillar")
+    named = any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", (step + after).lower()))
+    if tower and not named and not _PLACED.search(step + after):
+        if _ON_IT.search(step + after):
+            return " one more cube "  # "then put on it one more"
+        last_step = before[max(before.rfind(c, 0, len(before) - 1) for c in ".;!?\n") + 1 :]
+        if re.search(r"\bone\s+more\b", last_step, re.I) and _ON_IT.search(last_step):
+            return " one more cube on top "  # "… then put one more on top. Then one more!"
+    if re.match(r"\s*on\b(?!\s+the\s+(?:left|right|back|front|other))", after, re.I):
+        return m.group(0)  # "a row, another on top, and one more on top": stacked after
+    return " and another one"
+
+
 def _another(text: str) -> str:
     """ "a tower on the left and another one on the right": another tower."""
-    text = _ONE_MORE.sub(" and another one", text)
+    text = _ONE_MORE.sub(lambda m: _one_more(m, text), text)
     text = _TOUCH_ANOTHER.sub(r"\1 each other", text)  # "none may touch another one": no new one
 
     def adjective_one(m: re.Match[str]) -> str:  # "and next to it a little one": a little tower

@@ -90,6 +90,15 @@ def _spanning_plural(said: list[str]) -> bool:
     return any(w.endswith("s") and lx.SHAPE_WORDS.get(w) in _SPANNING for w in said)
 
 
+_MIDDLE = re.compile(r"\b(?:in\s+(?:the\s+)?middle|between)\b", re.IGNORECASE)
+# "a single cube in front of it, 2 cubes out": the gap said right after a relation
+_RELATED = re.compile(
+    r"\b(?:in\s+front\s+of|behind|to\s+the\s+(?:left|right)\s+of|next\s+to|beside)\s+"
+    r"(?:it|them|the\s+\w+)\s*,?\s*$",
+    re.IGNORECASE,
+)
+
+
 def _several(text: str) -> bool:
     """The command names more than one structure (two shape nouns, a counted plural, a copy)
     and none that spans a gap of its own (a bridge's gap is its span)."""
@@ -209,14 +218,17 @@ def pitches(spec: Spec, st: ReadState) -> Spec:
 
 def take_gap(text: str, st: ReadState) -> str:
     """`text` without the gap phrase between structures; the gap in `st.gap_m`."""
-    if not _several(text) or _INSIDE.search(text):
+    if _INSIDE.search(text):
         return text
     part_m = st.cell.cube[0]
     m = _GAP.search(text)
+    if not _several(text) and not (m is not None and _RELATED.search(text[: m.start()])):
+        return text  # "a bridge, its pillars 2 cubes apart": the bridge's own span
     if m is not None:
         gap = _measured(m, part_m)
         if gap is not None:
-            st.gap_m = gap
+            st.gap_m, st.gap_said = gap, m.group(0).strip(" ,")
+            st.gap_first = not _MIDDLE.search(text[: m.start()])
             st.notes.append(f"read '{m.group(0).strip(' ,')}' as {gap:g} m between the structures")
             rest = re.sub(
                 r"^\s*(?:each|apiece|between\s+each|(?:in\s+)?between(?:\s+(?:them|the\s+"

@@ -49,6 +49,9 @@ class ReadState:
     no_stack: bool = False
     no_beams: bool = False
     gap_m: float | None = None  # "one cube gap", "10 cm apart": between the structures
+    gap_said: str | None = None  # the words of that gap
+    gap_first: bool = False  # said before any "between" or "in the middle"
+    flanked: bool = False  # a structure was placed between two others
     span_m: float | None = None  # "pillars 10 cm apart": between a bridge's own supports
     line: str | None = None  # "three towers in a line front to back": the axis they stand along
     # "with the tallest one in the middle": (what was said, "max" | "min", middle|left|right)

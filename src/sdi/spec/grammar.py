@@ -551,6 +551,11 @@ class _Parser:
                     shape = lx.LETTER_SHAPES[w]
                     if nxt in lx.LETTER_SHAPE_TAILS:
                         t[k + 1].used = True
+                    if nxt in ("shapes", "frames", "pieces", "blocks", "walls"):
+                        # "two L shapes": two of them, the count is not a size
+                        self.hits.append(Hit(index=k, shape=shape, plural=True, verb=False))
+                        tok.used = True
+                        continue
             elif w == "table" and self.word(k - 1) in ("the", "on", "of"):
                 continue
             elif w in lx.SHAPE_WORDS:
@@ -1232,6 +1237,11 @@ class _Parser:
                 and (nxt.shape == h.shape or self._letter_wall(h, nxt))
                 and not between & (lx.SEPARATORS | {"next", "beside"})
                 and not nxt.plural
+                and not (
+                    h.plural
+                    and "with" in between
+                    and self.word(nxt.index - 1) in ("a", "an", "one", "another", "single")
+                )
             ):
                 for key, value in nxt.params.items():
                     h.params.setdefault(key, value)
