@@ -3222,13 +3222,9 @@ def test_a_height_named_first_with_its_level_word():
     assert [(s.shape, s.height) for s in r.spec.structures] == [("wall", 3)] and r.complete
 
 
-def _columns(r):
+def _sorted_columns(r):
     """(x, y) of each column of cubes with its height in parts, sorted."""
-    cols: dict[tuple[float, float], int] = {}
-    for o in r.layout.objects:
-        key = (round(o.position[0], 3), round(o.position[1], 3))
-        cols[key] = cols.get(key, 0) + 1
-    return sorted(cols.items())
+    return sorted(_columns(r).items())
 
 
 @pytest.mark.parametrize(
@@ -3242,28 +3238,28 @@ def _columns(r):
 )
 def test_a_structure_said_between_two_stands_between_them(command):
     r = plan(command)
-    heights = [h for _, h in _columns(r)]
-    assert r.status == "success" and heights == [4, 2, 4], _columns(r)
+    heights = [h for _, h in _sorted_columns(r)]
+    assert r.status == "success" and heights == [4, 2, 4], _sorted_columns(r)
 
 
 def test_a_gap_said_of_the_outer_two_holds_the_one_between():
     r = plan("two towers of 4, 3 cubes apart, with a tower of 2 in the middle between them")
-    (a, _), (m, _), (b, _) = (c for c in _columns(r))
+    (a, _), (m, _), (b, _) = (c for c in _sorted_columns(r))
     assert r.status == "success" and round(b[0] - a[0], 3) == 0.2 and round(m[0] - a[0], 3) == 0.1
 
 
 def test_a_wall_between_two_towers_has_them_at_its_ends():
     r = plan("Between two towers of 4 put a wall 3 long and 2 high, everything touching.")
-    ys = sorted({y for (_, y), _ in _columns(r)})
-    xs = {x for (x, _), _ in _columns(r)}
+    ys = sorted({y for (_, y), _ in _sorted_columns(r)})
+    xs = {x for (x, _), _ in _sorted_columns(r)}
     assert r.status == "success" and len(xs) == 1 and len(ys) == 5
 
 
 def test_one_more_on_a_tower_is_a_cube_and_a_cube_on_a_slab_is_not_a_layer():
     r = plan("Make tower from 3 cubes. Then put on it one more. And one more.")
-    assert r.status == "success" and [h for _, h in _columns(r)] == [5]
+    assert r.status == "success" and [h for _, h in _sorted_columns(r)] == [5]
     r = plan("a tower of 4. then put one more on top. then one more")
-    assert r.status == "success" and [h for _, h in _columns(r)] == [6]
+    assert r.status == "success" and [h for _, h in _sorted_columns(r)] == [6]
     r = plan("a 2x2 slab, then put one more cube on it")
     assert sorted(round(o.position[2], 3) for o in r.layout.objects) == [0.025] * 4 + [0.075]
     r = read("a 2 by 2 block 2 high, then add 4 more cubes on top")

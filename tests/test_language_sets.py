@@ -3205,3 +3205,12 @@ def test_dev19_predicates_on_hand_built_layouts(case_id, right, wrong):
     case = _dev19(case_id)
     assert case.accept(right) is None
     assert case.accept(wrong) is not None
+
+
+def test_a_canopys_beam_roof_is_told_from_legs_of_another_height():
+    from sdi.pipeline import plan
+
+    canopy = k._boxes_or_reason(plan("a canopy with legs 2 high").to_json_dict())
+    bridge = k._boxes_or_reason(plan("a bridge with pillars 2 high").to_json_dict())
+    assert k.beam_roof(4, 2)(canopy) is None
+    assert k.beam_roof(4, 3)(canopy) is not None and k.beam_roof(4, 2)(bridge) is not None

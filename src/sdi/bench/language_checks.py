@@ -323,6 +323,23 @@ def canopy(legs: int | None = None, lo: int | None = None, hi: int | None = None
     return legs_roof(legs=legs, leg_lo=lo, leg_hi=hi, min_legs=3)
 
 
+def beam_roof(legs: int, leg_h: int) -> Check:
+    """A canopy whose roof is beams only (the cell's canopy: beams on the legs, beams across
+    them): `legs` legs `leg_h` high, and every part above the legs a beam."""
+
+    def f(bs: Boxes) -> Reason:
+        r = canopy(legs, leg_h, leg_h)(bs)
+        if r:
+            return r
+        top = leg_h * bx.CUBE - bx.TOL
+        above = [b for b in bs if b.lo[2] >= top]
+        if not above or any(max(b.hi[i] - b.lo[i] for i in (0, 1)) < 2 * bx.CUBE for b in above):
+            return "the roof is not beams only"
+        return None
+
+    return f
+
+
 def castle(bs: Boxes) -> Reason:
     """A ring whose corners carry ≥ 4 columns taller than the rest of the wall."""
     r = ring(bs)

@@ -184,7 +184,9 @@ def _roofed(legs: int, leg_h: int) -> k.Check:
     legs (it can read the top cubes of taller legs, with a cube top, as part of the top), or a
     cube top."""
     return k.any_of(
-        k.all_of(k.canopy(legs, leg_h, leg_h), k.height(leg_h + 1)), _roof_on(legs, leg_h)
+        k.all_of(k.canopy(legs, leg_h, leg_h), k.height(leg_h + 1)),
+        _roof_on(legs, leg_h),
+        k.beam_roof(legs, leg_h),  # added after the first measurement: the cell's beam roof
     )
 
 

@@ -194,7 +194,8 @@ def _roof_on(legs: int, leg_h: int) -> k.Check:
 def _roofed(legs: int, leg_h: int) -> k.Check:
     """A table or canopy on `legs` legs `leg_h` high: the shared `canopy`, or a cube roof."""
     shared = k.all_of(k.canopy(legs, leg_h, leg_h), k.height(leg_h + 1))
-    return k.any_of(shared, _roof_on(legs, leg_h))
+    # the cell's beam roof (two crossing layers of beams) added after the first measurement
+    return k.any_of(shared, _roof_on(legs, leg_h), k.beam_roof(legs, leg_h))
 
 
 def _topped(base: k.Check, n_top: int = 1) -> k.Check:

@@ -146,10 +146,36 @@ def _bottom_count(m: re.Match[str], st: ReadState, note: str) -> str:
                        r"tiers?)\s*(?:of|:|=)?\s*(\d+)\b", text, re.IGNORECASE)  # fmt: skip
     high = int(levels.group(1) or levels.group(2)) if levels else None
     square = re.search(r"\bsquare\b", text, re.IGNORECASE)
-    if side >= 2 and side * side == count and (high == side or (square and high is None)):
+    too_long = count > 10 and high is None  # no row of so many: a square of them
+    if side >= 2 and side * side == count and (high == side or (square or too_long)):
         st.notes.append(f"read '{m.group(0).strip()}' as a {side} by {side} bottom level")
         return f" with a {side} by {side} base "
     return f" with a base of {count} "
+
+
+def _base_of(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "pyramid. 4 levels. base 4 by 4.": a base said on its own, right after a pyramid was
+    named, is that pyramid's base (not a platform of its own)."""
+    said = re.findall(r"[a-z]+", m.string[: m.start()].lower())
+    shapes = [w for w in said if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]
+    if not shapes or lx.SHAPE_WORDS[shapes[-1]] != "pyramid":
+        return m.group(0)
+    return f"{m.group(1)} the pyramid , {m.group(2)}"
+
+
+def _pyramid_base(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "pyramid, base 25cm": the side of its square base; "base 9 pcs", "4 levels. base 16":
+    the count of its bottom level (`_bottom_count`). Only for a pyramid."""
+    if not re.search(r"\bpyramids?\b", m.string, re.IGNORECASE):
+        return m.group(0)
+    unit = (m.group(2) or "").lower()
+    if unit in lx.UNITS_M:
+        side = f"{m.group(1)} {unit}"
+        st.notes.append(f"read '{m.group(0).strip()}' as a square base {side} by {side}")
+        return f" with a {side} by {side} base "
+    if "." in m.group(1):
+        return m.group(0)
+    return _bottom_count(m, st, note)
 
 
 def _extreme_at(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -891,6 +917,8 @@ HANDLERS: dict[str, Handler] = {
     "{corners}": _corners,
     "{square_base}": _square_base,
     "{bottom_count}": _bottom_count,
+    "{pyramid_base}": _pyramid_base,
+    "{base_of}": _base_of,
     "{extreme_at}": _extreme_at,
     "{compared}": _compared,
     "{more_of}": _more_of,

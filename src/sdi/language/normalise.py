@@ -125,6 +125,7 @@ _APART_SAID = re.compile(
     r"\b(?:apart|gap|between|clear|centre\s+to\s+centre|center\s+to\s+center)\b", re.I
 )
 _BRIDGE = re.compile(r"\b(?:bridge|arch)\b", re.IGNORECASE)
+_DECK = re.compile(r"\b(?:lay|put|place|set)\s+(?:the|a)\s+deck\b", re.IGNORECASE)
 _BOTH_SIDES = (
     r"\s*,?\s*(?:left\s+and\s+right|right\s+and\s+left|front\s+and\s+back|back\s+and\s+front)\b"
 )
@@ -269,8 +270,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "between neighbouring columns" is between them, a "ground-floor slab" a slab
     (re.compile(r"\b(?:an?\s+)?colonnade\s+(?:of|with)\s+(?=\d|two|three|four|five|six|seven|eight)",
                 re.I), ""),
-    (re.compile(r"\bpier(s?)\b", re.I),  # a bridge's piers are its pillars
-     lambda m: ("pillar" + m.group(1)) if _BRIDGE.search(m.string) else m.group(0)),
+    (re.compile(r"\bpier(s?)\b", re.I),  # a bridge's piers are its pillars (a deck on them)
+     lambda m: ("pillar" + m.group(1)) if _BRIDGE.search(m.string) or _DECK.search(m.string)
+     else m.group(0)),
     (re.compile(r"\bbetween\s+(?:neighbouring|neighboring|adjacent)\s+(?:columns|towers|stacks|pillars)\b",
                 re.I), "between them"),
     (re.compile(r"\bground[\s-]+floor\s+(?=slab|plate|pad|platform|layer)", re.I), ""),

@@ -130,7 +130,11 @@ def named_again(
     tall": a structure named in passing (no size, no place) and then described in a later
     clause is one structure, not two — unless the later words make it another ("another",
     "second", a count)."""
-    if len(spec.structures) != 1 or set(re.findall(r"[a-z]+", p.text.lower())) & (
+    # a count word before a part noun ("four steps", "two levels") is a size, not a count
+    counted = re.sub(r"\b(?:two|three|four)\s+(?=(?:steps?|levels?|layers?|tiers?|cubes?|"
+                     r"blocks?|storeys?|floors?|courses?|high|tall|long|wide)\b)", "",
+                     p.text.lower())  # fmt: skip
+    if len(spec.structures) != 1 or set(re.findall(r"[a-z]+", counted)) & (
         COPY_WORDS | {"two", "three", "four", "more", "also", "other", "both", "each"}
     ):
         return None

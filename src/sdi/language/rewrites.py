@@ -54,6 +54,23 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
         "{0}a {1} ",
         "",
     ),
+    (  # "wall 5 long. tower 3 each end.": a placement said without its preposition
+        re.compile(
+            r"\b(towers?|columns?|cubes?|stacks?|posts?)\s+"
+            r"(\d+|one|two|three|four|five)\s+(?=(?:each|either|both)\s+(?:ends?|corners?)\b)",
+            re.IGNORECASE,
+        ),
+        "{0} of {1} at ",
+        "",
+    ),
+    (  # "That's right, stairs.", "yes that is correct": agreement, not a side
+        re.compile(
+            r"\b(?:that'?s|that\s+is|thats|yes|yeah|exactly)\s+(?:right|correct)\b(?!\s+of\b)",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
     (  # "between two single towers of 4": two towers, each a structure of its own
         re.compile(
             r"\b(two|three|four|five|six|[2-9])\s+(?:single|separate|individual)\s+"
@@ -1379,6 +1396,24 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{bottom_count}",
+        "",
+    ),
+    (  # "pyramid. 4 levels. base 4 by 4.": a base said on its own after a pyramid is its base
+        re.compile(
+            r"([.;!?\n]\s*)(?:its\s+|the\s+)?(base\s*(?:is\s+|of\s+|:\s*|=\s*)?\d)",
+            re.IGNORECASE,
+        ),
+        "{base_of}",
+        "",
+    ),
+    (  # "pyramid, base 25cm", "Pyramid, 3 tiers, base 9 pcs": a pyramid's base said bare
+        re.compile(
+            r"(?<![\w-])base\s*(?:of\s+|:\s*|=\s*|is\s+)?(\d+(?:\.\d+)?)\s*(cm|mm|m|cubes?|"
+            r"blocks?|bricks?|parts?|pieces?|pcs)?\b(?:\s+square\b)?"
+            r"(?!\s*(?:x|by|wide|long|deep|across|side)\b)",
+            re.IGNORECASE,
+        ),
+        "{pyramid_base}",
         "",
     ),
     (  # "a 35 cm base side", "base sides of 4": a square base

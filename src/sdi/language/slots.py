@@ -187,6 +187,11 @@ def fill_slots(
             structures[named] = structures[named].model_copy(update=said)
             st.notes.append(f"'{p.text}': more about the {spec.structures[0].shape} named before")
             p.count = 0
+            at = next((n for n, q in enumerate(phrases[:k]) if q.count == 1 and q.first == named),
+                      None)  # fmt: skip
+            if at is not None:  # "staircase. 4 steps. 10cm wide.": kept when read on, and
+                phrases[at].text = f"{phrases[at].text} , {p.text}"
+                p.ref = at  # "… a block two high, with a pyramid on it": it is that one
             continue
         ordinal = _ORDINAL_OF.match(p.text)
         family = lx.SHAPE_WORDS.get(ordinal.group(1).lower()) if ordinal else None

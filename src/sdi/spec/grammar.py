@@ -1122,7 +1122,12 @@ class _Parser:
                 k += 1
                 continue
             run, j = [k], k + 1
-            while self.word(j) in (",", "and", "or") and self.is_num(j + 1) and not t[j + 1].used:
+            while (
+                self.word(j) in (",", "and", "or")
+                and self.is_num(j + 1)
+                and not t[j + 1].used
+                and self.word(j + 2) not in lx.SHAPE_WORDS  # "… of 3 and one tower of 5"
+            ):
                 run.append(j + 1)
                 j += 2
                 if self.word(j) == "and" and self.word(j - 2) == ",":

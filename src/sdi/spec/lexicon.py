@@ -49,6 +49,8 @@ _add(
     "needle",
     "lighthouse",
     "minaret",
+    "upright",
+    "uprights",
 )
 _add(
     "row",
