@@ -3297,3 +3297,55 @@ def test_a_thing_to_build_that_is_no_structure_is_material():
     r = read("Can u make a fridge w/ legs of 2")
     assert not r.complete and any("'fridge'" in n for n in r.spec.notes)
     assert read("make a tower of 3").complete
+
+
+@pytest.mark.parametrize(
+    ("word", "meant"),
+    [("twr", "tower"), ("twrs", "towers"), ("blk", "block"), ("lyr", "layer"), ("lgs", "legs"),
+     ("brdg", "bridge"), ("clmn", "column"), ("pllr", "pillar"), ("btm", "bottom")],
+)  # fmt: skip
+def test_a_word_written_without_its_vowels_is_the_word_it_abbreviates(word, meant):
+    from sdi.language.typos import abbreviated
+
+    assert abbreviated(word) == meant
+    assert abbreviated("ctr") in ("centre", "center")  # not a crater: English says it far more
+
+
+@pytest.mark.parametrize("word", ["mdl", "plc", "qty", "xyz", "tower", "hmm"])
+def test_an_abbreviation_that_could_be_two_words_or_is_no_word_of_sdis_is_left(word):
+    from sdi.language.typos import abbreviated
+
+    assert abbreviated(word) is None  # "mdl": middle or module; "PLC" is no place
+
+
+def test_a_work_order_in_abbreviations_is_read_and_each_expansion_noted():
+    r = plan("REQ: twr 4H. LOC: back left corner.")
+    (s,) = r.spec.structures
+    assert r.status == "success" and (s.shape, s.height, s.region) == ("tower", 4, "back left")
+    assert "read 'twr' as 'tower' (an abbreviation)" in r.notes
+
+
+def test_words_left_unused_in_more_about_a_structure_named_before_are_accounted():
+    # 'double' was dropped with the phrase that only said more about the tower (success, 3 high)
+    r = plan("REQ: twr x1. H: double the std 3-blk twr.")
+    assert r.status == "partial" and any("'double'" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    ("command", "anchor", "kind", "columns"),
+    [  # column heights in parts: a 3x3 slab with a 2-tower on each corner; a 5 x 2 wall
+        # with a 3-tower beside each end
+        ("4 towers of 2, one per corner of a 3x3 slab", "corners", "on_top_of", [1] * 5 + [3] * 4),
+        ("a 3x3 slab with four 2-cube towers, one on each corner", "corners", "on_top_of",
+         [1] * 5 + [3] * 4),
+        ("two towers of 3, one at each end of a wall 5 long", "ends", "next_to", [2] * 5 + [3] * 2),
+    ],
+)  # fmt: skip
+def test_one_per_corner_or_end_is_one_copy_on_each_not_more_structures(
+    command, anchor, kind, columns
+):
+    r = read(command)
+    assert len(r.spec.structures) == 2, r.spec.structures
+    (rel,) = r.spec.relations
+    assert (rel.kind, rel.at) == (kind, anchor)
+    assert sorted(_columns(plan(command)).values()) == columns

@@ -125,6 +125,12 @@ _APART_SAID = re.compile(
     r"\b(?:apart|gap|between|clear|centre\s+to\s+centre|center\s+to\s+center)\b", re.I
 )
 _BRIDGE = re.compile(r"\b(?:bridge|arch)\b", re.IGNORECASE)
+_EACH_AT = {"at": "at", "in": "in"}  # "one per corner" stands on each; "one at each end" at it
+_PER_ANCHOR = {"corner": 4, "end": 2}
+
+
+def words_to_int(word: str) -> int:
+    return {"two": 2, "four": 4}.get(word.lower()) or int(word)
 _DECK = re.compile(r"\b(?:lay|put|place|set)\s+(?:the|a)\s+deck\b", re.IGNORECASE)
 _BOTH_SIDES = (
     r"\s*,?\s*(?:left\s+and\s+right|right\s+and\s+left|front\s+and\s+back|back\s+and\s+front)\b"
@@ -266,6 +272,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      r"on \1 \2 of \3"),
     (re.compile(r"(?<=\bon\s)(each|either|both)\s+(sides?)\s+of\s+(it|them)" + _BOTH_SIDES, re.I),
      r"\1 \2 of \3"),
+    # "one per corner of a slab", "one at each end of the wall": one on (at) each of them
+    (re.compile(r"\b(?:one|1|a\s+single\s+one)\s+(per|for\s+each|at\s+each|at\s+every|"
+                r"on\s+every|in\s+each|on\s+each|on\s+(?:all\s+)?(?:four|4|two|2|both))\s+"
+                r"(corner|end)s?\b", re.I),
+     lambda m: f"{_EACH_AT.get(m.group(1).split()[0].lower(), 'on')} each {m.group(2)}"),
+    # "4 towers of 2, on each corner of it": one tower on each of its four corners
+    (re.compile(r"\b(four|4|two|2)\s+((?:\d+[- ]cubes?[- ]|\w+[- ])?[a-z]+?)s\b([^.;:]{0,40}?)"
+                r"\s*,?\s*\b((?:on|at|in)\s+each\s+(corner|end))\b", re.I),
+     lambda m: f"a {m.group(2)}{m.group(3)} {m.group(4)}"
+     if _PER_ANCHOR[m.group(5).lower()] == words_to_int(m.group(1)) else m.group(0)),
     # an architect's words: "a colonnade of five columns" is five columns, piers are pillars,
     # "between neighbouring columns" is between them, a "ground-floor slab" a slab
     (re.compile(r"\b(?:an?\s+)?colonnade\s+(?:of|with)\s+(?=\d|two|three|four|five|six|seven|eight)",

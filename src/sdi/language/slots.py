@@ -175,6 +175,7 @@ def fill_slots(
         same = same_as_before(p, spec, phrases[:k])
         if same is not None:
             st.notes.append(f"'{p.text}' names the {same} described before")
+            _account(p, spec, unused, doc, st)
             continue
         named = definite(p, spec, phrases[:k], structures)
         if named is None:
@@ -186,6 +187,7 @@ def fill_slots(
             said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
             structures[named] = structures[named].model_copy(update=said)
             st.notes.append(f"'{p.text}': more about the {spec.structures[0].shape} named before")
+            _account(p, spec, unused, doc, st)
             p.count = 0
             at = next((n for n, q in enumerate(phrases[:k]) if q.count == 1 and q.first == named),
                       None)  # fmt: skip
@@ -209,17 +211,24 @@ def fill_slots(
         if tail is not None:
             modify(tail, [p], structures, st)
         st.notes.extend(spec.notes)
-        st.material.extend(n for n in spec.notes if n.startswith("ignored"))
-        free = list(p.tokens)
-        for w in unused:
-            tok = next((doc[i] for i in free if doc[i].lower_.replace("'", "") == w), None)
-            if tok is not None:
-                free.remove(tok.i)
-            account(w, tok, st)
+        _account(p, spec, unused, doc, st)
     for text in pending:
         st.material.append(text)
         st.notes.append(f"ignored '{text}': no structure named there")
     return structures
+
+
+def _account(p: Phrase, spec: SpecDraft, unused: list[str], doc: Doc, st: ReadState) -> None:
+    """The words of `p` its reading left unused, and what it ignored, go to the account — also
+    of a phrase that only says more about a structure named before ("H: double the std
+    3-block tower": 'double' is not used)."""
+    st.material.extend(n for n in spec.notes if n.startswith("ignored"))
+    free = list(p.tokens)
+    for w in unused:
+        tok = next((doc[i] for i in free if doc[i].lower_.replace("'", "") == w), None)
+        if tok is not None:
+            free.remove(tok.i)
+        account(w, tok, st)
 
 
 _CHANGE_OPS = frozenset({"region", "offset"})

@@ -119,6 +119,76 @@ def _sounds_like(w: str) -> str | None:
     return same[0] if len(same) == 1 else None
 
 
+_VOWELS = re.compile(r"[aeiou]")
+_ACRONYMS = frozenset({"plc", "hmi", "cnc", "tcp", "rpm", "std", "qty", "sku", "mph", "kph",
+                       "ppm", "pcs", "thx", "pls", "plz", "smth", "lvl", "lvls", "hrs", "mins",
+                       "pcb", "xyz", "tbd", "wrt", "bldg", "frm", "nds", "cmms", "hgt", "hght",
+                       "lng", "cnr", "crnr", "frnt", "lft", "rght", "rgt", "nxt", "bhnd"})  # fmt: skip
+"""Vowel-less words of a shop floor that are no abbreviation of SDI's words ("PLC" is no
+place), or that the normaliser expands itself."""
+
+
+def skeleton(word: str) -> str:
+    """`word` as a writer short of time abbreviates it: its first letter, then its consonants
+    (y counts as one), "ck" as "k", a doubled letter once ("tower" → "twr", "block" → "blk",
+    "pillar" → "plr")."""
+    w = word.lower().replace("ck", "k")
+    w = w[:1] + _VOWELS.sub("", w[1:])
+    return re.sub(r"(.)\1+", r"\1", w)
+
+
+@cache
+def _abbreviations() -> dict[str, list[tuple[int, str]]]:
+    """Each abbreviation SDI's words can be written as, with the words and how close: 0 the
+    skeleton itself ("twr"), 1 the skeleton less a silent "gh" or one inner consonant ("hgt",
+    "ctr", "cnr"), 2 its first three or more letters ("pyr")."""
+    out: dict[str, list[tuple[int, str]]] = {}
+
+    def add(key: str, rank: int, word: str) -> None:
+        if len(key) >= 3 and key != word:
+            out.setdefault(key, []).append((rank, word))
+
+    for word in sorted(_TARGETS):
+        if not word.isalpha() or len(word) < 3:
+            continue
+        s = skeleton(word)
+        add(s, 0, word)
+        for short in {s.replace("gh", ""), s.replace("gh", "g")} - {s}:
+            add(short, 1, word)
+        for i in range(1, len(s) - 1):
+            if len(s) >= 4 and s[i] in "nrh":  # a weak consonant: "ctr", "cnr", "lgth"
+                add(s[:i] + s[i + 1 :], 1, word)
+        for n in range(4, len(s)):
+            add(s[:n], 2, word)
+    return out
+
+
+def abbreviated(word: str) -> str | None:
+    """The one word of SDI's that `word`, a word with no vowel after its first letter, is an
+    abbreviation of ("twr" tower, "blk" block, "lyr" layer, "lgs" legs, "ctr" centre, "brdg"
+    bridge, "clmn" column); None if it is none or could be two ("mdl": middle or module).
+    Of two, the one English uses at least twice as often ("blk" is a block, not bulk; "ctr"
+    a centre, not a crater); centre and center are one."""
+    w = word.lower()
+    if len(w) < 3 or _VOWELS.search(w[1:]) or w in _ACRONYMS or not w.isalpha():
+        return None
+    found = _abbreviations().get(skeleton(w), [])
+    if not found:
+        return None
+    best = min(r for r, _ in found)
+    one: dict[tuple[str, str], str] = {}
+    for t in sorted({t for r, t in found if r == best}):
+        one.setdefault((skeleton(t), t[:4]), t)  # "cntr": centre or center, the same word
+    top = list(one.values())
+    if len(top) > 1:  # "twrs" is towers, "twr" tower
+        top = [t for t in top if t.endswith("s") == w.endswith("s")] or top
+    freq = english_frequency()
+    top.sort(key=lambda t: -freq.get(t, 0))
+    if len(top) > 1 and freq.get(top[0], 0) < 2 * freq.get(top[1], 0):
+        return None
+    return top[0]
+
+
 def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     """`text` with typos replaced, and a note per correction. `aggressive` also corrects
     words the English vocabulary knows ("wal"), for a command nothing else could read."""
@@ -134,6 +204,14 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             or m.string[m.end() : m.end() + 1] in ("'", "’")
         ):
             return raw  # "aren't", "couldn't": a word of a contraction, not a typo
+        glued = (
+            m.string[max(0, m.start() - 1) : m.start()].isdigit()
+            or m.string[m.end() : m.end() + 1].isdigit()
+        )  # "4H", "1st", "X250": a unit or a label, not an abbreviation
+        short = None if glued else abbreviated(w)
+        if short:
+            notes.append(f"read '{raw}' as '{short}' (an abbreviation)")
+            return short
         if len(w) == 3:  # three letters: only a swap of two neighbours ("teh")
             swaps = {w[:i] + w[i + 1] + w[i] + w[i + 2 :] for i in range(2)}
             hit = sorted(swaps & _TARGETS)
