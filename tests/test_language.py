@@ -3349,3 +3349,55 @@ def test_one_per_corner_or_end_is_one_copy_on_each_not_more_structures(
     (rel,) = r.spec.relations
     assert (rel.kind, rel.at) == (kind, anchor)
     assert sorted(_columns(plan(command)).values()) == columns
+
+
+@pytest.mark.parametrize(
+    ("command", "word"),
+    [
+        ("Anyway, lay out a row of five cubes for me, fore and aft.", "fore"),
+        ("Six high it must be, the mast, and on the bow end.", "bow"),
+    ],
+)
+def test_a_place_in_words_sdi_does_not_know_is_not_a_silent_success(command, word):
+    r = plan(command)
+    assert r.status == "partial", r.notes
+    assert f"ignored '{word}': says where to build, in words SDI does not know" in r.notes
+
+
+@pytest.mark.parametrize(
+    "command",
+    ["Please build a tower of 3 quickly.", "This time, a staircase of three steps.",
+     "sorry my english not so good, i want wall, 4 long, 2 high"],
+)  # fmt: skip
+def test_everyday_words_beside_the_build_verb_are_no_place(command):
+    assert plan(command).status == "success"
+
+
+def test_a_word_that_only_sounds_like_a_structure_is_not_built_beside_one_named():
+    r = read("Tsak: a 2x3 slba, 1 layre.")  # 'Tsak' sounds like 'desk': it was a table too
+    assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("grid", 2, 3)]
+    assert read("a reely big brij with legs of 3").spec.structures[0].shape == "bridge"
+
+
+@pytest.mark.parametrize(
+    ("command", "height", "length"),
+    [
+        ("Cell, this is Control. Height tree, length six, wall. Over.", 3, 6),
+        ("wall, fower high, fife long", 4, 5),
+    ],
+)
+def test_numbers_in_radio_voice_procedure(command, height, length):
+    (s,) = read(command).spec.structures
+    assert (s.shape, s.height, s.length) == ("wall", height, length)
+
+
+def test_a_figure_in_brackets_that_repeats_the_word_is_one_number_and_one_that_disagrees_is_said():
+    (s,) = read("a tower of five (5) cubes").spec.structures
+    assert s.height == 5
+    r = plan("a tower of five (4) cubes")
+    assert r.status == "partial" and any("'4'" in n for n in r.notes), r.notes
+
+
+def test_a_number_said_digit_by_digit():
+    (s,) = read("a row of cubes along y, wun-fife-zero millimetres long").spec.structures
+    assert (s.shape, s.length_m) == ("row", 0.15)

@@ -12,6 +12,7 @@ from sdi.errors import SpecError
 from sdi.language import words
 from sdi.language.nouns import BEAMS
 from sdi.language.state import ReadState
+from sdi.language.typos import english_frequency
 from sdi.spec import lexicon as lx
 from sdi.spec.grammar import parse_phrase
 from sdi.spec.numbers import NUMBER_WORDS
@@ -85,6 +86,33 @@ def _built_unknown(tok: Token, word: str) -> bool:
     )
 
 
+_RARE = 10_000_000
+"""A word English uses less often than this (of SymSpell's counts) is no everyday word: "aft",
+"amidships", "bow" are; "time", "bit", "children" are not."""
+_PLACE_NOUNS = frozenset({"side", "end", "corner", "edge", "half", "part", "quarter", "area",
+                          "zone", "spot", "position", "place"})  # fmt: skip
+
+
+def _where_to_build(tok: Token, word: str) -> bool:
+    """`tok` tells where a structure goes in words SDI does not know: a noun used as an adverb of
+    the verb that builds it ("put a mast right amidships", "lay a row fore and aft"), or a word
+    that picks a place noun ("on the starboard side", "on the bow end")."""
+    if word in words.HARMLESS or word in words.CONSULTED or word in lx.FILLER or tok.is_stop:
+        return False
+    if tok.dep_ in ("compound", "amod") and tok.head.lower_ in _PLACE_NOUNS:
+        return tok.head.dep_ == "pobj" and tok.head.head.lower_ in ("on", "at", "to", "in")
+    adverbial = tok.dep_ == "npadvmod" or (tok.dep_ == "conj" and tok.head.dep_ == "npadvmod")
+    verb = tok.head if tok.dep_ == "npadvmod" else tok.head.head
+    return (
+        adverbial
+        and tok.pos_ in ("NOUN", "ADV")
+        and english_frequency().get(word, 0) < _RARE  # not "this time", "children", "a bit"
+        and verb.pos_ == "VERB"
+        and tok.ent_type_ not in ("DATE", "TIME")
+        and any(c.lower_ in lx.SHAPE_WORDS or c.lower_ in lx.PART_WORDS for c in verb.children)
+    )
+
+
 def account(word: str, tok: Token | None, st: ReadState) -> None:
     if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
         return
@@ -101,6 +129,13 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
         st.material.append(word)
         st.ignored.append(word)
         st.notes.append(f"ignored '{word}': what is asked for is not a structure SDI knows")
+        return
+    if tok is not None and not known and _where_to_build(tok, word):
+        # "right amidships", "on the starboard side", "on the bow end": a place in words SDI
+        # does not know — which place is not understood
+        st.material.append(word)
+        st.ignored.append(word)
+        st.notes.append(f"ignored '{word}': says where to build, in words SDI does not know")
         return
     if tok is not None and not known and not _attached(tok):
         if word not in words.HARMLESS and word not in words.CONSULTED:

@@ -125,12 +125,36 @@ _APART_SAID = re.compile(
     r"\b(?:apart|gap|between|clear|centre\s+to\s+centre|center\s+to\s+center)\b", re.I
 )
 _BRIDGE = re.compile(r"\b(?:bridge|arch)\b", re.IGNORECASE)
+_DIGITS = {
+    w: n
+    for n, w in enumerate(
+        [
+            "zero",
+            "one",
+            "two",
+            "three",
+            "four",
+            "five",
+            "six",
+            "seven",
+            "eight",
+            "nine",
+            "ten",
+            "eleven",
+            "twelve",
+        ]
+    )
+}
+_DIGITS |= {"wun": 1, "fower": 4, "fife": 5, "niner": 9, "tree": 3}
+_DIGIT_WORD = "zero|one|two|three|four|five|six|seven|eight|nine|wun|fower|fife|niner|tree"
 _EACH_AT = {"at": "at", "in": "in"}  # "one per corner" stands on each; "one at each end" at it
 _PER_ANCHOR = {"corner": 4, "end": 2}
 
 
 def words_to_int(word: str) -> int:
     return {"two": 2, "four": 4}.get(word.lower()) or int(word)
+
+
 _DECK = re.compile(r"\b(?:lay|put|place|set)\s+(?:the|a)\s+deck\b", re.IGNORECASE)
 _BOTH_SIDES = (
     r"\s*,?\s*(?:left\s+and\s+right|right\s+and\s+left|front\s+and\s+back|back\s+and\s+front)\b"
@@ -272,6 +296,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      r"on \1 \2 of \3"),
     (re.compile(r"(?<=\bon\s)(each|either|both)\s+(sides?)\s+of\s+(it|them)" + _BOTH_SIDES, re.I),
      r"\1 \2 of \3"),
+    # a number said digit by digit ("one-five-zero millimetres", "wun-fife-zero"): 150
+    (re.compile(r"\b(?:" + _DIGIT_WORD + r")(?:-(?:" + _DIGIT_WORD + r")){1,3}\b", re.I),
+     lambda m: "".join(str(_DIGITS[w.lower()]) for w in m.group(0).split("-"))
+     if len(m.group(0).split("-")) >= 3 or "zero" in m.group(0).lower() else m.group(0)),
+    # a contract's "four (4)": the figure repeats the word; one that disagrees is kept
+    (re.compile(r"\b([a-z]+)\s*\(\s*(\d+)\s*\)", re.I),
+     lambda m: m.group(1) if _DIGITS.get(m.group(1).lower(), -1) == int(m.group(2))
+     else m.group(0)),
     # "one per corner of a slab", "one at each end of the wall": one on (at) each of them
     (re.compile(r"\b(?:one|1|a\s+single\s+one)\s+(per|for\s+each|at\s+each|at\s+every|"
                 r"on\s+every|in\s+each|on\s+each|on\s+(?:all\s+)?(?:four|4|two|2|both))\s+"
@@ -685,6 +717,30 @@ _HOMOPHONES = [
     ),
     (re.compile(r"(?<=\bby\s)tree\b", re.I), "three"),
     (re.compile(r"(?<=\d)\s+bye\s+(?=\d)", re.I), " by "),
+    # radio voice procedure (ICAO): "fower", "fife", "niner", "wun"; "height tree"
+    (re.compile(r"\bfower\b", re.I), "four"),
+    (re.compile(r"\bfife\b", re.I), "five"),
+    (re.compile(r"\bniner\b", re.I), "nine"),
+    (re.compile(r"\bwun\b", re.I), "one"),
+    (
+        re.compile(
+            "|".join(
+                rf"(?<=\b{w}\s)tree\b"
+                for w in (
+                    "height",
+                    "length",
+                    "width",
+                    "depth",
+                    "quantity",
+                    "count",
+                    "levels",
+                    "steps",
+                )
+            ),
+            re.I,
+        ),
+        "three",
+    ),
     (re.compile(r"\b(?:el|ell)\s+(?=shape|shaped)", re.I), "L "),
     (re.compile(r"\btee\s+(?=shape|shaped)", re.I), "T "),
 ]

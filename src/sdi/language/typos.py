@@ -123,7 +123,8 @@ _VOWELS = re.compile(r"[aeiou]")
 _ACRONYMS = frozenset({"plc", "hmi", "cnc", "tcp", "rpm", "std", "qty", "sku", "mph", "kph",
                        "ppm", "pcs", "thx", "pls", "plz", "smth", "lvl", "lvls", "hrs", "mins",
                        "pcb", "xyz", "tbd", "wrt", "bldg", "frm", "nds", "cmms", "hgt", "hght",
-                       "lng", "cnr", "crnr", "frnt", "lft", "rght", "rgt", "nxt", "bhnd"})  # fmt: skip
+                       "lng", "cnr", "crnr", "frnt", "lft", "rght", "rgt", "nxt",
+                       "bhnd"})  # fmt: skip
 """Vowel-less words of a shop floor that are no abbreviation of SDI's words ("PLC" is no
 place), or that the normaliser expands itself."""
 
@@ -189,6 +190,25 @@ def abbreviated(word: str) -> str | None:
     return top[0]
 
 
+def _names_a_structure(m: re.Match[str]) -> bool:
+    """The text around `m` names a structure in a word of its own, or one a near typo is —
+    not a support or a level of one ("a brij with legs of 3" names only the bridge)."""
+    for other in _WORD.finditer(m.string):
+        w = other.group(0).lower()
+        if other.start() != m.start() and (
+            w in _WHOLE or (len(w) > 3 and not known_word(w) and process.extractOne(
+                w, _WHOLE, scorer=DamerauLevenshtein.distance, score_cutoff=1) is not None)
+        ):  # fmt: skip
+            return True
+    return False
+
+
+_WHOLE = sorted(
+    _SHAPES - lx.LEVEL_WORDS - {"leg", "legs", "pillar", "pillars", "post", "posts", "pier",
+                                "piers", "upright", "uprights", "support", "supports"}
+)  # fmt: skip
+
+
 def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     """`text` with typos replaced, and a note per correction. `aggressive` also corrects
     words the English vocabulary knows ("wal"), for a command nothing else could read."""
@@ -239,6 +259,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
         )
         if not found:
             heard = None if _vocab_has(w) else _sounds_like(w)
+            if heard in _SHAPES and _names_a_structure(m):
+                return raw  # "Tsak: a 2x3 slab" is no desk beside the slab: a guess too far
             if heard:  # "brij", "blox", "sumthing": spelt as it sounds
                 notes.append(f"corrected '{raw}' to '{heard}' (it sounds like it)")
                 return heard
