@@ -3401,3 +3401,51 @@ def test_a_figure_in_brackets_that_repeats_the_word_is_one_number_and_one_that_d
 def test_a_number_said_digit_by_digit():
     (s,) = read("a row of cubes along y, wun-fife-zero millimetres long").spec.structures
     assert (s.shape, s.length_m) == ("row", 0.15)
+
+
+def test_a_contracts_thereof_and_upon_relate_the_tower_to_the_slab():
+    r = read("The Contractor shall lay a slab of three (3) by three (3) cubes, and shall erect "
+             "upon the centre thereof a tower of two (2) cubes.")  # fmt: skip
+    (rel,) = r.spec.relations
+    assert rel.kind == "on_top_of" and r.spec.structures[rel.object].shape == "grid"
+
+
+def test_a_slab_comprising_cubes_in_rows_is_that_slab_not_a_second_structure():
+    (s,) = read("one slab comprising twelve cubes arranged in three rows of four").spec.structures
+    assert (s.shape, sorted((s.length, s.width))) == ("grid", [3, 4])
+
+
+def test_extending_a_row_makes_it_longer_not_taller():
+    (s,) = read("a row of 5, then extend it by two more cubes at the same end").spec.structures
+    assert (s.shape, s.length) == ("row", 7)
+
+
+def test_structures_placed_in_the_order_named_from_front_to_back_stand_in_a_line_along_x():
+    r = read("a tower of 1, a tower of 2 and a tower of 3 placed in that order from front to back")
+    assert r.spec.line == "x" and [s.height for s in r.spec.structures] == [1, 2, 3]
+    assert r.complete  # 'order' is used, not an unused material word
+
+
+def test_a_user_storys_done_when_is_checked_against_the_reading():
+    ok = plan("a row of 5, then extend it by two. Done when: one row, seven long.")
+    assert ok.status == "success", ok.notes
+    bad = plan("a row of 5. Done when: one row, six long.")
+    assert bad.status == "partial", bad.notes
+
+
+@pytest.mark.parametrize(
+    "command",
+    ["Lay a deck five by five, one thick, but leave the middle open.",
+     "a 3x3 slab, keep the centre free"],
+)  # fmt: skip
+def test_a_slab_with_its_middle_left_open_is_a_ring(command):
+    (s,) = read(command).spec.structures
+    assert s.shape == "enclosure"
+
+
+def test_a_clause_placing_a_structure_at_a_side_is_not_chatter():
+    r = plan("make a wall of 5 length, 2 height, and keep a tower of 3 on its right side itself")
+    assert r.status != "success" or len(r.spec.relations) == 1, r.notes
+    assert plan("a tower of 4 but not in the middle, put it somewhere off to the side").status == (
+        "success"
+    )

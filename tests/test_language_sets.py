@@ -40,6 +40,7 @@ from sdi.bench.language_dev22 import CASES as DEV22
 from sdi.bench.language_dev23 import CASES as DEV23
 from sdi.bench.language_dev24 import CASES as DEV24
 from sdi.bench.language_dev25 import CASES as DEV25
+from sdi.bench.language_dev26 import CASES as DEV26
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -279,6 +280,7 @@ SETS = {
     "dev23": (DEV23, 170, 8, 15),
     "dev24": (DEV24, 170, 8, 15),
     "dev25": (DEV25, 170, 8, 15),
+    "dev26": (DEV26, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -298,6 +300,7 @@ HARD = {
     "dev23": ("relation", "numbers", "dimensions", "sequence"),
     "dev24": ("relation", "numbers", "dimensions", "sequence"),
     "dev25": ("relation", "numbers", "dimensions", "sequence"),
+    "dev26": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -411,6 +414,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev23.py",
         "language_dev24.py",
         "language_dev25.py",
+        "language_dev26.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

@@ -26,12 +26,14 @@ _USABLE = (
     set(lx.SHAPE_WORDS) | set(lx.SIZE_WORDS) | set(lx.DIMENSION_WORDS) | set(lx.REGION_WORDS)
     | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | BEAMS
     | words.SIGNIFICANT  # "too much, half of that": a change of a size, never chatter
+    | {"side", "sides", "corner", "corners", "edge", "edges"}  # "keep it on the starboard side"
 ) - lx.AMBIGUOUS_SHAPES - {"well", "item", "items", "object", "objects", "unit"}  # fmt: skip
 
 
 def is_chatter(text: str) -> bool:
     """A clause with nothing the Specifier could use ("The visitors arrive at 10")."""
-    said = re.findall(r"[a-z]+|\d+", text.lower())
+    # "off to the side" is anywhere but the middle, no side in particular
+    said = re.findall(r"[a-z]+|\d+", re.sub(r"\b(?:off\s+)?to\s+the\s+side\b", "", text.lower()))
     # "of five" left over is a number not used; "one, two, three, four" is counting aloud
     worded = any(w in NUMBER_WORDS for w in said) and not re.search(r"\bone\W+two\b", text, re.I)
     if (worded or any(w.isdigit() for w in said)) and not any(w in lx.PART_WORDS for w in said):

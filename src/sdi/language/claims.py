@@ -215,7 +215,7 @@ def _result(said: str, spec: Spec, st: ReadState) -> None:
     the command describes, read on its own and compared with what the reading builds."""
     from sdi.language.reader import read  # the description is a command of its own
 
-    described = re.sub(r"^.*?(?=\b(?:a|an)\s)", "", said, count=1, flags=re.IGNORECASE)
+    described = re.sub(r"^.*?(?=\b(?:a|an|one)\s)", "", said, count=1, flags=re.IGNORECASE)
     try:
         (want,) = read(described, st.cell).spec.structures
     except (SpecError, ValueError):

@@ -541,6 +541,14 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         n //= top_parts  # "a 2x2 block, add 4 more cubes on top": one layer more
     if last.shape == "grid" and op == "-" and re.search(r"\brow\b", m.group(0), re.I):
         key = "width"  # "4 rows of 3. Then remove the last row.": one row fewer
+    if (
+        key is None
+        and last.shape in ("row", "wall")
+        and op in ("+", "-")
+        and re.search(r"\b(?:extend|lengthen|longer|shorten|shorter|ends?)\b", p.text, re.I)
+        and not re.search(r"\b(?:on\s+top|higher|taller|lower|up|layers?|levels?)\b", p.text, re.I)
+    ):
+        key = "length"  # "a row of 5, then extend it by two more cubes at the same end"
     key = key or ("steps" if last.shape == "staircase" else "height")
     metres = getattr(last, f"{key}_m", None)  # "stack it up to 10 inches": in whole parts
     said = getattr(last, key) or (round(metres / part_m) if metres else None)

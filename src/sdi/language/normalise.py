@@ -151,6 +151,12 @@ _EACH_AT = {"at": "at", "in": "in"}  # "one per corner" stands on each; "one at 
 _PER_ANCHOR = {"corner": 4, "end": 2}
 
 
+def _product(m: re.Match[str]) -> bool:
+    """The count said (group 2) is the rows (3) times the parts per row (4)."""
+    n, rows, each = words_to_numbers([m.group(2).lower(), m.group(3).lower(), m.group(4).lower()])
+    return (n + rows + each).isdigit() and int(n) == int(rows) * int(each)
+
+
 def words_to_int(word: str) -> int:
     return {"two": 2, "four": 4}.get(word.lower()) or int(word)
 
@@ -296,6 +302,18 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      r"on \1 \2 of \3"),
     (re.compile(r"(?<=\bon\s)(each|either|both)\s+(sides?)\s+of\s+(it|them)" + _BOTH_SIDES, re.I),
      r"\1 \2 of \3"),
+    # "placed in that order from front to back": the order is the one they are named in
+    (re.compile(r"\b(?:in\s+(?:that|this|the\s+same|the\s+given|the\s+listed)\s+order)\s*,?\s*"
+                r"(?=(?:going\s+|running\s+)?(?:from\s+)?(?:the\s+)?(?:left|right|front|back)\s+to\b)",
+                re.I), ""),
+    # a contract's pronominal adverbs: "upon the centre thereof" is on the centre of it
+    (re.compile(r"\bthereof\b", re.I), "of it"),
+    (re.compile(r"\b(?:thereon|thereupon|thereonto)\b", re.I), "on it"),
+    (re.compile(r"\btherein\b", re.I), "in it"),
+    (re.compile(r"\bthereto\b", re.I), "to it"),
+    (re.compile(r"\bupon\s+(?=the\s+(?:centre|center|middle|top)\s+of\b)", re.I), "on "),
+    (re.compile(r"\b(?:the\s+)?said\s+(?=(?:tower|wall|row|slab|block|bridge|staircase|pyramid|"
+                r"structure|grid|ring|arch|canopy)s?\b)", re.I), "the "),
     # a number said digit by digit ("one-five-zero millimetres", "wun-fife-zero"): 150
     (re.compile(r"\b(?:" + _DIGIT_WORD + r")(?:-(?:" + _DIGIT_WORD + r")){1,3}\b", re.I),
      lambda m: "".join(str(_DIGITS[w.lower()]) for w in m.group(0).split("-"))
@@ -304,6 +322,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b([a-z]+)\s*\(\s*(\d+)\s*\)", re.I),
      lambda m: m.group(1) if _DIGITS.get(m.group(1).lower(), -1) == int(m.group(2))
      else m.group(0)),
+    # "a slab comprising twelve cubes arranged in three rows of four": the slab's own rows
+    (re.compile(r"\b((?:slab|grid|block|platform|layer|pad|floor|plate|deck|patch|mat)s?\b[^.;]{0,30}?)"
+                r"\s*,?\s*\b(?:comprising|consisting\s+of|made\s+(?:up\s+)?of|of|with)\s+(\w+)\s+"
+                r"(?:cubes?|blocks?|parts?|pieces?)\s*,?\s*(?:arranged\s+|laid\s+(?:out\s+)?|set\s+"
+                r"(?:out\s+)?|placed\s+)?(?:in|as)\s+(\w+)\s+rows\s+of\s+(\w+)(?:\s+(?:cubes?|each))?",
+                re.I),
+     lambda m: f"{m.group(1)} {m.group(4)} by {m.group(3)}" if _product(m) else m.group(0)),
     # "one per corner of a slab", "one at each end of the wall": one on (at) each of them
     (re.compile(r"\b(?:one|1|a\s+single\s+one)\s+(per|for\s+each|at\s+each|at\s+every|"
                 r"on\s+every|in\s+each|on\s+each|on\s+(?:all\s+)?(?:four|4|two|2|both))\s+"

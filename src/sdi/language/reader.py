@@ -308,6 +308,8 @@ def _listed(
     right to left in the order named, so a list given from the left is placed reversed."""
     if st.listing is None or len(specs) < 2 or relations:
         return specs
+    if st.listing in ("front to back", "back to front") and st.line is None:
+        st.line = "x"  # "four towers … placed in that order from front to back": one behind another
     if st.listing in ("left to right", "back to front"):
         st.notes.append(f"the structures named {st.listing}, placed in that order")
         return specs[::-1]

@@ -657,10 +657,22 @@ _REWRITES += [
     # "a 3x3 grid without the middle cube": a ring
     (
         re.compile(
-            r"\b(grid|square|layer|slab|pad|patch|platform|block)\b([^.;]{0,20}?)\s*,?\s*(?:without|minus|"
+            r"\b(grid|square|layer|slab|pad|patch|platform|block|deck|floor|plate|mat)\b([^.;]{0,30}?)"
+            r"\s*,?\s*(?:without|minus|"
             r"but\s+not|except(?:\s+for)?|leave\s+out|leaving\s+out|leave\s+off)\s+(?:the\s+|a\s+|its\s+)?"
             r"(?:middle|centre|center|inner|central)(?:\s+(?:cubes?|ones?|parts?|pieces?|column|blocks?|"
             r"bricks?))?",
+            re.IGNORECASE,
+        ),
+        " hollow {0} {1} ",
+        "read '{0}' as a hollow ring",
+    ),
+    (  # "a 5 by 5 deck, but leave the middle open": a ring too
+        re.compile(
+            r"\b(grid|square|layer|slab|pad|patch|platform|block|deck|floor|plate|mat)\b([^.;]{0,30}?)"
+            r"\s*,?\s*(?:but\s+|and\s+)?(?:leave|leaving|keep|keeping)\s+(?:the\s+|its\s+)?(?:middle|"
+            r"centre|center|inside|interior)(?:\s+(?:cubes?|ones?|parts?|bit|square|area))?\s+(?:open|empty|"
+            r"free|clear|hollow|out|unfilled)\b",
             re.IGNORECASE,
         ),
         " hollow {0} {1} ",
@@ -2409,13 +2421,18 @@ _LIKE_A = re.compile(
     r"(?:should|will|would|ought\s+to)\s+(?:come\s+out|end\s+up|turn\s+out|look)\s+(?:as|like)|"
     r"(?:expected|end|final)(?:\s+(?:result|outcome|shape))?\s*(?:should\s+be|will\s+be|is)?\s*:|"
     r"(?:the\s+)?(?:result|outcome)\s*(?:should\s+be|will\s+be|is)?\s*:)"
-    r"\s+(?:a|an)\s+[^,.;:!?]*",
+    r"\s+(?:a|an|one)\s+[^,.;:!?]*"
+    # a user story's "Done when: one row, seven long.": the whole sentence describes the result
+    r"|(?:,\s*|\s+)\b(?:(?:done|complete|finished|accepted)\s+when|acceptance(?:\s+criteria)?|"
+    r"definition\s+of\s+done)\s*:\s+(?:a|an|one)\s+[^.;:!?\n]*",
     re.IGNORECASE,
 )
 
 
 _RESULT = re.compile(
-    r"\b(?:come\s+out|end\s+up|turn\s+out|expected|result|outcome|final|end)\b", re.IGNORECASE
+    r"\b(?:come\s+out|end\s+up|turn\s+out|expected|result|outcome|final|end|done|complete|"
+    r"finished|accepted|acceptance)\b",
+    re.IGNORECASE,
 )
 
 
