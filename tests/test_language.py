@@ -3449,3 +3449,26 @@ def test_a_clause_placing_a_structure_at_a_side_is_not_chatter():
     assert plan("a tower of 4 but not in the middle, put it somewhere off to the side").status == (
         "success"
     )
+
+
+def test_several_things_of_sdis_choosing_are_that_many_structures():
+    r = plan("build three different things, robot, you choose what.")
+    assert r.status == "success" and len({s.shape for s in r.spec.structures}) == 3, r.notes
+    guessed = plan("Please build two things, you can choose what, but not too big, under 5 high.")
+    assert guessed.status == "partial", guessed.notes  # one wall of the parts said: not two things
+
+
+def test_sizes_labelled_with_the_cells_axes():
+    (s,) = read("Block, 150 x 100 x 100 mm (X x Y x Z).").spec.structures
+    # x is depth (away from the robot), y across
+    assert (s.shape, s.width_m, s.length_m, s.height_m) == ("block", 0.15, 0.1, 0.1)
+    (w,) = read("a block W×D×H = 3×2×2").spec.structures  # the older label form still reads
+    assert (w.length, w.width, w.height) == (3, 2, 2)
+
+
+def test_what_is_said_before_anyway_is_an_aside():
+    r = read("My grandmother had a clock shaped like a little temple. Anyway: a ring of cubes, "
+             "four by four, two high, please.")  # fmt: skip
+    assert [s.shape for s in r.spec.structures] == ["enclosure"] and r.complete
+    kept = read("Build a tower of 3. Anyway, a wall of 4 too.")
+    assert [s.shape for s in kept.spec.structures] == ["tower", "wall"]  # a build verb: no aside

@@ -897,6 +897,7 @@ _LABELLED = re.compile(
     rf"(?P<labels>{_LABEL}(?:\s*[x×*]\s*{_LABEL}){{1,2}})\s*\)?(?!\w)",
     re.IGNORECASE,
 )
+_XYZ_LABEL = re.compile(r"\(\s*x\s*[x×*]\s*y(\s*[x×*]\s*z)?\s*\)", re.IGNORECASE)
 _DIMENSION_OF = {"l": "long", "w": "wide", "h": "high", "d": "deep"}
 
 
@@ -920,6 +921,33 @@ _NEGATIVE_COUNT = re.compile(
 _LARGEST = 1e6
 
 
+_ANYWAY = re.compile(
+    r"^(?P<aside>[^:]*?[.!?;]\s*)(?:so\s+|but\s+|ok(?:ay)?\s*,?\s*)?(?:anyway|anyhow|long\s+story\s+"
+    r"short|enough\s+of\s+that|back\s+to\s+(?:work|business|the\s+job))\s*[:,.!-]\s*",
+    re.IGNORECASE,
+)
+_BUILD_WORDS = re.compile(
+    r"\b(?:build|make|put|place|stack|add|set|lay|give|want|need|\d+|one|two|three|four|five|six|"
+    r"seven|eight|nine|ten)\b",
+    re.IGNORECASE,
+)
+
+
+def _aside(text: str, notes: list[str]) -> str:
+    """ "My grandmother had a clock shaped like a little temple. Anyway: a ring of cubes …":
+    what is said before "anyway" is an aside — if it asks for nothing (no build verb, no number)
+    and a structure is named after it."""
+    m = _ANYWAY.match(text)
+    if m is None or _BUILD_WORDS.search(m.group("aside")):
+        return text
+    rest = text[m.end() :]
+    if not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", rest.lower())):
+        return text
+    marker = m.group(0)[m.end("aside") :].strip(" :,.!-")
+    notes.append(f"ignored '{m.group('aside').strip()}': an aside before '{marker}'")
+    return rest
+
+
 def normalise(command: str, notes: list[str] | None = None) -> str:
     """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
     notes = notes if notes is not None else []
@@ -935,6 +963,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return " "
 
     text = _UNRELATED.sub(unrelated, text)
+    text = _aside(text, notes)
     text = _CALL.sub(lambda m: _call(m, notes), text)
 
     def labelled(m: re.Match[str]) -> str:
@@ -954,6 +983,8 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             notes.append(f"read '{m.group(0).strip()}' as {said}")
         return f" {said} "
 
+    # "(X x Y x Z)": the cell's axes, x away from the robot (depth), y across, z up
+    text = _XYZ_LABEL.sub(lambda m: "(D x W x H)" if m.group(1) else "(D x W)", text)
     text = _LABELLED.sub(labelled, text)  # "250mm x 100mm (L x H)": the label says which
 
     def glossed(m: re.Match[str]) -> str:

@@ -54,6 +54,7 @@ from sdi.language.state import Phrase, ReadState
 from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
+from sdi.spec.numbers import words_to_numbers
 from sdi.spec.structure_spec import Relation, Spec, StructureDraft, StructureSpec
 
 if TYPE_CHECKING:
@@ -165,6 +166,16 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     guessed = [
         s for s in specs if s.shape in ("row", "wall") and (getattr(s, "length", None) or 2) > 1
     ]
+    things = _THINGS.search(text)
+    count_word = (things.group(1) or things.group(2)).lower() if things else "0"
+    asked = int(words_to_numbers([count_word])[0])
+    if things and asked != len(specs):
+        # "two things, under 5 cubes high": one structure built of the sizes said, not two
+        st.material.append(things.group(0))
+        st.notes.append(
+            f"ignored '{things.group(0)}': {len(specs)} structure(s) built; name each of them, "
+            "or leave SDI the choice without sizes"
+        )
     if len(specs) > 1 and _GUESSED_ROW in st.notes and guessed and not rows_named:
         # "five cubes long, three tall - such a wall": parts said apart from the structure they
         # size, built as a row of their own beside it: a guess that is not what was asked
@@ -491,6 +502,21 @@ _GENERIC_NOUNS = re.compile(
 _SPANNED = re.compile(r"\b(?:beams?|lintels?|spans?|symmetr\w*|either\s+side|both\s+sides)\b", re.I)
 
 
+_THINGS = re.compile(
+    r"\b(two|three|four|five|[2-5])\s+(?:different\s+|separate\s+|small\s+|little\s+)?"
+    r"(?:things|structures|items|objects|shapes|builds|models)\b|\bquantity\s+(two|three|four|five|[2-5])\b",
+    re.IGNORECASE,
+)
+_CHOSEN = (
+    "tower of 3",
+    "row of 3",
+    "pyramid of 2 levels",
+    "2 by 2 slab",
+    "bridge with pillars of 2",
+)
+"""What SDI builds when asked for several things of its own choosing: one of each, in turn."""
+
+
 def _open(text: str, delegated: str | None) -> tuple[str, list[str]]:
     """An open description with no family named: the family its size words suggest; when the
     choice was left to SDI ("build whatever you like"), a small bridge if a beam or a
@@ -498,6 +524,13 @@ def _open(text: str, delegated: str | None) -> tuple[str, list[str]]:
     m = _GENERIC_NOUNS.search(text)
     said = set(re.findall(r"[a-z]+", text.lower()))
     if delegated and not (m and said & set(lx.SIZE_WORDS)):
+        many = _THINGS.search(text)
+        n = int(words_to_numbers([(many.group(1) or many.group(2)).lower()])[0]) if many else 1
+        if 2 <= n <= len(_CHOSEN):  # "build three different things, you choose what"
+            chosen = _CHOSEN[:n]
+            note = (f"no structure named and the choice left to SDI: built {n} of its choosing, "
+                    f"{', '.join(chosen)}")  # fmt: skip
+            return f"{text} , " + " and ".join(f"a {c}" for c in chosen), [note]
         family = "bridge with pillars of 2" if _SPANNED.search(text) else "tower of 3"
         note = f"no structure named and the choice left to SDI: built a {family}"
         return f"{text} , a {family}", [note]
