@@ -3472,3 +3472,25 @@ def test_what_is_said_before_anyway_is_an_aside():
     assert [s.shape for s in r.spec.structures] == ["enclosure"] and r.complete
     kept = read("Build a tower of 3. Anyway, a wall of 4 too.")
     assert [s.shape for s in kept.spec.structures] == ["tower", "wall"]  # a build verb: no aside
+
+
+def test_no_module_of_the_front_end_binds_a_top_level_name_twice():
+    # a second `_AXES_LABEL` in normalise silently replaced the first (a 'W×D×H =' label then
+    # stayed in the text): the rule tables of these modules are long, so names must not repeat
+    import ast
+    import collections
+    from pathlib import Path
+
+    import sdi
+
+    root = Path(sdi.__file__).parent
+    for path in [*(root / "language").glob("*.py"), *(root / "spec").glob("*.py")]:
+        names: collections.Counter[str] = collections.Counter()
+        for node in ast.parse(path.read_text(encoding="utf-8")).body:
+            if isinstance(node, ast.Assign):
+                names.update(t.id for t in node.targets if isinstance(t, ast.Name))
+            elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+                names[node.target.id] += 1
+            elif isinstance(node, ast.FunctionDef | ast.ClassDef):
+                names[node.name] += 1
+        assert [n for n, c in names.items() if c > 1] == [], path.name

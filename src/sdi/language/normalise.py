@@ -907,12 +907,12 @@ _SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
 _SLASHES = re.compile(r"\b\d+(?:/\d+)+\b(?!\s*(?:mm|cm|m)\b)")
 
 
-_COUNTED = "|".join(
+_STRUCTURE_NOUNS = "|".join(
     sorted((w for w in {*lx.SHAPE_WORDS, *lx.PART_WORDS} if w.isalpha()), key=len, reverse=True)
 )
 # "build -2 towers": a count below zero (a coordinate "x = -0.2" is not a count)
 _NEGATIVE_COUNT = re.compile(
-    r"(?:^|(?<=[\s,;:(]))[-−](\d+)\s+(?:[a-z]+[- ])?(?:" + _COUNTED + r")s?\b",
+    r"(?:^|(?<=[\s,;:(]))[-−](\d+)\s+(?:[a-z]+[- ])?(?:" + _STRUCTURE_NOUNS + r")s?\b",
     re.IGNORECASE,
 )
 
