@@ -3494,3 +3494,14 @@ def test_no_module_of_the_front_end_binds_a_top_level_name_twice():
             elif isinstance(node, ast.FunctionDef | ast.ClassDef):
                 names[node.name] += 1
         assert [n for n, c in names.items() if c > 1] == [], path.name
+
+
+@pytest.mark.parametrize(
+    "command",
+    ["make any shape you like, but keep it on the left",
+     "Do one thing, make any shape you like, but keep it in the left side only."],
+)  # fmt: skip
+def test_a_structure_of_sdis_choosing_goes_where_it_is_then_placed(command):
+    # "keep it on the left" said after the choice was left to SDI: an error, or a tower mid-table
+    (s,) = read(command).spec.structures
+    assert (s.shape, s.region) == ("tower", "left")

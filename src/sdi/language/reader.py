@@ -507,6 +507,9 @@ _THINGS = re.compile(
     r"(?:things|structures|items|objects|shapes|builds|models)\b|\bquantity\s+(two|three|four|five|[2-5])\b",
     re.IGNORECASE,
 )
+_PLACED_IT = re.compile(
+    r"\b(?:keep|put|place|set|move|stand|have)\s+(?:it|them)\s+(?:on|in|at|to|towards|near)\b", re.I
+)
 _CHOSEN = (
     "tower of 3",
     "row of 3",
@@ -533,6 +536,8 @@ def _open(text: str, delegated: str | None) -> tuple[str, list[str]]:
             return f"{text} , " + " and ".join(f"a {c}" for c in chosen), [note]
         family = "bridge with pillars of 2" if _SPANNED.search(text) else "tower of 3"
         note = f"no structure named and the choice left to SDI: built a {family}"
+        if _PLACED_IT.search(text):  # "…, but keep it on the left": it is the one SDI builds
+            return f"a {family} . {text}", [note]
         return f"{text} , a {family}", [note]
     if not m or not said & set(lx.SIZE_WORDS):
         return text, []  # "build something": nothing to go on
