@@ -3505,3 +3505,25 @@ def test_a_structure_of_sdis_choosing_goes_where_it_is_then_placed(command):
     # "keep it on the left" said after the choice was left to SDI: an error, or a tower mid-table
     (s,) = read(command).spec.structures
     assert (s.shape, s.region) == ("tower", "left")
+
+
+@pytest.mark.parametrize(
+    ("command", "region"),
+    [("a wall 6 long, 2 high; it shall not be placed along the front of the table", "back"),
+     ("a tower of 3, it must not be built on the left side", "right"),
+     ("a tower of 3 at the back, not the front", "back"),
+     ("a tower of 3 on the left side, not the right", "left")],
+)  # fmt: skip
+def test_a_place_said_with_not_is_the_other_one(command, region):
+    r = plan(command)
+    assert r.status == "success" and r.spec.structures[0].region == region, r.notes
+
+
+@pytest.mark.parametrize(
+    "command",
+    ["a tower of 3; it will never stand at the back", "a tower of 3; nothing at the back"],
+)
+def test_a_place_a_negation_excludes_is_never_built_silently(command):
+    # it was read as at the back, with no note
+    r = plan(command)
+    assert r.status == "partial" and any("exclude" in n for n in r.notes), r.notes

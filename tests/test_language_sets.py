@@ -41,6 +41,7 @@ from sdi.bench.language_dev23 import CASES as DEV23
 from sdi.bench.language_dev24 import CASES as DEV24
 from sdi.bench.language_dev25 import CASES as DEV25
 from sdi.bench.language_dev26 import CASES as DEV26
+from sdi.bench.language_dev27 import CASES as DEV27
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -281,6 +282,7 @@ SETS = {
     "dev24": (DEV24, 170, 8, 15),
     "dev25": (DEV25, 170, 8, 15),
     "dev26": (DEV26, 170, 8, 15),
+    "dev27": (DEV27, 170, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -301,6 +303,7 @@ HARD = {
     "dev24": ("relation", "numbers", "dimensions", "sequence"),
     "dev25": ("relation", "numbers", "dimensions", "sequence"),
     "dev26": ("relation", "numbers", "dimensions", "sequence"),
+    "dev27": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -415,6 +418,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev24.py",
         "language_dev25.py",
         "language_dev26.py",
+        "language_dev27.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

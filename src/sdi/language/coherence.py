@@ -258,7 +258,7 @@ def _families_named(doc: Doc, tokens: set[int]) -> dict[str, str]:
     return named
 
 
-_NEGATIONS = frozenset({"not", "n't", "never", "no", "without", "nor", "neither"})
+_NEGATIONS = frozenset({"not", "n't", "never", "no", "without", "nor", "neither", "nothing"})
 _SCOPE_ENDS = frozenset({",", ".", ";", ":", "!", "?", "-", "but", "and", "instead", "then", "so"})
 _NEGATED_RELATIONS: dict[str, str] = {
     "on": "on_top_of", "onto": "on_top_of", "top": "on_top_of", "across": "on_top_of",
@@ -272,7 +272,12 @@ def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
     """What a negation excludes that the reading still builds: a family ("don't build a tower")
     or a relation ("don't put anything across them") said nowhere else without a negation."""
     built = {s.shape for s in spec.structures}
-    related = {r.kind for r in spec.relations}
+    related = {r.kind for r in spec.relations} | {
+        f"at {side}"
+        for s in spec.structures
+        for side in (getattr(s, "region", None) or "").split()
+        if side in _PLACES.values()
+    }
     scoped: set[int] = set()
     cues: list[tuple[str, set[str], set[str]]] = []
     for tok in doc:
@@ -289,11 +294,14 @@ def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
             if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES and w not in _COMPONENTS
         }  # fmt: skip
         kinds = {_NEGATED_RELATIONS[t.lower_] for t in scope if t.lower_ in _NEGATED_RELATIONS}
+        # "it will never stand at the back", "nothing at the back": a place excluded
+        kinds |= {f"at {_PLACES[t.lower_]}" for t in scope if t.lower_ in _PLACES}
         if families or kinds:
             cues.append((doc[tok.i : scope[-1].i + 1].text, families, kinds))
     outside = [t for t in doc if t.i not in scoped and t.lower_ not in _NEGATIONS]
     said_families = {lx.SHAPE_WORDS[t.lower_] for t in outside if t.lower_ in lx.SHAPE_WORDS}
     said_kinds = {_NEGATED_RELATIONS[t.lower_] for t in outside if t.lower_ in _NEGATED_RELATIONS}
+    said_kinds |= {f"at {_PLACES[t.lower_]}" for t in outside if t.lower_ in _PLACES}
     return [
         cue for cue, families, kinds in cues
         if (families & built) - said_families or (kinds & related) - said_kinds

@@ -169,6 +169,17 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
         " on the {opposite} ",
         "read '{0}' as on the {opposite}",
     ),
+    (  # "it shall not be placed along the front of the table": at the other side
+        re.compile(
+            r"\b(?:it|they|the\s+\w+)\s+(?:shall|should|must|may|will|is\s+to|are\s+to|can)\s+not\s+"
+            r"(?:be\s+)?(?:placed|put|built|set|standing|located|positioned|erected|go)\s+"
+            r"(?:anywhere\s+)?(?:on|at|in|along|near|against|by)\s+the\s+(left|right|front|back)"
+            r"(?:\s+(?:edge|side|half|part|end))?(?:\s+of\s+the\s+(?:table|workspace|cell|bench))?",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
     (  # "keep everything in the left half": every structure there
         re.compile(
             r"\b(?:keep|put|place|build)\s+(?:everything|it\s+all|all\s+of\s+it|them\s+all|all\s+of\s+them|"
@@ -635,6 +646,18 @@ _REWRITES += [
         re.compile(r"\b(?:no|not)\s+(?:more|longer|wider|bigger)\s+than\s+|\bat\s+most\s+", re.I),
         " ",
         "read '{0}' as exactly that many (the most allowed)",
+    ),
+    # "a tower at the back, not the front": the place that is not wanted
+    (
+        re.compile(
+            r"\b(left|right|front|back|rear)(\s+(?:side|half|end|edge|corner))?\s*,?\s*"
+            r"(?:but\s+|and\s+)?not\s+(?:on\s+|at\s+|in\s+|to(?:wards)?\s+)?(?:the\s+)?"
+            r"(?:left|right|front|back|rear|middle|centre|center)(?:\s+(?:side|half|end|edge))?\b"
+            r"(?!\s+(?:of|left|right)\b)",
+            re.IGNORECASE,
+        ),
+        "{0}{1} ",
+        "'{0}': kept the other place",
     ),
     # "a tower of 4, not 5": the number that is not wanted
     (
