@@ -3527,3 +3527,40 @@ def test_a_place_a_negation_excludes_is_never_built_silently(command):
     # it was read as at the back, with no note
     r = plan(command)
     assert r.status == "partial" and any("exclude" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    ("command", "shape", "sizes"),
+    [  # a fitter's millimetres with no unit: sizes in parts of 50 mm
+        ("Wall, 350 long by 150 high.", "wall", {"length_m": 0.35, "height_m": 0.15}),
+        ("Block, 100 by 100, 150 high.", "block", {"length": 2, "width": 2, "height_m": 0.15}),
+        ("Tower of 150, centre at X 400, Y 200.", "tower", {"height_m": 0.15, "at_x": 0.4}),
+        ("Ring, 250 square outside, 100 high.", "enclosure", {"length": 5, "width": 5}),
+    ],
+)
+def test_a_round_size_of_50_or_more_without_a_unit_is_in_millimetres(command, shape, sizes):
+    r = read(command)
+    (s,) = r.spec.structures
+    assert s.shape == shape and all(getattr(s, k) == pytest.approx(v) for k, v in sizes.items())
+    assert any("without a unit" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command", ["Hi, job 2207: tower of 3", "station 40, a tower of 3", "a row of 5 cubes at 10:30"]
+)
+def test_a_job_number_or_a_time_is_no_size(command):
+    (s,) = read(command).spec.structures
+    assert getattr(s, "height", None) == 3 or getattr(s, "length", None) == 5
+
+
+def test_a_fitters_mil_and_daylight():
+    r = read("Two towers, 200 mil high, 50 mil of daylight between them, and a 150 beam across "
+             "the top.")  # fmt: skip
+    (s,) = r.spec.structures
+    assert (s.shape, s.spans, s.height_m) == ("bridge", 1, pytest.approx(0.2)) and r.complete
+
+
+def test_keep_it_off_an_edge_and_a_coordinate_said_with_not():
+    (s,) = read("Block 150 by 150, 100 high, and keep it off the front edge.").spec.structures
+    assert s.region == "back"
+    assert plan("Column 200 tall, do not place it forward of X500.").status == "partial"

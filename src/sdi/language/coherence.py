@@ -272,12 +272,20 @@ def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
     """What a negation excludes that the reading still builds: a family ("don't build a tower")
     or a relation ("don't put anything across them") said nowhere else without a negation."""
     built = {s.shape for s in spec.structures}
-    related = {r.kind for r in spec.relations} | {
-        f"at {side}"
-        for s in spec.structures
-        for side in (getattr(s, "region", None) or "").split()
-        if side in _PLACES.values()
-    }
+    related = (
+        {r.kind for r in spec.relations}
+        | {
+            f"at {side}"
+            for s in spec.structures
+            for side in (getattr(s, "region", None) or "").split()
+            if side in _PLACES.values()
+        }
+        | {
+            "at coordinates"
+            for s in spec.structures
+            if getattr(s, "at_x", None) is not None or getattr(s, "at_y", None) is not None
+        }
+    )
     scoped: set[int] = set()
     cues: list[tuple[str, set[str], set[str]]] = []
     for tok in doc:
@@ -296,12 +304,16 @@ def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
         kinds = {_NEGATED_RELATIONS[t.lower_] for t in scope if t.lower_ in _NEGATED_RELATIONS}
         # "it will never stand at the back", "nothing at the back": a place excluded
         kinds |= {f"at {_PLACES[t.lower_]}" for t in scope if t.lower_ in _PLACES}
+        if any(re.fullmatch(r"[xy](?:\d+(?:\.\d+)?)?", t.lower_) for t in scope):
+            kinds.add("at coordinates")  # "do not place it forward of X500"
         if families or kinds:
             cues.append((doc[tok.i : scope[-1].i + 1].text, families, kinds))
     outside = [t for t in doc if t.i not in scoped and t.lower_ not in _NEGATIONS]
     said_families = {lx.SHAPE_WORDS[t.lower_] for t in outside if t.lower_ in lx.SHAPE_WORDS}
     said_kinds = {_NEGATED_RELATIONS[t.lower_] for t in outside if t.lower_ in _NEGATED_RELATIONS}
     said_kinds |= {f"at {_PLACES[t.lower_]}" for t in outside if t.lower_ in _PLACES}
+    if any(re.fullmatch(r"[xy](?:\d+(?:\.\d+)?)?", t.lower_) for t in outside):
+        said_kinds.add("at coordinates")
     return [
         cue for cue, families, kinds in cues
         if (families & built) - said_families or (kinds & related) - said_kinds

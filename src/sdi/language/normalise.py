@@ -528,6 +528,21 @@ _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps
 
 # Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
 _SHORTHAND = [
+    # a fitter's "mil" is a millimetre; "50 mil of daylight between them" the clear gap
+    (
+        re.compile(
+            r"(?:(?<=\d)\s*|(?<=\d\s))mils?\b(?!\s+(?:cubes?|blocks?|bricks?|parts?)\b)", re.I
+        ),
+        " mm",
+    ),
+    (
+        re.compile(
+            r"\b(\d+(?:\.\d+)?\s*(?:mm|cm|m)?)\s+(?:of\s+)?(?:clear\s+)?daylight"
+            r"(?:\s+between(?:\s+(?:them|each|the\s+\w+))?)?",
+            re.I,
+        ),
+        r"\1 apart",
+    ),
     (
         re.compile(r"(?<=\d)\s*(?:ht|hgt|hght|hgh|hi|h)\b(?!\s*x)|\b(?:ht|hgt|hght|hgh)\b", re.I),
         " high",
@@ -948,6 +963,67 @@ def _aside(text: str, notes: list[str]) -> str:
     return rest
 
 
+_BARE_SIZE = re.compile(
+    r"(?<![\w.,=#@:/-])(?P<n>\d{2,4})(?![\w.,]\d)(?!\s*(?:mm|cm|m\b|millimet|centimet|met|inch|in\b"
+    r"|ft\b|feet|cubes?|blocks?|bricks?|parts?|pieces?|pcs|%|:|th\b|st\b|nd\b|rd\b|am\b|pm\b|"
+    r"o'?clock|minutes?|mins?|hours?|seconds?|degrees?|deg\b|people|visitors|kids|children))"
+    r"(?=\s*(?:long|high|tall|wide|deep|thick|square|across|apart|by\b|x\b|×|in\s+from|"
+    r"out\s+from|off\s+the|centre|center|,?\s*(?:one|1)\s+course))",
+    re.IGNORECASE,
+)
+_BARE_OF = re.compile(
+    r"(?P<said>\b(?:tower|column|stack|wall|row|pillar|post|leg)s?\s+(?:of|o')\s+)(?P<n>\d{2,4})\b"
+    r"(?!\s*(?:mm|cm|m\b|cubes?|blocks?|parts?))",
+    re.IGNORECASE,
+)
+_BEAM_150 = re.compile(r"\b150\s*(?:mm\s+|mil\s+)?(?=beams?\b)", re.IGNORECASE)
+_BARE_PAIR = re.compile(
+    r"(?<![\w.,=#@:/-])(\d{2,4})\s*(by|x|×)\s*(\d{2,4})(?![\w.,]\d)(?!\s*(?:mm|cm|m\b|millimet|"
+    r"centimet|met|inch|in\b|ft\b|feet|cubes?|blocks?|bricks?|parts?|%))",
+    re.IGNORECASE,
+)
+_NOT_A_SIZE_BEFORE = re.compile(
+    r"\b(?:job|station|cycle|shift|wo|no|number|line|cell|bay|order|ticket|room|batch|sheet|"
+    r"exercise|entry|step|x|y|at|ref|part|sku|item)\s*[#:.]?\s*$",
+    re.IGNORECASE,
+)
+
+
+def _bare_millimetres(text: str, notes: list[str]) -> str:
+    """ "Wall, 350 long by 150 high", "a tower of 150", "Block, 100 by 100": a size of 50 or
+    more without a unit, a round number, is in millimetres — no structure of the cell is 50
+    parts along anything (a count of parts, a coordinate, a job number is left alone)."""
+
+    def mm(m: re.Match[str]) -> str:
+        n = int(m.group("n"))
+        if (
+            n < 50
+            or n % 10
+            or _NOT_A_SIZE_BEFORE.search(m.string[max(0, m.start() - 12) : m.start()])
+        ):
+            return m.group(0)
+        notes.append(f"read {n} without a unit as {n} mm")
+        return f"{m.groupdict().get('said') or ''}{n} mm"
+
+    def beam(m: re.Match[str]) -> str:
+        notes.append(f"read '{m.group(0).strip()} beam' as a beam (the cell's beams are 150 mm)")
+        return ""
+
+    text = _BEAM_150.sub(beam, text)
+
+    def pair(m: re.Match[str]) -> str:  # "Block, 100 by 100": both in millimetres
+        before = m.string[max(0, m.start() - 12) : m.start()]
+        if any(int(v) < 50 or int(v) % 10 for v in (m.group(1), m.group(3))) or (
+            _NOT_A_SIZE_BEFORE.search(before)
+        ):
+            return m.group(0)
+        notes.append(f"read {m.group(1)} and {m.group(3)} without a unit as millimetres")
+        return f"{m.group(1)} mm {m.group(2)} {m.group(3)} mm"
+
+    text = _BARE_PAIR.sub(pair, text)
+    return _BARE_OF.sub(mm, _BARE_SIZE.sub(mm, text))
+
+
 def normalise(command: str, notes: list[str] | None = None) -> str:
     """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
     notes = notes if notes is not None else []
@@ -1136,6 +1212,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _LETTER_LIST.sub(_letter_list, text)  # "h=2/h=4/h=6": one value each
     text = _LETTER_EQ.sub(_letter_eq, text)
     text = _expand_noted(_SHORTHAND, text, notes)
+    text = _bare_millimetres(text, notes)
     text = _N_ON_M.sub(_n_by_m, text)  # "a block two on two", "base three on three"
     for pattern, repl in _CLEAR:
         text = pattern.sub(repl, text)

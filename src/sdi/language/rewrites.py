@@ -180,6 +180,15 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
         " on the {opposite} ",
         "read '{0}' as on the {opposite}",
     ),
+    (  # "keep it off the front edge", "keep it clear of the left side": at the other side
+        re.compile(
+            r"\b(?:keep|stay|put|place|set)\s+(?:it|them|everything|the\s+\w+)\s+(?:well\s+)?(?:off|"
+            r"away\s+from|clear\s+of)\s+the\s+(left|right|front|back)(?:\s+(?:edge|side|half|end))?\b",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
     (  # "keep everything in the left half": every structure there
         re.compile(
             r"\b(?:keep|put|place|build)\s+(?:everything|it\s+all|all\s+of\s+it|them\s+all|all\s+of\s+them|"
