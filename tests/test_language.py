@@ -3564,3 +3564,25 @@ def test_keep_it_off_an_edge_and_a_coordinate_said_with_not():
     (s,) = read("Block 150 by 150, 100 high, and keep it off the front edge.").spec.structures
     assert s.region == "back"
     assert plan("Column 200 tall, do not place it forward of X500.").status == "partial"
+
+
+@pytest.mark.parametrize(
+    "command",
+    ["Build a wall, six long, two high. Scratch that - a row of six instead.",
+     "Build a wall, six long, two high. Scratch that, make it a row of six.",
+     "Build a wall, six long, two high. Och, scrap that, a row of six instead."],
+)  # fmt: skip
+def test_scratch_that_with_the_new_structure_in_the_same_sentence_takes_the_old_one_back(command):
+    # the wall was built as well, silently
+    r = plan(command)
+    assert r.status == "success" and [(s.shape, s.length) for s in r.spec.structures] == [
+        ("row", 6)
+    ], r.notes
+
+
+def test_max_parts_and_one_more_on_top():
+    (s,) = read("a tower, max 6 cubes").spec.structures
+    assert s.height == 6
+    r = read("3x3 slab center. Then 2x2 on top. Then 1 on top of that")
+    assert [x.shape for x in r.spec.structures] == ["grid", "grid", "tower"]
+    assert len(r.spec.relations) == 2 and r.complete

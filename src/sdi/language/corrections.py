@@ -140,10 +140,12 @@ def _another_structure(before: str, after: str, notes: list[str]) -> str | None:
     if _ADDED.search(after):
         return None  # "…, actually a pyramid too": one more, not a correction
     cuts = [m.end() for m in _CLAUSE_CUT.finditer(before.rstrip(" ,;:—–-"))]
-    start = cuts[-1] if cuts else 0
-    taken_back = before[start:].strip(" ,;:—–-")
-    taken_back = re.sub(r"\s+(?:but|and|or)$", "", taken_back, flags=re.I)  # "… earlier but"
-    if not _names_structure(taken_back):
+    for start in [*reversed(cuts), 0][:3]:  # "Build a wall, six long, two high.": all of it
+        taken_back = before[start:].strip(" ,;:—–-")
+        taken_back = re.sub(r"\s+(?:but|and|or)$", "", taken_back, flags=re.I)  # "… earlier but"
+        if _names_structure(taken_back):
+            break
+    else:
         return None
     new = re.sub(r"\s*\binstead\b", "", _MAKE_IT.sub("", after.strip()), flags=re.I).strip()
     lead = re.search(r"(?:^|[:;,—–-]\s*)((?:an?|one)\s.*)$", new, re.IGNORECASE | re.DOTALL)

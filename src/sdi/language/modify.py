@@ -197,7 +197,8 @@ MODIFY = [
     _op(
         r"\b(?:undo|scratch|cancel|forget|scrap|take\s+back|delete|remove|get\s+rid\s+of)\s+"
         r"(?:the\s+)?(?:last|latest|previous)\s+(?:one|step|thing|bit|structure|addition|"
-        r"command|change|instruction)\b|\b(?:undo|scratch|cancel|take\s+back)\s+(?:that|it|this)"
+        r"command|change|instruction)\b|\b(?:undo|scratch|scrap|bin|ditch|cancel|take\s+back)\s+"
+        r"(?:that|it|this)"
         r"\b|^\W*(?:and\s+)?undo\W*$",
         "undo",
     ),

@@ -306,6 +306,19 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(?:in\s+(?:that|this|the\s+same|the\s+given|the\s+listed)\s+order)\s*,?\s*"
                 r"(?=(?:going\s+|running\s+)?(?:from\s+)?(?:the\s+)?(?:left|right|front|back)\s+to\b)",
                 re.I), ""),
+    # "Och, scrap that", "Oh, scratch that": the interjection does not hide the take-back
+    (re.compile(r"\b(?:och|oh|ah|aw|ach|argh|ugh|hmm|um|er|right|ok|okay|naw|no)\s*[,!.-]?\s*"
+                r"(?=(?:scrap|scratch|forget|cancel|strike|bin)\s+(?:that|it|this)\b)", re.I), ""),
+    # "Scratch that - a row of six instead", "scrap that, make it a row": the take-back is a
+    # clause of its own, so that it takes the step before back
+    (re.compile(r"\b(scratch|scrap|cancel|bin|ditch)\s+(that|it|this)\s*(?:[-,:;—–]+|\s-\s)\s*"
+                r"(?=(?:an?|one)\s)", re.I), r"\1 \2. "),
+    # "Then 1 on top of that": one cube on top
+    (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
+     r"\1 a cube "),
+    # "max 6 cubes", "maximum of 6": the most allowed
+    (re.compile(r"\b(?:max|maximum|max\.)\s*(?:of\s+)?(?=\d+\s*(?:cubes?|blocks?|parts?|pieces?|bricks?)\b)",
+                re.I), "no more than "),
     # a contract's pronominal adverbs: "upon the centre thereof" is on the centre of it
     (re.compile(r"\bthereof\b", re.I), "of it"),
     (re.compile(r"\b(?:thereon|thereupon|thereonto)\b", re.I), "on it"),
