@@ -3586,3 +3586,33 @@ def test_max_parts_and_one_more_on_top():
     r = read("3x3 slab center. Then 2x2 on top. Then 1 on top of that")
     assert [x.shape for x in r.spec.structures] == ["grid", "grid", "tower"]
     assert len(r.spec.relations) == 2 and r.complete
+
+
+@pytest.mark.parametrize(
+    ("command", "shape"),
+    [("Towel of 5 cubes front right", "tower"), ("a slav 3 by 3", "grid")],
+)
+def test_a_real_word_one_letter_off_where_a_structure_is_named_and_sized(command, shape):
+    r = read(command)
+    assert [s.shape for s in r.spec.structures] == [shape] and any(
+        "corrected" in n for n in r.notes
+    )
+
+
+def test_an_autocorrected_beam_and_a_structure_named_beside_an_everyday_word():
+    (b,) = read("Bridge w/ legs of 2 and a bean across").spec.structures
+    assert b.shape == "bridge"
+    # a towel beside a tower named is not corrected: the command names its structure
+    assert plan("a towel of 3 next to a tower").status != "success"
+
+
+def test_a_list_of_heights_with_its_dimension_word_after_it():
+    r = read("towers of 2, 3 and 4 high")
+    assert [s.height for s in r.spec.structures] == [2, 3, 4] and r.complete
+
+
+def test_a_slab_said_with_its_cubes_and_rows_in_commas_and_a_pyramid_base_in_centimetres():
+    (s,) = read("Slab, 12 cubes, 3 rows of 4").spec.structures
+    assert sorted((s.length, s.width)) == [3, 4]
+    (p,) = read("Pyramid w/ a 15cm base").spec.structures
+    assert (p.shape, p.length, p.dims) == ("pyramid", 3, 3)

@@ -337,9 +337,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      else m.group(0)),
     # "a slab comprising twelve cubes arranged in three rows of four": the slab's own rows
     (re.compile(r"\b((?:slab|grid|block|platform|layer|pad|floor|plate|deck|patch|mat)s?\b[^.;]{0,30}?)"
-                r"\s*,?\s*\b(?:comprising|consisting\s+of|made\s+(?:up\s+)?of|of|with)\s+(\w+)\s+"
+                r"\s*,?\s*\b(?:(?:comprising|consisting\s+of|made\s+(?:up\s+)?of|of|with)\s+)?(\w+)\s+"
                 r"(?:cubes?|blocks?|parts?|pieces?)\s*,?\s*(?:arranged\s+|laid\s+(?:out\s+)?|set\s+"
-                r"(?:out\s+)?|placed\s+)?(?:in|as)\s+(\w+)\s+rows\s+of\s+(\w+)(?:\s+(?:cubes?|each))?",
+                r"(?:out\s+)?|placed\s+)?(?:(?:in|as)\s+)?(\w+)\s+rows\s+of\s+(\w+)(?:\s+(?:cubes?|each))?",
                 re.I),
      lambda m: f"{m.group(1)} {m.group(4)} by {m.group(3)}" if _product(m) else m.group(0)),
     # "one per corner of a slab", "one at each end of the wall": one on (at) each of them
@@ -1034,6 +1034,7 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
         return f"{m.group(1)} mm {m.group(2)} {m.group(3)} mm"
 
     text = _BARE_PAIR.sub(pair, text)
+
     return _BARE_OF.sub(mm, _BARE_SIZE.sub(mm, text))
 
 

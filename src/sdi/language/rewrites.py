@@ -1460,6 +1460,14 @@ _REWRITES += [
         "{pyramid_base}",
         "",
     ),
+    (  # "a pyramid with a 15cm base": a square base that wide (of a pyramid only)
+        re.compile(
+            r"(?<=\bpyramid\s)(?:with|w/)\s+an?\s+(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:square\s+)?base\b",
+            re.IGNORECASE,
+        ),
+        " with a {0} by {0} base ",
+        "read '{0}' as a square base",
+    ),
     (  # "a 35 cm base side", "base sides of 4": a square base
         re.compile(
             r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m)|\d+(?:[- ]cubes?)?)\s+(?:square\s+)?base\s+sides?\b"

@@ -190,6 +190,28 @@ def abbreviated(word: str) -> str | None:
     return top[0]
 
 
+_SIZED_AFTER = re.compile(
+    r"\s+(?:(?:of|if|o'?)\s+)?(?:\d|one\b|two\b|three\b|four\b|five\b|six\b)", re.IGNORECASE
+)
+_ACROSS_AFTER = re.compile(r"\s+(?:across|over|on\s+top)\b", re.IGNORECASE)
+
+
+def _structure_slot(w: str, m: re.Match[str]) -> str | None:
+    """The structure word an English word stands for where a structure is named and sized, one
+    letter off, in a command that names no structure ("Towel of 5 cubes", "a slav 3 by 3"), or
+    the beam laid across ("and a bean across"); None elsewhere."""
+    after = m.string[m.end() :]
+    before = m.string[: m.start()]
+    if _ACROSS_AFTER.match(after) and DamerauLevenshtein.distance(w, "beam") == 1:
+        return "beam"
+    if len(w) < 4 or not _SIZED_AFTER.match(after) or _names_a_structure(m):
+        return None
+    if not re.search(r"(?:^|[.:;!?]|\b(?:an?|the|one)\s)\s*$", before, re.IGNORECASE):
+        return None
+    hits = sorted({c for c in _WHOLE if DamerauLevenshtein.distance(w, c) == 1})
+    return hits[0] if len(hits) == 1 else None
+
+
 def _names_a_structure(m: re.Match[str]) -> bool:
     """The text around `m` names a structure in a word of its own, or one a near typo is —
     not a support or a level of one ("a brij with legs of 3" names only the bridge)."""
@@ -248,8 +270,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
         else:
             choices_here = _CHOICES
         if _vocab_has(w) and not _misspelt(w) and (not aggressive or len(w) > 3):
-            slot = _slot_word(w, m)
-            if slot:  # "4 cubs": the only word that fits where it stands
+            slot = _slot_word(w, m) or _structure_slot(w, m)
+            if slot:  # "4 cubs", "Towel of 5 cubes": the only word that fits where it stands
                 notes.append(f"corrected '{raw}' to '{slot}'")
                 return slot
             return raw  # an English word ("walk", "tour") is not a typo, even for a last try

@@ -1136,8 +1136,14 @@ class _Parser:
                 h.params["_each"] = [round(t[m].value) for m in run]
                 for m in range(k, j):
                     t[m].used = True
-                if self.word(j) in lx.PART_WORDS:
-                    t[j].used = True
+                after = j
+                if self.word(after) in lx.PART_WORDS:
+                    t[after].used = True
+                    after += 1
+                main = {"tower": ("high", "tall"), "row": ("long",), "staircase": ("steps",)}
+                listed = any(self.word(m + 1) in ("and", "or") for m in run[:-1])
+                if listed and self.word(after) in main.get(h.shape, ()):  # "of 2, 3 and 4 high"
+                    t[after].used = True
             k = j
 
     def _apply_dims(self, h: Hit, values: list[int]) -> None:
