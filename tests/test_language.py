@@ -3616,3 +3616,26 @@ def test_a_slab_said_with_its_cubes_and_rows_in_commas_and_a_pyramid_base_in_cen
     assert sorted((s.length, s.width)) == [3, 4]
     (p,) = read("Pyramid w/ a 15cm base").spec.structures
     assert (p.shape, p.length, p.dims) == ("pyramid", 3, 3)
+
+
+@pytest.mark.parametrize(("command", "word"), [("Tower of", "of"), ("a row of 5 and", "and")])
+def test_a_command_that_stops_mid_phrase_is_not_a_silent_success(command, word):
+    r = plan(command)
+    assert r.status == "partial" and f"the command stops after '{word}'" in " ".join(r.notes)
+
+
+def test_changes_said_of_the_structure_by_its_name_and_in_other_verbs():
+    (row,) = read("a row of three cubes. Then please extend the row by two cubes at the same "
+                  "end, so that it becomes five cubes long.").spec.structures  # fmt: skip
+    assert row.length == 5
+    (st,) = read("Staircase, four steps, 50 mil rise each. Then lose the top step.").spec.structures
+    assert (st.shape, st.steps, st.height_m) == ("staircase", 3, None)
+    assert plan("a staircase of 3 steps, 100 mm rise each").status == "partial"  # not one part
+
+
+def test_scots_on_the_shop_floor():
+    r = read("Gie us three towers o' two in a row, a cube apart.")
+    assert [s.height for s in r.spec.structures] == [2, 2, 2] and r.complete
+    (ring, tower) = read("Gie us a wee ring, five by five, one high, wi' a tower o' two stood in "
+                         "the middle of it.").spec.structures  # fmt: skip
+    assert (ring.shape, tower.height) == ("enclosure", 2)

@@ -57,7 +57,12 @@ MODIFY = [
         r"(?:taller|higher)\b",
         "+",
     ),
-    _op(r"\b(?:raise|extend|grow)\s+(?:it|them)\s+by\s+" + _N + _UNIT, "+"),
+    _op(
+        r"\b(?:raise|extend|grow|lengthen)\s+(?:it|them|the\s+(?:row|wall|tower|stack|column))\s+by\s+"
+        + _N
+        + _UNIT,
+        "+",
+    ),
     _op(
         r"\b(?:keep\s+adding|add)\s+(?:steps|levels|layers|cubes)\s+until\s+(?:it|there)\s+"
         r"(?:has|is|are)\s+" + _N,

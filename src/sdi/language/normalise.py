@@ -313,6 +313,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # clause of its own, so that it takes the step before back
     (re.compile(r"\b(scratch|scrap|cancel|bin|ditch)\s+(that|it|this)\s*(?:[-,:;—–]+|\s-\s)\s*"
                 r"(?=(?:an?|one)\s)", re.I), r"\1 \2. "),
+    # "lose the top step", "knock off the top level": take it away
+    (re.compile(r"\b(?:lose|ditch|drop|knock\s+off|take\s+off|get\s+rid\s+of)\s+(?=the\s+(?:top|last|highest|"
+                r"upper)\s+(?:step|level|layer|tier|cube|course|row)\b)", re.I), "remove "),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
@@ -541,6 +544,18 @@ _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps
 
 # Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
 _SHORTHAND = [
+    # Scots on the shop floor: "a tower o' five", "wi' a gap", "tae the right", "twa high"
+    (re.compile(r"\bo['’](?=\s)(?!\s*clock)", re.I), "of"),
+    (re.compile(r"\bwi['’](?=\s)", re.I), "with"),
+    (re.compile(r"\btae\b", re.I), "to"),
+    (re.compile(r"\btwa\b", re.I), "two"),
+    (re.compile(r"\bgie\b", re.I), "give"),
+    (re.compile(r"\baff\b", re.I), "off"),
+    (re.compile(r"\b(?:nae|naw)\b", re.I), "no"),
+    (re.compile(r"\byin\b", re.I), "one"),
+    (re.compile(r"\bwee\b", re.I), "little"),
+    (re.compile(r"\baboot\b", re.I), "about"),
+    (re.compile(r"\bdoon\b", re.I), "down"),
     # a fitter's "mil" is a millimetre; "50 mil of daylight between them" the clear gap
     (
         re.compile(

@@ -84,6 +84,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = normalise(text, st.notes)
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes)
+    text = _step_rise(text, st)
     text = spacing.take_centres(text, st)
     text = spacing.take_span(text, st)
     text = spacing.take_gap(text, st)
@@ -196,6 +197,10 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
     spec = spacing.pitches(spacing.apply_gap(spec, st), st)
+    cut = _CUT_OFF.search(command)
+    if cut:  # "Tower of": the command stops mid-phrase, its size unsaid
+        st.material.append(cut.group(1))
+        st.notes.append(f"the command stops after '{cut.group(1)}': what follows it is missing")
     said_words = re.findall(r"[A-Za-z]{2,}", text)
     unknown = list(dict.fromkeys(w for w in said_words if not typos.known_word(w)))
     if len(unknown) >= 3 and len(unknown) >= 0.25 * len(said_words):
@@ -505,6 +510,32 @@ _SPANNED = re.compile(r"\b(?:beams?|lintels?|spans?|symmetr\w*|either\s+side|bot
 _THINGS = re.compile(
     r"\b(two|three|four|five|[2-5])\s+(?:different\s+|separate\s+|small\s+|little\s+)?"
     r"(?:things|structures|items|objects|shapes|builds|models)\b|\bquantity\s+(two|three|four|five|[2-5])\b",
+    re.IGNORECASE,
+)
+_RISE = re.compile(
+    r",?\s*\b(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:rise|risers?|step\s+height)(?:\s+(?:each|per\s+step))?\b",
+    re.IGNORECASE,
+)
+
+
+def _step_rise(text: str, st: ReadState) -> str:
+    """ "a staircase, four steps, 50 mm rise each": every step rises one part — said, and
+    kept only when the rise is the part's height (a step is one part high)."""
+    m = _RISE.search(text)
+    if m is None or not re.search(r"\b(?:stair|staircase|steps?)\b", text, re.IGNORECASE):
+        return text
+    metres = float(m.group(1)) * (0.001 if m.group(2).lower() == "mm" else 0.01)
+    said = m.group(0).strip(" ,")
+    if abs(metres - st.cell.cube[2]) > 1e-6:  # "100 mm rise each": SDI's steps are one part
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': each step rises one part ({st.cell.cube[2]:g} m)")
+    else:
+        st.notes.append(f"read '{said}' as each step one part high")
+    return text[: m.start()] + text[m.end() :]
+
+
+_CUT_OFF = re.compile(
+    r"\b(of|with|and|by|at|from|the|an?|than|into|onto)\s*[,;:-]*\s*$",
     re.IGNORECASE,
 )
 _PLACED_IT = re.compile(

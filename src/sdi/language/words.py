@@ -54,7 +54,7 @@ HARMLESS = _words(
     construct constructing assemble assembling erect put putting place placing set setting
     produce generate give get do does done doing up out down together using use used from
     made consisting composed comprising built arranged arrange lay laying laid position
-    positioned located standing stand stands sitting sit resting rest is are be been being
+    positioned located standing stand stands stood sitting sit sat resting rest is are be been being
     was were am it its it's there here then also so and or but if for with of in on at by as
     into onto to about approximately roughly nearly almost only exactly overall total
     altogether area zone region workspace cell spot location table demo demonstration test
