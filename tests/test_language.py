@@ -3639,3 +3639,18 @@ def test_scots_on_the_shop_floor():
     (ring, tower) = read("Gie us a wee ring, five by five, one high, wi' a tower o' two stood in "
                          "the middle of it.").spec.structures  # fmt: skip
     assert (ring.shape, tower.height) == ("enclosure", 2)
+
+
+@pytest.mark.parametrize(
+    ("command", "sizes"),
+    [("a wall 0.1m high", {"height_m": 0.1}),
+     ("Wall 0.3m long x 0.1m high", {"length_m": 0.3, "height_m": 0.1}),
+     ("wall 300 mm long x 150 mm high", {"length_m": 0.3, "height_m": 0.15})],
+)  # fmt: skip
+def test_a_metric_size_glued_to_its_unit_and_an_x_between_two_sizes(command, sizes):
+    # "0.1m" was read back as a scanner's "0.im" (an error), "x 0.1m" as a coordinate
+    r = plan(command)
+    (s,) = r.spec.structures
+    assert r.status == "success" and all(
+        getattr(s, k) == pytest.approx(v) for k, v in sizes.items()
+    )

@@ -316,6 +316,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "lose the top step", "knock off the top level": take it away
     (re.compile(r"\b(?:lose|ditch|drop|knock\s+off|take\s+off|get\s+rid\s+of)\s+(?=the\s+(?:top|last|highest|"
                 r"upper)\s+(?:step|level|layer|tier|cube|course|row)\b)", re.I), "remove "),
+    # "Wall 0.3m long x 0.1m high": the x between two sizes is "and", not a coordinate
+    (re.compile(r"\b(long|high|tall|wide|deep|thick)\s+[x×]\s+(?=\d)", re.I), r"\1 and "),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),

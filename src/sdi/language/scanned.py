@@ -22,6 +22,7 @@ _LABEL = re.compile(r"[A-Za-z][0-9]")
 _SIZE = re.compile(r"[0-9lI]+[xX][0-9lI]+")
 _TOKEN = re.compile(r"[A-Za-z0-9|]+")
 _NUMBERISH = re.compile(r"[0-9lIoO|]+")
+_MEASURE = re.compile(r"\d+(?:mm|cm|m|in|ft|x|s|st|nd|rd|th|h|H|L|W)", re.IGNORECASE)
 
 
 _CONTRACTED = frozenset({"dont", "doesnt", "didnt", "cant", "wont", "isnt", "arent", "shouldnt",
@@ -55,6 +56,8 @@ def _word(token: str, after: str = "") -> str | None:
     knows ("rnig" is a typo of ring, not "mig")."""
     if _known(token) or token.isdigit() or not _CONFUSABLE.search(token):
         return None
+    if _MEASURE.fullmatch(token):
+        return None  # "0.1m", "25cm", "6in": a number with its unit, as written
     if _LABEL.fullmatch(token) and re.match(r" [A-Za-z]", after):
         short = [r for r in _readings(token) if r.lower() in _SHORT]
         return short[0] if short else None  # "N0 tower": no; "t0: row", "A1": labels
