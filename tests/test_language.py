@@ -3654,3 +3654,19 @@ def test_a_metric_size_glued_to_its_unit_and_an_x_between_two_sizes(command, siz
     assert r.status == "success" and all(
         getattr(s, k) == pytest.approx(v) for k, v in sizes.items()
     )
+
+
+@pytest.mark.parametrize(
+    ("command", "shapes"),
+    [("Two towers of 3. Then put a beam across the tops.", ["bridge"]),
+     ("Lay a 3 by 2 slab, one course. Then put a second course on it, same size.", ["block"]),
+     ("Shift B, station 4, cycle 118. Block 2x2, 2 high", ["block"]),
+     ("On the right-hand side, by the end of the day if you can, a pyramid of three.", ["pyramid"]),
+     ("Hi, job 2207 on the screen says: tower of 3. Thx", ["tower"]),
+     ("a wall 5 long, square to the front edge", ["wall"]),
+     ("Something tall-ish for the lobby photo, as long as it doesn't fall over.", ["tower"])],
+)  # fmt: skip
+def test_shop_floor_phrases_that_are_no_structure_or_a_change_of_one(command, shapes):
+    # each built a second structure, left a word unused, or read 'as long as' as a row's length
+    r = plan(command)
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == shapes, r.notes

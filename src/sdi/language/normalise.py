@@ -49,7 +49,8 @@ _DECIMAL_COMMA_UNIT = re.compile(
 _REFERENCE_NO = re.compile(
     r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell|booth|"
     r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|"
-    r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|"
+    r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
+    r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
     r"exercise|lesson|experiment|sample|bench|rig|line\s+no)\s*"
     r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
     r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
@@ -318,6 +319,34 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"upper)\s+(?:step|level|layer|tier|cube|course|row)\b)", re.I), "remove "),
     # "Wall 0.3m long x 0.1m high": the x between two sizes is "and", not a coordinate
     (re.compile(r"\b(long|high|tall|wide|deep|thick)\s+[x×]\s+(?=\d)", re.I), r"\1 and "),
+    # "Two towers of 3. Then put a beam across the tops.": the towers carry the beam
+    (re.compile(r"[.;]\s*(?:and\s+)?(?:then|next|after\s+that|finally),?\s+"
+                r"(?=(?:put|lay|run|place|set|add|stick)\s+(?:a|the|one)\s+(?:\w+\s+)?beam\s+"
+                r"(?:across|over|on))", re.I), ", then "),
+    (re.compile(r"(?<=beam)\s+(?:across|over)\s+(?:the\s+)?tops(?:\s+of\s+them)?\b", re.I),
+     " across them"),
+    # "put a second course on it": a layer more
+    (re.compile(r"\b(?:put|lay|place|stack|add)\s+(?:a|one|another)\s+(second|third|further|new|"
+                r"extra|more)?\s*(?:course|layer|level|tier)\s+(?:on\s+top\s+of\s+it|on\s+it|"
+                r"on\s+top)\b", re.I),
+     r"add a \1 layer"),
+    # "by the end of the day", "this afternoon": when, not what
+    (re.compile(r",?\s*\b(?:by\s+(?:the\s+)?end\s+of\s+(?:the\s+)?(?:day|shift|week)|"
+                r"(?:by|before|after)\s+(?:lunch|break|tonight|tomorrow)|"
+                r"this\s+(?:morning|afternoon|evening))\b", re.I), " "),
+    # "as long as it doesn't fall over": provided that (no length in it)
+    (re.compile(r"\bas\s+long\s+as\s+(?=(?:it|they|there|nothing|it's)\s+(?:does|do|is|are|stays?|stands?|won't|doesn't|isn't|"
+                r"can|will|holds?|fits?)\b)",
+                re.I), "provided that "),
+    # "tall-ish", "smallish": the size word itself
+    (re.compile(r"\b(tall|high|long|wide|low|short|big|small|flat)-?ish\b", re.I), r"\1"),
+    # "job 2207 on the screen says:", "on the HMI": where the job was read, not a structure
+    (re.compile(r"\b(?:on|from)\s+(?:the|my|our|this)\s+(?:screen|display|hmi|monitor|tablet)"
+                r"(?:\s+(?:says|shows|reads))?\b|\b(?:the\s+)?(?:screen|display|hmi)\s+(?:says|shows|reads)\b",
+                re.I), " "),
+    # "a wall 5 long, square to the front edge": set square, as SDI sets every structure
+    (re.compile(r",?\s*\b(?:set\s+)?square\s+(?:to|with)\s+the\s+(?:front|back|left|right|table)"
+                r"(?:\s+(?:edge|side))?\b", re.I), " "),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
