@@ -3670,3 +3670,16 @@ def test_shop_floor_phrases_that_are_no_structure_or_a_change_of_one(command, sh
     # each built a second structure, left a word unused, or read 'as long as' as a row's length
     r = plan(command)
     assert r.status == "success" and [s.shape for s in r.spec.structures] == shapes, r.notes
+
+
+def test_an_ordinal_step_word_begins_a_step_and_is_never_lost():
+    # "Secondly, remove the top cube." vanished with no note (a silent success)
+    r = plan("a pyramid of 3 levels. Secondly, remove the top cube.")
+    assert r.status == "partial" and any("remove the top cube" in n for n in r.notes)
+
+
+def test_a_time_and_a_size_word_of_a_person_are_no_sizes_of_the_structure():
+    r = read("So - the big boss is coming round at three and she loves a good staircase. "
+             "Four steps, climbing towards the back, if you can.")  # fmt: skip
+    (s,) = r.spec.structures  # two staircases were built: one 5 steps 3 wide ("big", "three")
+    assert (s.shape, s.steps, s.width) == ("staircase", 4, None)

@@ -12,10 +12,12 @@ if TYPE_CHECKING:
 
 
 # Sequence words that start a new clause.
-_SEQUENCE = {"then", "afterwards", "finally", "lastly", "next", "after"}
+_SEQUENCE = {"then", "afterwards", "finally", "lastly", "next", "after", "secondly", "thirdly",
+             "fourthly"}  # fmt: skip
 
 
-_LEADS = {"first", "firstly", "and", ",", "after", "that", "then", "next", "finally", "also"}
+_LEADS = {"first", "firstly", "and", ",", "after", "that", "then", "next", "finally", "also",
+          "please"}  # fmt: skip
 
 
 def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:

@@ -338,6 +338,17 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bas\s+long\s+as\s+(?=(?:it|they|there|nothing|it's)\s+(?:does|do|is|are|stays?|stands?|won't|doesn't|isn't|"
                 r"can|will|holds?|fits?)\b)",
                 re.I), "provided that "),
+    # "the boss is coming round at three": a time, not a size
+    (re.compile(r"\b((?:com(?:e|es|ing)|arriv(?:e|es|ing)|back|round|over|here|start(?:s|ing)?|"
+                r"meeting|visit(?:s|ing)?|due|lunch|break|finish(?:es|ing)?|leav(?:e|es|ing))\s+)"
+                r"at\s+(?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|\d{1,2})\b"
+                r"(?!\s*(?:cubes?|blocks?|high|tall|long|wide|levels?|steps?|mm|cm|m\b|x\b|by\b|[.,]\d))",
+                re.I), r"\1"),
+    # "the big boss", "a big day", "a little while": a size word of a person or a time
+    (re.compile(r"\b(?:big|large|little|small|tall|huge|tiny|short)\s+(?=(?:boss|bosses|day|deal|guy|"
+                r"girl|boy|man|woman|kid|kids|brother|sister|crowd|fan|thanks|question|favou?r|"
+                r"problem|news|moment|event|show|hurry|rush|while|bit\s+of\s+(?:time|a\s+rush)|"
+                r"meeting|visit|customer|client|audience)\b)", re.I), ""),
     # "tall-ish", "smallish": the size word itself
     (re.compile(r"\b(tall|high|long|wide|low|short|big|small|flat)-?ish\b", re.I), r"\1"),
     # "job 2207 on the screen says:", "on the HMI": where the job was read, not a structure
