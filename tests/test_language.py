@@ -3683,3 +3683,15 @@ def test_a_time_and_a_size_word_of_a_person_are_no_sizes_of_the_structure():
              "Four steps, climbing towards the back, if you can.")  # fmt: skip
     (s,) = r.spec.structures  # two staircases were built: one 5 steps 3 wide ("big", "three")
     assert (s.shape, s.steps, s.width) == ("staircase", 4, None)
+
+
+@pytest.mark.parametrize(
+    ("command", "length_m", "height"),
+    [("a wall 15 cm high and 25 long", 0.25, {"height_m": 0.15}),
+     ("a wall 25 cm long and 10 high", 0.25, {"height_m": 0.1}),
+     ("a wall 25 cm long and 2 high", 0.25, {"height": 2})],  # 2 cm is less than a part
+)  # fmt: skip
+def test_a_bare_size_after_one_in_centimetres_is_in_centimetres(command, length_m, height):
+    (s,) = read(command).spec.structures
+    assert s.length_m == pytest.approx(length_m)
+    assert all(getattr(s, k) == pytest.approx(v) for k, v in height.items())

@@ -1052,6 +1052,11 @@ _BARE_PAIR = re.compile(
     r"centimet|met|inch|in\b|ft\b|feet|cubes?|blocks?|bricks?|parts?|%))",
     re.IGNORECASE,
 )
+_SAME_UNIT = re.compile(
+    r"(?P<said>\b\d+(?:\.\d+)?\s*(?:cm|centimet(?:er|re)s?)\s+(?:long|high|tall|wide|deep)\s*"
+    r"(?:,|and|,\s*and|by|x)\s*)(?P<v>\d+)\s+(?P<dim>long|high|tall|wide|deep)\b",
+    re.IGNORECASE,
+)
 _NOT_A_SIZE_BEFORE = re.compile(
     r"\b(?:job|station|cycle|shift|wo|no|number|line|cell|bay|order|ticket|room|batch|sheet|"
     r"exercise|entry|step|x|y|at|ref|part|sku|item)\s*[#:.]?\s*$",
@@ -1091,6 +1096,15 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
         return f"{m.group(1)} mm {m.group(2)} {m.group(3)} mm"
 
     text = _BARE_PAIR.sub(pair, text)
+
+    def same_unit(m: re.Match[str]) -> str:  # "15 cm high and 25 long": 25 cm too
+        v = float(m.group("v"))
+        if v < 10 or v % 5:
+            return m.group(0)
+        notes.append(f"read {m.group('v')} as {m.group('v')} cm, the unit said before it")
+        return f"{m.group('said')}{m.group('v')} cm {m.group('dim')}"
+
+    text = _SAME_UNIT.sub(same_unit, text)
 
     return _BARE_OF.sub(mm, _BARE_SIZE.sub(mm, text))
 
