@@ -3695,3 +3695,15 @@ def test_a_bare_size_after_one_in_centimetres_is_in_centimetres(command, length_
     (s,) = read(command).spec.structures
     assert s.length_m == pytest.approx(length_m)
     assert all(getattr(s, k) == pytest.approx(v) for k, v in height.items())
+
+
+@pytest.mark.parametrize(
+    ("command", "shape", "region"),
+    [("Build a flat 5 wide and 3 high across the back. Then strike it and put a 4-high tower "
+      "there instead.", "tower", "back"),
+     ("a tower of 3 at the back left. Undo that and put a wall of 4 there.", "wall", "back left")],
+)  # fmt: skip
+def test_there_after_a_take_back_is_where_the_structure_taken_back_stood(command, shape, region):
+    r = plan(command)
+    (s,) = r.spec.structures  # the old one was kept, or the new one stood mid-table, silently
+    assert r.status == "success" and (s.shape, s.region) == (shape, region), r.notes

@@ -358,6 +358,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a wall 5 long, square to the front edge": set square, as SDI sets every structure
     (re.compile(r",?\s*\b(?:set\s+)?square\s+(?:to|with)\s+the\s+(?:front|back|left|right|table)"
                 r"(?:\s+(?:edge|side))?\b", re.I), " "),
+    # "Undo that and put a wall there": the take-back, then the new step
+    (re.compile(r"\b(undo|scratch|scrap|cancel|bin|ditch)\s+(that|it|this)\s+and\s+(?:then\s+)?"
+                r"(?=(?:put|place|build|make|set|add|stack|lay|do)\b)", re.I), r"\1 \2. then "),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
@@ -1109,6 +1112,32 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
     return _BARE_OF.sub(mm, _BARE_SIZE.sub(mm, text))
 
 
+_TAKEN_BACK_THERE = re.compile(
+    r"\b(?:strike|undo|scratch|scrap|remove|cancel|take\s+(?:it|that)\s+(?:away|down))\b"
+    r"(?:\s+(?:it|that|this))?(?P<mid>[^.;]{0,60}?)\bthere\b",
+    re.IGNORECASE,
+)
+_PLACE_SAID = re.compile(
+    r"\b(?:at|on|in|across|along|to)\s+the\s+(?:far\s+)?(?:front|back|rear|left|right|middle|centre|"
+    r"center)(?:[\s-]+(?:left|right))?(?:\s+(?:edge|side|corner|half|end))?\b",
+    re.IGNORECASE,
+)
+
+
+def _there(text: str, notes: list[str]) -> str:
+    """ "a wall across the back. Then strike it and put a tower there instead": there is where
+    the structure taken back was said to stand."""
+    m = _TAKEN_BACK_THERE.search(text)
+    if m is None:
+        return text
+    places = list(_PLACE_SAID.finditer(text[: m.start()]))
+    if not places:
+        return text
+    place = places[-1].group(0)
+    notes.append(f"read 'there' as '{place}', where the structure taken back stood")
+    return text[: m.end() - len("there")] + place + text[m.end() :]
+
+
 def normalise(command: str, notes: list[str] | None = None) -> str:
     """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
     notes = notes if notes is not None else []
@@ -1125,6 +1154,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     text = _UNRELATED.sub(unrelated, text)
     text = _aside(text, notes)
+    text = _there(text, notes)
     text = _CALL.sub(lambda m: _call(m, notes), text)
 
     def labelled(m: re.Match[str]) -> str:
