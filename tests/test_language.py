@@ -3707,3 +3707,23 @@ def test_there_after_a_take_back_is_where_the_structure_taken_back_stood(command
     r = plan(command)
     (s,) = r.spec.structures  # the old one was kept, or the new one stood mid-table, silently
     assert r.status == "success" and (s.shape, s.region) == (shape, region), r.notes
+
+
+@pytest.mark.parametrize(
+    "command",
+    ["two towers 4 high, one on the left and one on the right",
+     "two towers, 4 high, one on the left and one on the right",
+     "two towers of 4 cubes, one on the left and one on the right",
+     "two towers of 4 cubes of height, one on the left and one on the right"],
+)  # fmt: skip
+def test_two_towers_one_on_each_side_are_two_towers(command):
+    # four were built (the cubes read as loose cubes, or 'one … one' as two more), silently
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert sorted((s.region, s.height) for s in r.spec.structures) == [("left", 4), ("right", 4)]
+
+
+def test_a_single_cube_said_beside_counted_towers_is_no_miscount():
+    # the count check reads the command as said: a single cube is a tower of one
+    r = plan("a single cube placed between two 4-cube towers")
+    assert r.status == "success" and len(r.spec.structures) == 3, r.notes

@@ -258,6 +258,7 @@ def _families_named(doc: Doc, tokens: set[int]) -> dict[str, str]:
     return named
 
 
+_ONE_PART = frozenset({"cube", "block", "brick", "cubes", "blocks", "bricks"})
 _NEGATIONS = frozenset({"not", "n't", "never", "no", "without", "nor", "neither", "nothing"})
 _SCOPE_ENDS = frozenset({",", ".", ";", ":", "!", "?", "-", "but", "and", "instead", "then", "so"})
 _NEGATED_RELATIONS: dict[str, str] = {
@@ -476,7 +477,13 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     more = bool(_MORE & set(re.findall(r"[a-z]+", st.command.lower())))
     for cue, family, count in _count_cues(doc):
         got = sum(s.shape == family for s in spec.structures)
-        named = sum(lx.SHAPE_WORDS.get(t.lower_) == family for t in doc)
+        # counted in the operator's words: the rewrites add structure words of their own
+        # ("one on the left and one on the right" became "another tower")
+        said = sum(
+            lx.SHAPE_WORDS.get(w) == family or (family == "tower" and w in _ONE_PART)
+            for w in re.findall(r"[a-z]+", st.command.lower())
+        )  # a single cube is a tower of one
+        named = said or sum(lx.SHAPE_WORDS.get(t.lower_) == family for t in doc)
         # more than counted: only when nothing else names one ("a column between two stacks")
         if f"left of the {count}" in noted:
             continue  # "5 towers, then take away the middle one": 4 left, as asked

@@ -2307,7 +2307,8 @@ _SAME_AGAIN = re.compile(
 )
 _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
-    r"((?:\s+(?:of|with)\s+[\w\s-]+?)?)\s*[:,]\s*(one\s+[^.;]*)",
+    r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
+    r"(?:high|tall|long|wide))?)\s*[:,]\s*(one\s+[^.;]*)",
     re.IGNORECASE,
 )
 
@@ -2338,6 +2339,7 @@ _BY_HOW_MUCH = re.compile(
 
 
 _LOOSE_CUBES = re.compile(
+    r"(?<!\bof\s)(?<!\bwith\s)(?<!\bfrom\s)(?<!\beach\s)"  # "towers of 4 cubes, one …": their size
     r"\b(two|three|four|2|3|4)\s+(?:single\s+|loose\s+|separate\s+)?(?:cubes|bricks)\s*,\s*"
     r"(?=one\b(?!\s+(?:layer|level|course|high|tall|thick|deep)\b))",
     re.IGNORECASE,
