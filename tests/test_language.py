@@ -3727,3 +3727,21 @@ def test_a_single_cube_said_beside_counted_towers_is_no_miscount():
     # the count check reads the command as said: a single cube is a tower of one
     r = plan("a single cube placed between two 4-cube towers")
     assert r.status == "success" and len(r.spec.structures) == 3, r.notes
+
+
+@pytest.mark.parametrize(
+    ("command", "heights"),
+    [("three towers next to each other, heights 1 2 3", [1, 2, 3]),
+     ("put two cubes on top of each other", [2]),
+     ("three cubes one on top of the other", [3])],
+)  # fmt: skip
+def test_everyday_stacks_and_lists(command, heights):
+    # 'heights 1 2 3' built three towers of 1; 'two cubes on top of each other' a row, silently
+    r = plan(command)
+    assert r.status == "success" and [s.height for s in r.spec.structures] == heights, r.notes
+
+
+def test_next_to_it_on_the_right_is_that_side():
+    r = read("a tower of six cubes, and next to it on the right a tower of two")
+    (rel,) = r.spec.relations
+    assert (rel.kind, rel.side, r.spec.structures[rel.subject].height) == ("next_to", "right", 2)

@@ -361,6 +361,20 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "Undo that and put a wall there": the take-back, then the new step
     (re.compile(r"\b(undo|scratch|scrap|cancel|bin|ditch)\s+(that|it|this)\s+and\s+(?:then\s+)?"
                 r"(?=(?:put|place|build|make|set|add|stack|lay|do)\b)", re.I), r"\1 \2. then "),
+    # "heights 1 2 3": a list said without commas
+    (re.compile(r"\b(heights?|lengths?|sizes?)\s+(?:of\s+)?(\d+(?:\s+\d+){1,5})\b(?!\s*(?:x|by|mm|cm|m)\b)",
+                re.I), lambda m: f"{m.group(1)} {', '.join(m.group(2).split())}"),
+    # "put two cubes on top of each other", "three cubes one on top of the other": a tower
+    (re.compile(r"\b(two|three|four|five|six|seven|eight|nine|ten|\d+)\s+(?:cubes|blocks|bricks)\s+"
+                r"(?:stacked\s+)?(?:(?:on\s+top\s+of|onto|on)\s+(?:each\s+other|one\s+another)|"
+                r"one\s+on\s+top\s+of\s+(?:the\s+)?(?:other|another|next))\b", re.I),
+     r"a tower of \1"),
+    # "next to it on the right", "beside the wall, on its left side": that side of it
+    (re.compile(r"\b(?:next\s+to|beside|by)\s+(it|them|the\s+\w+)\s*,?\s+(?:on|to)\s+"
+                r"(?:the|its|their)\s+(left|right|front|back)(?:[\s-]+(?:hand\s+)?side)?\b"
+                r"(?!\s+(?:of|edge|corner)\b)", re.I),
+     lambda m: {"front": f"in front of {m.group(1)}", "back": f"behind {m.group(1)}"}.get(
+         m.group(2).lower(), f"to the {m.group(2)} of {m.group(1)}")),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
