@@ -3745,3 +3745,26 @@ def test_next_to_it_on_the_right_is_that_side():
     r = read("a tower of six cubes, and next to it on the right a tower of two")
     (rel,) = r.spec.relations
     assert (rel.kind, rel.side, r.spec.structures[rel.subject].height) == ("next_to", "right", 2)
+
+
+@pytest.mark.parametrize(
+    ("command", "shape", "sizes"),
+    [("an L with 4 cubes in each arm", "l_shape", {"length": 4, "width": 4}),
+     ("two 3x3 slabs stacked", "block", {"length": 3, "width": 3, "height": 2}),
+     ("two 2 by 2 pads on top of each other", "block", {"length": 2, "width": 2, "height": 2})],
+)  # fmt: skip
+def test_arms_and_stacked_slabs(command, shape, sizes):
+    # the arms were unused (partial); two slabs were built side by side, silently
+    r = plan(command)
+    (s,) = r.spec.structures
+    assert r.status == "success" and s.shape == shape
+    assert all(getattr(s, k) == v for k, v in sizes.items())
+
+
+def test_an_opening_in_a_wall_is_reported():
+    # it was built as a ring around a bridge, silently
+    r = plan("a wall with a door in the middle")
+    assert r.status == "partial" and any("no opening" in n for n in r.notes)
+    assert plan("behind the tower of 3, the wall of 4 long 2 high, with a gap of one").status == (
+        "success"
+    )

@@ -375,6 +375,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?!\s+(?:of|edge|corner)\b)", re.I),
      lambda m: {"front": f"in front of {m.group(1)}", "back": f"behind {m.group(1)}"}.get(
          m.group(2).lower(), f"to the {m.group(2)} of {m.group(1)}")),
+    # "an L with 4 cubes in each arm": arms of 4
+    (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?|blocks?|bricks?)\s+"
+                r"(?:in|on|per|for)\s+(?:each|every|both|either)\s+(?:of\s+its\s+)?arms?\b", re.I),
+     r"arms of \1"),
+    # "two 3x3 slabs stacked": one block that many layers high
+    (re.compile(r"\b(two|three|four|five|[2-5])\s+(\d+\s*(?:x|by)\s*\d+)\s+(?:slabs|layers|grids|pads|plates|"
+                r"platforms|squares)\s+(?:stacked(?:\s+up)?(?:\s+on\s+top\s+of\s+each\s+other)?|on\s+top\s+of\s+"
+                r"each\s+other|one\s+on\s+top\s+of\s+the\s+other)\b", re.I), r"a \2 block \1 high"),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),

@@ -197,6 +197,12 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
     spec = spacing.pitches(spacing.apply_gap(spec, st), st)
+    opening = _OPENING.search(command)
+    if opening:
+        # "a wall with a door in the middle": SDI's walls are solid
+        st.material.append(opening.group(0))
+        st.notes.append(f"ignored '{opening.group(0)}': SDI builds walls and slabs solid, "
+                        "with no opening in them")  # fmt: skip
     cut = _CUT_OFF.search(command)
     if cut:  # "Tower of": the command stops mid-phrase, its size unsaid
         st.material.append(cut.group(1))
@@ -534,6 +540,12 @@ def _step_rise(text: str, st: ReadState) -> str:
     return text[: m.start()] + text[m.end() :]
 
 
+_OPENING = re.compile(
+    r"\b(?:wall|slab|block|row)\b[^.;]{0,30}?\bwith\s+an?\s+(?:(?:door|doorway|opening|hole|window)"
+    r"(?:\s+(?:in|through)\s+(?:the\s+)?(?:middle|centre|center|it))?|gap\s+(?:in|through)\s+"
+    r"(?:the\s+)?(?:middle|centre|center|it))",
+    re.IGNORECASE,
+)
 _CUT_OFF = re.compile(
     r"\b(of|with|and|by|at|from|the|an?|than|into|onto)\s*[,;:-]*\s*$",
     re.IGNORECASE,
