@@ -3768,3 +3768,18 @@ def test_an_opening_in_a_wall_is_reported():
     assert plan("behind the tower of 3, the wall of 4 long 2 high, with a gap of one").status == (
         "success"
     )
+
+
+@pytest.mark.parametrize(
+    ("command", "gap"),
+    [
+        ("two towers of 3, 2 apart", 0.1),
+        ("two towers of 3, 10 apart", 0.1),
+        ("two towers 2 apart", 0.1),
+    ],
+)
+def test_a_gap_said_without_a_unit(command, gap):
+    # "2 apart" was read as a second tower 2 high (or a gap of 2 cm), silently
+    r = read(command)
+    assert len(r.spec.structures) == 2 and r.spec.gap_m == pytest.approx(gap)
+    assert len({s.height for s in r.spec.structures}) == 1

@@ -1082,6 +1082,10 @@ _SAME_UNIT = re.compile(
     r"(?:,|and|,\s*and|by|x)\s*)(?P<v>\d+)\s+(?P<dim>long|high|tall|wide|deep)\b",
     re.IGNORECASE,
 )
+_BARE_APART = re.compile(
+    r"(?P<lead>(?:^|[,;:]|\band)\s*|(?<=[a-z])\s+)(?P<n>\d{1,2}|one|two|three|four|five)\s+apart\b",
+    re.IGNORECASE,
+)
 _NOT_A_SIZE_BEFORE = re.compile(
     r"\b(?:job|station|cycle|shift|wo|no|number|line|cell|bay|order|ticket|room|batch|sheet|"
     r"exercise|entry|step|x|y|at|ref|part|sku|item)\s*[#:.]?\s*$",
@@ -1130,6 +1134,16 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
         return f"{m.group('said')}{m.group('v')} cm {m.group('dim')}"
 
     text = _SAME_UNIT.sub(same_unit, text)
+
+    def apart(m: re.Match[str]) -> str:  # "two towers of 3, 2 apart": a gap said in parts
+        n = int(words_to_numbers([m.group("n").lower()])[0])
+        unit = "cubes" if n <= 5 else "cm" if n % 5 == 0 and n < 50 else None
+        if unit is None:
+            return m.group(0)
+        notes.append(f"read '{m.group(0).strip()}' as {n} {unit} apart")
+        return f"{m.group('lead')}{n} {unit} apart"
+
+    text = _BARE_APART.sub(apart, text)
 
     return _BARE_OF.sub(mm, _BARE_SIZE.sub(mm, text))
 
