@@ -3783,3 +3783,11 @@ def test_a_gap_said_without_a_unit(command, gap):
     r = read(command)
     assert len(r.spec.structures) == 2 and r.spec.gap_m == pytest.approx(gap)
     assert len({s.height for s in r.spec.structures}) == 1
+
+
+def test_a_tower_on_each_side_of_a_wall_named_after_it():
+    # one tower stood behind the wall's end, the other beside it, silently
+    r = plan("a tower of 2 on each side of a wall 4 long")
+    cols = _columns(r)
+    assert r.status == "success" and len(r.spec.structures) == 2
+    assert len({x for x, _ in cols}) == 1 and len(cols) == 6  # one line: a tower at each end

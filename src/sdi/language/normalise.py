@@ -383,6 +383,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(two|three|four|five|[2-5])\s+(\d+\s*(?:x|by)\s*\d+)\s+(?:slabs|layers|grids|pads|plates|"
                 r"platforms|squares)\s+(?:stacked(?:\s+up)?(?:\s+on\s+top\s+of\s+each\s+other)?|on\s+top\s+of\s+"
                 r"each\s+other|one\s+on\s+top\s+of\s+the\s+other)\b", re.I), r"a \2 block \1 high"),
+    # "a tower of 2 on each side of a wall 4 long": the wall, and a tower on each side of it
+    (re.compile(r"^(?P<x>\W*(?:an?|one)\s+[\w\s-]+?)\s+(?P<on>on|at)\s+(?P<q>each|either|both)\s+"
+                r"(?P<n>sides?)\s+of\s+(?P<y>an?\s+[^,.;]+?)\s*(?=$|[.;])", re.I),
+     lambda m: f"{m.group('y')} and {m.group('x')} {m.group('on')} {m.group('q')} "
+     f"{m.group('n')} of it"),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
