@@ -3791,3 +3791,9 @@ def test_a_tower_on_each_side_of_a_wall_named_after_it():
     cols = _columns(r)
     assert r.status == "success" and len(r.spec.structures) == 2
     assert len({x for x, _ in cols}) == 1 and len(cols) == 6  # one line: a tower at each end
+
+
+def test_a_corner_not_said_is_an_assumption_said():
+    r = plan("stack 4 blocks in the corner")
+    assert r.spec.structures[0].region == "back left"
+    assert "read 'the corner' as the back left corner (which was not said)" in r.notes

@@ -1508,6 +1508,10 @@ class _Parser:
         region = _region(regions)
         if region:
             p["region"] = region
+            names = set(regions)
+            if "corner" in names and not (names & {"front", "back"} and names & {"left", "right"}):
+                # "in the corner": which one was not said
+                self.notes.append(f"read 'the corner' as the {region} corner (which was not said)")
         if edges:
             p["edge"] = tuple(dict.fromkeys(edges))
         if self.beam and shape in ("tower", "row", "grid", "wall"):
