@@ -3797,3 +3797,10 @@ def test_a_corner_not_said_is_an_assumption_said():
     r = plan("stack 4 blocks in the corner")
     assert r.spec.structures[0].region == "back left"
     assert "read 'the corner' as the back left corner (which was not said)" in r.notes
+
+
+def test_a_staircase_that_goes_up_steps_to_a_side_and_a_third_tower():
+    (s,) = read("I need a staircase that goes up 4 steps to the left").spec.structures
+    assert (s.shape, s.steps, s.axis, s.region) == ("staircase", 4, "y", None)  # not a place
+    r = plan("a tower of 3 cubes, another of 4 and a third of 5")
+    assert r.status == "success" and [t.height for t in r.spec.structures] == [3, 4, 5]

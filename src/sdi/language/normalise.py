@@ -388,6 +388,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?P<n>sides?)\s+of\s+(?P<y>an?\s+[^,.;]+?)\s*(?=$|[.;])", re.I),
      lambda m: f"{m.group('y')} and {m.group('x')} {m.group('on')} {m.group('q')} "
      f"{m.group('n')} of it"),
+    # "a staircase that goes up 4 steps to the left": of 4 steps, going up to the left
+    (re.compile(r"\b(?:that|which)\s+(?:goes|go|climbs|rises)\s+up\s+(\d+|two|three|four|five|six|seven|"
+                r"eight)\s+steps\s+(to(?:wards)?\s+the\s+(?:left|right|back|front))\b", re.I),
+     r"of \1 steps going up \2"),
+    (re.compile(r"\b(?:that|which)\s+(?:goes|climbs|rises)\s+(?=up\s+(?:to(?:wards)?\s+the\s+)?"
+                r"(?:left|right|back|front)\b)", re.I), "going "),
+    # "a tower of 3, another of 4 and a third of 5": another one
+    (re.compile(r"\ba\s+(?:third|fourth|fifth|sixth)\s+(?:one\s+)?(?=(?:of|with)\s+(?:\d|one|two|three|four|"
+                r"five|six|seven|eight|nine|ten)\b)", re.I), "another "),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
