@@ -3804,3 +3804,11 @@ def test_a_staircase_that_goes_up_steps_to_a_side_and_a_third_tower():
     assert (s.shape, s.steps, s.axis, s.region) == ("staircase", 4, "y", None)  # not a place
     r = plan("a tower of 3 cubes, another of 4 and a third of 5")
     assert r.status == "success" and [t.height for t in r.spec.structures] == [3, 4, 5]
+
+
+def test_several_structures_on_one_top_are_reported_and_two_walls_forming_a_corner_an_l():
+    # one of the two towers stood on the table beside the slab, silently
+    r = plan("a 4x2 slab with two towers of 2 on it")
+    assert r.status == "partial" and any("all but one" in n for n in r.notes)
+    (s,) = read("two walls forming a corner").spec.structures  # two walls and an L were built
+    assert (s.shape, s.height) == ("l_shape", 2)

@@ -105,6 +105,21 @@ def relate(
         else:
             s_idx = s_last
             o_idx = phrases[obj].first + phrases[obj].count - 1
+        if (
+            r.kind == "on"
+            and r.object is not None
+            and obj != subj
+            and phrases[subj].count > 1
+            and phrases[r.subject].structure is None
+            and not st.anchors
+        ):
+            # "a 4x2 slab with two towers of 2 on it": only one of them stands on it
+            said = phrases[subj].text.strip(" ,")
+            st.material.append(said)
+            st.notes.append(
+                f"ignored '{said}' on it for all but one: SDI stands one structure on "
+                "another's top (say 'one on each corner' to spread them)"
+            )
         if phrases[r.subject].structure is not None:
             s_idx = phrases[r.subject].structure  # type: ignore[assignment]
         if r.object is not None and phrases[r.object].structure is not None:

@@ -397,6 +397,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a tower of 3, another of 4 and a third of 5": another one
     (re.compile(r"\ba\s+(?:third|fourth|fifth|sixth)\s+(?:one\s+)?(?=(?:of|with)\s+(?:\d|one|two|three|four|"
                 r"five|six|seven|eight|nine|ten)\b)", re.I), "another "),
+    # "two walls forming a corner", "two rows making an L": one L shape
+    (re.compile(r"\btwo\s+(walls|rows)\s+(?:forming|making|that\s+form|that\s+make|meeting\s+(?:at|in))\s+"
+                r"(?:a\s+)?(?:corner|an?\s+l(?:[\s-]shape)?|right\s+angle)\b", re.I),
+     lambda m: "an L shape 2 high" if m.group(1).lower() == "walls" else "an L shape"),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
