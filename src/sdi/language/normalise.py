@@ -12,7 +12,7 @@ from sdi.errors import SpecError
 from sdi.language.nouns import shape_alternation
 from sdi.language.units import to_millimetres
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import words_to_numbers
+from sdi.spec.numbers import UNITS, words_to_numbers
 
 _SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "″": '"', "\u00a0": " "}
 
@@ -126,27 +126,9 @@ _APART_SAID = re.compile(
     r"\b(?:apart|gap|between|clear|centre\s+to\s+centre|center\s+to\s+center)\b", re.I
 )
 _BRIDGE = re.compile(r"\b(?:bridge|arch)\b", re.IGNORECASE)
-_DIGITS = {
-    w: n
-    for n, w in enumerate(
-        [
-            "zero",
-            "one",
-            "two",
-            "three",
-            "four",
-            "five",
-            "six",
-            "seven",
-            "eight",
-            "nine",
-            "ten",
-            "eleven",
-            "twelve",
-        ]
-    )
-}
-_DIGITS |= {"wun": 1, "fower": 4, "fife": 5, "niner": 9, "tree": 3}
+_DIGITS = {w: n for w, n in UNITS.items() if n <= 12 and w not in ("no", "single")} | {
+    "wun": 1, "fower": 4, "fife": 5, "niner": 9, "tree": 3,
+}  # fmt: skip
 _DIGIT_WORD = "zero|one|two|three|four|five|six|seven|eight|nine|wun|fower|fife|niner|tree"
 _EACH_AT = {"at": "at", "in": "in"}  # "one per corner" stands on each; "one at each end" at it
 _PER_ANCHOR = {"corner": 4, "end": 2}
@@ -156,10 +138,6 @@ def _product(m: re.Match[str]) -> bool:
     """The count said (group 2) is the rows (3) times the parts per row (4)."""
     n, rows, each = words_to_numbers([m.group(2).lower(), m.group(3).lower(), m.group(4).lower()])
     return (n + rows + each).isdigit() and int(n) == int(rows) * int(each)
-
-
-def words_to_int(word: str) -> int:
-    return {"two": 2, "four": 4}.get(word.lower()) or int(word)
 
 
 _DECK = re.compile(r"\b(?:lay|put|place|set)\s+(?:the|a)\s+deck\b", re.IGNORECASE)
@@ -439,7 +417,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(four|4|two|2)\s+((?:\d+[- ]cubes?[- ]|\w+[- ])?[a-z]+?)s\b([^.;:]{0,40}?)"
                 r"\s*,?\s*\b((?:on|at|in)\s+each\s+(corner|end))\b", re.I),
      lambda m: f"a {m.group(2)}{m.group(3)} {m.group(4)}"
-     if _PER_ANCHOR[m.group(5).lower()] == words_to_int(m.group(1)) else m.group(0)),
+     if str(_PER_ANCHOR[m.group(5).lower()]) == words_to_numbers([m.group(1).lower()])[0]
+     else m.group(0)),
     # an architect's words: "a colonnade of five columns" is five columns, piers are pillars,
     # "between neighbouring columns" is between them, a "ground-floor slab" a slab
     (re.compile(r"\b(?:an?\s+)?colonnade\s+(?:of|with)\s+(?=\d|two|three|four|five|six|seven|eight)",
@@ -1116,13 +1095,12 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
     more without a unit, a round number, is in millimetres — no structure of the cell is 50
     parts along anything (a count of parts, a coordinate, a job number is left alone)."""
 
+    def labelled(m: re.Match[str]) -> bool:  # "job 2207", "x 450": no size
+        return bool(_NOT_A_SIZE_BEFORE.search(m.string[max(0, m.start() - 12) : m.start()]))
+
     def mm(m: re.Match[str]) -> str:
         n = int(m.group("n"))
-        if (
-            n < 50
-            or n % 10
-            or _NOT_A_SIZE_BEFORE.search(m.string[max(0, m.start() - 12) : m.start()])
-        ):
+        if n < 50 or n % 10 or labelled(m):
             return m.group(0)
         notes.append(f"read {n} without a unit as {n} mm")
         return f"{m.groupdict().get('said') or ''}{n} mm"
@@ -1134,10 +1112,7 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
     text = _BEAM_150.sub(beam, text)
 
     def pair(m: re.Match[str]) -> str:  # "Block, 100 by 100": both in millimetres
-        before = m.string[max(0, m.start() - 12) : m.start()]
-        if any(int(v) < 50 or int(v) % 10 for v in (m.group(1), m.group(3))) or (
-            _NOT_A_SIZE_BEFORE.search(before)
-        ):
+        if any(int(v) < 50 or int(v) % 10 for v in (m.group(1), m.group(3))) or labelled(m):
             return m.group(0)
         notes.append(f"read {m.group(1)} and {m.group(3)} without a unit as millimetres")
         return f"{m.group(1)} mm {m.group(2)} {m.group(3)} mm"
