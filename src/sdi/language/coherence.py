@@ -258,6 +258,7 @@ def _families_named(doc: Doc, tokens: set[int]) -> dict[str, str]:
     return named
 
 
+_COORDINATE = re.compile(r"[xy](?:\d+(?:\.\d+)?)?")  # "x", "X500": a coordinate said
 _ONE_PART = frozenset({"cube", "block", "brick", "cubes", "blocks", "bricks"})
 _NEGATIONS = frozenset({"not", "n't", "never", "no", "without", "nor", "neither", "nothing"})
 _SCOPE_ENDS = frozenset({",", ".", ";", ":", "!", "?", "-", "but", "and", "instead", "then", "so"})
@@ -305,7 +306,7 @@ def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
         kinds = {_NEGATED_RELATIONS[t.lower_] for t in scope if t.lower_ in _NEGATED_RELATIONS}
         # "it will never stand at the back", "nothing at the back": a place excluded
         kinds |= {f"at {_PLACES[t.lower_]}" for t in scope if t.lower_ in _PLACES}
-        if any(re.fullmatch(r"[xy](?:\d+(?:\.\d+)?)?", t.lower_) for t in scope):
+        if any(_COORDINATE.fullmatch(t.lower_) for t in scope):
             kinds.add("at coordinates")  # "do not place it forward of X500"
         if families or kinds:
             cues.append((doc[tok.i : scope[-1].i + 1].text, families, kinds))
@@ -313,7 +314,7 @@ def _negated_kept(doc: Doc, spec: Spec) -> list[str]:
     said_families = {lx.SHAPE_WORDS[t.lower_] for t in outside if t.lower_ in lx.SHAPE_WORDS}
     said_kinds = {_NEGATED_RELATIONS[t.lower_] for t in outside if t.lower_ in _NEGATED_RELATIONS}
     said_kinds |= {f"at {_PLACES[t.lower_]}" for t in outside if t.lower_ in _PLACES}
-    if any(re.fullmatch(r"[xy](?:\d+(?:\.\d+)?)?", t.lower_) for t in outside):
+    if any(_COORDINATE.fullmatch(t.lower_) for t in outside):
         said_kinds.add("at coordinates")
     return [
         cue for cue, families, kinds in cues

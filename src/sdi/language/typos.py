@@ -142,7 +142,7 @@ def skeleton(word: str) -> str:
 def _abbreviations() -> dict[str, list[tuple[int, str]]]:
     """Each abbreviation SDI's words can be written as, with the words and how close: 0 the
     skeleton itself ("twr"), 1 the skeleton less a silent "gh" or one inner consonant ("hgt",
-    "ctr", "cnr"), 2 its first three or more letters ("pyr")."""
+    "ctr", "cnr"), 2 its first four or more letters ("pyrm")."""
     out: dict[str, list[tuple[int, str]]] = {}
 
     def add(key: str, rank: int, word: str) -> None:
