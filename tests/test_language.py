@@ -1555,8 +1555,12 @@ def test_corrections_that_name_the_structure_and_lists_said_one_by_one():
         read("put a cube down at x 0.3 y 0.3, then stack two more on it").spec.structures[0].height
         == 3
     )
-    # an arrangement SDI does not make is said, not silently replaced by a structure
+    # four separate structures in a square stand in two rows of two; an arrangement SDI does
+    # not make is said, not silently replaced by a structure
     r = plan("four stacks of 2 arranged in a square")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["tower"] * 4
+    assert r.spec.grid == (2, 2)
+    r = plan("four stacks of 2 arranged in a circle")
     assert r.status == "partial" and [s.shape for s in r.spec.structures] == ["tower"] * 4
     assert any("fornt" in n and "front" in n for n in read("towr of 5 at the fornt").notes)
 
@@ -2602,9 +2606,9 @@ def test_slavic_and_dutch_speakers_phrasing():
             .spec.structures] == [9]  # fmt: skip
 
 
-def test_an_array_of_stacks_is_said_not_built_as_one_slab():
+def test_an_array_of_stacks_is_built_as_the_stacks_not_one_slab():
     r = plan("a 2 x 3 array of 2-high stacks, and make sure no two stacks touch")
-    assert r.status == "partial" and len(r.spec.structures) == 6
+    assert r.status == "success" and len(r.spec.structures) == 6 and r.spec.grid == (2, 3)
     assert all(s.height == 2 for s in r.spec.structures)
 
 
@@ -3812,3 +3816,48 @@ def test_several_structures_on_one_top_are_reported_and_two_walls_forming_a_corn
     assert r.status == "partial" and any("all but one" in n for n in r.notes)
     (s,) = read("two walls forming a corner").spec.structures  # two walls and an L were built
     assert (s.shape, s.height) == ("l_shape", 2)
+
+
+def _footprints(layout):
+    """Footprint centres (x, y) of the columns of `layout`, rounded to a millimetre."""
+    return sorted({(round(p.position[0], 3), round(p.position[1], 3)) for p in layout.objects})
+
+
+def test_separate_structures_in_rows_and_columns():
+    # "in a square", "in a 2x2 grid", "in two rows of three": the structures themselves stand
+    # in rows and columns; before, a grid of cubes was added beside them, silently
+    r = plan("place 4 towers of 2 in a square")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["tower"] * 4
+    cols = _footprints(r.layout)
+    assert len(cols) == 4 and len({x for x, _ in cols}) == 2 and len({y for _, y in cols}) == 2
+    r = plan("six towers of 2 in two rows of three")
+    assert r.status == "success" and len(r.spec.structures) == 6 and r.spec.grid == (2, 3)
+    cols = _footprints(r.layout)
+    assert len({x for x, _ in cols}) == 2 and len({y for _, y in cols}) == 3
+    r = plan("four towers, three high, in a 2x2 grid")
+    assert [s.shape for s in r.spec.structures] == ["tower"] * 4 and r.spec.grid == (2, 2)
+    assert r.status == "success" and len(r.layout) == 12
+    r = plan("a 2 x 3 array of 2-high stacks")
+    assert r.status == "success" and r.spec.grid == (2, 3) and len(r.layout) == 12
+    # stated gaps hold between rows and between columns
+    r = plan("four towers of 3 in a square, 10 cm apart")
+    xs = sorted({x for x, _ in _footprints(r.layout)})
+    assert r.spec.grid == (2, 2) and abs((xs[1] - xs[0]) - 0.15) < 1e-6
+    # counts no arrangement fits are said; cubes in a square are one grid
+    for text in ("five stacks in a grid", "six towers in a square", "three towers in a square"):
+        r = plan(text)
+        assert r.status == "partial" and r.spec.grid is None, text
+    r = plan("nine cubes arranged in a square")
+    assert [(s.shape, s.count) for s in r.spec.structures] == [("grid", 9)]
+    # three rows stacked on each other are one wall
+    s = read("three rows of four cubes stacked on top of each other").spec.structures
+    assert [(x.shape, x.length, x.height) for x in s] == [("wall", 4, 3)]
+
+
+def test_a_grid_arrangement_must_place_every_separate_structure():
+    from sdi.spec.structure_spec import Spec, structure
+
+    towers = tuple(structure("tower", height=2) for _ in range(4))
+    assert Spec(structures=towers, grid=(2, 2)).grid == (2, 2)
+    with pytest.raises(ValueError, match="grid: 2 x 3 places for 4"):
+        Spec(structures=towers, grid=(2, 3))

@@ -42,6 +42,8 @@ from sdi.bench.language_dev24 import CASES as DEV24
 from sdi.bench.language_dev25 import CASES as DEV25
 from sdi.bench.language_dev26 import CASES as DEV26
 from sdi.bench.language_dev27 import CASES as DEV27
+from sdi.bench.language_dev28 import CASES as DEV28
+from sdi.bench.language_dev29 import CASES as DEV29
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -283,6 +285,8 @@ SETS = {
     "dev25": (DEV25, 170, 8, 15),
     "dev26": (DEV26, 170, 8, 15),
     "dev27": (DEV27, 170, 8, 15),
+    "dev28": (DEV28, 180, 8, 15),
+    "dev29": (DEV29, 180, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -304,6 +308,8 @@ HARD = {
     "dev25": ("relation", "numbers", "dimensions", "sequence"),
     "dev26": ("relation", "numbers", "dimensions", "sequence"),
     "dev27": ("relation", "numbers", "dimensions", "sequence"),
+    "dev28": ("relation", "numbers", "dimensions", "sequence"),
+    "dev29": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -419,6 +425,8 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev25.py",
         "language_dev26.py",
         "language_dev27.py",
+        "language_dev28.py",
+        "language_dev29.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

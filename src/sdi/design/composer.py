@@ -208,7 +208,11 @@ def _clamp(c: np.ndarray, half: np.ndarray, cell: CellConfig, axes: tuple[int, .
 
 
 def _place_all(
-    placed: list[_Placed], cell: CellConfig, gap: float | None = None, line: str | None = None
+    placed: list[_Placed],
+    cell: CellConfig,
+    gap: float | None = None,
+    line: str | None = None,
+    grid: tuple[int, int] | None = None,
 ) -> list[np.ndarray]:
     """Footprint centres: stated coordinates exactly, regions and the rest nearest free spot.
 
@@ -216,7 +220,7 @@ def _place_all(
     named region, or an edge of the workspace, is a preference the structure is pulled into
     and moved from to stay clear;
     structures with neither go side by side along y around the anchor (along x, front to
-    back, when `line` is "x").
+    back, when `line` is "x"; in rows by columns around it when `grid` is given).
     """
     anchor = np.array(cell.design.anchor)
     gap = cell.design.structure_gap if gap is None else gap
@@ -287,14 +291,17 @@ def _place_all(
             want[along] += start + w / 2
             start += w + gap
             wants.append((k, _clamp(want, placed[k].half, cell, (0, 1)), "region"))
-    d = 0 if line == "x" else 1
-    widths = [2 * placed[k].half[d] for k in free]
-    s0 = anchor[d] - (sum(widths) + gap * max(0, len(free) - 1)) / 2
-    for k, w in zip(free, widths, strict=True):
-        want = anchor.copy()
-        want[d] = s0 + w / 2
-        wants.append((k, want, "structures"))
-        s0 += w + gap
+    if grid is not None and len(free) == grid[0] * grid[1]:
+        wants.extend(_grid_wants(placed, free, grid, anchor, gap))
+    else:
+        d = 0 if line == "x" else 1
+        widths = [2 * placed[k].half[d] for k in free]
+        s0 = anchor[d] - (sum(widths) + gap * max(0, len(free) - 1)) / 2
+        for k, w in zip(free, widths, strict=True):
+            want = anchor.copy()
+            want[d] = s0 + w / 2
+            wants.append((k, want, "structures"))
+            s0 += w + gap
     for k, want, field in wants:
         spot = _search(want, placed[k].half, taken, gap, cell, (0, 1))
         if spot is None:
@@ -305,6 +312,30 @@ def _place_all(
             )
         put(k, spot)
     return [c for c in centres if c is not None]
+
+
+def _grid_wants(
+    placed: list[_Placed],
+    free: list[int],
+    grid: tuple[int, int],
+    anchor: np.ndarray,
+    gap: float,
+) -> list[tuple[int, np.ndarray, str]]:
+    """Wanted centres of `free` in `grid` rows (front to back) by columns (right to left),
+    the front row first, each row as deep and each column as wide as its largest member,
+    `gap` between them, the whole centred on `anchor`."""
+    rows, cols = grid
+    cells = [(k, divmod(i, cols)) for i, k in enumerate(free)]
+    depth = [max(2 * placed[k].half[0] for k, (r, _) in cells if r == row) for row in range(rows)]
+    width = [max(2 * placed[k].half[1] for k, (_, c) in cells if c == col) for col in range(cols)]
+    x0 = anchor[0] - (sum(depth) + gap * (rows - 1)) / 2
+    y0 = anchor[1] - (sum(width) + gap * (cols - 1)) / 2
+    out = []
+    for k, (r, c) in cells:
+        x = x0 + sum(depth[:r]) + gap * r + depth[r] / 2
+        y = y0 + sum(width[:c]) + gap * c + width[c] / 2
+        out.append((k, np.array([x, y]), "grid"))
+    return out
 
 
 def _merge(base: _Placed, other: _Placed, dxy: np.ndarray, dz: float) -> _Placed:
@@ -541,7 +572,7 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
                 raise InfeasibleError(
                     f"{exc} — counting the structures related to it", parameter=exc.parameter
                 ) from None
-    centres = _place_all(placed, cell, spec.gap_m, spec.line)
+    centres = _place_all(placed, cell, spec.gap_m, spec.line, spec.grid)
     parts: list[Part] = []
     counters: dict[str, int] = {}
     for p, centre in zip(placed, centres, strict=True):

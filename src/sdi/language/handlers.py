@@ -281,21 +281,52 @@ def _layers_word(m: re.Match[str], st: ReadState, note: str) -> str:
 
 
 def _arrangement(m: re.Match[str], st: ReadState, note: str) -> str:
-    """ "arranged in a square": separate structures stand side by side in a line; say so."""
-    said = m.group(0).strip(" ,")
+    """ "arranged in a square", "in a grid": separate structures stand in rows and columns
+    where their count makes the shape (four or nine in a square, six in a grid); said in
+    a circle, a triangle or a count that does not fit, it is reported (`reader`)."""
+    said, groups = _said(m)
+    if not _structures_before(m):
+        return m.group(0)  # "nine cubes in a square": one grid (left to the grammar)
+    if groups[0] in ("square", "grid", "block", "array", "pattern", "matrix"):
+        st.grid = (0, 1 if groups[0] == "square" else 0, said)
+        return " "
     st.material.append(said)
     st.notes.append(f"ignored '{said}': separate structures are placed side by side in a line")
     return " "
 
 
+_PLURAL_STRUCTURE = re.compile(
+    r"\b(towers|stacks|columns|pillars|posts|piles|pyramids|staircases|stairs|walls|rows|blocks|"
+    r"slabs|bridges|arches|cubes|things|ones)\b",
+    re.IGNORECASE,
+)
+
+
+def _grid_of(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "four towers of 2 in a 2 x 2 grid", "six stacks in two rows of three": the structures
+    in rows (front to back) by columns. Only after separate structures named in the plural;
+    cubes in a grid are one grid (left to the grammar)."""
+    said, groups = _said(m)
+    if not _structures_before(m):
+        return m.group(0)
+    a, b = (int(v) for v in words_to_numbers([groups[0] or groups[2], groups[1] or groups[3]]))
+    st.grid = (a, b, said)
+    return " "
+
+
+def _structures_before(m: re.Match[str]) -> bool:
+    """The clause before `m` names separate structures in the plural ("four towers of 2"),
+    not parts ("nine cubes")."""
+    clause = re.split(r"[.;]|\bthen\b", m.string[: m.start()])[-1]
+    nouns = _PLURAL_STRUCTURE.findall(clause)
+    return bool(nouns) and nouns[-1].lower() not in ("cubes", "blocks", "things", "ones", "rows")
+
+
 def _array_of(m: re.Match[str], st: ReadState, note: str) -> str:
-    """ "a 2 x 3 array of 2-high stacks": six stacks; the array itself is an arrangement SDI
-    does not make (separate structures stand side by side in a line): said."""
+    """ "a 2 x 3 array of 2-high stacks": six stacks, in 2 rows of 3."""
     said, groups = _said(m)
     n = int(groups[0]) * int(groups[1])
-    st.material.append(f"a {groups[0]} x {groups[1]} array")
-    st.notes.append(f"ignored the {groups[0]} x {groups[1]} array in '{said}': separate "
-                    "structures are placed side by side in a line")  # fmt: skip
+    st.grid = (int(groups[0]), int(groups[1]), said)
     high = f" of {groups[2]}" if groups[2] else ""
     return f" {n} {groups[3]}{high} "
 
@@ -927,6 +958,7 @@ HANDLERS: dict[str, Handler] = {
     "{negative}": _negative,
     "{arrangement}": _arrangement,
     "{array_of}": _array_of,
+    "{grid_of}": _grid_of,
     "{all_different}": _all_different,
     "{listing}": _listing,
     "{listing_said}": _listing_said,

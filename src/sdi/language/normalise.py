@@ -342,6 +342,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "heights 1 2 3": a list said without commas
     (re.compile(r"\b(heights?|lengths?|sizes?)\s+(?:of\s+)?(\d+(?:\s+\d+){1,5})\b(?!\s*(?:x|by|mm|cm|m)\b)",
                 re.I), lambda m: f"{m.group(1)} {', '.join(m.group(2).split())}"),
+    # "three rows of four cubes stacked on top of each other": a wall four long, three high
+    (re.compile(r"\b(two|three|four|five|six|[2-6])\s+(?:rows|lines|courses)\s+of\s+(\d+|two|three|four|five|"
+                r"six|seven|eight|nine|ten)(?:\s+(?:cubes|blocks|bricks))?,?\s+(?:stacked(?:\s+up)?"
+                r"(?:\s+on\s+top\s+of\s+(?:each\s+other|one\s+another))?|on\s+top\s+of\s+(?:each\s+other|"
+                r"one\s+another)|one\s+on\s+top\s+of\s+the\s+other)\b", re.I),
+     r"a wall \2 long and \1 high"),
     # "put two cubes on top of each other", "three cubes one on top of the other": a tower
     (re.compile(r"\b(two|three|four|five|six|seven|eight|nine|ten|\d+)\s+(?:cubes|blocks|bricks)\s+"
                 r"(?:stacked\s+)?(?:(?:on\s+top\s+of|onto|on)\s+(?:each\s+other|one\s+another)|"

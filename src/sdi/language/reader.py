@@ -188,6 +188,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             structures=tuple(specs),
             relations=tuple(relations),
             line="x" if st.line == "x" and len(specs) > 1 else None,
+            grid=_grid(st, len(specs) - len({r.subject for r in relations})),
             notes=tuple(dict.fromkeys(st.notes)),
         )
     except ValueError as exc:  # one line, without the validator's framing
@@ -590,3 +591,27 @@ def _open(text: str, delegated: str | None) -> tuple[str, list[str]]:
         family = "tower"
     note = f"no structure named: read '{m.group(0)}' as a {family}"
     return text[: m.start()] + family + text[m.end() :], [note]
+
+
+def _grid(st: ReadState, free: int) -> tuple[int, int] | None:
+    """Rows by columns for the `free` separate structures said to stand in a square or grid
+    ("four towers in a square": 2 x 2; "six stacks in a grid": 2 x 3); a count the words
+    cannot arrange is reported, and the structures stand in a line."""
+    if st.grid is None:
+        return None
+    rows, cols, said = st.grid
+    if rows == 0:  # only the shape was said: the most nearly square arrangement
+        rows = max((r for r in range(1, int(free**0.5) + 1) if free % r == 0), default=1)
+        cols = free // rows
+        if rows == 1 or (said.endswith("square") and rows != cols):
+            rows = cols = 0  # five in a grid, six in a square: no such arrangement
+    if free < 2 or rows * cols != free:
+        st.material.append(said)
+        st.notes.append(
+            f"ignored '{said}': {free} separate structure(s) cannot stand in "
+            + (f"{rows} rows of {cols}" if rows else "that arrangement")
+            + "; they are placed side by side in a line"
+        )
+        return None
+    st.notes.append(f"read '{said}' as {rows} rows of {cols}, one behind the other")
+    return rows, cols

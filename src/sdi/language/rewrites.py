@@ -1277,7 +1277,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at)\s+(?:top\s+of\s+)?(?:(?:each|both|"
+            r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at|in(?=\s+(?:each|every|one|all|its|"
+            r"their)\b[^,.;]{0,20}?\bcorners?\b))\s+(?:top\s+of\s+)?(?:(?:each|both|"
             r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:four\s+|4\s+|two\s+|2\s+)?"
             r"(?:ends|end|sides|side|corners|corner)"
             r"|(?:all\s+)?(?:its|their)\s+(?:four\s+|4\s+|two\s+|2\s+)?(?:corners|ends)"
@@ -1756,10 +1757,23 @@ _REWRITES += [
         "{array_of}",
         "",
     ),
-    (  # "four stacks of 2 arranged in a square": an arrangement SDI does not make
+    (  # "four towers of 2 in a 2 x 2 grid", "six stacks in two rows of three": rows by columns
         re.compile(
-            r",?\s*\b(?:arranged|set\s+out|laid\s+out|placed|standing)\s+in\s+a\s+"
-            r"(square|circle|ring|triangle|cross|grid|diamond)\b",
+            r",?\s*\b(?:(?:arranged|set\s+out|laid\s+out|placed|standing|stood|set|positioned|"
+            r"spaced)\s+)?(?:in|into|as)\s+(?:an?\s+)?(?:(\d|two|three|four)\s*(?:x|by|×)\s*(\d|two|"
+            r"three|four)\s+(?:grid|array|square|block|pattern|matrix|layout|formation|arrangement)|"
+            r"(two|three|four|[2-4])\s+rows\s+of\s+(two|three|four|[2-4])(?:\s+each)?)\b",
+            re.IGNORECASE,
+        ),
+        "{grid_of}",
+        "",
+    ),
+    (  # "four stacks of 2 arranged in a square": rows and columns where the count makes one
+        re.compile(
+            r",?\s*\b(?:(?:arranged|set\s+out|laid\s+out|placed|standing|stood|set|positioned)\s+in"
+            r"|(?<=s)\s+in|(?<=\d)\s+in)\s+(?:a\s+)?"
+            r"(square|circle|ring|triangle|cross|grid|diamond)(?:\s+(?:formation|pattern|arrangement|"
+            r"shape|layout))?\b(?!\s+(?:of|with|\d)\b)",
             re.IGNORECASE,
         ),
         "{arrangement}",

@@ -54,6 +54,9 @@ class ReadState:
     flanked: bool = False  # a structure was placed between two others
     span_m: float | None = None  # "pillars 10 cm apart": between a bridge's own supports
     line: str | None = None  # "three towers in a line front to back": the axis they stand along
+    # "four towers in a square", "in two rows of three": (rows, columns), or 0 for each when
+    # only the shape was said, with the words said
+    grid: tuple[int, int, str] | None = None
     # "with the tallest one in the middle": (what was said, "max" | "min", middle|left|right)
     order: tuple[str, str, str] | None = None
     distinct: str | None = None  # "none of them the same height": what was said

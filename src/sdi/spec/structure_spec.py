@@ -433,6 +433,11 @@ class Spec(BaseModel):
         description="separate structures stand one after another along this axis, in the "
         "order listed (x: front to back, y: right to left); default: side by side along y",
     )
+    grid: tuple[int, int] | None = Field(
+        None,
+        description="separate structures stand in this many rows (front to back) by columns "
+        "(right to left), in the order listed, the front row first; default: one line",
+    )
     precedence: tuple[tuple[str, str], ...] = ()
     notes: tuple[str, ...] = Field((), description="assumptions the front end made")
 
@@ -449,6 +454,14 @@ class Spec(BaseModel):
             if r.subject in subjects:
                 raise ValueError(f"structure {r.subject} is the subject of two relations")
             subjects.add(r.subject)
+        if self.grid is not None:
+            rows, cols = self.grid
+            free = n - len(subjects)
+            if rows < 1 or cols < 1 or rows * cols != free:
+                raise ValueError(
+                    f"grid: {rows} x {cols} places for {free} separate structure(s); "
+                    "give as many places as structures"
+                )
         # no cycles: following subject → object must end
         target = {r.subject: r.object for r in self.relations}
         for start in target:
