@@ -2048,9 +2048,11 @@ def test_more_cubes_stacked_on_the_middle_of_a_floor_are_a_column_on_it():
     assert r.kind == "on_top_of" and spec.structures[1].height == 3
 
 
-def test_the_top_taken_off_a_pyramid_is_reported_not_a_smaller_pyramid():
+def test_the_top_taken_off_a_pyramid_is_a_cut_off_pyramid_not_a_smaller_one():
     r = plan("a pyramid of 4 levels, then take the top level off")
-    assert r.status == "partial" and r.spec.structures[0].height == 4
+    (s,) = r.spec.structures
+    assert r.status == "success" and (s.length, s.height) == (4, 3)
+    assert any("3 levels on its base of 4" in n for n in r.notes)
 
 
 # -- where things may not go ---------------------------------------------------------------------
@@ -3679,7 +3681,8 @@ def test_shop_floor_phrases_that_are_no_structure_or_a_change_of_one(command, sh
 def test_an_ordinal_step_word_begins_a_step_and_is_never_lost():
     # "Secondly, remove the top cube." vanished with no note (a silent success)
     r = plan("a pyramid of 3 levels. Secondly, remove the top cube.")
-    assert r.status == "partial" and any("remove the top cube" in n for n in r.notes)
+    assert any("remove the top cube" in n for n in r.notes)
+    assert (r.spec.structures[0].length, r.spec.structures[0].height) == (3, 2)
 
 
 def test_a_time_and_a_size_word_of_a_person_are_no_sizes_of_the_structure():
@@ -3861,3 +3864,87 @@ def test_a_grid_arrangement_must_place_every_separate_structure():
     assert Spec(structures=towers, grid=(2, 2)).grid == (2, 2)
     with pytest.raises(ValueError, match="grid: 2 x 3 places for 4"):
         Spec(structures=towers, grid=(2, 3))
+
+
+def _heights(layout):
+    """Column heights in parts, keyed by footprint centre (x, y) rounded to a millimetre."""
+    tops: dict[tuple[float, float], int] = {}
+    for p in layout.objects:
+        key = (round(p.position[0], 3), round(p.position[1], 3))
+        tops[key] = max(tops.get(key, 0), round((p.position[2] + p.size[2] / 2) / 0.05))
+    return tops
+
+
+def test_as_tall_as_a_structure_named_before_is_its_measured_size():
+    # "as tall as the staircase" was read as a vague "tall" (6 high), silently
+    r = plan("a staircase of 3 steps and a tower as tall as the staircase")
+    assert r.status == "success" and [
+        s.height for s in r.spec.structures if s.shape == "tower"
+    ] == [3]
+    r = plan("a tower of 2 and a wall as high as the tower")
+    assert r.status == "success" and r.spec.structures[1].height == 2
+    r = plan("a wall 6 long and a row as long as the wall")
+    assert r.spec.structures[1].length == 6
+    r = plan("a pyramid with a 4x4 base and next to it a tower as tall as the pyramid")
+    assert r.status == "success" and r.spec.structures[1].height == 4
+    r = plan("a tower as tall as the wall")  # nothing named before it to measure
+    assert r.status == "partial"
+
+
+def test_a_pyramid_with_its_top_taken_off_keeps_its_base():
+    for text in ("a pyramid of 4 levels, then take the top cube off",
+                 "They'd like a pyramid of four levels, but they also said to take the top cube "
+                 "off it afterwards."):  # fmt: skip
+        r = plan(text)
+        (s,) = r.spec.structures
+        assert r.status == "success" and (s.shape, s.length, s.height) == ("pyramid", 4, 3), text
+    r = plan("a pyramid with a base of 4, 3 levels high")  # two sizes, not a list of values
+    assert r.status == "success" and (r.spec.structures[0].length, r.spec.structures[0].height) == (
+        4, 3)  # fmt: skip
+
+
+def test_sides_order_and_gaps_said_in_everyday_ways():
+    # "right" as "exactly" is no side; "on the right at the back" is both
+    r = plan("They want a wall of 6 by 2 right across the middle of the table, left to right.")
+    assert r.status == "success" and r.spec.structures[0].region == "centre"
+    assert read("a tower on the right at the back").spec.structures[0].region == "back right"
+    r = plan("a tower of 3 and a cube right next to it")
+    assert r.status == "success" and [x.kind for x in r.spec.relations] == ["next_to"]
+    # "not too close to the robot": away from it; "going away from the robot" is a direction
+    assert (
+        read("a tower of 4, I guess not too close to the robot").spec.structures[0].region == "back"
+    )
+    assert read("a row of 4 going away from the robot").spec.structures[0].region is None
+    # "towers of 3 and 6, 2 cubes apart": the gap between two towers, not a third tower
+    r = plan(
+        "Client says: towers of 3 and 6, 2 cubes apart, and the shorter one has to be in front."
+    )
+    assert r.status == "success" and sorted(s.height for s in r.spec.structures) == [3, 6]
+    tops = _heights(r.layout)
+    x_short = [x for (x, _), h in tops.items() if h == 3]
+    x_tall = [x for (x, _), h in tops.items() if h == 6]
+    assert max(x_short) < min(x_tall)  # the shorter one in front (smaller x)
+    # "lined up with the middle of the row": a structure beside another is centred on it
+    r = plan(
+        "Row of 5 at the front, then tower of 3 behind it, lined up with the middle of the row"
+    )
+    assert r.status == "success" and len(r.spec.structures) == 2
+    # a work order's list labels and bare nouns: "Row 2:" is a label, "on top of blk" the block
+    r = plan("Row 1: Wall, L=5, H=2, Loc front. Row 2: same wall, Loc back.")
+    assert [(s.shape, s.region) for s in r.spec.structures] == [("wall", "front"), ("wall", "back")]
+    r = plan("REQ: blk 2x2x2, LOC: ctr. Twr 3H on top of blk, centred.")
+    assert [s.shape for s in r.spec.structures] == ["block", "tower"]
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+
+
+def test_unused_words_that_change_a_structure_are_material():
+    # "extend it to 5 steps", "(supersedes rev A)": a change SDI did not make is not success
+    assert plan("Make a staircase of 3 steps, then extend it to 5 steps.").status == "partial"
+    assert (
+        plan("Job 4 rev A: Tower H 3. Job 4 rev B: Tower H 6 (supersedes rev A)").status
+        == "partial"
+    )
+    # a structure placed where "everything" should not be is said
+    r = plan("Keep everything on the right half, the left half is where the forklift goes. "
+             "A wall of 5, 2 high.")  # fmt: skip
+    assert r.status == "partial"

@@ -314,6 +314,60 @@ def _grid_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a staircase of 3 steps and a tower as tall as the staircase": the size of the
+    structure named before, measured in parts as it is built (a staircase of 3 steps is 3
+    high, a pyramid of base 4 is 4 high). When it cannot be measured the words are reported,
+    not read as a vague "tall"."""
+    from sdi.design.composer import part_sizes
+    from sdi.design.shapes import generate
+    from sdi.language.families import check_family
+    from sdi.spec.grammar import parse_phrase
+
+    said, groups = _said(m)
+    word, family = groups[0], lx.SHAPE_WORDS.get(groups[1])
+    before = m.string[: m.start()]
+    clauses = [c for c in re.split(r"[.;]|,|\band\b", before) if c.strip()]
+    for clause in reversed(clauses):
+        if family is None:
+            break
+        try:
+            draft, _ = parse_phrase(clause, st.cell)
+            found = [s for s in draft.structures if s.shape == family]
+            if not found:
+                continue
+            spec = check_family(found[-1], [], [], part_m=st.cell.cube[0])
+            sizes = part_sizes(st.cell, spec.part)
+            boxes = generate(spec, sizes)
+        except (SpecError, ValueError):
+            continue
+        if word in ("tall", "high"):
+            n = round(max(b.z for b in boxes) / sizes.h + 0.5)
+            st.notes.append(f"read '{said}' as {n} high (the {family} named before)")
+            return f" {n} high "
+        us, vs = [b.u for b in boxes], [b.v for b in boxes]
+        n = round(max(max(us) - min(us), max(vs) - min(vs)) / sizes.s) + 1
+        st.notes.append(f"read '{said}' as {n} long (the {family} named before)")
+        return f" {n} long "
+    st.material.append(said)
+    st.notes.append(f"ignored '{said}': no {groups[1]} with a size was named before it")
+    return " "
+
+
+def _centred_beside(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower behind it, lined up with the middle of the row": a structure set beside
+    another stands centred on it already; with no such relation the words stay (and are
+    reported if unused)."""
+    clause = re.split(r"[.;]", m.string[: m.start()])[-1]
+    if not re.search(
+        r"\b(?:behind|in\s+front\s+of|beside|next\s+to|(?:left|right)\s+of)\b", clause, re.I
+    ):
+        return m.group(0)
+    st.notes.append(f"read '{_said(m)[0]}' as centred on it (a structure beside another stands "
+                    "centred on it)")  # fmt: skip
+    return " "
+
+
 def _structures_before(m: re.Match[str]) -> bool:
     """The clause before `m` names separate structures in the plural ("four towers of 2"),
     not parts ("nine cubes")."""
@@ -959,6 +1013,8 @@ HANDLERS: dict[str, Handler] = {
     "{arrangement}": _arrangement,
     "{array_of}": _array_of,
     "{grid_of}": _grid_of,
+    "{centred_beside}": _centred_beside,
+    "{as_big_as}": _as_big_as,
     "{all_different}": _all_different,
     "{listing}": _listing,
     "{listing_said}": _listing_said,

@@ -525,8 +525,14 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         key = _main_slot(last)
         if key is None:
             return None
-    if op == "-" and last.shape == "pyramid" and re.search(r"\btop\b", p.text, re.I):
-        return None  # its top taken off a pyramid is a cut-off pyramid, not a smaller one
+    if op in ("-", "-1") and last.shape == "pyramid" and re.search(r"\btop\b", p.text, re.I):
+        # its top taken off a pyramid is a cut-off pyramid on the same base, not a smaller one
+        base = last.length or last.width or last.height
+        levels = last.height or base
+        if base is None or levels is None or last.length_m or last.height_m or levels - n < 1:
+            return None
+        structures[index] = last.model_copy(update={"length": base, "height": levels - n})
+        return f"the pyramid now has {levels - n} levels on its base of {base} (was {levels})"
     if (
         op == "+"
         and last.shape in ("grid", "row", "enclosure", "wall", "block")

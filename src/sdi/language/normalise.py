@@ -206,7 +206,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+of\s+(?=(?:\d+|one|two|three|four|five|six|seven|"
                 r"eight|nine|ten)\s+(?:cubes?\s+)?(?:long|high|tall|wide|deep)\b)", re.I), r"\1 "),
     (re.compile(r"\bat\s+its\s+(left|right)(?:\s+side)?\b", re.I), r"to the \1 of it"),
-    (re.compile(r"\b(left|right)\s+(?:beside|next\s+to)\s+(it|them)\b", re.I), r"to the \1 of \2"),
+    # "a cube left beside it": to its left ("right next to it" is "immediately next to it")
+    (re.compile(r"\b(left|(?<=\bthe\s)right)\s+(?:beside|next\s+to)\s+(it|them)\b", re.I),
+     r"to the \1 of \2"),
     # "at 1 cube of distance to the back, other equal" (a Romance speaker): 1 cube behind it,
     # another the same; "After," is then
     (re.compile(r"\bat\s+(\d+|one|two|three|a)\s+(cubes?|cm|mm)\s+of\s+distance\s+(?:to|at|on)\s+the\s+"
@@ -327,6 +329,23 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"girl|boy|man|woman|kid|kids|brother|sister|crowd|fan|thanks|question|favou?r|"
                 r"problem|news|moment|event|show|hurry|rush|while|bit\s+of\s+(?:time|a\s+rush)|"
                 r"meeting|visit|customer|client|audience)\b)", re.I), ""),
+    # "right across the middle", "right in the centre": "right" as "exactly", not a side
+    (re.compile(r"(?<!\bthe\s)(?<!\bits\s)(?<!\bthe\sfar\s)\bright\s+(?=(?:across|through|along|over)\s+the\s+(?:middle|centre|center|table)\b|"
+                r"in\s+the\s+(?:middle|centre|center)\b|at\s+the\s+(?:very\s+)?(?:front|back|middle|"
+                r"centre|center)\b|next\s+to\b|beside\b|behind\b|in\s+front\s+of\b|"
+                r"against\b)", re.I), ""),
+    # "blk 2x2x2. Twr 3H on top of blk": the block named before (a work order drops "the")
+    (re.compile(r"\b(on\s+top\s+of|onto|atop|beside|next\s+to|behind|in\s+front\s+of)\s+(?=(?:"
+                + _FAMILY_SAID + r")\b(?!\s*(?:of|\d)))", re.I),
+     lambda m: m.group(0) + ("the " if re.search(
+         r"\b" + re.escape(m.string[m.end():].split()[0].rstrip(",.;:").lower()) + r"\b",
+         m.string[: m.start()], re.I) else "")),
+    # "Row 1: Wall, L=5 … Row 2: same wall", "Line 3: Tower": a line of a list, not a row
+    (re.compile(r"(?:^|(?<=[.;|\n]))\s*(?:row|line|item|entry|pos(?:ition)?|no\.?|#)\s*\d{1,2}\s*[:)]\s+",
+                re.I), " "),
+    # "Loc: back left", "Loc back left": a location field
+    (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
+                r"middle)\b)", re.I), "at the "),
     # "tall-ish", "smallish": the size word itself
     (re.compile(r"\b(tall|high|long|wide|low|short|big|small|flat)-?ish\b", re.I), r"\1"),
     # "job 2207 on the screen says:", "on the HMI": where the job was read, not a structure

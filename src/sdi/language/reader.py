@@ -145,6 +145,16 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         specs = [unstack(s, st) for s in specs]
     if st.region_all:
         related = {r.subject for r in relations}
+        opposite = lx.OPPOSITE_SIDE.get(st.region_all.split()[-1])
+        for s in specs:
+            if opposite and s.region and opposite in s.region.split():
+                # "keep everything on the right half, the left half is where the forklift
+                # goes. A wall of 5": a structure placed where everything should not be
+                st.material.append(f"{s.shape} on the {s.region}")
+                st.notes.append(
+                    f"the {s.shape} is read on the {s.region}, but everything should stay on "
+                    f"the {st.region_all}; say where it goes"
+                )
         specs = [
             s
             if s.region or s.at_x is not None or s.at_y is not None or k in related

@@ -1151,7 +1151,10 @@ _REWRITES += [
     (
         re.compile(
             r"\b(?:anywhere\s+)?(?:except|but|other\s+than|apart\s+from|away\s+from)\s+"
-            r"(?:near|close\s+to|next\s+to)\s+(?:the\s+)?robot\b",
+            r"(?:near|close\s+to|next\s+to)\s+(?:the\s+)?robot\b"
+            # "not too close to the robot", "well away from the robot", "far from the robot"
+            r"|\b(?:not|never)\s+(?:too\s+|so\s+|that\s+|very\s+|right\s+)?(?:near|close)(?:\s+to)?\s+"
+            r"(?:the\s+)?robot\b|\b(?:well\s+away|far(?:\s+away)?)\s+from\s+(?:the\s+)?robot\b",
             re.IGNORECASE,
         ),
         " at the back ",
@@ -1189,6 +1192,8 @@ _REWRITES += [
     ),
     (
         re.compile(
+            # "on the right at the back": a side, not "exactly"
+            r"(?<!\bthe\s)(?<!\bits\s)(?<!\btheir\s)(?<!\bfar\s)"
             r"\bright\s+(?=(?:up|next|behind|in\s+front|in\s+the\s+(?:centre|center|middle)|beside|"
             r"against|at\s+the|by\s+the|over|"
             r"above|below|under|there|here|away|now)\b)",
@@ -1425,8 +1430,9 @@ _REWRITES += [
         re.compile(
             r",?\s*(?:and\s+|with\s+)?(?:the\s+)?(tallest|highest|biggest|largest|longest|shortest|"
             r"lowest|smallest|taller|higher|bigger|larger|longer|shorter|lower|smaller)\s+"
-            r"(?:one|tower|stack|column|pillar|wall|row)?\s*(?:(?:goes|is|"
-            r"stands|should\s+be)\s+)?(?:in\s+the\s+(?:middle|centre|center)|(?:on|at|to)\s+the\s+"
+            r"(?:one|tower|stack|column|pillar|wall|row)?\s*(?:(?:goes|is|stands|sits|should\s+(?:be|go|"
+            r"stand)|(?:has|needs|wants)\s+to\s+(?:be|go|stand)|must\s+(?:be|go|stand))\s+)?"
+            r"(?:in\s+the\s+(?:middle|centre|center)|(?:on|at|to)\s+the\s+"
             r"(left|right|front|back)|(behind|in\s+front))\b",
             re.IGNORECASE,
         ),
@@ -1755,6 +1761,25 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{array_of}",
+        "",
+    ),
+    (  # "a tower as tall as the staircase": the size of the one named before
+        re.compile(
+            r"\b(?:exactly\s+|just\s+)?(?:as|so)\s+(tall|high|long)\s+as\s+(?:the|that|this)\s+"
+            r"(tower|stack|column|pillar|wall|row|staircase|stairs|pyramid|block|slab|platform|line)\b"
+            r"(?:\s+(?:is|was|will\s+be))?",
+            re.IGNORECASE,
+        ),
+        "{as_big_as}",
+        "",
+    ),
+    (  # "a tower behind it, lined up with the middle of the row": beside it is centred on it
+        re.compile(
+            r",?\s*\b(?:(?:lined|lining)\s+up|aligned|centred|centered|in\s+line)\s+(?:with|on|to)\s+"
+            r"(?:the\s+)?(?:middle|centre|center)\s+of\s+(?:it|that|the\s+\w+)(?=\s*(?:$|[,.;]|and\b))",
+            re.IGNORECASE,
+        ),
+        "{centred_beside}",
         "",
     ),
     (  # "four towers of 2 in a 2 x 2 grid", "six stacks in two rows of three": rows by columns

@@ -64,7 +64,10 @@ _PLURALS = "|".join(
 )
 _PLURAL_SHAPES = re.compile(
     r"\b(?:two|three|four|five|\d+|both|pair\s+of|couple\s+of)\s+(?:\w+\s+)?(?:" + _PLURALS + r")\b"
-    r"|\b(?:another|second|identical|copy|same)\b|\bits\b|\bof\s+it\b",
+    r"|\b(?:another|second|identical|copy|same)\b|\bits\b|\bof\s+it\b"
+    # "towers of 3 and 6": a size for each of several
+    r"|\b(?:" + _PLURALS + r")\s+(?:of\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+    r"(?:\s*,\s*\w+)*\s+(?:and|&)\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b",
     re.IGNORECASE,
 )
 

@@ -125,6 +125,8 @@ SIGNIFICANT = _words(
     missing instead demolish demolished destroy destroyed dismantle dismantled
     topple toppled scrap scrapped dozen dozens quit remove removed removing delete deleted forget
     cancel cancelled tear split splitting lift lifted ditch
+    extend extends extended extending lengthen lengthened shorten shortened widen widened
+    enlarge enlarged expand expanded supersede supersedes superseded
     """
 )
 

@@ -106,6 +106,12 @@ PART_NOUN_KEYS = {
 }  # fmt: skip
 
 
+_SECOND_SIZE = frozenset({"levels", "level", "layers", "layer", "high", "tall", "steps", "long",
+                          "wide", "deep", "courses", "storeys", "stories", "tiers"})  # fmt: skip
+"""Words after the second of two numbers said with a comma that make it a size of its own
+("a base of 4, 3 levels high"), not a list ("of 2, 3")."""
+
+
 @dataclass
 class Tok:
     text: str
@@ -1132,6 +1138,15 @@ class _Parser:
                 j += 2
                 if self.word(j) == "and" and self.word(j - 2) == ",":
                     continue
+            if (
+                len(run) == 2
+                and self.word(run[0] + 1) == ","
+                and self.word(run[1] + 1) in _SECOND_SIZE
+                and h.multiplicity <= 1
+                and not h.plural
+            ):  # "a pyramid with a base of 4, 3 levels high": two sizes of one structure
+                k += 1
+                continue
             if len(run) >= 2:
                 h.params["_each"] = [round(t[m].value) for m in run]
                 for m in range(k, j):
