@@ -3948,3 +3948,67 @@ def test_unused_words_that_change_a_structure_are_material():
     r = plan("Keep everything on the right half, the left half is where the forklift goes. "
              "A wall of 5, 2 high.")  # fmt: skip
     assert r.status == "partial"
+
+
+def test_an_operator_changes_and_takes_from_what_was_named():
+    # "changed it to 5", "remove the right one", "take 2 off the left one", "from one end"
+    r = plan("The customer ordered a tower of 7, then called back and changed it to 5.")
+    assert r.status == "success" and [(s.height, s.region) for s in r.spec.structures] == [
+        (5, None)
+    ]
+    r = plan("Three towers of 2, 3 and 4 in a line. Then remove the right one.")
+    assert sorted(s.height for s in r.spec.structures) == [3, 4]  # listed right to left: the 2 goes
+    r = plan(
+        "tower of 4 on the left, tower of 4 on the right, then, hmm, I guess take 2 off "
+        "the left one"
+    )
+    assert r.status == "success"
+    assert sorted((s.region, s.height) for s in r.spec.structures) == [("left", 2), ("right", 4)]
+    r = plan("Lay out a row of 8, then remove 3 cubes from one end.")
+    assert r.status == "success" and r.spec.structures[0].length == 5
+    r = plan("a wall 6 long 2 high, then take 2 cubes off one end")  # one column of two
+    assert r.spec.structures[0].length == 5
+    assert plan("a wall 6 long 2 high, then take 3 cubes off one end").status == "partial"
+    r = plan(
+        "They asked for a 3x3 block two high, and then on reflection they'd like one more "
+        "layer on it."
+    )
+    assert r.status == "success" and r.spec.structures[0].height == 3
+
+
+def test_hesitations_and_a_pronoun_for_the_family_named_before():
+    r = plan("row of 5? no wait, 4 I think. yes 4. along the front")
+    assert r.status == "success" and [(s.length, s.region) for s in r.spec.structures] == [
+        (4, "front")
+    ]
+    r = plan("a tower of... I guess 7? seven's fine")
+    assert r.status == "success" and r.spec.structures[0].height == 7
+    r = plan("Next job: 4-high tower, and a 2-high one right next to it on its left.")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [4, 2]
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "left")]
+    r = plan("a stack double the height of a 3-cube one")  # a measure, not a second stack
+    assert [s.height for s in r.spec.structures] == [6]
+    # "another one 2 high" after a 3x3 slab: that footprint, its own height
+    r = plan("a 3x3 slab 4 high, then another one 2 high next to it")
+    assert [(s.length, s.width, s.height) for s in r.spec.structures] == [(3, 3, 4), (3, 3, 2)]
+    r = plan("put a tower of 2, and another one three times that height beside it")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 6]
+    # a phrasal "back" is no place; articles dropped after a comma
+    assert (
+        read("a tower of 3, I'll get back to you about the rest").spec.structures[0].region is None
+    )
+    r = plan("tower of 4 on the left, tower of 4 on the right")
+    assert r.status == "success" and [s.region for s in r.spec.structures] == ["left", "right"]
+
+
+def test_rows_said_apart_and_places_refused_in_other_words():
+    r = plan("make two rows of six, parallel, with one cube between them")
+    assert (
+        r.status == "success"
+        and [(s.shape, s.length) for s in r.spec.structures] == [("row", 6)] * 2
+    )
+    assert [s.shape for s in plan("two rows of four").spec.structures] == ["grid"]
+    r = plan("wall 5 by 2 but not along the back, the camera is mounted there")
+    assert r.status == "success" and r.spec.structures[0].region == "front"
+    r = plan("They'd like a pyramid of 3 levels, and they specifically don't want it on the left.")
+    assert r.status == "success" and r.spec.structures[0].region == "right"

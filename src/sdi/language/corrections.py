@@ -13,9 +13,9 @@ from sdi.spec import lexicon as lx
 from sdi.spec.numbers import TENS, UNITS
 
 _MARKER = re.compile(
-    r"\s*[,.!;—–-]+\s*no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
+    r"\s*[,.!?;…—–-]+\s*no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
     r"ten)\b))|"  # "a stack of 3 to the left of it - no, to the right", "3 - no 6 -", ". No, 3"
-    r"\s*[,.;:!—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
+    r"\s*[,.;:!?…—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|"
@@ -55,6 +55,12 @@ _FILLER = re.compile(
     re.I,
 )
 
+
+_HEDGE = re.compile(
+    r"\s*,?\s*\b(?:i\s+think|i\s+guess|i\s+reckon|i\s+suppose|i'?d\s+say|probably|maybe|perhaps|"
+    r"or\s+so)\s*$",
+    re.IGNORECASE,
+)
 
 _OF_IT = re.compile(
     r"(?:\s+(?:hand\s+)?side)?\s+of\s+(?:it|that|them|this|those|the\s+\w+(?:\s+\w+)?)$", re.I
@@ -218,7 +224,7 @@ def correct(text: str, notes: list[str]) -> str:
             said, rest = first.group(0), after[first.end() :]
         value = _FILLER.sub("", _NOT_OLD.sub("", said.strip())).strip(" ,.;!?")
         value = _AND_NOT_OLD.sub("", _NOT_OLD_SPOKEN.sub("", value))  # "h=6, not 8"
-        value = _PARTS.sub("", value)
+        value = _PARTS.sub("", _HEDGE.sub("", value))  # "no wait, 4 I think"
         side = _OF_IT.sub("", value)  # "to the right of it": the side of the same relation
         if side != value and _kind(side) == "region":
             value = side

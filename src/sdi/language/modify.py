@@ -70,6 +70,14 @@ MODIFY = [
     ),
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
+    # "then called back and changed it to 5", "change that to 4 high"
+    _op(
+        r"\b(?:change|changed|changes|changing|bump|bumped|drop|dropped|cut|reduce|reduced|increase|"
+        r"increased|up|upped)\s+(?:it|that|them|this|the\s+(?:number|height|size|count))\s+"
+        r"(?:up\s+|down\s+)?(?:to|into)\s+" + _N + r"(?:\s+(?:cubes?|high|tall|long|levels?|steps?|"
+        r"layers?))?\s*(?:instead)?\s*[.!]?\s*$",
+        "=main",
+    ),
     # "Build a tower of 5, then another one of 5 to the right of it. Make the second one 3."
     _op(
         r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last)\s+(?:one|tower|stack|column|"
@@ -143,6 +151,14 @@ MODIFY = [
         + r"\s+(?:cubes?\s+|levels?\s+)?(?:back\s+)?(?:off|away|from\s+the\s+top)\b",
         "-",
     ),
+    # "a row of 8, then remove 3 cubes from one end": a shorter row
+    _op(
+        r"\b(?:take|knock|remove|drop|pull|lose)\s+"
+        + _N
+        + r"\s+(?:cubes?\s+|blocks?\s+|parts?\s+)?(?:off\s+|from\s+|away\s+from\s+)"
+        r"(?:one|the|an|either)\s+(?:end|side)\b",
+        "-",
+    ),
     _op(
         r"\b(?:take|knock|lift|pull)\s+(?:off\s+)?(?:the\s+)?top\s+"
         + _N
@@ -179,9 +195,9 @@ MODIFY = [
     ),
     # "5 towers of 2 in a line, then take away the middle one": one structure fewer
     _op(
-        r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip)\s+the\s+(middle|first|last|"
-        r"tallest|highest|biggest|shortest|lowest|smallest)\s+(?:one|tower|stack|column|pillar|row|"
-        r"wall)\b",
+        r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch)\s+the\s+(middle|first|"
+        r"last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+"
+        r"(?:one|tower|stack|column|pillar|row|wall)\b",
         "drop",
     ),
     # "a tower on the left and a wall on the right. Actually forget the wall.": that one, gone
@@ -408,6 +424,11 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
             return None  # one structure, or no single middle one
         at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
         index = target.first + at
+    elif which in ("left", "right", "front", "back"):
+        found_at = _by_side(which, built, structures)
+        if found_at is None:
+            return None
+        index = found_at
     else:
         indices = [q.first + k for q in built for k in range(q.count)]
         heights = {i: structures[i].height for i in indices if structures[i].shape == "tower"}
@@ -428,6 +449,23 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     left = sum(q.count for q in built)
     size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
     return f"{left} left of the {left + 1}{size}"
+
+
+def _by_side(side: str, built: list[Phrase], structures: list[StructureDraft]) -> int | None:
+    """The one structure built so far that stands on `side`: the only one placed in a region
+    with that side, or, of structures placed by SDI side by side (listed from right to left),
+    the first (right) or the last (left). None when no single one is meant."""
+    every = [q.first + k for q in built for k in range(q.count)]
+    placed = [i for i in every if side in (structures[i].region or "").split()]
+    if len(placed) == 1:
+        return placed[0]
+    free = all(
+        structures[i].region is None and structures[i].at_x is None and structures[i].at_y is None
+        for i in every
+    )
+    if placed or not free or len(every) < 2 or side not in ("left", "right"):
+        return None
+    return every[0] if side == "right" else every[-1]
 
 
 def _drop_family(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
@@ -508,7 +546,17 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     target = built[-1]
     index = _last_index(built)
     ordinal = re.search(r"\bthe\s+(first|second|third|fourth|last)\b", p.text, re.I)
-    if ordinal and target.count > 1:
+    sided = re.search(
+        r"\bthe\s+(left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|column|pillar|row|wall)\b",
+        p.text,
+        re.I,
+    )
+    on_side = _by_side(sided.group(1).lower(), built, structures) if sided else None
+    if sided and on_side is None:
+        return None  # "take 2 off the left one" with no single one on the left: said, unused
+    if on_side is not None:
+        index = on_side
+    elif ordinal and target.count > 1:
         pick = {"first": 0, "second": 1, "third": 2, "fourth": 3, "last": target.count - 1}
         if pick[ordinal.group(1).lower()] >= target.count:
             return None  # "the third one" of two: no such structure
@@ -561,6 +609,12 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         and not re.search(r"\b(?:on\s+top|higher|taller|lower|up|layers?|levels?)\b", p.text, re.I)
     ):
         key = "length"  # "a row of 5, then extend it by two more cubes at the same end"
+        high = last.height or 1
+        in_cubes = re.search(r"\b(?:cubes?|blocks?|parts?)\b", p.text)
+        if last.shape == "wall" and high > 1 and in_cubes:
+            if n % high:
+                return None  # "take 3 cubes off one end" of a wall 2 high: no whole columns
+            n //= high  # cubes off an end of a wall 2 high: whole columns
     key = key or ("steps" if last.shape == "staircase" else "height")
     metres = getattr(last, f"{key}_m", None)  # "stack it up to 10 inches": in whole parts
     said = getattr(last, key) or (round(metres / part_m) if metres else None)

@@ -69,6 +69,7 @@ _PLACE_GLOSS = re.compile(
 
 
 _FAMILY_SAID = shape_alternation(min_len=3)
+_SHAPE_NOUNS = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES and len(w) > 2)
 
 
 # "a tower x3", "pyramid ×2": that many of it (not a coordinate: "x 3" and "x=3" have a space
@@ -343,6 +344,37 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "Row 1: Wall, L=5 … Row 2: same wall", "Line 3: Tower": a line of a list, not a row
     (re.compile(r"(?:^|(?<=[.;|\n]))\s*(?:row|line|item|entry|pos(?:ition)?|no\.?|#)\s*\d{1,2}\s*[:)]\s+",
                 re.I), " "),
+    # "a 4-high tower and a 2-high one": one of the family named before, that size
+    (re.compile(r"(?<!\bof\s)(?<!\bthan\s)(?<!\bas\s)\b(an?|another|one\s+more)\s+((?:\d+|two|three|four|"
+                r"five|six|seven|eight|nine|ten)[- ](?:high|tall|long|wide|cubes?|blocks?|steps?|"
+                r"levels?|"
+                r"layers?|stor(?:e?y|eys|ies)))\s+"
+                r"one\b(?!\s+(?:of|cube|block)\b)", re.I),
+     lambda m: (lambda fam: f"{m.group(1)} {m.group(2)} {fam}" if fam else m.group(0))(
+         next((w for w in reversed(re.findall(r"[a-z]+", m.string[: m.start()].lower()))
+               if w in _SHAPE_NOUNS), None))),
+    # "called back and changed it", "I'll get back to you", "come back later": no place
+    (re.compile(r"\b((?:call|called|calling|ring|rang|phone|phoned|text|texted|e-?mail|e-?mailed|write|wrote|"
+                r"get|gets|got|getting|come|comes|came|coming|go|goes|went|going|report|reported|hear|heard|"
+                r"be|been|check|checking|hold|held|step|stepped)\s+)back\b(?=\s*(?:$|[,.;!?]|to\b|later\b|"
+                r"soon\b|in\s+a\b|with\b|after\b|and\b|tomorrow\b|then\b))", re.I), r"\1"),
+    # "4 I think. yes 4.", "I guess 7? seven's fine": a number said again to confirm it
+    (re.compile(r"(?<=[.?!])\s*(?:yes|yeah|yep|ok|okay|right)\s*,?\s*(?:\d+|one|two|three|four|five|six|"
+                r"seven|eight|nine|ten)\s*(?=[.!]|$)", re.I), " "),
+    (re.compile(r"(?<=[.?!,])\s*(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:'s|\s+is)\s+"
+                r"(?:fine|good|ok|okay|right|it)\b\s*(?=[.!,]|$)", re.I), " "),
+    # "then they'd like one more layer on it": add one
+    (re.compile(r"\b(?:(?:i|we|they|he|she|you|customer|client)\s*(?:'d|would)\s+(?:also\s+)?like|"
+                r"(?:i|we|they)\s+(?:also\s+)?(?:want|need)|(?:he|she|it)\s+(?:also\s+)?(?:wants|needs))\s+"
+                r"(?=(?:one\s+more|another|an\s+extra|(?:\d+|two|three)\s+more)\s+(?:layer|level|course|tier|"
+                r"cube|block|step|row)s?\b)", re.I), "add "),
+    # "two rows of six, parallel, with one cube between them": separate rows, not one floor
+    (re.compile(r"\b(two|three|2|3)\s+(rows|lines|walls)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|"
+                r"ten)(?:\s+(?:cubes|blocks|bricks))?(?:\s+each)?(?=[^.;]*\b(?:parallel|between\s+them)\b)"
+                r"(?![^.;]*\b(?:one\s+behind|in\s+front|side\s+by\s+side|end\s+to\s+end)\b)", re.I),
+     lambda m: ", ".join([f"a {m.group(2)[:-1]} of {m.group(3)}"]
+                         + [f"another {m.group(2)[:-1]} of {m.group(3)}"]
+                         * (2 if m.group(1).lower() in ("three", "3") else 1))),
     # "Loc: back left", "Loc back left": a location field
     (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
                 r"middle)\b)", re.I), "at the "),
@@ -1311,8 +1343,14 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _DECIMAL_COMMA_UNIT.sub(unit_comma, text)
 
     def reference(m: re.Match[str]) -> str:
-        if re.search(r"\d\s*x\s*\d", m.group(0), re.I) or re.match(
-            r"\s*(?:x|by|cubes?|blocks?|bricks?|parts?|high|tall|long|wide|levels?|layers?)\b",
+        sized = re.search(  # "Next job: 4-high tower"
+            r"\d-(?:high|tall|long|wide|deep|cubes?|blocks?|levels?|layers?|steps?|tier)$",
+            m.group(0),
+            re.I,
+        )
+        if sized or re.search(r"\d\s*x\s*\d", m.group(0), re.I) or re.match(
+            r"\s*-?\s*(?:x|by|cubes?|blocks?|bricks?|parts?|high|tall|long|wide|levels?|layers?|steps?|"
+            r"stor(?:ey|y|eys|ies))\b",
             m.string[m.end() :],
             re.I,
         ):

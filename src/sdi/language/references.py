@@ -36,6 +36,15 @@ def copies(
         first = next((o for o in reversed(pool) if o.shape == s.shape), None)
         if first is None:
             continue
+        if said and set(said) <= {"height", "height_m"} and first.shape == s.shape:
+            # "a 3x3 slab 4 high, then another one 2 high": its footprint, a height of its own
+            footprint = first.model_dump(include={"length", "width", "dims", "length_m", "width_m"},
+                                         exclude_defaults=True)  # fmt: skip
+            if footprint:
+                out[k] = s.model_copy(update=footprint)
+                st.notes.append(f"another {s.shape}: the same footprint as the first, "
+                                + ", ".join(f"{key} {v}" for key, v in said.items()))  # fmt: skip
+                continue
         if said and not _BUT.search(text):
             same = all(getattr(first, key) == v for key, v in said.items())
             if same and s.axis is None and first.axis:  # "a second row of 4": the same way

@@ -46,8 +46,8 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     (  # "bridge with pillars 3 high", "arch w/ legs of 4": a structure named first, no article
         # (the parser takes "bridge" for the verb)
         re.compile(
-            r"(^|[.;!?:\n]\s*)(bridge|arch|gate|tower|wall|pyramid|staircase|"
-            r"canopy|ring|castle|slab|platform|column)\s+"
+            r"(^|[.;!?:\n]\s*|,\s*(?:and\s+|then\s+)?|\b(?:and|then)\s+)(bridge|arch|gate|tower|wall|pyramid|"
+            r"staircase|canopy|ring|castle|slab|platform|column)\s+"
             r"(?=(?:with|w/|on|of|at|in|from|made)\b|(?<!tower\s)\d+\s*(?:x|by)\s*\d)",
             re.IGNORECASE,
         ),
@@ -174,6 +174,18 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
             r"\b(?:it|they|the\s+\w+)\s+(?:shall|should|must|may|will|is\s+to|are\s+to|can)\s+not\s+"
             r"(?:be\s+)?(?:placed|put|built|set|standing|located|positioned|erected|go)\s+"
             r"(?:anywhere\s+)?(?:on|at|in|along|near|against|by)\s+the\s+(left|right|front|back)"
+            r"(?:\s+(?:edge|side|half|part|end))?(?:\s+of\s+the\s+(?:table|workspace|cell|bench))?",
+            re.IGNORECASE,
+        ),
+        " on the {opposite} ",
+        "read '{0}' as on the {opposite}",
+    ),
+    (  # "they don't want it on the left", "but not along the back": at the other side
+        re.compile(
+            r"(?:\b(?:(?:do|does|did)\s+not|don'?t|doesn'?t)\s+(?:really\s+|particularly\s+)?(?:want|need|"
+            r"like)\s+(?:it|them|the\s+\w+|anything)\s+(?:to\s+(?:be|go|stand)\s+)?(?:anywhere\s+)?"
+            r"|(?<=[\w\d])\s*,?\s+but\s+not\s+)"
+            r"(?:on|at|in|along|near|against|by)\s+the\s+(left|right|front|back)"
             r"(?:\s+(?:edge|side|half|part|end))?(?:\s+of\s+the\s+(?:table|workspace|cell|bench))?",
             re.IGNORECASE,
         ),
@@ -1976,7 +1988,9 @@ _REWRITES += [
     ),
     (  # "one half its height", "twice the height": the number said last, changed
         re.compile(
-            r"\b(twice|double|half)\s+(?:of\s+)?(?:its|the|their)\s+(height)\b(?!\s+of)", re.I
+            r"\b(twice|double|half|(?:\d+|two|three|four|five)\s+times)\s+(?:of\s+)?(?:its|the|their|that)\s+"
+            r"(height)\b(?!\s+of)",
+            re.I,
         ),
         "{compared}",
         "",
