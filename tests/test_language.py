@@ -4012,3 +4012,47 @@ def test_rows_said_apart_and_places_refused_in_other_words():
     assert r.status == "success" and r.spec.structures[0].region == "front"
     r = plan("They'd like a pyramid of 3 levels, and they specifically don't want it on the left.")
     assert r.status == "success" and r.spec.structures[0].region == "right"
+
+
+def test_a_plan_view_and_everyday_step_and_gap_words():
+    # a drawing seen from above, the robot at the bottom: top is the back
+    r = plan("On the drawing of the table, the tower (4 high) is top left and the 2x2 square "
+             "(one high) is bottom right.")  # fmt: skip
+    assert r.status == "success"
+    assert [s.region for s in r.spec.structures] == ["back left", "front right"]
+    r = plan("a 3x3 slab with a cube on its top left corner")  # its own corner, on top
+    assert [(x.kind, x.at) for x in r.spec.relations] == [("on_top_of", "back left corner")]
+    # a step's rise said in units is one part; a rise SDI cannot build is said
+    r = plan("Staircase with six 5 cm steps.")
+    assert r.status == "success" and r.spec.structures[0].steps == 6
+    assert plan("Staircase 150 mm high, 50 mm steps.").status == "success"
+    assert plan("a staircase with 10 cm steps").status == "partial"
+    # a gap with its distance after a fronted structure keeps the side said
+    r = plan("a wall 5 long. a 3 high tower 5 cm behind it")
+    assert [(x.subject, x.object, x.side) for x in r.spec.relations] == [(1, 0, "back")]
+    r = plan("First, build a tower of four at the front right. After that, put a tower of two "
+             "directly behind it, a cube apart. Finally, put a tower of three directly to the "
+             "left of the first one, also a cube apart.")  # fmt: skip
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [4, 2, 3]
+    # "a row of three cubes between them" is the row's size, not a gap
+    r = plan("two towers of 3, then put a row of three cubes between them")
+    assert not any("0.15 m" in n for n in r.notes)
+
+
+def test_one_more_structure_a_described_bridge_and_a_sized_rectangle():
+    r = plan("two towers of three and one tower of five")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 3, 5]
+    r = plan("two towers, one of 3 and one of 5")  # each of the two named
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 5]
+    r = plan("Hello! Would it be possible to build a little bridge — two towers of two cubes with "
+             "one of those long beams laid across the top? Thank you so much.")  # fmt: skip
+    assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
+        ("bridge", 2)
+    ]
+    r = plan("Could I please have a dozen cubes laid out as a flat rectangle, two rows of six?")
+    assert r.status == "success" and [(s.shape, s.length, s.width) for s in r.spec.structures] == [
+        ("grid", 6, 2)]  # fmt: skip
+    r = plan(
+        "I'd like a tower of three, please — oh, actually, could it be a tower of five instead?"
+    )
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [5]

@@ -44,6 +44,8 @@ from sdi.bench.language_dev26 import CASES as DEV26
 from sdi.bench.language_dev27 import CASES as DEV27
 from sdi.bench.language_dev28 import CASES as DEV28
 from sdi.bench.language_dev29 import CASES as DEV29
+from sdi.bench.language_dev30 import CASES as DEV30
+from sdi.bench.language_dev31 import CASES as DEV31
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -287,6 +289,8 @@ SETS = {
     "dev27": (DEV27, 170, 8, 15),
     "dev28": (DEV28, 180, 8, 15),
     "dev29": (DEV29, 180, 8, 15),
+    "dev30": (DEV30, 180, 8, 15),
+    "dev31": (DEV31, 180, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -310,6 +314,8 @@ HARD = {
     "dev27": ("relation", "numbers", "dimensions", "sequence"),
     "dev28": ("relation", "numbers", "dimensions", "sequence"),
     "dev29": ("relation", "numbers", "dimensions", "sequence"),
+    "dev30": ("relation", "numbers", "dimensions", "sequence"),
+    "dev31": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -427,6 +433,8 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev27.py",
         "language_dev28.py",
         "language_dev29.py",
+        "language_dev30.py",
+        "language_dev31.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

@@ -50,7 +50,9 @@ _AND_NOT_OLD = re.compile(rf"\s*,?\s*(?:and\s+)?not\s+{_NUMBER}(?:\s+[a-z]+)?$",
 
 _NOT_OLD = re.compile(r"^(?:no\s*,?\s*)?not\s+[^,;.]+?\s*[,;]\s*|^no\s*,\s*", re.IGNORECASE)
 _FILLER = re.compile(
-    r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|the|a|"
+    r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|"
+    r"(?:could|can|would)\s+(?:it|that|we|you)\s+(?:be|make\s+it|do|have)|how\s+about|let'?s\s+(?:do|make)|"
+    r"the|a|"
     r"an|to|on|at|in|of|with)\s+)+",
     re.I,
 )
@@ -130,7 +132,8 @@ def _with_dimension(before: str, value: str, rest: str, notes: list[str]) -> str
 _CLAUSE_CUT = re.compile(r"[.;:!?]\s*|,\s*(?:and\s+|then\s+)?|\s+(?:and|then)\s+", re.IGNORECASE)
 _MAKE_IT = re.compile(
     r"^(?:(?:make|change|turn)\s+(?:it|that|this)\s+(?:into\s+|to\s+)?|"
-    r"(?:it\s+should\s+be|let'?s\s+(?:do|have|make|build)|i\s+want|we\s+need|build|have)\s+)",
+    r"(?:it\s+should\s+be|let'?s\s+(?:do|have|make|build)|i\s+want|we\s+need|build|have|"
+    r"(?:could|can|would)\s+(?:it|that|we|you)\s+(?:be|make\s+it|do|have)|how\s+about)\s+)",
     re.IGNORECASE,
 )
 _ADDED = re.compile(r"\b(?:too|as\s+well|also|another|more|plus)\b", re.IGNORECASE)

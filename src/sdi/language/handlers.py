@@ -354,6 +354,19 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+def _top_left(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "top left of the drawing", "in the bottom right corner": a plan seen from above with the
+    robot at the bottom — top is the back, bottom the front."""
+    said, groups = _said(m)
+    side = "back" if groups[0] in ("top", "upper") else "front"
+    st.notes.append(f"read '{said}' as the {side} {groups[1]} (seen from above, the robot at "
+                    "the bottom)")  # fmt: skip
+    before = m.string[: m.start()]
+    placed = re.search(r"\b(?:the|at|in|on|its|their|each|every)\s*$", before, re.I)
+    lead = "" if placed else " at the"
+    return f"{lead} {side} {groups[1]}{groups[2]} "
+
+
 def _centred_beside(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a tower behind it, lined up with the middle of the row": a structure set beside
     another stands centred on it already; with no such relation the words stay (and are
@@ -1014,6 +1027,7 @@ HANDLERS: dict[str, Handler] = {
     "{array_of}": _array_of,
     "{grid_of}": _grid_of,
     "{centred_beside}": _centred_beside,
+    "{top_left}": _top_left,
     "{as_big_as}": _as_big_as,
     "{all_different}": _all_different,
     "{listing}": _listing,

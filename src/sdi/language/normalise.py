@@ -69,6 +69,8 @@ _PLACE_GLOSS = re.compile(
 
 
 _FAMILY_SAID = shape_alternation(min_len=3)
+_ONE_OF_EACH = re.compile(r"\bone\s+(?:of|with|tower|stack|wall|row)\b(?![^.;]*[.;])", re.I)
+"""'two towers, one of 3 and one of 5': the first of a list naming each one."""
 _SHAPE_NOUNS = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES and len(w) > 2)
 
 
@@ -375,6 +377,31 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: ", ".join([f"a {m.group(2)[:-1]} of {m.group(3)}"]
                          + [f"another {m.group(2)[:-1]} of {m.group(3)}"]
                          * (2 if m.group(1).lower() in ("three", "3") else 1))),
+    # "two towers of three and one tower of five", "two of 3 and one of 5": one more structure
+    # (not "two towers, one of 3 and one of 5", which names each of them)
+    (re.compile(r"(?<=\d|[a-z])(\s*,?\s+and\s+)one\s+(?=(?:tower|stack|column|pillar|wall|row|pyramid|"
+                r"staircase|bridge|arch|slab|ring|castle)s?\b)", re.I),
+     lambda m: m.group(0) if _ONE_OF_EACH.search(m.string[: m.start()]) else f"{m.group(1)}a "),
+    (re.compile(r"(?<=\d|[a-z])(\s*,?\s+and\s+)one\s+(?=(?:of|with)\s+(?:\d|one|two|three|four|five|six|"
+                r"seven|eight|nine|ten)\b)", re.I),
+     lambda m: m.group(0) if _ONE_OF_EACH.search(m.string[: m.start()])
+     else f"{m.group(1)}another "),
+    # "one of those long beams laid across the top": a beam across the top
+    (re.compile(r"\bone\s+of\s+(?:those|these|the|your|them)\s+(?:(?:long|big|heavy|large)\s+)?"
+                r"(beam|plank|bar)s\b", re.I), r"a \1"),
+    (re.compile(r"\b(?:long|big|heavy|large)\s+(?=(?:beam|plank)s?\b)", re.I), ""),
+    (re.compile(r"\b(?:laid|placed|set|sitting|resting|lying|going|running|laying)\s+(?=(?:across|over)\s+"
+                r"(?:the\s+)?(?:top|tops|them|both|it)\b(?!\s+of\b))", re.I), ""),
+    # "a little bridge — two towers of two with a beam across the top": the bridge, described
+    (re.compile(r"\b(?:an?\s+)?(?:(?:little|small|simple|basic|nice|big)\s+)?(?:bridge|gate|gateway|arch)\s*"
+                r"(?:[—–(]|\s-)\s*(?=(?:two|2)\s+(?:towers|stacks)\b[^.?!]*\b(?:beams?|bar|lintel)\s+"
+                r"(?:\w+\s+)?(?:across|over)\b)", re.I), ""),
+    # "a flat rectangle, two rows of six": the rectangle's own size, said after it
+    (re.compile(r"\b(rectangle|square|slab|grid|floor|pad|platform|plate|mat|patch|block)\s*[,:—–-]\s*"
+                r"(?:in\s+)?(two|three|four|five|six|[2-6])\s+rows\s+of\s+(two|three|four|five|six|seven|"
+                r"eight|nine|ten|\d+)\b(?!\s+(?:cubes?\s+)?(?:each\s+)?(?:high|tall|layers?|levels?))",
+                re.I),
+     r"\1 of \2 rows of \3"),
     # "Loc: back left", "Loc back left": a location field
     (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
                 r"middle)\b)", re.I), "at the "),
@@ -595,7 +622,7 @@ def _side_of(m: re.Match[str]) -> str:
 # "a row of 5. then another row 1 cube to the left": to the left of the one before, that far
 _OFFSET_FROM_LAST = re.compile(
     r"\b(\d+(?:\.\d+)?|a|one|two|three|four|five)\s+(cubes?|parts?|blocks?|mm|cm)\s+(?:to\s+the\s+"
-    r"(left|right)|(behind|in\s+front))\b(?!\s+(?:of|side|edge|half|corner|end)\b)",
+    r"(left|right)|(behind|in\s+front))\b(?!\s+(?:of|side|edge|half|corner|end|it|them|that|this|the)\b)",
     re.IGNORECASE,
 )
 

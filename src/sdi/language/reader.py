@@ -530,7 +530,8 @@ _THINGS = re.compile(
     re.IGNORECASE,
 )
 _RISE = re.compile(
-    r",?\s*\b(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:rise|risers?|step\s+height)(?:\s+(?:each|per\s+step))?\b",
+    r",?\s*\b(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:rise|risers?|step\s+height|(?=steps\b))"
+    r"(?:\s+(?:each|per\s+step))?\b",
     re.IGNORECASE,
 )
 
@@ -548,7 +549,7 @@ def _step_rise(text: str, st: ReadState) -> str:
         st.notes.append(f"ignored '{said}': each step rises one part ({st.cell.cube[2]:g} m)")
     else:
         st.notes.append(f"read '{said}' as each step one part high")
-    return text[: m.start()] + text[m.end() :]
+    return text[: m.start()] + " " + text[m.end() :]
 
 
 _OPENING = re.compile(

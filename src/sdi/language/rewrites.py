@@ -43,6 +43,19 @@ _REJECT_IF = (
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "top left of the drawing", "bottom right": seen from above, the robot at the bottom
+        re.compile(
+            r"\b(?:the\s+)?(top|upper|bottom|lower)[\s-]+(left|right)(?:[\s-]+hand)?(\s+corner)?\b"
+            r"(?!\s+(?:cube|block|part|step|brick|one)s?\b)"
+            r"(?!\s+(?:corner\s+)?of\s+(?:the\s+|its\s+|each\s+)?(?:wall|tower|slab|block|pyramid|staircase|grid|"
+            r"row|structure|base|platform|it|them)\b)"
+            r"(?:\s+(?:of|on|in)\s+the\s+(?:drawing|page|sketch|plan|diagram|picture|table|napkin|"
+            r"paper|workspace))?",
+            re.IGNORECASE,
+        ),
+        "{top_left}",
+        "",
+    ),
     (  # "bridge with pillars 3 high", "arch w/ legs of 4": a structure named first, no article
         # (the parser takes "bridge" for the verb)
         re.compile(

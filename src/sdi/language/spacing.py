@@ -225,6 +225,8 @@ def take_gap(text: str, st: ReadState) -> str:
         return text
     part_m = st.cell.cube[0]
     m = _GAP.search(text)
+    if m is not None and re.search(r"\b(?:of|with)\s*$", text[: m.start()], re.I):
+        m = None  # "put a row of three cubes between them": the row's size, not a gap
     if not _several(text) and not (m is not None and _RELATED.search(text[: m.start()])):
         return text  # "a bridge, its pillars 2 cubes apart": the bridge's own span
     if m is not None:
@@ -240,6 +242,15 @@ def take_gap(text: str, st: ReadState) -> str:
                 text[m.end() :],
                 flags=re.I,
             )
+            # "… a cube apart. Finally … also a cube apart": the same gap, said again
+            said = re.escape(m.group(0).strip(" ,"))
+            again = re.compile(
+                r",?\s*\b(?:also|again|too|as\s+well)?\s*"
+                + said
+                + r"(?:\s+(?:also|again|too|as\s+well))?",
+                re.I,
+            )
+            rest = again.sub(" ", rest)
             return text[: m.start()] + " " + rest  # "one cube gap each": the same gap
     v = _VAGUE.search(text)
     if v is not None:

@@ -1133,6 +1133,7 @@ class _Parser:
                 and self.is_num(j + 1)
                 and not t[j + 1].used
                 and self.word(j + 2) not in lx.SHAPE_WORDS  # "… of 3 and one tower of 5"
+                and not (self.word(j + 1) in ("one", "1") and self.word(j + 2) in ("of", "with"))
             ):
                 run.append(j + 1)
                 j += 2
