@@ -4056,3 +4056,30 @@ def test_one_more_structure_a_described_bridge_and_a_sized_rectangle():
         "I'd like a tower of three, please — oh, actually, could it be a tower of five instead?"
     )
     assert r.status == "success" and [s.height for s in r.spec.structures] == [5]
+
+
+def test_distances_from_the_table_edges_and_corners_on_one_side():
+    r = plan("15 cm tower, its centre 10 cm from the front edge and 15 cm from the left edge.")
+    (s,) = r.spec.structures
+    assert r.status == "success" and (s.at_x, s.at_y) == (0.3, 0.4)
+    (s,) = plan(
+        "From the left edge 10 cm, from the back edge 10 cm: a 10 cm tower."
+    ).spec.structures
+    assert (s.at_x, s.at_y) == (0.7, 0.45)
+    r = plan("First a tower of three in each back corner. After that, a tower of two in each front "
+             "corner.")  # fmt: skip
+    assert r.status == "success"
+    assert sorted((s.region, s.height) for s in r.spec.structures) == [
+        ("back left", 3), ("back right", 3), ("front left", 2), ("front right", 2)]  # fmt: skip
+
+
+def test_people_counted_a_round_likeness_and_sizes_in_units_before_the_noun():
+    r = plan("I hope I'm not holding up the queue — my grandson is waiting outside with his two "
+             "sisters. Could you make a row of three cubes for him to see?")  # fmt: skip
+    assert r.status == "success" and [(s.shape, s.length) for s in r.spec.structures] == [
+        ("row", 3)
+    ]
+    r = plan("Could you build a cone, please, about fifteen centimetres high?")
+    assert any("cone" in n and "stepped" in n for n in r.notes)  # said, not silently squared
+    r = plan("Two 15 cm towers with a 10 cm gap between them.")
+    assert r.status == "success" and len(r.spec.structures) == 2

@@ -114,6 +114,8 @@ def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
         noun = tok.head.lower_
         if noun in lx.AMBIGUOUS_SHAPES or noun in lx.STEP_WORDS or not noun.endswith("s"):
             continue
+        if doc[tok.i + 1].lower_ in lx.UNITS_M:
+            continue  # "two 15 cm towers": a size in units, not how many
         value = words_to_numbers([tok.lower_])[0]
         if value.isdigit() and int(value) >= 2:
             cues.append((f"{tok.text} {tok.head.text}", lx.SHAPE_WORDS[noun], int(value)))

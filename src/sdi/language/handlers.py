@@ -354,6 +354,28 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+def _from_edge(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "its centre 10 cm from the front edge", "15 cm in from the left edge": the footprint
+    centre that far from that edge of the workspace (the edges of the table SDI knows)."""
+    said, groups = _said(m)
+    if groups[0]:
+        value, unit, edge = groups[0], groups[1], groups[2]
+    else:
+        value, unit, edge = groups[4], groups[5], groups[3]
+    metres = float(value) * {"mm": 0.001, "cm": 0.01, "m": 1.0}[unit]
+    ws = st.cell.workspace
+    axis, line, sign = {
+        "front": ("x", ws.x_min, 1), "back": ("x", ws.x_max, -1),
+        "right": ("y", ws.y_min, 1), "left": ("y", ws.y_max, -1),
+    }[edge]  # fmt: skip
+    at = line + sign * metres
+    if not (ws.x_min <= at <= ws.x_max if axis == "x" else ws.y_min <= at <= ws.y_max):
+        return m.group(0)  # past the other edge: left to the rest (and reported)
+    st.notes.append(f"read '{said}' as its centre at {axis} = {at:.3f} m (the {edge} edge of the "
+                    f"workspace is at {axis} = {line:g} m)")  # fmt: skip
+    return f" , at {axis} = {round(at, 4)} m , "
+
+
 def _top_left(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "top left of the drawing", "in the bottom right corner": a plan seen from above with the
     robot at the bottom — top is the back, bottom the front."""
@@ -1028,6 +1050,7 @@ HANDLERS: dict[str, Handler] = {
     "{grid_of}": _grid_of,
     "{centred_beside}": _centred_beside,
     "{top_left}": _top_left,
+    "{from_edge}": _from_edge,
     "{as_big_as}": _as_big_as,
     "{all_different}": _all_different,
     "{listing}": _listing,

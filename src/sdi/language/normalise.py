@@ -402,6 +402,20 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"eight|nine|ten|\d+)\b(?!\s+(?:cubes?\s+)?(?:each\s+)?(?:high|tall|layers?|levels?))",
                 re.I),
      r"\1 of \2 rows of \3"),
+    # "my grandson and his two sisters", "the 3 visitors": people counted, not parts
+    (re.compile(r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|twelve|twenty)\s+(?=(?:sisters|brothers|"
+                r"kids|children|grandchildren|grandsons|granddaughters|sons|daughters|friends|colleagues|guests|"
+                r"visitors|people|persons|customers|clients|students|pupils|operators|engineers|managers|"
+                r"girls|boys|men|women|adults|parents|families|engineers|apprentices|trainees|staff)\b)",
+                re.I), ""),
+    # "a tower of three in each back corner": the back left and the back right corner
+    (re.compile(r"\b((?:an?|one)\s+[^,.;]{1,40}?)\s+(?:in|at|on)\s+(?:each|both|either)\s+(?:of\s+the\s+)?"
+                r"(back|front|left|right)(?:[\s-]hand)?\s+corners?\b(?!\s+of\s+(?:it|the\s+(?!table)))",
+                re.I),
+     lambda m: (lambda a, b: f"{m.group(1)} in the {a} corner and {m.group(1)} in the {b} corner")(
+         *({"back": ("back left", "back right"), "front": ("front left", "front right"),
+            "left": ("front left", "back left"), "right": ("front right", "back right")}[
+             m.group(2).lower()]))),
     # "Loc: back left", "Loc back left": a location field
     (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
                 r"middle)\b)", re.I), "at the "),
@@ -1375,11 +1389,15 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             m.group(0),
             re.I,
         )
-        if sized or re.search(r"\d\s*x\s*\d", m.group(0), re.I) or re.match(
-            r"\s*-?\s*(?:x|by|cubes?|blocks?|bricks?|parts?|high|tall|long|wide|levels?|layers?|steps?|"
-            r"stor(?:ey|y|eys|ies))\b",
-            m.string[m.end() :],
-            re.I,
+        if (
+            sized
+            or re.search(r"\d\s*x\s*\d", m.group(0), re.I)
+            or re.match(
+                r"\s*-?\s*(?:x|by|cubes?|blocks?|bricks?|parts?|high|tall|long|wide|levels?|layers?|steps?|"
+                r"stor(?:ey|y|eys|ies))\b",
+                m.string[m.end() :],
+                re.I,
+            )
         ):
             # "short version: 3x3 slab", "item: 4 cubes": the label goes, the size stays
             number = re.search(r"\d", m.group(0))

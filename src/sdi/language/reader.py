@@ -143,6 +143,12 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]
+    for word in dict.fromkeys(re.findall(r"[a-z]+", command.lower())):
+        family = _ROUND_LIKENESS.get(word)
+        if family and any(s.shape == family for s in specs):
+            # "a cone about 15 cm high": cubes cannot make it round; the nearest is stepped
+            st.notes.append(f"read '{word}' as a {family}: cubes cannot make a round {word}, "
+                            f"so it is stepped")  # fmt: skip
     if st.region_all:
         related = {r.subject for r in relations}
         opposite = lx.OPPOSITE_SIDE.get(st.region_all.split()[-1])
@@ -529,6 +535,9 @@ _THINGS = re.compile(
     r"(?:things|structures|items|objects|shapes|builds|models)\b|\bquantity\s+(two|three|four|five|[2-5])\b",
     re.IGNORECASE,
 )
+_ROUND_LIKENESS = {"cone": "pyramid", "cones": "pyramid"}
+"""Round things the lexicon reads as a family of cubes: said, not silently squared."""
+
 _RISE = re.compile(
     r",?\s*\b(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:rise|risers?|step\s+height|(?=steps\b))"
     r"(?:\s+(?:each|per\s+step))?\b",

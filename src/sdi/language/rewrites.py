@@ -43,6 +43,18 @@ _REJECT_IF = (
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "its centre 10 cm from the front edge", "from the left edge 10 cm": a coordinate
+        re.compile(
+            r"(?:,\s*)?(?:(?:with\s+)?its\s+(?:centre|center)\s+|centred\s+|(?:placed\s+|set\s+)?)?"
+            r"(?:(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:in\s+|away\s+|back\s+)?from\s+the\s+(front|back|left|right)"
+            r"(?:[\s-]hand)?\s+(?:edge|side)"
+            r"|from\s+the\s+(front|back|left|right)(?:[\s-]hand)?\s+(?:edge|side)\s*,?\s*(\d+(?:\.\d+)?)\s*"
+            r"(mm|cm|m))(?:\s+of\s+the\s+(?:table|workspace|bench|cell))?(?:\s+to\s+its\s+(?:centre|center))?",
+            re.IGNORECASE,
+        ),
+        "{from_edge}",
+        "",
+    ),
     (  # "top left of the drawing", "bottom right": seen from above, the robot at the bottom
         re.compile(
             r"\b(?:the\s+)?(top|upper|bottom|lower)[\s-]+(left|right)(?:[\s-]+hand)?(\s+corner)?\b"
@@ -1990,7 +2002,7 @@ _REWRITES += [
         "left out what is not wanted: '{0}'",
     ),
     (
-        re.compile(r"\b(?:actually|sorry|oops|wait)\s*,?\s*(?:no\s*,?)?", re.IGNORECASE),
+        re.compile(r"\b(?:actually|sorry|oops|wait)\b\s*,?\s*(?:no\b\s*,?)?", re.IGNORECASE),
         " then ",
         "",
     ),
