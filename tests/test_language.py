@@ -4083,3 +4083,28 @@ def test_people_counted_a_round_likeness_and_sizes_in_units_before_the_noun():
     assert any("cone" in n and "stepped" in n for n in r.notes)  # said, not silently squared
     r = plan("Two 15 cm towers with a 10 cm gap between them.")
     assert r.status == "success" and len(r.spec.structures) == 2
+
+
+def test_parts_taken_off_an_end_or_the_top_and_sizes_changed_in_units():
+    r = plan("First build a row of six along the front, left to right. After that, take the two "
+             "cubes off its left end.")  # fmt: skip
+    assert r.status == "success" and r.spec.structures[0].length == 4
+    r = plan("Build a tower of seven. Then remove the top two cubes.")
+    assert r.status == "success" and r.spec.structures[0].height == 5
+    r = plan("Build a 30 cm tower. Then shorten it by 10 cm.")
+    assert r.status == "success" and r.spec.structures[0].height == 4
+    r = plan("Block 15 x 10 cm, 10 cm high; then add 5 cm to its height.")
+    assert r.status == "success" and r.spec.structures[0].height == 3
+    # the one on a side, of structures named left to right or placed by SDI (right to left)
+    r = plan("Three towers of 2, 3 and 4, left to right. Then take away the one on the right.")
+    assert sorted(s.height for s in r.spec.structures) == [2, 3]
+    r = plan("Three towers of 2, 3 and 4. Then take away the one on the right.")
+    assert sorted(s.height for s in r.spec.structures) == [3, 4]
+    # which one is said by height; one SDI cannot pick out is reported, not guessed
+    r = plan(
+        "a tower of 4 on the left and a tower of 5 on the right, then take 2 off the taller one"
+    )
+    assert sorted((s.region, s.height) for s in r.spec.structures) == [("left", 4), ("right", 3)]
+    assert plan("two towers of 4, then take 2 off the red one").status == "partial"
+    r = plan("Build three towers of three in a row, left to right.")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["tower"] * 3

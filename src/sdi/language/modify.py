@@ -151,12 +151,34 @@ MODIFY = [
         + r"\s+(?:cubes?\s+|levels?\s+)?(?:back\s+)?(?:off|away|from\s+the\s+top)\b",
         "-",
     ),
-    # "a row of 8, then remove 3 cubes from one end": a shorter row
+    # "a row of 8, then remove 3 cubes from one end", "take the two cubes off its left end"
     _op(
-        r"\b(?:take|knock|remove|drop|pull|lose)\s+"
+        r"\b(?:take|knock|remove|drop|pull|lose)\s+(?:the\s+)?"
         + _N
         + r"\s+(?:cubes?\s+|blocks?\s+|parts?\s+)?(?:off\s+|from\s+|away\s+from\s+)"
-        r"(?:one|the|an|either)\s+(?:end|side)\b",
+        r"(?:one|the|an|either|its)\s+(?:(?:left|right|front|back|far|near)\s+)?(?:end|side)\b",
+        "-",
+    ),
+    # "then remove the top two cubes": a lower tower
+    _op(
+        r"\b(?:take|knock|lift|remove|pull)\s+(?:off\s+)?the\s+top\s+"
+        + _N
+        + r"\s+(?:cubes?|blocks?|levels?|layers?)\b(?:\s+off)?",
+        "-",
+    ),
+    # "then add 5 cm to its height"
+    _op(
+        r"\badd\s+(?:another\s+)?"
+        + _N
+        + r"(?:\s*(?:mm|cm|m)\b)?"
+        + _UNIT
+        + r"\s+to\s+(?:its|the|their)\s+height\b",
+        "+",
+    ),
+    # "then shorten it by 10 cm", "lower it by two cubes"
+    _op(
+        r"\b(?:shorten|lower|reduce|cut|trim)\s+(?:it|them|the\s+(?:row|wall|tower|stack|column))\s+"
+        r"(?:down\s+)?by\s+" + _N + _UNIT,
         "-",
     ),
     _op(
@@ -198,6 +220,13 @@ MODIFY = [
         r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch)\s+the\s+(middle|first|"
         r"last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+"
         r"(?:one|tower|stack|column|pillar|row|wall)\b",
+        "drop",
+    ),
+    # "then take away the one on the right": the one on that side
+    _op(
+        r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch|get\s+rid\s+of)\s+"
+        r"the\s+(?:one|tower|stack|column|pillar|row|wall)\s+(?:on|at|to)\s+the\s+(left|right|front|back)"
+        r"(?:[\s-]*hand)?(?:\s+(?:side|end))?\b",
         "drop",
     ),
     # "a tower on the left and a wall on the right. Actually forget the wall.": that one, gone
@@ -425,7 +454,7 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
         at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
         index = target.first + at
     elif which in ("left", "right", "front", "back"):
-        found_at = _by_side(which, built, structures)
+        found_at = _by_side(which, built, structures, before)
         if found_at is None:
             return None
         index = found_at
@@ -451,10 +480,13 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     return f"{left} left of the {left + 1}{size}"
 
 
-def _by_side(side: str, built: list[Phrase], structures: list[StructureDraft]) -> int | None:
+def _by_side(
+    side: str, built: list[Phrase], structures: list[StructureDraft], before: list[Phrase]
+) -> int | None:
     """The one structure built so far that stands on `side`: the only one placed in a region
-    with that side, or, of structures placed by SDI side by side (listed from right to left),
-    the first (right) or the last (left). None when no single one is meant."""
+    with that side, or, of structures placed by SDI side by side (listed from right to left,
+    or from left to right when the command says so), the one at that end. None when no single
+    one is meant."""
     every = [q.first + k for q in built for k in range(q.count)]
     placed = [i for i in every if side in (structures[i].region or "").split()]
     if len(placed) == 1:
@@ -465,6 +497,9 @@ def _by_side(side: str, built: list[Phrase], structures: list[StructureDraft]) -
     )
     if placed or not free or len(every) < 2 or side not in ("left", "right"):
         return None
+    said = " ".join(q.text for q in before)
+    if re.search(r"\bleft\s+to\s+(?:the\s+)?right\b", said, re.I):
+        every = every[::-1]  # "three towers, left to right": the first named is the left one
     return every[0] if side == "right" else every[-1]
 
 
@@ -551,11 +586,42 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         p.text,
         re.I,
     )
-    on_side = _by_side(sided.group(1).lower(), built, structures) if sided else None
+    on_side = _by_side(sided.group(1).lower(), built, structures, before) if sided else None
     if sided and on_side is None:
         return None  # "take 2 off the left one" with no single one on the left: said, unused
+    extreme = re.search(
+        r"\bthe\s+(taller|tallest|higher|highest|bigger|biggest|larger|largest|shorter|shortest|lower|"
+        r"lowest|smaller|smallest)\s+(?:one|tower|stack|column|pillar)\b",
+        p.text,
+        re.I,
+    )
+    named = re.search(
+        r"\b(?:off|from|to|on)\s+the\s+(\w+)\s+(?:one|tower|stack|column|pillar)\b", p.text, re.I
+    )
     if on_side is not None:
         index = on_side
+    elif extreme:
+        heights = {
+            i: structures[i].height
+            for q in built for i in range(q.first, q.first + q.count)
+            if structures[i].shape == "tower" and structures[i].height
+        }  # fmt: skip
+        pick = min if extreme.group(1).lower().startswith(("short", "low", "small")) else max
+        best = pick(heights.values(), default=None)
+        found = [i for i, h in heights.items() if h == best]
+        if len(heights) < 2 or len(found) != 1:
+            return None  # "the taller one" of towers alike: which is not said
+        index = found[0]
+    elif not ordinal and (
+        (named and named.group(1).lower() not in ("same", "other", "new", "top"))
+        or re.search(
+            r"\b(?:off|from)\s+(?:of\s+)?the\s+(?!(?:top|end|ends|side|far|near|left|right|front|back)\b)"
+            r"(?!(?:\w+\s+)?(?:end|side)\b)\w+",
+            p.text,
+            re.I,
+        )
+    ):
+        return None  # "take 2 cubes off the red one", "off the one on my left": not picked out
     elif ordinal and target.count > 1:
         pick = {"first": 0, "second": 1, "third": 2, "fourth": 3, "last": target.count - 1}
         if pick[ordinal.group(1).lower()] >= target.count:
@@ -631,7 +697,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     if metres:
         update[f"{key}_m"] = None
     structures[index] = last.model_copy(update=update)
-    was = f" (was {now})" if said else ""
+    in_m = f", {metres:g} m, {metres * 100:g} cm" if metres else ""  # "30 cm tower": said in cm
+    was = f" (was {now}{in_m})" if said else ""
     if _EVERY.search(p.text) and target.count > 1 and index == _last_index(built):
         # "three towers of 2, then add one more cube to each": all of them, alike
         for i in range(target.first, target.first + target.count):

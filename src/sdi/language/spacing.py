@@ -225,8 +225,19 @@ def take_gap(text: str, st: ReadState) -> str:
         return text
     part_m = st.cell.cube[0]
     m = _GAP.search(text)
-    if m is not None and re.search(r"\b(?:of|with)\s*$", text[: m.start()], re.I):
-        m = None  # "put a row of three cubes between them": the row's size, not a gap
+    if m is not None and (
+        re.search(r"\b(?:of|with)\s*$", text[: m.start()], re.I)
+        or (
+            re.search(r"\b(?:take|knock|pull|lift)(?:\s+the)?\s*$", text[: m.start()], re.I)
+            and re.search(r"\boff\b", m.group(0), re.I)
+            and re.match(
+                r"\s*(?:its|one|the|either)\s+(?:(?:left|right|front|back)\s+)?end\b",
+                text[m.end() :],
+                re.I,
+            )
+        )
+    ):
+        m = None  # "a row of three cubes between them", "take the two cubes off": no gap
     if not _several(text) and not (m is not None and _RELATED.search(text[: m.start()])):
         return text  # "a bridge, its pillars 2 cubes apart": the bridge's own span
     if m is not None:
