@@ -601,13 +601,14 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     if on_side is not None:
         index = on_side
     elif extreme:
-        heights = {
-            i: structures[i].height
-            for q in built for i in range(q.first, q.first + q.count)
-            if structures[i].shape == "tower" and structures[i].height
-        }  # fmt: skip
-        pick = min if extreme.group(1).lower().startswith(("short", "low", "small")) else max
-        best = pick(heights.values(), default=None)
+        heights: dict[int, int] = {}
+        for q in built:
+            for i in range(q.first, q.first + q.count):
+                h = structures[i].height
+                if structures[i].shape == "tower" and h:
+                    heights[i] = h
+        low = extreme.group(1).lower().startswith(("short", "low", "small"))
+        best = (min if low else max)(heights.values(), default=0)
         found = [i for i, h in heights.items() if h == best]
         if len(heights) < 2 or len(found) != 1:
             return None  # "the taller one" of towers alike: which is not said

@@ -71,6 +71,11 @@ _PLACE_GLOSS = re.compile(
 _FAMILY_SAID = shape_alternation(min_len=3)
 _ONE_OF_EACH = re.compile(r"\bone\s+(?:of|with|tower|stack|wall|row)\b(?![^.;]*[.;])", re.I)
 """'two towers, one of 3 and one of 5': the first of a list naming each one."""
+_CORNERS_OF = {
+    "back": ("back left", "back right"), "front": ("front left", "front right"),
+    "left": ("front left", "back left"), "right": ("front right", "back right"),
+}  # fmt: skip
+"""The two corners on one side of the table: "in each back corner"."""
 _SHAPE_NOUNS = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES and len(w) > 2)
 
 
@@ -412,10 +417,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b((?:an?|one)\s+[^,.;]{1,40}?)\s+(?:in|at|on)\s+(?:each|both|either)\s+(?:of\s+the\s+)?"
                 r"(back|front|left|right)(?:[\s-]hand)?\s+corners?\b(?!\s+of\s+(?:it|the\s+(?!table)))",
                 re.I),
-     lambda m: (lambda a, b: f"{m.group(1)} in the {a} corner and {m.group(1)} in the {b} corner")(
-         *({"back": ("back left", "back right"), "front": ("front left", "front right"),
-            "left": ("front left", "back left"), "right": ("front right", "back right")}[
-             m.group(2).lower()]))),
+     lambda m: " and ".join(f"{m.group(1)} in the {c} corner"
+                            for c in _CORNERS_OF[m.group(2).lower()])),
     # "Loc: back left", "Loc back left": a location field
     (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
                 r"middle)\b)", re.I), "at the "),
