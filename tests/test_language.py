@@ -4108,3 +4108,29 @@ def test_parts_taken_off_an_end_or_the_top_and_sizes_changed_in_units():
     assert plan("two towers of 4, then take 2 off the red one").status == "partial"
     r = plan("Build three towers of three in a row, left to right.")
     assert r.status == "success" and [s.shape for s in r.spec.structures] == ["tower"] * 3
+
+
+def test_the_same_again_a_top_step_and_words_that_are_no_structure():
+    r = plan("First a tower of two at the front left, after that the same at the back left, and "
+             "finally the same at the back right.")  # fmt: skip
+    assert r.status == "success"
+    assert [(s.region, s.height) for s in r.spec.structures] == [
+        ("front left", 2), ("back left", 2), ("back right", 2)]  # fmt: skip
+    r = plan("on the left, a tower. 3 high. no, 4 high. then on the right, same.")
+    assert [(s.region, s.height) for s in r.spec.structures] == [("left", 4), ("right", 4)]
+    r = plan(
+        "First, build a staircase of four steps. After that, put a single cube on its top step."
+    )
+    assert r.status == "success" and [x.kind for x in r.spec.relations] == ["on_top_of"]
+    r = plan("a tower of four cubes, but please not in the middle of the table? It would block my "
+             "view of the robot.")  # fmt: skip
+    assert [s.shape for s in r.spec.structures] == ["tower"]  # "block" is a verb here
+    r = plan("First, four towers of three, one in each corner of the table. After that, a single "
+             "cube in the centre.")  # fmt: skip
+    assert r.status == "success" and sorted(str(s.region) for s in r.spec.structures) == [
+        "back left", "back right", "centre", "front left", "front right"]  # fmt: skip
+    r = plan("two walls facing each other, each four cubes long and two cubes high, with a gap of "
+             "two cubes between them")  # fmt: skip
+    assert r.status == "success" and len(r.spec.structures) == 2
+    (s,) = plan("A solid cube made of cubes, 15 cm each way.").spec.structures
+    assert (s.length_m, s.width_m, s.height_m) == (0.15, 0.15, 0.15)

@@ -448,7 +448,9 @@ def _corners(m: re.Match[str], st: ReadState, note: str) -> str:
     the table" only when no other structure is named (then the corners may be its own)."""
     what = m.group(1).strip()
     rest = (m.string[: m.start()] + " " + m.string[m.end() :]).lower()
-    head = re.sub(r"\s+(?:of\s+)?\d+(?:\s+\w+)?$", "", what)  # "tower of 2": its size aside
+    head = re.sub(  # "tower of 2", "tower of three": its size aside
+        r"\s+(?:of\s+)?(?:\d+|two|three|four|five|six|seven|eight|nine|ten)(?:\s+\w+)?$", "", what
+    )
     if re.search(r"\b(?:with|and|on|of)\b", head, re.IGNORECASE) or (
         not m.group(2) and any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", rest))
     ):

@@ -419,6 +419,32 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 re.I),
      lambda m: " and ".join(f"{m.group(1)} in the {c} corner"
                             for c in _CORNERS_OF[m.group(2).lower()])),
+    # "after that the same at the back left": another one there
+    (re.compile(r"(?<=\b(?:then|that|next|also)\s)(?<!\bone\s)the\s+same(?:\s+(?:thing|one|again))?\s+"
+                r"(?=(?:at|on|in)\s+the\s+(?:(?:far|back|front)\s+)?(?:front|back|left|right)\b)"
+                r"|(?<=\bfinally\s)the\s+same\s+(?=(?:at|on|in)\s+the\s+(?:front|back|left|right)\b)",
+                re.I), "another one "),
+    # "a single cube on its top step": on its top (a staircase's top is its top step)
+    (re.compile(r"\bon\s+(?:its|the|their)\s+(?:top|highest|last|uppermost)\s+(?:step|stair|tread)\b",
+                re.I), "on top of it"),
+    # "a tower of 2 cubes more": of 2 cubes ("more" after a size said with "of")
+    (re.compile(r"\b(of\s+(?:\d+|two|three|four|five|six)\s+(?:cubes?|blocks?|bricks?))\s+more\b",
+                re.I), r"\1"),
+    # "it would block my view": no block
+    (re.compile(r"\b(would|will|could|might|may|to|'d|'ll|it)\s+block\s+(?=(?:my|the|our|his|her|their|your)\s+"
+                r"(?:view|line|way|access|path|sight|reach)\b)", re.I), r"\1 obstruct "),
+    # "four towers of three, one in each corner of the table": a tower of three in each corner
+    (re.compile(r"\b(?:four|4)\s+(towers|stacks|columns|pillars|cubes|blocks)(\s+(?:of\s+)?[\w-]+(?:\s+(?:high|tall|"
+                r"cubes?))?)?\s*,?\s*(?:with\s+)?one\s+(?:in|at|on)\s+each\s+corner\s+of\s+the\s+"
+                r"(table|workspace|cell)\b", re.I),
+     lambda m: f"a {m.group(1)[:-1]}{m.group(2) or ''} in each corner of the {m.group(3)}"),
+    # "two walls facing each other": parallel, one behind the other
+    (re.compile(r"\b(walls|rows|lines)\s+facing\s+each\s+other\b", re.I),
+     r"\1 parallel to each other"),
+    # "a solid cube of cubes, 15 cm each way": that size along every side
+    (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m)|(?:\d+|two|three|four|five)\s+cubes?)\s+(?:each\s+way|every\s+way|"
+                r"in\s+(?:each|every)\s+direction|all\s+(?:round|around|ways))\b", re.I),
+     r"\1 long, \1 wide and \1 high"),
     # "Loc: back left", "Loc back left": a location field
     (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
                 r"middle)\b)", re.I), "at the "),

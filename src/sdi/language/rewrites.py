@@ -1320,7 +1320,8 @@ _REWRITES += [
     (
         re.compile(
             r"\b(?:stacked\s+|resting\s+|standing\s+|sitting\s+)?(?:on|at|in(?=\s+(?:each|every|one|all|its|"
-            r"their)\b[^,.;]{0,20}?\bcorners?\b))\s+(?:top\s+of\s+)?(?:(?:each|both|"
+            r"their)\b[^,.;]{0,20}?\bcorners?\b(?!\s+of\s+the\s+(?:table|workspace|cell|work\s*area|area)\b)))"
+            r"\s+(?:top\s+of\s+)?(?:(?:each|both|"
             r"either|one|every)\s+(?:of\s+(?:its|the)\s+)?(?:four\s+|4\s+|two\s+|2\s+)?"
             r"(?:ends|end|sides|side|corners|corner)"
             r"|(?:all\s+)?(?:its|their)\s+(?:four\s+|4\s+|two\s+|2\s+)?(?:corners|ends)"
@@ -2396,7 +2397,8 @@ _DISTRIBUTE = re.compile(
 _CORNERS = re.compile(
     r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*((?:(?:an?|one|a\s+single|single)\s+)?"
     r"(?:\S+\s+){0,3}?(?:cube|block|brick|tower|stack|column|pyramid|pad|slab)s?"
-    r"(?:\s+(?:of\s+)?\d+(?:\s+(?:cubes?|high|tall|levels?))?)?)\s+"
+    r"(?:\s+(?:of\s+)?(?:\d+|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:cubes?|high|tall|"
+    r"levels?))?)?)\s+"
     r"(?:in|at|on|into)\s+(?:each|every|all)\s+"
     r"(?:one\s+)?(?:of\s+)?(?:the\s+)?(?:four\s+|4\s+)?corners?"
     r"(\s+of\s+the\s+(?:table|workspace|work\s*space|cell|work\s*area|area))?",
