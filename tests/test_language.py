@@ -4134,3 +4134,17 @@ def test_the_same_again_a_top_step_and_words_that_are_no_structure():
     assert r.status == "success" and len(r.spec.structures) == 2
     (s,) = plan("A solid cube made of cubes, 15 cm each way.").spec.structures
     assert (s.length_m, s.width_m, s.height_m) == (0.15, 0.15, 0.15)
+
+
+def test_a_number_only_the_structure_count_explains_must_count_something():
+    from sdi.language.coherence import _counts_something
+    from sdi.language.syntax import parse
+
+    def counts(text: str, word: str) -> bool:
+        doc = parse(text)
+        return _counts_something(doc, next(t.i for t in doc if t.text == word))
+
+    assert counts("two towers of 3", "two")
+    assert counts("two separate 3-cube pillars", "two")
+    assert counts("a tower of 3 and 2 more like it", "2")
+    assert not counts("a wall and a tower 2 wide", "2")  # a size no slot took: reported

@@ -122,12 +122,15 @@ def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
     return cues
 
 
-def _shown(spec: Spec, st: ReadState) -> set[float]:
-    """Every value the reading shows, in the forms a command may have said it."""
+def _shown(spec: Spec, st: ReadState, counts: bool = True) -> set[float]:
+    """Every value the reading shows, in the forms a command may have said it (with `counts`,
+    how many structures there are, too)."""
     from sdi.design.composer import part_sizes
     from sdi.design.shapes import generate
 
-    shown: set[float] = {float(len(spec.structures)), float(len(spec.structures) - 1)}
+    shown: set[float] = set()
+    if counts:
+        shown.update((float(len(spec.structures)), float(len(spec.structures) - 1)))
     metres: list[float] = [g for g in [spec.gap_m, *(r.gap_m for r in spec.relations)] if g]
     families: dict[str, int] = {}
     for s in spec.structures:
@@ -150,14 +153,26 @@ def _shown(spec: Spec, st: ReadState) -> set[float]:
         for b in boxes:
             levels[round(b.z, 4)] = levels.get(round(b.z, 4), 0) + 1
         shown.update(float(n) for n in levels.values())
-    shown.update(float(n) for n in families.values())
-    shown.update(float(n - 1) for n in families.values())  # "then 2 more like it"
+    if counts:
+        shown.update(float(n) for n in families.values())
+        shown.update(float(n - 1) for n in families.values())  # "then 2 more like it"
     for note in st.notes:  # a length a note states ("0.0508 m thick is one layer")
         metres.extend(float(v) for v in re.findall(r"(\d+(?:\.\d+)?) m\b", note))
     for m in metres:
         shown.update(round(m / unit, 2) for unit in lx.UNITS_M.values())
         shown.add(round(m / st.cell.cube[0], 2))
     return shown
+
+
+def _counts_something(doc: Doc, i: int) -> bool:
+    """The number at token `i` counts things: a plural noun follows ("two towers", "2 more",
+    "three of them", "two identical ones"), or it stands alone as a count ("make it 3")."""
+    after = [t for t in doc[i + 1 : i + 7] if not t.is_punct]
+    if not after:
+        return True
+    if after[0].lower_ in ("more", "of", "others", "again", "copies", "times", "each", "apiece"):
+        return True
+    return any(t.tag_ in ("NNS", "NNPS") for t in after)
 
 
 _NOT_GEOMETRY = frozenset(
@@ -180,9 +195,9 @@ _PEOPLE = frozenset(
 )  # fmt: skip
 
 
-def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]]:
+def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float, int]]:
     """The numbers the operator wrote inside the structures' phrases (not ones a rewrite put
-    in, not ages, times or percentages)."""
+    in, not ages, times or percentages), with their token index."""
     said = set(re.findall(r"\d+(?:\.\d+)?|[a-z]+", command.lower()))
     out = []
     for tok in doc:
@@ -190,11 +205,11 @@ def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]
             half = any(t.lower_ == "half" for t in doc[max(0, tok.i - 2) : tok.i])
             times = words_to_numbers([doc[tok.i - 1].lower_])[0] if tok.i else ""
             if times.isdigit():
-                out.append((doc[tok.i - 1 : tok.i + 1].text, 12.0 * int(times)))
+                out.append((doc[tok.i - 1 : tok.i + 1].text, 12.0 * int(times), tok.i))
                 continue
             start = next(t.i for t in doc[max(0, tok.i - 2) : tok.i + 1] if t.lower_ in
                          ("half", "dozen"))  # fmt: skip
-            out.append((doc[start : tok.i + 1].text, 6.0 if half else 12.0))
+            out.append((doc[start : tok.i + 1].text, 6.0 if half else 12.0, tok.i))
             continue
         if not tok.like_num or tok.i not in tokens or tok.lower_ not in said:
             continue
@@ -215,7 +230,7 @@ def _numbers(doc: Doc, tokens: set[int], command: str) -> list[tuple[str, float]
         except ValueError:
             continue
         if v > 1:
-            out.append((tok.text, v))
+            out.append((tok.text, v, tok.i))
     return out
 
 
@@ -468,10 +483,17 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
             re.findall(r"\d+(?:\.\d+)?|[a-z]+", " ".join([*st.material, *st.notes]).lower())
         )
     }  # fmt: skip
-    unexplained = [(t, v) for t, v in _numbers(doc, tokens, st.command) if f"{v:g}" not in told]
+    unexplained = [
+        (t, v, i) for t, v, i in _numbers(doc, tokens, st.command) if f"{v:g}" not in told
+    ]
     if unexplained:
         shown = _shown(spec, st)
-        for text, value in unexplained:
+        sizes = _shown(spec, st, counts=False)
+        for text, value, i in unexplained:
+            counted = round(value, 2) in shown and round(value, 2) not in sizes
+            if counted and not _counts_something(doc, i):
+                shown = shown - {round(value, 2)}  # "a tower of 2 cubes more" beside another:
+                # the number of structures happens to be 2, but the 2 counts none of them
             if round(value, 2) not in shown:
                 st.material.append(text)
                 st.notes.append(f"ignored '{text}': the number shows nowhere in the reading")
