@@ -4148,3 +4148,22 @@ def test_a_number_only_the_structure_count_explains_must_count_something():
     assert counts("two separate 3-cube pillars", "two")
     assert counts("a tower of 3 and 2 more like it", "2")
     assert not counts("a wall and a tower 2 wide", "2")  # a size no slot took: reported
+
+
+def test_thinking_aloud_is_no_content():
+    r = plan(
+        "hmm, a ring, maybe 5 by 5, one high, and I guess a tower of 3 standing in the middle of it"
+    )
+    assert r.status == "success" and [x.kind for x in r.spec.relations] == ["around"]
+    r = plan("maybe two towers, both 4 high, roughly a cube apart, and a beam across them I guess")
+    assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
+        ("bridge", 4)
+    ]
+    r = plan("I think a staircase, 4 steps, and then, not sure, maybe a cube on the top step? yeah, "
+             "let's do that")  # fmt: skip
+    assert r.status == "success" and [x.kind for x in r.spec.relations] == ["on_top_of"]
+    r = plan("roughly a 3 by 3 by 3 block, I mean made out of cubes")
+    assert r.status == "success"
+    assert [(s.length, s.width, s.height) for s in r.spec.structures] == [(3, 3, 3)]
+    r = plan("maybe three towers of 2")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 2, 2]

@@ -705,6 +705,13 @@ def _xyz(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" ( {x} , {y} ) "
 
 
+_COUNTED_NOUN = re.compile(
+    r"\s*(?:[a-z]+\s+)?(?:towers|stacks|walls|rows|columns|pillars|pyramids|blocks|slabs|staircases|"
+    r"bridges|rings|things|ones|cubes|steps|levels|layers)\b",
+    re.IGNORECASE,
+)
+
+
 def _maybe(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "three, maybe four": the first number; "not too tall, maybe four?": the only one."""
     said, groups = _said(m)
@@ -717,6 +724,8 @@ def _maybe(m: re.Match[str], st: ReadState, note: str) -> str:
     if re.search(number, before, re.I) or re.match(r"\s*(?:or|to|-)\s*(?:" + number + ")", after):
         st.notes.append(note.format(said))
         return " "
+    if _COUNTED_NOUN.match(m.string[m.end() : m.end() + 30]):
+        return f" {value} "  # "maybe two towers": a count said with a hedge
     st.notes.append(f"read '{said}' as {value}, the only number said")
     return f" , {value} "
 

@@ -445,6 +445,17 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m)|(?:\d+|two|three|four|five)\s+cubes?)\s+(?:each\s+way|every\s+way|"
                 r"in\s+(?:each|every)\s+direction|all\s+(?:round|around|ways))\b", re.I),
      r"\1 long, \1 wide and \1 high"),
+    # "two towers, both 4 high": the size of each ("both" is no count of parts)
+    (re.compile(r"\b(?:both|all|each)\s+(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*"
+                r"(?:cubes?\s+)?(?:high|tall|long|wide|deep|levels?|layers?|steps?)\b)", re.I), ""),
+    # thinking aloud: "I guess", "I suppose", "not sure", "yeah, let's do that"
+    (re.compile(r",?\s*\b(?:i\s+(?:guess|suppose|reckon|believe)|(?:i'?m\s+)?not\s+(?:really\s+)?sure"
+                r"(?:\s+but)?|i\s+think(?=\s+(?:a|an|the|two|three|four|five|\d|it|we|maybe)\b)|"
+                r"(?:yeah|yes|ok|okay)\s*,?\s*let'?s\s+(?:do|go\s+with)\s+(?:that|it|this))\b\s*,?",
+                re.I), " "),
+    # "a 3 by 3 by 3 block, I mean made out of cubes": what it is made of, said again
+    (re.compile(r",?\s*\b(?:i\s+mean\s+)?(?:made|built)\s+(?:up\s+)?(?:out\s+)?of\s+(?:single\s+|the\s+|"
+                r"small\s+)?(?:cubes|blocks|bricks)\b(?=\s*(?:$|[,.;!?]))", re.I), " "),
     # "Loc: back left", "Loc back left": a location field
     (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
                 r"middle)\b)", re.I), "at the "),
