@@ -4159,8 +4159,10 @@ def test_thinking_aloud_is_no_content():
     assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
         ("bridge", 4)
     ]
-    r = plan("I think a staircase, 4 steps, and then, not sure, maybe a cube on the top step? yeah, "
-             "let's do that")  # fmt: skip
+    r = plan(
+        "I think a staircase, 4 steps, and then, not sure, maybe a cube on the top step? "
+        "yeah, let's do that"
+    )
     assert r.status == "success" and [x.kind for x in r.spec.relations] == ["on_top_of"]
     r = plan("roughly a 3 by 3 by 3 block, I mean made out of cubes")
     assert r.status == "success"
