@@ -4169,3 +4169,35 @@ def test_thinking_aloud_is_no_content():
     assert [(s.length, s.width, s.height) for s in r.spec.structures] == [(3, 3, 3)]
     r = plan("maybe three towers of 2")
     assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 2, 2]
+
+
+def test_a_form_of_keyed_fields_is_read_field_by_field():
+    from sdi.language.fields import as_words
+
+    r = plan("Tower | H: 4 | X (mm): 500 | Y (mm): 400")
+    (s,) = r.spec.structures
+    assert r.status == "success" and (s.height, s.at_x, s.at_y) == (4, 0.5, 0.4)
+    r = plan("Wall | L (mm): 400 | H (mm): 100")
+    assert r.status == "success" and r.layout is not None and len(r.layout) == 16
+    r = plan("Qty 2 | Bridge | Post H: 2 | Beam: 1 each")
+    assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
+        ("bridge", 2), ("bridge", 2)]  # fmt: skip
+    r = plan(
+        "MES export 14/03 08:00 – Order 77812 – Priority 2 – Item: Tower – Qty: 1 – Height: 6 cubes"
+    )
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [6]
+    r = plan("Loc: front left / Item: row / Qty cubes: 5")
+    assert [(s.shape, s.length, s.region) for s in r.spec.structures] == [("row", 5, "front left")]
+    r = plan("Item: ring | Size: 4x4 | H: 2 | Contents: 1 cube, centred inside")
+    assert [x.kind for x in r.spec.relations] == ["around"]
+    # prose with dashes or slashes is no form
+    notes: list[str] = []
+    assert as_words("a wall - 5 long - and a tower", notes) == "a wall - 5 long - and a tower"
+    assert notes == []
+
+
+def test_a_single_cube_said_inside_a_ring_is_built():
+    # "with 1 cube, centred inside" was dropped, silently
+    r = plan("a ring 4x4, 2 high, with 1 cube, centred inside")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("enclosure", 2), ("tower", 1)]
+    assert [x.kind for x in r.spec.relations] == ["around"]

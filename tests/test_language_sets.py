@@ -46,6 +46,8 @@ from sdi.bench.language_dev28 import CASES as DEV28
 from sdi.bench.language_dev29 import CASES as DEV29
 from sdi.bench.language_dev30 import CASES as DEV30
 from sdi.bench.language_dev31 import CASES as DEV31
+from sdi.bench.language_dev32 import CASES as DEV32
+from sdi.bench.language_dev33 import CASES as DEV33
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -291,6 +293,8 @@ SETS = {
     "dev29": (DEV29, 180, 8, 15),
     "dev30": (DEV30, 180, 8, 15),
     "dev31": (DEV31, 180, 8, 15),
+    "dev32": (DEV32, 180, 8, 15),
+    "dev33": (DEV33, 180, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -316,6 +320,8 @@ HARD = {
     "dev29": ("relation", "numbers", "dimensions", "sequence"),
     "dev30": ("relation", "numbers", "dimensions", "sequence"),
     "dev31": ("relation", "numbers", "dimensions", "sequence"),
+    "dev32": ("relation", "numbers", "dimensions", "sequence"),
+    "dev33": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -435,6 +441,8 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev29.py",
         "language_dev30.py",
         "language_dev31.py",
+        "language_dev32.py",
+        "language_dev33.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

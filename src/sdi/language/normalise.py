@@ -448,6 +448,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "two towers, both 4 high": the size of each ("both" is no count of parts)
     (re.compile(r"\b(?:both|all|each)\s+(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*"
                 r"(?:cubes?\s+)?(?:high|tall|long|wide|deep|levels?|layers?|steps?)\b)", re.I), ""),
+    # "a ring 4x4, 2 high, with 1 cube, centred inside": a column of cubes in its middle
+    (re.compile(r"\b((?:ring|enclosure|pen|frame|fence|square\s+ring|hollow\s+square)\b[^.;]*?),?\s*with\s+"
+                r"(one|a|a\s+single|single|1)\s+cube\s*,?\s*(?:centred|centered|placed|standing|"
+                r"sitting)?\s*(?:right\s+)?(?:inside(?:\s+it)?|in\s+(?:the\s+)?(?:middle|centre|center)(?:\s+of\s+it)?)"
+                r"\b", re.I),
+     lambda m: f"{m.group(1)} and a tower of 1 in the middle of it"),
     # thinking aloud: "I guess", "I suppose", "not sure", "yeah, let's do that"
     (re.compile(r",?\s*\b(?:i\s+(?:guess|suppose|reckon|believe)|(?:i'?m\s+)?not\s+(?:really\s+)?sure"
                 r"(?:\s+but)?|i\s+think(?=\s+(?:a|an|the|two|three|four|five|\d|it|we|maybe)\b)|"

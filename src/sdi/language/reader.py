@@ -41,7 +41,7 @@ import re
 from typing import TYPE_CHECKING
 
 from sdi.errors import LimitError, SpecError
-from sdi.language import claims, coherence, corrections, scanned, spacing, structured, typos
+from sdi.language import claims, coherence, corrections, fields, scanned, spacing, structured, typos
 from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
@@ -81,6 +81,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text, unscanned = scanned.unscan(courtesy(text))  # "bui1d a tovver 0f": a scanner's
     text, corrected = typos.correct(text)
     corrected[:0] = unscanned
+    text = fields.as_words(text, st.notes)  # "Tower | H: 4 | X (mm): 500 | Y (mm): 400"
     text = normalise(text, st.notes)
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes)
