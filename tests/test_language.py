@@ -4201,3 +4201,36 @@ def test_a_single_cube_said_inside_a_ring_is_built():
     r = plan("a ring 4x4, 2 high, with 1 cube, centred inside")
     assert [(s.shape, s.height) for s in r.spec.structures] == [("enclosure", 2), ("tower", 1)]
     assert [x.kind for x in r.spec.relations] == ["around"]
+
+
+def test_changes_comparisons_and_directions_said_in_everyday_ways():
+    r = plan("Check build: 2x2 block, 3 high. Tower of 5 touching its left side.")
+    assert [(x.kind, x.side, x.gap_m) for x in r.spec.relations] == [("next_to", "left", 0.0)]
+    r = plan("A set of steps, four of them, going up to the left; then cap the top step with one "
+             "more cube.")  # fmt: skip
+    shapes = [(s.shape, getattr(s, "steps", None) or s.height) for s in r.spec.structures]
+    assert shapes == [("staircase", 4), ("tower", 1)]
+    r = plan("Gripper changed. Test piece: block 2x2x2. Then build it up to 2x2x4.")
+    assert r.status == "success" and r.spec.structures[0].height == 4
+    r = plan("A low fence along the back, one cube high and six long, then make it a cube taller.")
+    assert r.status == "success" and (r.spec.structures[0].length, r.spec.structures[0].height) == (
+        6, 2)  # fmt: skip
+    r = plan("Check build: two towers, one of 3 and the other taller by 2, gap 1.")
+    assert sorted(s.height for s in r.spec.structures) == [3, 5]
+    r = plan("A pair of gateposts, each three cubes tall, a cube apart.")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 3]
+    r = plan("A set of steps in the front left corner, three steps, going up towards the back.")
+    assert [(s.shape, s.region) for s in r.spec.structures] == [("staircase", "front left")]
+    r = plan("four separate cubes in a row, 2 cubes apart")  # parts, not centimetres
+    assert r.spec.structures[0].gap_m == 0.1
+    r = plan("Task 1: Place four single cubes in a line from front to back, each one cube apart.")
+    assert r.status == "success" and r.spec.structures[0].length == 4
+    (s,) = plan("A low fence down the left side, 30 cm long and 5 cm high.").spec.structures
+    assert s.region == "left"
+    r = plan("Put a row of seven cubes and don't make it go front to back.")
+    assert r.spec.structures[0].axis == "y"
+    both = plan("a staircase of three steps going up to the left and going up to the right")
+    assert both.status == "partial"
+    assert (
+        plan("a staircase going up to the left, no wait, going up to the right").status == "success"
+    )

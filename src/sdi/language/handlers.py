@@ -586,7 +586,16 @@ def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
 
 
 def _said_last(m: re.Match[str]) -> int | None:
-    """The last number said before the match (the size a comparison starts from)."""
+    """The last number said before the match (the size a comparison starts from); for a
+    height ("a cube taller"), the last number said as a height, when one was."""
+    if re.search(r"\b(?:taller|higher|shorter|lower|tall|high)\b", m.group(0), re.I):
+        heights = re.findall(
+            r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall)\b",
+            m.string[: m.start()],
+            re.I,
+        )
+        if heights:
+            return int(words_to_numbers([heights[-1].lower()])[0])
     before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
     if before and before[-1] in ("one", "a"):
         before = before[:-1]  # "beside it one half its height": the one being compared

@@ -51,7 +51,7 @@ _REFERENCE_NO = re.compile(
     r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|"
     r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
     r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
-    r"exercise|lesson|experiment|sample|bench|rig|line\s+no)\s*"
+    r"exercise|lesson|experiment|sample|bench|rig|line\s+no|task|assignment|question)\s*"
     r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
     r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
     re.IGNORECASE,
@@ -454,6 +454,32 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"sitting)?\s*(?:right\s+)?(?:inside(?:\s+it)?|in\s+(?:the\s+)?(?:middle|centre|center)(?:\s+of\s+it)?)"
                 r"\b", re.I),
      lambda m: f"{m.group(1)} and a tower of 1 in the middle of it"),
+    # "a tower of 5 touching its left side": against it on that side
+    (re.compile(r"\btouching\s+its\s+(left|right|front|back)(?:[\s-]+hand)?(?:\s+(?:side|end|face))?\b",
+                re.I),
+     lambda m: {"front": "in front of it, touching", "back": "behind it, touching"}.get(
+         m.group(1).lower(), f"to the {m.group(1).lower()} of it, touching")),
+    # "cap the top step with one more cube": a cube on top of it
+    (re.compile(r"\bcap\s+(?:the\s+top(?:\s+(?:step|level|one))?|it|the\s+\w+)\s+(?:off\s+)?with\s+(?:one\s+more|"
+                r"a|one|another|a\s+single|an\s+extra)\s+cube\b", re.I), "put a cube on top of it"),
+    # "build it up to 2x2x4": to that height
+    (re.compile(r"\b((?:build|make|raise|grow|stack)\s+it\s+up\s+to)\s+\d+\s*[x×]\s*\d+\s*[x×]\s*(\d+)\b",
+                re.I), r"\1 \2 high"),
+    # "the other taller by 2": two taller
+    (re.compile(r"\b(taller|higher|shorter|lower|longer|wider)\s+by\s+(\d+|one|two|three|four|five|a)"
+                r"(?:\s+(?:cubes?|levels?|blocks?))?\b", re.I), r"\2 cubes \1"),
+    # "don't make it go front to back", "don't run it left to right": not that way
+    (re.compile(r"\b(?:do\s+not|don'?t|never)\s+(?:make\s+it\s+|have\s+it\s+|let\s+it\s+)?(?:go|run|point|"
+                r"extend|stretch|lay\s+it|build\s+it|put\s+it)\s+(?:it\s+)?(?:from\s+)?(?:the\s+)?(front|back|left|"
+                r"right)\s+to\s+(?:the\s+)?(front|back|left|right)\b", re.I), r"not \1 to \2"),
+    # "a low fence down the left side": along it
+    (re.compile(r"\b(?:down|up)\s+(?=the\s+(?:left|right|front|back)(?:[\s-]+hand)?\s+(?:side|edge)\b)",
+                re.I), "along "),
+    # "a set of steps", "a flight of stairs": a staircase
+    (re.compile(r"\b(?:set|flight)\s+of\s+(?:steps|stairs)\b", re.I), "staircase"),
+    # "a pair of gateposts": posts
+    (re.compile(r"\bgate[\s-]?posts\b", re.I), "posts"),
+    (re.compile(r"\bgate[\s-]?post\b", re.I), "post"),
     # thinking aloud: "I guess", "I suppose", "not sure", "yeah, let's do that"
     (re.compile(r",?\s*\b(?:i\s+(?:guess|suppose|reckon|believe)|(?:i'?m\s+)?not\s+(?:really\s+)?sure"
                 r"(?:\s+but)?|i\s+think(?=\s+(?:a|an|the|two|three|four|five|\d|it|we|maybe)\b)|"
@@ -1440,12 +1466,15 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             or re.search(r"\d\s*x\s*\d", m.group(0), re.I)
             or re.match(
                 r"\s*-?\s*(?:x|by|cubes?|blocks?|bricks?|parts?|high|tall|long|wide|levels?|layers?|steps?|"
-                r"stor(?:ey|y|eys|ies))\b",
+                r"stor(?:ey|y|eys|ies)|mm|cm|m|millimet\w*|centimet\w*|inch(?:es)?)\b",
                 m.string[m.end() :],
                 re.I,
             )
         ):
             # "short version: 3x3 slab", "item: 4 cubes": the label goes, the size stays
+            label = re.match(r"[a-z]+", m.group(0).lower())
+            if label and label.group(0) in lx.SHAPE_WORDS:
+                return m.group(0)  # "a bench 15 cm long": the structure, sized
             number = re.search(r"\d", m.group(0))
             return " " + m.group(0)[number.start() :] if number else m.group(0)
         time = re.search(r"\d[:.]\d\d$|[ap]\.?m\.?$", m.group(0).lower())

@@ -144,6 +144,18 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]
+    taken_back = re.search(
+        r"\b(?:no|wait|actually|sorry|instead|rather|i\s+mean|make\s+that|scratch|not)\b",
+        command,
+        re.I,
+    )  # "going up to the left, no wait, to the right": one way, corrected
+    climbs = {m.group(1).lower() for m in _CLIMBS.finditer(command)} if not taken_back else set()
+    stairs = [s for s in specs if s.shape == "staircase"]
+    if len(climbs) > 1 and len(stairs) == 1:
+        # "a staircase going up to the left and going up to the right": which way is not clear
+        st.material.append("directions " + " and ".join(sorted(climbs)))
+        st.notes.append(f"the staircase is said to climb towards {' and '.join(sorted(climbs))}; "
+                        "a staircase climbs one way — say which")  # fmt: skip
     for word in dict.fromkeys(re.findall(r"[a-z]+", command.lower())):
         family = _ROUND_LIKENESS.get(word)
         if family and any(s.shape == family for s in specs):
@@ -534,6 +546,11 @@ _SPANNED = re.compile(r"\b(?:beams?|lintels?|spans?|symmetr\w*|either\s+side|bot
 _THINGS = re.compile(
     r"\b(two|three|four|five|[2-5])\s+(?:different\s+|separate\s+|small\s+|little\s+)?"
     r"(?:things|structures|items|objects|shapes|builds|models)\b|\bquantity\s+(two|three|four|five|[2-5])\b",
+    re.IGNORECASE,
+)
+_CLIMBS = re.compile(
+    r"\b(?:going|goes|climbing|climbs|rising|rises|ascending|stepping|leading)\s+up\s+(?:to(?:wards?)?\s+|"
+    r"toward\s+)?(?:the\s+)?(left|right|front|back)\b",
     re.IGNORECASE,
 )
 _ROUND_LIKENESS = {"cone": "pyramid", "cones": "pyramid"}

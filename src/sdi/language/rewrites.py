@@ -1213,7 +1213,8 @@ _REWRITES += [
     (
         re.compile(
             r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:separate|individual|"
-            r"loose)\s+(?:single\s+)?(cubes|blocks)\b(?!\s*,?\s*(?:spread|spaced|\d))",
+            r"loose)\s+(?:single\s+)?(cubes|blocks)\b(?!\s*,?\s*(?:spread|spaced|\d))"
+            r"(?![^.;]*\b(?:\d+|one|two|three|a)\s+(?:cubes?|cm|mm|blocks?|parts?)\s+(?:apart|gaps?)\b)",
             re.IGNORECASE,
         ),
         " {0} {1} spaced 5 cm apart ",

@@ -877,7 +877,11 @@ class _Parser:
                     if h.shape in ("bridge", "arch", "canopy") and wj != "apart":
                         p["span"] = v
                     else:
-                        p["gap_m"] = v * self.cell.cube[0] if wj != "apart" else v / 100.0
+                        # "2 cubes apart", "gap 2": parts; a bare "20 apart": centimetres
+                        in_parts = wj != "apart" or v < 10 or any(
+                            self.word(m) in lx.PART_WORDS for m in range(k + 1, j)
+                        )
+                        p["gap_m"] = v * self.cell.cube[0] if in_parts else v / 100.0
                     take(k)
                     take(j)
                     continue
