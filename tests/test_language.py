@@ -4234,3 +4234,23 @@ def test_changes_comparisons_and_directions_said_in_everyday_ways():
     assert (
         plan("a staircase going up to the left, no wait, going up to the right").status == "success"
     )
+
+
+def test_sticky_notes_negated_places_and_the_one_on_a_side():
+    r = plan("tower of 4 x2 pls, before 6")  # two of them; "before 6" is a time
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [4, 4]
+    r = plan("Task: Lay a row of five cubes. It must not be at the front of the table.")
+    assert r.status == "success" and r.spec.structures[0].region == "back"
+    r = plan("wall 5 long x 2 high, not along the front")
+    assert r.status == "success" and r.spec.structures[0].region == "back"
+    r = plan("Task: Build two towers of four, one cube apart. Then remove the top cube from the one "
+             "on the right.")  # fmt: skip
+    assert r.status == "success" and sorted(s.height for s in r.spec.structures) == [3, 4]
+    r = plan("Um right let me think ok a block two by two and two high in the centre.")
+    assert r.spec.structures[0].region == "centre"  # "right" begins the sentence: no side
+    r = plan("sorry for the mess on the bench, will sort tmrw. tower of 5 front right pls")
+    assert [(s.shape, s.region) for s in r.spec.structures] == [("tower", "front right")]
+    r = plan(
+        "Build two towers of three one in the front left corner and one in the back right corner."
+    )
+    assert sorted(str(s.region) for s in r.spec.structures) == ["back right", "front left"]

@@ -477,7 +477,8 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     owner.count -= 1
     left = sum(q.count for q in built)
     size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
-    return f"{left} left of the {left + 1}{size}"
+    side = f", the one on the {which}" if which in ("left", "right", "front", "back") else ""
+    return f"{left} left of the {left + 1}{size}{side}"
 
 
 def _by_side(
@@ -582,11 +583,13 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     index = _last_index(built)
     ordinal = re.search(r"\bthe\s+(first|second|third|fourth|last)\b", p.text, re.I)
     sided = re.search(
-        r"\bthe\s+(left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|column|pillar|row|wall)\b",
+        r"\bthe\s+(?:(left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|column|pillar|row|wall)|"
+        r"(?:one|tower|stack|column|pillar|row|wall)\s+(?:on|at|to)\s+the\s+(left|right|front|back))\b",
         p.text,
         re.I,
     )
-    on_side = _by_side(sided.group(1).lower(), built, structures, before) if sided else None
+    side = (sided.group(1) or sided.group(2)).lower() if sided else None
+    on_side = _by_side(side, built, structures, before) if side else None
     if sided and on_side is None:
         return None  # "take 2 off the left one" with no single one on the left: said, unused
     extreme = re.search(
@@ -706,7 +709,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             if structures[i].shape == last.shape and getattr(structures[i], key) == said:
                 structures[i] = structures[i].model_copy(update=update)
         return f"each {last.shape} now has {key} {new}{was}"
-    return f"the {last.shape} now has {key} {new}{was}"
+    which = f" on the {side}" if on_side is not None else ""
+    return f"the {last.shape}{which} now has {key} {new}{was}"
 
 
 _LAYER_WORDS = re.compile(

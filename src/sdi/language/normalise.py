@@ -82,8 +82,9 @@ _SHAPE_NOUNS = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAP
 # "a tower x3", "pyramid ×2": that many of it (not a coordinate: "x 3" and "x=3" have a space
 # or a sign; "x3" straight after the family name is a count)
 _TIMES_N = re.compile(
-    r"\b(?:a\s+|an\s+|one\s+)?(" + _FAMILY_SAID + r")\s*[x×](\d+)\b"
-    r"(?![.,]\d|\s*(?:x|by|cm|mm|m)\b)",
+    r"\b(?:a\s+|an\s+|one\s+)?(" + _FAMILY_SAID + r")"
+    r"(\s+of\s+\d+(?:\s+(?:high|tall|long|cubes?))?(?=\s+[x×]))?"
+    r"\s*[x×](\d+)\b(?![.,]\d|\s*(?:x|by|cm|mm|m)\b)",
     re.IGNORECASE,
 )
 
@@ -491,6 +492,21 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "Loc: back left", "Loc back left": a location field
     (re.compile(r"\bloc(?:ation)?\s*[:=]?\s+(?=(?:the\s+)?(?:front|back|left|right|centre|center|"
                 r"middle)\b)", re.I), "at the "),
+    # "um right let me think", "right, so": "right" as a word to begin, no side
+    (re.compile(r"(?:^|(?<=[.!?]\s))\W*(?:(?:um+|uh+|er+|ok(?:ay)?|so|yeah)\W+)*right\b\s*,?\s*"
+                r"(?=(?:so|then|let|ok(?:ay)?|now|um+|uh+|here|listen|well|guys|team|folks)\b)",
+                re.I), " "),
+    # "the mess on the bench", "in the middle of the bench": the workbench is the table
+    (re.compile(r"\b(on|at|off|across|along|of|from|clear)\s+the\s+(?:work\s*)?bench\b(?!\s+(?:with|of)\b)",
+                re.I), r"\1 the table"),
+    # "two towers of three one in the front left corner and one in the back right corner"
+    (re.compile(r"\b(of\s+(?:\d+|two|three|four|five|six))\s+(one\s+(?:in|at|on)\s+the\b)", re.I),
+     r"\1, \2"),
+    # "pls build it before 6", "until 3 pm": a time of day
+    (re.compile(r"\b(?:before|after|until|till|til)\s+(?:\d{1,2}(?:[:.]\d{2})?|one|two|three|four|five|"
+                r"six|seven|eight|nine|ten|eleven|twelve|noon|lunch)(?:\s*(?:am|pm|o'?clock))?\b"
+                r"(?=\s*(?:$|[,.;!?→]|(?:today|tonight|tomorrow|pls|please|thx|thanks|if)\b))",
+                re.I), " "),
     # "tall-ish", "smallish": the size word itself
     (re.compile(r"\b(tall|high|long|wide|low|short|big|small|flat)-?ish\b", re.I), r"\1"),
     # "job 2207 on the screen says:", "on the HMI": where the job was read, not a structure
@@ -1384,13 +1400,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _PLACE_GLOSS.sub(glossed, text)  # "the spawn point (the middle)": the place meant
 
     def many(m: re.Match[str]) -> str:
-        noun = m.group(1).lower()
-        if noun in ("row", "line", "rows", "lines"):  # "row x5": a work order's five along
-            notes.append(f"read '{m.group(0).strip()}' as a {noun} of {m.group(2)}")
-            return f" a {noun} of {m.group(2)} "
+        noun, size, n = m.group(1).lower(), m.group(2) or "", m.group(3)
+        if noun in ("row", "line", "rows", "lines") and not size:  # "row x5": five along
+            notes.append(f"read '{m.group(0).strip()}' as a {noun} of {n}")
+            return f" a {noun} of {n} "
         plural = noun + ("es" if noun.endswith(("ch", "sh", "x")) else "s")
-        notes.append(f"read '{m.group(0).strip()}' as {m.group(2)} {plural}")
-        return f" {m.group(2)} {plural} "
+        notes.append(f"read '{m.group(0).strip()}' as {n} {plural}{size}")  # "tower of 4 x2"
+        return f" {n} {plural}{size} "
 
     text = _TIMES_N.sub(many, text)  # "make a tower x3": three of them
     text = _stage(text, notes)  # "downstage left": the front, on the performer's left
