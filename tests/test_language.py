@@ -4243,8 +4243,10 @@ def test_sticky_notes_negated_places_and_the_one_on_a_side():
     assert r.status == "success" and r.spec.structures[0].region == "back"
     r = plan("wall 5 long x 2 high, not along the front")
     assert r.status == "success" and r.spec.structures[0].region == "back"
-    r = plan("Task: Build two towers of four, one cube apart. Then remove the top cube from the one "
-             "on the right.")  # fmt: skip
+    r = plan(
+        "Task: Build two towers of four, one cube apart. Then remove the top cube from the "
+        "one on the right."
+    )
     assert r.status == "success" and sorted(s.height for s in r.spec.structures) == [3, 4]
     r = plan("Um right let me think ok a block two by two and two high in the centre.")
     assert r.spec.structures[0].region == "centre"  # "right" begins the sentence: no side
