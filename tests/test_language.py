@@ -4256,3 +4256,15 @@ def test_sticky_notes_negated_places_and_the_one_on_a_side():
         "Build two towers of three one in the front left corner and one in the back right corner."
     )
     assert sorted(str(s.region) for s in r.spec.structures) == ["back right", "front left"]
+
+
+def test_both_pronouns_of_a_pair_and_a_tower_at_a_walls_end():
+    # "a tower of 3 behind it and a tower of 2 in front of it": both "it"s are the wall
+    r = plan("a wall 5 long, a tower of 3 behind it and a tower of 2 in front of it")
+    assert r.status == "success"
+    assert sorted((x.subject, x.object, x.side) for x in r.spec.relations) == [
+        (1, 0, "back"), (2, 0, "front")]  # fmt: skip
+    r = plan("make a wall 4 long and 2 high with a tower of 3 at the left end")
+    assert [(x.kind, x.side, x.gap_m) for x in r.spec.relations] == [("next_to", "left", 0.0)]
+    r = plan("a stack of 4 at the left end of the table and another stack of 4 at the right end")
+    assert sorted(str(s.region) for s in r.spec.structures) == ["left", "right"]

@@ -69,6 +69,20 @@ _PLACE_GLOSS = re.compile(
 
 
 _FAMILY_SAID = shape_alternation(min_len=3)
+_ONE_NEW = r"(?:and\s+)?(?:then\s+)?(?:put\s+|place\s+)?(?:an?|one|another)\s+"
+_RELATION_SAID = (
+    r"(?:in\s+front\s+of|behind|to\s+the\s+(?:left|right)\s+of|next\s+to|beside|on\s+top\s+of|on|"
+    r"against|in\s+the\s+middle\s+of)"
+)
+_TABLE_ENDS = re.compile(r"\bends?\s+of\s+the\s+(?:table|workspace|bench|cell)\b", re.IGNORECASE)
+_BOTH_IT = re.compile(
+    r"\b(?P<prev>" + _FAMILY_SAID + r")\b(?P<head>[^.;]*?,\s*" + _ONE_NEW
+    + r"(?P<fam1>" + _FAMILY_SAID + r")\b[^.;,]*?\b" + _RELATION_SAID + r"\s+it)"
+    + r"(?P<mid>\s*,?\s+" + _ONE_NEW + r"(?P<fam2>" + _FAMILY_SAID + r")\b[^.;,]*?\b"
+    + _RELATION_SAID + r"\s+)it\b",
+    re.IGNORECASE,
+)
+"""'a wall, a tower of 3 behind it and a tower of 2 in front of it': both "it"s name the wall."""
 _ONE_OF_EACH = re.compile(r"\bone\s+(?:of|with|tower|stack|wall|row)\b(?![^.;]*[.;])", re.I)
 """'two towers, one of 3 and one of 5': the first of a list naming each one."""
 _CORNERS_OF = {
@@ -455,6 +469,17 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"sitting)?\s*(?:right\s+)?(?:inside(?:\s+it)?|in\s+(?:the\s+)?(?:middle|centre|center)(?:\s+of\s+it)?)"
                 r"\b", re.I),
      lambda m: f"{m.group(1)} and a tower of 1 in the middle of it"),
+    # "a wall, a tower of 3 behind it and a tower of 2 in front of it": both "it"s the wall
+    (_BOTH_IT, lambda m: m.group(0) if m.group("prev").lower() in (
+        m.group("fam1").lower(), m.group("fam2").lower())
+     else f"{m.group('prev')}{m.group('head')}{m.group('mid')}the {m.group('prev')}"),
+    # "a wall 4 long with a tower of 3 at the left end": against its left end
+    (re.compile(r"(?<!\btower\s)(?<!\bone\s)(?<!\bstack\s)(?<!\bcube\s)"
+                r"\b(?:at|against)\s+(?:the|its)\s+(left|right)(?:[\s-]+hand)?\s+end\b"
+                r"(?!\s+of\s+the\s+(?:table|workspace|bench|cell|row\s+of\s+(?:towers|stacks)))"
+                r"(?:\s+of\s+(?:it|the\s+(?:wall|row|line|fence|slab)))?", re.I),
+     lambda m: m.group(0) if _TABLE_ENDS.search(m.string)
+     else f"to the {m.group(1).lower()} of it, touching"),
     # "a tower of 5 touching its left side": against it on that side
     (re.compile(r"\btouching\s+its\s+(left|right|front|back)(?:[\s-]+hand)?(?:\s+(?:side|end|face))?\b",
                 re.I),

@@ -87,6 +87,14 @@ def fill_slots(
         ref = refers_to(p, phrases[:k], partner)
         if ref is not None:
             p.ref = ref
+            the = re.fullmatch(r"\W*(?:the|that)\s+(\w+)\W*", p.text.lower())
+            family = lx.SHAPE_WORDS.get(the.group(1)) if the else None
+            q = phrases[ref]
+            if family and q.count > 1:  # "the wall" of "a wall, a tower of 3": that one
+                span = range(q.first, q.first + q.count)
+                mine = [i for i in span if structures[i].shape == family]
+                if len(mine) == 1:
+                    p.structure = mine[0]
             continue
         if not content:
             continue
