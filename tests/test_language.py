@@ -4268,3 +4268,12 @@ def test_both_pronouns_of_a_pair_and_a_tower_at_a_walls_end():
     assert [(x.kind, x.side, x.gap_m) for x in r.spec.relations] == [("next_to", "left", 0.0)]
     r = plan("a stack of 4 at the left end of the table and another stack of 4 at the right end")
     assert sorted(str(s.region) for s in r.spec.structures) == ["left", "right"]
+
+
+def test_a_row_of_cubes_across_two_towers_is_a_beam_said_so():
+    # "joined by a row of 3 cubes on top" stood the row on the table between them, silently
+    r = plan("two towers of 3, a cube apart, joined by a row of 3 cubes on top")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["bridge"]
+    assert any("would not hold" in n for n in r.notes)
+    r = plan("stack 4 cubes on the left and 2 on the right")
+    assert sorted((s.region, s.height) for s in r.spec.structures) == [("left", 4), ("right", 2)]

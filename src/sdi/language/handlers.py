@@ -376,6 +376,17 @@ def _from_edge(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" , at {axis} = {round(at, 4)} m , "
 
 
+def _cube_bar(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "two towers joined by a row of 3 cubes on top": a beam across them, said — a row of
+    loose cubes would not hold across the gap. Only over two supports named before."""
+    before = m.string[: m.start()]
+    if not re.search(r"\b(?:towers|pillars|posts|stacks|columns|legs)\b", before, re.I):
+        return m.group(0)  # "a wall with a row on top": a row standing on it
+    st.notes.append(f"read '{_said(m)[0]}' as a beam across the tops: a row of loose cubes "
+                    "would not hold across the gap")  # fmt: skip
+    return " with a beam across the top "
+
+
 def _top_left(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "top left of the drawing", "in the bottom right corner": a plan seen from above with the
     robot at the bottom — top is the back, bottom the front."""
@@ -1070,6 +1081,7 @@ HANDLERS: dict[str, Handler] = {
     "{grid_of}": _grid_of,
     "{centred_beside}": _centred_beside,
     "{top_left}": _top_left,
+    "{cube_bar}": _cube_bar,
     "{from_edge}": _from_edge,
     "{as_big_as}": _as_big_as,
     "{all_different}": _all_different,

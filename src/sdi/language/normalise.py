@@ -480,6 +480,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?:\s+of\s+(?:it|the\s+(?:wall|row|line|fence|slab)))?", re.I),
      lambda m: m.group(0) if _TABLE_ENDS.search(m.string)
      else f"to the {m.group(1).lower()} of it, touching"),
+    # "stack 4 cubes on the left and 2 on the right": a stack on each side
+    (re.compile(r"\b(?:stack|pile|put)\s+(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes|blocks|bricks)\s+"
+                r"((?:on|at|in)\s+the\s+(?:left|right|front|back|middle|centre|center)(?:\s+(?:left|right))?)"
+                r"\s*,?\s+and\s+(\d+|two|three|four|five|six|seven|eight)\s+"
+                r"((?:on|at|in)\s+the\s+(?:left|right|front|back|middle|centre|center)(?:\s+(?:left|right))?)\b",
+                re.I), r"a tower of \1 \2 and a tower of \3 \4"),
     # "a tower of 5 touching its left side": against it on that side
     (re.compile(r"\btouching\s+its\s+(left|right|front|back)(?:[\s-]+hand)?(?:\s+(?:side|end|face))?\b",
                 re.I),

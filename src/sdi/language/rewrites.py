@@ -43,6 +43,17 @@ _REJECT_IF = (
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
+    (  # "two towers joined by a row of 3 cubes on top": cubes alone would not hold across a gap
+        re.compile(
+            r"\b(?:(joined|connected|linked|bridged|topped)\s+by|with)\s+an?\s+(?:\d+[- ]cube\s+)?"
+            r"(?:row|line|bar|strip)(?:\s+of\s+(?:\d+|two|three|four|five)?\s*(?:cubes|blocks))?\s+"
+            r"(?:on\s+top|across\s+(?:the\s+)?tops?|across\s+them|over\s+(?:the\s+)?tops?)"
+            r"(?:\s+(?:joining|connecting|linking|bridging)\s+them)?",
+            re.IGNORECASE,
+        ),
+        "{cube_bar}",
+        "",
+    ),
     (  # "its centre 10 cm from the front edge", "from the left edge 10 cm": a coordinate
         re.compile(
             r"(?:,\s*)?(?:(?:with\s+)?its\s+(?:centre|center)\s+|centred\s+|(?:placed\s+|set\s+)?)?"
