@@ -4277,3 +4277,12 @@ def test_a_row_of_cubes_across_two_towers_is_a_beam_said_so():
     assert any("would not hold" in n for n in r.notes)
     r = plan("stack 4 cubes on the left and 2 on the right")
     assert sorted((s.region, s.height) for s in r.spec.structures) == [("left", 4), ("right", 2)]
+
+
+def test_a_gap_said_once_and_the_sides_of_the_work_table():
+    r = plan("three towers of 3 spaced 10 cm apart in the middle")
+    assert r.spec.gap_m == 0.1 and not any("0.05 m" in n for n in r.notes)  # one gap, said once
+    r = plan("a tower of 3 cubes on the left side of the table, and a tower of 5 cubes on the "
+             "right side")  # fmt: skip
+    assert r.status == "success"  # the table's side is a place, not a relation to a table
+    assert [(s.region, s.height) for s in r.spec.structures] == [("left", 3), ("right", 5)]

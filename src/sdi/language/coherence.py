@@ -89,8 +89,8 @@ def _relation_cues(doc: Doc) -> list[str]:
         if any(o.lower_ in ("other", "another") for o in objects):
             continue  # "next to each other", "on top of one another": side by side words
         for o in list(objects):  # "round the edge of the top", "along the rim of the base"
-            while o.lower_ in _FACES and (of := _of(o)) is not None:
-                objects.append(of)
+            while o.lower_ in _FACES and (of := _of(o)) is not None and not _work_table(of):
+                objects.append(of)  # ("the left side of the table" is the work table's)
                 o = of
         if any(_structural(o) for o in objects):
             span = doc[tok.i : max(o.i for o in objects) + 1]

@@ -467,8 +467,9 @@ def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
     for d in drafts:
         if d.shape == "tower" and d.gap_m is not None:
             # "a tower of 4, with one block in between": a tower has no gaps of its own
-            st.gap_m = d.gap_m if st.gap_m is None else st.gap_m
-            st.notes.append(f"read the gap said with the tower as {d.gap_m:g} m between them")
+            if st.gap_m is None:  # a gap said for the structures already holds ("10 cm apart")
+                st.gap_m = d.gap_m
+                st.notes.append(f"read the gap said with the tower as {d.gap_m:g} m between them")
             out.append(d.model_copy(update={"gap_m": None}))
             continue
         if d.shape in ("row", "grid") and d.gap_m is not None:
