@@ -4286,3 +4286,14 @@ def test_a_gap_said_once_and_the_sides_of_the_work_table():
              "right side")  # fmt: skip
     assert r.status == "success"  # the table's side is a place, not a relation to a table
     assert [(s.region, s.height) for s in r.spec.structures] == [("left", 3), ("right", 5)]
+
+
+def test_more_said_beside_is_a_new_stack_and_lengths_listed_for_walls():
+    # "then stack 2 more next to it" made the first tower 5 high, silently
+    r = plan("stack 3 cubes, then stack 2 more next to it")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 2]
+    assert [x.kind for x in r.spec.relations] == ["next_to"]
+    r = plan("a tower of 3, then add 2 more cubes on top")  # on top: the same tower, taller
+    assert [s.height for s in r.spec.structures] == [5]
+    r = plan("two walls side by side, 3 and 5 long")
+    assert r.status == "success" and [s.length for s in r.spec.structures] == [3, 5]

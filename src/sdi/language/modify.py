@@ -279,6 +279,11 @@ def modify(
         if not m:
             continue
         m = _in_parts(pattern, m, st)
+        said = st.command.lower()
+        at = said.find(p.text.lower())
+        tail = said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
+        if op in ("+", "+1") and (_BESIDE.search(p.text) or _BESIDE.match(tail.lstrip(" ,"))):
+            return False  # "then stack 2 more next to it": a new stack beside, not a taller one
         if _NAMES_MORE.search(p.text[m.end() :]):
             return False  # "pull the top 3 off and set them down as a tower": more than a change
         change = _CHANGES.get(op)
@@ -296,6 +301,12 @@ def modify(
         return True
     return False
 
+
+_BESIDE = re.compile(
+    r"\b(?:next\s+to|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|alongside|"
+    r"on\s+its\s+(?:left|right))\b",
+    re.IGNORECASE,
+)
 
 _NAMES_MORE = re.compile(
     r"\b(?:" + shape_alternation(exclude=lx.AMBIGUOUS_SHAPES | {"table", "tables"}) + r")\b",

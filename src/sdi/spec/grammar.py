@@ -1160,7 +1160,8 @@ class _Parser:
                 if self.word(after) in lx.PART_WORDS:
                     t[after].used = True
                     after += 1
-                main = {"tower": ("high", "tall"), "row": ("long",), "staircase": ("steps",)}
+                main = {"tower": ("high", "tall"), "row": ("long",), "wall": ("long",),
+                        "staircase": ("steps",)}  # fmt: skip
                 listed = any(self.word(m + 1) in ("and", "or") for m in run[:-1])
                 if listed and self.word(after) in main.get(h.shape, ()):  # "of 2, 3 and 4 high"
                     t[after].used = True
