@@ -122,19 +122,25 @@ def _count_cues(doc: Doc) -> list[tuple[str, str, int]]:
     return cues
 
 
-def _shown(spec: Spec, st: ReadState, counts: bool = True) -> set[float]:
-    """Every value the reading shows, in the forms a command may have said it (with `counts`,
-    how many structures there are, too)."""
+def _counts(spec: Spec) -> set[float]:
+    """How many structures the reading builds, in all and of each family, and one fewer ("then
+    2 more like it")."""
+    families: dict[str, int] = {}
+    for s in spec.structures:
+        families[s.shape] = families.get(s.shape, 0) + 1
+    totals = [len(spec.structures), *families.values()]
+    return {float(n) for n in totals} | {float(n - 1) for n in totals}
+
+
+def _shown(spec: Spec, st: ReadState) -> set[float]:
+    """Every size, place and part count the reading shows, in the forms a command may have said
+    it (how many structures there are is `_counts`)."""
     from sdi.design.composer import part_sizes
     from sdi.design.shapes import generate
 
     shown: set[float] = set()
-    if counts:
-        shown.update((float(len(spec.structures)), float(len(spec.structures) - 1)))
     metres: list[float] = [g for g in [spec.gap_m, *(r.gap_m for r in spec.relations)] if g]
-    families: dict[str, int] = {}
     for s in spec.structures:
-        families[s.shape] = families.get(s.shape, 0) + 1
         for key, value in s.model_dump(exclude_none=True).items():
             if key.endswith("_m") or key in ("at_x", "at_y"):
                 metres.append(float(value))
@@ -153,9 +159,6 @@ def _shown(spec: Spec, st: ReadState, counts: bool = True) -> set[float]:
         for b in boxes:
             levels[round(b.z, 4)] = levels.get(round(b.z, 4), 0) + 1
         shown.update(float(n) for n in levels.values())
-    if counts:
-        shown.update(float(n) for n in families.values())
-        shown.update(float(n - 1) for n in families.values())  # "then 2 more like it"
     for note in st.notes:  # a length a note states ("0.0508 m thick is one layer")
         metres.extend(float(v) for v in re.findall(r"(\d+(?:\.\d+)?) m\b", note))
     for m in metres:
@@ -487,14 +490,12 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
         (t, v, i) for t, v, i in _numbers(doc, tokens, st.command) if f"{v:g}" not in told
     ]
     if unexplained:
-        shown = _shown(spec, st)
-        sizes = _shown(spec, st, counts=False)
+        sizes, counts = _shown(spec, st), _counts(spec)
         for text, value, i in unexplained:
-            counted = round(value, 2) in shown and round(value, 2) not in sizes
-            if counted and not _counts_something(doc, i):
-                shown = shown - {round(value, 2)}  # "a tower of 2 cubes more" beside another:
-                # the number of structures happens to be 2, but the 2 counts none of them
-            if round(value, 2) not in shown:
+            v = round(value, 2)
+            # a number only the count of structures explains must count something ("a tower
+            # of 2 cubes more" beside another: there are 2, but the 2 counts none of them)
+            if v not in sizes and (v not in counts or not _counts_something(doc, i)):
                 st.material.append(text)
                 st.notes.append(f"ignored '{text}': the number shows nowhere in the reading")
     if any(s.shape in _COMPOSITE for s in spec.structures):

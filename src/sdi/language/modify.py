@@ -5,7 +5,7 @@ cubes."); and changes SDI cannot make (taking parts out), which are reported."""
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 from sdi.errors import SpecError
 from sdi.language.nouns import shape_alternation
@@ -279,10 +279,7 @@ def modify(
         if not m:
             continue
         m = _in_parts(pattern, m, st)
-        said = st.command.lower()
-        at = said.find(p.text.lower())
-        tail = said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
-        if op in ("+", "+1") and (_BESIDE.search(p.text) or _BESIDE.match(tail.lstrip(" ,"))):
+        if op in ("+", "+1") and _set_beside(p, st.command):
             return False  # "then stack 2 more next to it": a new stack beside, not a taller one
         if _NAMES_MORE.search(p.text[m.end() :]):
             return False  # "pull the top 3 off and set them down as a tower": more than a change
@@ -307,6 +304,15 @@ _BESIDE = re.compile(
     r"on\s+its\s+(?:left|right))\b",
     re.IGNORECASE,
 )
+
+def _set_beside(p: Phrase, command: str) -> bool:
+    """The phrase sets what it names beside another ("stack 2 more next to it"): in its own
+    words, or in the words that follow it in the command."""
+    said = command.lower()
+    at = said.find(p.text.lower())
+    tail = said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
+    return bool(_BESIDE.search(p.text) or _BESIDE.match(tail.lstrip(" ,")))
+
 
 _NAMES_MORE = re.compile(
     r"\b(?:" + shape_alternation(exclude=lx.AMBIGUOUS_SHAPES | {"table", "tables"}) + r")\b",
@@ -470,16 +476,13 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
             return None
         index = found_at
     else:
-        indices = [q.first + k for q in built for k in range(q.count)]
-        heights = {i: structures[i].height for i in indices if structures[i].shape == "tower"}
-        if len(heights) < 2 or None in heights.values():
+        towers = _tower_heights(built, structures)
+        if None in towers.values():
             return None
-        pick = max if which in ("tallest", "highest", "biggest") else min
-        extreme = pick(h for h in heights.values() if h is not None)
-        found = [i for i, h in heights.items() if h == extreme]
-        if len(found) != 1:
+        found_at = _extreme_tower(towers, low=which not in ("tallest", "highest", "biggest"))
+        if found_at is None:
             return None  # no single one: the command does not say which
-        index = found[0]
+        index = found_at
     gone = structures.pop(index)
     owner = next(q for q in built if q.first <= index < q.first + q.count)
     for q in before:
@@ -490,6 +493,23 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
     side = f", the one on the {which}" if which in ("left", "right", "front", "back") else ""
     return f"{left} left of the {left + 1}{size}{side}"
+
+
+def _tower_heights(built: list[Phrase], structures: list[StructureDraft]) -> dict[int, int | None]:
+    """The towers built so far, by index, with their heights (None: not said)."""
+    every = [q.first + k for q in built for k in range(q.count)]
+    return {i: structures[i].height for i in every if structures[i].shape == "tower"}
+
+
+def _extreme_tower(heights: Mapping[int, int | None], low: bool) -> int | None:
+    """The one tower of `heights` (two or more, all said) that is the tallest, or with `low`
+    the shortest; None when there are fewer than two or no single one."""
+    said = {i: h for i, h in heights.items() if h is not None}
+    if len(said) < 2 or len(said) != len(heights):
+        return None
+    best = (min if low else max)(said.values())
+    found = [i for i, h in said.items() if h == best]
+    return found[0] if len(found) == 1 else None
 
 
 def _by_side(
@@ -615,18 +635,12 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     if on_side is not None:
         index = on_side
     elif extreme:
-        heights: dict[int, int] = {}
-        for q in built:
-            for i in range(q.first, q.first + q.count):
-                h = structures[i].height
-                if structures[i].shape == "tower" and h:
-                    heights[i] = h
+        sized = {i: h for i, h in _tower_heights(built, structures).items() if h}
         low = extreme.group(1).lower().startswith(("short", "low", "small"))
-        best = (min if low else max)(heights.values(), default=0)
-        found = [i for i, h in heights.items() if h == best]
-        if len(heights) < 2 or len(found) != 1:
+        found_at = _extreme_tower(sized, low)
+        if found_at is None:
             return None  # "the taller one" of towers alike: which is not said
-        index = found[0]
+        index = found_at
     elif not ordinal and (
         (named and named.group(1).lower() not in ("same", "other", "new", "top"))
         or re.search(

@@ -426,7 +426,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|twelve|twenty)\s+(?=(?:sisters|brothers|"
                 r"kids|children|grandchildren|grandsons|granddaughters|sons|daughters|friends|colleagues|guests|"
                 r"visitors|people|persons|customers|clients|students|pupils|operators|engineers|managers|"
-                r"girls|boys|men|women|adults|parents|families|engineers|apprentices|trainees|staff)\b)",
+                r"girls|boys|men|women|adults|parents|families|apprentices|trainees|staff)\b)",
                 re.I), ""),
     # "a tower of three in each back corner": the back left and the back right corner
     (re.compile(r"\b((?:an?|one)\s+[^,.;]{1,40}?)\s+(?:in|at|on)\s+(?:each|both|either)\s+(?:of\s+the\s+)?"

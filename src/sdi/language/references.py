@@ -36,7 +36,7 @@ def copies(
         first = next((o for o in reversed(pool) if o.shape == s.shape), None)
         if first is None:
             continue
-        if said and set(said) <= {"height", "height_m"} and first.shape == s.shape:
+        if said and set(said) <= {"height", "height_m"}:
             # "a 3x3 slab 4 high, then another one 2 high": its footprint, a height of its own
             footprint = first.model_dump(include={"length", "width", "dims", "length_m", "width_m"},
                                          exclude_defaults=True)  # fmt: skip

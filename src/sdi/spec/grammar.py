@@ -112,6 +112,12 @@ _SECOND_SIZE = frozenset({"levels", "level", "layers", "layer", "high", "tall", 
 ("a base of 4, 3 levels high"), not a list ("of 2, 3")."""
 
 
+_LISTED_SIZE = {"tower": ("high", "tall"), "row": ("long",), "wall": ("long",),
+                "staircase": ("steps",)}  # fmt: skip
+"""The size word a list of values ends with that names the family's main size ("towers of 2,
+3 and 4 high"): used with the list."""
+
+
 @dataclass
 class Tok:
     text: str
@@ -1160,10 +1166,8 @@ class _Parser:
                 if self.word(after) in lx.PART_WORDS:
                     t[after].used = True
                     after += 1
-                main = {"tower": ("high", "tall"), "row": ("long",), "wall": ("long",),
-                        "staircase": ("steps",)}  # fmt: skip
                 listed = any(self.word(m + 1) in ("and", "or") for m in run[:-1])
-                if listed and self.word(after) in main.get(h.shape, ()):  # "of 2, 3 and 4 high"
+                if listed and self.word(after) in _LISTED_SIZE.get(h.shape, ()):
                     t[after].used = True
             k = j
 
