@@ -4297,3 +4297,14 @@ def test_more_said_beside_is_a_new_stack_and_lengths_listed_for_walls():
     assert [s.height for s in r.spec.structures] == [5]
     r = plan("two walls side by side, 3 and 5 long")
     assert r.status == "success" and [s.length for s in r.spec.structures] == [3, 5]
+
+
+def test_a_form_names_its_item_in_the_singular_and_more_set_to_a_side_is_a_new_stack():
+    # the form reader shares the data reader's family word: "Towers" is a tower ("towerss"
+    # was written, and a typo correction noted for it)
+    r = plan("Qty 2 | Towers | H: 3")
+    assert [s.height for s in r.spec.structures] == [3, 3]
+    assert not any("towerss" in n for n in r.notes)
+    r = plan("stack 3 cubes, then stack 2 more to its left")
+    assert [s.height for s in r.spec.structures] == [3, 2]
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "left")]

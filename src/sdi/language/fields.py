@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 
+from sdi.language.structured import family_word
 from sdi.spec import lexicon as lx
 
 _SEPARATORS = (re.compile(r"\s*\|\s*"), re.compile(r"\s+[–—]\s+|\s+-\s+"), re.compile(r"\s+/\s+"))
@@ -129,10 +130,8 @@ def _read(fields: list[str]) -> str | None:
 
 
 def _family(word: str, field_only: bool = False) -> str | None:
-    """The structure family a field names ("Tower", "towers", "Table"); a word that may name
-    something else ("block") only when it is the whole field (`field_only`)."""
-    word = word.strip().lower()
-    for w in (word, word[:-1] if word.endswith("s") else word):
-        if w in lx.SHAPE_WORDS and (field_only or w not in lx.AMBIGUOUS_SHAPES):
-            return w
-    return None
+    """The structure word a field names, singular ("Tower", "towers" → "tower"), as the data
+    reader reads it (`structured.family_word`); a word that may name something else ("block")
+    only when it is the whole field (`field_only`)."""
+    w = family_word(word)
+    return w if w and (field_only or w not in lx.AMBIGUOUS_SHAPES) else None

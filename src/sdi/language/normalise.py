@@ -489,7 +489,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "stack 3 cubes, then stack 2 more next to it": a stack of 2 beside it
     (re.compile(r"\b(stack|put|place|add|set)\s+(\d+|two|three|four|five|six)\s+more(?:\s+(?:cubes|blocks))?\s*,?\s+"
                 r"(?=(?:right\s+)?(?:next\s+to|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|"
-                r"alongside)\b)", re.I), r"\1 a stack of \2 "),
+                r"alongside|(?:to|on)\s+its\s+(?:left|right))\b)", re.I), r"\1 a stack of \2 "),
     # "a tower of 5 touching its left side": against it on that side
     (re.compile(r"\btouching\s+its\s+(left|right|front|back)(?:[\s-]+hand)?(?:\s+(?:side|end|face))?\b",
                 re.I),

@@ -139,7 +139,7 @@ def _set(out: dict[str, Any], path: list[str], value: Any) -> None:
     out[path[-1]] = value
 
 
-def _family(name: Any) -> str | None:
+def family_word(name: Any) -> str | None:
     """The family word a key or value names, singular ("towers" → "tower")."""
     word = str(name).lower().strip()
     single = word[:-1] if word.endswith("s") else word
@@ -169,12 +169,12 @@ def _describe(data: Any) -> str:
     shape = next((data[k] for k in _SHAPE_KEYS if k in data), None)
     if shape is not None or "op" in data:
         return _structure(data, shape)
-    named = [k for k in data if _family(k) and not isinstance(data[k], int | float | str)]
-    lists = [k for k in data if _family(k) and isinstance(data[k], list)]
+    named = [k for k in data if family_word(k) and not isinstance(data[k], int | float | str)]
+    lists = [k for k in data if family_word(k) and isinstance(data[k], list)]
     if named or lists:
         said = []
         for key in data:
-            family = _family(key)
+            family = family_word(key)
             value = data[key]
             if family and isinstance(value, list) and all(isinstance(v, int) for v in value):
                 heights = ", ".join(str(v) for v in value[:-1]) + f" and {value[-1]}"
@@ -182,7 +182,7 @@ def _describe(data: Any) -> str:
                             else f"a {family} of {value[0]}")  # fmt: skip
             elif family and isinstance(value, dict):
                 said.append(_structure(value, family))
-        rest = {k: v for k, v in data.items() if not _family(k)}
+        rest = {k: v for k, v in data.items() if not family_word(k)}
         return " . ".join([*said, _loose(rest)])
     size = next((data[k] for k in data if str(k).lower().startswith(("size", "dims"))), None)
     if size is not None:  # "size: [2, 3, 4]": a block (two sides: a slab)
@@ -205,7 +205,7 @@ def _structure(data: dict[str, Any], shape: Any) -> str:
         return f"add {n} more cubes to it"
     if shape is None and op in _OPS:
         shape = data.get("shape", "structure")
-    family = _family(shape) or str(shape)
+    family = family_word(shape) or str(shape)
     count = next((data[k] for k in _COUNT_KEYS if k in data), None)
     head = f"{count} {family}s" if isinstance(count, int) and count > 1 else f"a {family}"
     used = {*_SHAPE_KEYS, *_COUNT_KEYS, "op", "to"}
@@ -251,8 +251,8 @@ def _loose(data: dict[str, Any]) -> str:
                 words.append(f", at x = {xy[0]} {unit}, y = {xy[1]} {unit}")
         elif k in _RELATIONS and not isinstance(value, dict):
             words.append(f", {_RELATIONS[k]} it")
-        elif k.startswith("n_") and _family(k[2:]) and isinstance(value, int):
-            words.append(f"{value} {_family(k[2:])}s")
+        elif k.startswith("n_") and family_word(k[2:]) and isinstance(value, int):
+            words.append(f"{value} {family_word(k[2:])}s")
         elif k in ("on_top", "base") and isinstance(value, dict):
             words.append(_describe(value))
         else:
