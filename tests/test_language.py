@@ -4308,3 +4308,49 @@ def test_a_form_names_its_item_in_the_singular_and_more_set_to_a_side_is_a_new_s
     r = plan("stack 3 cubes, then stack 2 more to its left")
     assert [s.height for s in r.spec.structures] == [3, 2]
     assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "left")]
+
+
+@pytest.mark.parametrize(
+    ("command", "regions"),
+    [
+        ("I'm standing across the table from the robot. Put a tower of 3 on my left.", ["right"]),
+        ("as I look at it from the visitor side, a row of 3 on the right", ["left"]),
+        ("From where I stand, opposite the robot, a wall of 4 on the far side from me", ["front"]),
+        ("I'm opposite the robot: a tower of 2 nearest me", ["back"]),
+        ("a tower of 4 on the robot's left; I'm opposite the robot", ["left"]),
+        ("a tower of 3 on my right", ["right"]),  # no viewpoint said: the robot's, noted
+        ("tower of 3 on the far side of the table", ["back"]),  # a place, not a viewpoint
+    ],
+)
+def test_places_said_from_across_the_table_are_turned_into_the_robots_frame(command, regions):
+    # an operator facing the robot said where they stand; "my left" was built on the robot's
+    # left, silently
+    r = plan(command)
+    assert r.status == "success"
+    assert [s.region for s in r.spec.structures] == regions
+    viewpoint = "opposite" in command or "across" in command or "visitor" in command
+    assert any("read the places from where" in n for n in r.notes) == viewpoint
+    assert any("as the robot's right" in n for n in r.notes) == ("my right" in command)
+
+
+def test_a_viewpoint_turns_relations_orders_and_climbs_but_not_the_robots_own_words():
+    r = plan("Facing the robot: a staircase of 4 climbing towards me, and a tower of 2 to the "
+             "left of it")  # fmt: skip
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "right")]
+    tops = {round(o.position[0], 3): o.position[2] for o in r.layout.objects}
+    assert max(tops, key=tops.__getitem__) > 0.45  # climbs away from the robot, to +x
+    r = plan("I'm on the other side of the table from the robot. A wall of 5 nearest me, with a "
+             "tower of 2 in front of it as I see it")  # fmt: skip
+    assert r.spec.structures[0].region == "back"
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "back")]
+    # "from right to left" is an order (it was read as "to the left": all three at the left)
+    for command in ("three towers of 1, 2 and 3 from right to left",
+                    "three towers of 1, 2 and 3 from left to right, I'm standing opposite the "
+                    "robot"):  # fmt: skip
+        r = plan(command)
+        tops: dict[float, float] = {}
+        for o in r.layout.objects:
+            y = round(o.position[1], 3)
+            tops[y] = max(tops.get(y, 0.0), o.position[2])
+        left_first = [round(tops[y] / 0.05 + 0.5) for y in sorted(tops, reverse=True)]
+        assert r.status == "success" and left_first == [3, 2, 1]

@@ -41,7 +41,17 @@ import re
 from typing import TYPE_CHECKING
 
 from sdi.errors import LimitError, SpecError
-from sdi.language import claims, coherence, corrections, fields, scanned, spacing, structured, typos
+from sdi.language import (
+    claims,
+    coherence,
+    corrections,
+    fields,
+    scanned,
+    spacing,
+    structured,
+    typos,
+    viewpoint,
+)
 from sdi.language.accounting import no_structure, understood_summary
 from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
@@ -83,6 +93,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     corrected[:0] = unscanned
     text = fields.as_words(text, st.notes)  # "Tower | H: 4 | X (mm): 500 | Y (mm): 400"
     text = normalise(text, st.notes)
+    text = viewpoint.take(text, st.notes)  # "I'm opposite the robot … on my left": its right
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes)
     text = _step_rise(text, st)

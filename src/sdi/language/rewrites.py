@@ -2239,7 +2239,7 @@ _REWRITES += [
     # "directly behind it", "dead centre", "right next to": an intensifier of a place
     (
         re.compile(
-            r"\b(?:directly|immediately|dead|exactly|right|just|squarely)\s+(?=(?:behind|in\s+front|"
+            r"\b(?:directly|immediately|dead|exactly|right(?!\s+to\s+left\b)|just|squarely)\s+(?=(?:behind|in\s+front|"
             r"next\s+to|beside|to\s+(?:the\s+|its\s+)?(?:left|right)|on\s+top|above|atop|"
             r"(?:in\s+the\s+)?(?:centre|center|middle))\b)",
             re.IGNORECASE,

@@ -336,12 +336,12 @@ class _Parser:
                 self.axes.append((k, self._side_axis(k, "x")))  # "front to back": an axis
                 t[k].used = t[k + 1].used = t[k + 2].used = True
                 continue
-            if w in ("sideways", "lengthwise", "crosswise") or (
-                w == "left" and self.word(k + 1) == "to" and self.word(k + 2) == "right"
-            ):
-                self.axes.append((k, self._side_axis(k, "y") if w == "left" else "y"))
+            across = w in ("left", "right") and self.word(k + 1) == "to"
+            across = across and self.word(k + 2) in ("right", "left") and self.word(k + 2) != w
+            if w in ("sideways", "lengthwise", "crosswise") or across:
+                self.axes.append((k, self._side_axis(k, "y") if across else "y"))
                 t[k].used = True
-                if w == "left":  # "left to right": an axis, not a region
+                if across:  # "left to right", "right to left": an axis, not a region
                     t[k + 1].used = t[k + 2].used = True
                 continue
             if (w == "away" and self.word(k + 1) == "from") or (
