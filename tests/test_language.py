@@ -4354,3 +4354,25 @@ def test_a_viewpoint_turns_relations_orders_and_climbs_but_not_the_robots_own_wo
             tops[y] = max(tops.get(y, 0.0), o.position[2])
         left_first = [round(tops[y] / 0.05 + 0.5) for y in sorted(tops, reverse=True)]
         assert r.status == "success" and left_first == [3, 2, 1]
+
+
+def test_supports_named_with_their_gap_corners_by_count_and_things_put_inside_a_ring():
+    # "two 3 high towers 10 cm apart joined with a beam" lost its towers with the gap: an error
+    r = plan("two 3 high towers 10 cm apart joined with a beam")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["bridge"]
+    assert r.spec.structures[0].height == 3 and r.spec.structures[0].span == 2
+    # "in the four corners of the table" is one in each (a row of four was built, silently)
+    r = plan("put four single cubes in the four corners of the table")
+    assert sorted(str(s.region) for s in r.spec.structures) == [
+        "back left", "back right", "front left", "front right"]  # fmt: skip
+    r = plan("a 4x4 slab with a cube in the four corners")
+    assert [(x.kind, x.at) for x in r.spec.relations] == [("on_top_of", "corners")]
+    # a cube put "inside" or "in the middle" after a ring stands in it (it stood in the
+    # table's centre with the ring moved aside, or anywhere)
+    for command in ("make a ring of 4 by 4 and put a cube inside",
+                    "make a ring of 4 by 4, then put a cube in the centre",
+                    "build a pen 5 by 5, then stack 3 cubes inside"):  # fmt: skip
+        r = plan(command)
+        assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("around", 0, 1)]
+    r = plan("a ring of 4 by 4 on the left and put a tower of 3 in the centre of the table")
+    assert not r.spec.relations and r.spec.structures[1].region == "centre"

@@ -48,6 +48,8 @@ from sdi.bench.language_dev30 import CASES as DEV30
 from sdi.bench.language_dev31 import CASES as DEV31
 from sdi.bench.language_dev32 import CASES as DEV32
 from sdi.bench.language_dev33 import CASES as DEV33
+from sdi.bench.language_dev34 import CASES as DEV34
+from sdi.bench.language_dev35 import CASES as DEV35
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -295,6 +297,8 @@ SETS = {
     "dev31": (DEV31, 180, 8, 15),
     "dev32": (DEV32, 180, 8, 15),
     "dev33": (DEV33, 180, 8, 15),
+    "dev34": (DEV34, 180, 8, 15),
+    "dev35": (DEV35, 180, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -322,6 +326,8 @@ HARD = {
     "dev31": ("relation", "numbers", "dimensions", "sequence"),
     "dev32": ("relation", "numbers", "dimensions", "sequence"),
     "dev33": ("relation", "numbers", "dimensions", "sequence"),
+    "dev34": ("relation", "numbers", "dimensions", "sequence"),
+    "dev35": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -443,6 +449,8 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev31.py",
         "language_dev32.py",
         "language_dev33.py",
+        "language_dev34.py",
+        "language_dev35.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

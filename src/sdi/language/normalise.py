@@ -199,6 +199,16 @@ _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.I
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
+    # "make a ring of 4 by 4 and put a cube inside" / "… in the middle": inside the ring (the
+    # middle of the table, or nothing, was read, with the ring moved aside)
+    (re.compile(r"\b((?:ring|enclosure|pen|corral|fence|square\s+frame|hollow\s+square|courtyard)"
+                r"\b[^.;]*?(?:,\s*|\band\s+|\bthen\s+)(?:then\s+)?(?:put|place|stand|set|add|stack)"
+                r"\s+[^.;,]*?)\s+(?:(?:right\s+)?inside|in\s+the\s+(?:middle|centre|center))\b"
+                r"(?!\s+(?:of|it|them|the)\b)", re.I),
+     r"\1 in the middle of it"),
+    # "four cubes in the four corners of the table": one in each corner
+    (re.compile(r"\b(in|on|at|into)\s+(?:all\s+)?the\s+(?:four|4)\s+corners\b", re.I),
+     r"\1 each corner"),
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s+from\s+(?=\d|(?:one|two|three|four|five|six|"
                 r"seven|eight|nine|ten)\b)", re.IGNORECASE), r"\1 of "),
     (re.compile(r"\b(behind|beside|left|right)\s+of\s+(?=(?:" + _FAMILY_SAID + r")\b)",

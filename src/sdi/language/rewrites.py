@@ -1226,6 +1226,7 @@ _REWRITES += [
         re.compile(
             r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?:separate|individual|"
             r"loose)\s+(?:single\s+)?(cubes|blocks)\b(?!\s*,?\s*(?:spread|spaced|\d))"
+            r"(?!\s+(?:in|at|on|into)\s+(?:each|every|all|the\s+four|the\s+4)\b)"
             r"(?![^.;]*\b(?:\d+|one|two|three|a)\s+(?:cubes?|cm|mm|blocks?|parts?)\s+(?:apart|gaps?)\b)",
             re.IGNORECASE,
         ),

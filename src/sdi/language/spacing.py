@@ -174,7 +174,11 @@ def take_span(text: str, st: ReadState) -> str:
         return text
     st.span_m = span
     st.notes.append(f"read '{m.group(0).strip(' ,')}' as {span:g} m between the supports")
-    return text[: m.start()] + " " + text[m.end() :]
+    # "two 3 high towers 10 cm apart": the supports' noun names them, and stays
+    named = re.match(r"\s*(" + _SUPPORTS + r")\b", m.group(0), re.IGNORECASE)
+    if not re.search(r"\b(?:high|tall|cubes?|levels?)\s*$", text[: m.start()], re.IGNORECASE):
+        named = None  # "leave the two stacks a cube apart": the stacks named before
+    return text[: m.start()] + " " + (named.group(1) + " " if named else "") + text[m.end() :]
 
 
 _CENTRES = re.compile(
