@@ -4376,3 +4376,33 @@ def test_supports_named_with_their_gap_corners_by_count_and_things_put_inside_a_
         assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("around", 0, 1)]
     r = plan("a ring of 4 by 4 on the left and put a tower of 3 in the centre of the table")
     assert not r.spec.relations and r.spec.structures[1].region == "centre"
+
+
+def test_a_noun_naming_a_structures_use_is_noted_not_material():
+    # "a fire ring", "three lookout towers": the noun before the structure names its use
+    r = plan("A fire ring five cubes across")
+    assert r.status == "success" and any("'fire' names its use" in n for n in r.notes)
+    r = plan("Three lookout towers of 3 in a line")  # and the count before it still counts
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 3, 3]
+    # what it is made of, a misspelling, or a verb the parser took for a noun stay material
+    for command, word in (("a glass tower of 3", "glass"), ("a signall post 3 high", "signall"),
+                          ("Tower of 3. Disregard pyramid.", "disregard")):  # fmt: skip
+        r = plan(command)
+        assert r.status == "partial" and any(f"ignored '{word}'" in n for n in r.notes), r.notes
+
+
+def test_parts_counted_for_a_bridge_or_table_and_cubes_by_cubes_and_posts_at_each_end():
+    # "a bridge of 6 cubes" was a bridge 6 high (16 parts), silently
+    for command in ("a bridge of 6 cubes", "a table, 6 cubes in all"):
+        r = plan(command)
+        assert r.status == "partial" and any("parts follow from its legs" in n for n in r.notes)
+    r = plan("brigde on two 3-cube pilars")  # the pillars' cubes are their height
+    assert r.status == "success" and r.spec.structures[0].height == 3
+    # "five cubes by five" is a footprint (it was 5 parts: a ring 3 on a side)
+    r = plan("a ring, 5 cubes by 5, one high")
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (5, 5)
+    # "a post 2 cubes high at each end": 2 high ("2 cube(s) … at each end" was two posts of 1,
+    # then 6 high)
+    r = plan("a row of 5 with a tower 2 cubes high at each end")
+    assert [s.height for s in r.spec.structures if s.shape == "tower"] == [2]
+    assert [x.at for x in r.spec.relations] == ["ends"]

@@ -115,6 +115,35 @@ def _where_to_build(tok: Token, word: str) -> bool:
     )
 
 
+_STUFF = frozenset({
+    "glass", "stone", "wood", "metal", "steel", "iron", "plastic", "concrete", "gold", "silver",
+    "paper", "card", "cardboard", "lego", "foam", "rubber", "ice", "sand", "clay", "marble",
+    "copper", "brass", "aluminium", "aluminum", "timber", "crystal", "colour", "color",
+})  # fmt: skip
+"""What a structure is made of, or its colour: SDI builds in its own parts; said, it is material."""
+
+
+def _names_its_use(tok: Token, word: str) -> bool:
+    """`tok` is a noun naming what the structure it modifies is for ("fire ring", "lookout
+    tower", "garden wall"): not a place ("corner tower"), a stuff ("glass tower") or a word SDI
+    reads."""
+    return (
+        tok.pos_ in ("NOUN", "PROPN")
+        and tok.dep_ == "compound"
+        and tok.head.lower_ in lx.SHAPE_WORDS
+        and tok.i + 1 == tok.head.i
+        and tok.i > 0  # "Disregard pyramid": a verb the parser took for a noun
+        and tok.doc[tok.i - 1].pos_ in ("DET", "NUM", "ADJ", "PRON")
+        and word.isalpha()
+        and english_frequency().get(word, 0) > 0  # an English word, not "signall"
+        and word not in _PLACE_NOUNS
+        and word not in _STUFF
+        and word not in lx.SHAPE_WORDS
+        and word not in lx.PART_WORDS
+        and word not in lx.REGION_WORDS
+    )
+
+
 def account(word: str, tok: Token | None, st: ReadState) -> None:
     if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
         return
@@ -146,6 +175,14 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
         return
     if tok is not None and word in words.NEGATIONS and not _attached(tok):
         st.ignored.append(word)
+        return
+    if tok is not None and not known and _names_its_use(tok, word):
+        # "a fire ring", "three lookout towers", "a camp gateway": a noun naming the
+        # structure's use says nothing of its size, shape or place
+        st.ignored.append(word)
+        named = f"{word} {tok.head.text}"
+        st.notes.append(f"read '{named}' as a {tok.head.lemma_.lower()}: '{word}' names its use, "
+                        "with no size, shape or place in it")  # fmt: skip
         return
     if words.is_material(word, pos):
         st.material.append(word)

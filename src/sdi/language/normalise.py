@@ -206,6 +206,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"\s+[^.;,]*?)\s+(?:(?:right\s+)?inside|in\s+the\s+(?:middle|centre|center))\b"
                 r"(?!\s+(?:of|it|them|the)\b)", re.I),
      r"\1 in the middle of it"),
+    # "a ring five cubes by five", "5 cubes by 3": a footprint, not a count of cubes
+    (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?|blocks?|"
+                r"bricks?)\s+(by|x)\s+(?=\d|one\b|two\b|three\b|four\b|five\b|six\b|seven\b|"
+                r"eight\b|nine\b|ten\b)", re.I),
+     lambda m: m.group(0) if re.search(r"\b(?:wall|walls|bay|fence)\W+(?:\w+\W+){0,2}$",
+                                       m.string[: m.start()], re.I)
+     else f"{m.group(1)} {m.group(2)} "),  # a wall's "A by B" is its length by height
     # "four cubes in the four corners of the table": one in each corner
     (re.compile(r"\b(in|on|at|into)\s+(?:all\s+)?the\s+(?:four|4)\s+corners\b", re.I),
      r"\1 each corner"),
@@ -645,7 +652,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(corner|end)s?\b", re.I),
      lambda m: f"{_EACH_AT.get(m.group(1).split()[0].lower(), 'on')} each {m.group(2)}"),
     # "4 towers of 2, on each corner of it": one tower on each of its four corners
-    (re.compile(r"\b(four|4|two|2)\s+((?:\d+[- ]cubes?[- ]|\w+[- ])?[a-z]+?)s\b([^.;:]{0,40}?)"
+    (re.compile(r"\b(four|4|two|2)\s+(?!(?:cube|block|brick|part|level|layer|course)s?\b)"
+                r"((?:\d+[- ]cubes?[- ]|\w+[- ])?[a-z]+?)s\b([^.;:]{0,40}?)"
                 r"\s*,?\s*\b((?:on|at|in)\s+each\s+(corner|end))\b", re.I),
      lambda m: f"a {m.group(2)}{m.group(3)} {m.group(4)}"
      if str(_PER_ANCHOR[m.group(5).lower()]) == words_to_numbers([m.group(1).lower()])[0]

@@ -63,6 +63,7 @@ PRIMARY = {
     "l_shape": "length", "u_shape": "length", "t_shape": "length", "cross": "length",
 }  # fmt: skip
 # Which field a measurement in metres sets when no dimension word says.
+_FAMILY_WORD = {"canopy": "table"}
 PRIMARY_M = {
     "tower": "height_m",
     "staircase": "height_m",
@@ -653,6 +654,22 @@ class _Parser:
             a.end = cut
             b.start = cut
 
+    def _names_use(self, m: int) -> bool:
+        """The word at `m`, just before a shape noun, is one SDI reads nothing from ("three
+        lookout towers", "two red stacks"): it does not stop a count before it (the accounting
+        reports it)."""
+        w = self.word(m)
+        known = (lx.SHAPE_WORDS, lx.PART_WORDS, lx.DIMENSION_WORDS, lx.LEVEL_WORDS,
+                 lx.STEP_WORDS, lx.SPAN_WORDS, lx.UNITS_M, lx.REGION_WORDS, lx.SIZE_WORDS,
+                 lx.SEPARATORS, lx.JOIN_WORDS)  # fmt: skip
+        return (
+            len(w) >= 3
+            and w.isalpha()
+            and not self.is_num(m)
+            and w not in ("and", "the", "with", "for", "more", "other", "these", "those")
+            and not any(w in group for group in known)
+        )
+
     def _side_axis(self, k: int, axis: str) -> str:
         """The axis a structure runs along when the words before "left to right" / "front to
         back" say which side runs that way: "15 cm wide (left to right)" — the width runs
@@ -976,6 +993,7 @@ class _Parser:
                             "freestanding",
                         )
                         or (m < len(self.toks) and self.toks[m].used)  # "two 2 x 2 pads"
+                        or (m + 1 == h.index and self._names_use(m))  # "three lookout towers"
                         for m in range(k + 1, min(h.index + 1, len(self.toks)))
                     )
                     and h.plural
@@ -995,6 +1013,8 @@ class _Parser:
                     take(k)
                     if self.word(k + 1) in lx.PART_WORDS:
                         take(k + 1)
+                        if self.word(k + 2) not in lx.SHAPE_WORDS:  # not "2-cube pillars"
+                            p["_parts_said"] = True  # "of 6 cubes": parts, not a height
                     continue
                 p.setdefault("_loose", []).append(v)
                 take(k)
@@ -1363,6 +1383,14 @@ class _Parser:
         regions = p.pop("_regions", [])
         edges = p.pop("_edges", [])
         count = p.pop("_count", None)
+        if p.pop("_parts_said", False) and shape in ("bridge", "arch", "canopy") and count:
+            # "a bridge of 6 cubes", "a table, 6 cubes in all": its parts follow from its legs
+            # and top; the count was read as their height (12 + parts), silently
+            self.notes.append(
+                f"ignored {count:g} parts: the {_FAMILY_WORD.get(shape, shape)}'s parts follow "
+                "from its legs and top; say how high its legs are"
+            )
+            count = None
         loose = p.pop("_loose", [])
         tower_height = p.pop("_tower_height", None)
         relative = p.pop("_relative", None)
