@@ -4406,3 +4406,21 @@ def test_parts_counted_for_a_bridge_or_table_and_cubes_by_cubes_and_posts_at_eac
     r = plan("a row of 5 with a tower 2 cubes high at each end")
     assert [s.height for s in r.spec.structures if s.shape == "tower"] == [2]
     assert [x.at for x in r.spec.relations] == ["ends"]
+
+
+def test_the_left_one_and_the_right_one_rows_high_stacked_in_turn_and_as_tall_as_possible():
+    # "two towers, the left one 5 high and the right one 2 high": both were 5, both left
+    r = plan("make two towers, the left one 5 high and the right one 2 high")
+    assert r.status == "success"
+    assert [(s.region, s.height) for s in r.spec.structures] == [("left", 5), ("right", 2)]
+    r = plan("a wall 4 long and 3 rows high")  # rows counted upwards are its courses
+    assert (r.spec.structures[0].length, r.spec.structures[0].height) == (4, 3)
+    # "in the centre" after a bridge's legs is the table's centre (it was an unused relation)
+    r = plan("I need a bridge with legs 3 tall in the centre of the table")
+    assert r.status == "success" and r.spec.structures[0].region == "centre"
+    r = plan("a 3x3 slab with a 2x2 slab on top and a single cube on top of that")
+    assert r.status == "success"
+    assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]
+    for command in ("a tower as high as possible in the centre", "as tall a tower as possible"):
+        r = plan(command)
+        assert r.status == "success" and r.spec.structures[0].height == 10

@@ -213,6 +213,26 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: m.group(0) if re.search(r"\b(?:wall|walls|bay|fence)\W+(?:\w+\W+){0,2}$",
                                        m.string[: m.start()], re.I)
      else f"{m.group(1)} {m.group(2)} "),  # a wall's "A by B" is its length by height
+    # "a 3x3 slab with a 2x2 slab on top and a cube on top of that": stacked in turn
+    (re.compile(r"(\bon\s+(?:top|it)(?:\s+of\s+it)?\s*,?\s*)and\s+(?=(?:then\s+)?(?:an?|one|"
+                r"a\s+single|single)\s+[^,.;]{0,40}?\bon\s+(?:top\s+of\s+)?(?:that|this|the\s+\w+)\b)",
+                re.I), r"\1, then "),
+    # "a wall of 6 cubes, 2 rows high": rows counted upwards are courses (its height)
+    (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:rows|courses|tiers)"
+                r"\s+(high|tall)\b", re.I), r"\1 \2"),
+    # "two towers, the left one 5 high and the right one 2 high": one each, in those places
+    (re.compile(r"(?<=[,:;]\s)the\s+(left|right|front|back)(?:[\s-]?(?:hand|most))?\s+(?:one|tower|"
+                r"stack|column|wall|row)\s+((?:is\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|"
+                r"nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?))"
+                r"(?=\s*(?:,|;|\.|\band\b|$))", re.I),
+     lambda m: f"one {m.group(2).removeprefix('is ')} "
+     + ("on the " if m.group(1).lower() in ("left", "right") else "at the ") + m.group(1).lower()),
+    (re.compile(r"(?<=\band\s)the\s+(left|right|front|back)(?:[\s-]?(?:hand|most))?\s+(?:one|tower|"
+                r"stack|column|wall|row)\s+((?:is\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|"
+                r"nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?))"
+                r"(?=\s*(?:,|;|\.|$))", re.I),
+     lambda m: f"one {m.group(2).removeprefix('is ')} "
+     + ("on the " if m.group(1).lower() in ("left", "right") else "at the ") + m.group(1).lower()),
     # "four cubes in the four corners of the table": one in each corner
     (re.compile(r"\b(in|on|at|into)\s+(?:all\s+)?the\s+(?:four|4)\s+corners\b", re.I),
      r"\1 each corner"),

@@ -797,6 +797,17 @@ _REWRITES += [
         " ",
         "left out what is not wanted: '{0}'",
     ),
+    # "as tall a tower as possible" → the tallest tower
+    (
+        re.compile(
+            r"\bas\s+(?:tall|high)\s+an?\s+(\w+)\s+as\s+(?:possible|it\s+can\s+(?:go|get|be)|"
+            r"you\s+can(?:\s+(?:make|build|go|get|manage|do|stack))?|"
+            r"the\s+(?:cell|workspace|space|robot)\s+(?:allows|permits))",
+            re.IGNORECASE,
+        ),
+        " a {0} , tallest , ",
+        "read '{0}' as the tallest that fits",
+    ),
     # "as tall as the cell allows" → the tallest
     (
         re.compile(
@@ -805,7 +816,7 @@ _REWRITES += [
             r"allowed)",
             re.IGNORECASE,
         ),
-        " tallest ",
+        " tallest , ",
         "read '{0}' as the tallest that fits",
     ),
     # "3 stacks: one of 1, one of 2 and one of 3 cubes" → of 1, 2 and 3 cubes
