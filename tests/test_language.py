@@ -4424,3 +4424,43 @@ def test_the_left_one_and_the_right_one_rows_high_stacked_in_turn_and_as_tall_as
     for command in ("a tower as high as possible in the centre", "as tall a tower as possible"):
         r = plan(command)
         assert r.status == "success" and r.spec.structures[0].height == 10
+
+
+@pytest.mark.parametrize(
+    ("command", "heights", "regions"),
+    [
+        ("twr ht 3 @ L, then same @ R", [3, 3], ["left", "right"]),
+        ("stn 2: twr ht 4 @ front L", [4], ["front left"]),
+        ("pyramid 3 lvl @ ctr, twr ht 5 R of it", [3, 5], ["centre", None]),
+    ],
+)
+def test_a_surveyors_shorthand_left_right_clear_and_each(command, heights, regions):
+    # "@ front L", "R of it", "then same @ R": the sides in capitals (they were ignored words)
+    r = plan(command)
+    assert r.status == "success"
+    assert [getattr(s, "height", None) for s in r.spec.structures] == heights
+    assert [s.region for s in r.spec.structures] == regions
+    if "R of it" in command:
+        assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "right")]
+
+
+def test_shorthand_sizes_gaps_and_removals_said_in_other_orders():
+    r = plan("wall 5L x 2H, 1 blk on ea end")  # "5L x 2H" is 5 long, 2 high; "ea end" each end
+    assert r.status == "success" and (r.spec.structures[0].length, r.spec.structures[0].height) \
+        == (5, 2)  # fmt: skip
+    assert [x.at for x in r.spec.relations] == ["ends"]
+    r = plan("qty 2 twrs ht 3, 2 clr between")  # two cubes clear between them
+    assert r.status == "success" and r.spec.gap_m == 0.1
+    # "take off the top two", "take 5 cm off the top": the verb before what it takes
+    r = plan("build a tower of seven then take off the top two thank you")
+    assert r.status == "success" and r.spec.structures[0].height == 5
+    r = plan("Build a wall 40 cm long and 15 cm high, then take 5 cm off the top.")
+    assert r.status == "success" and r.spec.structures[0].height == 2
+    r = plan("Stack it up to 10 inches, then pull the top 2 inches off.")  # not "the top 5"
+    assert r.spec.structures[0].height == 4
+    # "take the first one down": that one gone, its gap with it
+    r = plan("Build two towers of four a cube apart. Then take the first one down again.")
+    assert r.status == "success" and len(r.spec.structures) == 1
+    # the middle one of three taken away: the two left keep their places
+    r = plan("three towers of two in a row, a cube apart, then knock the middle one down")
+    assert len(r.spec.structures) == 2 and r.spec.gap_m == pytest.approx(0.15)

@@ -129,8 +129,8 @@ def relate(
             # "a table: four legs … and a flat top resting on them": its own top
             st.notes.append(f"read '{r.kind}' as the {structures[s_idx].shape}'s own top")
             continue
-        placed = structures[s_idx].region or structures[s_idx].at_x is not None
-        if (o_idx < 0 or o_idx == s_idx) and r.kind == "middle" and not placed:
+        sited = structures[s_idx].region or structures[s_idx].at_x is not None
+        if (o_idx < 0 or o_idx == s_idx) and r.kind == "middle" and not sited:
             # "a bridge with legs 3 tall in the centre": nothing else named, the table's centre
             structures[s_idx] = structures[s_idx].model_copy(update={"region": "centre"})
             st.notes.append("read 'in the middle' with no other structure as the table's centre")

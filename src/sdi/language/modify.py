@@ -148,7 +148,7 @@ MODIFY = [
     _op(
         r"\b(?:take|knock|lift|remove)\s+"
         + _N
-        + r"\s+(?:cubes?\s+|levels?\s+)?(?:back\s+)?(?:off|away|from\s+the\s+top)\b",
+        + r"\s+(?:cubes?\s+|levels?\s+|(?:mm|cm|m)\s+)?(?:back\s+)?(?:off|away|from\s+the\s+top)\b",
         "-",
     ),
     # "a row of 8, then remove 3 cubes from one end", "take the two cubes off its left end"
@@ -163,7 +163,8 @@ MODIFY = [
     _op(
         r"\b(?:take|knock|lift|remove|pull)\s+(?:off\s+)?the\s+top\s+"
         + _N
-        + r"\s+(?:cubes?|blocks?|levels?|layers?)\b(?:\s+off)?",
+        + r"(?:\s+(?:cubes?|blocks?|levels?|layers?)\b(?:\s+off)?"
+        r"|(?![\d.])(?=\s*(?:[,;!?]|\.(?!\d)|$|\s+(?:please|thanks|thank\s+you|pls)\b)))",
         "-",
     ),
     # "then add 5 cm to its height"
@@ -219,7 +220,10 @@ MODIFY = [
     _op(
         r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch)\s+the\s+(middle|first|"
         r"last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+"
-        r"(?:one|tower|stack|column|pillar|row|wall)\b",
+        r"(?:one|tower|stack|column|pillar|row|wall)\b"
+        r"|\b(?:take|knock|pull)\s+the\s+(middle|first|last|second|tallest|highest|biggest|shortest|"
+        r"lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|column|pillar|"
+        r"row|wall)\s+(?:down)\b",
         "drop",
     ),
     # "then take away the one on the right": the one on that side
@@ -461,14 +465,14 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
           structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "5 towers, then take away the middle one": one of several named together left out;
     "three towers of 2, 3 and 4, then remove the tallest one": the one of a kind by height."""
-    which = m.group(1).lower()
+    which = next(g for g in m.groups() if g).lower()
     target = built[-1]
     if which == "last" and target.count == 1:
         return _undo(m, op, p, before, built, structures)  # "remove the last one": the last step
-    if which in ("first", "last", "middle"):
+    if which in ("first", "second", "last", "middle"):
         if target.count < 2 or (which == "middle" and target.count % 2 == 0):
             return None  # one structure, or no single middle one
-        at = {"first": 0, "last": target.count - 1, "middle": target.count // 2}[which]
+        at = {"first": 0, "second": 1, "last": target.count - 1, "middle": target.count // 2}[which]
         index = target.first + at
     elif which in ("left", "right", "front", "back"):
         found_at = _by_side(which, built, structures, before)

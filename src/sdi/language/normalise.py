@@ -48,7 +48,7 @@ _DECIMAL_COMMA_UNIT = re.compile(
 
 _REFERENCE_NO = re.compile(
     r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell|booth|"
-    r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|"
+    r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|stn|"
     r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
     r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
     r"exercise|lesson|experiment|sample|bench|rig|line\s+no|task|assignment|question)\s*"
@@ -474,7 +474,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "after that the same at the back left": another one there
     (re.compile(r"(?<=\b(?:then|that|next|also)\s)(?<!\bone\s)the\s+same(?:\s+(?:thing|one|again))?\s+"
                 r"(?=(?:at|on|in)\s+the\s+(?:(?:far|back|front)\s+)?(?:front|back|left|right)\b)"
-                r"|(?<=\bfinally\s)the\s+same\s+(?=(?:at|on|in)\s+the\s+(?:front|back|left|right)\b)",
+                r"|(?<=\bfinally\s)the\s+same\s+(?=(?:at|on|in)\s+the\s+(?:front|back|left|right)\b)"
+                r"|(?<=\bthen\s)same\s+(?=(?:at|on|in)\s+(?:the\s+)?(?:front|back|left|right|[LR])\b)",
                 re.I), "another one "),
     # "a single cube on its top step": on its top (a staircase's top is its top step)
     (re.compile(r"\bon\s+(?:its|the|their)\s+(?:top|highest|last|uppermost)\s+(?:step|stair|tread)\b",
@@ -904,7 +905,19 @@ _SHORTHAND = [
     (re.compile(r"(?<=\d)\s*(?:dp)\b", re.I), " deep"),
     (re.compile(r"\blvls\b", re.I), "levels"),
     (re.compile(r"\blvl\b", re.I), "level"),
+    (re.compile(r"\bea\b(?=\s+(?:end|side|corner|one|of|tower|stack|column|post|row|wall)s?\b)",
+                re.I), "each"),  # "1 blk on ea end": on each end
     (re.compile(r"\b(?:pcs|pc|ea)\b(?=\W|$)", re.I), "cubes"),
+    # a surveyor's shorthand: "@ front L", "R of it", "5L x 2H", "1 clr", "rmv"
+    (re.compile(r"(?<=\d)\s*L\s*x\s*(\d+)\s*(?:H\b|high\b)"), r" long and \1 high"),  # "5L x 2H"
+    (re.compile(r"(?<=\d)\s*L\b(?!')"), " long"),
+    (re.compile(r"\b(at|front|back|rear)\s+L\b(?![-'])"), r"\1 left"),
+    (re.compile(r"\b(at|front|back|rear)\s+R\b(?![-'])"), r"\1 right"),
+    (re.compile(r"(?:(?<=^)|(?<=[\s,;:]))L(?=\s+of\s+(?:it|them|the|that)\b)"), "left"),
+    (re.compile(r"(?:(?<=^)|(?<=[\s,;:]))R(?=\s+of\s+(?:it|them|the|that)\b)"), "right"),
+    (re.compile(r"\b(\d+|one|two|three)\s*(?:clr|clear)\b(?:\s+between(?:\s+(?:them|each))?)?",
+                re.I), r"\1 cubes apart"),
+    (re.compile(r"\brmv\b|\brmve\b", re.I), "remove"),
     (re.compile(r"\b(?:cnr|crnr)\b", re.I), "corner"),
     (re.compile(r"\b(?:cnrs|crnrs)\b", re.I), "corners"),
     (re.compile(r"\beachother\b", re.I), "each other"),

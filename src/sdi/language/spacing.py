@@ -285,6 +285,9 @@ def take_gap(text: str, st: ReadState) -> str:
     return text
 
 
+_INNER_TAKEN = re.compile(r"^'[^']*\b(?:middle|second|centre|center)\b[^']*': \d+ left of the \d+")
+
+
 def apply_gap(spec: Spec, st: ReadState) -> Spec:
     """The stated gap on the relations beside (else between the separate structures)."""
     if st.gap_m is None:
@@ -299,7 +302,23 @@ def apply_gap(spec: Spec, st: ReadState) -> Spec:
         return spec.model_copy(update={"relations": relations})
     related = {r.subject for r in spec.relations}
     if len(spec.structures) - len(related) >= 2:
+        inner = next((n for n in st.notes if _INNER_TAKEN.search(n)), None)
+        if inner is not None:
+            # "three towers a cube apart, then take the middle one away": the two left keep
+            # their places, its space between them
+            widths = {getattr(s, "length", None) or 1 for s in spec.structures}
+            if len(spec.structures) == 2 and widths == {1}:
+                gap = round(2 * st.gap_m + st.cell.cube[1], 6)
+                st.notes.append(f"the two left keep their places: {gap:g} m between them")
+                return spec.model_copy(update={"gap_m": gap})
+            st.material.append("the space of the one taken away")
+            st.notes.append("ignored the space of the one taken away: the others stand "
+                            f"{st.gap_m:g} m apart, closed up")  # fmt: skip
         return spec.model_copy(update={"gap_m": st.gap_m})
+    if len(spec.structures) < 2 and any(" taken away)" in n for n in st.notes):
+        # "two towers a cube apart, then take the first one down": the gap went with it
+        st.notes.append(f"the gap of {st.gap_m:g} m went with the structure taken away")
+        return spec
     st.material.append(f"gap {st.gap_m:g} m")
     st.notes.append(f"ignored the gap of {st.gap_m:g} m: there are no two structures side by side")
     return spec

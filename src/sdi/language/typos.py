@@ -124,7 +124,7 @@ _ACRONYMS = frozenset({"plc", "hmi", "cnc", "tcp", "rpm", "std", "qty", "sku", "
                        "ppm", "pcs", "thx", "pls", "plz", "smth", "lvl", "lvls", "hrs", "mins",
                        "pcb", "xyz", "tbd", "wrt", "bldg", "frm", "nds", "cmms", "hgt", "hght",
                        "lng", "cnr", "crnr", "frnt", "lft", "rght", "rgt", "nxt",
-                       "bhnd"})  # fmt: skip
+                       "bhnd", "stn", "clr", "rmv"})  # fmt: skip
 """Vowel-less words of a shop floor that are no abbreviation of SDI's words ("PLC" is no
 place), or that the normaliser expands itself."""
 
