@@ -4464,3 +4464,36 @@ def test_shorthand_sizes_gaps_and_removals_said_in_other_orders():
     # the middle one of three taken away: the two left keep their places
     r = plan("three towers of two in a row, a cube apart, then knock the middle one down")
     assert len(r.spec.structures) == 2 and r.spec.gap_m == pytest.approx(0.15)
+
+
+def test_flagpoles_and_lookouts_not_touching_one_at_each_place_and_as_far_as_the_table_goes():
+    # "flagpole", "lookout", "watchtower" are towers (a flagpole four tall was a wall)
+    r = plan("The flagpole goes in the very middle of the table: four cubes tall.")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 4)]
+    r = plan("A lookout tower of six")  # one tower, not a lookout and a tower
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 6)]
+    # "don't let them touch": apart (it was an error for flagpoles, ignored words for towers)
+    for command in ("Two flagpoles of four, and don't let them touch.",
+                    "Two towers of 150, and don't let them touch."):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and len(r.spec.structures) == 2
+        assert any("must not touch': holds" in n for n in r.notes)
+    r = plan("two towers of 150 mm, not touching")  # 150 mm is their height, not the gap
+    assert r.status == "success" and r.spec.structures[0].height_m == 0.15
+    # "1 @ back L, 1 @ back R": one each (both stood at the back left, silently)
+    r = plan("2 twrs ht 2: 1 @ back L, 1 @ back R")
+    assert sorted(str(s.region) for s in r.spec.structures) == ["back left", "back right"]
+    # "not one behind the other": side by side (read as a correction of "one", silently)
+    r = plan("two towers of three not touching and not one behind the other")
+    assert not any(x.side in ("front", "back") for x in r.spec.relations)
+    r = plan("Put a 3 by 3 slab as far from the robot as the table goes.")
+    assert r.spec.structures[0].edge == ("back",)
+    r = plan("A tower of 3. No, not three, just two.")  # "just" adds nothing to the figure
+    assert r.status == "success" and r.spec.structures[0].height == 2
+
+
+def test_a_correction_of_a_figure_said_twice_is_reported():
+    # "Three towers of 3. No, not three, two": which three is not said (the height was
+    # changed and three towers built, silently)
+    r = plan("Three towers of 3 in a row. No, not three, just two.")
+    assert r.status == "partial" and any("says three 2 times" in n for n in r.notes)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import TENS, UNITS
+from sdi.spec.numbers import TENS, UNITS, words_to_numbers
 
 _MARKER = re.compile(
     r"\s*[,.!?;…—–-]+\s*no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
@@ -204,8 +204,9 @@ _WAS_WRONG = re.compile(
 )
 
 
-def correct(text: str, notes: list[str]) -> str:
-    """`text` with every "old …, no wait, new" replaced by the corrected wording."""
+def correct(text: str, notes: list[str], material: list[str] | None = None) -> str:
+    """`text` with every "old …, no wait, new" replaced by the corrected wording; a correction
+    whose old value the command says more than once is also in `material`."""
     if _MARKER.search(text):
         text = _WAS_WRONG.sub(" ", text)
     text = _names_again(text, notes)
@@ -265,6 +266,16 @@ def correct(text: str, notes: list[str]) -> str:
         if counted and counted.end() >= len(before.rstrip(" ,;:—–-")):
             # "four towers of 2, make that five": the count of the structures is what was counted
             old = next((o for o in olds if o.start() == counted.start(1)), old)
+        negated = re.match(r"(?:no\s*,?\s*)?not\s+(\w+)\s*[,;]", said.strip(), re.IGNORECASE)
+        if negated and kind == "count":
+            number = words_to_numbers([negated.group(1).lower()])[0]
+            same = [o for o in olds if words_to_numbers([o.group(0).lower()])[0] == number]
+            if len(same) > 1:
+                # "Three towers of 3. No, not three, two": which three is not said
+                if material is not None:
+                    material.append(f"not {negated.group(1)}")
+                notes.append(f"ignored 'not {negated.group(1)}': the command says "
+                             f"{negated.group(1)} {len(same)} times; changed the last")  # fmt: skip
         notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
         if kind == "region" and old.group(0).lower() == "behind" and value.lower() in _SIDES:
             value = lx.BESIDE_PHRASE[value.lower()]  # "behind it. no wait, in front of it"

@@ -213,6 +213,24 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: m.group(0) if re.search(r"\b(?:wall|walls|bay|fence)\W+(?:\w+\W+){0,2}$",
                                        m.string[: m.start()], re.I)
      else f"{m.group(1)} {m.group(2)} "),  # a wall's "A by B" is its length by height
+    # "No, not three, just two": the corrected figure ("just" adds nothing to it)
+    (re.compile(r"(\bnot\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*,\s*)"
+                r"(?:just|only|but)\s+(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)",
+                re.I), r"\1"),
+    # "don't let them touch": they must not touch (a claim, checked on the reading)
+    (re.compile(r"\b(?:do\s+not|don'?t|never)\s+let\s+(?:them|the\s+two|the\s+\w+)\s+touch"
+                r"(?:\s+each\s+other)?\b(?![^.;]*\b(?:gaps?|space|apart)\b)", re.I),
+     " they must not touch "),
+    # "1 @ back L, 1 @ back R": one in each place
+    (re.compile(r"(?:(?<=[:,;]\s)|(?<=[:,;])|(?<=\band\s))1\s+(?=(?:at|@|on|in)\b)", re.I), "one "),
+    # "not one behind the other": side by side; "not side by side": one behind the other
+    (re.compile(r"\b(?:and\s+)?not\s+one\s+behind\s+(?:the\s+other|another)\b", re.I),
+     " side by side "),
+    (re.compile(r"\b(?:and\s+)?not\s+side\s+by\s+side\b", re.I), " one behind the other "),
+    # "as far from the robot as the table goes": flush with the back edge
+    (re.compile(r"\bas\s+far\s+(?:away\s+)?from\s+the\s+robot\s+as\s+(?:the\s+(?:table|cell|"
+                r"workspace)\s+(?:goes|allows|lets\s+it)|it\s+(?:can|will)\s+go|possible|you\s+can)\b",
+                re.I), " as far back as it can go "),
     # "a 3x3 slab with a 2x2 slab on top and a cube on top of that": stacked in turn
     (re.compile(r"(\bon\s+(?:top|it)(?:\s+of\s+it)?\s*,?\s*)and\s+(?=(?:then\s+)?(?:an?|one|"
                 r"a\s+single|single)\s+[^,.;]{0,40}?\bon\s+(?:top\s+of\s+)?(?:that|this|the\s+\w+)\b)",

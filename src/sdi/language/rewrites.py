@@ -2413,7 +2413,8 @@ _SAME_AGAIN = re.compile(
 _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
     r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
-    r"(?:high|tall|long|wide))?)\s*[:,]\s*(one\s+[^.;]*)",
+    r"(?:high|tall|long|wide)|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|four|five|six))?)"
+    r"\s*[:,]\s*(one\s+[^.;]*)",
     re.IGNORECASE,
 )
 

@@ -383,6 +383,9 @@ class _Parser:
             fieldname = None
             nxt = [self.word(k + 2), self.word(k + 3)]
             prev = [self.word(k - 1), self.word(k - 2), self.word(k - 3)]
+            # a comma ends what the value is said of: "two towers of 150 mm, spaced 5 cm apart"
+            nxt = nxt[: nxt.index(",")] if "," in nxt else nxt
+            nxt = nxt[: nxt.index("spaced")] if "spaced" in nxt else nxt  # "spaced 5 cm apart"
             # "length 20cm, height 15cm": a dimension noun just before names this value
             named = (
                 prev[0] in ("length", "height", "width", "depth") and prev[0] in lx.DIMENSION_WORDS
@@ -403,7 +406,8 @@ class _Parser:
                 ):
                     fieldname = "gap_m"
                     break
-            for j in (k - 1,) if named else (k + 2, k + 3, k - 1, k - 2, k - 3):
+            behind = [j for j in (k + 2, k + 3) if self.word(j) in nxt]
+            for j in (k - 1,) if named else (*behind, k - 1, k - 2, k - 3):
                 if (
                     0 <= j < n
                     and t[j].text

@@ -51,6 +51,13 @@ _add(
     "minaret",
     "upright",
     "uprights",
+    "flagpole",
+    "flagpoles",
+    "flagstaff",
+    "lookout",
+    "lookouts",
+    "watchtower",
+    "watchtowers",
 )
 _add(
     "row",
