@@ -4497,3 +4497,23 @@ def test_a_correction_of_a_figure_said_twice_is_reported():
     # changed and three towers built, silently)
     r = plan("Three towers of 3 in a row. No, not three, just two.")
     assert r.status == "partial" and any("says three 2 times" in n for n in r.notes)
+
+
+def test_one_cube_and_another_either_side_facing_walls_a_missing_middle_and_an_ends_top():
+    # "place one cube at …, and another at …": two cubes (the first was dropped, silently)
+    r = plan("place one cube at x=0.5, y=0.3 and another at x=0.6, y=0.3")
+    assert [(s.at_x, s.at_y) for s in r.spec.structures] == [(0.5, 0.3), (0.6, 0.3)]
+    # "two towers of 3 either side of it": one on each side (two on one side, three built)
+    r = plan("a tower of 5, and two towers of 3 either side of it")
+    assert len(r.layout.objects) == 5 + 3 + 3
+    assert [(x.kind, x.at) for x in r.spec.relations] == [("next_to", "ends")]
+    r = plan("build two walls of 5 facing each other with a gap of 3 cubes")
+    xs = {round(o.position[0], 3) for o in r.layout.objects}
+    assert len(xs) == 2 and max(xs) - min(xs) == pytest.approx(0.2)  # parallel, 3 cubes clear
+    r = plan("make a 3x3 square with the middle missing")
+    assert r.status == "success" and r.spec.structures[0].shape == "enclosure"
+    # "on top of the left end": on the wall's top at its left end (it stood on the table)
+    r = plan("a wall 4 long with a tower of 2 on top of its left end")
+    assert [(x.kind, x.at) for x in r.spec.relations] == [("on_top_of", "left end")]
+    top = max(r.layout.objects, key=lambda o: o.position[2])
+    assert top.position[1] == max(o.position[1] for o in r.layout.objects)  # the left (+y) end

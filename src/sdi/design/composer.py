@@ -451,6 +451,8 @@ def _at_anchors(
                     parameter="length",
                 )
             offsets = [s * room[long] * np.eye(2)[long] for s in (-1.0, 1.0)]
+            if " " in at:  # "left end": that end of the long side (left = +y, back = +x)
+                offsets = offsets[1:] if at.split()[0] in ("left", "back") else offsets[:1]
         anchors, dz = [centre + off for off in offsets], top - sub_bottom
     else:
         long = 1 if base.half[1] >= base.half[0] - 1e-9 else 0

@@ -431,6 +431,16 @@ def _array_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {n} {groups[3]}{high} "
 
 
+def _top_end(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a wall with a tower of 2 on top of its left end": on top of it, at that end of its top
+    (it stood in the table's left region, beside the wall, silently)."""
+    said, groups = _said(m)
+    side = "back" if groups[0] == "rear" else groups[0]
+    st.anchors.append(("on_top_of", f"{side} end"))
+    st.notes.append(f"read '{said}' as on top of it, at its {side} end")
+    return " on top "
+
+
 def _top_corner(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a column standing on its rear left corner": on top of the structure, at that corner
     of its top face; "on the back left corner" alone is the table's."""
@@ -1062,6 +1072,7 @@ HANDLERS: dict[str, Handler] = {
     "{rise_order}": _rise_order,
     "{series}": _series,
     "{top_corner}": _top_corner,
+    "{top_end}": _top_end,
     "{not_touching}": _not_touching,
     "{unsupported}": _unsupported,
     "{at_most}": _at_most,

@@ -213,6 +213,24 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: m.group(0) if re.search(r"\b(?:wall|walls|bay|fence)\W+(?:\w+\W+){0,2}$",
                                        m.string[: m.start()], re.I)
      else f"{m.group(1)} {m.group(2)} "),  # a wall's "A by B" is its length by height
+    # "place one cube at x=0.5, … and another at …": a cube, a structure of its own (it was
+    # read as the part count of the one after it, and its place dropped)
+    (re.compile(r"(^|\b(?:place|put|set|stand|add|and|then|with)\s+)one\s+"
+                r"(?=(?:single\s+)?(?:cube|block|brick)\b(?!\s+(?:high|tall|long|wide|thick|deep|"
+                r"apart|gap|away|from|of|each))(?=[^;]*\banother\b))", re.I), r"\1a "),
+    # "two towers of 3 either side of it": one on each side
+    (re.compile(r"(?<!\bon\s)(?<!\bat\s)(?<!\bto\s)\beither\s+side\s+of\b", re.I),
+     "on either side of"),
+    # "two towers of 3 on either side of it": one on each side (two on each were built)
+    (re.compile(r"\b(?:two|2)\s+(tower|stack|column|pillar|post|cube|block|row|wall)s"
+                r"((?:\s+of\s+(?:\d+|one|two|three|four|five|six|seven|eight)(?:\s+(?:cubes?|high|tall))?)?"
+                r"(?:\s+(?:\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall|long))?)"
+                r"\s*,?\s+(on\s+(?:either|each|both)\s+sides?\s+of)\b", re.I),
+     r"a \1\2 \3"),
+    # "a 3x3 square with the middle missing": hollow
+    (re.compile(r"\bwith\s+(?:the|its)\s+(?:middle|centre|center)(?:\s+(?:cube|one|bit))?\s+"
+                r"(?:missing|empty|left\s+out|left\s+empty|removed|open|taken\s+out)\b", re.I),
+     "hollow"),
     # "No, not three, just two": the corrected figure ("just" adds nothing to it)
     (re.compile(r"(\bnot\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*,\s*)"
                 r"(?:just|only|but)\s+(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)",
@@ -510,8 +528,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(table|workspace|cell)\b", re.I),
      lambda m: f"a {m.group(1)[:-1]}{m.group(2) or ''} in each corner of the {m.group(3)}"),
     # "two walls facing each other": parallel, one behind the other
-    (re.compile(r"\b(walls|rows|lines)\s+facing\s+each\s+other\b", re.I),
-     r"\1 parallel to each other"),
+    (re.compile(r"\b(walls|rows|lines)((?:\s+(?:of\s+)?(?:\d+|two|three|four|five|six|seven|eight)"
+                r"(?:\s+(?:cubes?|long|high))?)?)\s+facing\s+each\s+other\b", re.I),
+     r"\1\2 parallel to each other"),
     # "a solid cube of cubes, 15 cm each way": that size along every side
     (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m)|(?:\d+|two|three|four|five)\s+cubes?)\s+(?:each\s+way|every\s+way|"
                 r"in\s+(?:each|every)\s+direction|all\s+(?:round|around|ways))\b", re.I),

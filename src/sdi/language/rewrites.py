@@ -1430,6 +1430,15 @@ _REWRITES += [
         " on top of it ",
         "read '{0}' as on top of it, centred",
     ),
+    (  # "a wall with a tower of 2 on top of its left end": on top, at that end
+        re.compile(
+            r",?\s*\b(?:standing|sitting|resting|placed|set|stood|stacked)?\s*on\s+(?:the\s+)?top\s+of\s+"
+            r"(?:its|the)\s+(left|right|front|back|rear)(?:[\s-]+hand)?\s+end(?:\s+of\s+(?:it|the\s+\w+))?\b",
+            re.IGNORECASE,
+        ),
+        "{top_end}",
+        "",
+    ),
     (  # "with a 2-storey column standing on its rear left corner": on top, at that corner
         re.compile(
             r",?\s*\b(?:standing|sitting|resting|placed|set|stood|mounted|stacked)?\s*(?:up)?on\s+(?:its|the)\s+"

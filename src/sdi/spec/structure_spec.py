@@ -362,6 +362,7 @@ RelationKind = Literal["on_top_of", "around", "next_to"]
 Anchor = Literal[
     "corners", "ends", "corner", "end", "sides",
     "back left corner", "back right corner", "front left corner", "front right corner",
+    "left end", "right end", "front end", "back end",
 ]  # fmt: skip
 
 
