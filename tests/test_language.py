@@ -4517,3 +4517,16 @@ def test_one_cube_and_another_either_side_facing_walls_a_missing_middle_and_an_e
     assert [(x.kind, x.at) for x in r.spec.relations] == [("on_top_of", "left end")]
     top = max(r.layout.objects, key=lambda o: o.position[2])
     assert top.position[1] == max(o.position[1] for o in r.layout.objects)  # the left (+y) end
+
+
+def test_extended_to_a_size_and_a_list_of_heights_with_one_unit():
+    # "then extend it to 5 steps" made a second staircase
+    r = plan("Make a staircase of 3 steps, then extend it to 5 steps.")
+    assert r.status == "success" and [s.steps for s in r.spec.structures] == [5]
+    r = plan("a row of 4, then extend it to 7")  # the row's own size, not a height
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("row", 7)]
+    # "5, 10 and 15 cm tall": the unit said once is every value's (two were dropped)
+    r = plan("Three towers, 5, 10 and 15 cm tall, from left to right")
+    assert r.status == "success" and sorted(s.height for s in r.spec.structures) == [1, 2, 3]
+    r = plan("three towers, 7, 10 and 15 cm tall")  # 7 cm is no whole cube: not turned
+    assert r.status == "partial"

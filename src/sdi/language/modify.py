@@ -69,6 +69,14 @@ MODIFY = [
         "=",
     ),
     _op(r"\b(?:build|raise|stack|grow)\s+(?:it|them)\s+up\s+to\s+" + _N, "="),
+    # "a staircase of 3 steps, then extend it to 5 steps", "then raise it to 6"
+    _op(
+        r"\b(?:extend|raise|grow|increase|lengthen|heighten|bring|take|top\s+up)\s+"
+        r"(?:it|them|the\s+(?:tower|stack|row|wall|staircase|stairs|pyramid|column))\s+(?:up\s+)?"
+        r"to\s+" + _N + r"(?:\s+(?:steps|cubes?|levels?|layers?|storeys?))?"
+        r"(?:\s+(?:high|tall|long))?(?!\s*(?:cm|mm|m|x|by)\b)",
+        "=main",
+    ),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
     # "then called back and changed it to 5", "change that to 4 high"
     _op(

@@ -198,6 +198,17 @@ _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.I
 # phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
+def _list_in_cubes(m: re.Match[str]) -> str:
+    """ "5, 10 and 15 cm": "1, 2 and 3 cubes" when every value is a whole number of 5 cm cubes
+    (the unit said once was read for the last value only)."""
+    values = [float(v) for v in re.findall(r"\d+(?:\.\d+)?", m.group(1))]
+    mm = [v * (10.0 if m.group(2).lower() == "cm" else 1.0) for v in values]
+    if any(v <= 0 or abs(v / 50.0 - round(v / 50.0)) > 1e-9 for v in mm):
+        return m.group(0)
+    cubes = [str(round(v / 50.0)) for v in mm]
+    return f"{', '.join(cubes[:-1])} and {cubes[-1]} cubes"
+
+
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # "make a ring of 4 by 4 and put a cube inside" / "… in the middle": inside the ring (the
     # middle of the table, or nothing, was read, with the ring moved aside)
@@ -221,6 +232,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "two towers of 3 either side of it": one on each side
     (re.compile(r"(?<!\bon\s)(?<!\bat\s)(?<!\bto\s)\beither\s+side\s+of\b", re.I),
      "on either side of"),
+    # "three towers, 5, 10 and 15 cm tall": each in cubes when every one is whole cubes
+    (re.compile(r"\b(\d+(?:\.\d+)?(?:\s*,\s*\d+(?:\.\d+)?)*\s*,?\s*(?:and|&)\s*\d+(?:\.\d+)?)\s*"
+                r"(mm|cm)\b(?=\s+(?:tall|high|long|in\s+height))", re.I), _list_in_cubes),
     # "two towers of 3 on either side of it": one on each side (two on each were built)
     (re.compile(r"\b(?:two|2)\s+(tower|stack|column|pillar|post|cube|block|row|wall)s"
                 r"((?:\s+of\s+(?:\d+|one|two|three|four|five|six|seven|eight)(?:\s+(?:cubes?|high|tall))?)?"
