@@ -4530,3 +4530,14 @@ def test_extended_to_a_size_and_a_list_of_heights_with_one_unit():
     assert r.status == "success" and sorted(s.height for s in r.spec.structures) == [1, 2, 3]
     r = plan("three towers, 7, 10 and 15 cm tall")  # 7 cm is no whole cube: not turned
     assert r.status == "partial"
+
+
+def test_a_row_of_towers_and_heights_from_one_to_five():
+    # "a row of 5 towers" built a row beside five towers; "heights 1 to 5" five towers of 1
+    r = plan("a row of 5 towers")
+    assert [s.shape for s in r.spec.structures] == ["tower"] * 5
+    r = plan("a line of 5 towers, heights 1 to 5")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [1, 2, 3, 4, 5]
+    r = plan("a line of 4 stacks of 2")  # their size stays theirs
+    assert [s.height for s in r.spec.structures] == [2, 2, 2, 2]
+    assert plan("a row of 5 cubes").spec.structures[0].shape == "row"

@@ -198,6 +198,15 @@ _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.I
 # phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
+def _height_run(m: re.Match[str]) -> str:
+    """ "heights 1 to 5": "heights 1, 2, 3, 4 and 5" (at most ten, rising)."""
+    low, high = int(m.group(2)), int(m.group(3))
+    if not 1 <= low < high <= 10:
+        return m.group(0)
+    run = [str(v) for v in range(low, high + 1)]
+    return f"{m.group(1)}{', '.join(run[:-1])} and {run[-1]}"
+
+
 def _list_in_cubes(m: re.Match[str]) -> str:
     """ "5, 10 and 15 cm": "1, 2 and 3 cubes" when every value is a whole number of 5 cm cubes
     (the unit said once was read for the last value only)."""
@@ -232,6 +241,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "two towers of 3 either side of it": one on each side
     (re.compile(r"(?<!\bon\s)(?<!\bat\s)(?<!\bto\s)\beither\s+side\s+of\b", re.I),
      "on either side of"),
+    # "a row of 5 towers", "a line of 4 stacks of 2": that many in a row (a row was built too)
+    (re.compile(r"\ban?\s+(?:row|line)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+"
+                r"(towers|stacks|columns|pillars|posts|pyramids|walls|staircases|arches|bridges)\b"
+                r"((?:\s+(?:of\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+                r"(?:\s+(?:cubes?|high|tall|levels?|steps?))?)?)", re.I), r"\1 \2\3 in a row"),
+    # "5 towers, heights 1 to 5": one of each height (five of height 1 were built)
+    (re.compile(r"\b(heights?\s+(?:of\s+)?)(?:from\s+)?(\d)\s*(?:to|through|-|–)\s*(\d+)\b", re.I),
+     _height_run),
     # "three towers, 5, 10 and 15 cm tall": each in cubes when every one is whole cubes
     (re.compile(r"\b(\d+(?:\.\d+)?(?:\s*,\s*\d+(?:\.\d+)?)*\s*,?\s*(?:and|&)\s*\d+(?:\.\d+)?)\s*"
                 r"(mm|cm)\b(?=\s+(?:tall|high|long|in\s+height))", re.I), _list_in_cubes),
