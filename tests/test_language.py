@@ -4541,3 +4541,16 @@ def test_a_row_of_towers_and_heights_from_one_to_five():
     r = plan("a line of 4 stacks of 2")  # their size stays theirs
     assert [s.height for s in r.spec.structures] == [2, 2, 2, 2]
     assert plan("a row of 5 cubes").spec.structures[0].shape == "row"
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "Build two towers of five cubes, one cube apart, and lay a beam across their tops.",
+        "two towers of 3, a beam across the tops",  # a tower stood on the other, silently
+        "Put two towers of 3 a cube apart. After that, beam on top across both.",
+    ],
+)
+def test_a_beam_across_their_tops_joins_the_towers(command):
+    r = plan(command)
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["bridge"]

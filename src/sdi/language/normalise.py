@@ -241,6 +241,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "two towers of 3 either side of it": one on each side
     (re.compile(r"(?<!\bon\s)(?<!\bat\s)(?<!\bto\s)\beither\s+side\s+of\b", re.I),
      "on either side of"),
+    # "lay a beam across their tops", "beam on top across both": across them
+    (re.compile(r"\bacross\s+(?:their\s+tops?|the\s+tops)\b(?!\s+of\b)", re.I), "across them"),
+    (re.compile(r"\bon\s+top\s+(?=across\s+(?:both|them|the\s+two)\b)", re.I), ""),
+    (re.compile(r"\s*,\s*(?=(?:a|one)\s+(?:beam|plank|lintel)\s+(?:across|over)\s+(?:them|both|the\s+two)\b)",
+                re.I), " and "),
     # "a row of 5 towers", "a line of 4 stacks of 2": that many in a row (a row was built too)
     (re.compile(r"\ban?\s+(?:row|line)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+"
                 r"(towers|stacks|columns|pillars|posts|pyramids|walls|staircases|arches|bridges)\b"
