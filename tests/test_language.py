@@ -4554,3 +4554,14 @@ def test_a_row_of_towers_and_heights_from_one_to_five():
 def test_a_beam_across_their_tops_joins_the_towers(command):
     r = plan(command)
     assert r.status == "success" and [s.shape for s in r.spec.structures] == ["bridge"]
+
+
+def test_the_structure_named_then_described_and_touching_allowed():
+    # ", pyramid 3 levels" after "the pyramid" describes it (a second pyramid was read)
+    r = plan("put a tower of 3 right behind the pyramid, pyramid 3 levels")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["tower", "pyramid"]
+    # "tower can touch the wall, that's fine": touching allowed, not a third structure
+    r = plan("put the 2-high tower in front of the wall, wall is 5 long 3 high, tower can touch "
+             "the wall that's fine")  # fmt: skip
+    assert [s.shape for s in r.spec.structures] == ["tower", "wall"]
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("front", 0.0)]

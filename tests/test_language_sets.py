@@ -50,6 +50,7 @@ from sdi.bench.language_dev32 import CASES as DEV32
 from sdi.bench.language_dev33 import CASES as DEV33
 from sdi.bench.language_dev34 import CASES as DEV34
 from sdi.bench.language_dev35 import CASES as DEV35
+from sdi.bench.language_dev36 import CASES as DEV36
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -299,6 +300,7 @@ SETS = {
     "dev33": (DEV33, 180, 8, 15),
     "dev34": (DEV34, 180, 8, 15),
     "dev35": (DEV35, 180, 8, 15),
+    "dev36": (DEV36, 180, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -328,6 +330,7 @@ HARD = {
     "dev33": ("relation", "numbers", "dimensions", "sequence"),
     "dev34": ("relation", "numbers", "dimensions", "sequence"),
     "dev35": ("relation", "numbers", "dimensions", "sequence"),
+    "dev36": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -451,6 +454,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev33.py",
         "language_dev34.py",
         "language_dev35.py",
+        "language_dev36.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

@@ -15,16 +15,17 @@ demo, a maintenance planner and a teacher's assistant. Every one of those had be
 night shift by dev26; the intern by dev27; the trade-fair booth by dev26, and visitors or
 customers trying the cell by dev12, dev24 and dev30; maintenance technicians and their work
 orders by dev3, dev6, dev8, dev14 and dev23; teaching assistants by dev7, and teachers by
-dev5, dev9, dev13 and dev23), so five other ordinary people were chosen. None of them — nor
-their words (a video call, a plank, the foreground, "less two", "in ascending order") —
-appears among the voices of an earlier set:
+dev5, dev9, dev13 and dev23), so five other ordinary people were chosen. None of them is
+among the voices of an earlier set, and the words they bring (a video call, a plank for the
+beam, the foreground and background, "less two", "in ascending order") are new to the sets:
 
 * a colleague working from home who types into the cell over a video call: chatter about the
   connection ("can you hear me?", "you froze for a second", "I'm on the train", "you've gone
   all pixelated") is filler, and so is what they say they can see on the camera feed. A
   request for "what I said before the call dropped" has nothing to go on (bad input); "my
   screen's frozen, don't start anything" and "cancel that, build nothing" ask for no build
-  (refusal only); a command cut off in mid-word is bad input;
+  (refusal only); a command cut off in mid-word and a string of keys from a laggy keyboard
+  are bad input;
 * a joiner from the site workshop covering the cell for the day: a "plank" is the cell's
   beam (15 cm); an "upright" is a tower; "a shelf" is two uprights with a plank across the
   tops (the shared `bridge`, overall one cube higher than the uprights); "cubes across the
@@ -41,8 +42,8 @@ appears among the voices of an earlier set:
   setup numbers and lenses ("the 50 mm lens") are filler, never a size; "breathing room"
   between two things is a clear gap of no more than 25 cm; "nothing else in shot" is exactly
   the structure named; "something tall" is at least four cubes high. Painting the cubes asks
-  for no build (refusal only); a tower past the cell's height and "like the Eiffel Tower"
-  are bad input;
+  for no build (refusal only); a tower past the cell's height, "like the Eiffel Tower" and a
+  tower on a camera case that is not on the table are bad input;
 * an accounts clerk from the office, who writes like a ledger: "in total" counts the cubes
   of the whole layout, "split evenly" makes the parts equal, "less N" is N fewer, "a further
   N" is N more, "Correction:" replaces what it corrects, and purchase-order, reference and
@@ -89,6 +90,8 @@ regions, order) and accepts every reasonable reading of vague wording, and nothi
   slab is one layer unless a thickness is given; "wide" runs left to right (y) and "deep"
   front to back (x);
 * "N apart" between two rows is the clear gap (5 cm centre to centre would make them touch);
+  "a few" towers are three or four; "something small" is the shared `small` (at most four
+  cubes high and five long overall);
 * regions are those of `sdi.bench.boxes.region_problem` on the footprint centre (left y >
   0.33, right y < 0.27, front x < 0.42, back x > 0.48, centre within 8 cm of (0.45, 0.30));
   "along the right-hand edge" is running front to back with every part within 15 cm of that

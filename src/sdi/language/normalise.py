@@ -241,6 +241,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "two towers of 3 either side of it": one on each side
     (re.compile(r"(?<!\bon\s)(?<!\bat\s)(?<!\bto\s)\beither\s+side\s+of\b", re.I),
      "on either side of"),
+    # "tower can touch the wall, that's fine": touching allowed (a third structure was read)
+    (re.compile(r"\s*,?\s*\b(?:the\s+)?(?:tower|it|they|stack|column|row|wall)\s+(?:can|may|is\s+allowed\s+to|"
+                r"are\s+allowed\s+to)\s+touch\s+(?:the\s+\w+|it|each\s+other|them)"
+                r"(?:[,\s]+(?:that'?s|that\s+is|is)\s+(?:fine|ok|okay|alright|allowed))?", re.I),
+     " , touching is fine "),
+    # "a tower of 3 behind the pyramid, pyramid 3 levels": the pyramid named, described
+    (re.compile(r"(\bthe\s+(" + shape_alternation() + r")\b[^.;]*?,\s*)(\2)\s+(?=(?:is\s+|at\s+)?"
+                r"(?:\d|one\b|two\b|three\b|four\b|five\b|six\b|seven\b|eight\b|nine\b|ten\b))",
+                re.I), r"\1the \3 "),
     # "lay a beam across their tops", "beam on top across both": across them
     (re.compile(r"\bacross\s+(?:their\s+tops?|the\s+tops)\b(?!\s+of\b)", re.I), "across them"),
     (re.compile(r"\bon\s+top\s+(?=across\s+(?:both|them|the\s+two)\b)", re.I), ""),
