@@ -3938,8 +3938,8 @@ def test_sides_order_and_gaps_said_in_everyday_ways():
 
 
 def test_unused_words_that_change_a_structure_are_material():
-    # "extend it to 5 steps", "(supersedes rev A)": a change SDI did not make is not success
-    assert plan("Make a staircase of 3 steps, then extend it to 5 steps.").status == "partial"
+    # "(supersedes rev A)": a change SDI did not make is not success ("extend it to 5 steps" is
+    # now made, see test_extended_to_a_size_and_a_list_of_heights_with_one_unit)
     assert (
         plan("Job 4 rev A: Tower H 3. Job 4 rev B: Tower H 6 (supersedes rev A)").status
         == "partial"
@@ -4565,3 +4565,31 @@ def test_the_structure_named_then_described_and_touching_allowed():
              "the wall that's fine")  # fmt: skip
     assert [s.shape for s in r.spec.structures] == ["tower", "wall"]
     assert [(x.side, x.gap_m) for x in r.spec.relations] == [("front", 0.0)]
+
+
+@pytest.mark.parametrize(
+    ("command", "sizes"),
+    [
+        # "one higher" was read as the length said before plus one (a wall 6 high)
+        ("build a wall 5 long then make it one higher", [("wall", 5, 3)]),
+        ("build a wall 3 long then make it one cube taller", [("wall", 3, 3)]),
+        # "2 shorter" made a wall 4 high; "one shorter" a row 5 high
+        ("build a wall 6 long, then make it 2 shorter", [("wall", 4, None)]),
+        ("build a row of 6 then make it one shorter", [("row", 5, None)]),
+        ("build a row of 5 then add one more cube to it", [("row", 6, None)]),  # not a 5 x 2 wall
+        ("build a 3x3 slab then make it one layer thicker", [("block", 3, 2)]),
+        ("build a tower of 3 on the left and a row of 5 on the right, then make the row 2 longer",
+         [("tower", None, 3), ("row", 7, None)]),
+        ("build two towers of 4, then take one cube off the second one",
+         [("tower", None, 4), ("tower", None, 3)]),
+        # "remove the second one" was a reference to it, nothing removed, nothing said
+        ("build a tower of 4 and a tower of 2, then remove the second one", [("tower", None, 4)]),
+        ("place one cube; then stack 4 more on it", [("wall", 1, 5)]),  # on it: upwards
+    ],
+)
+def test_changes_said_as_more_less_or_an_ordinal_change_that_structure(command, sizes):
+    r = plan(command)
+    assert r.status == "success"
+    got = [(s.shape, getattr(s, "length", None), getattr(s, "height", None))
+           for s in r.spec.structures]  # fmt: skip
+    assert got == sizes

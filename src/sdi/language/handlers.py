@@ -631,6 +631,8 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     base = _said_last(m)
     if base is None:
         return m.group(0)
+    if re.search(r"\bmake\s+(?:it|them|the\s+\w+(?:\s+one)?)\s*$", m.string[: m.start()], re.I):
+        return m.group(0)  # "then make it one higher": a change of that structure (`modify`)
     if groups[1] == "height":  # "one half its height": a new structure, not "double its height"
         before = m.string[: m.start()].lower()
         prev = re.findall(r"[a-z]+", before)[-1:]

@@ -57,6 +57,17 @@ MODIFY = [
         r"(?:taller|higher)\b",
         "+",
     ),
+    # "then make it one layer thicker": one layer more; "make the row 2 longer": its length
+    _op(
+        r"\bmake\s+" + _REF + r"\s+" + _N + r"\s+(?:more\s+)?(?:levels?\s+|layers?\s+|courses?\s+)"
+        r"(?:thicker|deeper|taller|higher)\b",
+        "+",
+    ),
+    _op(
+        r"\bmake\s+" + _REF + r"\s+" + _N + r"\s+(?:more\s+)?(?:cubes?\s+|parts?\s+)?"
+        r"(?:longer|bigger|larger)\b",
+        "+main",
+    ),
     _op(
         r"\b(?:raise|extend|grow|lengthen)\s+(?:it|them|the\s+(?:row|wall|tower|stack|column))\s+by\s+"
         + _N
@@ -227,7 +238,8 @@ MODIFY = [
     # "5 towers of 2 in a line, then take away the middle one": one structure fewer
     _op(
         r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch)\s+the\s+(middle|first|"
-        r"last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+"
+        r"second|last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)"
+        r"(?:[\s-]*hand)?\s+"
         r"(?:one|tower|stack|column|pillar|row|wall)\b"
         r"|\b(?:take|knock|pull)\s+the\s+(middle|first|last|second|tallest|highest|biggest|shortest|"
         r"lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|column|pillar|"
@@ -477,7 +489,11 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     target = built[-1]
     if which == "last" and target.count == 1:
         return _undo(m, op, p, before, built, structures)  # "remove the last one": the last step
-    if which in ("first", "second", "last", "middle"):
+    every = [q.first + k for q in built for k in range(q.count)]
+    if which in ("first", "second") and target.count < 2 and len(every) > 1:
+        # "a tower of 4 and a tower of 2, then remove the second one": counted over all built
+        index = every[0 if which == "first" else 1]
+    elif which in ("first", "second", "last", "middle"):
         if target.count < 2 or (which == "middle" and target.count % 2 == 0):
             return None  # one structure, or no single middle one
         at = {"first": 0, "second": 1, "last": target.count - 1, "middle": target.count // 2}[which]
@@ -708,12 +724,21 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         n //= top_parts  # "a 2x2 block, add 4 more cubes on top": one layer more
     if last.shape == "grid" and op == "-" and re.search(r"\brow\b", m.group(0), re.I):
         key = "width"  # "4 rows of 3. Then remove the last row.": one row fewer
+    vertical = re.search(
+        r"\b(?:on\s+top|higher|taller|lower|up|layers?|levels?|high|tall|courses?|stack\w*|pile\w*|"
+        r"on\s+(?:it|them)|onto|atop)\b",
+        p.text,
+        re.I,
+    )
     if (
         key is None
         and last.shape in ("row", "wall")
         and op in ("+", "-")
-        and re.search(r"\b(?:extend|lengthen|longer|shorten|shorter|ends?)\b", p.text, re.I)
-        and not re.search(r"\b(?:on\s+top|higher|taller|lower|up|layers?|levels?)\b", p.text, re.I)
+        and (
+            re.search(r"\b(?:extend|lengthen|longer|shorten|shorter|ends?)\b", p.text, re.I)
+            or last.shape == "row"  # "add one more cube to it": a row one longer, not a wall
+        )
+        and not vertical
     ):
         key = "length"  # "a row of 5, then extend it by two more cubes at the same end"
         high = last.height or 1
@@ -725,7 +750,9 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     key = key or ("steps" if last.shape == "staircase" else "height")
     metres = getattr(last, f"{key}_m", None)  # "stack it up to 10 inches": in whole parts
     said = getattr(last, key) or (round(metres / part_m) if metres else None)
-    now = said or (1 if last.shape in ("grid", "row", "enclosure") else 3)
+    # unsaid, the generators' own sizes (`sdi.design.shapes`): a wall 2 high, a slab 1
+    unsaid = {"grid": 1, "row": 1, "enclosure": 1, "wall": 2 if key == "height" else 4}
+    now = said or unsaid.get(last.shape, 3)
     if op == "/" and now % n:
         return None
     new = {"+": now + n, "-": now - n, "=": n, "*": now * n, "/": now // n}[op]

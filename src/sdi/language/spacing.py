@@ -235,7 +235,9 @@ def take_gap(text: str, st: ReadState) -> str:
             re.search(r"\b(?:take|knock|pull|lift)(?:\s+the)?\s*$", text[: m.start()], re.I)
             and re.search(r"\boff\b", m.group(0), re.I)
             and re.match(
-                r"\s*(?:its|one|the|either)\s+(?:(?:left|right|front|back)\s+)?end\b",
+                r"\s*(?:its|one|the|either)\s+(?:(?:left|right|front|back)\s+)?end\b"
+                r"|\s*(?:the\s+)?(?:top|first|second|third|last|middle|taller|shorter|left|right|"
+                r"front|back)\b|\s*(?:it|them|each|both)\b",
                 text[m.end() :],
                 re.I,
             )
