@@ -4593,3 +4593,22 @@ def test_changes_said_as_more_less_or_an_ordinal_change_that_structure(command, 
     got = [(s.shape, getattr(s, "length", None), getattr(s, "height", None))
            for s in r.spec.structures]  # fmt: skip
     assert got == sizes
+
+
+def test_the_same_length_as_the_one_before_and_a_staircase_counted_in_cubes():
+    # "a wall of the same length behind it" was a wall of the default length, silently
+    r = plan("build a row of 5 and a wall of the same length behind it")
+    assert [getattr(s, "length", None) for s in r.spec.structures] == [5, 5]
+    r = plan("build a wall 4 long and a row the same length in front of it")
+    assert [getattr(s, "length", None) for s in r.spec.structures] == [4, 4]
+    # "as tall as the first one" was a tower of 1; "as tall as the tower" measured its own
+    for command in ("a tower of 4 and a tower as tall as the first one",
+                    "a tower of 4 and beside it a tower as tall as the tower"):  # fmt: skip
+        assert [s.height for s in plan(command).spec.structures] == [4, 4]
+    r = plan("build a tower of 5 and a row as long as the tower is tall")  # not 1 long
+    assert [getattr(s, "length", None) for s in r.spec.structures] == [None, 5]
+    r = plan("a handful of towers, none of them the same height")  # not "as tall as the tower"
+    assert len({s.height for s in r.spec.structures}) == len(r.spec.structures)
+    # "using 6 cubes": the steps that take 6 (a staircase of 6 steps, 21 cubes, was built)
+    r = plan("build a staircase using 6 cubes")
+    assert r.status == "success" and r.spec.structures[0].steps == 3

@@ -328,6 +328,10 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
     word, family = groups[0], lx.SHAPE_WORDS.get(groups[1])
     before = m.string[: m.start()]
     clauses = [c for c in re.split(r"[.;]|,|\band\b", before) if c.strip()]
+    if len(clauses) > 1:
+        clauses = clauses[:-1]  # the phrase the size is said in: its own structure is not it
+    # "as long as the tower is tall": the wall's length, the tower's height
+    measure = (groups[2] if len(groups) > 2 and groups[2] else word).lower()
     for clause in reversed(clauses):
         if family is None:
             break
@@ -341,14 +345,14 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
             boxes = generate(spec, sizes)
         except (SpecError, ValueError):
             continue
-        if word in ("tall", "high"):
+        if measure in ("tall", "high"):
             n = round(max(b.z for b in boxes) / sizes.h + 0.5)
-            st.notes.append(f"read '{said}' as {n} high (the {family} named before)")
-            return f" {n} high "
-        us, vs = [b.u for b in boxes], [b.v for b in boxes]
-        n = round(max(max(us) - min(us), max(vs) - min(vs)) / sizes.s) + 1
-        st.notes.append(f"read '{said}' as {n} long (the {family} named before)")
-        return f" {n} long "
+        else:
+            us, vs = [b.u for b in boxes], [b.v for b in boxes]
+            n = round(max(max(us) - min(us), max(vs) - min(vs)) / sizes.s) + 1
+        dimension = "high" if word in ("tall", "high") else "long"
+        st.notes.append(f"read '{said}' as {n} {dimension} (the {family} named before)")
+        return f" {n} {dimension} "
     st.material.append(said)
     st.notes.append(f"ignored '{said}': no {groups[1]} with a size was named before it")
     return " "

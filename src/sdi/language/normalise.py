@@ -198,6 +198,40 @@ _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.I
 # phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
+_SAME_AS = re.compile(
+    r"\b(?:of\s+|with\s+)?the\s+same\s+(length|height)(?:\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|"
+    r"other|last)\s+one))?(?!\s+as\s+the\s+(?!first\b|other\b|last\b)\w+)"
+    r"|\bas\s+(long|tall|high)\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|other)\s+one)\b",
+    re.IGNORECASE,
+)
+
+
+def _same_as(m: re.Match[str]) -> str:
+    """ "a wall of the same length behind it", "a tower as tall as the first one": as long (tall)
+    as the structure named just before, by its name (it was dropped, or a tower of 1 built)."""
+    before = m.string[: m.start()].lower()
+    prev = re.findall(r"[a-z]+", before)[-1:]
+    bare = not re.match(r"(?:of|with|as)\b", m.group(0).strip(), re.I)
+    if re.search(r"\bmake\s+(?:it|them|the\s+\w+(?:\s+one)?)\s*$", before) or (
+        bare and not (prev and (prev[0] == "one" or prev[0] in lx.SHAPE_WORDS))
+    ):
+        return m.group(0)  # "make the first one the same height", "none of them the same height"
+    own = re.split(r"\band\b|,|;|\bthen\b", before)[-1]  # the phrase the size is said in
+    own_nouns = [w for w in re.findall(r"[a-z]+", own) if w in lx.SHAPE_WORDS]
+    earlier = before[: len(before) - len(own)] if own_nouns else before
+    named = [
+        w for w in re.findall(r"[a-z]+", earlier)
+        if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES
+    ]
+    if not named:
+        return m.group(0)  # "two towers of the same height": a claim of their own, checked later
+    last = named[-1]
+    noun = last[:-1] if last.endswith("s") and last[:-1] in lx.SHAPE_WORDS else last
+    said = (m.group(1) or m.group(2)).lower()
+    word = "long" if said in ("length", "long") else "tall"
+    return f" as {word} as the {noun} "
+
+
 def _height_run(m: re.Match[str]) -> str:
     """ "heights 1 to 5": "heights 1, 2, 3, 4 and 5" (at most ten, rising)."""
     low, high = int(m.group(2)), int(m.group(3))
@@ -255,6 +289,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bon\s+top\s+(?=across\s+(?:both|them|the\s+two)\b)", re.I), ""),
     (re.compile(r"\s*,\s*(?=(?:a|one)\s+(?:beam|plank|lintel)\s+(?:across|over)\s+(?:them|both|the\s+two)\b)",
                 re.I), " and "),
+    # "a wall of the same length behind it", "a tower as tall as the first one"
+    (_SAME_AS, _same_as),
     # "a row of 5 towers", "a line of 4 stacks of 2": that many in a row (a row was built too)
     (re.compile(r"\ban?\s+(?:row|line)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+"
                 r"(towers|stacks|columns|pillars|posts|pyramids|walls|staircases|arches|bridges)\b"

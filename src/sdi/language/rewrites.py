@@ -1840,7 +1840,7 @@ _REWRITES += [
         re.compile(
             r"\b(?:exactly\s+|just\s+)?(?:as|so)\s+(tall|high|long)\s+as\s+(?:the|that|this)\s+"
             r"(tower|stack|column|pillar|wall|row|staircase|stairs|pyramid|block|slab|platform|line)\b"
-            r"(?:\s+(?:is|was|will\s+be))?",
+            r"(?:\s+(?:is|was|will\s+be)(?:\s+(tall|high|long|wide)\b)?)?",
             re.IGNORECASE,
         ),
         "{as_big_as}",

@@ -1387,7 +1387,8 @@ class _Parser:
         regions = p.pop("_regions", [])
         edges = p.pop("_edges", [])
         count = p.pop("_count", None)
-        if p.pop("_parts_said", False) and shape in ("bridge", "arch", "canopy") and count:
+        parts_said = p.pop("_parts_said", False)
+        if parts_said and shape in ("bridge", "arch", "canopy") and count:
             # "a bridge of 6 cubes", "a table, 6 cubes in all": its parts follow from its legs
             # and top; the count was read as their height (12 + parts), silently
             self.notes.append(
@@ -1437,7 +1438,7 @@ class _Parser:
                 )
         if count is not None:
             key = PRIMARY[shape]
-            if shape == "staircase" and "steps" not in p and count > 6:
+            if shape == "staircase" and "steps" not in p and (count > 6 or parts_said):
                 # "a staircase of 10 cubes": the steps whose triangle holds that many
                 steps = int(((8 * count + 1) ** 0.5 - 1) / 2)
                 p["steps"] = max(1, steps)
