@@ -4612,3 +4612,16 @@ def test_the_same_length_as_the_one_before_and_a_staircase_counted_in_cubes():
     # "using 6 cubes": the steps that take 6 (a staircase of 6 steps, 21 cubes, was built)
     r = plan("build a staircase using 6 cubes")
     assert r.status == "success" and r.spec.structures[0].steps == 3
+
+
+@pytest.mark.parametrize(
+    ("command", "regions"),
+    [
+        ("build a tower of 2 in the front and back", ["front", "back"]),  # one tower was built
+        ("a tower of 2 on the left and on the right", ["left", "right"]),
+        ("build a row of 3 and a tower of 2 in the front and back", [None, "front", "back"]),
+    ],
+)
+def test_one_structure_said_in_two_places_is_one_in_each(command, regions):
+    r = plan(command)
+    assert r.status == "success" and [s.region for s in r.spec.structures] == regions

@@ -289,6 +289,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bon\s+top\s+(?=across\s+(?:both|them|the\s+two)\b)", re.I), ""),
     (re.compile(r"\s*,\s*(?=(?:a|one)\s+(?:beam|plank|lintel)\s+(?:across|over)\s+(?:them|both|the\s+two)\b)",
                 re.I), " and "),
+    # "a tower of 2 in the front and back", "… on the left and on the right": one in each
+    (re.compile(r"\b((?:an?|one)\s+(?:[\w-]+\s+){0,3}?(?:tower|stack|column|pillar|wall|row|block|slab|"
+                r"pyramid|staircase|cube)(?:\s+of\s+(?:\d+|one|two|three|four|five|six)(?:\s+cubes?)?)?"
+                r"(?:\s+(?:\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall|long))?)"
+                r"\s+(?:in|at|on)\s+the\s+(front|back|left|right)\s+and\s+(?:(?:in|at|on)\s+)?(?:the\s+)?"
+                r"(front|back|left|right)\b(?!\s+(?:corner|of|side\s+of|end|edge|half|left|right)\b)",
+                re.I),
+     r"\1 at the \2 and \1 at the \3"),
     # "a wall of the same length behind it", "a tower as tall as the first one"
     (_SAME_AS, _same_as),
     # "a row of 5 towers", "a line of 4 stacks of 2": that many in a row (a row was built too)
