@@ -4625,3 +4625,13 @@ def test_the_same_length_as_the_one_before_and_a_staircase_counted_in_cubes():
 def test_one_structure_said_in_two_places_is_one_in_each(command, regions):
     r = plan(command)
     assert r.status == "success" and [s.region for s in r.spec.structures] == regions
+
+
+def test_a_line_of_separate_structures_too_long_for_the_table_stays_one_line():
+    # "5 towers of 2 in a line": four stood in a line and the fifth out of it, silently
+    r = plan("build 5 towers of 2 in a line")
+    xs = {round(o.position[0], 3) for o in r.layout.objects}
+    assert r.status == "success" and len(xs) == 1
+    r = plan("three towers of 3 spaced 10 cm apart")  # a gap said is kept as said
+    ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
+    assert [round(b - a, 3) for a, b in itertools.pairwise(ys)] == [0.15, 0.15]

@@ -223,6 +223,7 @@ def _place_all(
     back, when `line` is "x"; in rows by columns around it when `grid` is given).
     """
     anchor = np.array(cell.design.anchor)
+    stated = gap is not None
     gap = cell.design.structure_gap if gap is None else gap
     ws = cell.workspace
     centres: list[np.ndarray | None] = [None] * len(placed)
@@ -295,6 +296,19 @@ def _place_all(
         wants.extend(_grid_wants(placed, free, grid, anchor, gap))
     else:
         d = 0 if line == "x" else 1
+        span = (ws.x_max - ws.x_min, ws.y_max - ws.y_min)
+
+        step: float = gap
+
+        def length(axis: int) -> float:
+            return sum(2 * placed[k].half[axis] for k in free) + step * max(0, len(free) - 1)
+
+        if line is None and length(1) > span[1] and length(0) <= span[0]:
+            d = 0  # a line too long for across the table runs front to back (it broke in two)
+        if not stated and len(free) > 1 and length(d) > span[d]:
+            # SDI's own gap closes up so the line stays one line (it broke in two)
+            room = span[d] - sum(2 * placed[k].half[d] for k in free) - 1e-6
+            gap = max(min(gap, room / (len(free) - 1)), min(gap, 0.01))
         widths = [2 * placed[k].half[d] for k in free]
         s0 = anchor[d] - (sum(widths) + gap * max(0, len(free) - 1)) / 2
         for k, w in zip(free, widths, strict=True):
