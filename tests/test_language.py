@@ -4635,3 +4635,12 @@ def test_a_line_of_separate_structures_too_long_for_the_table_stays_one_line():
     r = plan("three towers of 3 spaced 10 cm apart")  # a gap said is kept as said
     ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
     assert [round(b - a, 3) for a, b in itertools.pairwise(ys)] == [0.15, 0.15]
+
+
+def test_what_a_structure_is_for_is_not_another_structure():
+    # "for our castle" built a castle too; "as a monument" a third structure
+    r = plan("A wall for our castle. You decide how long.")
+    assert [s.shape for s in r.spec.structures] == ["wall"]
+    r = plan("a ring 5 by 5, with a column of three standing in the middle of it as a monument")
+    assert [s.shape for s in r.spec.structures] == ["enclosure", "tower"]
+    assert plan("build a castle with a wall").spec.structures[0].shape == "castle"

@@ -289,6 +289,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bon\s+top\s+(?=across\s+(?:both|them|the\s+two)\b)", re.I), ""),
     (re.compile(r"\s*,\s*(?=(?:a|one)\s+(?:beam|plank|lintel)\s+(?:across|over)\s+(?:them|both|the\s+two)\b)",
                 re.I), " and "),
+    # "a column … as a monument", "a wall for our castle": what it is for, not another structure
+    (re.compile(r"\s*,?\s*\bas\s+an?\s+(?:little\s+|small\s+)?(?:monument|landmark|memorial|marker|"
+                r"centrepiece|centerpiece|feature|decoration|ornament|statue)\b", re.I), " "),
+    (re.compile(r"(\b(?:tower|wall|row|stack|column|fence|gate|bridge|slab)s?\b[^.;]*?)\s+for\s+"
+                r"(?:our|my|your|his|her|their|the)\s+(?:\w+\s+)?(?:castle|fort|house|town|village|"
+                r"railway|train\s+set|model)\b", re.I), r"\1"),
     # "a tower of 2 in the front and back", "… on the left and on the right": one in each
     (re.compile(r"\b((?:an?|one)\s+(?:[\w-]+\s+){0,3}?(?:tower|stack|column|pillar|wall|row|block|slab|"
                 r"pyramid|staircase|cube)(?:\s+of\s+(?:\d+|one|two|three|four|five|six)(?:\s+cubes?)?)?"
