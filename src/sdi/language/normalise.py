@@ -195,9 +195,8 @@ _IDIOMS = re.compile(
     re.IGNORECASE,
 )
 _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.IGNORECASE)
-# phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
-# speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
-# English focus words — and of other trades and notes, each read as the plain words it means
+
+
 _SAME_AS = re.compile(
     r"\b(?:of\s+|with\s+)?the\s+same\s+(length|height)(?:\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|"
     r"other|last)\s+one))?(?!\s+as\s+the\s+(?!first\b|other\b|last\b)\w+)"
@@ -252,6 +251,9 @@ def _list_in_cubes(m: re.Match[str]) -> str:
     return f"{', '.join(cubes[:-1])} and {cubes[-1]} cubes"
 
 
+# phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
+# speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
+# English focus words — and of other trades and notes, each read as the plain words it means
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # "make a ring of 4 by 4 and put a cube inside" / "… in the middle": inside the ring (the
     # middle of the table, or nothing, was read, with the ring moved aside)
