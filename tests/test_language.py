@@ -4644,3 +4644,16 @@ def test_what_a_structure_is_for_is_not_another_structure():
     r = plan("a ring 5 by 5, with a column of three standing in the middle of it as a monument")
     assert [s.shape for s in r.spec.structures] == ["enclosure", "tower"]
     assert plan("build a castle with a wall").spec.structures[0].shape == "castle"
+
+
+def test_a_size_said_once_for_every_structure_and_one_measured_on_a_named_size():
+    # "…, both 3 high" went to the last wall only, silently
+    r = plan("build a 4 long wall on the left and a 4 long wall on the right, both 3 high")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 3]
+    r = plan("build a 4 long wall on the left and a 4 long wall on the right, same height 3")
+    assert [s.height for s in r.spec.structures] == [3, 3]
+    r = plan("a tower of 3, both 4 high")  # a size of its own already: which is not said
+    assert r.status == "partial" and r.spec.structures[0].height == 3
+    # "as long as a row of 6": 6 long (a row of 6 was built as well)
+    r = plan("build a wall as long as a row of 6")
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("wall", 6)]

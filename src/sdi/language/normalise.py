@@ -305,6 +305,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(front|back|left|right)\b(?!\s+(?:corner|of|side\s+of|end|edge|half|left|right)\b)",
                 re.I),
      r"\1 at the \2 and \1 at the \3"),
+    # "a wall as long as a row of 6": 6 long (a row of 6 was built too)
+    (re.compile(r"\bas\s+(long|tall|high)\s+as\s+an?\s+(?:row|tower|stack|column|line|wall)\s+of\s+"
+                r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s+cubes?)?\b", re.I),
+     lambda m: f" {m.group(2)} {'long' if m.group(1).lower() == 'long' else 'high'} "),
     # "a wall of the same length behind it", "a tower as tall as the first one"
     (_SAME_AS, _same_as),
     # "a row of 5 towers", "a line of 4 stacks of 2": that many in a row (a row was built too)

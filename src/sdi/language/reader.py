@@ -92,6 +92,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text, corrected = typos.correct(text)
     corrected[:0] = unscanned
     text = fields.as_words(text, st.notes)  # "Tower | H: 4 | X (mm): 500 | Y (mm): 400"
+    text = _shared_size(text, st)  # "…, both 3 high": every structure's height
     text = normalise(text, st.notes)
     text = viewpoint.take(text, st.notes)  # "I'm opposite the robot … on my left": its right
     st.notes[:0] = corrected
@@ -108,6 +109,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     said = list(st.notes)
     structures = fill_slots(phrases, rels, st, doc)
     structures = _asked_then_described(phrases, structures, st, doc)
+    structures = _apply_shared(structures, st)
     if not structures and any(p.undone for p in phrases):
         raise SpecError(
             f"'{command.strip()[:60]}' takes back everything it names: nothing is left to "
@@ -362,6 +364,51 @@ _TOUCHING = re.compile(
 
 
 _GUESSED_ROW = "no structure named: placed the parts in a row"
+
+
+_SHARED = re.compile(
+    r"\s*,\s*(?:and\s+)?(?:both|each(?:\s+one)?|all(?:\s+of\s+them)?|(?:all\s+)?(?:the\s+)?same\s+"
+    r"height(?:\s+of)?)\s+(?:(?:are|is|being)\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|"
+    r"ten)\s*(?:cubes?\s+)?(high|tall|long)?\s*(?=$|[.;!])",
+    re.IGNORECASE,
+)
+
+
+def _shared_size(text: str, st: ReadState) -> str:
+    """ "two walls 4 long, one on the left and one on the right, both 3 high": a size said once
+    at the end for every structure named (it went to the last one only, silently)."""
+    m = _SHARED.search(text)
+    if m is None or (m.group(2) is None and "same" not in m.group(0).lower()):
+        return text
+    value = words_to_numbers([m.group(1).lower()])[0]
+    if not value.isdigit():
+        return text
+    key = "length" if (m.group(2) or "").lower() == "long" else "height"
+    st.shared = (key, int(value), m.group(0).strip(" ,"))
+    return text[: m.start()] + text[m.end() :]
+
+
+def _apply_shared(structures: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
+    """The size said for every structure, on each that has no such size of its own."""
+    if st.shared is None or not structures:
+        return structures
+    key, value, said = st.shared
+    fits = {"height": ("tower", "wall", "block", "grid", "row", "castle", "enclosure"),
+            "length": ("wall", "row", "grid", "block")}[key]  # fmt: skip
+    out, other = [], []
+    for s in structures:
+        own = getattr(s, key)
+        if s.shape in fits and own is None and getattr(s, f"{key}_m") is None:
+            s = s.model_copy(update={key: value})
+        elif own is not None and own != value:
+            other.append(f"{s.shape} {key} {own}")
+        out.append(s)
+    if other:  # "two towers of 3, both 4 high": which is meant is not said
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}' for the {', '.join(other)} said before")
+    else:
+        st.notes.append(f"read '{said}' as every structure's {key}: {value}")
+    return out
 
 
 def _listed(
