@@ -489,7 +489,7 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     target = built[-1]
     if which == "last" and target.count == 1:
         return _undo(m, op, p, before, built, structures)  # "remove the last one": the last step
-    every = [q.first + k for q in built for k in range(q.count)]
+    every = _built_indices(built)
     if which in ("first", "second") and target.count < 2 and len(every) > 1:
         # "a tower of 4 and a tower of 2, then remove the second one": counted over all built
         index = every[0 if which == "first" else 1]
@@ -523,9 +523,14 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     return f"{left} left of the {left + 1}{size}{side}"
 
 
+def _built_indices(built: list[Phrase]) -> list[int]:
+    """The index of every structure built so far, in the order named."""
+    return [q.first + k for q in built for k in range(q.count)]
+
+
 def _tower_heights(built: list[Phrase], structures: list[StructureDraft]) -> dict[int, int | None]:
     """The towers built so far, by index, with their heights (None: not said)."""
-    every = [q.first + k for q in built for k in range(q.count)]
+    every = _built_indices(built)
     return {i: structures[i].height for i in every if structures[i].shape == "tower"}
 
 
@@ -547,7 +552,7 @@ def _by_side(
     with that side, or, of structures placed by SDI side by side (listed from right to left,
     or from left to right when the command says so), the one at that end. None when no single
     one is meant."""
-    every = [q.first + k for q in built for k in range(q.count)]
+    every = _built_indices(built)
     placed = [i for i in every if side in (structures[i].region or "").split()]
     if len(placed) == 1:
         return placed[0]
@@ -568,7 +573,7 @@ def _drop_family(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], bui
     """ "… and a wall on the right. Actually forget the wall.": the one structure of that family
     named before, taken back (of several, the command does not say which: not changed)."""
     family = lx.SHAPE_WORDS.get(m.group(1).lower())
-    indices = [q.first + k for q in built for k in range(q.count)]
+    indices = _built_indices(built)
     found = [i for i in indices if structures[i].shape == family]
     if len(found) != 1:
         return None
@@ -685,7 +690,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             return None  # "the third one" of two: no such structure
         index = target.first + pick[ordinal.group(1).lower()]
     elif ordinal:  # one structure per phrase: the ordinal counts every structure built
-        every = [q.first + k for q in built for k in range(q.count)]
+        every = _built_indices(built)
         pick = {"first": 0, "second": 1, "third": 2, "fourth": 3, "last": len(every) - 1}
         at = pick[ordinal.group(1).lower()]
         if at >= len(every):

@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import re
 
+from sdi.spec import lexicon as lx
+
 _ROBOT = r"(?:the\s+)?(?:robot|arm|machine)"
 _TABLE = r"(?:the\s+)?(?:table|cell|bench|workspace|work\s+area)"
 
@@ -71,7 +73,7 @@ _BEYOND = re.compile(r"\bbeyond\s+(it|them|the\s+\w+)\s+from\s+me\b", re.IGNOREC
 
 
 def _flip(side: str) -> str:
-    other = {"left": "right", "right": "left"}[side.lower()]
+    other = lx.OPPOSITE_SIDE[side.lower()]
     return other.capitalize() if side[:1].isupper() else other
 
 

@@ -62,8 +62,9 @@ PRIMARY = {
     "arch": "height", "canopy": "height", "enclosure": "length", "castle": "length",
     "l_shape": "length", "u_shape": "length", "t_shape": "length", "cross": "length",
 }  # fmt: skip
-# Which field a measurement in metres sets when no dimension word says.
 _FAMILY_WORD = {"canopy": "table"}
+"""The everyday word for a family whose name operators do not say, in notes."""
+# Which field a measurement in metres sets when no dimension word says.
 PRIMARY_M = {
     "tower": "height_m",
     "staircase": "height_m",
