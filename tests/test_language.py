@@ -2151,7 +2151,7 @@ def test_a_verb_left_at_the_end_names_no_structure():
     lo, _ = boxes(r)
     assert r.status == "success" and len(lo) == 6
     assert np.ptp(lo[:, 0]) < 1e-6 and np.ptp(lo[:, 1]) < 1e-6  # one column of six
-    assert len(boxes(plan("a wall of 4, now build"))[0]) == 4
+    assert len(boxes(plan("a wall of 6, now build"))[0]) == 6
 
 
 def test_next_to_at_the_start_is_a_relation_and_a_bare_name_later_sizes_it():
@@ -4657,3 +4657,94 @@ def test_a_size_said_once_for_every_structure_and_one_measured_on_a_named_size()
     # "as long as a row of 6": 6 long (a row of 6 was built as well)
     r = plan("build a wall as long as a row of 6")
     assert [(s.shape, s.length) for s in r.spec.structures] == [("wall", 6)]
+
+
+@pytest.mark.parametrize(
+    ("command", "sizes"),
+    [
+        # "of six (6) cubes in length": the figure repeated in brackets hid the length (2 long)
+        ("A wall of six (6) cubes in length and two (2) in height.", [(6, 2)]),
+        # the figure before its dimension's noun: the height was dropped, 2 long
+        ("Make a wall of 4 length, 2 height", [(4, 2)]),
+        ("a wall 4 length 2 height", [(4, 2)]),
+        # a size said first for the structures counted after it: the second tower had none
+        ("4 cubes high, two towers, one on the left and one on the right", [(None, 4)] * 2),
+        ("Of 4 cubes of height, two towers, one in the left part and one in the right part.",
+         [(None, 4)] * 2),
+    ],
+)  # fmt: skip
+def test_sizes_said_with_bracketed_figures_after_the_number_or_before_the_structures(
+    command, sizes
+):
+    r = plan(command)
+    got = [(getattr(s, "length", None), s.height) for s in r.spec.structures]
+    assert r.status == "success" and got == sizes
+
+
+def test_a_wall_of_n_cubes_is_never_silently_rounded_to_whole_courses():
+    # "a wall of 7 cubes" built 8 (4 long, 2 high) and said nothing
+    r = plan("a wall of 7 cubes")
+    assert len(r.layout.objects) == 14 and any("7 long" in n for n in r.notes)
+    # "a wall of four cubes, two high" was 2 long and 2 high, a block: it is 4 long
+    r = plan("a wall of four cubes, two high")
+    assert r.spec.structures[0].length == 4 and len(r.layout.objects) == 8
+    # all the parts, when that makes a wall: said, with how to say the other reading
+    r = plan("a wall of 12 cubes, 3 high")
+    assert len(r.layout.objects) == 12 and any("say '12 long'" in n for n in r.notes)
+    r = plan("a wall of 6")
+    assert len(r.layout.objects) == 6 and any("3 long, 2 high" in n for n in r.notes)
+
+
+def test_a_sentence_about_a_part_of_a_structure_named_before_is_not_another():
+    # the coordinates' sentence built a second tower at the centre, and took y = 0.45 with it:
+    # "m." was not the end of a sentence
+    r = plan("Place a tower of 3 cubes at x = 0.35 m, y = 0.45 m. The coordinates are the "
+             "centre of the tower's footprint.")  # fmt: skip
+    s = r.spec.structures
+    assert len(s) == 1 and (s[0].at_x, s[0].at_y, s[0].height) == (0.35, 0.45, 3)
+    r = plan("a tower of 3 at the back. Make the tower's top flat.")  # was a second tower of 2
+    assert [s.height for s in r.spec.structures] == [3]
+
+
+@pytest.mark.parametrize(
+    ("command", "heights"),
+    [
+        ("a tower of 3. Make its height 5.", [5]),  # partial: "ignored 3 parts"
+        ("a tower of 3. Make the tower's height 5.", [5]),  # a second tower of 5
+        ("a wall 4 long 2 high. Change its height to 3", [3]),  # ignored
+        ("a tower of 3. Then make the tower one shorter.", [2]),  # a tower of 1 beside
+        ("a tower of 3 and a wall of 4 long. Make the tower one taller.", [4, None]),  # the wall
+    ],
+)
+def test_a_change_said_of_a_dimension_or_of_a_structure_by_name(command, heights):
+    r = plan(command)
+    assert r.status == "success" and [s.height for s in r.spec.structures] == heights
+
+
+def test_more_added_to_a_row_and_a_chain_of_structures_each_beside_the_one_before():
+    # "add one more to the end" / "add 2 more to the row" built a second row
+    for command, n in (("make a row of 4 cubes then add one more to the end", 5),
+                       ("a row of 3 cubes. add 2 more to the row", 5)):  # fmt: skip
+        r = plan(command)
+        assert [(s.shape, s.length) for s in r.spec.structures] == [("row", n)]
+    # "…, and a tower of 1 to the left of that": an error, "the relations form a cycle"
+    for command in ("a tower of 3, a tower of 2 to the left of it, and a tower of 1 to the "
+                    "left of that",
+                    "a tower of 3, and to the left of it a tower of 2, and to the left of that "
+                    "a tower of 1"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success"
+        ys = {round(o.position[1], 3): round(o.position[2] + o.size[2] / 2, 3)
+              for o in r.layout.objects}  # fmt: skip
+        tops = [ys[y] for y in sorted(ys)]  # from the right (-y) to the left
+        assert tops == sorted(tops, reverse=True) and len(tops) == 3
+    # "a cube on top of that" after a wall and a tower: on the tower (was a beam on both)
+    r = plan("a wall of 4, a tower of 2 behind it, and a cube on top of that")
+    assert r.status == "success" and r.spec.relations[-1].kind == "on_top_of"
+    # "and a cube in front of it": a cube, not a distance of one cube (it was dropped)
+    r = plan("a small wall at the back right and a cube in front of it")
+    assert [s.shape for s in r.spec.structures] == ["wall", "tower"]
+    # "on top of the cube at the left end" of a row: on it, at that end (was on the table)
+    r = plan("a row of four going left to right then a tower of three on top of the cube at "
+             "the at the left end")  # fmt: skip
+    assert r.spec.relations[0].kind == "on_top_of" and r.spec.relations[0].at == "left end"

@@ -20,6 +20,19 @@ _LEADS = {"first", "firstly", "and", ",", "after", "that", "then", "next", "fina
           "please"}  # fmt: skip
 
 
+def _ends_sentence(doc: Doc, tok: Token) -> bool:
+    """ "… y = 0.45 m. The numbers are …": a word the tokeniser kept with its full stop (a
+    unit, an abbreviation) ends the sentence when a capital follows."""
+    nxt = tok.i + 1
+    return (
+        len(tok.text) > 1
+        and tok.text.endswith(".")
+        and not tok.like_num
+        and nxt < len(doc)
+        and doc[nxt].text[:1].isupper()
+    )
+
+
 def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:
     """The command's clauses (token indices), each with whether a sequence word ("then",
     "finally", a step label) introduced it."""
@@ -52,6 +65,9 @@ def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:
             clauses.append(current)
             current = []
         current.append(tok.i)
+        if _ends_sentence(doc, tok):
+            clauses.append(current)
+            current = []
     if current:
         clauses.append(current)
     # strip leading sequence words and trailing punctuation

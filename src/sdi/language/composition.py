@@ -142,6 +142,14 @@ def relate(
         if obj is None:
             obj = subj
         picked = r.object is not None and phrases[r.object].structure is not None
+        first = phrases[obj].first
+        shapes = {structures[i].shape for i in range(first, first + phrases[obj].count)}
+        if (
+            r.object is not None
+            and phrases[r.object].text.strip(" ,").lower() in ("it", "that", "this", "that one")
+            and len(shapes) > 1
+        ):
+            picked = True  # "a wall, a tower behind it, and a cube on top of that": the last one
         if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1 and not picked:
             _join(phrases, obj, subj, structures, replace, drop, st)
             continue

@@ -172,15 +172,21 @@ def _derive(spec: StructureDraft, notes: list[str], part_m: float) -> StructureD
             key = "width" if spec.width is None else "length"
             notes.append(f"{spec.count} parts in rows of {sides[0]}: {key} {other}")
             spec = spec.model_copy(update={key: other, "count": None})
-    levels, count = spec.height or 0, spec.count or 0
+    # unsaid, a wall is 2 high (`sdi.design.shapes.wall`)
+    levels, count = spec.height or (2 if spec.height_m is None else 0), spec.count or 0
     if spec.shape == "wall" and count and levels > 1 and not (spec.length or spec.length_m):
+        high = f"{levels} high" if spec.height else f"{levels} high (SDI's height for a wall)"
         if count % levels:  # "a wall of 5 cubes, 2 high": 5 cannot fill 2 levels
             notes.append(f"read {count} cubes as the wall's length ({count} cannot "
-                         f"fill {levels} levels): {count} long, {levels} high")  # fmt: skip
+                         f"fill {levels} levels): {count} long, {high}")  # fmt: skip
+            spec = spec.model_copy(update={"length": count, "count": None})
+        elif count // levels <= levels:  # "a wall of four cubes, two high": no 2 by 2 block
+            notes.append(f"read {count} cubes as the wall's length (all in {levels} levels "
+                         f"it would be no longer than high): {count} long, {high}")  # fmt: skip
             spec = spec.model_copy(update={"length": count, "count": None})
         else:  # "a wall of 6 cubes, 3 high": one reading of two, said
             notes.append(f"read {count} cubes as all the wall's parts: "
-                         f"{count // levels} long, {levels} high (say "
+                         f"{count // levels} long, {high} (say "
                          f"'{count} long' for a wall that long)")  # fmt: skip
     if spec.shape == "canopy" and spec.span is None and (spec.length or spec.width):
         side = max(spec.length or 0, spec.width or 0)

@@ -351,6 +351,8 @@ def _clause_phrases(
             and doc[tail[0]].lower_ in ("it", "them", "this", "that")
             and names_structure(doc, tail[commas[0] + 1 :])
             and not markers[j][2].endswith("_verb")
+            and commas[0] + 1 < len(tail)
+            and doc[tail[commas[0] + 1]].lower_ not in ("and", "then", "plus", "also")
         ):
             # "a T shape and, left of it, an L shape": the subject follows the pronoun; what
             # stood before the marker is a phrase of its own

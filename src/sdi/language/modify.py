@@ -89,6 +89,19 @@ MODIFY = [
         "=main",
     ),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
+    # "make its height 5", "set the tower's height to 6", "change the wall's length to 8"
+    _op(
+        r"\b(?:make|set|change|changed|bring|increase|reduce|raise|lower)\s+(?:its|their|the\s+\w+'s|the)"
+        r"\s+height\s+(?:up\s+|down\s+)?(?:to\s+|into\s+)?" + _N
+        + r"(?:\s+(?:cubes?|levels?|layers?))?\s*(?:instead)?\s*[.!]?\s*$",
+        "=",
+    ),
+    _op(
+        r"\b(?:make|set|change|changed|bring|increase|reduce|extend)\s+(?:its|their|the\s+\w+'s|the)"
+        r"\s+length\s+(?:up\s+|down\s+)?(?:to\s+|into\s+)?" + _N
+        + r"(?:\s+(?:cubes?|steps?))?\s*(?:instead)?\s*[.!]?\s*$",
+        "=main",
+    ),
     # "then called back and changed it to 5", "change that to 4 high"
     _op(
         r"\b(?:change|changed|changes|changing|bump|bumped|drop|dropped|cut|reduce|reduced|increase|"
@@ -142,7 +155,7 @@ MODIFY = [
     ),
     # "row of 7. no make it 3 less", "make it two shorter": that many fewer
     _op(
-        r"\bmake\s+(?:it|them)\s+" + _N + r"\s+(?:cubes?\s+|levels?\s+)?(?:less|fewer|shorter|"
+        r"\bmake\s+" + _REF + r"\s+" + _N + r"\s+(?:cubes?\s+|levels?\s+)?(?:less|fewer|shorter|"
         r"lower|smaller)\b",
         "-main",
     ),
@@ -305,7 +318,11 @@ def modify(
         m = _in_parts(pattern, m, st)
         if op in ("+", "+1") and _set_beside(p, st.command):
             return False  # "then stack 2 more next to it": a new stack beside, not a taller one
-        if _NAMES_MORE.search(p.text[m.end() :]):
+        rest = re.sub(  # "add 2 more to the row": the row named before, nothing more
+            r"^\s*(?:(?:more|extra)\s+)?(?:cubes?\s+)?(?:to|on|onto|at)\s+(?:the\s+(?:other\s+)?end\s+of\s+)?"
+            r"(?:the|its|that)\s+\w+\b", "", p.text[m.end() :], flags=re.IGNORECASE,
+        )  # fmt: skip
+        if _NAMES_MORE.search(rest):
             return False  # "pull the top 3 off and set them down as a tower": more than a change
         change = _CHANGES.get(op)
         if op == "offset":
@@ -624,6 +641,13 @@ def _undo_all(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built:
     return f"everything before taken back: {' and '.join(said)} not built"
 
 
+def _family_named(text: str) -> str | None:
+    """The family a change names its structure by ("make the tower one taller")."""
+    m = re.search(r"\b(?:make|raise|lower|extend|shorten|lengthen|grow|heighten)\s+the\s+(\w+)\b",
+                  text, re.IGNORECASE)  # fmt: skip
+    return lx.SHAPE_WORDS.get(m.group(1).lower()) if m else None
+
+
 def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
             structures: list[StructureDraft], part_m: float) -> str | None:  # fmt: skip
     """ "add two more cubes", "make it 4", "halve it": a size of a structure named before
@@ -696,6 +720,14 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         if at >= len(every):
             return None
         index = every[at]
+    family = _family_named(p.text)
+    if family and on_side is None and not extreme and not ordinal:
+        # "a tower of 3 and a wall of 4. Make the tower one taller": the tower, not the last one
+        of_family = [i for i in _built_indices(built) if structures[i].shape == family]
+        if structures[index].shape != family and of_family:
+            if len(of_family) > 1:
+                return None  # which of several is not said
+            index = of_family[0]
     last = structures[index]
     if main:
         key = _main_slot(last)

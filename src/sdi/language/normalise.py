@@ -255,6 +255,37 @@ def _list_in_cubes(m: re.Match[str]) -> str:
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
+    # a contract's "four (4)": the figure repeats the word (first, so every
+    # rule sees one number); one that disagrees is kept
+    (re.compile(r"\b([a-z]+)\s*\(\s*(\d+)\s*\)", re.I),
+     lambda m: m.group(1) if _DIGITS.get(m.group(1).lower(), -1) == int(m.group(2))
+     else m.group(0)),
+    # "make its height 5", "set the tower's height to 6": a change of that dimension of it
+    (re.compile(r"\b(make|set|change|bring)\s+(?:its|their|the\s+[a-z]+'s)\s+(height|length)\s+"
+                r"(?:to\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:mm|cm|m)\b)",
+                re.I),
+     lambda m: f"make it {m.group(3)} {'high' if m.group(2).lower() == 'height' else 'long'}"),
+    # "a tower of 3, a tower of 2 left of it, and a tower of 1 left of that": a chain, each
+    # one beside the one before — a clause each
+    (re.compile(r",\s*and\s+(?=[^.;]*?\b(?:of|beside|behind|on|against)\s+(?:that|this)(?:\s+one)?\b)",
+                re.I),
+     lambda m: "; and " if re.search(r"\b(?:of|beside|behind|on|against)\s+it\b[^.;]*$",
+                                     m.string[: m.start()], re.I) else m.group(0)),
+    # a stutter of small words ("on top of the cube at the at the left end"): said once
+    (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
+    # "a wall 4 length, 2 height": the figure before its dimension's noun
+    (re.compile(r"(?<!\bover\s)(?<!\bthan\s)\b(\d+(?:\.\d+)?(?:\s*(?:mm|cm|m))?|one|two|three|four|"
+                r"five|six|seven|eight|nine|ten)\s+(length|height|width|depth)\b(?!\s+of\b)"
+                r"(?!\s+(?:\d|one|two|three|four|five|six|seven|eight|nine|ten)\b)", re.I),
+     r"\2 \1"),
+    # "4 cubes high, two towers, one on the left and one on the right": a size said first, for
+    # the structures counted after it
+    (re.compile(r"(^|[.;:]\s*)(?:of\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+"
+                r"(?:cubes?\s+|blocks?\s+)?(?:of\s+|in\s+)?(high|tall|height|long|length)\s*,\s*"
+                r"((?:\d+|two|three|four|five|six|both)\s+(?:the\s+)?(?!(?:cube|block|brick|part|piece|"
+                r"level|layer|step|course)s\b)[a-z]+s)\b", re.I),
+     lambda m: f"{m.group(1)}{m.group(4)} {m.group(2)} "
+     f"{'high' if m.group(3).lower() in ('high', 'tall', 'height') else 'long'}"),
     # "make a ring of 4 by 4 and put a cube inside" / "… in the middle": inside the ring (the
     # middle of the table, or nothing, was read, with the ring moved aside)
     (re.compile(r"\b((?:ring|enclosure|pen|corral|fence|square\s+frame|hollow\s+square|courtyard)"
@@ -787,17 +818,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(?:thereon|thereupon|thereonto)\b", re.I), "on it"),
     (re.compile(r"\btherein\b", re.I), "in it"),
     (re.compile(r"\bthereto\b", re.I), "to it"),
-    (re.compile(r"\bupon\s+(?=the\s+(?:centre|center|middle|top)\s+of\b)", re.I), "on "),
+    (re.compile(r"\b(?<!depending\s)(?<!depends\s)upon\s+", re.I), "on "),
     (re.compile(r"\b(?:the\s+)?said\s+(?=(?:tower|wall|row|slab|block|bridge|staircase|pyramid|"
                 r"structure|grid|ring|arch|canopy)s?\b)", re.I), "the "),
     # a number said digit by digit ("one-five-zero millimetres", "wun-fife-zero"): 150
     (re.compile(r"\b(?:" + _DIGIT_WORD + r")(?:-(?:" + _DIGIT_WORD + r")){1,3}\b", re.I),
      lambda m: "".join(str(_DIGITS[w.lower()]) for w in m.group(0).split("-"))
      if len(m.group(0).split("-")) >= 3 or "zero" in m.group(0).lower() else m.group(0)),
-    # a contract's "four (4)": the figure repeats the word; one that disagrees is kept
-    (re.compile(r"\b([a-z]+)\s*\(\s*(\d+)\s*\)", re.I),
-     lambda m: m.group(1) if _DIGITS.get(m.group(1).lower(), -1) == int(m.group(2))
-     else m.group(0)),
     # "a slab comprising twelve cubes arranged in three rows of four": the slab's own rows
     (re.compile(r"\b((?:slab|grid|block|platform|layer|pad|floor|plate|deck|patch|mat)s?\b[^.;]{0,30}?)"
                 r"\s*,?\s*\b(?:(?:comprising|consisting\s+of|made\s+(?:up\s+)?of|of|with)\s+)?(\w+)\s+"

@@ -107,6 +107,25 @@ def definite(
     return matches[0]
 
 
+def possessive(
+    p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
+) -> int | None:
+    """ "Place a tower at … The coordinates are the centre of the tower's footprint", "Make
+    the tower's top flat": a phrase about a part of the one structure of that family named
+    before is about that one, never a new one."""
+    m = re.search(r"\b(?:the|that|this)\s+(\w+)'s?\b", p.text, re.IGNORECASE)
+    if not m or "'" not in m.group(0) or len(spec.structures) != 1:
+        return None
+    family = lx.SHAPE_WORDS.get(m.group(1).lower())
+    if family is None or family != spec.structures[0].shape:
+        return None
+    matches = [
+        i for q in before if q.count and q.spec is not None
+        for i in range(q.first, q.first + q.count) if structures[i].shape == family
+    ]  # fmt: skip
+    return matches[0] if len(matches) == 1 else None
+
+
 def named_ahead(
     p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
 ) -> int | None:

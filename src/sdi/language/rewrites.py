@@ -1432,8 +1432,10 @@ _REWRITES += [
     ),
     (  # "a wall with a tower of 2 on top of its left end": on top, at that end
         re.compile(
-            r",?\s*\b(?:standing|sitting|resting|placed|set|stood|stacked)?\s*on\s+(?:the\s+)?top\s+of\s+"
-            r"(?:its|the)\s+(left|right|front|back|rear)(?:[\s-]+hand)?\s+end(?:\s+of\s+(?:it|the\s+\w+))?\b",
+            r",?\s*\b(?:standing|sitting|resting|placed|set|stood|stacked)?\s*on\s+(?:(?:the\s+)?top\s+of\s+"
+            r"(?:the\s+(?:cube|one|block|part)\s+(?:at|on)\s+)?(?:its|the)|its)\s+(left|right|front|back|rear)"
+            r"(?:[\s-]+hand)?\s+end(?:\s+of\s+(?:it|the\s+(?!table|workspace|bench|cell)\w+))?\b"
+            r"(?!\s+of\s+the\s+(?:table|workspace|bench|cell))",
             re.IGNORECASE,
         ),
         "{top_end}",
@@ -2184,6 +2186,11 @@ def _one_more(m: re.Match[str], text: str) -> str:
     step_end = min([i for i in (text.find(c, m.end()) for c in ".;!?\n") if i >= 0] or [len(text)])
     after = text[m.end() : step_end]
     before = text[: start + 1]
+    if re.search(r"\b(?:add|put|stick|tack|stack)\s*$", step, re.I) and re.match(
+        r"\s*(?:to|on|onto|at)\s+(?:it\b|(?:the|its)\s+(?:other\s+)?(?:end|row|line|wall|tower|stack|"
+        r"column|top)\b)", after, re.I
+    ):
+        return " one more cube "  # "a row of 4, then add one more to the end": a cube of it
     words = re.findall(r"[a-z]+", before.lower())
     shapes = [w for w in words if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]
     tower = bool(shapes) and shapes[-1] in ("tower", "towers", "stack", "column", "pillar")

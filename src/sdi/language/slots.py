@@ -18,6 +18,7 @@ from sdi.language.references import (
     named_again,
     named_ahead,
     pick_structure,
+    possessive,
     refers_to,
     same_as_before,
 )
@@ -179,6 +180,14 @@ def fill_slots(
                 continue
             st.material.append(p.text)
             st.notes.append(f"ignored '{p.text}': no structure named there")
+            continue
+        owner = possessive(p, spec, phrases[:k], structures)
+        if owner is not None and not re.search(r"\d|\b(?:height|length|width|high|tall|long|"
+                                               r"wide)\b", p.text, re.IGNORECASE):
+            # "The tower's top must be flat": about it, and no size of it
+            shape = structures[owner].shape
+            st.notes.append(f"'{p.text}' is about the {shape} described before, not another")
+            _account(p, spec, unused, doc, st)
             continue
         same = same_as_before(p, spec, phrases[:k])
         if same is not None:

@@ -50,6 +50,10 @@ _OFFSET = re.compile(
     r"behind|further\s+back)\b)",
     re.IGNORECASE,
 )
+# "… and a cube in front of it": what comes before a structure added, not a distance
+_ADDED = re.compile(
+    r"(?:^|[;.:]|\b(?:and|put|place|set|stand|add|then|plus|also|with))\s*$", re.IGNORECASE
+)
 # "with a bit of space", "a little gap", "slightly apart": a small gap, one part wide
 _VAGUE = re.compile(
     r",?\s*\b(?:each\s+)?(?:with\s+|leaving\s+|leave\s+|and\s+)?(?:(?:a|some)\s+)?(?:(?:little|small|"
@@ -278,6 +282,12 @@ def take_gap(text: str, st: ReadState) -> str:
     o = _OFFSET.search(text)
     if o is not None and _MOVED.search(text[: o.start()]):
         o = None  # "then shift it 2 cubes to the left": a move of the structure, read later
+    if (
+        o is not None
+        and o.group(1).lower() in ("a", "an")
+        and _ADDED.search(text[: o.start()])
+    ):
+        o = None  # "a small wall and a cube in front of it": a cube, not a distance
     if o is not None:
         gap = _metres(o.group(1), o.group(2), part_m)
         if gap is not None and 0 < gap <= 0.5:
