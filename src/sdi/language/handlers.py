@@ -811,9 +811,10 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
     """One item per copy ("two towers of 3, one at the far left, one at the far right"), each
     with the shared description; left as it is when the items do not match the count."""
     said, groups = _said(m)
-    n_ = words_to_numbers([groups[0]])[0]
+    n_ = "2" if groups[0].lower() == "both" else words_to_numbers([groups[0]])[0]
     items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[3:])]
-    noun = f"{m.group(2) or ''}{m.group(3)}{(m.group(4) or '').rstrip()}"
+    size = re.sub(r"^\s*,\s*|\s+(?:each|apiece)\s*$", " ", (m.group(4) or "").rstrip())
+    noun = f"{m.group(2) or ''}{m.group(3)}{size.rstrip()}"
     pair = _ONE_THE_OTHER.fullmatch(items[0]) if len(items) == 1 else None
     if pair and n_ == "2":
         # "two towers of 3, one behind the other": the second placed by the first

@@ -271,6 +271,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 re.I),
      lambda m: "; and " if re.search(r"\b(?:of|beside|behind|on|against)\s+it\b[^.;]*$",
                                      m.string[: m.start()], re.I) else m.group(0)),
+    # "Put the tower next to the wall. The tower is 4 high, the wall is 3 long.": a sentence
+    # about each of the structures named, one by one
+    (re.compile(r"(^|[.;!?]\s*)(the\s+(?:" + _FAMILY_SAID + r")\s+(?:is|are|should|must|has|needs|"
+                r"wants|will|to\s+be)\b[^.;!?]*)", re.I),
+     lambda m: m.group(1) + re.sub(r",?\s+(?:and\s+)?(?=the\s+(?:" + _FAMILY_SAID + r")\s+(?:is|are|"
+                                   r"should|must|has|needs|will|to\s+be|\d|one|two|three|four|"
+                                   r"five|six)\b)", ". ", m.group(2), flags=re.I)),
     # a stutter of small words ("on top of the cube at the at the left end"): said once
     (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
     # "a wall 4 length, 2 height": the figure before its dimension's noun

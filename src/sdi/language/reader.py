@@ -374,16 +374,25 @@ _SHARED = re.compile(
 )
 
 
+# "a tower at the back left and another at the front right, 4 cubes each"
+_SHARED_AFTER = re.compile(
+    r"\s*,\s*(?:and\s+)?(?:with\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*"
+    r"(?:cubes?\s*|(high|tall|long)\s+)(?:each|apiece|both|for\s+(?:each|both))\s*(?=$|[.;!])",
+    re.IGNORECASE,
+)
+
+
 def _shared_size(text: str, st: ReadState) -> str:
     """ "two walls 4 long, one on the left and one on the right, both 3 high": a size said once
     at the end for every structure named (it went to the last one only, silently)."""
-    m = _SHARED.search(text)
-    if m is None or (m.group(2) is None and "same" not in m.group(0).lower()):
+    m = _SHARED.search(text) or _SHARED_AFTER.search(text)
+    cubes = m is not None and m.group(2) is None and "cube" in m.group(0).lower()
+    if m is None or (m.group(2) is None and "same" not in m.group(0).lower() and not cubes):
         return text
     value = words_to_numbers([m.group(1).lower()])[0]
     if not value.isdigit():
         return text
-    key = "length" if (m.group(2) or "").lower() == "long" else "height"
+    key = "length" if (m.group(2) or "").lower() == "long" else "cubes" if cubes else "height"
     st.shared = (key, int(value), m.group(0).strip(" ,"))
     return text[: m.start()] + text[m.end() :]
 
@@ -394,7 +403,8 @@ def _apply_shared(structures: list[StructureDraft], st: ReadState) -> list[Struc
         return structures
     key, value, said = st.shared
     fits = {"height": ("tower", "wall", "block", "grid", "row", "castle", "enclosure"),
-            "length": ("wall", "row", "grid", "block")}[key]  # fmt: skip
+            "length": ("wall", "row", "grid", "block"), "cubes": ("tower",)}[key]  # fmt: skip
+    key = "height" if key == "cubes" else key  # "…, 4 cubes each": towers' height
     out, other = [], []
     for s in structures:
         own = getattr(s, key)

@@ -2427,9 +2427,10 @@ _SAME_AGAIN = re.compile(
     r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?", re.I
 )
 _DISTRIBUTE = re.compile(
-    r"\b(two|three|four|five|[2-5])\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
+    r"\b(two|three|four|five|[2-5]|both)\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
     r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
-    r"(?:high|tall|long|wide)|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|four|five|six))?)"
+    r"(?:high|tall|long|wide)(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
+    r"four|five|six))?)"
     r"\s*[:,]\s*(one\s+[^.;]*)",
     re.IGNORECASE,
 )

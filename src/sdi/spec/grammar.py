@@ -1074,6 +1074,11 @@ class _Parser:
                 continue
             if w in lx.REGION_WORDS:
                 region = lx.REGION_WORDS[w]
+                if w == "far" and nxt in ("left", "right") and self.word(k + 2) not in (
+                    "corner", "corners", "back", "front"
+                ):
+                    take(k)  # "at the far left": all the way to the left, not the back
+                    continue
                 if (
                     w in ("far", "close", "near")
                     and nxt in ("from", "to")
