@@ -4748,3 +4748,42 @@ def test_more_added_to_a_row_and_a_chain_of_structures_each_beside_the_one_befor
     r = plan("a row of four going left to right then a tower of three on top of the cube at "
              "the at the left end")  # fmt: skip
     assert r.spec.relations[0].kind == "on_top_of" and r.spec.relations[0].at == "left end"
+
+
+def test_descriptions_of_the_structures_named_and_sizes_said_for_each_after_their_places():
+    # "The tower is 4 high, the wall is 3 long." built four structures
+    r = plan("Put the tower next to the wall. The tower is 4 high, the wall is 3 long.")
+    got = [(s.shape, s.height if s.shape == "tower" else s.length) for s in r.spec.structures]
+    assert r.status == "success" and got == [("tower", 4), ("wall", 3)]
+    # "…, 4 cubes each" reached the last tower only
+    r = plan("a tower in the back left and another one in the front right, 4 cubes each")
+    assert [s.height for s in r.spec.structures] == [4, 4]
+    # "both towers 4 high, one on the left, one on the right" built four towers
+    for command in ("both towers 4 high, one on the left, one on the right",
+                    "two towers, 4 high each, one on the left and one on the right"):  # fmt: skip
+        r = plan(command)
+        assert [(s.region, s.height) for s in r.spec.structures] == [("left", 4), ("right", 4)]
+    # "at the far left" is the left side (it was the back left corner)
+    r = plan("two towers of 3, one at the far left, one at the far right")
+    assert [s.region for s in r.spec.structures] == ["left", "right"]
+    assert plan("a tower in the far left corner").spec.structures[0].region == "back left"
+
+
+def test_distances_said_in_words_or_from_the_robot_and_a_move_of_a_structure_placed_by_region():
+    # "move it 10 cm to the left" of a tower placed by region: the tower was 0.1 m high
+    r = plan("a tower of 3 at the back, then move it 10 cm to the left")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.height, s.at_y) == (3, pytest.approx(0.40))
+    # "at 40 cm from the robot": a tower 8 high
+    s = plan("build a tower of 2 at 40 cm from the robot").spec.structures[0]
+    assert (s.height, s.at_x) == (2, 0.4)
+    # "twenty centimetres to its right": a tower 4 high beside, with no gap said
+    r = plan("a tower of 3, then another tower of 3 twenty centimetres to its right")
+    assert [s.height for s in r.spec.structures] == [3, 3] and r.spec.relations[0].gap_m == 0.2
+    # "with no gap": the "no" was ignored and SDI's own gap kept
+    r = plan("two towers of 2 side by side with no gap")
+    ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
+    assert r.status == "success" and [round(b - a, 3) for a, b in itertools.pairwise(ys)] == [0.05]
+    # a likeness of the figure said is no size of its own (partial, "ignored 'ruler'")
+    r = plan("A lookout tower thirty centimetres tall, about as tall as a school ruler.")
+    assert r.status == "success" and r.spec.structures[0].height_m == 0.3

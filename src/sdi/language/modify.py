@@ -326,7 +326,7 @@ def modify(
             return False  # "pull the top 3 off and set them down as a tower": more than a change
         change = _CHANGES.get(op)
         if op == "offset":
-            note = _offset(m, built, structures, st.cell.cube[0])
+            note = _offset(m, built, structures, st.cell)
         elif change is not None:
             note = change(m, op, p, before, built, structures)
         else:
@@ -439,12 +439,19 @@ _DIRECTIONS = {
 
 
 def _offset(m: re.Match[str], built: list[Phrase], structures: list[StructureDraft],
-            part_m: float) -> str | None:  # fmt: skip
+            cell: CellConfig) -> str | None:  # fmt: skip
     """ "relocate it 200 mm in +x": the structure named last moves that far, from where it was
-    said to stand (a structure placed by region or relation has no position to move from)."""
+    said to stand — its coordinates, or the centre of its region (of the table, when it is the
+    only structure and was not placed); one placed by a relation has no position to move from."""
+    part_m = cell.cube[0]
     index = _last_index(built)
     s = structures[index]
     key, sign = _DIRECTIONS[re.sub(r"\s+", "", m.group(3).lower())]
+    regions = cell.design.regions
+    placed = s.at_x is not None or s.at_y is not None
+    if not placed and (s.region in regions or (s.region is None and len(structures) == 1)):
+        x, y = regions.get(s.region or "centre", cell.design.anchor)
+        s = s.model_copy(update={"at_x": x, "at_y": y, "region": None})
     if getattr(s, key) is None:
         return None
     amount = float({"a": "1"}.get(m.group(1).lower()) or words_to_numbers([m.group(1).lower()])[0])

@@ -205,6 +205,51 @@ _SAME_AS = re.compile(
 )
 
 
+_UNIT_ABBR = {"cent": "cm", "mill": "mm", "metr": "m", "mete": "m"}
+
+
+def _words_figure(said: str) -> str | None:
+    """ "one hundred and fifty ": 150; None when the words are no single figure."""
+    words = [w for w in re.split(r"[\s-]+", said.strip().lower()) if w]
+    while words and words[0] == "and":
+        words = words[1:]
+    if not words or words[-1] == "and":
+        return None
+    got = words_to_numbers(words)
+    return got[0] if len(got) == 1 and got[0].isdigit() else None
+
+
+# "…, the wall is 3 long": where the next description of a structure named begins
+_EACH_DESCRIBED = re.compile(
+    r",?\s+(?:and\s+)?(?=the\s+(?:" + _FAMILY_SAID + r")\s+(?:is|are|should|must|has|needs|will|"
+    r"to\s+be|\d|one|two|three|four|five|six)\b)",
+    re.IGNORECASE,
+)
+_LIKENED = re.compile(
+    r"\s*[,—-]*\s*\b(?:about\s+|roughly\s+|around\s+|nearly\s+|so\s+|almost\s+)?as\s+(?:tall|high|long|"
+    r"wide|big)\s+as\s+(?:an?|my|your|our|the)\s+([a-z][a-z' ]{1,30}?)(?=\s*(?:$|[.;!,]))",
+    re.IGNORECASE,
+)
+_FIGURE_SAID = re.compile(r"\d\s*(?:mm|cm|m)\b[^.;!]*$", re.IGNORECASE)
+
+
+def _likened(text: str, notes: list[str]) -> str:
+    """ "a tower 30 cm tall — about as tall as a school ruler": a likeness that glosses a figure
+    said before it, not a size of its own."""
+
+    def gloss(m: re.Match[str]) -> str:
+        words = m.group(1).lower().split()
+        if not _FIGURE_SAID.search(m.string[: m.start()]) or any(
+            w in lx.SHAPE_WORDS or w in ("one", "it", "that", "first", "second", "other", "row")
+            for w in words
+        ):
+            return m.group(0)
+        notes.append(f"read '{m.group(0).strip(' ,—-')}' as a likeness of the size said")
+        return ""
+
+    return _LIKENED.sub(gloss, text)
+
+
 def _same_as(m: re.Match[str]) -> str:
     """ "a wall of the same length behind it", "a tower as tall as the first one": as long (tall)
     as the structure named just before, by its name (it was dropped, or a tower of 1 built)."""
@@ -275,9 +320,21 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # about each of the structures named, one by one
     (re.compile(r"(^|[.;!?]\s*)(the\s+(?:" + _FAMILY_SAID + r")\s+(?:is|are|should|must|has|needs|"
                 r"wants|will|to\s+be)\b[^.;!?]*)", re.I),
-     lambda m: m.group(1) + re.sub(r",?\s+(?:and\s+)?(?=the\s+(?:" + _FAMILY_SAID + r")\s+(?:is|are|"
-                                   r"should|must|has|needs|will|to\s+be|\d|one|two|three|four|"
-                                   r"five|six)\b)", ". ", m.group(2), flags=re.I)),
+     lambda m: m.group(1) + _EACH_DESCRIBED.sub(". ", m.group(2))),
+    # "twenty centimetres to its right", "one hundred and fifty millimetres": the figure
+    (re.compile(r"\b((?:(?:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred|eleven|twelve|"
+                r"thirteen|fourteen|fifteen|sixteen|seventeen|eighteen|nineteen|ten|one|two|three|four|"
+                r"five|six|seven|eight|nine|and)[\s-]+)+)(centimet(?:re|er)s?|millimet(?:re|er)s?|"
+                r"met(?:re|er)s?)\b", re.I),
+     lambda m: (f"{n} {_UNIT_ABBR[m.group(2).lower()[:4]]}" if (n := _words_figure(m.group(1)))
+                else m.group(0))),
+    # "with no gap between them", "side by side with no space": touching (the "no" was
+    # ignored and SDI's own gap set)
+    (re.compile(r",?\s*\b(?:with\s+|and\s+|leaving\s+)?(?:no|without\s+(?:a|any))\s+(?:gap|space)s?\s+"
+                r"(?:in\s+)?between(?:\s+(?:them|the\s+two|each\s+other|the\s+\w+s))?\b", re.I),
+     ", touching"),
+    (re.compile(r"\b(side\s+by\s+side|next\s+to\s+each\s+other)\s*,?\s*(?:with\s+)?(?:no|without\s+(?:a|any))"
+                r"\s+(?:gap|space)s?\b", re.I), r"\1, touching"),
     # a stutter of small words ("on top of the cube at the at the left end"): said once
     (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
     # "a wall 4 length, 2 height": the figure before its dimension's noun
@@ -1701,6 +1758,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             f"'{bad.group(0)}' is not a number SDI can use; give a finite value (e.g. 'x = 0.4')",
             understood={},
         )
+    text = _likened(text, notes)
 
     def scientific(m: re.Match[str]) -> str:
         value = float(m.group(0))

@@ -390,8 +390,8 @@ def _shared_size(text: str, st: ReadState) -> str:
     if m is None or (m.group(2) is None and "same" not in m.group(0).lower() and not cubes):
         return text
     value = words_to_numbers([m.group(1).lower()])[0]
-    if not value.isdigit():
-        return text
+    if not value.isdigit() or (cubes and value == "1"):
+        return text  # "half a dozen pancakes in one stack, one cube each": what each one is
     key = "length" if (m.group(2) or "").lower() == "long" else "cubes" if cubes else "height"
     st.shared = (key, int(value), m.group(0).strip(" ,"))
     return text[: m.start()] + text[m.end() :]

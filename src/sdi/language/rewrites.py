@@ -668,7 +668,7 @@ _REWRITES += [
     # "16 inches out from the robot", "8 inches left of the middle line": a coordinate
     (
         re.compile(
-            r"\b(?:about\s+|around\s+|roughly\s+|some\s+)?(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:(?:out|away)\s+"
+            r"\b(?:about\s+|around\s+|roughly\s+|some\s+)?(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:(?:(?:out|away)\s+)?"
             r"from\s+the\s+robot(?:'s\s+base|\s+base)?|(?:to\s+the\s+)?(left|right)\s+of\s+the\s+"
             r"(?:middle|centre|center)(?:[\s-]*line)?|(in\s+front\s+of|behind)\s+the\s+(?:middle|centre|"
             r"center)(?:[\s-]*line)?)\b",
