@@ -4787,3 +4787,45 @@ def test_distances_said_in_words_or_from_the_robot_and_a_move_of_a_structure_pla
     # a likeness of the figure said is no size of its own (partial, "ignored 'ruler'")
     r = plan("A lookout tower thirty centimetres tall, about as tall as a school ruler.")
     assert r.status == "success" and r.spec.structures[0].height_m == 0.3
+
+
+@pytest.mark.parametrize(
+    ("command", "shape", "said"),
+    [
+        # a sentence led by "It" gave a second structure when the first had a place
+        ("A staircase on the right. It has 5 steps.", "staircase", {"steps": 5}),
+        ("A ring at the back. It should be 4 by 4 and 2 high.", "enclosure",
+         {"length": 4, "width": 4, "height": 2}),
+        ("A block at the front left. It is 2 by 2 by 3.", "block",
+         {"length": 2, "width": 2, "height": 3}),
+    ],
+)  # fmt: skip
+def test_a_sentence_led_by_it_describes_the_structure_named_before(command, shape, said):
+    r = plan(command)
+    (s,) = r.spec.structures
+    assert r.status == "success" and s.shape == shape and s.region is not None
+    assert {k: getattr(s, k) for k in said} == said
+
+
+def test_plural_descriptions_distances_from_an_edge_or_in_x_corners_and_climbing_down():
+    # "Both walls are 3 long." built two more walls; "Both 5 high." sized the last one
+    r = plan("Two walls, one at the front and one at the back. Both walls are 3 long.")
+    assert [(s.region, s.length) for s in r.spec.structures] == [("front", 3), ("back", 3)]
+    r = plan("Two towers, one at the front and one at the back. Both 5 high.")
+    assert [s.height for s in r.spec.structures] == [5, 5]
+    # "about 10 cm from the front" / "35 cm in x" were heights
+    s = plan("a tower of 3 near the left edge, about 10 cm from the front").spec.structures[0]
+    assert (s.height, s.at_x) == (3, 0.3)
+    s = plan("a tower of 2 at 35 cm in x and 45 cm in y").spec.structures[0]
+    assert (s.height, s.at_x, s.at_y) == (2, pytest.approx(0.35), pytest.approx(0.45))
+    # "in the far corner", "in a corner": a corner, said which (the back centre; an L shape)
+    for command in ("stack 3 cubes in the far corner", "a tower of 2 in a corner"):
+        r = plan(command)
+        assert [s.region for s in r.spec.structures] == ["back left"]
+        assert any("was not said" in n for n in r.notes)
+    # "climbing towards the robot" climbs to the front; "going down towards the back" too
+    for command in ("a staircase of 3 steps climbing towards the robot",
+                    "a staircase of 3 steps, going down towards the back"):  # fmt: skip
+        r = plan(command)
+        top = max(r.layout.objects, key=lambda o: o.position[2])
+        assert top.position[0] == min(o.position[0] for o in r.layout.objects)

@@ -130,7 +130,7 @@ MODIFY = [
     _op(  # "relocate it 200 mm in +x", "shift it 2 cubes to the left"
         r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?(\d+(?:\.\d+)?|one|two|three|"
         r"four|five|a)\s*(mm|cm|m|cubes?)\s+(?:in|along|towards?|to(?:\s+the)?)\s+(?:the\s+)?"
-        r"([+-]\s*[xy]|left|right|front|back)\b",
+        r"([+-]?\s*[xy]|left|right|front|back)\b",
         "offset",
     ),
     _op(
@@ -427,6 +427,8 @@ def _region(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
 
 
 _DIRECTIONS = {
+    "x": ("at_x", 1),  # "move it 10 cm in x": along it, the positive way
+    "y": ("at_y", 1),
     "+x": ("at_x", 1),
     "back": ("at_x", 1),
     "-x": ("at_x", -1),

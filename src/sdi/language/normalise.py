@@ -205,6 +205,9 @@ _SAME_AS = re.compile(
 )
 
 
+_MOVED_BY = re.compile(
+    r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?$", re.IGNORECASE
+)
 _UNIT_ABBR = {"cent": "cm", "mill": "mm", "metr": "m", "mete": "m"}
 
 
@@ -335,6 +338,24 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      ", touching"),
     (re.compile(r"\b(side\s+by\s+side|next\s+to\s+each\s+other)\s*,?\s*(?:with\s+)?(?:no|without\s+(?:a|any))"
                 r"\s+(?:gap|space)s?\b", re.I), r"\1, touching"),
+    # "at 35 cm in x and 45 cm in y": the coordinates (the figures were a height)
+    (re.compile(r"\b(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:in|along|on)\s+(?:the\s+)?([xy])"
+                r"(?:[\s-]+axis)?\b(?!\s*=)", re.I),
+     lambda m: m.group(0) if _MOVED_BY.search(m.string[: m.start()])
+     else f"{m.group(3)} = {m.group(1)} {m.group(2)}"),
+    # "a tower in a corner": a corner of the table (an L shape was built beside it)
+    (re.compile(r"\b(in|into)\s+(?:a|any|one)\s+(?=(?:(?:far|back|front|near|rear)\s+)?corner\b"
+                r"(?!\s+of\b))", re.I), r"\1 the "),
+    # "climbing towards the robot": to the front; "going down towards the back": it climbs to
+    # the front (it was moved to the back, climbing there)
+    (re.compile(r"\b(climb\w*|ris(?:e|es|ing)|ascend\w*|(?:going|goes|stepping|steps)\s+up)\s+"
+                r"(towards?|to)\s+(?:the\s+)?robot\b", re.I), r"\1 \2 the front"),
+    (re.compile(r"\b(?:(?:going|goes|stepping|steps|running|runs|sloping|slopes)\s+down|"
+                r"descend(?:s|ing)?|fall(?:s|ing))\s+(?:towards?|to)\s+(?:the\s+)?(front|back|rear|left|"
+                r"right|robot)\b", re.I),
+     lambda m: "climbing towards the " + {"front": "back", "robot": "back", "back": "front",
+                                          "rear": "front", "left": "right",
+                                          "right": "left"}[m.group(1).lower()]),
     # a stutter of small words ("on top of the cube at the at the left end"): said once
     (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
     # "a wall 4 length, 2 height": the figure before its dimension's noun

@@ -57,6 +57,7 @@ from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
 from sdi.language.markers import find_phrases
 from sdi.language.normalise import courtesy, normalise
+from sdi.language.nouns import shape_alternation
 from sdi.language.reading import Reading
 from sdi.language.rewrites import rewrite
 from sdi.language.slots import fill_slots
@@ -382,10 +383,22 @@ _SHARED_AFTER = re.compile(
 )
 
 
+# "Two walls, one at the front and one at the back. Both walls are 3 long.": a sentence of
+# its own that sizes every structure named
+_SHARED_SENTENCE = re.compile(
+    r"(?:^|(?<=[.;!?]))\s*(?:and\s+)?(?:both|all|they(?:\s+all)?|each|(?:all|both|each)\s+of\s+them|"
+    r"the\s+(?:two|three|four))(?:\s+(?:" + shape_alternation() + r"))?\s+"
+    r"(?:are\s+|is\s+|should\s+be\s+|must\s+be\s+|will\s+be\s+|need\s+to\s+be\s+|stand\s+)?"
+    r"(\d+|one|two|three|four|five|six|seven|"
+    r"eight|nine|ten)\s*(?:cubes?\s+)?(high|tall|long)\s*(?:each)?\s*(?:[.!;]|$)",
+    re.IGNORECASE,
+)
+
+
 def _shared_size(text: str, st: ReadState) -> str:
     """ "two walls 4 long, one on the left and one on the right, both 3 high": a size said once
     at the end for every structure named (it went to the last one only, silently)."""
-    m = _SHARED.search(text) or _SHARED_AFTER.search(text)
+    m = _SHARED.search(text) or _SHARED_AFTER.search(text) or _SHARED_SENTENCE.search(text)
     cubes = m is not None and m.group(2) is None and "cube" in m.group(0).lower()
     if m is None or (m.group(2) is None and "same" not in m.group(0).lower() and not cubes):
         return text

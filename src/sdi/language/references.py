@@ -126,6 +126,40 @@ def possessive(
     return matches[0] if len(matches) == 1 else None
 
 
+def described(
+    p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
+) -> int | None:
+    """ "A staircase on the right. It has 5 steps.", "A ring at the back. It should be 4 by
+    4.": a sentence led by a pronoun that gives sizes describes the structure named last before
+    it — it was a second one, of the family the sizes suggest."""
+    if not _PRONOUN_SAYS.match(p.text) or len(spec.structures) != 1:
+        return None
+    if re.search(r"\b(?:not|never|no|nor)\b|n't", p.text, re.IGNORECASE):
+        return None  # "It should not be more than 3 high": a bound, read elsewhere
+    if not _sized(spec.structures[0]):
+        return None
+    built = [q for q in before if q.spec is not None and q.count and not q.undone]
+    if not built or built[-1].clause == p.clause:
+        return None
+    idx = built[-1].first + built[-1].count - 1
+    named = {
+        lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", p.text.lower())
+        if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES
+    }  # fmt: skip
+    if named - {structures[idx].shape}:
+        return None  # "It has a tower beside it": another structure, named
+    said, own = spec.structures[0].shape, structures[idx].shape
+    footprint = said in ("grid", "block") and own in ("enclosure", "castle", "grid", "block")
+    return idx if said == own or footprint else None  # "a ring … It should be 4 by 4"
+
+
+_PRONOUN_SAYS = re.compile(
+    r"^\W*(?:and\s+)?(?:it|this|that)\s*(?:'s|has|is|should|must|needs|will|shall|would|can|"
+    r"ought)\b",
+    re.IGNORECASE,
+)
+
+
 def named_ahead(
     p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
 ) -> int | None:

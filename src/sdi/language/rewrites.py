@@ -57,8 +57,9 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     (  # "its centre 10 cm from the front edge", "from the left edge 10 cm": a coordinate
         re.compile(
             r"(?:,\s*)?(?:(?:with\s+)?its\s+(?:centre|center)\s+|centred\s+|(?:placed\s+|set\s+)?)?"
-            r"(?:(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:in\s+|away\s+|back\s+)?from\s+the\s+(front|back|left|right)"
-            r"(?:[\s-]hand)?\s+(?:edge|side)"
+            r"(?:(?:about\s+|around\s+|roughly\s+|some\s+)?(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:in\s+|away\s+|"
+            r"back\s+)?from\s+the\s+(front|back|left|right)(?:[\s-]hand)?(?:\s+(?:edge|side)|(?=\s*(?:$|[,.;]|"
+            r"\s+(?:and|of\s+the\s+(?:table|workspace|bench|cell))\b)))"
             r"|from\s+the\s+(front|back|left|right)(?:[\s-]hand)?\s+(?:edge|side)\s*,?\s*(\d+(?:\.\d+)?)\s*"
             r"(mm|cm|m))(?:\s+of\s+the\s+(?:table|workspace|bench|cell))?(?:\s+to\s+its\s+(?:centre|center))?",
             re.IGNORECASE,

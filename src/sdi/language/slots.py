@@ -15,6 +15,7 @@ from sdi.language.nouns import BEAMS, beam_only
 from sdi.language.references import (
     copies,
     definite,
+    described,
     named_again,
     named_ahead,
     pick_structure,
@@ -180,6 +181,15 @@ def fill_slots(
                 continue
             st.material.append(p.text)
             st.notes.append(f"ignored '{p.text}': no structure named there")
+            continue
+        told = described(p, spec, phrases[:k], structures)
+        if told is not None:
+            # "A staircase on the right. It has 5 steps.": more about it, not a second one
+            said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
+            structures[told] = structures[told].model_copy(update=said)
+            st.notes.append(f"'{p.text}': more about the {structures[told].shape} named before")
+            _account(p, spec, unused, doc, st)
+            p.count = 0
             continue
         owner = possessive(p, spec, phrases[:k], structures)
         if owner is not None and not re.search(r"\d|\b(?:height|length|width|high|tall|long|"
