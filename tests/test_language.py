@@ -4829,3 +4829,24 @@ def test_plural_descriptions_distances_from_an_edge_or_in_x_corners_and_climbing
         r = plan(command)
         top = max(r.layout.objects, key=lambda o: o.position[2])
         assert top.position[0] == min(o.position[0] for o in r.layout.objects)
+
+
+def test_more_structures_than_the_words_name_is_not_success():
+    # two walls built for "the wall" said twice, reported as success
+    r = plan("put the wall behind the tower, with the tower 3 high and the wall 5 long")
+    walls = [s for s in r.spec.structures if s.shape == "wall"]
+    reported = any("2 walls where the command names 1" in n for n in r.notes)
+    assert (len(walls) == 1 and r.status == "success") or (r.status == "partial" and reported)
+    # counted plainly, and not where the words say several
+    for command in ("a tower of 3 on the left and another one on the right",
+                    "two tower of 5, and a beam lying across top of them",
+                    "a tower of 3 at the back and a tower of 2 at the front",
+                    "ring 4x4 3 high, 2 of them",
+                    "3x3 slab in the centre. Then 2x2 on top. Then 1 on top of that"):  # fmt: skip
+        assert not any("where the command names" in n for n in plan(command).notes), command
+    # the description itself, each structure in turn, read as more about them
+    r = plan("put a pyramid behind the staircase; the staircase has 3 steps and the pyramid a "
+             "base of 3")  # fmt: skip
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == [
+        "pyramid", "staircase"
+    ]

@@ -15,6 +15,11 @@ such readings and make them incomplete (``partial``), with a note naming the wor
   count of structures or parts, or a length in any unit the cell knows. A number the grammar
   took but that shows nowhere ("ring 4x4 3 high, 2 of them" built as one ring) was attached
   to the wrong thing or dropped.
+- **More than named**: more structures of a family than the operator's words name ("put the
+  wall behind the tower, with the tower 3 high and the wall 5 long" read as two walls) — the
+  reading added one nobody asked for. Counted only where the words count plainly: a number
+  before the noun, one for "a wall", none more for a later "the wall"; words of several
+  ("each", "both", "another one", "the corners", cubes) leave the family uncounted.
 """
 
 from __future__ import annotations
@@ -445,6 +450,76 @@ def _consulted_lost(doc: Doc, spec: Spec) -> list[tuple[str, str]]:
     return lost
 
 
+_REFERENCE_DETS = frozenset({"the", "this", "that", "its", "their", "these", "those", "same"})
+_ONE_DETS = frozenset({"a", "an", "one", "single", "another", "second", "third", "other", "new"})
+_SEVERAL = frozenset({
+    "each", "every", "per", "both", "corner", "corners", "ends", "sides", "either", "again",
+    "copy", "copies", "same", "more", "twice", "pair", "pairs", "couple", "all", "several",
+    "some", "few", "times", "many", "lots", "plenty", "repeat", "identical", "matching",
+    # "another one", "a little one", "one in the back right": more, said without the noun
+    "one", "ones", "another", "other", "others", "second", "third", "fourth", "fifth", "trio",
+    "quartet", "qty", "count", "array", "set", "sets", "x2", "x3", "x4", "shape", "them",
+})  # fmt: skip
+
+
+def _named_at_most(command: str) -> dict[str, int]:
+    """How many structures of each family the operator's words name at most, for a family
+    named only in the singular: one for each said with "a" (or bare), none for a later "the
+    X" that points back at one named before. A family counted ("two towers": the count cues'
+    check), said in the plural or with words of several ("each", "both", "the corners") has
+    no bound here."""
+    words = re.findall(r"[a-z0-9]+(?:\.[0-9]+)?|[.,;:!?]", command.lower())
+    bound: dict[str, int] = {}
+    open_ended: set[str] = set()
+    for i, w in enumerate(words):
+        family = lx.SHAPE_WORDS.get(w)
+        if family is None or w in lx.AMBIGUOUS_SHAPES or w in _COMPONENTS or w in lx.STEP_WORDS:
+            continue
+        if w in ("table", "tables", "bench") and i and words[i - 1] in _REFERENCE_DETS | {"on"}:
+            continue  # "on the table": the work table
+        before = []
+        for v in reversed(words[max(0, i - 3) : i]):
+            if v in ".,;:!?":
+                break
+            before.append(v)
+        plural = w.endswith("s") and lx.SHAPE_WORDS.get(w[:-1]) == family
+        number = next((v for v in before if words_to_numbers([v])[0].isdigit()), None)
+        if plural or (number is not None and before and before[0] == number):
+            open_ended.add(family)  # "two towers", "two tower of 5": the count's own check
+            continue
+        elif before and before[0] in _REFERENCE_DETS:
+            bound.setdefault(family, 1)  # "the tower": the one named before, or the first
+        else:
+            bound[family] = bound.get(family, 0) + 1
+    return {f: n for f, n in bound.items() if f not in open_ended}
+
+
+_PLACE = r"(?:front|back|rear|left|right|middle|centre|center)"
+_TWO_PLACES = re.compile(
+    r"\b" + _PLACE + r"\s+and\s+(?:on\s+|in\s+|at\s+)?(?:the\s+)?" + _PLACE + r"\b", re.IGNORECASE
+)
+
+
+def _more_than_named(spec: Spec, command: str) -> list[str]:
+    """ "Put the tower next to the wall. The tower is 4 high." read as four structures: more of
+    a family than the words name — the reading added structures nobody asked for."""
+    said = set(re.findall(r"[a-z0-9]+", command.lower()))
+    if said & _SEVERAL or said & {"cube", "cubes", "block", "blocks", "brick", "bricks"}:
+        return []
+    if re.search(r"\d\s*(?:,\s*\d+\s*)*(?:and|&)\s*\d|\bx\s*\d|\d\s*x\b(?!\s*\d)", command, re.I):
+        return []  # "towers of 2, 4 and 6", "tower x2": counted by the list
+    if _TWO_PLACES.search(command):
+        return []  # "a tower of 2 in the front and back": one in each
+    out = []
+    for family, most in _named_at_most(command).items():
+        if family in ("grid", "block", "pack", "enclosure"):
+            continue  # "then 2x2 on top": a slab said by its size alone
+        got = sum(s.shape == family for s in spec.structures)
+        if got > most >= 1:
+            out.append(f"{got} {family.replace('_', ' ')}s where the command names {most}")
+    return out
+
+
 def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     """Notes and material for what the sentence structure says and the reading does not."""
     for word, lack in _consulted_lost(doc, spec):
@@ -498,6 +573,10 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
             if v not in sizes and (v not in counts or not _counts_something(doc, i)):
                 st.material.append(text)
                 st.notes.append(f"ignored '{text}': the number shows nowhere in the reading")
+    typos = any(n.startswith("corrected '") for n in st.notes)  # the words said are not all
+    for extra in [] if typos else _more_than_named(spec, st.command):
+        st.material.append(extra)
+        st.notes.append(f"the reading builds {extra}; say how many are meant")
     if any(s.shape in _COMPOSITE for s in spec.structures):
         return
     more = bool(_MORE & set(re.findall(r"[a-z]+", st.command.lower())))

@@ -225,7 +225,7 @@ def _words_figure(said: str) -> str | None:
 # "…, the wall is 3 long": where the next description of a structure named begins
 _EACH_DESCRIBED = re.compile(
     r",?\s+(?:and\s+)?(?=the\s+(?:" + _FAMILY_SAID + r")\s+(?:is|are|should|must|has|needs|will|"
-    r"to\s+be|\d|one|two|three|four|five|six)\b)",
+    r"to\s+be|\d|one|two|three|four|five|six|an?)\b)",
     re.IGNORECASE,
 )
 _LIKENED = re.compile(
