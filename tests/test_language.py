@@ -4850,3 +4850,28 @@ def test_more_structures_than_the_words_name_is_not_success():
     assert r.status == "success" and [s.shape for s in r.spec.structures] == [
         "pyramid", "staircase"
     ]
+
+
+def test_one_more_on_each_the_middle_one_and_the_tall_one():
+    # "add one more cube to each of them" after two phrases: only the last one grew, and the
+    # note said "each"
+    r = plan("a tower of 2 and a tower of 4, then add one more cube to each of them")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 5]
+    for command, heights in (
+        ("a tower of 2, a tower of 4 and a tower of 6 in a row; put a cube on each of them",
+         [3, 5, 7]),
+        ("two towers of 3, then add a cube on top of each", [4, 4]),
+    ):  # fmt: skip
+        r = plan(command)  # a separate cube was built, silently
+        assert [s.height for s in r.spec.structures] == heights
+    # "a cube on the middle one": on the first one (or read as "on top")
+    for command in ("three towers of 2 in a row. Put a cube on the middle one.",
+                    "three 2x2 blocks side by side, with a cube on top of the middle one"):
+        r = plan(command)
+        assert r.status == "success" and r.spec.relations[-1].object == 1
+    # "the tall one" was a tower one cube high
+    r = plan("a tower of 2, a tower of 3 and a tower of 4; put the tall one at the back")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 3, 4]
+    # "close to the back" was built at the front; "go ahead and stack …" named no structure
+    assert plan("a wall 4 long close to the back").spec.structures[0].region == "back"
+    assert plan("go ahead and stack 5 cubes on the right").spec.structures[0].height == 5

@@ -47,6 +47,14 @@ def _op(pattern: str, op: str) -> tuple[re.Pattern[str], str]:
 MODIFY = [
     _op(r"\b(?:add|put|stack|place|pile)\s+" + _N + r"\s+(?:more|extra|additional)" + _UNIT, "+"),
     _op(r"\b(?:add|put|stack|place)\s+" + _N + _UNIT + r"\s+(?:to|on|onto)\s+" + _REF + r"\b", "+"),
+    # "put a cube on top of each of them": one more on each
+    _op(
+        r"\b(?:add|put|stack|place|set)\s+(?:a|one|an)\s+(?:more\s+|extra\s+|single\s+)?(?:cube|block|"
+        r"1-cube\s+tower)\s+"
+        r"on(?:to)?\s+(?:(?:the\s+)?top\s+of\s+)?(?:each|every|all|both)(?:\s+of\s+them|\s+one|"
+        r"\s+tower|\s+stack)?\b",
+        "+1",
+    ),
     _op(
         r"\badd\s+(?:a|one|another)\s+(?:second|third|fourth|fifth|new|further|extra|more)?"
         r"\s*(?:(?:identical|same|matching|similar|equal)\s+)?(?:layer|level|tier|storey|course)\b",
@@ -813,12 +821,28 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     structures[index] = last.model_copy(update=update)
     in_m = f", {metres:g} m, {metres * 100:g} cm" if metres else ""  # "30 cm tower": said in cm
     was = f" (was {now}{in_m})" if said else ""
-    if _EVERY.search(p.text) and target.count > 1 and index == _last_index(built):
-        # "three towers of 2, then add one more cube to each": all of them, alike
-        for i in range(target.first, target.first + target.count):
-            if structures[i].shape == last.shape and getattr(structures[i], key) == said:
-                structures[i] = structures[i].model_copy(update=update)
-        return f"each {last.shape} now has {key} {new}{was}"
+    alike = [i for i in _built_indices(built) if structures[i].shape == last.shape]
+    if _EVERY.search(p.text) and len(alike) > 1 and index == _last_index(built):
+        # "three towers of 2, then add one more cube to each": all of them, each from its own
+        # size ("a tower of 2 and a tower of 4, … to each of them": 3 and 5)
+        were: list[int] = [
+            (getattr(structures[i], key) if i != index else now) or unsaid.get(last.shape, 3)
+            for i in alike
+        ]
+        ops: dict[str, Callable[[int], int]] = {
+            "+": lambda v: v + n, "-": lambda v: v - n, "=": lambda v: n,
+            "*": lambda v: v * n, "/": lambda v: v // n,
+        }  # fmt: skip
+        got = [ops[op](v) for v in were]
+        if min(got) < 1 or (op == "/" and any(v % n for v in were)):
+            structures[index] = last
+            return None
+        for i, grown in zip(alike, got, strict=True):
+            structures[i] = structures[i].model_copy(update={**update, key: grown})
+        if len(set(got)) == 1:
+            return f"each {last.shape} now has {key} {new}{was}"
+        return (f"the {last.shape}s now have {key} {', '.join(map(str, got))} (were "
+                f"{', '.join(map(str, were))})")  # fmt: skip
     which = f" on the {side}" if on_side is not None else ""
     return f"the {last.shape}{which} now has {key} {new}{was}"
 
@@ -832,7 +856,8 @@ _LAYER_WORDS = re.compile(
 
 _EVERY = re.compile(
     r"\b(?:to\s+each|each\s+of\s+them|all\s+of\s+them|them\s+all|every\s+one|each\s+one|"
-    r"both(?:\s+of\s+them)?|on\s+each|all\s+\w+s\b|(?:make|raise|lower|extend|change|give)\s+them\b)",
+    r"both(?:\s+of\s+them)?|on\s+each|of\s+each\b|all\s+\w+s\b|"
+    r"(?:make|raise|lower|extend|change|give)\s+them\b)",
     re.IGNORECASE,
 )
 

@@ -205,6 +205,7 @@ _SAME_AS = re.compile(
 )
 
 
+_FAMILY_BEFORE = re.compile(r"\b(?:" + _FAMILY_SAID + r")\b", re.IGNORECASE)
 _MOVED_BY = re.compile(
     r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?$", re.IGNORECASE
 )
@@ -356,6 +357,17 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: "climbing towards the " + {"front": "back", "robot": "back", "back": "front",
                                           "rear": "front", "left": "right",
                                           "right": "left"}[m.group(1).lower()]),
+    # "put the tall one at the back", "the big one on the right": the tallest (or the
+    # taller) of those named, not a structure one cube high
+    (re.compile(r"\bthe\s+(tall|high|big|large|long|short|low|small|little)\s+(one|tower|stack|column)\b"
+                r"(?=\s*(?:,\s*)?(?:goes\s+|is\s+|stands\s+|should\s+(?:be|go|stand)\s+|must\s+(?:be|go)\s+)?"
+                r"(?:(?:in|on|at|to)\s+the|behind)\b)", re.I),
+     lambda m: "the " + {"tall": "tallest", "high": "tallest", "big": "biggest", "large": "biggest",
+                         "long": "longest", "short": "shortest", "low": "shortest",
+                         "small": "smallest", "little": "smallest"}[m.group(1).lower()]
+     + " " + m.group(2) if _FAMILY_BEFORE.search(m.string[: m.start()]) else m.group(0)),
+    # "go ahead and stack 5 cubes": the build
+    (re.compile(r"(^\s*|[.;:!]\s*)(?:go\s+ahead\s+and|just\s+go\s+and)\s+", re.I), r"\1"),
     # a stutter of small words ("on top of the cube at the at the left end"): said once
     (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
     # "a wall 4 length, 2 height": the figure before its dimension's noun

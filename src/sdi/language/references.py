@@ -313,7 +313,7 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
 
 _PICK = re.compile(
     r"^(?:\w+\s+)?the\s+(first|second|third|fourth|last|smaller|smallest|larger|largest|bigger|"
-    r"biggest|taller|tallest|shorter|shortest|lower|higher)(?:\s+(?:one|"
+    r"biggest|taller|tallest|shorter|shortest|lower|higher|middle|centre|center)(?:\s+(?:one|"
     + shape_alternation()
     + r"))?$",
     re.IGNORECASE,
@@ -333,6 +333,17 @@ def pick_structure(text: str, structures: list[StructureDraft], among: list[int]
         return among[order[word]] if order[word] < len(among) else None
     if word == "last":
         return among[-1]
+    if word in ("middle", "centre", "center"):
+        # "three blocks side by side, with a cube on the middle one": the middle of an odd
+        # number alike (the cube named with them is not one of them)
+        runs: list[list[int]] = []
+        for i in among:  # runs of structures alike, one after the other
+            if runs and structures[runs[-1][-1]] == structures[i] and runs[-1][-1] == i - 1:
+                runs[-1].append(i)
+            else:
+                runs.append([i])
+        odd = [r for r in runs if len(r) >= 3 and len(r) % 2]
+        return odd[-1][len(odd[-1]) // 2] if odd else None
 
     def size(s: StructureDraft) -> float:
         tall = s.height or s.steps or (s.height_m or 0) / 0.05 or 1

@@ -530,7 +530,8 @@ _REWRITES += [
         "read '{0}' as a column on its middle",
     ),
     (
-        re.compile(r"\bon\s+(?:its|the)\s+(?:centre|center|middle|top)\b(?!\s+of)", re.I),
+        re.compile(r"\bon\s+(?:its|the)\s+(?:centre|center|middle|top)\b(?!\s+(?:of|one|tower|stack|column|"
+                   r"block|slab|pillar|wall|row)\b)", re.I),
         " on top ",
         "",
     ),

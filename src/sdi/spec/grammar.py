@@ -1074,6 +1074,14 @@ class _Parser:
                 continue
             if w in lx.REGION_WORDS:
                 region = lx.REGION_WORDS[w]
+                if (
+                    w in ("close", "near")
+                    and nxt == "to"
+                    and self.word(k + 2) == "the"
+                    and self.word(k + 3) in ("back", "left", "right", "front", "rear", "edge")
+                ):
+                    take(k)  # "close to the back": the back, said after it
+                    continue
                 if w == "far" and nxt in ("left", "right") and self.word(k + 2) not in (
                     "corner", "corners", "back", "front"
                 ):
