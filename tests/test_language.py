@@ -4875,3 +4875,23 @@ def test_one_more_on_each_the_middle_one_and_the_tall_one():
     # "close to the back" was built at the front; "go ahead and stack …" named no structure
     assert plan("a wall 4 long close to the back").spec.structures[0].region == "back"
     assert plan("go ahead and stack 5 cubes on the right").spec.structures[0].height == 5
+
+
+def test_a_cube_added_beside_the_one_on_a_side_and_its_other_side():
+    # "and a cube 10 cm to its left": the cube was dropped
+    r = plan("a tower of 3 at the centre and a cube 10 cm to its left")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 1]
+    assert r.spec.relations[0].gap_m == 0.1
+    # "on the left one" of two rows, one on each side: on the row on the left
+    r = plan("a row of 3 on the left, a row of 3 on the right; put a tower of 2 on the left one")
+    assert r.status == "success" and (r.spec.relations[0].kind, r.spec.relations[0].object) == (
+        "on_top_of", 0
+    )
+    # "with a row on its left and a row on its right": both beside the tower (the second was
+    # beside the first row); "…to its left, and … to its left" is a chain
+    r = plan("a tower of 5 with a row of 2 on its left and a row of 2 on its right")
+    assert [(x.subject, x.object, x.side) for x in r.spec.relations] == [
+        (1, 0, "left"), (2, 0, "right")
+    ]
+    r = plan("a tower of 3, a tower of 2 to its left, and a tower of 1 to its left")
+    assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]

@@ -10,6 +10,7 @@ import re
 from sdi.language.nouns import COPY_WORDS, beam_only
 from sdi.language.references import resolve
 from sdi.language.state import Phrase, PhraseRelation, ReadState
+from sdi.spec import lexicon as lx
 from sdi.spec.structure_spec import (
     Relation,
     RelationKind,
@@ -41,6 +42,7 @@ def relate(
         return j if phrases[j].count and phrases[j].spec is not None else None
 
     joiners = {r.object for r in rels if r.kind in ("joined", "between")}
+    its: tuple[int, str] | None = None  # what "its" named last, and on which side
     for r in rels:
         if r.kind == "between":
             flanked = _flanked(phrases, r, structures, relations)
@@ -92,6 +94,17 @@ def relate(
                 if phrases[subj].count > 1
                 else (phrases[obj].first + phrases[obj].count - 1 if obj is not None else -1)
             )
+            if (
+                its is not None
+                and r.kind == "next"
+                and r.side is not None
+                and its[1] == lx.OPPOSITE_SIDE.get(r.side)
+                and re.match(r"\W*and\b", phrases[subj].text, re.IGNORECASE)
+            ):
+                # "a tower with a row on its left and a row on its right": its other side ("…
+                # to its left, and a tower of 1 to its left" is the one before)
+                o_idx = its[0]
+            its = (o_idx, r.side) if r.kind == "next" and r.side else None
         elif obj is None:
             o_idx = -1
             s_idx = s_last

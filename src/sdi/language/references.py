@@ -313,7 +313,8 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
 
 _PICK = re.compile(
     r"^(?:\w+\s+)?the\s+(first|second|third|fourth|last|smaller|smallest|larger|largest|bigger|"
-    r"biggest|taller|tallest|shorter|shortest|lower|higher|middle|centre|center)(?:\s+(?:one|"
+    r"biggest|taller|tallest|shorter|shortest|lower|higher|middle|centre|center|left|right|front|"
+    r"back)(?:[\s-]?hand(?:ed)?)?(?:\s+(?:one|"
     + shape_alternation()
     + r"))?$",
     re.IGNORECASE,
@@ -333,6 +334,13 @@ def pick_structure(text: str, structures: list[StructureDraft], among: list[int]
         return among[order[word]] if order[word] < len(among) else None
     if word == "last":
         return among[-1]
+    if word in ("left", "right", "front", "back"):
+        # "a row on the left, a row on the right; a tower of 2 on the left one": the one
+        # placed on that side ("not the left. the back." is a place)
+        if m.end(1) == len(text.strip()) or m.group(0).lower().startswith("not"):
+            return None
+        sided = [i for i in among if word in (structures[i].region or "").split()]
+        return sided[0] if len(sided) == 1 else None
     if word in ("middle", "centre", "center"):
         # "three blocks side by side, with a cube on the middle one": the middle of an odd
         # number alike (the cube named with them is not one of them)

@@ -491,6 +491,17 @@ _REWRITES += [
         " a 1-cube tower ",
         "",
     ),
+    # "a tower of 3 and a cube to its left", "… and a cube 10 cm behind it": a cube added (not
+    # "a cube to the left", a distance)
+    (
+        re.compile(
+            r"(?<=\band\s)(a|an)\s+(?:cube|brick)\s+(?=(?:\d+(?:\.\d+)?\s*(?:cm|mm|m)\s+)?"
+            r"(?:to\s+(?:its|the)\s+(?:left|right)|in\s+front\s+of|behind|next\s+to|beside)\b)",
+            re.IGNORECASE,
+        ),
+        " {0} 1-cube tower ",
+        "",
+    ),
     # "a cube at the back left and a cube at the front right", "stack a second cube on it": a
     # loose cube is a structure of its own (not a unit: "a cube high", "a cube's width", "a cube
     # of space", "a cube tower")
