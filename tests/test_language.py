@@ -4818,11 +4818,10 @@ def test_plural_descriptions_distances_from_an_edge_or_in_x_corners_and_climbing
     assert (s.height, s.at_x) == (3, 0.3)
     s = plan("a tower of 2 at 35 cm in x and 45 cm in y").spec.structures[0]
     assert (s.height, s.at_x, s.at_y) == (2, pytest.approx(0.35), pytest.approx(0.45))
-    # "in the far corner", "in a corner": a corner, said which (the back centre; an L shape)
-    for command in ("stack 3 cubes in the far corner", "a tower of 2 in a corner"):
-        r = plan(command)
-        assert [s.region for s in r.spec.structures] == ["back left"]
-        assert any("was not said" in n for n in r.notes)
+    # "in a corner": a corner of the table, said which (an L shape was built beside it)
+    r = plan("a tower of 2 in a corner")
+    assert [s.region for s in r.spec.structures] == ["back left"]
+    assert any("was not said" in n for n in r.notes)
     # "climbing towards the robot" climbs to the front; "going down towards the back" too
     for command in ("a staircase of 3 steps climbing towards the robot",
                     "a staircase of 3 steps, going down towards the back"):  # fmt: skip
@@ -4895,3 +4894,24 @@ def test_a_cube_added_beside_the_one_on_a_side_and_its_other_side():
     ]
     r = plan("a tower of 3, a tower of 2 to its left, and a tower of 1 to its left")
     assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]
+
+
+def test_sizes_for_both_in_two_dimensions_a_gap_said_with_between_and_impossible_requests():
+    # "both 3 long 2 high" sized the last wall only
+    r = plan("make a wall on the left side and a wall on the right side, both 3 long 2 high")
+    assert [(s.length, s.height) for s in r.spec.structures] == [(3, 2), (3, 2)]
+    # "three 2x2 blocks in a row along the back": a row was built beside them
+    r = plan("three 2x2 blocks in a row along the back")
+    assert [s.shape for s in r.spec.structures] == ["grid"] * 3
+    # "with a tower in front of it and a tower behind it": both beside the block
+    r = plan("a 2x3 block with a tower of 2 in front of it and a tower of 3 behind it")
+    assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 0)]
+    # "between" left over after the gap made a correct reading partial
+    for command in ("two towers with 3 floors, 5 cm between",
+                    "a tower of four to the left of a tower of two with a gap in between"):
+        assert plan(command).status == "success", command
+    # what no layout can be is not a silent success
+    for command in ("two towers in the same spot", "put a tower on top of itself",
+                    "a tall short tower", "a tower of 3 outside the table to the left"):
+        r = plan(command)
+        assert r.status == "partial" and any(n.startswith("ignored '") for n in r.notes)

@@ -52,6 +52,7 @@ from sdi.bench.language_dev34 import CASES as DEV34
 from sdi.bench.language_dev35 import CASES as DEV35
 from sdi.bench.language_dev36 import CASES as DEV36
 from sdi.bench.language_dev37 import CASES as DEV37
+from sdi.bench.language_dev38 import CASES as DEV38
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -303,6 +304,7 @@ SETS = {
     "dev35": (DEV35, 180, 8, 15),
     "dev36": (DEV36, 180, 8, 15),
     "dev37": (DEV37, 180, 8, 15),
+    "dev38": (DEV38, 180, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -334,6 +336,7 @@ HARD = {
     "dev35": ("relation", "numbers", "dimensions", "sequence"),
     "dev36": ("relation", "numbers", "dimensions", "sequence"),
     "dev37": ("relation", "numbers", "dimensions", "sequence"),
+    "dev38": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -459,6 +462,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev35.py",
         "language_dev36.py",
         "language_dev37.py",
+        "language_dev38.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")

@@ -42,8 +42,9 @@ def relate(
         return j if phrases[j].count and phrases[j].spec is not None else None
 
     joiners = {r.object for r in rels if r.kind in ("joined", "between")}
-    its: tuple[int, str] | None = None  # what "its" named last, and on which side
-    for r in rels:
+    # what "its" named in the relation before (said without an object), and on which side
+    its: tuple[int, str, int] | None = None
+    for n_rel, r in enumerate(rels):
         if r.kind == "between":
             flanked = _flanked(phrases, r, structures, relations)
             if flanked:
@@ -99,12 +100,12 @@ def relate(
                 and r.kind == "next"
                 and r.side is not None
                 and its[1] == lx.OPPOSITE_SIDE.get(r.side)
-                and re.match(r"\W*and\b", phrases[subj].text, re.IGNORECASE)
+                and its[2] == n_rel - 1
             ):
                 # "a tower with a row on its left and a row on its right": its other side ("…
                 # to its left, and a tower of 1 to its left" is the one before)
                 o_idx = its[0]
-            its = (o_idx, r.side) if r.kind == "next" and r.side else None
+            its = (o_idx, r.side, n_rel) if r.kind == "next" and r.side else None
         elif obj is None:
             o_idx = -1
             s_idx = s_last

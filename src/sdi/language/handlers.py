@@ -252,7 +252,8 @@ def _in_a_row(m: re.Match[str], st: ReadState, note: str) -> str:
         before.pop()  # "three columns of four cubes standing in a row": how they stand
     noun = before[-1] if before else ""
     plural = [w for w in before[-5:] if w.endswith("s") and w in lx.SHAPE_WORDS
-              and w not in lx.AMBIGUOUS_SHAPES and w not in ("rows", "lines")]  # fmt: skip
+              and (w not in lx.AMBIGUOUS_SHAPES or (w == "pads" and "x" in before[-4:]))
+              and w not in ("rows", "lines")]  # fmt: skip
     counted_parts = any(w in ("of", "each") for w in before[-3:-1])  # "of four cubes"
     if not plural or (noun in ("cubes", "blocks", "bricks", "parts") and not counted_parts):
         return m.group(0)
@@ -585,6 +586,19 @@ def _unsupported(m: re.Match[str], st: ReadState, note: str) -> str:
         m, st, "every structure stands on the table, resting on it or on parts below it; "
         "nothing can float, go below the table or stand on the robot or a person",
     )  # fmt: skip
+
+
+def _impossible(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "two towers in the same spot", "on top of itself", "a tall short tower": what no
+    layout can be, material with why."""
+    said = _said(m)[0].lower()
+    if "same" in said:
+        why = "two structures cannot stand in the same place; say where each goes"
+    elif "itself" in said:
+        why = "a structure cannot stand on, in or around itself; name the other structure"
+    else:
+        why = "the sizes contradict each other; say one size"
+    return _cannot(m, st, why)
 
 
 _KEYED = {"length": "long", "len": "long", "width": "wide", "depth": "deep", "height": "high",
@@ -1082,6 +1096,7 @@ HANDLERS: dict[str, Handler] = {
     "{top_end}": _top_end,
     "{not_touching}": _not_touching,
     "{unsupported}": _unsupported,
+    "{impossible}": _impossible,
     "{at_most}": _at_most,
     "{corners}": _corners,
     "{square_base}": _square_base,

@@ -368,6 +368,19 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      + " " + m.group(2) if _FAMILY_BEFORE.search(m.string[: m.start()]) else m.group(0)),
     # "go ahead and stack 5 cubes": the build
     (re.compile(r"(^\s*|[.;:!]\s*)(?:go\s+ahead\s+and|just\s+go\s+and)\s+", re.I), r"\1"),
+    # "a gap in between", "gap of 2 between each", "5 cm between": the gap said, and "between"
+    # with it (it was left over, and the reading partial)
+    (re.compile(r"(?<!\bof\s)\b(gaps?|space|spacing)((?:\s+of\s+\S+(?:\s+(?:cubes?|cm|mm|m))?)?)\s+"
+                r"(?:in\s+)?between"
+                r"(?:\s+(?:each(?:\s+(?:one|other|of\s+them))?|them(?:\s+all)?|the\s+two|both|positions))?"
+                r"(?=\s*(?:$|[,.;!]))", re.I), r"\1\2"),
+    (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:mm|cm|m|cubes?))\s+(?:in\s+)?between(?:\s+(?:each(?:\s+(?:one|"
+                r"other|of\s+them))?|them(?:\s+all)?|the\s+two|both))?(?=\s*(?:$|[,.;!]))", re.I),
+     r"\1 apart"),
+    # "Goal: a wall …", "Exercise 15 — …", "this time": a label or a framing, not the build
+    (re.compile(r"(^|[.;!?\n]\s*)(?:goal|objective|aim|task|deliverable)\s*:\s*", re.I), r"\1"),
+    (re.compile(r"\bthis\s+time\b", re.I), " "),
+    (re.compile(r"(\d\s*(?:mm|cm|m)?)\s+in\s+plan\b", re.I), r"\1"),
     # a stutter of small words ("on top of the cube at the at the left end"): said once
     (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
     # "a wall 4 length, 2 height": the figure before its dimension's noun

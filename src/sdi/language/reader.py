@@ -395,9 +395,28 @@ _SHARED_SENTENCE = re.compile(
 )
 
 
+_N_WORD = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+# "both 3 long 2 high": one size said for every structure per dimension
+_SHARED_TWO = re.compile(
+    r"\b(both|each|all)\s+(" + _N_WORD + r")\s+(?:cubes?\s+)?(long|high|tall)\s*"
+    r"(?:,\s*|and\s+|by\s+)?(" + _N_WORD + r")\s+(?:cubes?\s+)?(long|high|tall)\b",
+    re.IGNORECASE,
+)
+
+
 def _shared_size(text: str, st: ReadState) -> str:
     """ "two walls 4 long, one on the left and one on the right, both 3 high": a size said once
     at the end for every structure named (it went to the last one only, silently)."""
+    text = _SHARED_TWO.sub(r"\1 \2 \3, \1 \4 \5", text)
+    for _ in range(2):
+        shared = _one_shared(text, st)
+        if shared == text:
+            break
+        text = shared
+    return text
+
+
+def _one_shared(text: str, st: ReadState) -> str:
     m = _SHARED.search(text) or _SHARED_AFTER.search(text) or _SHARED_SENTENCE.search(text)
     cubes = m is not None and m.group(2) is None and "cube" in m.group(0).lower()
     if m is None or (m.group(2) is None and "same" not in m.group(0).lower() and not cubes):
@@ -406,15 +425,21 @@ def _shared_size(text: str, st: ReadState) -> str:
     if not value.isdigit() or (cubes and value == "1"):
         return text  # "half a dozen pancakes in one stack, one cube each": what each one is
     key = "length" if (m.group(2) or "").lower() == "long" else "cubes" if cubes else "height"
-    st.shared = (key, int(value), m.group(0).strip(" ,"))
+    st.shared.append((key, int(value), m.group(0).strip(" ,")))
     return text[: m.start()] + text[m.end() :]
 
 
 def _apply_shared(structures: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
     """The size said for every structure, on each that has no such size of its own."""
-    if st.shared is None or not structures:
-        return structures
-    key, value, said = st.shared
+    for shared in st.shared if structures else []:
+        structures = _apply_one(structures, shared, st)
+    return structures
+
+
+def _apply_one(
+    structures: list[StructureDraft], shared: tuple[str, int, str], st: ReadState
+) -> list[StructureDraft]:
+    key, value, said = shared
     fits = {"height": ("tower", "wall", "block", "grid", "row", "castle", "enclosure"),
             "length": ("wall", "row", "grid", "block"), "cubes": ("tower",)}[key]  # fmt: skip
     key = "height" if key == "cubes" else key  # "…, 4 cubes each": towers' height

@@ -1611,10 +1611,24 @@ _REWRITES += [
         "{at_most}",
         "",
     ),
+    (  # "two towers in the same spot", "on top of itself", "a tall short tower": impossible
+        re.compile(
+            r"\b(?:in|at|on)\s+(?:exactly\s+|precisely\s+)?the\s+(?:very\s+)?same\s+(?:spot|place|"
+            r"position|location)\b(?!\s+as\b)|\b(?:on\s+(?:top\s+of\s+)?|in(?:side)?\s+|around\s+)itself\b|"
+            r"\b(?:tall|high)\s+(?:and\s+)?(?:short|low)\b|\b(?:short|low)\s+(?:and\s+)?(?:tall|high)\b|"
+            r"\b(?:big|large)\s+(?:and\s+)?(?:small|little|tiny)\b|\b(?:small|little|tiny)\s+(?:and\s+)?"
+            r"(?:big|large)\b",
+            re.IGNORECASE,
+        ),
+        "{impossible}",
+        "",
+    ),
     (  # "a staircase going down into the table", "floating above the table": not buildable
         re.compile(
             r"\b(?:going\s+|sunk\s+|dug\s+|reaching\s+)?(?:down\s+)?(?:into|under|below|beneath|through)\s+"
-            r"the\s+(?:table|floor|surface|ground)(?:\s+surface)?\b|\b(?:floating|hovering|hanging|"
+            r"the\s+(?:table|floor|surface|ground)(?:\s+surface)?\b|"
+            r"\b(?:outside|off|beyond|past)\s+(?:of\s+)?the\s+(?:table|workspace|cell|bench)(?:'s\s+edge)?\b|"
+            r"\b(?:floating|hovering|hanging|"
             r"suspended)\b(?:\s+(?:\d+(?:\.\d+)?\s*(?:cm|mm|m)\s+)?(?:above|over|off)\s+the\s+"
             r"(?:table|floor|surface|ground))?|\bin\s+(?:mid-?\s*air|the\s+air)\b",
             re.IGNORECASE,

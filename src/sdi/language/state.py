@@ -48,7 +48,8 @@ class ReadState:
     material: list[str] = field(default_factory=list)
     no_stack: bool = False
     no_beams: bool = False
-    shared: tuple[str, int, str] | None = None  # "…, both 3 high": every structure's size
+    # "…, both 3 high", "both 3 long 2 high": every structure's size, one entry per dimension
+    shared: list[tuple[str, int, str]] = field(default_factory=list)
     gap_m: float | None = None  # "one cube gap", "10 cm apart": between the structures
     gap_said: str | None = None  # the words of that gap
     gap_first: bool = False  # said before any "between" or "in the middle"

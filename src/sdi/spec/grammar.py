@@ -1100,7 +1100,7 @@ class _Parser:
                 p.setdefault("_regions", []).append(region)
                 take(k)
                 continue
-            if w == "corner" and (prev in ("the", "a", "one", "any") or prev in lx.REGION_WORDS):
+            if w == "corner" and prev in ("the", "a", "one", "any"):
                 p.setdefault("_regions", []).append("corner")
                 take(k)
                 continue
