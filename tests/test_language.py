@@ -4915,3 +4915,13 @@ def test_sizes_for_both_in_two_dimensions_a_gap_said_with_between_and_impossible
                     "a tall short tower", "a tower of 3 outside the table to the left"):
         r = plan(command)
         assert r.status == "partial" and any(n.startswith("ignored '") for n in r.notes)
+
+
+def test_a_hurdle_a_gantry_and_a_crossbar_are_a_bridge():
+    # "a hurdle with posts of 2" / "a gantry with legs of 4" built one tower, silently
+    for command, high in (("a hurdle with posts of 2", 2), ("a gantry with legs of 4", 4),
+                          ("two posts 3 high with a crossbar on top", 3)):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
+            ("bridge", high)
+        ]

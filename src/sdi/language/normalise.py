@@ -381,6 +381,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"(^|[.;!?\n]\s*)(?:goal|objective|aim|task|deliverable)\s*:\s*", re.I), r"\1"),
     (re.compile(r"\bthis\s+time\b", re.I), " "),
     (re.compile(r"(\d\s*(?:mm|cm|m)?)\s+in\s+plan\b", re.I), r"\1"),
+    # "a gate made of two 4-cube posts and a lintel": the posts are its own
+    (re.compile(r"\b(?:made|built|consisting|formed)\s+(?:up\s+)?(?:of|from)\s+(?=(?:two|2|four|4)\s+(?:\S+\s+)?"
+                r"(?:posts|pillars|legs|columns|uprights|supports)\b)", re.I), "with "),
     # a stutter of small words ("on top of the cube at the at the left end"): said once
     (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
     # "a wall 4 length, 2 height": the figure before its dimension's noun

@@ -29,7 +29,8 @@ BASES = {"base", "foundation", "bottom", "footing", "footprint"}
 
 
 BEAMS = {"beam", "beams", "plank", "planks", "lintel", "lintels", "girder", "girders", "bar",
-          "slab", "bridge", "bridges", "arch", "roof", "deck", "span"}  # fmt: skip
+         "crossbar", "crossbars", "slab", "bridge", "bridges", "arch", "roof", "deck",
+         "span"}  # fmt: skip
 
 
 LEAD_VERBS = {"put", "place", "set", "add", "make", "build", "stack", "lay", "position", "move"}
