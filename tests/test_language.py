@@ -4925,3 +4925,11 @@ def test_a_hurdle_a_gantry_and_a_crossbar_are_a_bridge():
         assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
             ("bridge", high)
         ]
+
+
+def test_next_to_the_tall_one_is_the_tallest_named():
+    # "a cube next to the tall one" stood by the short tower
+    r = plan("make two towers, 2 and 5 high, and put a cube next to the tall one")
+    assert r.status == "success" and (r.spec.relations[0].subject, r.spec.relations[0].object) == (
+        2, 1
+    )

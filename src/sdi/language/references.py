@@ -314,7 +314,7 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
 _PICK = re.compile(
     r"^(?:\w+\s+)?the\s+(first|second|third|fourth|last|smaller|smallest|larger|largest|bigger|"
     r"biggest|taller|tallest|shorter|shortest|lower|higher|middle|centre|center|left|right|front|"
-    r"back)(?:[\s-]?hand(?:ed)?)?(?:\s+(?:one|"
+    r"back|tall|big|large|short|small|little|high|low)(?:[\s-]?hand(?:ed)?)?(?:\s+(?:one|"
     + shape_alternation()
     + r"))?$",
     re.IGNORECASE,
@@ -329,6 +329,12 @@ def pick_structure(text: str, structures: list[StructureDraft], among: list[int]
         return None
     among = among or list(range(len(structures)))
     word = m.group(1).lower()
+    word = {"tall": "tallest", "high": "tallest", "big": "biggest", "large": "biggest",
+            "short": "shortest", "low": "shortest", "small": "smallest",
+            "little": "smallest"}.get(word, word)  # "the tall one" of those named: the tallest
+    if word in ("tallest", "biggest", "shortest", "smallest") and not m.group(0).lower().rstrip(
+    ).endswith(("one", *lx.SHAPE_WORDS)):
+        return None  # "the tall" alone is no pick
     order = {"first": 0, "second": 1, "third": 2, "fourth": 3}
     if word in order:
         return among[order[word]] if order[word] < len(among) else None
