@@ -4933,3 +4933,20 @@ def test_next_to_the_tall_one_is_the_tallest_named():
     assert r.status == "success" and (r.spec.relations[0].subject, r.spec.relations[0].object) == (
         2, 1
     )
+
+
+def test_a_move_in_harmless_words_cubes_on_the_ends_of_a_row_and_its_end_cubes_taken_off():
+    # "Put it on the right." was all harmless words: the tower stayed on the left
+    r = plan("a tower of 3 on the left. Actually, put it on the right.")
+    assert r.status == "success" and r.spec.structures[0].region == "right"
+    # "one more cube on each end of it" made the row one longer
+    r = plan("lay a row of 5 cubes and put one more cube on each end of it")
+    tops = sorted(round(o.position[2] + o.size[2] / 2, 3) for o in r.layout.objects)
+    assert r.status == "success" and len(r.layout.objects) == 7 and tops[-2:] == [0.1, 0.1]
+    # "take off both end cubes" of a row was refused; of a wall 2 high it still is (which?)
+    r = plan("a row of 6, then take off both end cubes")
+    assert r.status == "success" and r.spec.structures[0].length == 4
+    assert plan("a wall 6 long 2 high, then remove both end cubes").status == "partial"
+    # "stack 2 more layers on it" stays two layers more
+    r = plan("put down a 2x3 slab, then stack 2 more layers on it")
+    assert r.spec.structures[0].height == 3

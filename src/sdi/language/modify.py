@@ -161,6 +161,12 @@ MODIFY = [
         + r"(?:\s+(?:more\s+)?(?:cubes?|levels?|layers?)\b|(?:\s+more)?(?=\s*(?:[,.;!?]|$)))",
         "-",
     ),
+    # "then take off both end cubes": a row two shorter
+    _op(
+        r"\b(?:(?:take|knock|pull|lift)\s+(?:off|away)|remove|drop)\s+(both|the\s+two|two)\s+end\s+"
+        r"(?:cubes?|blocks?|ones?)\b",
+        "-",
+    ),
     # "row of 7. no make it 3 less", "make it two shorter": that many fewer
     _op(
         r"\bmake\s+" + _REF + r"\s+" + _N + r"\s+(?:cubes?\s+|levels?\s+)?(?:less|fewer|shorter|"
@@ -326,6 +332,18 @@ def modify(
         m = _in_parts(pattern, m, st)
         if op in ("+", "+1") and _set_beside(p, st.command):
             return False  # "then stack 2 more next to it": a new stack beside, not a taller one
+        if re.search(r"\bend\s+(?:cubes?|blocks?|ones?)\b", m.group(0), re.I) and (
+            structures[_last_index(built)].shape != "row"
+        ):
+            return False  # "both end cubes" of a wall 2 high: the columns, or the top ones?
+        if (
+            op in ("+", "+1")
+            and re.search(r"\b(?:cube|block|brick)\b", p.text, re.I)
+            and not _LAYER_WORDS.search(p.text)
+            and _set_on_top(p, st.command)
+            and not _tower_last(built, structures)
+        ):
+            return False  # "a row of 5, then put one more cube on each end of it": on top of it
         rest = re.sub(  # "add 2 more to the row": the row named before, nothing more
             r"^\s*(?:(?:more|extra)\s+)?(?:cubes?\s+)?(?:to|on|onto|at)\s+(?:the\s+(?:other\s+)?end\s+of\s+)?"
             r"(?:the|its|that)\s+\w+\b", "", p.text[m.end() :], flags=re.IGNORECASE,
@@ -361,6 +379,22 @@ def _set_beside(p: Phrase, command: str) -> bool:
     at = said.find(p.text.lower())
     tail = said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
     return bool(_BESIDE.search(p.text) or _BESIDE.match(tail.lstrip(" ,")))
+
+
+def _set_on_top(p: Phrase, command: str) -> bool:
+    """The words after the phrase stand what it adds on the structure ("… one more cube on top",
+    "… on each end of it"), where a row or a slab does not grow longer."""
+    said = command.lower()
+    at = said.find(p.text.lower())
+    tail = said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
+    return bool(_ON_TOP.match(tail))
+
+
+_ON_TOP = re.compile(r"\s*,?\s*on\s+(?:(?:the\s+)?top\b|(?:each|both|either)\s+end|(?:it|them)\b)")
+
+
+def _tower_last(built: list[Phrase], structures: list[StructureDraft]) -> bool:
+    return structures[_last_index(built)].shape in ("tower", "staircase", "pyramid", "castle")
 
 
 _NAMES_MORE = re.compile(
@@ -678,7 +712,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         n, op = 1, op[0]
     else:
         word = re.sub(r"\s+", " ", (m.group(1) or ("2" if op == "/" else "1")).lower())
-        word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2",
+        word = {"another": "1", "one more": "1", "a": "1", "an": "1", "double": "2", "both": "2",
+                "the two": "2",
                 "triple": "3", "half": "2", "twice": "2"}.get(word, word)  # fmt: skip
         value = words_to_numbers([word])[0]
         if not value.isdigit():

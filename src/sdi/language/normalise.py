@@ -384,6 +384,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a gate made of two 4-cube posts and a lintel": the posts are its own
     (re.compile(r"\b(?:made|built|consisting|formed)\s+(?:up\s+)?(?:of|from)\s+(?=(?:two|2|four|4)\s+(?:\S+\s+)?"
                 r"(?:posts|pillars|legs|columns|uprights|supports)\b)", re.I), "with "),
+    # "put one more cube on each end of it": a cube on each end, not a longer row
+    (re.compile(r"\b(?:one|a)\s+more\s+(cube|block|brick)\s+(?=on\s+(?:each|both|either)\s+ends?\b)",
+                re.I), r"a \1 "),
     # a stutter of small words ("on top of the cube at the at the left end"): said once
     (re.compile(r"\b((?:(?:at|on|in|of|the|a|an|to|and|with|by|from)\s+){1,3})\1", re.I), r"\1"),
     # "a wall 4 length, 2 height": the figure before its dimension's noun

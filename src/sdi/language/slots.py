@@ -98,8 +98,9 @@ def fill_slots(
                 if len(mine) == 1:
                     p.structure = mine[0]
             continue
-        if not content:
-            continue
+        moves = any(op in _CHANGE_OPS and pattern.search(p.text) for pattern, op in MODIFY)
+        if not content and not moves:
+            continue  # ("put it on the right" is all harmless words, and a move)
         if k in joiners and all(w in BEAMS or w in lx.PART_WORDS or w == "top" for w in content):
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
         if modify(p, phrases[:k], structures, st):
