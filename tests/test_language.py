@@ -4950,3 +4950,15 @@ def test_a_move_in_harmless_words_cubes_on_the_ends_of_a_row_and_its_end_cubes_t
     # "stack 2 more layers on it" stays two layers more
     r = plan("put down a 2x3 slab, then stack 2 more layers on it")
     assert r.spec.structures[0].height == 3
+
+
+def test_a_structure_with_its_own_size_and_another_on_top():
+    # "a staircase with 4 steps and … a tower of 2 on top": the steps went to the tower (4 high)
+    for command in ("make a staircase with 4 steps and put a tower of 2 on top",
+                    "make a staircase with 4 steps going up to the right and put a tower of 2 "
+                    "at the top"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success"
+        assert [(s.shape, getattr(s, "steps", None) or s.height) for s in r.spec.structures] == [
+            ("staircase", 4), ("tower", 2)
+        ]

@@ -150,6 +150,15 @@ _FRONTED_VERBS = {"goes", "go", "stands", "sits", "comes", "is", "are", "put", "
                   "add", "stack", "lies", "rests", "belongs", "should", "will", "must"}  # fmt: skip
 
 
+# what a structure's own size and direction are said in after "with" ("a staircase with 4 steps
+# going up to the right and …")
+_OWN_SIZE_WORDS = frozenset({
+    "high", "tall", "long", "wide", "deep", "of", "each", "along", "x", "y", "rotated", "degrees",
+    "by", "going", "up", "towards", "toward", "to", "the", "left", "right", "back", "front",
+    "climbing", "rising",
+})  # fmt: skip
+
+
 def find_phrases(doc: Doc) -> tuple[list[Phrase], list[PhraseRelation]]:
     phrases: list[Phrase] = []
     rels: list[PhraseRelation] = []
@@ -390,6 +399,17 @@ def _clause_phrases(
             withs = [n for n, i in enumerate(toks) if doc[i].lower_ == "with"]
             if withs and names_structure(doc, toks[withs[-1] + 1 :]):
                 cut = withs[-1]
+                # "a staircase with 4 steps and a tower of 2 on top": the steps are the
+                # staircase's own; what stands on it comes after the "and"
+                ands = [n for n in range(cut + 1, len(toks)) if doc[toks[n]].lower_ == "and"]
+                own = bool(ands) and all(
+                    doc[i].like_num
+                    or doc[i].lower_ in lx.STEP_WORDS | lx.LEVEL_WORDS | lx.PART_WORDS
+                    or doc[i].lower_ in _OWN_SIZE_WORDS
+                    for i in toks[cut + 1 : ands[0]]
+                )
+                if own and names_structure(doc, toks[ands[0] + 1 :]):
+                    cut = ands[0]
                 phrases[before].tokens = toks[:cut]
                 phrases[after].tokens = toks[cut + 1 :] + phrases[after].tokens
                 if pronoun:
