@@ -4962,3 +4962,15 @@ def test_a_structure_with_its_own_size_and_another_on_top():
         assert [(s.shape, getattr(s, "steps", None) or s.height) for s in r.spec.structures] == [
             ("staircase", 4), ("tower", 2)
         ]
+
+
+def test_the_last_cube_of_a_row_and_the_top_of_a_pyramid_taken_off():
+    # both were refused ("SDI builds structures whole")
+    r = plan("a row of 5 then remove the last cube")
+    assert r.status == "success" and r.spec.structures[0].length == 4
+    r = plan("a pyramid of 4 levels, then take off the top")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.length, s.height) == (4, 3)
+    # "remove the last one" of three towers still takes the tower away
+    r = plan("three towers of 2, then remove the last one")
+    assert [s.height for s in r.spec.structures] == [2, 2]

@@ -161,6 +161,13 @@ MODIFY = [
         + r"(?:\s+(?:more\s+)?(?:cubes?|levels?|layers?)\b|(?:\s+more)?(?=\s*(?:[,.;!?]|$)))",
         "-",
     ),
+    # "then remove the last cube" of a row or a tower; "take off the top" of a pyramid: one less
+    _op(
+        r"\b(?:remove|drop|(?:take|knock|pull)\s+(?:off|away))\s+the\s+(?:last|final)\s+(?:cube|block)\b"
+        r"|\b(?:take|knock|lift|cut)\s+off\s+(?:its|the)\s+top\b(?!\s+(?:of|two|three|four|\d|row|level|"
+        r"layer|course|tier|cube|block))",
+        "-1",
+    ),
     # "then take off both end cubes": a row two shorter
     _op(
         r"\b(?:(?:take|knock|pull|lift)\s+(?:off|away)|remove|drop)\s+(both|the\s+two|two)\s+end\s+"
