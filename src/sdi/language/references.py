@@ -68,6 +68,14 @@ _BUT = re.compile(r"\b(?:but|except|only|instead)\b", re.IGNORECASE)
 own: 'another tower of 5')."""
 
 
+def _of_family(family: str, before: list[Phrase], structures: list[StructureDraft]) -> list[int]:
+    """The structures of `family` the phrases before built."""
+    return [
+        i for q in before if q.count and q.spec is not None
+        for i in range(q.first, q.first + q.count) if structures[i].shape == family
+    ]  # fmt: skip
+
+
 def definite(
     p: Phrase, spec: SpecDraft, before: list[Phrase], structures: list[StructureDraft]
 ) -> int | None:
@@ -84,10 +92,7 @@ def definite(
     )
     if family is None or family != spec.structures[0].shape:
         return None
-    matches = [
-        i for q in before if q.count and q.spec is not None
-        for i in range(q.first, q.first + q.count) if structures[i].shape == family
-    ]  # fmt: skip
+    matches = _of_family(family, before, structures)
     said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
     if len(matches) > 1 and said:
         # "two towers of 4 and a tower of 2. Put the tower of 2 between them": the one that size
@@ -119,10 +124,7 @@ def possessive(
     family = lx.SHAPE_WORDS.get(m.group(1).lower())
     if family is None or family != spec.structures[0].shape:
         return None
-    matches = [
-        i for q in before if q.count and q.spec is not None
-        for i in range(q.first, q.first + q.count) if structures[i].shape == family
-    ]  # fmt: skip
+    matches = _of_family(family, before, structures)
     return matches[0] if len(matches) == 1 else None
 
 

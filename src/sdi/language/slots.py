@@ -46,6 +46,22 @@ _DROPS = re.compile(
 )
 
 
+def _more_about(
+    index: int,
+    shape: str,
+    p: Phrase,
+    spec: SpecDraft,
+    structures: list[StructureDraft],
+    st: ReadState,
+) -> None:
+    """The sizes a phrase says, given to the structure named before that it describes; the
+    phrase builds none of its own."""
+    said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
+    structures[index] = structures[index].model_copy(update=said)
+    st.notes.append(f"'{p.text}': more about the {shape} named before")
+    p.count = 0
+
+
 def fill_slots(
     phrases: list[Phrase], rels: list[PhraseRelation], st: ReadState, doc: Doc
 ) -> list[StructureDraft]:
@@ -186,11 +202,8 @@ def fill_slots(
         told = described(p, spec, phrases[:k], structures)
         if told is not None:
             # "A staircase on the right. It has 5 steps.": more about it, not a second one
-            said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
-            structures[told] = structures[told].model_copy(update=said)
-            st.notes.append(f"'{p.text}': more about the {structures[told].shape} named before")
+            _more_about(told, structures[told].shape, p, spec, structures, st)
             _account(p, spec, unused, doc, st)
-            p.count = 0
             continue
         owner = possessive(p, spec, phrases[:k], structures)
         if owner is not None and not re.search(r"\d|\b(?:height|length|width|high|tall|long|"
@@ -212,11 +225,8 @@ def fill_slots(
             named = named_again(p, spec, phrases[:k], structures)
         if named is not None:
             # "…; the staircase has 3 steps": more about the staircase named before
-            said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
-            structures[named] = structures[named].model_copy(update=said)
-            st.notes.append(f"'{p.text}': more about the {spec.structures[0].shape} named before")
+            _more_about(named, spec.structures[0].shape, p, spec, structures, st)
             _account(p, spec, unused, doc, st)
-            p.count = 0
             at = next((n for n, q in enumerate(phrases[:k]) if q.count == 1 and q.first == named),
                       None)  # fmt: skip
             if at is not None:  # "staircase. 4 steps. 10cm wide.": kept when read on, and
