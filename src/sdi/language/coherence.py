@@ -451,7 +451,6 @@ def _consulted_lost(doc: Doc, spec: Spec) -> list[tuple[str, str]]:
 
 
 _REFERENCE_DETS = frozenset({"the", "this", "that", "its", "their", "these", "those", "same"})
-_ONE_DETS = frozenset({"a", "an", "one", "single", "another", "second", "third", "other", "new"})
 _SEVERAL = frozenset({
     "each", "every", "per", "both", "corner", "corners", "ends", "sides", "either", "again",
     "copy", "copies", "same", "more", "twice", "pair", "pairs", "couple", "all", "several",
@@ -486,7 +485,6 @@ def _named_at_most(command: str) -> dict[str, int]:
         number = next((v for v in before if words_to_numbers([v])[0].isdigit()), None)
         if plural or (number is not None and before and before[0] == number):
             open_ended.add(family)  # "two towers", "two tower of 5": the count's own check
-            continue
         elif before and before[0] in _REFERENCE_DETS:
             bound.setdefault(family, 1)  # "the tower": the one named before, or the first
         else:

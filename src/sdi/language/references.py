@@ -331,12 +331,12 @@ def pick_structure(text: str, structures: list[StructureDraft], among: list[int]
         return None
     among = among or list(range(len(structures)))
     word = m.group(1).lower()
-    word = {"tall": "tallest", "high": "tallest", "big": "biggest", "large": "biggest",
-            "short": "shortest", "low": "shortest", "small": "smallest",
-            "little": "smallest"}.get(word, word)  # "the tall one" of those named: the tallest
-    if word in ("tallest", "biggest", "shortest", "smallest") and not m.group(0).lower().rstrip(
-    ).endswith(("one", *lx.SHAPE_WORDS)):
-        return None  # "the tall" alone is no pick
+    positive = {"tall": "tallest", "high": "tallest", "big": "biggest", "large": "biggest",
+                "short": "shortest", "low": "shortest", "small": "smallest", "little": "smallest"}
+    if word in positive:  # "the tall one" of those named: the tallest ("the tall" is no pick)
+        if not m.group(0).lower().rstrip().endswith(("one", *lx.SHAPE_WORDS)):
+            return None
+        word = positive[word]
     order = {"first": 0, "second": 1, "third": 2, "fourth": 3}
     if word in order:
         return among[order[word]] if order[word] < len(among) else None
