@@ -4974,3 +4974,11 @@ def test_the_last_cube_of_a_row_and_the_top_of_a_pyramid_taken_off():
     # "remove the last one" of three towers still takes the tower away
     r = plan("three towers of 2, then remove the last one")
     assert [s.height for s in r.spec.structures] == [2, 2]
+
+
+def test_the_tall_one_removed_and_the_last_cube_of_a_wall_reported():
+    # "then remove the tall one" pointed at it and removed nothing, silently
+    r = plan("build a tall tower and a short tower, then remove the tall one")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2]
+    # "the last cube" of a wall 2 high: which one is not said (it was a wall 1 high)
+    assert plan("build a wall 5 long, then remove the last cube").status == "partial"

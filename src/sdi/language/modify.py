@@ -339,10 +339,10 @@ def modify(
         m = _in_parts(pattern, m, st)
         if op in ("+", "+1") and _set_beside(p, st.command):
             return False  # "then stack 2 more next to it": a new stack beside, not a taller one
-        if re.search(r"\bend\s+(?:cubes?|blocks?|ones?)\b", m.group(0), re.I) and (
-            structures[_last_index(built)].shape != "row"
+        if re.search(r"\b(?:end|last|final)\s+(?:cubes?|blocks?)\b", m.group(0), re.I) and (
+            structures[_last_index(built)].shape not in ("row", "tower")
         ):
-            return False  # "both end cubes" of a wall 2 high: the columns, or the top ones?
+            return False  # "both end cubes" / "the last cube" of a wall 2 high: which ones?
         if (
             op in ("+", "+1")
             and re.search(r"\b(?:cube|block|brick)\b", p.text, re.I)

@@ -205,6 +205,9 @@ _SAME_AS = re.compile(
 )
 
 
+_SUPERLATIVE = {"tall": "tallest", "high": "tallest", "big": "biggest", "large": "biggest",
+                "long": "longest", "short": "shortest", "low": "shortest", "small": "smallest",
+                "little": "smallest"}  # fmt: skip
 _FAMILY_BEFORE = re.compile(r"\b(?:" + _FAMILY_SAID + r")\b", re.IGNORECASE)
 _MOVED_BY = re.compile(
     r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?$", re.IGNORECASE
@@ -362,10 +365,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bthe\s+(tall|high|big|large|long|short|low|small|little)\s+(one|tower|stack|column)\b"
                 r"(?=\s*(?:,\s*)?(?:goes\s+|is\s+|stands\s+|should\s+(?:be|go|stand)\s+|must\s+(?:be|go)\s+)?"
                 r"(?:(?:in|on|at|to)\s+the|behind)\b)", re.I),
-     lambda m: "the " + {"tall": "tallest", "high": "tallest", "big": "biggest", "large": "biggest",
-                         "long": "longest", "short": "shortest", "low": "shortest",
-                         "small": "smallest", "little": "smallest"}[m.group(1).lower()]
-     + " " + m.group(2) if _FAMILY_BEFORE.search(m.string[: m.start()]) else m.group(0)),
+     lambda m: "the " + _SUPERLATIVE[m.group(1).lower()] + " " + m.group(2)
+     if _FAMILY_BEFORE.search(m.string[: m.start()]) else m.group(0)),
+    # "then remove the tall one": the tallest named (it was read as a pointer, nothing removed)
+    (re.compile(r"\b(remove|take\s+(?:away|out|down)|knock\s+(?:down|over)|get\s+rid\s+of|drop|"
+                r"delete)\s+the\s+(tall|high|big|large|short|low|small|little)\s+(one|tower|stack|"
+                r"column)\b", re.I),
+     lambda m: f"{m.group(1)} the " + _SUPERLATIVE[m.group(2).lower()] + f" {m.group(3)}"),
     # "go ahead and stack 5 cubes": the build
     (re.compile(r"(^\s*|[.;:!]\s*)(?:go\s+ahead\s+and|just\s+go\s+and)\s+", re.I), r"\1"),
     # "a gap in between", "gap of 2 between each", "5 cm between": the gap said, and "between"
