@@ -379,22 +379,23 @@ _BESIDE = re.compile(
     re.IGNORECASE,
 )
 
+def _after(p: Phrase, command: str) -> str:
+    """The words that follow the phrase in the command (30 characters of them, lower case)."""
+    said = command.lower()
+    at = said.find(p.text.lower())
+    return said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
+
+
 def _set_beside(p: Phrase, command: str) -> bool:
     """The phrase sets what it names beside another ("stack 2 more next to it"): in its own
     words, or in the words that follow it in the command."""
-    said = command.lower()
-    at = said.find(p.text.lower())
-    tail = said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
-    return bool(_BESIDE.search(p.text) or _BESIDE.match(tail.lstrip(" ,")))
+    return bool(_BESIDE.search(p.text) or _BESIDE.match(_after(p, command).lstrip(" ,")))
 
 
 def _set_on_top(p: Phrase, command: str) -> bool:
     """The words after the phrase stand what it adds on the structure ("… one more cube on top",
     "… on each end of it"), where a row or a slab does not grow longer."""
-    said = command.lower()
-    at = said.find(p.text.lower())
-    tail = said[at + len(p.text) : at + len(p.text) + 30] if at >= 0 else ""
-    return bool(_ON_TOP.match(tail))
+    return bool(_ON_TOP.match(_after(p, command)))
 
 
 _ON_TOP = re.compile(r"\s*,?\s*on\s+(?:(?:the\s+)?top\b|(?:each|both|either)\s+end|(?:it|them)\b)")
@@ -851,7 +852,11 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     now = said or unsaid.get(last.shape, 3)
     if op == "/" and now % n:
         return None
-    new = {"+": now + n, "-": now - n, "=": n, "*": now * n, "/": now // n}[op]
+    ops: dict[str, Callable[[int], int]] = {
+        "+": lambda v: v + n, "-": lambda v: v - n, "=": lambda v: n,
+        "*": lambda v: v * n, "/": lambda v: v // n,
+    }  # fmt: skip
+    new = ops[op](now)
     if new < 1:
         return None
     shape = last.shape
@@ -871,10 +876,6 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             (getattr(structures[i], key) if i != index else now) or unsaid.get(last.shape, 3)
             for i in alike
         ]
-        ops: dict[str, Callable[[int], int]] = {
-            "+": lambda v: v + n, "-": lambda v: v - n, "=": lambda v: n,
-            "*": lambda v: v * n, "/": lambda v: v // n,
-        }  # fmt: skip
         got = [ops[op](v) for v in were]
         if min(got) < 1 or (op == "/" and any(v % n for v in were)):
             structures[index] = last

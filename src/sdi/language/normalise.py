@@ -10,6 +10,7 @@ from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.errors import SpecError
 from sdi.language.nouns import shape_alternation
+from sdi.language.spacing import MOVED
 from sdi.language.units import to_millimetres
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import UNITS, words_to_numbers
@@ -209,10 +210,7 @@ _SUPERLATIVE = {"tall": "tallest", "high": "tallest", "big": "biggest", "large":
                 "long": "longest", "short": "shortest", "low": "shortest", "small": "smallest",
                 "little": "smallest"}  # fmt: skip
 _FAMILY_BEFORE = re.compile(r"\b(?:" + _FAMILY_SAID + r")\b", re.IGNORECASE)
-_MOVED_BY = re.compile(
-    r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?$", re.IGNORECASE
-)
-_UNIT_ABBR = {"cent": "cm", "mill": "mm", "metr": "m", "mete": "m"}
+_SYMBOL = {1.0: "m", 0.01: "cm", 0.001: "mm"}  # the symbol of a unit said in full (lx.UNITS_M)
 
 
 def _words_figure(said: str) -> str | None:
@@ -333,7 +331,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"thirteen|fourteen|fifteen|sixteen|seventeen|eighteen|nineteen|ten|one|two|three|four|"
                 r"five|six|seven|eight|nine|and)[\s-]+)+)(centimet(?:re|er)s?|millimet(?:re|er)s?|"
                 r"met(?:re|er)s?)\b", re.I),
-     lambda m: (f"{n} {_UNIT_ABBR[m.group(2).lower()[:4]]}" if (n := _words_figure(m.group(1)))
+     lambda m: (f"{n} {_SYMBOL[lx.UNITS_M[m.group(2).lower()]]}" if (n := _words_figure(m.group(1)))
                 else m.group(0))),
     # "with no gap between them", "side by side with no space": touching (the "no" was
     # ignored and SDI's own gap set)
@@ -345,7 +343,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "at 35 cm in x and 45 cm in y": the coordinates (the figures were a height)
     (re.compile(r"\b(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:in|along|on)\s+(?:the\s+)?([xy])"
                 r"(?:[\s-]+axis)?\b(?!\s*=)", re.I),
-     lambda m: m.group(0) if _MOVED_BY.search(m.string[: m.start()])
+     lambda m: m.group(0) if MOVED.search(m.string[: m.start()])
      else f"{m.group(3)} = {m.group(1)} {m.group(2)}"),
     # "a tower in a corner": a corner of the table (an L shape was built beside it)
     (re.compile(r"\b(in|into)\s+(?:a|any|one)\s+(?=(?:(?:far|back|front|near|rear)\s+)?corner\b"

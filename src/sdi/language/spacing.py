@@ -39,7 +39,8 @@ _GAP = re.compile(
 _BETWEEN_EACH = re.compile(
     r"^\s*(?:in\s+)?between\s+(?:each\s+(?:one|other|of\s+them)|them(?:\s+all)?)\b", re.IGNORECASE
 )
-_MOVED = re.compile(r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s*$", re.IGNORECASE)
+# "then shift it (by) 2 cubes to the left": a move of the structure, not a distance between two
+MOVED = re.compile(r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)(?:\s+by)?\s*$", re.I)
 # "2 cubes to its right", "10 cm in front of it": a relation with its distance
 _OFFSET = re.compile(
     r"(?<!\bof\s)(?<!\bwith\s)(?<!\bby\s)\b"
@@ -280,7 +281,7 @@ def take_gap(text: str, st: ReadState) -> str:
         rest = _BETWEEN_EACH.sub("", text[v.end() :])
         return text[: v.start()] + " " + rest
     o = _OFFSET.search(text)
-    if o is not None and _MOVED.search(text[: o.start()]):
+    if o is not None and MOVED.search(text[: o.start()]):
         o = None  # "then shift it 2 cubes to the left": a move of the structure, read later
     if (
         o is not None
