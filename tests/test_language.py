@@ -4982,3 +4982,23 @@ def test_the_tall_one_removed_and_the_last_cube_of_a_wall_reported():
     assert r.status == "success" and [s.height for s in r.spec.structures] == [2]
     # "the last cube" of a wall 2 high: which one is not said (it was a wall 1 high)
     assert plan("build a wall 5 long, then remove the last cube").status == "partial"
+
+
+def test_members_by_ordinal_and_one_compared_after_a_relation():
+    # "the first 3 high, the second 5 high": both heights were one tower's (a conflict)
+    r = plan("two towers: the first 3 high, the second 5 high")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 5]
+    r = plan("Two towers, please: the first one eight high, the second half as tall as the first.")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [8, 4]
+    # "and next to it one twice as tall": one tower 6 high, the 3 dropped (partial)
+    for command, heights in (("a tower of 3, and next to it one twice as tall", [3, 6]),
+                             ("a tower of 6 and next to it one half as tall", [6, 3]),
+                             ("a tower of 3, and beside it one of 6", [3, 6])):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and [s.height for s in r.spec.structures] == heights
+        assert [rel.kind for rel in r.spec.relations] == ["next_to"]
+    # "twice as long as the wall" is the wall's size, not the number said last
+    r = plan("a wall of 4, a tower of 3, and a row twice as long as the wall")
+    assert r.status == "success" and r.spec.structures[2].length == 8
+    # half of 5 is no whole number of cubes: reported, not rounded
+    assert plan("a tower of 5 and a tower half as tall as the tower").status == "partial"

@@ -325,8 +325,9 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
     from sdi.language.families import check_family
     from sdi.spec.grammar import parse_phrase
 
-    said, groups = _said(m)
+    said, (factor, *groups) = _said(m)
     word, family = groups[0], lx.SHAPE_WORDS.get(groups[1])
+    times = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5}.get(factor, 1.0)
     before = m.string[: m.start()]
     clauses = [c for c in re.split(r"[.;]|,|\band\b", before) if c.strip()]
     if len(clauses) > 1:
@@ -352,6 +353,11 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
             us, vs = [b.u for b in boxes], [b.v for b in boxes]
             n = round(max(max(us) - min(us), max(vs) - min(vs)) / sizes.s) + 1
         dimension = "high" if word in ("tall", "high") else "long"
+        if (n * times) % 1 or n * times < 1:
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': {factor} {n} is no whole number of parts")
+            return " "
+        n = int(n * times)
         st.notes.append(f"read '{said}' as {n} {dimension} (the {family} named before)")
         return f" {n} {dimension} "
     st.material.append(said)
@@ -649,6 +655,11 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     base = _said_last(m)
     if base is None:
         return m.group(0)
+    number = r"(?:\d+|" + "|".join(NUMBER_WORDS) + r")"
+    sizes = re.findall(rf"\bof\s+{number}\b|\b{number}\s+(?:cubes?\s+)?(?:high|tall|long|wide)\b",
+                       m.string[: m.start()], re.I)  # fmt: skip
+    if re.match(r"\s+as\s+the\s+first\b", m.string[m.end() :], re.I) and len(sizes) != 1:
+        return m.group(0)  # "… as the first": the size said last is the first's only alone
     if re.search(r"\bmake\s+(?:it|them|the\s+\w+(?:\s+one)?)\s*$", m.string[: m.start()], re.I):
         return m.group(0)  # "then make it one higher": a change of that structure (`modify`)
     if groups[1] == "height":  # "one half its height": a new structure, not "double its height"
@@ -826,7 +837,8 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
     with the shared description; left as it is when the items do not match the count."""
     said, groups = _said(m)
     n_ = "2" if groups[0].lower() == "both" else words_to_numbers([groups[0]])[0]
-    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[3:])]
+    first = re.match(r"one|the\s+first(?:\s+one)?", m.group(5), re.IGNORECASE)
+    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[first.end() if first else 3 :])]
     size = re.sub(r"^\s*,\s*|\s+(?:each|apiece)\s*$", " ", (m.group(4) or "").rstrip())
     noun = f"{m.group(2) or ''}{m.group(3)}{size.rstrip()}"
     pair = _ONE_THE_OTHER.fullmatch(items[0]) if len(items) == 1 else None

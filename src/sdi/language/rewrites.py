@@ -1865,9 +1865,10 @@ _REWRITES += [
         "{array_of}",
         "",
     ),
-    (  # "a tower as tall as the staircase": the size of the one named before
+    (  # "a tower (twice) as tall as the staircase": the size of the one named before
         re.compile(
-            r"\b(?:exactly\s+|just\s+)?(?:as|so)\s+(tall|high|long)\s+as\s+(?:the|that|this)\s+"
+            r"\b(?:(twice|double|thrice|half)\s+)?(?:exactly\s+|just\s+)?(?:as|so)\s+(tall|high|long)"
+            r"\s+as\s+(?:the|that|this)\s+"
             r"(tower|stack|column|pillar|wall|row|staircase|stairs|pyramid|block|slab|platform|line)\b"
             r"(?:\s+(?:is|was|will\s+be)(?:\s+(tall|high|long|wide)\b)?)?",
             re.IGNORECASE,
@@ -2096,7 +2097,8 @@ _REWRITES += [
     (  # "one twice as tall" (as the one before): the number said last, changed
         re.compile(
             r"\b(twice|double|thrice|half|(?:\d+|two|three|four|five)\s+times)\s+as\s+"
-            r"(tall|high|big|large|long)\b(?!\s+as\b)",
+            r"(tall|high|big|large|long)\b(?!\s+as\b(?!\s+(?:it|that|the\s+other|the\s+first)"
+            r"(?:\s+one)?\b))",
             re.IGNORECASE,
         ),
         "{compared}",
@@ -2458,7 +2460,7 @@ _DISTRIBUTE = re.compile(
     r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
     r"(?:high|tall|long|wide)(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
-    r"\s*[:,]\s*(one\s+[^.;]*)",
+    r"(?:\s*,?\s*please)?\s*[:,]\s*((?:one|the\s+first(?:\s+one)?)\s+[^.;]*)",
     re.IGNORECASE,
 )
 
@@ -2496,10 +2498,18 @@ _LOOSE_CUBES = re.compile(
     re.IGNORECASE,
 )
 """'two cubes, one in the back left corner and one …': structures of one part each."""
-_ONE_OF = re.compile(
-    r"(\bthen\s+|\band\s+|,\s*)one\s+(of|with)\s+(?=(?:\d|" + _NUMBER_WORD + r")\b)", re.IGNORECASE
+_BY_IT = (
+    r"(?:right\s+|just\s+)?(?:next\s+to|beside|behind|in\s+front\s+of|on\s+top\s+of|"
+    r"(?:to\s+the\s+)?(?:left|right)\s+of)\s+(?:it|that)\s*,?\s*"
 )
-"""'a tower of 2, then one of 3': another of the structure named before."""
+_ONE_OF = re.compile(
+    r"(\bthen\s+|\band\s+|,\s*)(" + _BY_IT + r")?one\s+(?:(of|with)\s+(?=(?:\d|" + _NUMBER_WORD
+    + r")\b)|(?=(?:\d+|" + _NUMBER_WORD + r")\s+(?:cubes?\s+)?(?:high|tall|long)\b)"
+    r"|(?=(?:twice|double|thrice|half)\s+as\s+(?:tall|high|long|big)\b))",
+    re.IGNORECASE,
+)
+"""'a tower of 2, then one of 3', 'and next to it one 6 high': another of the structure named
+before."""
 
 
 def _one_of(m: re.Match[str]) -> str:
@@ -2509,7 +2519,7 @@ def _one_of(m: re.Match[str]) -> str:
     named = [w for w in re.findall(r"[a-z]+", sentence) if w in lx.SHAPE_WORDS]
     if m.group(1).strip() != "then" and named and named[-1].endswith("s"):
         return m.group(0)
-    return f"{m.group(1)}another one {m.group(2)} "
+    return f"{m.group(1)}{m.group(2) or ''}another one {m.group(3) or ''} "
 
 
 _FLOORS = re.compile(r"\b(\d+|" + "|".join(NUMBER_WORDS) + r")\s+(floors?)\b", re.I)
