@@ -1,4 +1,4 @@
-"""The language front end on the unseen evaluation sets (dev, dev2 … dev38 and frozen test).
+"""The language front end on the unseen evaluation sets (dev, dev2 … dev39 and frozen test).
 
 Every case is planned in-process with `sdi.pipeline.plan` and scored:
 
@@ -9,9 +9,9 @@ Every case is planned in-process with `sdi.pipeline.plan` and scored:
 * silent misreading — status ``success`` but the predicate fails (the worst outcome).
 
 Writes `benchmarks/results/language_<set>.json` for every set of
-`sdi.bench.language_checks.SETS` (dev, dev2 … dev38 and test).
+`sdi.bench.language_checks.SETS` (dev, dev2 … dev39 and test).
 
-Run: `python benchmarks/language.py [--set dev|dev2|…|dev38|test|both|all]` (`both` = dev and
+Run: `python benchmarks/language.py [--set dev|dev2|…|dev39|test|both|all]` (`both` = dev and
 test, `all` = every set).
 """
 

@@ -53,6 +53,7 @@ from sdi.bench.language_dev35 import CASES as DEV35
 from sdi.bench.language_dev36 import CASES as DEV36
 from sdi.bench.language_dev37 import CASES as DEV37
 from sdi.bench.language_dev38 import CASES as DEV38
+from sdi.bench.language_dev39 import CASES as DEV39
 from sdi.bench.language_test import CASES as TEST
 
 # sha256 of src/sdi/bench/language_test.py. The test set is frozen: changing this constant
@@ -305,6 +306,7 @@ SETS = {
     "dev36": (DEV36, 180, 8, 15),
     "dev37": (DEV37, 180, 8, 15),
     "dev38": (DEV38, 180, 8, 15),
+    "dev39": (DEV39, 180, 8, 15),
     "test": (TEST, 60, 5, 0),
 }  # fmt: skip
 HARD = {
@@ -337,6 +339,7 @@ HARD = {
     "dev36": ("relation", "numbers", "dimensions", "sequence"),
     "dev37": ("relation", "numbers", "dimensions", "sequence"),
     "dev38": ("relation", "numbers", "dimensions", "sequence"),
+    "dev39": ("relation", "numbers", "dimensions", "sequence"),
 }
 
 
@@ -463,6 +466,7 @@ def test_the_judges_import_nothing_from_the_system_they_judge():
         "language_dev36.py",
         "language_dev37.py",
         "language_dev38.py",
+        "language_dev39.py",
         "language_test.py",
     ):
         src = (here / name).read_text(encoding="utf-8")
