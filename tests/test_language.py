@@ -5002,3 +5002,47 @@ def test_members_by_ordinal_and_one_compared_after_a_relation():
     assert r.status == "success" and r.spec.structures[2].length == 8
     # half of 5 is no whole number of cubes: reported, not rounded
     assert plan("a tower of 5 and a tower half as tall as the tower").status == "partial"
+
+
+def test_probe_misreadings_of_plain_commands():
+    # "infront of" was corrected to "front": one tower at the front, the second lost
+    r = plan("a tower of three infront of a tower of three")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 3]
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "front")]
+    # cubes given two sides are a slab, "wide" across and "deep" front to back (was swapped)
+    r = plan("single layer of cubes 4 wide and 3 deep in the front left")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.shape, s.length, s.width) == ("grid", 4, 3)
+    # "one more row on top" of a wall was a row of one cube
+    r = plan("a wall of 5 then one more row on top")
+    s = r.spec.structures[0]
+    assert r.status == "success" and len(r.spec.structures) == 1 and (s.length, s.height) == (5, 3)
+    # "put them on top of each other" ignored 'them' and left the slabs apart, as success
+    r = plan("make three 3x3 slabs and put them on top of each other")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.shape, s.length, s.width, s.height) == ("block", 3, 3, 3)
+    r = plan("two towers of 3 stacked on top of each other")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [6]
+    # a U asked for, a ring built: stated and partial, not success
+    r = plan("a U shape with a tower of 3 inside")
+    assert r.status == "partial" and r.spec.structures[0].shape == "enclosure"
+    # "facing each other" unused is material
+    assert plan("build 2 staircases of 3 steps, facing each other").status == "partial"
+    # "with no towers on the corners": a ring (the note said the towers were left out)
+    r = plan("a castle with no towers on the corners")
+    assert r.status == "success" and r.spec.structures[0].shape == "enclosure"
+
+
+def test_the_middle_one_changed_is_reported_and_members_placed_by_coordinates():
+    # "make the middle one taller by 2" changed the last tower, silently; where each of three
+    # stands is not known when the change is read, so it is reported
+    for command in ("three towers of 3. make the middle one taller by 2",
+                    "a tower of 2, a tower of 3 and a tower of 4, then make the middle one 6",
+                    "two towers of 3, then make the middle one 5"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "partial", command
+        assert all(s.region is None for s in r.spec.structures)  # "middle" was a place
+    # "one at y = 0.15 and the other at y = 0.45": the decimal point ended the list
+    r = plan("two towers of 3, one at y = 0.15 and the other at y = 0.45")
+    assert r.status == "success"
+    assert [(s.height, s.at_y) for s in r.spec.structures] == [(3, 0.15), (3, 0.45)]

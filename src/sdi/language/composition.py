@@ -188,6 +188,9 @@ def relate(
             ring = _enclosing(subject, st)  # "a 7 by 7 fence with … inside it": 7 by 7 around
             if ring is subject:
                 st.notes.append(f"a {subject.shape} around another structure: built as a ring")
+                if subject.shape in ("l_shape", "t_shape", "u_shape"):
+                    # "a U shape with a tower inside": the letter asked for is not a ring
+                    st.material.append(f"{subject.shape} as a ring")
                 ring = StructureDraft(shape="enclosure", height=subject.height, part=subject.part)
             subject = ring
         replace[s_idx] = subject

@@ -120,8 +120,9 @@ MODIFY = [
     ),
     # "Build a tower of 5, then another one of 5 to the right of it. Make the second one 3."
     _op(
-        r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last)\s+(?:one|tower|stack|column|"
-        r"pillar|row|wall)\s+(?:to\s+|into\s+)?" + _N + r"(?:\s+(?:cubes?|high|tall|long|levels?))?"
+        r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last|middle)\s+"
+        r"(?:one|tower|stack|column|pillar|row|wall)\s+(?:to\s+|into\s+)?" + _N
+        + r"(?:\s+(?:cubes?|high|tall|long|levels?))?"
         r"\s*(?:instead)?\s*$",
         "=main",
     ),
@@ -364,6 +365,14 @@ def modify(
             note = change(m, op, p, before, built, structures)
         else:
             note = _resize(m, op, p, before, built, structures, st.cell.cube[2])
+        if note is None and re.search(r"\bthe\s+(?:middle|centre|center)\s+one\b", p.text, re.I):
+            # "three towers, then make the middle one 5": the middle one is not picked out
+            st.material.append(m.group(0).strip())
+            st.notes.append(f"ignored '{m.group(0).strip()}': SDI cannot tell which structure "
+                            "will stand in the middle; say it by its size or side")  # fmt: skip
+            p.count = 0
+            p.modified = True
+            return True
         if note is None:
             return False
         st.notes.append(f"'{m.group(0).strip()}': {note}")
@@ -749,6 +758,9 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     named = re.search(
         r"\b(?:off|from|to|on)\s+the\s+(\w+)\s+(?:one|tower|stack|column|pillar)\b", p.text, re.I
     )
+    if re.search(r"\bthe\s+(?:middle|centre|center)\s+(?:one|tower|stack|column|pillar|row|wall)\b",
+                 p.text, re.I):  # fmt: skip
+        return None  # "make the middle one taller": which stands in the middle is not known here
     if on_side is not None:
         index = on_side
     elif extreme:

@@ -304,6 +304,13 @@ def _list_in_cubes(m: re.Match[str]) -> str:
 # phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
+def _named_last(text: str) -> str | None:
+    """The family of the structure named last in `text` (unambiguous family nouns only)."""
+    said = [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", text.lower())
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    return said[-1] if said else None
+
+
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # a contract's "four (4)": the figure repeats the word (first, so every
     # rule sees one number); one that disagrees is kept
@@ -688,6 +695,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: m.group(0) + ("the " if re.search(
          r"\b" + re.escape(m.string[m.end():].split()[0].rstrip(",.;:").lower()) + r"\b",
          m.string[: m.start()], re.I) else "")),
+    # "make three 3x3 slabs and put them on top of each other": stacked
+    (re.compile(r"\s*,?\s*\b(?:and\s+|then\s+)*(?:put|stack|place|set|pile|lay)\s+them\s+(?:all\s+)?"
+                r"(on\s+top\s+of\s+(?:each\s+other|one\s+another))", re.I), r" stacked \1"),
+    # "a wall of 5, then one more row on top": a course more of the wall, not a row of one
+    (re.compile(r"\b(?:(?:put|lay|place|stack|add)\s+)?(?:one\s+more|another|an\s+extra)\s+(?:row|course)"
+                r"\s+(?:on\s+top(?:\s+of\s+(?:it|that))?|on\s+it)(?=\s*(?:[.;,!]|$|\band\b|\bthen\b))",
+                re.I),
+     lambda m: " add one more layer " if _named_last(m.string[: m.start()]) in ("wall", "row")
+     else m.group(0)),
     # "Row 1: Wall, L=5 … Row 2: same wall", "Line 3: Tower": a line of a list, not a row
     (re.compile(r"(?:^|(?<=[.;|\n]))\s*(?:row|line|item|entry|pos(?:ition)?|no\.?|#)\s*\d{1,2}\s*[:)]\s+",
                 re.I), " "),
@@ -890,6 +906,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?:\s+on\s+top\s+of\s+(?:each\s+other|one\s+another))?|on\s+top\s+of\s+(?:each\s+other|"
                 r"one\s+another)|one\s+on\s+top\s+of\s+the\s+other)\b", re.I),
      r"a wall \2 long and \1 high"),
+    # "two towers of 3 stacked on top of each other": one tower, all their cubes high
+    (re.compile(r"\b(two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars)\s+of\s+(\d+|two|three|four|"
+                r"five)(?:\s+(?:cubes|blocks|bricks))?,?\s+(?:stacked(?:\s+up)?(?:\s+on\s+top\s+of\s+(?:each\s+"
+                r"other|one\s+another))?|on\s+top\s+of\s+(?:each\s+other|one\s+another)|one\s+on\s+top\s+of\s+"
+                r"the\s+other)\b", re.I),
+     lambda m: "a tower of " + str(int(words_to_numbers([m.group(1).lower()])[0])
+                                  * int(words_to_numbers([m.group(2).lower()])[0]))),
     # "put two cubes on top of each other", "three cubes one on top of the other": a tower
     (re.compile(r"\b(two|three|four|five|six|seven|eight|nine|ten|\d+)\s+(?:cubes|blocks|bricks)\s+"
                 r"(?:stacked\s+)?(?:(?:on\s+top\s+of|onto|on)\s+(?:each\s+other|one\s+another)|"

@@ -297,6 +297,16 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
         "{no_stack}",
         "'{0}': laid side by side, not stacked",
     ),
+    # "a castle without the corner towers": a ring
+    (
+        re.compile(
+            r"\bcastle\s+(?:without|with\s+no)\s+(?:the\s+|any\s+)?(?:corner\s+)?(?:towers|turrets)\b"
+            r"(?:\s+(?:on|at|in)\s+(?:the|its)\s+corners\b)?(?:,?\s*just\s+the\s+walls?(?:\s+around)?)?",
+            re.IGNORECASE,
+        ),
+        " enclosure ",
+        "read '{0}' as an enclosure (a castle is a ring with corner towers)",
+    ),
     (  # "two stacks, and please no beam on top of them": nothing is added there
         re.compile(
             r",?\s*\b(?:but\s+|and\s+)?(?:please\s+)?(?:no|without\s+(?:a|any))\s+(?:beams?|"
@@ -781,16 +791,6 @@ _REWRITES += [
         ),
         " ",
         "'{0}': as an enclosure is",
-    ),
-    # "a castle without the corner towers": a ring
-    (
-        re.compile(
-            r"\bcastle\s+without\s+(?:the\s+|any\s+)?(?:corner\s+)?towers\b(?:,?\s*just\s+the\s+"
-            r"walls?(?:\s+around)?)?",
-            re.IGNORECASE,
-        ),
-        " enclosure ",
-        "read '{0}' as an enclosure (a castle is a ring with corner towers)",
     ),
     # "not a 3-D one, just flat" for pyramids
     (
@@ -2460,7 +2460,7 @@ _DISTRIBUTE = re.compile(
     r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
     r"(?:high|tall|long|wide)(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
-    r"(?:\s*,?\s*please)?\s*[:,]\s*((?:one|the\s+first(?:\s+one)?)\s+[^.;]*)",
+    r"(?:\s*,?\s*please)?\s*[:,]\s*((?:one|the\s+first(?:\s+one)?)\s+(?:[^.;]|(?<=\d)\.(?=\d))*)",
     re.IGNORECASE,
 )
 

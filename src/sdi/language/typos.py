@@ -104,6 +104,10 @@ def _by_sound() -> dict[str, list[str]]:
 _TEXTED = frozenset({"shud", "wud", "cud", "smth", "pls", "plz", "thx", "lil", "dunno"})
 """Words of a text message the normaliser expands ("shud" is should, not a shed)."""
 
+_GLUED = {"infront": "in front", "ontop": "on top", "nextto": "next to", "inbetween": "in between",
+          }  # fmt: skip
+"""Two words a hurried writer runs together."""
+
 _SPOKEN = frozenset({"really", "something", "please", "small", "touching", "instead", "knock",
                      "should", "goes", "podium", "crossbar", "goalposts", "blocks", "stairs",
                      "smaller", "wedding", "pancakes", "tiers", "each", "make"})  # fmt: skip
@@ -239,6 +243,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     def fix(m: re.Match[str]) -> str:
         raw = m.group(0)
         w = raw.lower()
+        if w in _GLUED:
+            return _GLUED[w]  # "infront of": two words run together, not a misspelt one
         if (
             len(w) < 3
             or w in _KNOWN

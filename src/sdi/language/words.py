@@ -120,7 +120,7 @@ SIGNIFICANT = _words(
     thicker thinner tallest shortest highest lowest biggest smallest widest longest
     below underneath beneath floating hanging hovering suspended upside inverted
     sunk sunken buried turn rotate twist flip mirror mirrored reflect reflected reflection
-    checkerboard chessboard alternate alternating
+    checkerboard chessboard alternate alternating facing
     skip skipping skipped omit omitting omitted except excepting excluding exclude excluded
     missing instead demolish demolished destroy destroyed dismantle dismantled
     topple toppled scrap scrapped dozen dozens quit remove removed removing delete deleted forget

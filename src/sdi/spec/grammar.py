@@ -906,8 +906,10 @@ class _Parser:
                         p["span"] = v
                     else:
                         # "2 cubes apart", "gap 2": parts; a bare "20 apart": centimetres
-                        in_parts = wj != "apart" or v < 10 or any(
-                            self.word(m) in lx.PART_WORDS for m in range(k + 1, j)
+                        in_parts = (
+                            wj != "apart"
+                            or v < 10
+                            or any(self.word(m) in lx.PART_WORDS for m in range(k + 1, j))
                         )
                         p["gap_m"] = v * self.cell.cube[0] if in_parts else v / 100.0
                     take(k)
@@ -1082,8 +1084,10 @@ class _Parser:
                 ):
                     take(k)  # "close to the back": the back, said after it
                     continue
-                if w == "far" and nxt in ("left", "right") and self.word(k + 2) not in (
-                    "corner", "corners", "back", "front"
+                if (
+                    w == "far"
+                    and nxt in ("left", "right")
+                    and self.word(k + 2) not in ("corner", "corners", "back", "front")
                 ):
                     take(k)  # "at the far left": all the way to the left, not the back
                     continue
@@ -1665,6 +1669,12 @@ class _Parser:
                 )
         has_part = any(t.text in lx.PART_WORDS for t in self.toks)
         has_num = any(t.kind == "num" or t.text in QUANTITY_WORDS for t in self.toks)
+        said = {t.text for t in self.toks}
+        if has_part and has_num and len(said & {"wide", "deep", "long", "across"}) >= 2:
+            # "a single layer of cubes 4 wide and 3 deep": two sides said, a slab
+            self.notes.append("no structure named: parts given two sides make a slab")
+            n = len(self.toks)
+            return Hit(index=n, shape="grid", plural=False, start=0, end=n)
         if has_part and (has_num or self.coords):
             self.notes.append("no structure named: placed the parts in a row")
             hit = Hit(index=len(self.toks), shape="row", plural=False, start=0, end=len(self.toks))
