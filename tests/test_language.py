@@ -5046,3 +5046,35 @@ def test_the_middle_one_changed_is_reported_and_members_placed_by_coordinates():
     r = plan("two towers of 3, one at y = 0.15 and the other at y = 0.45")
     assert r.status == "success"
     assert [(s.height, s.at_y) for s in r.spec.structures] == [(3, 0.15), (3, 0.45)]
+
+
+def test_later_steps_that_set_a_size_move_or_take_a_part_off():
+    # "then make it 5 long" / "make the right one 4 tall": the earlier size was reported as
+    # a conflict (partial) though the later one is the change asked for
+    r = plan("a row of 3, then make it 5 long")
+    assert r.status == "success" and r.spec.structures[0].length == 5
+    r = plan("put a tower of 2 on the left and a tower of 2 on the right. "
+             "then make the right one 4 tall")  # fmt: skip
+    assert r.status == "success"
+    assert [(s.region, s.height) for s in r.spec.structures] == [("left", 2), ("right", 4)]
+    r = plan("build three towers of 2, 3 and 4, and then make them all 5 high")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [5, 5, 5]
+    # members by ordinal after a semicolon
+    r = plan("two towers of 3 cubes; the first one at the back, the second one at the front")
+    assert r.status == "success" and [s.region for s in r.spec.structures] == ["back", "front"]
+    # "move it 10 cm back" was refused ("builds structures whole")
+    r = plan("tower of 6 at x=0.4 y=0.3 then move it 10 cm back")
+    assert r.status == "success" and r.spec.structures[0].at_x == pytest.approx(0.5)
+    r = plan("a tower of 3, then move it 2 cubes forward")
+    assert r.status == "success" and r.spec.structures[0].at_x < 0.45
+    # a column off a wall's end, the top row taken off with the particle after it
+    r = plan("Build a wall 6 long and 2 high, then remove one column from the end")
+    assert r.status == "success" and (r.spec.structures[0].length, r.spec.structures[0].height) == (
+        5, 2
+    )
+    r = plan("a wall 3 long 3 high, then take the top row off")
+    assert r.status == "success" and r.spec.structures[0].height == 2
+    # "the one in the middle" of three placed left, middle and right
+    r = plan("a tower of 3 on the left, a tower of 4 in the middle and a tower of 5 on the right, "
+             "then take the one in the middle down")  # fmt: skip
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 5]

@@ -97,6 +97,17 @@ MODIFY = [
         "=main",
     ),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
+    # "a row of 3, then make it 5 long", "then make the right one 4 tall": that size set
+    _op(
+        r"\bmake\s+" + _REF + r"\s+(?:all\s+)?" + _N
+        + r"\s+(?:cubes?\s+|levels?\s+)?(?:high|tall)\b(?!\s+(?:and|but|by|x)\b)",
+        "=",
+    ),
+    _op(
+        r"\bmake\s+" + _REF + r"\s+(?:all\s+)?" + _N + r"\s+(?:cubes?\s+)?long\b"
+        r"(?!\s+(?:and|but|by|x)\b)",
+        "=length",
+    ),
     # "make its height 5", "set the tower's height to 6", "change the wall's length to 8"
     _op(
         r"\b(?:make|set|change|changed|bring|increase|reduce|raise|lower)\s+(?:its|their|the\s+\w+'s|the)"
@@ -138,8 +149,9 @@ MODIFY = [
     ),
     _op(  # "relocate it 200 mm in +x", "shift it 2 cubes to the left"
         r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?(\d+(?:\.\d+)?|one|two|three|"
-        r"four|five|a)\s*(mm|cm|m|cubes?)\s+(?:in|along|towards?|to(?:\s+the)?)\s+(?:the\s+)?"
-        r"([+-]?\s*[xy]|left|right|front|back)\b",
+        r"four|five|a)\s*(mm|cm|m|cubes?)\s+(?:(?:in|along|towards?|to(?:\s+the)?)\s+(?:the\s+)?|further\s+)?"
+        r"([+-]?\s*[xy]|left|right|front|back|forwards?|backwards?|away\s+from\s+the\s+robot|"
+        r"(?:closer\s+to|towards?)\s+the\s+robot)\b",
         "offset",
     ),
     _op(
@@ -270,6 +282,12 @@ MODIFY = [
         r"four|nine)\s+)?(?:\s*(?:cubes?|parts?|ones|bit|square))?(?!\s+one\b)",
         "hollow",
     ),
+    # "a wall 6 long 2 high, then remove one column from the end": one shorter
+    _op(
+        r"\b(?:remove|take\s+(?:off|away|out)|knock\s+(?:off|down)|drop|lose)\s+()(?:the\s+)?(?:last|end|final|"
+        r"a|one|an)\s+(?:end\s+)?column\b(?:\s+(?:from|at|on|off)\s+(?:the|one|its)\s+(?:end|side))?",
+        "-length",
+    ),
     # "5 towers of 2 in a line, then take away the middle one": one structure fewer
     _op(
         r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch)\s+the\s+(middle|first|"
@@ -278,7 +296,11 @@ MODIFY = [
         r"(?:one|tower|stack|column|pillar|row|wall)\b"
         r"|\b(?:take|knock|pull)\s+the\s+(middle|first|last|second|tallest|highest|biggest|shortest|"
         r"lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|column|pillar|"
-        r"row|wall)\s+(?:down)\b",
+        r"row|wall)\s+(?:down)\b"
+        # "then take the one in the middle down", "remove the one in the middle"
+        r"|\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|lose|ditch)\s+the\s+(?:one|tower|stack|"
+        r"column|pillar)\s+in\s+the\s+(middle)\b|\b(?:take|knock|pull)\s+the\s+(?:one|tower|stack|"
+        r"column|pillar)\s+in\s+the\s+(middle)\s+(?:down|away|out|off)\b",
         "drop",
     ),
     # "then take away the one on the right": the one on that side
@@ -496,6 +518,14 @@ _DIRECTIONS = {
     "left": ("at_y", 1),
     "-y": ("at_y", -1),
     "right": ("at_y", -1),
+    "forward": ("at_x", -1),  # "move it 10 cm forward", towards the robot
+    "forwards": ("at_x", -1),
+    "backward": ("at_x", 1),
+    "backwards": ("at_x", 1),
+    "awayfromtherobot": ("at_x", 1),
+    "closertotherobot": ("at_x", -1),
+    "towardstherobot": ("at_x", -1),
+    "towardtherobot": ("at_x", -1),
 }
 
 
@@ -725,6 +755,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     main = op.endswith("main")  # "make it 4", "make it 3 less": the size it was given, or its main
     if main:
         op = op[0]
+    elif op.endswith("length"):  # "make it 5 long"
+        op, key = op[0], "length"
     if op in ("+1", "-1"):
         n, op = 1, op[0]
     else:
@@ -895,6 +927,9 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         for i, grown in zip(alike, got, strict=True):
             structures[i] = structures[i].model_copy(update={**update, key: grown})
         if len(set(got)) == 1:
+            if len(set(were)) > 1:  # "three towers of 2, 3 and 4, then make them all 5 high"
+                return (f"each {last.shape} now has {key} {new} (were "
+                        f"{', '.join(map(str, were))})")  # fmt: skip
             return f"each {last.shape} now has {key} {new}{was}"
         return (f"the {last.shape}s now have {key} {', '.join(map(str, got))} (were "
                 f"{', '.join(map(str, were))})")  # fmt: skip

@@ -695,6 +695,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: m.group(0) + ("the " if re.search(
          r"\b" + re.escape(m.string[m.end():].split()[0].rstrip(",.;:").lower()) + r"\b",
          m.string[: m.start()], re.I) else "")),
+    # "take the top row off": the particle before what is taken
+    (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
+                r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),
+     r"\1 \3 \2"),
     # "make three 3x3 slabs and put them on top of each other": stacked
     (re.compile(r"\s*,?\s*\b(?:and\s+|then\s+)*(?:put|stack|place|set|pile|lay)\s+them\s+(?:all\s+)?"
                 r"(on\s+top\s+of\s+(?:each\s+other|one\s+another))", re.I), r" stacked \1"),
