@@ -5078,3 +5078,26 @@ def test_later_steps_that_set_a_size_move_or_take_a_part_off():
     r = plan("a tower of 3 on the left, a tower of 4 in the middle and a tower of 5 on the right, "
              "then take the one in the middle down")  # fmt: skip
     assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 5]
+
+
+def test_a_cube_on_each_and_more_than_two_one_behind_the_other():
+    # "with a cube on top of each": the cube was dropped, silently
+    r = plan("two towers of 3 with a cube on top of each")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [4, 4]
+    r = plan("two towers of 3 with a cube on top of each, and a row of 4 in front of them")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["tower"] * 2 + ["row"]
+    assert [s.height for s in r.spec.structures[:2]] == [4, 4]
+    # on each cube of a row: a second course (a loose cube beside it, partial)
+    r = plan("Lay a row of 4 cubes, then put a cube on top of each one")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.shape, s.length, s.height) == ("wall", 4, 2)
+    # on each of a slab's corners stays on the corners
+    r = plan("lay a 3x3 slab and set one cube on each of its four corners")
+    assert [x.at for x in r.spec.relations] == ["corners"]
+    # three towers "one behind the other": a line front to back (one relation of three)
+    r = plan("three towers of 2 one behind the other")
+    assert r.status == "success" and {s.axis for s in r.spec.structures} == {"x"}
+    # "on top of the middle cube of the row": on the row (a tower at the centre and a cube)
+    r = plan("a row of 5 and a tower of 3 on top of the middle cube of the row")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["row", "tower"]
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]

@@ -306,7 +306,8 @@ def _list_in_cubes(m: re.Match[str]) -> str:
 # English focus words — and of other trades and notes, each read as the plain words it means
 def _named_last(text: str) -> str | None:
     """The family of the structure named last in `text` (unambiguous family nouns only)."""
-    said = [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", text.lower())
+    text = re.sub(r"\b(?:in|into)\s+(?:a|one)\s+(?:row|line)\b", " ", text.lower())  # arranged
+    said = [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", text)
             if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
     return said[-1] if said else None
 
@@ -695,6 +696,29 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      lambda m: m.group(0) + ("the " if re.search(
          r"\b" + re.escape(m.string[m.end():].split()[0].rstrip(",.;:").lower()) + r"\b",
          m.string[: m.start()], re.I) else "")),
+    # "three walls, each 3 long, one behind the other": more than two in a line front to back
+    # (towers and blocks; rows and walls so placed stand side to side, not end to end)
+    (re.compile(r"(?<!\bof\s)(?<!\bx\s)(?<!\bby\s)\b((?:three|four|five|six|[3-6])\s+"
+                r"(?:\d+\s*(?:x|by)\s*\d+\s+|[a-wyz-]+\s+)?(?:towers|stacks|columns|pillars|"
+                r"blocks|pyramids|cubes)\b[^.;]{0,40}?),?\s*\bone\s+behind\s+(?:the\s+other|another)\b",
+                re.I), r"\1 in a line front to back"),
+    # "two towers of 3 with a cube on top of each", "three towers, each with a cube on top"
+    (re.compile(r"\s*,?\s*\b(?:(?:each|all)\s+with\s+(?:a|one)\s+(?:single\s+|more\s+|extra\s+)?"
+                r"(?:cube|block)\s+on\s+(?:top|it)\b|with\s+(?:a|one)\s+(?:single\s+|more\s+|extra\s+)?"
+                r"(?:cube|block)\s+on\s+(?:top\s+of\s+)?(?:each|every|both|all)"
+                r"(?:\s+(?:one|of\s+them|tower|stack))?\b)", re.I),
+     lambda m: (", then put a cube on top of each ; "
+                if _named_last(m.string[: m.start()]) == "tower" else m.group(0))),
+    # "lay a row of 4 cubes, then put a cube on top of each one": a second course
+    (re.compile(r"\b(?:put|place|stack|set|add)\s+(?:a|one)\s+(?:more\s+|extra\s+)?(?:cube|block)\s+on\s+"
+                r"(?:top\s+of\s+)?(?:each|every)(?:\s+(?:one|cube|block|of\s+them))?\b"
+                r"(?![^.;,]*\b(?:ends?|sides?|corners?|edges?)\b)", re.I),
+     lambda m: "add one more layer" if _named_last(m.string[: m.start()]) in ("row", "grid", "wall")
+     else m.group(0)),
+    # "a tower of 3 on top of the middle cube of the row": on the middle of the row
+    (re.compile(r"\bon\s+(?:top\s+of\s+)?the\s+(?:middle|centre|center)\s+(?:cube|one|block|brick|part)\s+"
+                r"of\s+(?:the|that|this)\s+(row|wall|line|slab|platform)\b", re.I),
+     r"on the middle of the \1"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),
