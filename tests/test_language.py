@@ -5101,3 +5101,27 @@ def test_a_cube_on_each_and_more_than_two_one_behind_the_other():
     r = plan("a row of 5 and a tower of 3 on top of the middle cube of the row")
     assert r.status == "success" and [s.shape for s in r.spec.structures] == ["row", "tower"]
     assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+
+
+def test_a_tower_beside_a_bridge_and_sizes_listed_for_members():
+    # "an arch and a tower of 2 to its right": the tower became the arch's pillars (2 high)
+    for command, shapes in (("an arch and a tower of 2 to its right", ["arch", "tower"]),
+                            ("a canopy with legs of 3 and a tower of 3 beside it",
+                             ["canopy", "tower"]),
+                            ("build a castle and a tower of 5 in front of it",
+                             ["castle", "tower"])):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and [s.shape for s in r.spec.structures] == shapes
+        assert [x.kind for x in r.spec.relations] == ["next_to"]
+    # a bridge's own pillars are still its own
+    r = plan("a bridge with pillars of 3 and a beam on top")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 3)]
+    # "two slabs, 2x2 and 3x3": two 3x3 slabs (partial); a size and a place each, in turn
+    r = plan("two slabs, 2x2 and 3x3, side by side")
+    assert r.status == "success"
+    assert [(s.length, s.width) for s in r.spec.structures] == [(2, 2), (3, 3)]
+    r = plan("build 2 towers: 4 high on the left, 2 high on the right")
+    assert r.status == "success"
+    assert [(s.region, s.height) for s in r.spec.structures] == [("left", 4), ("right", 2)]
+    # one size said for all is not a list
+    assert [s.height for s in plan("two towers, 3 high").spec.structures] == [3, 3]

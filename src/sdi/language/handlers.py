@@ -4,6 +4,7 @@ equal stacks" → three stacks of four) or that set a flag on the reading ("don'
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Callable
 
@@ -825,6 +826,13 @@ _NEXT_ONE = re.compile(
 )
 
 
+_SIZE_LEAD = re.compile(
+    r"(?:\d+|two|three|four|five|six|seven|eight)\s*(?:(?:x|by)\s*\d+|(?:cubes?\s+)?(?:high|tall|long))\b",
+    re.IGNORECASE,
+)
+"""A list item that starts with a size ("2x2", "4 high on the left")."""
+
+
 _ONE_THE_OTHER = re.compile(
     r"((?:\w+\s+)?(?:behind|in\s+front\s+of|next\s+to|beside|on\s+top\s+of|on|atop|"
     r"(?:to\s+the\s+)?(?:left|right)\s+of))\s+the\s+other(?:\s+one)?(.*)",
@@ -837,10 +845,20 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
     with the shared description; left as it is when the items do not match the count."""
     said, groups = _said(m)
     n_ = "2" if groups[0].lower() == "both" else words_to_numbers([groups[0]])[0]
-    first = re.match(r"one|the\s+first(?:\s+one)?", m.group(5), re.IGNORECASE)
-    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[first.end() if first else 3 :])]
     size = re.sub(r"^\s*,\s*|\s+(?:each|apiece)\s*$", " ", (m.group(4) or "").rstrip())
     noun = f"{m.group(2) or ''}{m.group(3)}{size.rstrip()}"
+    first = re.match(r"one|the\s+first(?:\s+one)?", m.group(5), re.IGNORECASE)
+    if first is None:
+        # "two slabs, 2x2 and 3x3, side by side", "2 towers: 4 high on the left, 2 high on
+        # the right": a size each, in turn; the words after them are about all of them
+        listed = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group(5))
+        sized = list(itertools.takewhile(lambda i: bool(_SIZE_LEAD.match(i)), listed))
+        tail = ", ".join(listed[len(sized) :])
+        if not n_.isdigit() or int(n_) != len(sized) or size.strip():
+            return m.group(0)
+        st.notes.append(f"read '{said}' as {n_} {m.group(3)}s, one each")
+        return " " + " and ".join(f"a {noun} {i}" for i in sized) + (f", {tail} " if tail else " ")
+    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[first.end() :])]
     pair = _ONE_THE_OTHER.fullmatch(items[0]) if len(items) == 1 else None
     if pair and n_ == "2":
         # "two towers of 3, one behind the other": the second placed by the first

@@ -719,6 +719,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bon\s+(?:top\s+of\s+)?the\s+(?:middle|centre|center)\s+(?:cube|one|block|brick|part)\s+"
                 r"of\s+(?:the|that|this)\s+(row|wall|line|slab|platform)\b", re.I),
      r"on the middle of the \1"),
+    # "an arch and a tower of 2 to its right": a structure of its own, not the arch's pillar
+    (re.compile(r"\b((?:an?|the)\s+(?:[\w-]+\s+){0,3}?(?:bridge|arch|archway|table|canopy|gate|pavilion|"
+                r"shelter|castle|fort)\b[^.;]*?)\s+and\s+((?:then\s+)?(?:(?:put|place|set|add|build|stack)\s+)?(?:an?|one)\s+"
+                r"(?:tower|stack|column|pillar|cube)\b[^.;]{0,30}?\b(?:next\s+to\s+it|beside\s+it|behind\s+it|"
+                r"in\s+front\s+of\s+it|to\s+(?:the\s+)?(?:left|right)\s+of\s+it|to\s+its\s+(?:left|right)|"
+                r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+it))\b", re.I), r"\1; and \2"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),

@@ -2460,7 +2460,8 @@ _DISTRIBUTE = re.compile(
     r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
     r"(?:high|tall|long|wide)(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
-    r"(?:\s*,?\s*please)?\s*[:,;]\s*((?:one|the\s+first(?:\s+one)?)\s+(?:[^.;]|(?<=\d)\.(?=\d))*)",
+    r"(?:\s*,?\s*please)?\s*[:,;]\s*((?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
+    r"seven|eight)(?=\s*(?:x|by|cubes?\s+high|cubes?\s+tall|high|tall|long)\b))\s*(?:[^.;]|(?<=\d)\.(?=\d))*)",
     re.IGNORECASE,
 )
 
