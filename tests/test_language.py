@@ -5125,3 +5125,21 @@ def test_a_tower_beside_a_bridge_and_sizes_listed_for_members():
     assert [(s.region, s.height) for s in r.spec.structures] == [("left", 4), ("right", 2)]
     # one size said for all is not a list
     assert [s.height for s in plan("two towers, 3 high").spec.structures] == [3, 3]
+
+
+def test_the_other_side_of_a_named_structure_and_words_no_slot_takes():
+    # "one in front of the wall, the other behind it": a second default wall was built
+    r = plan("build a wall 5 long 2 high and two towers of 3, one in front of the wall, the "
+             "other behind it")  # fmt: skip
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["wall", "tower",
+                                                                               "tower"]
+    assert sorted((x.side, x.object) for x in r.spec.relations) == [("back", 0), ("front", 0)]
+    # "wider" of an arch made it taller, silently
+    for command in ("build an arch, then make it wider", "a wide arch"):
+        r = plan(command)
+        assert r.status == "partial" and r.spec.structures[0].height is None
+    # a second beam on the first was dropped, silently
+    r = plan("build a bridge with pillars 2 high, then add a second beam on top of the first")
+    assert r.status == "partial"
+    # "two cubes shorter than 6" built a tower of 2
+    assert [s.height for s in plan("make a tower two cubes shorter than 6").spec.structures] == [4]

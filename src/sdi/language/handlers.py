@@ -608,6 +608,12 @@ def _impossible(m: re.Match[str], st: ReadState, note: str) -> str:
     return _cannot(m, st, why)
 
 
+def _beam_on_beam(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "then add a second beam on top of the first": a bridge carries one beam a span."""
+    return _cannot(m, st, "a bridge or arch carries one beam on each span; SDI lays no beam on "
+                          "another")  # fmt: skip
+
+
 _KEYED = {"length": "long", "len": "long", "width": "wide", "depth": "deep", "height": "high",
           "thickness": "thick"}  # fmt: skip
 
@@ -1127,6 +1133,7 @@ HANDLERS: dict[str, Handler] = {
     "{not_touching}": _not_touching,
     "{unsupported}": _unsupported,
     "{impossible}": _impossible,
+    "{beam_on_beam}": _beam_on_beam,
     "{at_most}": _at_most,
     "{corners}": _corners,
     "{square_base}": _square_base,

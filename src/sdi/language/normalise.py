@@ -304,6 +304,16 @@ def _list_in_cubes(m: re.Match[str]) -> str:
 # phrasings of operators whose English is not (only) British or American — a Slavic or Dutch
 # speaker's prepositions ("tower from 5 cubes", "behind of wall", "near to wall"), Indian
 # English focus words — and of other trades and notes, each read as the plain words it means
+def _than(m: re.Match[str]) -> str:
+    """ "two cubes shorter than 6": 4 high; "2 longer than 4": 6 long."""
+    by, than = (int(words_to_numbers([m.group(k).lower()])[0]) for k in (1, 3))
+    less = m.group(2).lower() in ("shorter", "lower")
+    value = than - by if less else than + by
+    if value < 1:
+        return m.group(0)
+    return f" {value} {'long' if m.group(2).lower() == 'longer' else 'high'} "
+
+
 def _named_last(text: str) -> str | None:
     """The family of the structure named last in `text` (unambiguous family nouns only)."""
     text = re.sub(r"\b(?:in|into)\s+(?:a|one)\s+(?:row|line)\b", " ", text.lower())  # arranged
@@ -725,6 +735,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?:tower|stack|column|pillar|cube)\b[^.;]{0,30}?\b(?:next\s+to\s+it|beside\s+it|behind\s+it|"
                 r"in\s+front\s+of\s+it|to\s+(?:the\s+)?(?:left|right)\s+of\s+it|to\s+its\s+(?:left|right)|"
                 r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+it))\b", re.I), r"\1; and \2"),
+    # "a tower two cubes shorter than 6": the size it comes to
+    (re.compile(r"\b(\d+|one|two|three|four|five)\s+(?:cubes?\s+|levels?\s+|parts?\s+)?(shorter|lower|taller|"
+                r"higher|longer)\s+than\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\b"
+                r"(?!\s*(?:cm|mm|m|x|by)\b|\s+(?:cubes?\s+)?(?:high|tall|long)\b)", re.I),
+     lambda m: _than(m)),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),

@@ -1760,6 +1760,16 @@ _REWRITES += [
         " running left to right ",
         "read '{0}' as running left to right",
     ),
+    (  # "then add a second beam on top of the first": one beam a span
+        re.compile(
+            r"\b(?:(?:add|put|place|lay|stack|set)\s+)?(?:a\s+second|another|one\s+more|an\s+extra|a\s+2nd)"
+            r"\s+(?:beam|plank|lintel|girder)\s+(?:on\s+top(?:\s+of\s+(?:the\s+first(?:\s+one)?|it|that|"
+            r"the\s+(?:other|beam)))?|on\s+(?:it|that)|above\s+(?:it|that))",
+            re.IGNORECASE,
+        ),
+        "{beam_on_beam}",
+        "",
+    ),
     (  # "on top of the robot", "on the conveyor": nothing is built on the cell's machines
         re.compile(
             r"\b(?:on\s+top\s+of|on|onto|atop|above|in|into|inside)\s+(?:the\s+|my\s+|your\s+)?"
@@ -2466,6 +2476,31 @@ _DISTRIBUTE = re.compile(
 )
 
 
+_OTHER_SIDE = re.compile(
+    r"\b(in\s+front\s+of|behind|to\s+the\s+left\s+of|to\s+the\s+right\s+of|left\s+of|right\s+of)"
+    r"\s+the\s+([a-z]+)\s*,?\s+and\s+((?:then\s+)?(?:an?|another|one|the\s+other)\b[^.;]{0,40}?)"
+    r"\b(in\s+front\s+of|behind|to\s+the\s+left\s+of|to\s+the\s+right\s+of|left\s+of|right\s+of)"
+    r"\s+(it|the\s+\2)\b",
+    re.IGNORECASE,
+)
+"""'a tower in front of the wall and a tower behind it': it is the wall, on its other side
+(and 'the wall and a tower' is no phrase of one wall more and a tower)."""
+
+
+def _side_word(relation: str) -> str:
+    """The side a relation names ("in front of" → front, "to the left of" → left)."""
+    said = relation.lower()
+    return next((w for w in ("front", "left", "right") if w in said), "back")
+
+
+def _other_side(m: re.Match[str]) -> str:
+    if m.group(2).lower() not in lx.SHAPE_WORDS or _side_word(m.group(1)) != lx.OPPOSITE_SIDE.get(
+        _side_word(m.group(4))
+    ):
+        return m.group(0)
+    return f"{m.group(1)} the {m.group(2)}; and {m.group(3)}{m.group(4)} the {m.group(2)}"
+
+
 # "a single cube in each of the four corners of the table": one in each corner region
 _CORNERS = re.compile(
     r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*((?:(?:an?|one|a\s+single|single)\s+)?"
@@ -2785,6 +2820,7 @@ def rewrite(text: str, st: ReadState) -> str:
 
     text = _OWN_BEAM.sub(own_beam, text)
     text = _DISTRIBUTE.sub(lambda m: HANDLERS["{distribute}"](m, st, ""), text)
+    text = _OTHER_SIDE.sub(_other_side, text)
     text = _CORNERS.sub(lambda m: HANDLERS["{corners}"](m, st, ""), text)
     text = _another(SPACES.sub(" ", text))
     if (

@@ -1552,6 +1552,10 @@ class _Parser:
                 "height": {"height", "steps"},
                 "width": {"width"},
             }.get(dim, set())
+            if dim == "width" and shape == "arch":
+                # "a wide arch", "make it wider": an arch has one opening, its width fixed
+                self.notes.append("ignored a width for the arch: its opening is one size")
+                continue
             if dim == "width" and shape in ("wall", "row"):
                 dim = "length"  # "a wide wall": walls and rows are one part thick
                 related = {"length", "steps", "count", "spans"}
