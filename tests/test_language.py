@@ -5143,3 +5143,27 @@ def test_the_other_side_of_a_named_structure_and_words_no_slot_takes():
     assert r.status == "partial"
     # "two cubes shorter than 6" built a tower of 2
     assert [s.height for s in plan("make a tower two cubes shorter than 6").spec.structures] == [4]
+
+
+def test_corrections_and_changes_said_in_everyday_words():
+    # each was partial with the change unused
+    r = plan("make a 3 by 3 slab on the left, actually the other side")
+    assert r.status == "success" and r.spec.structures[0].region == "right"
+    r = plan("stack 4 cubes, take one off, then add three")
+    assert r.status == "success" and r.spec.structures[0].height == 6
+    r = plan("build two towers of 3, the left one and the right one, then make the left one 5")
+    assert r.status == "success"
+    assert [(s.region, s.height) for s in r.spec.structures] == [("left", 5), ("right", 3)]
+    r = plan("Build a 4x2 slab. Then make it 3 wide instead of 2.")
+    assert r.status == "success" and (r.spec.structures[0].length, r.spec.structures[0].width) == (
+        4, 3
+    )
+    r = plan("two rows of 5 cubes, put the second one on top of the first")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.shape, s.length, s.height) == ("wall", 5, 2)
+    r = plan("three slabs 2x2, stacked on top of each other, with a cube on top")
+    assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
+        ("block", 3), ("tower", 1)
+    ]
+    r = plan("a row of 3 cubes, never at the back")
+    assert r.status == "success" and r.spec.structures[0].region == "front"

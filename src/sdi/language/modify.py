@@ -97,6 +97,19 @@ MODIFY = [
         "=main",
     ),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
+    # "a 4x2 slab, then make it 3 wide instead of 2": that side (the one that was 2)
+    _op(
+        r"\bmake\s+(?:it|them|the\s+(?:slab|grid|block|platform|pad|layer))\s+" + _N
+        + r"\s+(?:cubes?\s+)?(?:wide|deep|across)\b"
+        r"(?:\s+instead\s+of\s+(\d+|one|two|three|four|five|six|seven|eight))?",
+        "=side",
+    ),
+    # "stack 4 cubes, take one off, then add three": three more
+    _op(
+        r"\b(?:then\s+)?add\s+" + _N
+        + r"(?:\s+(?:cubes?|blocks?))?(?:\s+(?:back|again))?\s*[.!]?\s*$",
+        "+",
+    ),
     # "a row of 3, then make it 5 long", "then make the right one 4 tall": that size set
     _op(
         r"\bmake\s+" + _REF + r"\s+(?:all\s+)?" + _N
@@ -131,7 +144,8 @@ MODIFY = [
     ),
     # "Build a tower of 5, then another one of 5 to the right of it. Make the second one 3."
     _op(
-        r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last|middle)\s+"
+        r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last|middle|left|right|front|back)"
+        r"(?:[\s-]hand)?\s+"
         r"(?:one|tower|stack|column|pillar|row|wall)\s+(?:to\s+|into\s+)?" + _N
         + r"(?:\s+(?:cubes?|high|tall|long|levels?))?"
         r"\s*(?:instead)?\s*$",
@@ -757,6 +771,19 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         op = op[0]
     elif op.endswith("length"):  # "make it 5 long"
         op, key = op[0], "length"
+    elif op == "=side":  # "make it 3 wide (instead of 2)": the side it was, else across
+        op, last_ = "=", structures[_last_index(built)]
+        if last_.shape not in ("grid", "block"):
+            return None
+        was = m.group(2) and int(words_to_numbers([m.group(2).lower()])[0])
+        sides = {k: getattr(last_, k) for k in ("length", "width")}
+        if was:
+            matching = [k for k, v in sides.items() if v == was]
+            if len(matching) != 1:
+                return None
+            key = matching[0]
+        else:
+            key = "width" if re.search(r"\bdeep\b", m.group(0), re.I) else "length"
     if op in ("+1", "-1"):
         n, op = 1, op[0]
     else:

@@ -314,6 +314,12 @@ def _than(m: re.Match[str]) -> str:
     return f" {value} {'long' if m.group(2).lower() == 'longer' else 'high'} "
 
 
+def _other_side(m: re.Match[str]) -> str:
+    """ "on the left, actually the other side": moved to the side opposite the one said last."""
+    said = re.findall(r"\b(left|right|front|back)\b", m.string[: m.start()].lower())
+    return f", then move it to the {lx.OPPOSITE_SIDE[said[-1]]} " if said else m.group(0)
+
+
 def _named_last(text: str) -> str | None:
     """The family of the structure named last in `text` (unambiguous family nouns only)."""
     text = re.sub(r"\b(?:in|into)\s+(?:a|one)\s+(?:row|line)\b", " ", text.lower())  # arranged
@@ -740,6 +746,22 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"higher|longer)\s+than\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\b"
                 r"(?!\s*(?:cm|mm|m|x|by)\b|\s+(?:cubes?\s+)?(?:high|tall|long)\b)", re.I),
      lambda m: _than(m)),
+    # "make a 3 by 3 slab on the left, actually the other side": moved to the opposite side
+    (re.compile(r"\s*,?\s*\b(?:actually|no|sorry|wait|or\s+rather)\b\s*,?\s*(?:(?:put\s+it|make\s+it|"
+                r"build\s+it)\s+)?(?:on|at|to)?\s*the\s+other\s+(?:side|end)\b", re.I),
+     lambda m: _other_side(m)),
+    # "two towers of 3, the left one and the right one": one on each side
+    (re.compile(r"\b(two|2)\s+([a-z]+s(?:\s+of\s+\d+)?)\s*,\s*the\s+(left|front)(?:[\s-]hand)?\s+one\s+and\s+"
+                r"the\s+(right|back)(?:[\s-]hand)?\s+one\b", re.I),
+     r"\1 \2, one on the \3 and one on the \4"),
+    # "two rows of 5 cubes, put the second one on top of the first": stacked
+    (re.compile(r"\s*,?\s*(?:and\s+)?(?:then\s+)?(?:put|stack|place|set)\s+the\s+second(?:\s+one)?\s+on\s+"
+                r"(?:top\s+of\s+)?the\s+first(?:\s+one)?\b", re.I), " stacked"),
+    # "three slabs 2x2, stacked": the size after the noun
+    (re.compile(r"\b(two|three|four|five|[2-5])\s+(slabs|layers|grids|pads|plates|platforms|squares)\s+"
+                r"(\d+\s*(?:x|by)\s*\d+)\s*,?\s*(?=stacked\b|on\s+top\s+of\s+each\s+other\b)",
+                re.I),
+     r"\1 \3 \2 "),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),

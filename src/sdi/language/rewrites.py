@@ -222,7 +222,8 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
             r"(?:\b(?:(?:do|does|did)\s+not|don'?t|doesn'?t)\s+(?:really\s+|particularly\s+)?(?:want|need|"
             r"like)\s+(?:it|them|the\s+\w+|anything)\s+(?:to\s+(?:be|go|stand)\s+)?(?:anywhere\s+)?"
             r"|\b(?:it|they|the\s+\w+)\s+(?:must|should|may|can|shall)\s*(?:not|n'?t)\s+(?:be|go|stand)\s+"
-            r"|(?<=[\w\d])\s*,?\s+(?:but\s+)?not\s+(?=along\b)|(?<=[\w\d])\s*,?\s+but\s+not\s+)"
+            r"|(?<=[\w\d])\s*,?\s+(?:but\s+)?not\s+(?=along\b)|(?<=[\w\d])\s*,?\s+but\s+not\s+"
+            r"|(?<=[\w\d])\s*,?\s+(?:but\s+)?never\s+)"
             r"(?:on|at|in|along|near|against|by)\s+the\s+(left|right|front|back)"
             r"(?:\s+(?:edge|side|half|part|end))?(?:\s+of\s+the\s+(?:table|workspace|cell|bench))?",
             re.IGNORECASE,
