@@ -5167,3 +5167,18 @@ def test_corrections_and_changes_said_in_everyday_words():
     ]
     r = plan("a row of 3 cubes, never at the back")
     assert r.status == "success" and r.spec.structures[0].region == "front"
+
+
+def test_a_castles_towers_and_a_bridges_pillars_changed_later():
+    # "make the towers taller (4 high)" built a separate tower of 4 beside a default castle;
+    # "make the towers 5 high" raised the castle's walls to 5
+    r = plan("build a castle and then make the towers taller (4 high)")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["castle"]
+    r = plan("a castle with walls 2 high, then make the towers 5 high")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.height, s.count) == (2, 3)  # towers 3 above the walls
+    # "make the pillars taller, 3 cubes each": a tower of 6 beside a default bridge
+    r = plan("build a bridge, then make the pillars taller, 3 cubes each")
+    assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
+        ("bridge", 3)
+    ]

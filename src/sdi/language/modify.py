@@ -45,6 +45,13 @@ def _op(pattern: str, op: str) -> tuple[re.Pattern[str], str]:
 
 # (pattern, operation on the height of the structure referred to)
 MODIFY = [
+    # "build a castle, then make the towers taller (4 high)": its corner towers
+    _op(
+        r"\bmake\s+(?:the|its|all\s+the)\s+(?:corner\s+)?(?:towers|turrets)\s+(?:(?:taller|higher)\s*"
+        r"[,(]?\s*)?" + _N
+        + r"(?:\s+(?:cubes?\s+)?(?:high|tall|each))?\)?(?:\s+(?:each|instead))?\s*$",
+        "=turrets",
+    ),
     _op(r"\b(?:add|put|stack|place|pile)\s+" + _N + r"\s+(?:more|extra|additional)" + _UNIT, "+"),
     _op(r"\b(?:add|put|stack|place)\s+" + _N + _UNIT + r"\s+(?:to|on|onto)\s+" + _REF + r"\b", "+"),
     # "put a cube on top of each of them": one more on each
@@ -283,9 +290,9 @@ MODIFY = [
     _op(r"\bmake\s+(?:the|that)\s+\w+\s+(\d+\s*(?:x|by)\s*\d+)\b(?:\s+instead)?", "dims"),
     # "actually make the pillars 4 instead": a bridge's or a table's own height
     _op(
-        r"\bmake\s+(?:the|its|both)\s+(?:pillars|legs|posts|supports|columns)\s+"
-        + _N
-        + r"(?:\s+(?:cubes?\s+)?(?:high|tall))?(?:\s+instead)?\s*$",
+        r"\bmake\s+(?:the|its|both)\s+(?:pillars|legs|posts|supports|columns)\s+(?:(?:taller|higher)\s*"
+        r"[,(]?\s*)?" + _N
+        + r"(?:\s+(?:cubes?\s+)?(?:high|tall|each))?\)?(?:\s+(?:each|instead))?\s*$",
         "=pillars",
     ),
     # "then remove the middle 4 cubes": a solid floor with its middle taken out is a ring
@@ -592,6 +599,21 @@ def _pillars(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: 
     last = structures[spanning[-1]]
     structures[spanning[-1]] = last.model_copy(update={"height": int(value), "height_m": None})
     return f"the {last.shape}'s pillars are now {value} high"
+
+
+def _turrets(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+             structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "then make the towers 4 high": a castle's corner towers, that high overall."""
+    castles = [i for i, x in enumerate(structures) if x.shape == "castle"]
+    value = words_to_numbers([m.group(1).lower()])[0]
+    if not castles or not value.isdigit():
+        return None
+    last = structures[castles[-1]]
+    walls = last.height or 1
+    if int(value) <= walls:
+        return None  # towers no higher than the walls: no towers
+    structures[castles[-1]] = last.model_copy(update={"count": int(value) - walls})
+    return f"the castle's corner towers are now {value} high"
 
 
 def _hollow(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
@@ -980,7 +1002,7 @@ _EVERY = re.compile(
 
 
 _CHANGES: dict[str, Change] = {
-    "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars,
+    "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars, "=turrets": _turrets,
     "hollow": _hollow, "drop": _drop, "drop_family": _drop_family, "undo": _undo,
     "undo_all": _undo_all,
 }  # fmt: skip

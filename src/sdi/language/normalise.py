@@ -762,6 +762,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(\d+\s*(?:x|by)\s*\d+)\s*,?\s*(?=stacked\b|on\s+top\s+of\s+each\s+other\b)",
                 re.I),
      r"\1 \3 \2 "),
+    # "make the pillars taller, 3 cubes each": the pillars that high
+    (re.compile(r"\b(make\s+(?:the|its|both)\s+(?:corner\s+)?(?:pillars|legs|posts|towers|turrets))\s+"
+                r"(?:taller|higher)\s*[,:(-]?\s*(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?"
+                r"(?:each|high|tall)\b\)?", re.I), r"\1 \2 high"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),

@@ -377,7 +377,7 @@ _SHARED = re.compile(
 
 # "a tower at the back left and another at the front right, 4 cubes each"
 _SHARED_AFTER = re.compile(
-    r"\s*,\s*(?:and\s+)?(?:with\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*"
+    r"(?<!\btaller)(?<!\bhigher)\s*,\s*(?:and\s+)?(?:with\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*"
     r"(?:cubes?\s*|(high|tall|long)\s+)(?:each|apiece|both|for\s+(?:each|both))\s*(?=$|[.;!])",
     re.IGNORECASE,
 )
