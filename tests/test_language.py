@@ -5182,3 +5182,37 @@ def test_a_castles_towers_and_a_bridges_pillars_changed_later():
     assert r.status == "success" and [(s.shape, s.height) for s in r.spec.structures] == [
         ("bridge", 3)
     ]
+
+
+def test_terse_operator_commands_read_as_meant():
+    # "going up right" was the right of the table, the stairs climbing left
+    r = plan("stairs 4 going up right, back")
+    heights = {}
+    for o in r.layout.objects:
+        key = round(o.position[1], 3)
+        heights[key] = max(heights.get(key, 0), round(o.position[2] / 0.05 + 0.5))
+    assert r.status == "success" and [heights[y] for y in sorted(heights)] == [4, 3, 2, 1]
+    # "centre 0.5, 0.3": the coordinates were dropped
+    s = plan("pyramid base 3, centre 0.5, 0.3").spec.structures[0]
+    assert (s.at_x, s.at_y) == (0.5, 0.3)
+    # "on the left end" of a row was the left of the table, the tower standing apart
+    r = plan("row of 5, tower 3 on the left end")
+    assert r.status == "success" and [(x.kind, x.at) for x in r.spec.relations] == [
+        ("on_top_of", "left end")
+    ]
+    # "on top left corner" of a block, "on the back left corner": that corner of it
+    for command in ("block 3x2x2, tower 2 on top left corner",
+                    "a 3x3 slab with a cube on the back left corner"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and [x.at for x in r.spec.relations] == ["back left corner"]
+    assert plan("a 3x3 slab with a cube on its left corner").status == "partial"  # which one?
+    # "in front, 1 cube gap": the gap was noted and not kept (the row placed by region)
+    r = plan("wall 5, then a row of 5 in front, 1 cube gap")
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("front", 0.05)]
+    # "make it 4x4" built a second slab; "raise it one layer" was dropped
+    r = plan("slab 3x3. make it 4x4")
+    assert r.status == "success" and [(s.length, s.width) for s in r.spec.structures] == [(4, 4)]
+    r = plan("ring 4x4 then raise it one layer")
+    assert r.status == "success" and r.spec.structures[0].height == 2
+    # "not going left to right" still turns the row
+    assert plan("a row of 6 but not going left to right").spec.structures[0].axis == "x"

@@ -608,6 +608,23 @@ def _impossible(m: re.Match[str], st: ReadState, note: str) -> str:
     return _cannot(m, st, why)
 
 
+def _corner_named(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower of 2 on the top left corner" of a block: on a corner; which one SDI cannot
+    choose, so the side named is reported."""
+    said, groups = _said(m)
+    named = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+             if w in lx.SHAPE_WORDS or w in lx.PART_WORDS]  # fmt: skip
+    if len(named) < 2:
+        return m.group(0)  # "a tower on the back left corner": the table's corner
+    side = re.sub(r"[\s-]+", " ", groups[0]).replace("rear", "back").split()
+    if len(side) == 2 and side[1] in ("left", "right"):
+        return f" on its {side[0]} {side[1]} corner "  # "on the back left corner": that one
+    st.material.append(f"the {groups[0]} corner")
+    st.notes.append(f"ignored '{groups[0]}' of '{said}': SDI stands it on one corner, not a "
+                    "corner it can choose; say 'on one corner' if any will do")  # fmt: skip
+    return " on one corner of it "
+
+
 def _beam_on_beam(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "then add a second beam on top of the first": a bridge carries one beam a span."""
     return _cannot(m, st, "a bridge or arch carries one beam on each span; SDI lays no beam on "
@@ -1134,6 +1151,7 @@ HANDLERS: dict[str, Handler] = {
     "{unsupported}": _unsupported,
     "{impossible}": _impossible,
     "{beam_on_beam}": _beam_on_beam,
+    "{corner_named}": _corner_named,
     "{at_most}": _at_most,
     "{corners}": _corners,
     "{square_base}": _square_base,

@@ -84,9 +84,9 @@ MODIFY = [
         "+main",
     ),
     _op(
-        r"\b(?:raise|extend|grow|lengthen)\s+(?:it|them|the\s+(?:row|wall|tower|stack|column))\s+by\s+"
-        + _N
-        + _UNIT,
+        r"\b(?:raise|extend|grow|lengthen)\s+(?:it|them|the\s+(?:row|wall|tower|stack|column))\s+"
+        r"(?:by\s+" + _N + _UNIT + r"|" + _N
+        + r"\s+(?:more\s+)?(?:layers?|levels?|courses?|storeys?)\b)",
         "+",
     ),
     _op(
@@ -287,7 +287,10 @@ MODIFY = [
         "-1",
     ),
     # "no wait, make the pen 5 by 5": the size of the structure named before, changed
-    _op(r"\bmake\s+(?:the|that)\s+\w+\s+(\d+\s*(?:x|by)\s*\d+)\b(?:\s+instead)?", "dims"),
+    _op(
+        r"\bmake\s+(?:the\s+\w+|that(?:\s+\w+)?|it)\s+(\d+\s*(?:x|by)\s*\d+)\b(?:\s+instead)?",
+        "dims",
+    ),
     # "actually make the pillars 4 instead": a bridge's or a table's own height
     _op(
         r"\bmake\s+(?:the|its|both)\s+(?:pillars|legs|posts|supports|columns)\s+(?:(?:taller|higher)\s*"
@@ -573,6 +576,9 @@ def _offset(m: re.Match[str], built: list[Phrase], structures: list[StructureDra
     return f"the {s.shape} moves {metres:g} m to {key[-1]} = {getattr(structures[index], key):g} m"
 
 
+_TWO_SIDED = frozenset({"grid", "block", "enclosure", "castle", "l_shape", "t_shape", "u_shape"})
+
+
 def _dims(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
           structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "make the pen 5 by 5": the last structure named that way."""
@@ -580,6 +586,9 @@ def _dims(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
     noun = re.search(r"make\s+(?:the|that)\s+(\w+)", m.group(0), re.I)
     family = lx.SHAPE_WORDS.get(noun.group(1).lower()) if noun else None
     found = [i for i, x in enumerate(structures) if x.shape == family]
+    if noun is None:  # "make it 4x4": the structure named last, if it has two sides
+        last_index = _last_index(built)
+        found = [last_index] if structures[last_index].shape in _TWO_SIDED else []
     if not found:
         return None
     last = structures[found[-1]]

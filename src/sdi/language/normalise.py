@@ -766,6 +766,20 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(make\s+(?:the|its|both)\s+(?:corner\s+)?(?:pillars|legs|posts|towers|turrets))\s+"
                 r"(?:taller|higher)\s*[,:(-]?\s*(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?"
                 r"(?:each|high|tall)\b\)?", re.I), r"\1 \2 high"),
+    # "stairs 4 going up right": the way they climb, not the right of the table
+    (re.compile(r"\b(?:(?:going|goes|climbing|climbs|rising|rises|ascending|stepping)\s+up|climbing|climbs|"
+                r"rising|rises|ascending)\s+(left|right)\b(?!\s+(?:to|of|corner|side|end|half|edge|hand)\b)",
+                re.I), r"going up to the \1"),
+    # "pyramid base 3, centre 0.5, 0.3": centred there
+    (re.compile(r"\b(?:centred|centered|centre|center)\s+(?:at\s+|on\s+)?\(?\s*(\d*\.\d+|\d+(?:\.\d+)?)\s*(mm|cm|m)?"
+                r"\s*,\s*(\d*\.\d+|\d+(?:\.\d+)?)\s*(mm|cm|m)?\s*\)?", re.I),
+     lambda m: f" at x = {m.group(1)}{m.group(2) or ''}, y = {m.group(3)}{m.group(4) or ''} "),
+    # "row of 5, tower 3 on the left end": on its end, not the left of the table
+    (re.compile(r"\bon\s+(?:top\s+of\s+)?the\s+(left|right|front|back|far|near)\s+end\b"
+                r"(?:\s+of\s+(?:it|the\s+(?:row|wall|line|slab)))?", re.I), r"on its \1 end"),
+    # "then a row of 5 in front, 1 cube gap": in front of it, that far
+    (re.compile(r"\b(in\s+front|behind|to\s+the\s+(?:left|right))(?=\s*,?\s*(?:with\s+)?(?:an?\s+)?(?:\d+|one|two|"
+                r"three|a)\s*(?:cubes?|cm|mm)\s+(?:gap|apart|away)\b)", re.I), r"\1 of it"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),

@@ -1347,6 +1347,17 @@ _REWRITES += [
     ),
     (re.compile(r",?\s*\bnot\s+filled(?:\s+in)?\b", re.IGNORECASE), " ", ""),
     (re.compile(r"\b(?:underneath|beneath|below)\s*(?=[,;.]|$)", re.IGNORECASE), " ", ""),
+    (  # "a tower on top left corner", "on its back right corner": a corner, which one not chosen
+        re.compile(
+            r"\bon\s+(?:top\s+of\s+)?(?:the\s+|its\s+(?=(?:left|right|front|back|rear)[\s-]*(?:hand\s+)?"
+            r"corner))?(?:top\s+)?((?:front|back|rear)[\s-]+(?:left|right)|"
+            r"(?:left|right|front|back|rear)(?:[\s-]+hand)?)\s+corner\b"
+            r"(?!\s+of\s+the\s+(?:table|workspace|cell|bench)\b)(?:\s+of\s+(?:it|the\s+\w+))?",
+            re.IGNORECASE,
+        ),
+        "{corner_named}",
+        "",
+    ),
     (  # "two towers of four, one either side of a block": a tower on each side of it
         re.compile(
             r"\b(?:two|2)\s+((?:[\w-]+\s+){0,2}?)(" + _SHAPE_ALT + r")s\b((?:\s+(?:of|with)\s+"
