@@ -5216,3 +5216,26 @@ def test_terse_operator_commands_read_as_meant():
     assert r.status == "success" and r.spec.structures[0].height == 2
     # "not going left to right" still turns the row
     assert plan("a row of 6 but not going left to right").spec.structures[0].axis == "x"
+
+
+def test_shapes_described_by_what_they_look_like():
+    # "just as long" was a vague "long" (6); "one step shorter" one step
+    r = plan("A row of 5, and beside it a wall just as long but three cubes high.")
+    assert r.status == "success" and (r.spec.structures[1].length, r.spec.structures[1].height) == (
+        5, 3
+    )
+    r = plan("A staircase of 4 steps, and a second staircase one step shorter next to it.")
+    assert r.status == "success" and len(r.spec.structures) == 2
+    assert sorted(max(round(o.position[2] / 0.05 + 0.5) for o in r.layout.objects
+                      if abs(o.position[0] - x) < 1e-6)
+                  for x in {o.position[0] for o in r.layout.objects}) == [3, 4]  # fmt: skip
+    # "on top of its middle": the tower stood on the table at the centre
+    r = plan("A wall 6 cubes long and 1 high with a 2-cube tower on top of its middle.")
+    assert r.status == "success" and [x.kind for x in r.spec.relations] == ["on_top_of"]
+    r = plan("First a layer 5 cubes long and 3 wide, then a row of 5 cubes along the middle of it.")
+    assert r.status == "success" and [x.kind for x in r.spec.relations] == ["on_top_of"]
+    # "5 cubes along each edge": a grid of 5 cubes; "4 cubes in each layer": 4 by 4 a layer
+    s = plan("A square slab with 5 cubes along each edge.").spec.structures[0]
+    assert (s.length, s.width) == (5, 5)
+    s = plan("A block 3 layers high with 4 cubes in each layer.").spec.structures[0]
+    assert (s.length, s.width, s.height) == (2, 2, 3)

@@ -697,7 +697,8 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     if len(groups) == 4 and groups[3]:  # the second form: "a cube taller"
         groups = groups[2:]
     word = groups[0] or "1"  # "a cube taller"
-    factor = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5}.get(word)
+    factor = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5, "just": 1.0, "exactly": 1.0,
+              "equally": 1.0}.get(word)  # fmt: skip
     times = re.fullmatch(r"(\w+)\s+times", word)
     if times and words_to_numbers([times.group(1)])[0].isdigit():
         factor = float(words_to_numbers([times.group(1)])[0])

@@ -780,6 +780,19 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "then a row of 5 in front, 1 cube gap": in front of it, that far
     (re.compile(r"\b(in\s+front|behind|to\s+the\s+(?:left|right))(?=\s*,?\s*(?:with\s+)?(?:an?\s+)?(?:\d+|one|two|"
                 r"three|a)\s*(?:cubes?|cm|mm)\s+(?:gap|apart|away)\b)", re.I), r"\1 of it"),
+    # "a 2-cube tower on top of its middle", "a row along the middle of it": on it, centred
+    (re.compile(r"\b(?:on\s+top\s+of\s+its|on\s+its|along\s+(?:the\s+)?(?:middle|centre|center)\s+of)\s+"
+                r"(?:(?:middle|centre|center)\b(?!\s+(?:cube|one|block|brick|part|column|row|step))|(?=it\b))"
+                r"(?:\s*it\b)?", re.I), "on the middle of it"),
+    # "a square slab with 5 cubes along each edge": that many on each side
+    (re.compile(r"\b((?:slab|grid|layer|square|platform|pad)\s+)with\s+(\d+|two|three|four|five|six|seven|"
+                r"eight)\s+(?:cubes?\s+)?along\s+(?:each|every)\s+(?:edge|side)\b", re.I),
+     r"\1with \2 on each side"),
+    # "a block 3 layers high with 4 cubes in each layer": a square of that many
+    (re.compile(r"\bwith\s+(4|9|16|four|nine|sixteen)\s+(?:cubes?\s+)?(?:in|per|on)\s+(?:each|every)\s+"
+                r"(?:layer|level)\b", re.I),
+     lambda m: (lambda n: f"{n} by {n}")({"4": 2, "four": 2, "9": 3, "nine": 3, "16": 4,
+                                         "sixteen": 4}[m.group(1).lower()])),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),

@@ -2118,7 +2118,7 @@ _REWRITES += [
     ),
     (  # "one twice as tall" (as the one before): the number said last, changed
         re.compile(
-            r"\b(twice|double|thrice|half|(?:\d+|two|three|four|five)\s+times)\s+as\s+"
+            r"\b(twice|double|thrice|half|just|exactly|equally|(?:\d+|two|three|four|five)\s+times)\s+as\s+"
             r"(tall|high|big|large|long)\b(?!\s+as\b(?!\s+(?:it|that|the\s+other|the\s+first)"
             r"(?:\s+one)?\b))",
             re.IGNORECASE,
@@ -2131,7 +2131,7 @@ _REWRITES += [
             r"\bwith\s+(?:just\s+|only\s+)?(?:a|(\d+|one|two|three|four|five))\s+"
             r"(?:cubes?\s+|parts?\s+|blocks?\s+)?(more|fewer|less)\b(?:\s+(?:cubes?|parts?|blocks?))?"
             r"(?!\s+(?:than|\w+s\b))|"
-            r"\b(?:a|(\d+|one|two|three|four|five))\s+(?:cubes?\s+|parts?\s+|levels?\s+|blocks?\s+)?"
+            r"\b(?:a|(\d+|one|two|three|four|five))\s+(?:cubes?\s+|parts?\s+|levels?\s+|blocks?\s+|steps?\s+)?"
             r"(taller|higher|shorter|lower)\b(?!\s+than)",
             re.IGNORECASE,
         ),
@@ -2553,7 +2553,7 @@ _BY_IT = (
 _ONE_OF = re.compile(
     r"(\bthen\s+|\band\s+|,\s*)(" + _BY_IT + r")?one\s+(?:(of|with)\s+(?=(?:\d|" + _NUMBER_WORD
     + r")\b)|(?=(?:\d+|" + _NUMBER_WORD + r")\s+(?:cubes?\s+)?(?:high|tall|long)\b)"
-    r"|(?=(?:twice|double|thrice|half)\s+as\s+(?:tall|high|long|big)\b))",
+    r"|(?=(?:twice|double|thrice|half|just|exactly|equally)\s+as\s+(?:tall|high|long|big)\b))",
     re.IGNORECASE,
 )
 """'a tower of 2, then one of 3', 'and next to it one 6 high': another of the structure named
