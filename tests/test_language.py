@@ -5239,3 +5239,10 @@ def test_shapes_described_by_what_they_look_like():
     assert (s.length, s.width) == (5, 5)
     s = plan("A block 3 layers high with 4 cubes in each layer.").spec.structures[0]
     assert (s.length, s.width, s.height) == (2, 2, 3)
+
+
+def test_counted_copies_on_top_are_not_stacked_on_each_other():
+    # "slab 5x2, 3 towers of 2 on top": the third tower stood on the second, nothing on the slab
+    r = plan("slab 5x2, 3 towers of 2 on top")
+    assert r.status == "partial"
+    assert [(x.kind, x.object) for x in r.spec.relations] == [("on_top_of", 0)]

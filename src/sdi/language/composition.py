@@ -119,7 +119,18 @@ def relate(
         else:
             s_idx = s_last
             o_idx = phrases[obj].first + phrases[obj].count - 1
-        if (
+        copies = _counted_copies(phrases[subj], structures) if not s_ref else []
+        if r.kind == "on" and r.object is None and s_idx in copies[1:] and not st.anchors:
+            # "slab 5x2, 3 towers of 2 on top": the copies stood on each other, silently; "it"
+            # is the slab, and SDI stands one of them on it
+            o_idx = copies[0] - 1 if copies[0] > s_first else -1
+            said = _counted_said(phrases[subj])
+            st.material.append(said)
+            st.notes.append(
+                f"ignored '{said}' on it for all but one: SDI stands one structure on "
+                "another's top (say 'one on each corner' to spread them)"
+            )
+        elif (
             r.kind == "on"
             and r.object is not None
             and obj != subj
@@ -286,6 +297,30 @@ def _group(
     if len(group) < 2 or related & set(group):
         return []
     return group
+
+
+_COUNTED = re.compile(r"\b(?:two|three|four|five|six|[2-6])\s+(?:[\w-]+\s+){0,2}?([a-z]+)s\b", re.I)
+
+
+def _counted_copies(p: Phrase, structures: list[StructureDraft]) -> list[int]:
+    """The structures of a counted plural that ends the phrase ("…, two towers of 4"): the run
+    of identical copies at its end, when the phrase counts that family; else []."""
+    if p.count < 2 or p.spec is None:
+        return []
+    last = p.first + p.count - 1
+    counted = [m.group(1).lower() for m in _COUNTED.finditer(p.text)]
+    if not counted or lx.SHAPE_WORDS.get(counted[-1]) != structures[last].shape:
+        return []
+    run = [last]
+    while run[0] - 1 >= p.first and structures[run[0] - 1] == structures[last]:
+        run.insert(0, run[0] - 1)
+    return run if len(run) >= 2 else []
+
+
+def _counted_said(p: Phrase) -> str:
+    """The words of the counted plural in the phrase ("two towers of 4")."""
+    found = list(_COUNTED.finditer(p.text))
+    return p.text[found[-1].start() :].strip(" ,") if found else p.text.strip(" ,")
 
 
 def _copy_if_asked(
