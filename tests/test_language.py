@@ -5246,3 +5246,18 @@ def test_counted_copies_on_top_are_not_stacked_on_each_other():
     r = plan("slab 5x2, 3 towers of 2 on top")
     assert r.status == "partial"
     assert [(x.kind, x.object) for x in r.spec.relations] == [("on_top_of", 0)]
+
+
+def test_levels_named_in_words_stand_on_each_other():
+    # "Bottom: … Middle: … Top: …" built three pieces apart on the table, as success
+    for command in ("Bottom: a 3 by 3 square of cubes. Middle: a 2 by 2 square. Top: one cube.",
+                    "first level: a 3 by 3 square, second level: a 2 by 2 square, third level: "
+                    "one cube"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success"
+        assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [
+            ("on_top_of", 1, 0), ("on_top_of", 2, 1)
+        ]
+    # ordinals that are no levels stay apart
+    r = plan("first a row of 4 on the right, second a row of 4 on the left")
+    assert [s.region for s in r.spec.structures] == ["right", "left"] and not r.spec.relations

@@ -2734,11 +2734,28 @@ _LEVEL_LABEL = re.compile(
 )
 
 
+_LEVEL_WORD = re.compile(
+    r"(?:^|(?<=[.;,!\n])|(?<=\band\s))\s*(?:the\s+)?(bottom|base|lowest|ground|first|1st|second|2nd|"
+    r"middle|third|3rd|fourth|4th|top|upper|last)(?:(?:\s+(?:level|layer|tier|floor|storey|course))"
+    r"(?:\s+(?:is|has)\s+|\s*[:=-]\s*|\s+(?=(?:an?|one|just|only|\d)\b))|\s*[:=-]\s*)",
+    re.IGNORECASE,
+)
+_LEVEL_RANK = {"bottom": 1, "base": 1, "lowest": 1, "ground": 1, "first": 1, "1st": 1, "second": 2,
+               "2nd": 2, "middle": 2, "third": 3, "3rd": 3, "fourth": 4, "4th": 4, "top": 99,
+               "upper": 99, "last": 99}  # fmt: skip
+"""'Bottom: a 3 by 3 square. Middle: 2 by 2. Top: one cube.': levels named in words."""
+
+
 def _level_labels(text: str, st: ReadState) -> str:
     """ "level 1: 4x4 floor. level 2: 3x3 on top. level 3: 2x2.": each level labelled after
-    the first stands on the one before it."""
+    the first stands on the one before it (also named in words: "Bottom: … Middle: … Top:")."""
     labels = list(_LEVEL_LABEL.finditer(text))
     numbers = [int(words_to_numbers([m.group(1).lower()])[0]) for m in labels]
+    if len(labels) < 2:
+        labels = list(_LEVEL_WORD.finditer(text))
+        numbers = [_LEVEL_RANK[m.group(1).lower()] for m in labels]
+        if len(labels) >= 2 and numbers[-1] == 99:
+            numbers[-1] = numbers[-2] + 1 if len(numbers) > 1 else 2  # "top": the last one
     if len(labels) < 2 or numbers != list(range(numbers[0], numbers[0] + len(numbers))):
         return text
     out = [text[: labels[0].start()]]
@@ -2746,6 +2763,8 @@ def _level_labels(text: str, st: ReadState) -> str:
         end = labels[i + 1].start() if i + 1 < len(labels) else len(text)
         segment = text[m.end() : end].strip()
         said = re.match(r"[^.;!?]*", segment).group(0).rstrip(" ,")  # type: ignore[union-attr]
+        said = re.sub(r"^(?:just|only)?\s*(?:the\s+)?(?:middle|centre|center|one)\s+cube\b",
+                      "one cube", said, flags=re.IGNORECASE)  # "just the middle cube": one
         rest = segment[len(said) :].lstrip(".;!? ")
         if i and not re.search(r"\bon\s+(?:top|it|that)\b", said, re.IGNORECASE):
             said += " on top"
