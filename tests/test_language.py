@@ -5261,3 +5261,15 @@ def test_levels_named_in_words_stand_on_each_other():
     # ordinals that are no levels stay apart
     r = plan("first a row of 4 on the right, second a row of 4 on the left")
     assert [s.region for s in r.spec.structures] == ["right", "left"] and not r.spec.relations
+
+
+def test_a_row_added_to_a_slab_or_a_wall():
+    # "add a row along the back" of a slab built a separate default row at the table's back
+    r = plan("grid 4x2, add a row along the back")
+    assert r.status == "success"
+    assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("grid", 4, 3)]
+    r = plan("a 3x3 slab, then add a row on the left")
+    assert [(s.length, s.width) for s in r.spec.structures] == [(4, 3)]
+    # of a wall, "another row" is a course more
+    r = plan("a wall of 5, then add another row")
+    assert r.status == "success" and [(s.length, s.height) for s in r.spec.structures] == [(5, 3)]

@@ -111,6 +111,12 @@ MODIFY = [
         r"(?:\s+instead\s+of\s+(\d+|one|two|three|four|five|six|seven|eight))?",
         "=side",
     ),
+    # "a 4x2 slab, then add a row along the back": the slab one row deeper (wider at a side)
+    _op(
+        r"\badd\s+(?:a|one|another)\s+(?:more\s+|extra\s+)?row\b(?:\s+of\s+cubes)?(?:\s+(?:along|at|on|to)"
+        r"\s+(?:the\s+|its\s+)?(back|front|left|right)(?:\s+(?:side|edge|end))?)?(?=\s*(?:$|[.,;!]|and\b))",
+        "+row",
+    ),
     # "stack 4 cubes, take one off, then add three": three more
     _op(
         r"\b(?:then\s+)?add\s+" + _N
@@ -802,6 +808,14 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         op = op[0]
     elif op.endswith("length"):  # "make it 5 long"
         op, key = op[0], "length"
+    elif op == "+row":  # "add a row along the back": a slab's rows, not a course on top
+        op, last_ = "+1", structures[_last_index(built)]
+        if last_.shape in ("wall", "row") and not m.group(1):
+            key = "height"  # "a wall of 5, then add another row": a course on it
+        elif last_.shape != "grid" or last_.length is None or last_.width is None:
+            return None
+        side = (m.group(1) or "back").lower()
+        key = key or ("length" if side in ("left", "right") else "width")
     elif op == "=side":  # "make it 3 wide (instead of 2)": the side it was, else across
         op, last_ = "=", structures[_last_index(built)]
         if last_.shape not in ("grid", "block"):
