@@ -5273,3 +5273,14 @@ def test_a_row_added_to_a_slab_or_a_wall():
     # of a wall, "another row" is a course more
     r = plan("a wall of 5, then add another row")
     assert r.status == "success" and [(s.length, s.height) for s in r.spec.structures] == [(5, 3)]
+
+
+def test_distances_said_out_from_the_robot_or_off_an_edge():
+    # "60 cm out" was the wall's length (12 long across the table)
+    r = plan("wall 4 long, 3 high, centred on y=0.3, 60 cm out")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.length, s.height, s.at_x) == (4, 3, 0.6)
+    s = plan("enclosure 4x3 at 600mm out").spec.structures[0]
+    assert (s.length, s.width, s.at_x) == (4, 3, 0.6)
+    s = plan("a tower 10 cm off the back edge").spec.structures[0]
+    assert s.at_x == pytest.approx(0.7)

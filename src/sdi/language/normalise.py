@@ -793,6 +793,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?:layer|level)\b", re.I),
      lambda m: (lambda n: f"{n} by {n}")({"4": 2, "four": 2, "9": 3, "nine": 3, "16": 4,
                                          "sixteen": 4}[m.group(1).lower()])),
+    # "60 cm out", "600mm out": that far out from the robot
+    (re.compile(r"\b(?:at\s+)?(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+out\b(?!\s+(?:of|from)\b)", re.I),
+     r" \1 from the robot "),
+    # "5 cm off the front edge", "10 cm in from the left edge": from it
+    (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:off|in\s+from|in\s+off|inside|away\s+from)\s+the\s+"
+                r"(front|back|left|right)\s+edge\b", re.I), r"\1 from the \2 edge"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),
