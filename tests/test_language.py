@@ -5284,3 +5284,22 @@ def test_distances_said_out_from_the_robot_or_off_an_edge():
     assert (s.length, s.width, s.at_x) == (4, 3, 0.6)
     s = plan("a tower 10 cm off the back edge").spec.structures[0]
     assert s.at_x == pytest.approx(0.7)
+
+
+def test_sizes_said_against_a_named_structure_and_a_pyramids_square_base():
+    # "a tower on its left that is 1 cube taller than the wall": a default tower and a wall
+    # 1 long, 4 high, as success
+    r = plan("A wall 3 high and 5 long, and a tower on its left that is 1 cube taller than the "
+             "wall.")  # fmt: skip
+    assert r.status == "success"
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("wall", 3), ("tower", 4)]
+    # "with a square base": the square was a second structure (a grid beside the pyramid)
+    for command in ("a pyramid with a square base of 3",
+                    "A pyramid 15 cm high with a square base 15 cm across."):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and [(s.shape, s.length) for s in r.spec.structures] == [
+            ("pyramid", 3)
+        ]
+    # "a stack where every layer is a 2 by 2 square, five layers": a 2x2 slab beside a block
+    s = plan("A stack where every layer is a 2 by 2 square, five layers in all.").spec.structures
+    assert [(x.shape, x.length, x.width, x.height) for x in s] == [("block", 2, 2, 5)]

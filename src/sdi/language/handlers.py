@@ -316,25 +316,18 @@ def _grid_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
-def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
-    """ "a staircase of 3 steps and a tower as tall as the staircase": the size of the
-    structure named before, measured in parts as it is built (a staircase of 3 steps is 3
-    high, a pyramid of base 4 is 4 high). When it cannot be measured the words are reported,
-    not read as a vague "tall"."""
+def _measure_named(before: str, family: str | None, measure: str, st: ReadState) -> int | None:
+    """The size (in parts, as built) of the `family` structure named last in `before`: its
+    height for "tall"/"high", else its length; None when none can be measured. The phrase the
+    size is said in is not searched: its own structure is not the one named."""
     from sdi.design.composer import part_sizes
     from sdi.design.shapes import generate
     from sdi.language.families import check_family
     from sdi.spec.grammar import parse_phrase
 
-    said, (factor, *groups) = _said(m)
-    word, family = groups[0], lx.SHAPE_WORDS.get(groups[1])
-    times = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5}.get(factor, 1.0)
-    before = m.string[: m.start()]
     clauses = [c for c in re.split(r"[.;]|,|\band\b", before) if c.strip()]
     if len(clauses) > 1:
-        clauses = clauses[:-1]  # the phrase the size is said in: its own structure is not it
-    # "as long as the tower is tall": the wall's length, the tower's height
-    measure = (groups[2] if len(groups) > 2 and groups[2] else word).lower()
+        clauses = clauses[:-1]
     for clause in reversed(clauses):
         if family is None:
             break
@@ -349,10 +342,24 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
         except (SpecError, ValueError):
             continue
         if measure in ("tall", "high"):
-            n = round(max(b.z for b in boxes) / sizes.h + 0.5)
-        else:
-            us, vs = [b.u for b in boxes], [b.v for b in boxes]
-            n = round(max(max(us) - min(us), max(vs) - min(vs)) / sizes.s) + 1
+            return round(max(b.z for b in boxes) / sizes.h + 0.5)
+        us, vs = [b.u for b in boxes], [b.v for b in boxes]
+        return round(max(max(us) - min(us), max(vs) - min(vs)) / sizes.s) + 1
+    return None
+
+
+def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a staircase of 3 steps and a tower as tall as the staircase": the size of the
+    structure named before, measured in parts as it is built (a staircase of 3 steps is 3
+    high, a pyramid of base 4 is 4 high). When it cannot be measured the words are reported,
+    not read as a vague "tall"."""
+    said, (factor, *groups) = _said(m)
+    word, family = groups[0], lx.SHAPE_WORDS.get(groups[1])
+    times = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5}.get(factor, 1.0)
+    # "as long as the tower is tall": the wall's length, the tower's height
+    measure = (groups[2] if len(groups) > 2 and groups[2] else word).lower()
+    n = _measure_named(m.string[: m.start()], family, measure, st)
+    if n is not None:
         dimension = "high" if word in ("tall", "high") else "long"
         if (n * times) % 1 or n * times < 1:
             st.material.append(said)
@@ -364,6 +371,25 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
     st.material.append(said)
     st.notes.append(f"ignored '{said}': no {groups[1]} with a size was named before it")
     return " "
+
+
+def _than_named(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower that is 1 cube taller than the wall": the wall's height, changed."""
+    said, (by, word, noun) = _said(m)
+    family = lx.SHAPE_WORDS.get(noun)
+    n = _measure_named(m.string[: m.start()], family, "tall" if word in _HEIGHT_WORDS else "long",
+                       st)  # fmt: skip
+    step = 1 if by in ("", "a") else int(words_to_numbers([by])[0])
+    if n is None:
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': no {noun} with a size was named before it")
+        return " "
+    value = n + step if word in ("taller", "higher", "longer") else n - step
+    if value < 1:
+        return m.group(0)
+    dimension = "high" if word in _HEIGHT_WORDS else "long"
+    st.notes.append(f"read '{said}' as {value} {dimension} (the {family} named before is {n})")
+    return f" {value} {dimension} "
 
 
 def _from_edge(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -1173,6 +1199,7 @@ HANDLERS: dict[str, Handler] = {
     "{cube_bar}": _cube_bar,
     "{from_edge}": _from_edge,
     "{as_big_as}": _as_big_as,
+    "{than_named}": _than_named,
     "{all_different}": _all_different,
     "{listing}": _listing,
     "{listing_said}": _listing_said,

@@ -799,6 +799,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "5 cm off the front edge", "10 cm in from the left edge": from it
     (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:off|in\s+from|in\s+off|inside|away\s+from)\s+the\s+"
                 r"(front|back|left|right)\s+edge\b", re.I), r"\1 from the \2 edge"),
+    # "a pyramid with a square base 15 cm across": its base (a square is no second structure)
+    (re.compile(r"\b(pyramid|ziggurat)(\b[^.;]{0,30}?\bwith\s+(?:a|its)\s+)square\s+(base|bottom|footprint)\b",
+                re.I), r"\1\2\3"),
+    # "a stack where every layer is a 2 by 2 square, five layers in all": that footprint
+    (re.compile(r"\s*,?\s*\b(?:where|in\s+which|with)\s+(?:every|each)\s+(?:layer|level)\s+(?:is|being)\s+"
+                r"(?:an?\s+)?(\d+\s*(?:x|by)\s*\d+)(?:\s+(?:square|slab|grid|layer))?", re.I),
+     r" \1"),
+    # "with a base 15 cm across": a square base that wide
+    (re.compile(r"\b(base|bottom)\s+(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:across|wide|square)\b",
+                re.I), r"\1 of \2"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),

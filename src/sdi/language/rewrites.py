@@ -1887,6 +1887,16 @@ _REWRITES += [
         "{array_of}",
         "",
     ),
+    (  # "a tower that is 1 cube taller than the wall": the wall's height and one
+        re.compile(
+            r"\b(?:(?:that|which)\s+(?:is|are)\s+)?(?:(\d+|one|two|three|a)\s+(?:cubes?\s+|levels?\s+)?)?"
+            r"(taller|higher|shorter|lower|longer)\s+than\s+(?:the|that|this)\s+"
+            r"(tower|stack|column|pillar|wall|row|staircase|stairs|pyramid|block|slab|line)\b",
+            re.IGNORECASE,
+        ),
+        "{than_named}",
+        "",
+    ),
     (  # "a tower (twice) as tall as the staircase": the size of the one named before
         re.compile(
             r"\b(?:(twice|double|thrice|half)\s+)?(?:exactly\s+|just\s+)?(?:as|so)\s+(tall|high|long)"
