@@ -5303,3 +5303,17 @@ def test_sizes_said_against_a_named_structure_and_a_pyramids_square_base():
     # "a stack where every layer is a 2 by 2 square, five layers": a 2x2 slab beside a block
     s = plan("A stack where every layer is a 2 by 2 square, five layers in all.").spec.structures
     assert [(x.shape, x.length, x.width, x.height) for x in s] == [("block", 2, 2, 5)]
+
+
+def test_a_later_sentence_that_places_two_structures_named_before():
+    # "put the row behind the tower" was reported unused (the two built side by side)
+    r = plan("a tower of 3 and a row of 3. put the row behind the tower")
+    assert r.status == "success"
+    assert [(x.subject, x.object, x.side) for x in r.spec.relations] == [(1, 0, "back")]
+    r = plan("Make a 2x2 pad and a tower of 5. Set the pad to the left of the tower.")
+    assert r.status == "success" and [(x.kind, x.side) for x in r.spec.relations] == [
+        ("next_to", "left")
+    ]
+    # "beside each end" of a wall: one at each end
+    r = plan("a wall 4 long and 2 high with a tower of 4 beside each end")
+    assert r.status == "success" and [x.at for x in r.spec.relations] == ["ends"]

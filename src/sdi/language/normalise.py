@@ -320,6 +320,30 @@ def _other_side(m: re.Match[str]) -> str:
     return f", then move it to the {lx.OPPOSITE_SIDE[said[-1]]} " if said else m.group(0)
 
 
+_PUT_THE = re.compile(
+    r"(?:(?<=[.;!])|,\s*(?:and\s+)?then|\bthen|^)\s*(?:please\s+)?(?:put|place|move|set|stand)\s+the\s+([a-z]+)\s+"
+    r"((?:right\s+|just\s+|directly\s+)?(?:behind|in\s+front\s+of|next\s+to|beside|to\s+the\s+(?:left|right)\s+of|"
+    r"on\s+top\s+of)\s+the\s+([a-z]+))\s*[.!]?\s*$",
+    re.IGNORECASE,
+)
+
+
+def _put_the(text: str) -> str:
+    """ "a tower of 3 and a row of 3. put the row behind the tower": the row, said first, is
+    set that way (the last sentence places two structures named before it)."""
+    m = _PUT_THE.search(text)
+    if not m or not all(w.lower() in lx.SHAPE_WORDS for w in (m.group(1), m.group(3))):
+        return text
+    before = text[: m.start()]
+    named = re.compile(r"\b(?:an?|one)\s+(?:[\w-]+\s+){0,3}?" + re.escape(m.group(1))
+                       + r"\b[^,.;]*?(?=\s*(?:,|\.|;|\band\b|$))", re.IGNORECASE)  # fmt: skip
+    first = named.search(before)
+    other = re.search(rf"\b{re.escape(m.group(3))}\b", before, re.I)
+    if first is None or other is None or other.start() > first.start():
+        return text  # the other named after it: the sentence as it is reads it
+    return f"{before[: first.end()]} {m.group(2)}{before[first.end() :]}".rstrip(" .,;") + "."
+
+
 def _named_last(text: str) -> str | None:
     """The family of the structure named last in `text` (unambiguous family nouns only)."""
     text = re.sub(r"\b(?:in|into)\s+(?:a|one)\s+(?:row|line)\b", " ", text.lower())  # arranged
@@ -809,6 +833,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "with a base 15 cm across": a square base that wide
     (re.compile(r"\b(base|bottom)\s+(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:across|wide|square)\b",
                 re.I), r"\1 of \2"),
+    # "a wall with a tower of 4 beside each end": one at each end
+    (re.compile(r"\b(?:beside|next\s+to|by|against)\s+(each|both|either)\s+(end|ends)\b", re.I),
+     r"at \1 end"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),
@@ -1882,6 +1909,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _UNRELATED.sub(unrelated, text)
     text = _aside(text, notes)
     text = _there(text, notes)
+    text = _put_the(text)
     text = _CALL.sub(lambda m: _call(m, notes), text)
 
     def labelled(m: re.Match[str]) -> str:
