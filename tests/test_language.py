@@ -5317,3 +5317,20 @@ def test_a_later_sentence_that_places_two_structures_named_before():
     # "beside each end" of a wall: one at each end
     r = plan("a wall 4 long and 2 high with a tower of 4 beside each end")
     assert r.status == "success" and [x.at for x in r.spec.relations] == ["ends"]
+
+
+def test_along_an_edge_is_against_it_and_a_bottom_layer_is_square():
+    # "along the left edge" stood 7.5 cm in from it (the left region)
+    r = plan("row of 8 along the left edge")
+    assert r.status == "success" and max(o.position[1] for o in r.layout.objects) == pytest.approx(
+        0.525
+    )
+    assert {round(o.position[1], 3) for o in r.layout.objects} == {0.525}  # front to back
+    r = plan("20 cm wall, 10 cm high, along the back edge and no more than 5 cm from it.")
+    assert r.status == "success" and min(o.position[0] for o in r.layout.objects) > 0.75
+    # "along the left side" is still that side of the table
+    assert plan("a row of 4 along the left side").spec.structures[0].region == "left"
+    # "9 cubes in the bottom layer" of a pyramid: a 3 by 3 level (a row of 9 built 45 cubes)
+    s = plan("A pyramid with 9 cubes in the bottom layer.").spec.structures[0]
+    assert (s.length, s.dims) == (3, 3)
+    assert plan("a pyramid with 9 cubes on the bottom row").spec.structures[0].length == 9

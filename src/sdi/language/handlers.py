@@ -146,7 +146,10 @@ def _bottom_count(m: re.Match[str], st: ReadState, note: str) -> str:
     levels = re.search(r"\b(\d+)[- ](?:levels?|layers?|tiers?|high|tall)\b|\b(?:levels?|layers?|"
                        r"tiers?)\s*(?:of|:|=)?\s*(\d+)\b", text, re.IGNORECASE)  # fmt: skip
     high = int(levels.group(1) or levels.group(2)) if levels else None
-    square = re.search(r"\bsquare\b", text, re.IGNORECASE)
+    # "9 cubes in the bottom layer": a layer is a square level (a row is a row)
+    square = re.search(r"\bsquare\b", text, re.IGNORECASE) or re.search(
+        r"\b(?:layer|level|tier)\b", m.group(0), re.IGNORECASE
+    )
     too_long = count > 10 and high is None  # no row of so many: a square of them
     if side >= 2 and side * side == count and (high == side or (square or too_long)):
         st.notes.append(f"read '{m.group(0).strip()}' as a {side} by {side} bottom level")

@@ -1988,17 +1988,23 @@ _REWRITES += [
         "",
     ),
     (re.compile(r",?\s*\bnear\s+the\s+edge\b", re.IGNORECASE), " ", ""),
+    (  # "along the left edge": running front to back, against it ("side": on that side)
+        re.compile(r"\balong\s+the\s+(left|right)\s+(?:edge|boundary|border)\b", re.IGNORECASE),
+        " along x at the {0} edge ",
+        "read '{0}' as running front to back against that edge of the workspace",
+    ),
     (
-        re.compile(
-            r"\balong\s+the\s+(left|right)\s+(?:edge|side|boundary|border)\b", re.IGNORECASE
-        ),
+        re.compile(r"\balong\s+the\s+(front|back)\s+(?:edge|boundary|border)\b", re.IGNORECASE),
+        " along y at the {0} edge ",
+        "read '{0}' as running left to right against that edge of the workspace",
+    ),
+    (
+        re.compile(r"\balong\s+the\s+(left|right)\s+side\b", re.IGNORECASE),
         " along x on the {0} ",
         "",
     ),
     (
-        re.compile(
-            r"\balong\s+the\s+(front|back)\s+(?:edge|side|boundary|border)\b", re.IGNORECASE
-        ),
+        re.compile(r"\balong\s+the\s+(front|back)\s+side\b", re.IGNORECASE),
         " along y at the {0} ",
         "",
     ),
