@@ -5334,3 +5334,11 @@ def test_along_an_edge_is_against_it_and_a_bottom_layer_is_square():
     s = plan("A pyramid with 9 cubes in the bottom layer.").spec.structures[0]
     assert (s.length, s.dims) == (3, 3)
     assert plan("a pyramid with 9 cubes on the bottom row").spec.structures[0].length == 9
+
+
+def test_the_middle_one_taken_away_leaves_its_space_with_no_gap_said():
+    # with no gap said, the two left closed up (0.15 m apart instead of where they stood)
+    r = plan("3 towers of 3, then remove the middle one")
+    ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
+    before = sorted({round(o.position[1], 3) for o in plan("3 towers of 3").layout.objects})
+    assert r.status == "success" and ys == [before[0], before[-1]]

@@ -304,6 +304,13 @@ _INNER_TAKEN = re.compile(r"^'[^']*\b(?:middle|second|centre|center)\b[^']*': \d
 def apply_gap(spec: Spec, st: ReadState) -> Spec:
     """The stated gap on the relations beside (else between the separate structures)."""
     if st.gap_m is None:
+        inner = next((n for n in st.notes if _INNER_TAKEN.search(n)), None)
+        widths = {getattr(s, "length", None) or 1 for s in spec.structures}
+        if inner is not None and len(spec.structures) == 2 and not spec.relations and widths == {1}:
+            # "three towers, then remove the middle one": the two left keep their places
+            gap = round(2 * st.cell.design.structure_gap + st.cell.cube[1], 6)
+            st.notes.append(f"the two left keep their places: {gap:g} m between them")
+            return spec.model_copy(update={"gap_m": gap})
         return spec
     beside = [
         r for r in spec.relations if r.kind == "next_to" and r.at in (None, "ends", "end", "sides")
