@@ -5342,3 +5342,19 @@ def test_the_middle_one_taken_away_leaves_its_space_with_no_gap_said():
     ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
     before = sorted({round(o.position[1], 3) for o in plan("3 towers of 3").layout.objects})
     assert r.status == "success" and ys == [before[0], before[-1]]
+
+
+def test_a_staircases_low_end_and_sizes_of_two_kinds_shared():
+    # "a tower of 2 at its foot": the relation was dropped, silently
+    r = plan("a staircase of 4 and a tower of 2 at its foot")
+    assert r.status == "success" and [(x.kind, x.side) for x in r.spec.relations] == [
+        ("next_to", "right")  # it climbs to the left: its foot is on the right
+    ]
+    r = plan("stairs 4 going up to the right, and a tower of 2 at the foot of the stairs")
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "left")]
+    r = plan("tower 3 next to a 3 step staircase, low end")
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "right")]
+    # "two walls, 4 long and 3 high": both that size (a list of members' sizes split them)
+    r = plan("two walls, 4 long and 3 high, 15 cm apart")
+    assert r.status == "success"
+    assert [(s.length, s.height) for s in r.spec.structures] == [(4, 3), (4, 3)]

@@ -654,6 +654,24 @@ def _corner_named(m: re.Match[str], st: ReadState, note: str) -> str:
     return " on one corner of it "
 
 
+def _stair_end(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower of 3 at its low end", "at the foot of the stairs": beside the staircase's low
+    end (which end follows the way it climbs)."""
+    said = _said(m)[0]
+    if not re.search(r"\b(?:stair|stairs|staircase|steps?)\b", m.string, re.IGNORECASE):
+        return m.group(0)  # "at the top end of the wall": no staircase named
+    if re.match(r"\s*,?\s*(?:a|an|one|two|three|the)\s", m.string[m.end() :], re.IGNORECASE):
+        return m.group(0)  # "against its tall end a tower of five": said before what it places
+    low = re.search(r"\b(?:low|lower|lowest|bottom|foot|start)\b", said, re.IGNORECASE)
+    st.stair_end = "low" if low else "high"
+    st.notes.append(f"read '{said}' as beside the staircase's {st.stair_end} end")
+    if m.group(0).lstrip().startswith(","):
+        return " "  # "tower 3 next to a 3 step staircase, low end": the relation is said
+    of = re.search(r"\bof\s+(the\s+\w+)\s*$", said, re.IGNORECASE)
+    touching = " touching " if said.lower().startswith("against") else " "
+    return f" next to {of.group(1) if of else 'it'}{touching}"
+
+
 def _beam_on_beam(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "then add a second beam on top of the first": a bridge carries one beam a span."""
     return _cannot(m, st, "a bridge or arch carries one beam on each span; SDI lays no beam on "
@@ -880,10 +898,18 @@ _NEXT_ONE = re.compile(
 
 
 _SIZE_LEAD = re.compile(
-    r"(?:\d+|two|three|four|five|six|seven|eight)\s*(?:(?:x|by)\s*\d+|(?:cubes?\s+)?(?:high|tall|long))\b",
+    r"(?:\d+|two|three|four|five|six|seven|eight)\s*(?:(x|by)\s*\d+|(?:cubes?\s+)?(high|tall|long))\b",
     re.IGNORECASE,
 )
 """A list item that starts with a size ("2x2", "4 high on the left")."""
+
+
+def _size_kind(item: str) -> str:
+    """Which size a list item gives: "by" (2x2), "high" (4 high, 4 tall) or "long"."""
+    m = _SIZE_LEAD.match(item)
+    if m is None:
+        return ""
+    return "by" if m.group(1) else "high" if m.group(2).lower() in ("high", "tall") else "long"
 
 
 _ONE_THE_OTHER = re.compile(
@@ -907,8 +933,9 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
         listed = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group(5))
         sized = list(itertools.takewhile(lambda i: bool(_SIZE_LEAD.match(i)), listed))
         tail = ", ".join(listed[len(sized) :])
-        if not n_.isdigit() or int(n_) != len(sized) or size.strip():
-            return m.group(0)
+        kinds = {_size_kind(i) for i in sized}
+        if not n_.isdigit() or int(n_) != len(sized) or size.strip() or len(kinds) > 1:
+            return m.group(0)  # "two walls, 4 long and 3 high": both, each that long and high
         st.notes.append(f"read '{said}' as {n_} {m.group(3)}s, one each")
         return " " + " and ".join(f"a {noun} {i}" for i in sized) + (f", {tail} " if tail else " ")
     items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[first.end() :])]
@@ -1181,6 +1208,7 @@ HANDLERS: dict[str, Handler] = {
     "{unsupported}": _unsupported,
     "{impossible}": _impossible,
     "{beam_on_beam}": _beam_on_beam,
+    "{stair_end}": _stair_end,
     "{corner_named}": _corner_named,
     "{at_most}": _at_most,
     "{corners}": _corners,

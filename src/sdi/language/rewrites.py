@@ -1772,6 +1772,17 @@ _REWRITES += [
         " running left to right ",
         "read '{0}' as running left to right",
     ),
+    (  # "a tower at its low end", "at the foot of the stairs": beside that end of a staircase
+        # (its top end is left as it was: a tower there may stand on the top step)
+        re.compile(
+            r"\b(?:at|by|beside|next\s+to|against)\s+(?:its|the)\s+(?:(?:low|lower|lowest|bottom)\s+end|foot)\b"
+            r"(?:\s+of\s+(?:it|the\s+(?:staircase|stairs|steps|stair)))?"
+            r"|\s*,\s*(?:at\s+)?(?:its\s+|the\s+)?(?:low|lower|bottom)\s+end\b",
+            re.IGNORECASE,
+        ),
+        "{stair_end}",
+        "",
+    ),
     (  # "then add a second beam on top of the first": one beam a span
         re.compile(
             r"\b(?:(?:add|put|place|lay|stack|set)\s+)?(?:a\s+second|another|one\s+more|an\s+extra|a\s+2nd)"
