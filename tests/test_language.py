@@ -5358,3 +5358,22 @@ def test_a_staircases_low_end_and_sizes_of_two_kinds_shared():
     r = plan("two walls, 4 long and 3 high, 15 cm apart")
     assert r.status == "success"
     assert [(s.length, s.height) for s in r.spec.structures] == [(4, 3), (4, 3)]
+
+
+def test_a_structure_beside_a_ring_that_encloses_another_is_built():
+    # the row in front of the ring was in the reading and missing from the layout, as success
+    r = plan("build a 5x5 ring with a tower of 4 inside it, and a row of 3 in front of the ring")
+    assert r.status == "success" and len(r.layout.objects) == 16 + 4 + 3
+    ring_front = min(o.position[0] for o in r.layout.objects if o.position[2] < 0.03
+                     and abs(o.position[1] - 0.2) < 1e-6)  # fmt: skip  # the ring's side column
+    row = [o for o in r.layout.objects if o.position[0] < ring_front - 1e-6]
+    assert len(row) == 3  # all three in front of the ring
+
+
+def test_a_take_back_and_each_legs_height():
+    # "scratch that, just one tower of 6": the three towers of 2 were built as well, silently
+    r = plan("3 towers of 2. scratch that, just one tower of 6")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [6]
+    # "each leg 2 cubes tall" was dropped (legs 3 high), silently
+    r = plan("build a table with 4 legs, each leg 2 cubes tall")
+    assert r.status == "success" and r.spec.structures[0].height == 2

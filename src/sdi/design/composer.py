@@ -499,41 +499,53 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
         children.setdefault(r.object, []).append(r.subject)
     units: dict[int, _Placed] = {}
 
+    def ordered(k: int) -> list[int]:
+        # on the object's own top first: "a tower in front of a wall, a row on top of the
+        # wall" stands on the wall, not on the taller tower merged beside it
+        return sorted(children.get(k, []), key=lambda c: subject_of[c].kind != "on_top_of")
+
+    def attach(base: _Placed, c: int) -> _Placed:
+        rel = subject_of[c]
+        if rel.kind == "around":
+            sub_spec = _ring_for(spec.structures[c], base, cell)
+            sizes = part_sizes(cell, sub_spec.part)
+            sub = _orient(sub_spec, generate(sub_spec, sizes), sizes)
+            inside = sub.half - cell.cube[0]  # the ring's walls are one part thick
+            if np.any(inside < base.half + 1e-9):  # no room between them: no inside
+                raise InfeasibleError(
+                    f"around: the {sub_spec.shape}'s inside is smaller than the "
+                    f"{base.spec.shape} it should enclose; make the ring at least "
+                    f"{round(2 * float(base.half.max()) / cell.cube[0]) + 3} parts on a side",
+                    parameter="length",
+                )
+            base = _merge(base, sub, np.zeros(2), 0.0)
+            for cc in ordered(c):  # "a ring around a tower, and a row in front of the ring"
+                if subject_of[cc].kind == "on_top_of":
+                    raise InfeasibleError(
+                        f"on top of a {sub_spec.shape} around another structure: SDI cannot "
+                        "stand a structure on a ring that encloses another; place it beside",
+                        parameter="relations",
+                    )
+                base = attach(base, cc)  # the ring is the unit's outside: beside it is beside that
+            return base
+        if rel.at is not None:
+            return _at_anchors(base, unit(c), rel.kind, rel.at, cell, rel.gap_m)
+        sub = unit(c)
+        if rel.kind == "on_top_of":
+            top, centre, top_half = _top(base)
+            if c not in children:
+                sub = units[c] = _along_top(sub, top_half, cell)
+            bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
+            return _merge(base, sub, centre, top - bottom)
+        return _beside(base, sub, rel.side, cell, rel.gap_m)
+
     def unit(k: int) -> _Placed:
         if k in units:
             return units[k]
         base = placed[k]
         assert base is not None
-        # on the object's own top first: "a tower in front of a wall, a row on top of the
-        # wall" stands on the wall, not on the taller tower merged beside it
-        ordered = sorted(children.get(k, []), key=lambda c: subject_of[c].kind != "on_top_of")
-        for c in ordered:
-            rel = subject_of[c]
-            if rel.kind == "around":
-                sub_spec = _ring_for(spec.structures[c], base, cell)
-                sizes = part_sizes(cell, sub_spec.part)
-                sub = _orient(sub_spec, generate(sub_spec, sizes), sizes)
-                inside = sub.half - cell.cube[0]  # the ring's walls are one part thick
-                if np.any(inside < base.half + 1e-9):  # no room between them: no inside
-                    raise InfeasibleError(
-                        f"around: the {sub_spec.shape}'s inside is smaller than the "
-                        f"{base.spec.shape} it should enclose; make the ring at least "
-                        f"{round(2 * float(base.half.max()) / cell.cube[0]) + 3} parts on a side",
-                        parameter="length",
-                    )
-                base = _merge(base, sub, np.zeros(2), 0.0)
-            elif rel.at is not None:
-                base = _at_anchors(base, unit(c), rel.kind, rel.at, cell, rel.gap_m)
-            else:
-                sub = unit(c)
-                if rel.kind == "on_top_of":
-                    top, centre, top_half = _top(base)
-                    if c not in children:
-                        sub = units[c] = _along_top(sub, top_half, cell)
-                    bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
-                    base = _merge(base, sub, centre, top - bottom)
-                else:
-                    base = _beside(base, sub, rel.side, cell, rel.gap_m)
+        for c in ordered(k):
+            base = attach(base, c)
         units[k] = base
         return base
 

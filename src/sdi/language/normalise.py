@@ -689,7 +689,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "Scratch that - a row of six instead", "scrap that, make it a row": the take-back is a
     # clause of its own, so that it takes the step before back
     (re.compile(r"\b(scratch|scrap|cancel|bin|ditch)\s+(that|it|this)\s*(?:[-,:;—–]+|\s-\s)\s*"
-                r"(?=(?:an?|one)\s)", re.I), r"\1 \2. "),
+                r"(?:just|only|instead|rather)?\s*(?=(?:an?|one|two|three|\d+)\s)", re.I),
+     r"\1 \2. "),
+    # "each leg 2 cubes tall": the legs that high
+    (re.compile(r"\s*,?\s*\beach\s+(?:leg|post|pillar)\s+(?:is\s+|being\s+)?(\d+|one|two|three|four|five)\s+"
+                r"(?:cubes?\s+)?(?:tall|high)\b", re.I), r" with legs \1 high"),
     # "lose the top step", "knock off the top level": take it away
     (re.compile(r"\b(?:lose|ditch|drop|knock\s+off|take\s+off|get\s+rid\s+of)\s+(?=the\s+(?:top|last|highest|"
                 r"upper)\s+(?:step|level|layer|tier|cube|course|row)\b)", re.I), "remove "),
