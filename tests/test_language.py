@@ -5377,3 +5377,14 @@ def test_a_take_back_and_each_legs_height():
     # "each leg 2 cubes tall" was dropped (legs 3 high), silently
     r = plan("build a table with 4 legs, each leg 2 cubes tall")
     assert r.status == "success" and r.spec.structures[0].height == 2
+
+
+def test_a_structure_on_a_ring_that_encloses_another_is_refused_with_the_reason():
+    from sdi.design.composer import compose
+    from sdi.errors import InfeasibleError
+
+    r = plan("build a 5x5 ring with a tower of 4 inside it, and a row of 3 in front of the ring")
+    rels = list(r.spec.relations)
+    rels[1] = rels[1].model_copy(update={"kind": "on_top_of", "side": None})
+    with pytest.raises(InfeasibleError, match="on top of a ring around another structure"):
+        compose(r.spec.model_copy(update={"relations": tuple(rels)}))

@@ -522,8 +522,8 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
             for cc in ordered(c):  # "a ring around a tower, and a row in front of the ring"
                 if subject_of[cc].kind == "on_top_of":
                     raise InfeasibleError(
-                        f"on top of a {sub_spec.shape} around another structure: SDI cannot "
-                        "stand a structure on a ring that encloses another; place it beside",
+                        "on top of a ring around another structure: SDI cannot stand a "
+                        "structure on a ring that encloses another; place it beside",
                         parameter="relations",
                     )
                 base = attach(base, cc)  # the ring is the unit's outside: beside it is beside that
