@@ -5388,3 +5388,23 @@ def test_a_structure_on_a_ring_that_encloses_another_is_refused_with_the_reason(
     rels[1] = rels[1].model_copy(update={"kind": "on_top_of", "side": None})
     with pytest.raises(InfeasibleError, match="on top of a ring around another structure"):
         compose(r.spec.model_copy(update={"relations": tuple(rels)}))
+
+
+def test_a_ring_with_towers_at_its_corners_and_a_tower_on_a_table():
+    # "a hollow square … with towers of 4 at the corners": a ring and one tower, as success
+    for command in ("a hollow square 4 by 4 with walls 2 high and taller towers of 4 at the "
+                    "corners", "a 4 by 4 ring with towers of 4 at the corners"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success" and [s.shape for s in r.spec.structures] == ["castle"]
+        heights = {}
+        for o in r.layout.objects:
+            key = (round(o.position[0], 3), round(o.position[1], 3))
+            heights[key] = heights.get(key, 0) + 1
+        assert sorted(heights.values())[-4:] == [4, 4, 4, 4]  # four corner towers 4 high
+    # "table with 4 legs and a tower of 2 on top": the tower became the legs (2 high), as
+    # success; now the tower stands on the table (which the design checks then refuse)
+    r = plan("table with 4 legs and a tower of 2 on top")
+    assert [(s.shape, getattr(s, "height", None)) for s in r.spec.structures] == [
+        ("canopy", None), ("tower", 2)
+    ]
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("on_top_of", 1, 0)]

@@ -764,11 +764,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"of\s+(?:the|that|this)\s+(row|wall|line|slab|platform)\b", re.I),
      r"on the middle of the \1"),
     # "an arch and a tower of 2 to its right": a structure of its own, not the arch's pillar
-    (re.compile(r"\b((?:an?|the)\s+(?:[\w-]+\s+){0,3}?(?:bridge|arch|archway|table|canopy|gate|pavilion|"
+    (re.compile(r"\b((?:(?:an?|the)\s+)?(?:[\w-]+\s+){0,3}?(?:bridge|arch|archway|table|canopy|gate|pavilion|"
                 r"shelter|castle|fort)\b[^.;]*?)\s+and\s+((?:then\s+)?(?:(?:put|place|set|add|build|stack)\s+)?(?:an?|one)\s+"
                 r"(?:tower|stack|column|pillar|cube)\b[^.;]{0,30}?\b(?:next\s+to\s+it|beside\s+it|behind\s+it|"
                 r"in\s+front\s+of\s+it|to\s+(?:the\s+)?(?:left|right)\s+of\s+it|to\s+its\s+(?:left|right)|"
-                r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+it))\b", re.I), r"\1; and \2"),
+                r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+it|on\s+top(?=\s*(?:$|[.,;!]))))\b",
+                re.I), r"\1; and \2"),
     # "a tower two cubes shorter than 6": the size it comes to
     (re.compile(r"\b(\d+|one|two|three|four|five)\s+(?:cubes?\s+|levels?\s+|parts?\s+)?(shorter|lower|taller|"
                 r"higher|longer)\s+than\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\b"
@@ -840,6 +841,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a wall with a tower of 4 beside each end": one at each end
     (re.compile(r"\b(?:beside|next\s+to|by|against)\s+(each|both|either)\s+(end|ends)\b", re.I),
      r"at \1 end"),
+    # "a hollow square 4 by 4 with walls 2 high and towers of 4 at the corners": a castle
+    (re.compile(r"\b(?:ring|enclosure|pen|hollow\s+square|square\s+ring)\b([^.;]*?)\bwith\s+"
+                r"((?:[^.;]*?\s+and\s+)?)(?:taller\s+|tall\s+)?towers\s+(?:of\s+(\d+)|(\d+)\s+(?:cubes?\s+)?"
+                r"(?:high|tall))\s+(?:at|on|in)\s+(?:the|its|all\s+(?:four|4)|each\s+of\s+the|every|"
+                r"all\s+the)\s+(?:four\s+)?corners?\b", re.I),
+     lambda m: f"castle{m.group(1)} with {m.group(2)}corner towers {m.group(3) or m.group(4)} "
+               "high"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),
