@@ -223,10 +223,10 @@ def relate(
                 )
             replace[s_idx] = subject.model_copy(update=dict.fromkeys(placed))
         side = r.side or (phrases[r.object].side if r.object is not None else None)
-        if kind == "next_to" and st.stair_end and obj_spec.shape == "staircase":
-            # "a tower at its low end": the side the staircase climbs from, or towards
-            side = _stair_side(obj_spec, st.stair_end)
-            st.stair_end = None
+        if kind == "next_to" and st.stair_foot and obj_spec.shape == "staircase":
+            # "a tower at its low end": the side the staircase climbs from
+            side = _stair_foot(obj_spec)
+            st.stair_foot = False
         at = next((a for a in st.anchors if a[0] == kind), None)
         if at is not None:
             st.anchors.remove(at)
@@ -327,15 +327,15 @@ def _counted_said(p: Phrase) -> str:
     return p.text[found[-1].start() :].strip(" ,") if found else p.text.strip(" ,")
 
 
-def _stair_side(stairs: StructureDraft, end: str) -> str:
-    """The side of its low or high end: a staircase climbs +y (left) unless its axis is x
-    (back) or it is turned half round (right, front)."""
+def _stair_foot(stairs: StructureDraft) -> str:
+    """The side of its low end: a staircase climbs +y (left) unless its axis is x (back) or it
+    is turned half round (right, front)."""
     turned = round((stairs.yaw_deg or 0.0) % 360) == 180
     if stairs.axis == "x":
         climbs = "front" if turned else "back"
     else:
         climbs = "right" if turned else "left"
-    return climbs if end == "high" else lx.OPPOSITE_SIDE[climbs]
+    return lx.OPPOSITE_SIDE[climbs]
 
 
 def _copy_if_asked(

@@ -9,6 +9,7 @@ import re
 from collections.abc import Callable
 
 from sdi.errors import SpecError
+from sdi.language.nouns import families_said
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
@@ -319,6 +320,11 @@ def _grid_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+_FACTORS = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5, "just": 1.0, "exactly": 1.0,
+            "equally": 1.0}  # fmt: skip
+"""What "… as tall" multiplies by ("twice as tall", "just as long")."""
+
+
 def _measure_named(before: str, family: str | None, measure: str, st: ReadState) -> int | None:
     """The size (in parts, as built) of the `family` structure named last in `before`: its
     height for "tall"/"high", else its length; None when none can be measured. The phrase the
@@ -358,7 +364,7 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
     not read as a vague "tall"."""
     said, (factor, *groups) = _said(m)
     word, family = groups[0], lx.SHAPE_WORDS.get(groups[1])
-    times = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5}.get(factor, 1.0)
+    times = _FACTORS.get(factor, 1.0)
     # "as long as the tower is tall": the wall's length, the tower's height
     measure = (groups[2] if len(groups) > 2 and groups[2] else word).lower()
     n = _measure_named(m.string[: m.start()], family, measure, st)
@@ -662,9 +668,8 @@ def _stair_end(m: re.Match[str], st: ReadState, note: str) -> str:
         return m.group(0)  # "at the top end of the wall": no staircase named
     if re.match(r"\s*,?\s*(?:a|an|one|two|three|the)\s", m.string[m.end() :], re.IGNORECASE):
         return m.group(0)  # "against its tall end a tower of five": said before what it places
-    low = re.search(r"\b(?:low|lower|lowest|bottom|foot|start)\b", said, re.IGNORECASE)
-    st.stair_end = "low" if low else "high"
-    st.notes.append(f"read '{said}' as beside the staircase's {st.stair_end} end")
+    st.stair_foot = True
+    st.notes.append(f"read '{said}' as beside the staircase's low end")
     if m.group(0).lstrip().startswith(","):
         return " "  # "tower 3 next to a 3 step staircase, low end": the relation is said
     of = re.search(r"\bof\s+(the\s+\w+)\s*$", said, re.IGNORECASE)
@@ -744,8 +749,7 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     if len(groups) == 4 and groups[3]:  # the second form: "a cube taller"
         groups = groups[2:]
     word = groups[0] or "1"  # "a cube taller"
-    factor = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5, "just": 1.0, "exactly": 1.0,
-              "equally": 1.0}.get(word)  # fmt: skip
+    factor = _FACTORS.get(word)
     times = re.fullmatch(r"(\w+)\s+times", word)
     if times and words_to_numbers([times.group(1)])[0].isdigit():
         factor = float(words_to_numbers([times.group(1)])[0])
@@ -981,8 +985,7 @@ def _more_of(m: re.Match[str], st: ReadState, note: str) -> str:
     n = words_to_numbers([groups[0]])[0]
     noun = groups[1] if len(groups) > 1 else ""
     family = lx.SHAPE_WORDS.get(noun) if noun else None
-    shapes = [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
-              if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    shapes = families_said(m.string[: m.start()])
     if not n.isdigit() or not 1 <= int(n) <= 20 or not shapes:
         return m.group(0)
     family = family or shapes[-1]

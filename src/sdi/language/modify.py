@@ -314,9 +314,9 @@ MODIFY = [
     ),
     # "a wall 6 long 2 high, then remove one column from the end": one shorter
     _op(
-        r"\b(?:remove|take\s+(?:off|away|out)|knock\s+(?:off|down)|drop|lose)\s+()(?:the\s+)?(?:last|end|final|"
+        r"\b(?:remove|take\s+(?:off|away|out)|knock\s+(?:off|down)|drop|lose)\s+(?:the\s+)?(?:last|end|final|"
         r"a|one|an)\s+(?:end\s+)?column\b(?:\s+(?:from|at|on|off)\s+(?:the|one|its)\s+(?:end|side))?",
-        "-length",
+        "-1length",
     ),
     # "5 towers of 2 in a line, then take away the middle one": one structure fewer
     _op(
@@ -806,8 +806,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     main = op.endswith("main")  # "make it 4", "make it 3 less": the size it was given, or its main
     if main:
         op = op[0]
-    elif op.endswith("length"):  # "make it 5 long"
-        op, key = op[0], "length"
+    elif op.endswith("length"):  # "make it 5 long", "remove one column from the end"
+        op, key = op.removesuffix("length"), "length"
     elif op == "+row":  # "add a row along the back": a slab's rows, not a course on top
         op, last_ = "+1", structures[_last_index(built)]
         if last_.shape in ("wall", "row") and not m.group(1):

@@ -9,7 +9,7 @@ from collections.abc import Callable
 from rapidfuzz.distance import DamerauLevenshtein
 
 from sdi.errors import SpecError
-from sdi.language.nouns import shape_alternation
+from sdi.language.nouns import families_said, shape_alternation
 from sdi.language.spacing import MOVED
 from sdi.language.units import to_millimetres
 from sdi.spec import lexicon as lx
@@ -344,12 +344,16 @@ def _put_the(text: str) -> str:
     return f"{before[: first.end()]} {m.group(2)}{before[first.end() :]}".rstrip(" .,;") + "."
 
 
+def _square_of(m: re.Match[str]) -> str:
+    """ "with 4 cubes in each layer": the square of that many (2 by 2; only squares match)."""
+    side = round(int(words_to_numbers([m.group(1).lower()])[0]) ** 0.5)
+    return f"{side} by {side}"
+
+
 def _named_last(text: str) -> str | None:
     """The family of the structure named last in `text` (unambiguous family nouns only)."""
-    text = re.sub(r"\b(?:in|into)\s+(?:a|one)\s+(?:row|line)\b", " ", text.lower())  # arranged
-    said = [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", text)
-            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
-    return said[-1] if said else None
+    said = families_said(re.sub(r"\b(?:in|into)\s+(?:a|one)\s+(?:row|line)\b", " ", text.lower()))
+    return said[-1] if said else None  # ("in a row", "in a line": how they stand, no row)
 
 
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
@@ -774,11 +778,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(\d+|one|two|three|four|five)\s+(?:cubes?\s+|levels?\s+|parts?\s+)?(shorter|lower|taller|"
                 r"higher|longer)\s+than\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\b"
                 r"(?!\s*(?:cm|mm|m|x|by)\b|\s+(?:cubes?\s+)?(?:high|tall|long)\b)", re.I),
-     lambda m: _than(m)),
+     _than),
     # "make a 3 by 3 slab on the left, actually the other side": moved to the opposite side
     (re.compile(r"\s*,?\s*\b(?:actually|no|sorry|wait|or\s+rather)\b\s*,?\s*(?:(?:put\s+it|make\s+it|"
                 r"build\s+it)\s+)?(?:on|at|to)?\s*the\s+other\s+(?:side|end)\b", re.I),
-     lambda m: _other_side(m)),
+     _other_side),
     # "two towers of 3, the left one and the right one": one on each side
     (re.compile(r"\b(two|2)\s+([a-z]+s(?:\s+of\s+\d+)?)\s*,\s*the\s+(left|front)(?:[\s-]hand)?\s+one\s+and\s+"
                 r"the\s+(right|back)(?:[\s-]hand)?\s+one\b", re.I),
@@ -820,8 +824,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a block 3 layers high with 4 cubes in each layer": a square of that many
     (re.compile(r"\bwith\s+(4|9|16|four|nine|sixteen)\s+(?:cubes?\s+)?(?:in|per|on)\s+(?:each|every)\s+"
                 r"(?:layer|level)\b", re.I),
-     lambda m: (lambda n: f"{n} by {n}")({"4": 2, "four": 2, "9": 3, "nine": 3, "16": 4,
-                                         "sixteen": 4}[m.group(1).lower()])),
+     _square_of),
     # "60 cm out", "600mm out": that far out from the robot
     (re.compile(r"\b(?:at\s+)?(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+out\b(?!\s+(?:of|from)\b)", re.I),
      r" \1 from the robot "),

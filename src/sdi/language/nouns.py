@@ -171,3 +171,9 @@ def shape_alternation(*, exclude: Collection[str] = (), min_len: int = 1) -> str
     "tower"): one-word names only, without `exclude`, at least `min_len` letters."""
     said = (w for w in lx.SHAPE_WORDS if w.isalpha() and len(w) >= min_len and w not in exclude)
     return "|".join(sorted(said, key=len, reverse=True))
+
+
+def families_said(text: str) -> list[str]:
+    """The families the unambiguous structure nouns of `text` name, in the order said."""
+    return [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", text.lower())
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip

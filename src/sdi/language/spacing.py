@@ -301,16 +301,24 @@ def take_gap(text: str, st: ReadState) -> str:
 _INNER_TAKEN = re.compile(r"^'[^']*\b(?:middle|second|centre|center)\b[^']*': \d+ left of the \d+")
 
 
+def _space_kept(spec: Spec, st: ReadState, gap_m: float) -> Spec | None:
+    """The middle one of three one-part-wide structures `gap_m` apart taken away: the two left
+    keep their places, its space between them (None when the two left are not one part wide)."""
+    widths = {getattr(s, "length", None) or 1 for s in spec.structures}
+    if len(spec.structures) != 2 or widths != {1}:
+        return None
+    gap = round(2 * gap_m + st.cell.cube[1], 6)
+    st.notes.append(f"the two left keep their places: {gap:g} m between them")
+    return spec.model_copy(update={"gap_m": gap})
+
+
 def apply_gap(spec: Spec, st: ReadState) -> Spec:
     """The stated gap on the relations beside (else between the separate structures)."""
+    inner = any(_INNER_TAKEN.search(n) for n in st.notes)
     if st.gap_m is None:
-        inner = next((n for n in st.notes if _INNER_TAKEN.search(n)), None)
-        widths = {getattr(s, "length", None) or 1 for s in spec.structures}
-        if inner is not None and len(spec.structures) == 2 and not spec.relations and widths == {1}:
-            # "three towers, then remove the middle one": the two left keep their places
-            gap = round(2 * st.cell.design.structure_gap + st.cell.cube[1], 6)
-            st.notes.append(f"the two left keep their places: {gap:g} m between them")
-            return spec.model_copy(update={"gap_m": gap})
+        # "three towers, then remove the middle one": at the gap SDI leaves between structures
+        if inner and not spec.relations:
+            return _space_kept(spec, st, st.cell.design.structure_gap) or spec
         return spec
     beside = [
         r for r in spec.relations if r.kind == "next_to" and r.at in (None, "ends", "end", "sides")
@@ -322,15 +330,11 @@ def apply_gap(spec: Spec, st: ReadState) -> Spec:
         return spec.model_copy(update={"relations": relations})
     related = {r.subject for r in spec.relations}
     if len(spec.structures) - len(related) >= 2:
-        inner = next((n for n in st.notes if _INNER_TAKEN.search(n)), None)
-        if inner is not None:
-            # "three towers a cube apart, then take the middle one away": the two left keep
-            # their places, its space between them
-            widths = {getattr(s, "length", None) or 1 for s in spec.structures}
-            if len(spec.structures) == 2 and widths == {1}:
-                gap = round(2 * st.gap_m + st.cell.cube[1], 6)
-                st.notes.append(f"the two left keep their places: {gap:g} m between them")
-                return spec.model_copy(update={"gap_m": gap})
+        if inner:
+            # "three towers a cube apart, then take the middle one away": at the gap said
+            kept = _space_kept(spec, st, st.gap_m)
+            if kept is not None:
+                return kept
             st.material.append("the space of the one taken away")
             st.notes.append("ignored the space of the one taken away: the others stand "
                             f"{st.gap_m:g} m apart, closed up")  # fmt: skip

@@ -104,8 +104,7 @@ def _by_sound() -> dict[str, list[str]]:
 _TEXTED = frozenset({"shud", "wud", "cud", "smth", "pls", "plz", "thx", "lil", "dunno"})
 """Words of a text message the normaliser expands ("shud" is should, not a shed)."""
 
-_GLUED = {"infront": "in front", "ontop": "on top", "nextto": "next to", "inbetween": "in between",
-          }  # fmt: skip
+_GLUED = {"infront": "in front", "ontop": "on top", "nextto": "next to", "inbetween": "in between"}
 """Two words a hurried writer runs together."""
 
 _SPOKEN = frozenset({"really", "something", "please", "small", "touching", "instead", "knock",
