@@ -5408,3 +5408,49 @@ def test_a_ring_with_towers_at_its_corners_and_a_tower_on_a_table():
         ("canopy", None), ("tower", 2)
     ]
     assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("on_top_of", 1, 0)]
+
+
+def _parts_by_height(r, height):
+    """The parts of the layout's columns `height` cubes tall."""
+    cols: dict = {}
+    for o in r.layout.objects:
+        cols.setdefault((round(o.position[0], 3), round(o.position[1], 3)), []).append(o)
+    return [o for parts in cols.values() if len(parts) == height for o in parts]
+
+
+def test_a_counted_group_stands_together_beside_the_other_structure():
+    # "a wall and two towers behind it": the second tower stood behind the first, silently; and
+    # "two towers of 4 behind a wall": the first stood free beside them
+    for command in ("a wall 6 long 2 high, 2 towers of 4 behind it",
+                    "two towers of 4 behind a wall 6 long 2 high",
+                    "a wall 6 long 2 high and 2 towers of 4 behind it"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", command
+        towers, wall = _parts_by_height(r, 4), _parts_by_height(r, 2)
+        assert len(towers) == 8 and len(wall) == 12, command
+        assert min(o.position[0] for o in towers) > max(o.position[0] for o in wall), command
+        assert "side by side" in " ".join(r.notes)
+    # two towers with nothing else named stay as they were: one behind the other
+    r = plan("two towers of 3, one behind the other")
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "back")]
+
+
+def test_three_high_and_two_towers_counts_the_towers():
+    # "a wall 3 high and two towers of 4": "two" was read as the towers' height (one tower of 2)
+    r = plan("a wall 3 long and two towers of 4")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [
+        ("wall", None), ("tower", 4), ("tower", 4)
+    ]
+    r = plan("a wall 3 high and two towers of 4")
+    assert [s.shape for s in r.spec.structures] == ["wall", "tower", "tower"]
+
+
+def test_towers_one_behind_the_other_joined_by_a_beam_span_front_to_back():
+    # the bridge was built left to right at the front, silently
+    for command in ("a tower of 3 in front and a tower of 3 behind it and a beam joining them",
+                    "a tower of 3 and another tower of 3 behind it with a beam on top"):
+        r = plan(command)
+        assert r.status == "success", command
+        pillars = _parts_by_height(r, 3)
+        assert len({round(o.position[1], 3) for o in pillars}) == 1, command  # one y
+        assert len({round(o.position[0], 3) for o in pillars}) == 2, command  # two x

@@ -61,6 +61,8 @@ def relate(
         obj = built(r.object, r.subject)
         if r.kind == "joined":
             pillars = built(r.subject, r.subject)
+            if not phrases[r.subject].text.strip() and phrases[r.subject].ref is None:
+                pillars = built(None, r.subject)  # "… behind it with a beam on top": "it" taken
             pillars = (
                 resolve(phrases, r.subject) if phrases[r.subject].ref is not None else (pillars)
             )
@@ -69,7 +71,7 @@ def relate(
                 relations.extend(between)
                 st.notes.append("placed between the two, side by side")
                 continue
-            _join(phrases, pillars, r.object, structures, replace, drop, st)
+            _join(phrases, pillars, r.object, structures, replace, drop, st, relations)
             continue
         s_ref = phrases[subj].ref is not None
         subj = resolve(phrases, subj)
@@ -80,7 +82,7 @@ def relate(
         if not phrases[subj].count or phrases[subj].spec is None:
             if phrases[subj].tokens and r.kind == "on" and obj is not None:
                 # "a beam on top of the two towers": the beam joins them
-                _join(phrases, obj, subj, structures, replace, drop, st)
+                _join(phrases, obj, subj, structures, replace, drop, st, relations)
                 continue
             st.material.append(f"relation {r.kind}")
             st.notes.append(f"ignored a relation '{r.kind}': its subject is not a structure")
@@ -120,6 +122,27 @@ def relate(
             s_idx = s_last
             o_idx = phrases[obj].first + phrases[obj].count - 1
         copies = _counted_copies(phrases[subj], structures) if not s_ref else []
+        members: list[int] = []
+        if (
+            r.kind == "next"
+            and copies
+            and s_idx == copies[-1]
+            and phrases[r.subject].structure is None
+            and (r.object is None or obj != subj)
+            and not st.anchors
+        ):
+            # "a wall and two towers behind it", "two towers of 4 behind a wall": the copies side
+            # by side as one unit beside the other (the last stood beside the one before it,
+            # or beside the wall with the first left free)
+            before = o_idx
+            if r.object is None:
+                o_idx = copies[0] - 1 if copies[0] > s_first else -1
+                if o_idx < 0 and obj is not None and obj != subj:
+                    o_idx = phrases[obj].first + phrases[obj].count - 1
+            if o_idx >= 0:
+                s_idx, members = copies[0], copies[1:]
+            else:
+                o_idx = before  # "two towers, one behind": nothing else to stand beside
         if r.kind == "on" and r.object is None and s_idx in copies[1:] and not st.anchors:
             # "slab 5x2, 3 towers of 2 on top": the copies stood on each other, silently; "it"
             # is the slab, and SDI stands one of them on it
@@ -176,7 +199,7 @@ def relate(
         ):
             picked = True  # "a wall, a tower behind it, and a cube on top of that": the last one
         if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1 and not picked:
-            _join(phrases, obj, subj, structures, replace, drop, st)
+            _join(phrases, obj, subj, structures, replace, drop, st, relations)
             continue
         subject = replace.get(s_idx, structures[s_idx])
         obj_spec = replace.get(o_idx, structures[o_idx])
@@ -245,6 +268,16 @@ def relate(
         relations.append(
             Relation(kind=kind, subject=s_idx, object=o_idx, side=side, at=at[1] if at else None)
         )
+        if members:
+            along = "back" if side in ("left", "right") else "left"
+            relations.extend(
+                Relation(kind="next_to", subject=m, object=s_idx, side=along) for m in members
+            )
+            where = lx.BESIDE_PHRASE.get(side or "", "beside")
+            st.notes.append(
+                f"placed the {len(members) + 1} {subject.shape}s side by side, together {where} "
+                f"the {obj_spec.shape}"
+            )
     for _, anchor in st.anchors:  # "on each corner" with nothing it could stand on
         where = f"at each {anchor.rstrip('s')}" if anchor.endswith("s") else f"at one {anchor}"
         st.material.append(where)
@@ -452,8 +485,10 @@ def _join(
     replace: dict[int, StructureDraft],
     drop: set[int],
     st: ReadState,
+    relations: list[Relation],
 ) -> None:
-    """Towers "joined by" a beam or bridge: a bridge standing on them as its pillars."""
+    """Towers "joined by" a beam or bridge: a bridge standing on them as its pillars, spanning
+    the way they were set beside each other ("a tower in front and a tower behind it")."""
     if pillars is None or not phrases[pillars].count:
         st.material.append("relation joined")
         st.notes.append("ignored 'joined by': no towers to join")
@@ -494,6 +529,12 @@ def _join(
         st.notes.append("ignored 'joined by': towers of different heights cannot carry one beam")
         return
     first = towers[0]
+    sides = {r.side for r in relations if r.kind == "next_to" and {r.subject, r.object} <= set(idx)}
+    axis = first.axis
+    if sides and sides <= {"front", "back"}:
+        axis = "x"
+    elif sides and sides <= {"left", "right"}:
+        axis = "y"
     bridge = StructureDraft(
         shape="bridge",
         height=first.height,
@@ -502,7 +543,7 @@ def _join(
         at_x=first.at_x,
         at_y=first.at_y,
         region=first.region,
-        axis=first.axis,
+        axis=axis,
     )
     if joiner is not None and phrases[joiner].spec is not None:
         j = phrases[joiner]

@@ -924,7 +924,9 @@ class _Parser:
                     continue
                 # "height of N", "length: N", "span of N", "base of N", "with N steps"
                 role: str | None = None
-                for back in (prev,) if prev in (",", ";", ":") else (prev, prev2):
+                # "3 high and two towers": the word before "and" sizes what came before
+                alone = (",", ";", ":", "and", "or", "then", "but")
+                for back in (prev,) if prev in alone else (prev, prev2):
                     if back in (
                         "height",
                         "tall",
