@@ -5454,3 +5454,36 @@ def test_towers_one_behind_the_other_joined_by_a_beam_span_front_to_back():
         pillars = _parts_by_height(r, 3)
         assert len({round(o.position[1], 3) for o in pillars}) == 1, command  # one y
         assert len({round(o.position[0], 3) for o in pillars}) == 2, command  # two x
+
+
+def test_an_arch_high_is_its_overall_height():
+    # "an arch 4 cubes tall" built 4-cube legs under two corbel levels and the beam: 7 tall
+    for command, legs in (("make an arch 4 cubes tall", 1), ("an arch 5 high", 2),
+                          ("an arch 30 cm tall", 3)):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", command
+        assert r.spec.structures[0].height == legs, command
+        top = max(o.position[2] + o.size[2] / 2 for o in r.layout.objects)
+        assert round(top / 0.05) == legs + 3, command
+    # the legs sized: as before
+    assert plan("an arch with legs 3 high").spec.structures[0].height == 3
+    # lower than any arch: reported, not built silently 6 high
+    r = plan("uh an arch three cubes high please")
+    assert r.status == "partial" and "at least 4 high" in " ".join(r.notes)
+    # no number said: SDI's arch
+    assert plan("a tiny archway").status == "success"
+
+
+def test_a_name_before_a_colon_and_a_bare_adjective_one():
+    # "an enclosure: a hollow square …, with walls 2 high": a second structure, a wall, silently
+    r = plan("We need an enclosure: a hollow square 5 cubes on each side, with walls 2 cubes high.")
+    assert r.status == "success"
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("enclosure", 5, 5, 2)
+    ]
+    # ", big one," read "one" as the pyramid's size: a single cube
+    r = plan("make pyramid, big one, on middle of table")
+    assert r.status == "success" and r.spec.structures[0].length >= 3
+    r = plan("two towers, big one and small one")
+    heights = [s.height for s in r.spec.structures]
+    assert len(heights) == 2 and heights[0] > heights[1]

@@ -156,6 +156,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         st.notes.append(f"read '{touch.group(0)}' as no gap between the structures")
     drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
+    specs = [_arch_overall(s, command, cell.cube[2], st) for s in specs]
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]
     taken_back = re.search(
@@ -661,6 +662,34 @@ _CLIMBS = re.compile(
     re.IGNORECASE,
 )
 _ROUND_LIKENESS = {"cone": "pyramid", "cones": "pyramid"}
+
+_LEG_WORDS = re.compile(
+    r"\b(?:legs?|pillars?|posts?|columns?|feet|foot|supports?|piers?|sides?|uprights?|jambs?)\b",
+    re.IGNORECASE,
+)
+
+
+def _arch_overall(s: StructureSpec, command: str, level_m: float, st: ReadState) -> StructureSpec:
+    """An arch "3 high" is 3 high overall (its height slot counts the legs under the two
+    corbel levels and the beam, 6 overall), unless the legs are the ones sized."""
+    if s.shape != "arch" or _LEG_WORDS.search(command):
+        return s
+    said, words = s.height, f"{s.height} high"
+    if said is None and s.height_m is not None:
+        said = round(s.height_m / level_m)
+        words = f"{s.height_m * 100:g} cm ({said} levels) high"
+    numbers = words_to_numbers(re.findall(r"\d+(?:\.\d+)?|[a-z]+", command.lower()))
+    if said is None or (s.height is not None and str(said) not in numbers):
+        return s  # not said: "a tiny arch" is SDI's small arch
+    above = min(2, s.span or 2) + 1  # the corbel levels and the beam
+    if said - above < 1:
+        st.material.append(f"arch {words}")
+        st.notes.append(f"an arch is at least {above + 1} high (1-cube legs, {above - 1} corbel "
+                        f"levels and the beam); say how high its legs are")  # fmt: skip
+        return s.model_copy(update={"height": 1, "height_m": None})
+    st.notes.append(f"read the arch's {words} as its overall height: legs {said - above} "
+                    f"high, {above - 1} corbel levels and the beam")  # fmt: skip
+    return s.model_copy(update={"height": said - above, "height_m": None})
 """Round things the lexicon reads as a family of cubes: said, not silently squared."""
 
 _RISE = re.compile(

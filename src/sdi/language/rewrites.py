@@ -2675,16 +2675,28 @@ _ONE = (
     r"(?!\s+(?:cubes?|parts?|blocks?|bricks?|high|tall|long|wide|deep|thick|layers?|levels?)\b)"
 )
 _WANTERS = frozenset({"i", "we", "you", "they", "d", "would", "should", "do", "really", "id"})
+_SIZED_ONE = (
+    r"(big|small|little|large|huge|tiny|tall|short|low|long|wide|narrow|giant|medium)\s+one\b"
+    r"(?!\s+(?:cubes?|parts?|blocks?|bricks?|high|tall|long|wide|deep|thick|layers?|levels?)\b)"
+)
+"""'big one' with no article, as operators type it."""
 _APPOSED_LIST = re.compile(
     r"(?<=,)\s*"
     + _ONE
     + r"((?:\s*(?:,|and|,\s*and)\s*"
     + _ONE.replace("([a-z]+)", "[a-z]+")
+    + r")+)"
+    + r"|(?<=,)\s*"
+    + _SIZED_ONE
+    + r"((?:\s*(?:,|and|,\s*and)\s*"
+    + _SIZED_ONE.replace("(big|", "(?:big|")
     + r")+)",
     re.IGNORECASE,
 )
 _APPOSED = re.compile(
-    r"(?<=,)\s*" + _ONE + r"(?!\s+(?:of|with|that|which|on|at|in|to|next|behind|beside|and)\b)",
+    r"(?<=,)\s*(?:" + _ONE + r"|" + _SIZED_ONE + r")"
+    r"(?!\s+(?:of|with|that|which|on|at|in|to|next|behind|beside|and|cubes?|parts?|high|tall|"
+    r"long)\b)",
     re.IGNORECASE,
 )
 """'two towers, a big one and a small one': one of each; 'a fence, a square one': the
@@ -2720,13 +2732,13 @@ def _described_again(text: str, st: ReadState) -> str:
     block, the likeness a description (with a structure named before it)."""
 
     def listed(m: re.Match[str]) -> str:
-        words = re.findall(_ONE, m.group(0), re.IGNORECASE)
+        words = re.findall(r"\b([a-z]+)\s+one\b", m.group(0), re.IGNORECASE)
         return " " + " and ".join(f"one {w}" for w in words) + " "
 
     text = _APPOSED_LIST.sub(listed, text)
 
     def again(m: re.Match[str]) -> str:
-        adjective = m.group(1).lower()
+        adjective = (m.group(1) or m.group(2)).lower()  # "a big one", "big one"
         if adjective in NUMBER_WORDS or (adjective in lx.SHAPE_WORDS and adjective not in _CLOSED):
             return m.group(0)
         st.notes.append(f"read '{m.group(0).strip()}' as the structure named before it")

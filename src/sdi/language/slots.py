@@ -32,6 +32,8 @@ from sdi.spec.structure_spec import SpecDraft, StructureDraft
 if TYPE_CHECKING:
     from spacy.tokens import Doc
 
+    from sdi.model.cell import CellConfig
+
 
 _COUNT_ONLY = re.compile(
     r"^\W*(?:\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)(?:\s+(?:tall|high|long))?\W*$", re.I
@@ -312,6 +314,12 @@ _ONE_CUBE = re.compile(
 def _parse_or_base(p: Phrase, st: ReadState) -> tuple[SpecDraft, list[str]]:
     """The phrase grammar's reading; "a sturdy base" with nothing else named is a platform,
     "a cube" on its own one part."""
+    named = _named_first(p.text, st.cell)
+    if named is not None:
+        # "We need an enclosure: a hollow square 5 on each side, with walls 2 high": the name,
+        # then the structure it names described (read as two, the walls a third)
+        head, p.text = named
+        st.notes.append(f"read '{head}' as the name of what follows the colon")
     try:
         return parse_phrase(p.text, st.cell)
     except SpecError:
@@ -335,6 +343,22 @@ def _parse_or_base(p: Phrase, st: ReadState) -> tuple[SpecDraft, list[str]]:
         st.notes.append(f"read '{base.group(0)}' as a platform (one layer)")
         p.text = text
         return spec, unused
+
+
+def _named_first(text: str, cell: CellConfig) -> tuple[str, str] | None:
+    """`text` is "<a family, no size>: <that family described>": the two parts; else None."""
+    head, colon, tail = text.partition(":")
+    if not colon or not tail.strip() or not re.search(r"\b(?:an?|one)\s+\w+\s*$", head):
+        return None
+    try:
+        (name,) = parse_phrase(head, cell)[0].structures
+        described = parse_phrase(tail, cell)[0].structures
+    except (SpecError, ValueError):
+        return None
+    sized = name.model_dump(exclude_none=True, exclude_defaults=True).keys() - {"shape"}
+    if sized or not described or described[0].shape != name.shape:
+        return None
+    return head.strip(), tail.strip()
 
 
 def _repeats(text: str, structures: list[StructureDraft]) -> bool:
