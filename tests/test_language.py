@@ -5487,3 +5487,36 @@ def test_a_name_before_a_colon_and_a_bare_adjective_one():
     r = plan("two towers, big one and small one")
     heights = [s.height for s in r.spec.structures]
     assert len(heights) == 2 and heights[0] > heights[1]
+
+
+def test_corrections_with_units_and_a_confirmed_restatement():
+    # "Wall 300 mm x 100 mm. Correction: 300 mm x 150 mm.": a wall and a slab, silently
+    r = plan("Wall 300 mm x 100 mm. Correction: 300 mm x 150 mm.")
+    assert r.status == "success"
+    assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("wall", 6, 3)]
+    # "… No, a wall of 4. Yes, a wall, 4 long and 2 high.": the yes named a second wall
+    r = plan("Build a tower of 4. No, a wall of 4. Yes, a wall, 4 long and 2 high.")
+    assert r.status == "success" and len(r.layout.objects) == 8
+    assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("wall", 4, 2)]
+    # a "yes" before a structure not named before is no restatement
+    r = plan("a wall of 4. Yes, a tower of 2 too")
+    assert [s.shape for s in r.spec.structures] == ["wall", "tower"]
+
+
+def test_forget_the_second_one_and_in_line():
+    # "actually forget the second one": both towers were built, with no note
+    for command in ("build a tower of four then put a tower of two next to it actually forget "
+                    "the second one", "a tower of 4 and a tower of 2. forget the second one"):
+        r = plan(command)
+        assert r.status == "success", command
+        assert [s.height for s in r.spec.structures] == [4] and not r.spec.relations
+    # "in line" was a row of its own, and "the last one" then took the row away
+    r = plan("please build three tower of two cube in line, then remove the last one")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 2]
+    # "in line with the wall": beside it, not a row between them
+    r = plan("a tower in line with the wall")
+    assert [s.shape for s in r.spec.structures] == ["tower", "wall"]
+    assert [x.kind for x in r.spec.relations] == ["next_to"]
+    # "two pyramid next each other": one pyramid
+    r = plan("two pyramid next each other, both have base of 3 cubes")
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("pyramid", 3)] * 2

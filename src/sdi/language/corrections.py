@@ -31,7 +31,8 @@ _REGION = r"(?:" + "|".join(sorted(map(re.escape, lx.REGION_WORDS), key=len, rev
 
 # The kinds of value a correction can replace, most specific first: (kind, pattern).
 _KINDS: tuple[tuple[str, re.Pattern[str]], ...] = (
-    ("size", re.compile(rf"\b{_NUMBER}(?:\s*(?:x|by)\s*{_NUMBER})+\b", re.I)),
+    ("size", re.compile(rf"\b{_NUMBER}(?:\s*{_UNIT})?(?:\s*(?:x|by)\s*{_NUMBER}(?:\s*{_UNIT})?)+\b",
+                        re.I)),
     ("length", re.compile(rf"\b{_NUMBER}\s*{_UNIT}\b", re.I)),
     ("count", re.compile(rf"\b{_NUMBER}\b", re.I)),
     ("region", re.compile(rf"\b(?:{_REGION})(?:\s+(?:{_REGION}))?\b", re.I)),
@@ -204,11 +205,30 @@ _WAS_WRONG = re.compile(
 )
 
 
+_CONFIRMED = re.compile(
+    r"(?:(?<=[.;!?])|^)(\s*)(?:yes|yeah|yep|right|exactly|correct|that'?s\s+(?:it|right))\b"
+    r"\s*[,!.:;—–-]*\s*(?:an?|one)\s+([a-z]+)\b",
+    re.IGNORECASE,
+)
+
+
+def _confirmed(m: re.Match[str], notes: list[str]) -> str:
+    """ "…, no, a wall of 4. Yes, a wall, 4 long and 2 high": the wall named before, said
+    again with more about it (it was a second wall)."""
+    family = lx.SHAPE_WORDS.get(m.group(2).lower())
+    before = [lx.SHAPE_WORDS.get(w) for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())]
+    if family is None or family not in before:
+        return m.group(0)
+    notes.append(f"read '{m.group(0).strip()}' as the {m.group(2)} named before, said again")
+    return f"{m.group(1)}the {m.group(2)}"
+
+
 def correct(text: str, notes: list[str], material: list[str] | None = None) -> str:
     """`text` with every "old …, no wait, new" replaced by the corrected wording; a correction
     whose old value the command says more than once is also in `material`."""
     if _MARKER.search(text):
         text = _WAS_WRONG.sub(" ", text)
+    text = _CONFIRMED.sub(lambda m: _confirmed(m, notes), text)
     text = _names_again(text, notes)
     text = _not_a_but_b(text, notes)
     text = _SPOKEN_NO.sub(r"\1, no, ", text)

@@ -320,8 +320,8 @@ MODIFY = [
     ),
     # "5 towers of 2 in a line, then take away the middle one": one structure fewer
     _op(
-        r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch)\s+the\s+(middle|first|"
-        r"second|last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)"
+        r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch|forget(?:\s+about)?|"
+        r"scrap|cancel|delete|get\s+rid\s+of)\s+the\s+(middle|first|second|last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)"
         r"(?:[\s-]*hand)?\s+"
         r"(?:one|tower|stack|column|pillar|row|wall)\b"
         r"|\b(?:take|knock|pull)\s+the\s+(middle|first|last|second|tallest|highest|biggest|shortest|"
@@ -677,16 +677,26 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
         if found_at is None:
             return None  # no single one: the command does not say which
         index = found_at
+    gone = _take_out(index, before, built, structures)
+    left = sum(q.count for q in built)
+    size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
+    side = f", the one on the {which}" if which in ("left", "right", "front", "back") else ""
+    return f"{left} left of the {left + 1}{size}{side}"
+
+
+def _take_out(index: int, before: list[Phrase], built: list[Phrase],
+              structures: list[StructureDraft]) -> StructureDraft:  # fmt: skip
+    """Structure `index` taken out of the reading; a phrase left with none is undone (its
+    relations go with it)."""
     gone = structures.pop(index)
     owner = next(q for q in built if q.first <= index < q.first + q.count)
     for q in before:
         if q.count and q.first > index:
             q.first -= 1
     owner.count -= 1
-    left = sum(q.count for q in built)
-    size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
-    side = f", the one on the {which}" if which in ("left", "right", "front", "back") else ""
-    return f"{left} left of the {left + 1}{size}{side}"
+    if owner.count == 0:
+        owner.undone = True
+    return gone
 
 
 def _built_indices(built: list[Phrase]) -> list[int]:
@@ -744,14 +754,7 @@ def _drop_family(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], bui
     if len(found) != 1:
         return None
     index = found[0]
-    gone = structures.pop(index)
-    owner = next(q for q in built if q.first <= index < q.first + q.count)
-    for q in before:
-        if q.count and q.first > index:
-            q.first -= 1
-    owner.count -= 1
-    if owner.count == 0:
-        owner.undone = True  # its relations go with it
+    gone = _take_out(index, before, built, structures)
     said = ", ".join(f"{k} {v:g}" for k, v in _sizes(gone).items())
     where = f", on the {gone.region}" if gone.region else ""
     return f"the {gone.shape} taken back ({said or 'its default size'}{where})"

@@ -357,6 +357,10 @@ def _named_last(text: str) -> str | None:
 
 
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
+    # "three towers of two in line": in a line (the line was read as a row of its own)
+    (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
+    # "a tower in line with the wall": beside it (the line was a row of its own, silently)
+    (re.compile(r"\bin\s+(?:a\s+)?line\s+with\b", re.I), "next to"),
     # a contract's "four (4)": the figure repeats the word (first, so every
     # rule sees one number); one that disagrees is kept
     (re.compile(r"\b([a-z]+)\s*\(\s*(\d+)\s*\)", re.I),

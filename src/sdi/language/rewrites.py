@@ -2648,7 +2648,10 @@ _COUNTED_SINGULAR = re.compile(
     r"(?<!\ba\s)(?<!\ban\s)(?<!\bthe\s)(?<!\bone\s)(?<!\bthat\s)(?<!\bthis\s)"
     r"\b([2-9]|1[0-2]|two|three|four|five|six|seven|eight|nine|ten)\s+([a-z]+)\b(?!-)"
     r"(?=\s*,?\s*(?:of|with)\s+(?:\d|one|two|three|four|five|six|seven|eight|nine|ten)\b|"
-    r"\s*,\s*(?:(?:long|high|tall|wide)\s+\d|\d+\s+(?:long|high|tall|wide|cubes?)\b))",
+    r"\s*,\s*(?:(?:long|high|tall|wide)\s+\d|\d+\s+(?:long|high|tall|wide|cubes?)\b)|"
+    # "two pyramid next each other": a relation only several have
+    r"\s+(?:(?:next\s+(?:to\s+)?|beside\s+|by\s+|near\s+)?each\s+other|side\s+by\s+side|"
+    r"in\s+a\s+(?:row|line))\b)",
     re.IGNORECASE,
 )
 

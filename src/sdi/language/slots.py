@@ -41,8 +41,8 @@ _COUNT_ONLY = re.compile(
 
 
 _DROPS = re.compile(
-    r"^\W*(?:then\s+|and\s+|now\s+)?(?:(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip)"
-    r"\s+the\s+(?:\w+est|last|first|second|middle)\b|undo\b|scratch\s+that\b|(?:cancel|forget|scrap|"
+    r"^\W*(?:then\s+|and\s+|now\s+|actually\s+|oh\s+)?(?:(?:take\s+(?:out|away|down)|remove|"
+    r"leave\s+out|drop|skip|forget(?:\s+about)?|scrap|cancel|delete|get\s+rid\s+of|ditch|lose)\s+the\s+(?:\w+est|last|first|second|middle)\b|undo\b|scratch\s+that\b|(?:cancel|forget|scrap|"
     r"delete|take\s+back|get\s+rid\s+of)\s+(?:the\s+)?(?:last|latest|previous|that|it)\b)",
     re.IGNORECASE,
 )
