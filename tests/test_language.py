@@ -5520,3 +5520,26 @@ def test_forget_the_second_one_and_in_line():
     # "two pyramid next each other": one pyramid
     r = plan("two pyramid next each other, both have base of 3 cubes")
     assert [(s.shape, s.length) for s in r.spec.structures] == [("pyramid", 3)] * 2
+
+
+def test_inside_at_the_end_and_a_gate_beside_a_tower():
+    # "ring 5x5, 2 high, tower 3 insdie.": the tower stood beside the ring, silently
+    r = plan("ring 5x5, 2 high, tower 3 insdie.")
+    assert r.status == "success"
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("around", 0, 1)]
+    assert plan("ring 5x5 1 high, dont put anything inside").spec.relations == ()
+    # "… with a beam on them, and a tower of 4 to the right": the tower stood on the beam
+    r = plan("something like a gate: two pillars 3 high with a beam on them, and a tower of 4 "
+             "to the right")  # fmt: skip
+    assert r.status == "success"
+    assert [s.shape for s in r.spec.structures] == ["bridge", "tower"]
+    assert r.spec.relations == ()
+    cubes = [o for o in r.layout.objects if max(o.size) < 0.1]
+    top = [o for o in cubes if o.position[2] > 0.16]  # the tower's fourth cube
+    assert len(top) == 1
+    tower_y = top[0].position[1]
+    pillars = [o for o in cubes if abs(o.position[1] - tower_y) > 1e-6]
+    assert len(pillars) == 6 and tower_y < min(o.position[1] for o in pillars)  # to the right
+    # "a bridge, and a tower of 4 to the right": one bridge on pillars of 4, silently
+    r = plan("a bridge, and a tower of 4 to the right")
+    assert [s.shape for s in r.spec.structures] == ["bridge", "tower"]

@@ -28,6 +28,7 @@ import re
 from typing import TYPE_CHECKING
 
 from sdi.errors import SDIError
+from sdi.language.nouns import BEAMS
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -81,10 +82,14 @@ def _work_table(tok: Token) -> bool:
     )
 
 
-def _relation_cues(doc: Doc) -> list[str]:
+def _relation_cues(doc: Doc, spanned: bool) -> list[str]:
+    """Words relating structures; with `spanned` (a bridge, arch or table built), not a beam
+    laid on its own pillars ("two pillars 3 high with a beam on them")."""
     cues = []
     for tok in doc:
         if tok.lower_ not in _RELATION_WORDS:
+            continue
+        if spanned and tok.head.lower_ in BEAMS:
             continue
         objects = [c for c in tok.children if c.dep_ in ("pobj", "dobj", "obj")]
         objects = [o for o in objects if not _work_table(o)]
@@ -539,7 +544,8 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
                         f"built on the {where}")  # fmt: skip
     n = len(spec.structures)
     if n >= 2 and not spec.relations:
-        for cue in _relation_cues(doc):
+        spanned = any(s.shape in ("bridge", "arch", "canopy") for s in spec.structures)
+        for cue in _relation_cues(doc, spanned):
             st.material.append(cue)
             st.notes.append(
                 f"ignored '{cue}': the structures are built side by side, not related as "

@@ -8,7 +8,13 @@ from typing import TYPE_CHECKING
 
 from sdi.language import words
 from sdi.language.clauses import split_clauses
-from sdi.language.nouns import SPACE_WORDS, is_component, names_structure, object_head
+from sdi.language.nouns import (
+    SPACE_WORDS,
+    beam_only,
+    is_component,
+    names_structure,
+    object_head,
+)
 from sdi.language.state import Phrase, PhraseRelation
 from sdi.spec import lexicon as lx
 
@@ -171,10 +177,17 @@ def find_phrases(doc: Doc) -> tuple[list[Phrase], list[PhraseRelation]]:
             # "… a 4x1 row on it. Then 3x1. Then 2x1.": a step in a stack goes on top
             rels.append(PhraseRelation("on", first_phrase, None))
             continue
-        stacking = any(r.kind == "on" for r in new)
+        # "… with a beam on them. Then a tower of 4": a bridge's own beam starts no stack
+        stacking = any(
+            r.kind == "on" and not beam_only(_text(doc, phrases[r.subject].tokens)) for r in new
+        )
     for p in phrases:
-        p.text = "".join(doc[k].text_with_ws for k in p.tokens).strip()
+        p.text = _text(doc, p.tokens).strip()
     return phrases, rels
+
+
+def _text(doc: Doc, tokens: list[int]) -> str:
+    return "".join(doc[k].text_with_ws for k in tokens)
 
 
 def _clause_phrases(

@@ -356,9 +356,19 @@ def _named_last(text: str) -> str | None:
     return said[-1] if said else None  # ("in a row", "in a line": how they stand, no row)
 
 
+_ENCLOSING = re.compile(
+    r"\b(?:rings?|enclosures?|fences?|pens?|castles?|frames?|corrals?|courtyards?|hollow)\b", re.I
+)
+_EMPTY_INSIDE = re.compile(
+    r"\b(?:hollow|empty|open|anything|nothing|something|no)\s+(?:\w+\s+)?$", re.I
+)
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # "three towers of two in line": in a line (the line was read as a row of its own)
     (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
+    # "ring 5x5, 2 high, tower 3 inside.": inside the ring named before (it stood beside it)
+    (re.compile(r"\b(inside|within)(?=\s*(?:[.;!?]|$))", re.I),
+     lambda m: f"{m.group(1)} it" if _ENCLOSING.search(m.string[: m.start()])
+     and not _EMPTY_INSIDE.search(m.string[: m.start()]) else m.group(0)),
     # "a tower in line with the wall": beside it (the line was a row of its own, silently)
     (re.compile(r"\bin\s+(?:a\s+)?line\s+with\b", re.I), "next to"),
     # a contract's "four (4)": the figure repeats the word (first, so every
@@ -776,7 +786,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"shelter|castle|fort)\b[^.;]*?)\s+and\s+((?:then\s+)?(?:(?:put|place|set|add|build|stack)\s+)?(?:an?|one)\s+"
                 r"(?:tower|stack|column|pillar|cube)\b[^.;]{0,30}?\b(?:next\s+to\s+it|beside\s+it|behind\s+it|"
                 r"in\s+front\s+of\s+it|to\s+(?:the\s+)?(?:left|right)\s+of\s+it|to\s+its\s+(?:left|right)|"
-                r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+it|on\s+top(?=\s*(?:$|[.,;!]))))\b",
+                r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+it|on\s+top(?=\s*(?:$|[.,;!]))|"
+                r"(?:to|on)\s+the\s+(?:left|right)(?:\s+side)?(?=\s*(?:$|[.,;!]))))\b",
                 re.I), r"\1; and \2"),
     # "a tower two cubes shorter than 6": the size it comes to
     (re.compile(r"\b(\d+|one|two|three|four|five)\s+(?:cubes?\s+|levels?\s+|parts?\s+)?(shorter|lower|taller|"
