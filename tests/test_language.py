@@ -5543,3 +5543,22 @@ def test_inside_at_the_end_and_a_gate_beside_a_tower():
     # "a bridge, and a tower of 4 to the right": one bridge on pillars of 4, silently
     r = plan("a bridge, and a tower of 4 to the right")
     assert [s.shape for s in r.spec.structures] == ["bridge", "tower"]
+
+
+def test_lists_likenesses_and_what_it_makes():
+    # "two bridges … and a tower of five behind them": the tower was the bridges' pillars
+    r = plan("two bridges um side by side and a tower of five behind them")
+    assert [s.shape for s in r.spec.structures] == ["bridge", "bridge", "tower"]
+    assert ("next_to", 2, "back") in [(x.kind, x.subject, x.side) for x in r.spec.relations]
+    # "towers 2 3 4 5": one tower of 2 (the 2 was the count)
+    for command in ("towers 2 3 4 5, left to right, 1 cube gaps.", "towers: 2, 3, 4 and 5"):
+        r = plan(command)
+        assert r.status == "success", command
+        assert sorted(s.height for s in r.spec.structures) == [2, 3, 4, 5], command
+    # "a flat square like a floor six by six": the size went with the likeness (4 by 4)
+    r = plan("okay so i want um a big flat square of cubes like a floor six by six")
+    assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("grid", 6, 6)]
+    # "… That's a small wall.": a second wall
+    r = plan("Two rows of four cubes, one on top of the other. That's a small wall.")
+    assert r.status == "success" and len(r.layout.objects) == 8
+    assert len(r.spec.structures) == 1

@@ -365,6 +365,10 @@ _EMPTY_INSIDE = re.compile(
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # "three towers of two in line": in a line (the line was read as a row of its own)
     (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
+    # "towers 2 3 4 5", "towers: 2, 3, 4 and 5": one of each (the first was the count)
+    (re.compile(r"\b(towers|stacks|columns|pillars|piles)\s*:?\s+((?:\d+\s*(?:,\s*|\s+and\s+|\s+)){2,}\d+)\b"
+                r"(?!\s*(?:x|by|cm|mm|m|cubes?|high|tall|long|wide|levels?|apart|stacked)\b)", re.I),
+     lambda m: f"{m.group(1)} of " + ", ".join(re.findall(r"\d+", m.group(2)))),
     # "ring 5x5, 2 high, tower 3 inside.": inside the ring named before (it stood beside it)
     (re.compile(r"\b(inside|within)(?=\s*(?:[.;!?]|$))", re.I),
      lambda m: f"{m.group(1)} it" if _ENCLOSING.search(m.string[: m.start()])
@@ -783,10 +787,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      r"on the middle of the \1"),
     # "an arch and a tower of 2 to its right": a structure of its own, not the arch's pillar
     (re.compile(r"\b((?:(?:an?|the)\s+)?(?:[\w-]+\s+){0,3}?(?:bridge|arch|archway|table|canopy|gate|pavilion|"
-                r"shelter|castle|fort)\b[^.;]*?)\s+and\s+((?:then\s+)?(?:(?:put|place|set|add|build|stack)\s+)?(?:an?|one)\s+"
-                r"(?:tower|stack|column|pillar|cube)\b[^.;]{0,30}?\b(?:next\s+to\s+it|beside\s+it|behind\s+it|"
-                r"in\s+front\s+of\s+it|to\s+(?:the\s+)?(?:left|right)\s+of\s+it|to\s+its\s+(?:left|right)|"
-                r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+it|on\s+top(?=\s*(?:$|[.,;!]))|"
+                r"shelter|castle|fort)(?:e?s)?\b[^.;]*?)\s+and\s+((?:then\s+)?(?:(?:put|place|set|add|build|stack)\s+)?(?:an?|one)\s+"
+                r"(?:tower|stack|column|pillar|cube)\b[^.;]{0,30}?\b(?:next\s+to\s+(?:it|them)|"
+                r"beside\s+(?:it|them)|behind\s+(?:it|them)|in\s+front\s+of\s+(?:it|them)|"
+                r"to\s+(?:the\s+)?(?:left|right)\s+of\s+(?:it|them)|to\s+(?:its|their)\s+(?:left|right)|"
+                r"on\s+(?:top\s+of\s+)?it|onto\s+it|near\s+(?:it|them)|on\s+top(?=\s*(?:$|[.,;!]))|"
                 r"(?:to|on)\s+the\s+(?:left|right)(?:\s+side)?(?=\s*(?:$|[.,;!]))))\b",
                 re.I), r"\1; and \2"),
     # "a tower two cubes shorter than 6": the size it comes to

@@ -2713,7 +2713,9 @@ _LIKE_A = re.compile(
     r"looking\s+like|in\s+the\s+style\s+of|(?:it\s+|that\s+|so\s+(?:it|that\s+it)\s+)?"
     r"(?:should|will|would|ought\s+to)\s+(?:come\s+out|end\s+up|turn\s+out|look)\s+(?:as|like)|"
     r"(?:expected|end|final)(?:\s+(?:result|outcome|shape))?\s*(?:should\s+be|will\s+be|is)?\s*:|"
-    r"(?:the\s+)?(?:result|outcome)\s*(?:should\s+be|will\s+be|is)?\s*:)"
+    r"(?:the\s+)?(?:result|outcome)\s*(?:should\s+be|will\s+be|is)?\s*:|"
+    # "Two rows of four, one on top of the other. That's a small wall.": what they make
+    r"(?<=[.;!?,]\s)(?:so\s+)?(?:that'?s|that\s+is|which\s+is|(?:which|that|this)\s+makes))"
     r"\s+(?:a|an|one)\s+[^,.;:!?]*"
     # a user story's "Done when: one row, seven long.": the whole sentence describes the result
     r"|(?:,\s*|\s+)\b(?:(?:done|complete|finished|accepted)\s+when|acceptance(?:\s+criteria)?|"
@@ -2760,14 +2762,27 @@ def _described_again(text: str, st: ReadState) -> str:
         if not any(w in lx.SHAPE_WORDS for w in before):
             return m.group(0)  # "something like a park bench": the likeness is all there is
         said = m.group(0).strip(" ,")
+        if _WHAT_IT_MAKES.match(said) and re.search(rf"\d|\b{_N}\b", said, re.IGNORECASE):
+            return m.group(0)  # "… that's a tower of 5": a size, not a name for it
         if _RESULT.search(said):  # "Expected result: a 2 x 3 x 2 block": checked at the end
             st.claims.append(("result", said))
-        else:
-            st.notes.append(f"read '{said}' as a description, not a structure")
+            return " "
+        size = _LIKENESS_SIZE.search(said)
+        if size is not None:  # "a flat square like a floor six by six": the size is the square's
+            st.notes.append(f"read '{said[: size.start()].strip()}' as a description, not a "
+                            f"structure, and '{size.group(0)}' as the size")  # fmt: skip
+            return f" , {size.group(0)} "
+        st.notes.append(f"read '{said}' as a description, not a structure")
         return " "
 
     return _LIKE_A.sub(likeness, text)
 
+
+_N = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+_WHAT_IT_MAKES = re.compile(r"(?:so\s+)?(?:that'?s|that\s+is|which\s+is|(?:which|that|this)\s+makes)\b",
+                            re.IGNORECASE)  # fmt: skip
+_LIKENESS_SIZE = re.compile(rf"\b{_N}\s*(?:x|by)\s*{_N}(?:\s*(?:x|by)\s*{_N})?\b", re.IGNORECASE)
+"""A size said inside a likeness ("like a floor six by six")."""
 
 _LEVEL_LABEL = re.compile(
     r"(?:^|(?<=[.;,!\n]))\s*(?:level|layer|tier|floor|storey|story|lvl)\s*"
