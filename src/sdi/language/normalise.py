@@ -366,8 +366,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "three towers of two in line": in a line (the line was read as a row of its own)
     (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
     # "towers 2 3 4 5", "towers: 2, 3, 4 and 5": one of each (the first was the count)
-    (re.compile(r"\b(towers|stacks|columns|pillars|piles)\s*:?\s+((?:\d+\s*(?:,\s*|\s+and\s+|\s+)){2,}\d+)\b"
-                r"(?!\s*(?:x|by|cm|mm|m|cubes?|high|tall|long|wide|levels?|apart|stacked)\b)", re.I),
+    (re.compile(r"\b(towers|stacks|columns|pillars|piles)\s*:?\s+"
+                r"((?:\d+\s*(?:,\s*|\s+and\s+|\s+)){2,}\d+)\b"
+                r"(?!\s*(?:x|by|cm|mm|m|cubes?|high|tall|long|wide|levels?|apart|stacked)\b)",
+                re.I),
      lambda m: f"{m.group(1)} of " + ", ".join(re.findall(r"\d+", m.group(2)))),
     # "ring 5x5, 2 high, tower 3 inside.": inside the ring named before (it stood beside it)
     (re.compile(r"\b(inside|within)(?=\s*(?:[.;!?]|$))", re.I),

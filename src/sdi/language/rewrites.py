@@ -2779,8 +2779,9 @@ def _described_again(text: str, st: ReadState) -> str:
 
 
 _N = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
-_WHAT_IT_MAKES = re.compile(r"(?:so\s+)?(?:that'?s|that\s+is|which\s+is|(?:which|that|this)\s+makes)\b",
-                            re.IGNORECASE)  # fmt: skip
+_WHAT_IT_MAKES = re.compile(
+    r"(?:so\s+)?(?:that'?s|that\s+is|which\s+is|(?:which|that|this)\s+makes)\b", re.IGNORECASE
+)
 _LIKENESS_SIZE = re.compile(rf"\b{_N}\s*(?:x|by)\s*{_N}(?:\s*(?:x|by)\s*{_N})?\b", re.IGNORECASE)
 """A size said inside a likeness ("like a floor six by six")."""
 
