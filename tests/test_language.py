@@ -5562,3 +5562,21 @@ def test_lists_likenesses_and_what_it_makes():
     r = plan("Two rows of four cubes, one on top of the other. That's a small wall.")
     assert r.status == "success" and len(r.layout.objects) == 8
     assert len(r.spec.structures) == 1
+
+
+def test_apart_along_an_axis_a_cube_on_the_beam_a_clipped_wall_and_a_frame():
+    # "two slabs, 50 mm apart along x": laid side by side, silently (x runs front to back)
+    r = plan("Two 3 x 3 slabs, 50 mm apart along x.")
+    assert [(x.kind, x.side, x.gap_m) for x in r.spec.relations] == [("next_to", "back", 0.05)]
+    # "a bridge with a cube sitting in the middle of the beam": the cube was the pillars' height
+    r = plan("a bridge with a cube sitting in the middle of the beam")
+    assert [s.shape for s in r.spec.structures] == ["bridge", "tower"]
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+    # "wal 6x2 back": a slab at the front
+    r = plan("wal 6x2 back, row 6 front.")
+    assert [(s.shape, s.region) for s in r.spec.structures] == [("wall", "back"), ("row", "front")]
+    # "a frame 5 by 5 with the inside empty": 5 by 5 was read as the inside (a 7 by 7 frame)
+    r = plan("a flat frame of cubes, 5 by 5 with the inside empty")
+    assert [(s.length, s.width) for s in r.spec.structures] == [(5, 5)]
+    assert [(s.length, s.width) for s in plan("a ring with a 3 by 3 space inside").spec.structures] \
+        == [(5, 5)]

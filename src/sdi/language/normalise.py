@@ -365,6 +365,17 @@ _EMPTY_INSIDE = re.compile(
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # "three towers of two in line": in a line (the line was read as a row of its own)
     (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
+    # "a bridge with a cube sitting in the middle of the beam": on top of it (the cube was the
+    # pillars' height)
+    (re.compile(r"\b(?:(?:sitting|standing|resting|placed|set)\s+)?(?:in|on|at)\s+the\s+"
+                r"(?:middle|centre|center)\s+of\s+(?:the|its)\s+(?:beam|lintel|deck|roof|span)\b",
+                re.I), "on top in the middle"),
+    # "two slabs, 50 mm apart along x": x runs away from the robot, one behind the other (the
+    # slabs were laid side by side, their own long sides along x)
+    (re.compile(r"\bapart\s+(?:along|in|on)\s+(?:the\s+)?([xy])(?:[\s-]*(?:axis|direction))?\b",
+                re.I),
+     lambda m: "apart, one behind the other" if m.group(1).lower() == "x"
+     else "apart, side by side"),
     # "towers 2 3 4 5", "towers: 2, 3, 4 and 5": one of each (the first was the count)
     (re.compile(r"\b(towers|stacks|columns|pillars|piles)\s*:?\s+"
                 r"((?:\d+\s*(?:,\s*|\s+and\s+|\s+)){2,}\d+)\b"

@@ -269,6 +269,10 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
             if len(hit) == 1:
                 notes.append(f"corrected '{raw}' to '{hit[0]}'")
                 return hit[0]
+            ended = [c for c in _WHOLE if len(c) == 4 and c.startswith(w)]
+            if len(ended) == 1 and _SIZED_AFTER.match(m.string[m.end() :]):
+                notes.append(f"corrected '{raw}' to '{ended[0]}'")  # "wal 6x2": its last letter
+                return ended[0]
             if not aggressive:
                 return raw
             choices_here = [c for c in _CHOICES if c in _SHAPES and len(c) > len(w)]

@@ -357,8 +357,10 @@ class _Parser:
                 group = self._dims_at(k)
                 if group is not None:
                     values, end = group
-                    inner = bool(
-                        {self.word(m) for m in range(end, end + 3)}
+                    after = [self.word(m) for m in range(end, end + 3)]
+                    # "5 by 5 with the inside empty": the frame's size, its inside said after
+                    inner = "with" not in after[:2] and bool(
+                        set(after)
                         & {
                             "space",
                             "hole",
