@@ -20,7 +20,10 @@ _MARKER = re.compile(
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|"
     r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*|"
-    r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment)\s*:\s*",  # a ticket's later line
+    r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment)\s*:\s*|"  # a ticket's later line
+    # "… 5 cm apart. Then make the gap 15 cm": the gap said again, changed
+    r"\s*[,.;!—–-]+\s*(?:then\s+|now\s+)?(?:make|change|set|widen|narrow)\s+the\s+"
+    r"(?:gap|spacing|space|distance)(?:\s+between\s+them)?(?:\s+to)?\s+(?=\d)",
     re.IGNORECASE,
 )
 
@@ -52,6 +55,7 @@ _AND_NOT_OLD = re.compile(rf"\s*,?\s*(?:and\s+)?not\s+{_NUMBER}(?:\s+[a-z]+)?$",
 _NOT_OLD = re.compile(r"^(?:no\s*,?\s*)?not\s+[^,;.]+?\s*[,;]\s*|^no\s*,\s*", re.IGNORECASE)
 _FILLER = re.compile(
     r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|"
+    r"(?:make|set)\s+the\s+(?:gap|space|spacing|distance)(?:\s+(?:to|of))?|"
     r"(?:could|can|would)\s+(?:it|that|we|you)\s+(?:be|make\s+it|do|have)|how\s+about|let'?s\s+(?:do|make)|"
     r"the|a|"
     r"an|to|on|at|in|of|with)\s+)+",

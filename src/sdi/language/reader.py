@@ -683,10 +683,11 @@ def _arch_overall(s: StructureSpec, command: str, level_m: float, st: ReadState)
         return s  # not said: "a tiny arch" is SDI's small arch
     above = min(2, s.span or 2) + 1  # the corbel levels and the beam
     if said - above < 1:
-        st.material.append(f"arch {words}")
+        # "an archway two cubes high": lower than any arch; its legs, said so
         st.notes.append(f"an arch is at least {above + 1} high (1-cube legs, {above - 1} corbel "
-                        f"levels and the beam); say how high its legs are")  # fmt: skip
-        return s.model_copy(update={"height": 1, "height_m": None})
+                        f"levels and the beam): read {words} as its legs, {said + above} "
+                        "high overall")  # fmt: skip
+        return s
     st.notes.append(f"read the arch's {words} as its overall height: legs {said - above} "
                     f"high, {above - 1} corbel levels and the beam")  # fmt: skip
     return s.model_copy(update={"height": said - above, "height_m": None})

@@ -919,7 +919,9 @@ class _Parser:
                     continue
                 if (
                     self.word(j) in ("on", "per") and self.word(j + 1) in ("a", "each", "every")
-                ) or (self.word(j) == "per" and self.word(j + 1) in ("side", "edge")):
+                ) or (
+                    self.word(j) in ("per", "a", "each") and self.word(j + 1) in ("side", "edge")
+                ):  # "4 cubes per side", "4 cubes a side"
                     p.setdefault("length", v)
                     p.setdefault("width", v)
                     take(k)
