@@ -5593,3 +5593,15 @@ def test_a_side_and_the_gap_said_again():
         assert r.status == "success", command
         ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
         assert ys[1] - ys[0] == pytest.approx(0.15 + 0.05, abs=0.002), command
+
+
+def test_changes_that_cannot_be_made_are_reported_not_built_beside():
+    # "make the middle tower 5": a fourth tower in the middle, silently
+    r = plan("make 3 towers of 2. make the middle tower 5")
+    assert r.status == "partial" and [s.height for s in r.spec.structures] == [2, 2, 2]
+    # "a tower of 3, then make it 4x4": a 4 by 4 slab beside the tower, silently
+    r = plan("a tower of 3, then make it 4x4")
+    assert r.status == "partial" and [s.shape for s in r.spec.structures] == ["tower"]
+    # a slab can be made 4x4
+    r = plan("a 3x3 slab, then make it 4x4")
+    assert r.status == "success" and [(s.length, s.width) for s in r.spec.structures] == [(4, 4)]

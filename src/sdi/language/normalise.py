@@ -386,6 +386,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\b(inside|within)(?=\s*(?:[.;!?]|$))", re.I),
      lambda m: f"{m.group(1)} it" if _ENCLOSING.search(m.string[: m.start()])
      and not _EMPTY_INSIDE.search(m.string[: m.start()]) else m.group(0)),
+    # "3 towers of 2. make the middle tower 5": the middle one (a fourth tower in the middle)
+    (re.compile(r"\b(make|raise|lower|change)\s+the\s+(middle|centre|center)\s+"
+                r"(?:tower|stack|column|pillar|pile)\b", re.I), r"\1 the \2 one"),
     # "a tower in line with the wall": beside it (the line was a row of its own, silently)
     (re.compile(r"\bin\s+(?:a\s+)?line\s+with\b", re.I), "next to"),
     # a contract's "four (4)": the figure repeats the word (first, so every

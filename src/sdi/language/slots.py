@@ -35,6 +35,11 @@ if TYPE_CHECKING:
     from sdi.model.cell import CellConfig
 
 
+_MAKE_IT = re.compile(
+    r"^\W*(?:then\s+|and\s+|now\s+|actually\s+)*make\s+(?:it|them|that|this)\s+"
+    r"(?:\d+|one|two|three|four|five|six)\s*(?:x|by)\s*(?:\d+|one|two|three|four|five|six)\b",
+    re.I,
+)
 _COUNT_ONLY = re.compile(
     r"^\W*(?:\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)(?:\s+(?:tall|high|long))?\W*$", re.I
 )
@@ -122,6 +127,14 @@ def fill_slots(
         if k in joiners and all(w in BEAMS or w in lx.PART_WORDS or w == "top" for w in content):
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
         if modify(p, phrases[:k], structures, st):
+            continue
+        if _MAKE_IT.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
+            # "a tower of 3, then make it 4x4": a change SDI could not make to it, never a new
+            # structure read from its words (a 4 by 4 slab was built beside the tower)
+            st.material.append(p.text.strip())
+            st.notes.append(f"ignored '{p.text.strip()}': SDI cannot make that change to the "
+                            f"{structures[-1].shape if structures else 'structure'}; say the "
+                            "size it should have in the first place")  # fmt: skip
             continue
         if _COUNT_ONLY.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
             grown = continues(p, phrases[:k], st.cell)  # "make a tower? 4 cubes?"
