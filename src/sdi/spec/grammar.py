@@ -357,10 +357,10 @@ class _Parser:
                 group = self._dims_at(k)
                 if group is not None:
                     values, end = group
-                    after = [self.word(m) for m in range(end, end + 3)]
+                    said_after = [self.word(m) for m in range(end, end + 3)]
                     # "5 by 5 with the inside empty": the frame's size, its inside said after
-                    inner = "with" not in after[:2] and bool(
-                        set(after)
+                    inner = "with" not in said_after[:2] and bool(
+                        set(said_after)
                         & {
                             "space",
                             "hole",
