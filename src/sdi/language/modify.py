@@ -43,6 +43,12 @@ def _op(pattern: str, op: str) -> tuple[re.Pattern[str], str]:
     return re.compile(pattern, re.IGNORECASE), op
 
 
+DROP_VERBS = (
+    r"(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch|forget(?:\s+about)?|"
+    r"scrap|cancel|delete|get\s+rid\s+of)"
+)
+"""The verbs that take one of several structures named away ("forget the second one")."""
+
 # (pattern, operation on the height of the structure referred to)
 MODIFY = [
     # "build a castle, then make the towers taller (4 high)": its corner towers
@@ -320,8 +326,8 @@ MODIFY = [
     ),
     # "5 towers of 2 in a line, then take away the middle one": one structure fewer
     _op(
-        r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch|forget(?:\s+about)?|"
-        r"scrap|cancel|delete|get\s+rid\s+of)\s+the\s+(middle|first|second|last|tallest|highest|biggest|shortest|lowest|smallest|left|right|front|back)"
+        r"\b" + DROP_VERBS + r"\s+the\s+(middle|first|second|last|tallest|highest|biggest|"
+        r"shortest|lowest|smallest|left|right|front|back)"
         r"(?:[\s-]*hand)?\s+"
         r"(?:one|tower|stack|column|pillar|row|wall)\b"
         r"|\b(?:take|knock|pull)\s+the\s+(middle|first|last|second|tallest|highest|biggest|shortest|"

@@ -662,6 +662,7 @@ _CLIMBS = re.compile(
     re.IGNORECASE,
 )
 _ROUND_LIKENESS = {"cone": "pyramid", "cones": "pyramid"}
+"""Round things the lexicon reads as a family of cubes: said, not silently squared."""
 
 _LEG_WORDS = re.compile(
     r"\b(?:legs?|pillars?|posts?|columns?|feet|foot|supports?|piers?|sides?|uprights?|jambs?)\b",
@@ -691,7 +692,7 @@ def _arch_overall(s: StructureSpec, command: str, level_m: float, st: ReadState)
     st.notes.append(f"read the arch's {words} as its overall height: legs {said - above} "
                     f"high, {above - 1} corbel levels and the beam")  # fmt: skip
     return s.model_copy(update={"height": said - above, "height_m": None})
-"""Round things the lexicon reads as a family of cubes: said, not silently squared."""
+
 
 _RISE = re.compile(
     r",?\s*\b(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:rise|risers?|step\s+height|(?=steps\b))"

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from sdi.errors import SpecError
 from sdi.language import words
 from sdi.language.accounting import account, is_chatter
-from sdi.language.modify import MODIFY, REMOVAL, continues, modify
+from sdi.language.modify import DROP_VERBS, MODIFY, REMOVAL, continues, modify
 from sdi.language.nouns import BEAMS, beam_only
 from sdi.language.references import (
     copies,
@@ -46,8 +46,9 @@ _COUNT_ONLY = re.compile(
 
 
 _DROPS = re.compile(
-    r"^\W*(?:then\s+|and\s+|now\s+|actually\s+|oh\s+)?(?:(?:take\s+(?:out|away|down)|remove|"
-    r"leave\s+out|drop|skip|forget(?:\s+about)?|scrap|cancel|delete|get\s+rid\s+of|ditch|lose)\s+the\s+(?:\w+est|last|first|second|middle)\b|undo\b|scratch\s+that\b|(?:cancel|forget|scrap|"
+    r"^\W*(?:then\s+|and\s+|now\s+|actually\s+|oh\s+)?(?:" + DROP_VERBS
+    + r"\s+the\s+(?:\w+est|last|first|second|middle)\b|undo\b|scratch\s+that\b|"
+    r"(?:cancel|forget|scrap|"
     r"delete|take\s+back|get\s+rid\s+of)\s+(?:the\s+)?(?:last|latest|previous|that|it)\b)",
     re.IGNORECASE,
 )
