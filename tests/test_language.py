@@ -5605,3 +5605,15 @@ def test_changes_that_cannot_be_made_are_reported_not_built_beside():
     # a slab can be made 4x4
     r = plan("a 3x3 slab, then make it 4x4")
     assert r.status == "success" and [(s.length, s.width) for s in r.spec.structures] == [(4, 4)]
+
+
+def test_labelled_levels_with_a_cube_on_top_and_a_distance_beside_a_bridge():
+    # "second level a 2x2 patch, and a single cube on top": the 2x2 stood apart on the table
+    r = plan("ground level a 3x2 patch, second level a 2x2 patch, and a single cube on top")
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [
+        ("on_top_of", 1, 0), ("on_top_of", 2, 1)
+    ]
+    # "a bridge, and a pyramid 15 cm to its left": the 15 cm became the pyramid's base
+    r = plan("a bridge, and a 2 level pyramid 15 cm to its left")
+    assert r.status == "success"
+    assert [(x.side, x.gap_m) for x in r.spec.relations] == [("left", 0.15)]

@@ -2824,8 +2824,10 @@ def _level_labels(text: str, st: ReadState) -> str:
         said = re.sub(r"^(?:just|only)?\s*(?:the\s+)?(?:middle|centre|center|one)\s+cube\b",
                       "one cube", said, flags=re.IGNORECASE)  # "just the middle cube": one
         rest = segment[len(said) :].lstrip(".;!? ")
-        if i and not re.search(r"\bon\s+(?:top|it|that)\b", said, re.IGNORECASE):
-            said += " on top"
+        # "second level a 2x2 patch, and a single cube on top": the on top is the cube's
+        head = re.split(r"\s*,\s*|\s+and\s+", said, maxsplit=1)[0]
+        if i and not re.search(r"\bon\s+(?:top|it|that)\b", head, re.IGNORECASE):
+            said = f"{head} on top{said[len(head) :]}"
         out.append(f" then {said}. {rest}" if i else f" {said}. {rest}")
     st.notes.append("read the levels labelled in order as each on top of the one before")
     return "".join(out)

@@ -117,6 +117,12 @@ def _several(text: str) -> bool:
     return len(shapes) >= 2 or bool(_PLURAL_SHAPES.search(text))
 
 
+def _named_apart(text: str) -> bool:
+    """Two structures named by their shape nouns (a spanning one among them or not)."""
+    said = re.findall(r"[a-z]+", text.lower())
+    return sum(w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES for w in said) >= 2
+
+
 def _metres(value: str, unit: str | None, part_m: float) -> float | None:
     said = " ".join(value.lower().split())
     number = "2" if said in ("a couple of", "a pair of") else words_to_numbers([said])[0]
@@ -249,7 +255,10 @@ def take_gap(text: str, st: ReadState) -> str:
         )
     ):
         m = None  # "a row of three cubes between them", "take the two cubes off": no gap
-    if not _several(text) and not (m is not None and _RELATED.search(text[: m.start()])):
+    offset_only = m is None and _OFFSET.search(text) is not None and _named_apart(text)
+    if not _several(text) and not (m is not None and _RELATED.search(text[: m.start()])) and not (
+        offset_only  # "a bridge, and a pyramid 15 cm to its left": no span, a distance
+    ):
         return text  # "a bridge, its pillars 2 cubes apart": the bridge's own span
     if m is not None:
         gap = _measured(m, part_m)
