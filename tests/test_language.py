@@ -5617,3 +5617,16 @@ def test_labelled_levels_with_a_cube_on_top_and_a_distance_beside_a_bridge():
     r = plan("a bridge, and a 2 level pyramid 15 cm to its left")
     assert r.status == "success"
     assert [(x.side, x.gap_m) for x in r.spec.relations] == [("left", 0.15)]
+
+
+def test_the_smaller_one_in_front_and_an_even_t_bar():
+    # "one of five and one of two with the small one in front": both in the front region
+    r = plan("two stacks of cubes um one of five and one of two with the small one in front")
+    assert [s.height for s in r.spec.structures] == [5, 2]
+    assert [(x.kind, x.subject, x.object, x.side) for x in r.spec.relations] == [
+        ("next_to", 1, 0, "front")
+    ]
+    # a T's bar said 4 wide is built 5 wide (the stem on its middle cube): said, not silent
+    r = plan("a T shape 4 by 3")
+    assert r.status == "partial" and "5 long, not 4" in " ".join(r.notes)
+    assert plan("a T shape 5 by 3").status == "success"

@@ -389,6 +389,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "3 towers of 2. make the middle tower 5": the middle one (a fourth tower in the middle)
     (re.compile(r"\b(make|raise|lower|change)\s+the\s+(middle|centre|center)\s+"
                 r"(?:tower|stack|column|pillar|pile)\b", re.I), r"\1 the \2 one"),
+    # "… one of five and one of two with the small one in front": in front of the other (both
+    # stood in the front region)
+    (re.compile(r"\b(?:with\s+)?the\s+((?:small|big|short|tall|low|high|large|little)(?:er)?)\s+one\s+"
+                r"(in\s+front|behind|(?:on|to)\s+the\s+(?:left|right))(?=\s*(?:[.,;!?]|$))", re.I),
+     lambda m: f"the {m.group(1)} one {m.group(2)}"
+     + (" the other" if m.group(2).lower() == "behind" else " of the other")),
     # "a tower in line with the wall": beside it (the line was a row of its own, silently)
     (re.compile(r"\bin\s+(?:a\s+)?line\s+with\b", re.I), "next to"),
     # a contract's "four (4)": the figure repeats the word (first, so every

@@ -157,6 +157,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     specs = [_arch_overall(s, command, cell.cube[2], st) for s in specs]
+    for s in specs:
+        if s.shape in ("t_shape", "cross") and s.length and s.length % 2 == 0:
+            # "a T, the top four cubes wide": the generator centres the stem on an odd bar
+            what = "T's bar is" if s.shape == "t_shape" else "cross is"
+            st.material.append(f"{s.shape.replace('_', ' ')} {s.length} long")
+            st.notes.append(f"a {what} built an odd number of cubes long, so that a cube is its "
+                            f"middle: {s.length + 1} long, not {s.length}")  # fmt: skip
     if st.no_stack:
         specs = [unstack(s, st) for s in specs]
     taken_back = re.search(
