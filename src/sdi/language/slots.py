@@ -332,8 +332,9 @@ def _parse_or_base(p: Phrase, st: ReadState) -> tuple[SpecDraft, list[str]]:
     if named is not None:
         # "We need an enclosure: a hollow square 5 on each side, with walls 2 high": the name,
         # then the structure it names described (read as two, the walls a third)
-        head, p.text = named
+        head, p.text, described = named
         st.notes.append(f"read '{head}' as the name of what follows the colon")
+        return described
     try:
         return parse_phrase(p.text, st.cell)
     except SpecError:
@@ -359,20 +360,25 @@ def _parse_or_base(p: Phrase, st: ReadState) -> tuple[SpecDraft, list[str]]:
         return spec, unused
 
 
-def _named_first(text: str, cell: CellConfig) -> tuple[str, str] | None:
-    """`text` is "<a family, no size>: <that family described>": the two parts; else None."""
+def _named_first(
+    text: str, cell: CellConfig
+) -> tuple[str, str, tuple[SpecDraft, list[str]]] | None:
+    """`text` is "<a family, no size>: <that family described>": the name, the description
+    and its reading; else None."""
     head, colon, tail = text.partition(":")
     if not colon or not tail.strip() or not re.search(r"\b(?:an?|one)\s+\w+\s*$", head):
         return None
+    tail = tail.strip()
     try:
         (name,) = parse_phrase(head, cell)[0].structures
-        described = parse_phrase(tail, cell)[0].structures
+        described = parse_phrase(tail, cell)
     except (SpecError, ValueError):
         return None
     sized = name.model_dump(exclude_none=True, exclude_defaults=True).keys() - {"shape"}
-    if sized or not described or described[0].shape != name.shape:
+    shapes = [s.shape for s in described[0].structures]
+    if sized or not shapes or shapes[0] != name.shape:
         return None
-    return head.strip(), tail.strip()
+    return head.strip(), tail, described
 
 
 def _repeats(text: str, structures: list[StructureDraft]) -> bool:

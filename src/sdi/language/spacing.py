@@ -113,13 +113,12 @@ def _several(text: str) -> bool:
     said = re.findall(r"[a-z]+", text.lower())
     if _spanning_named(said) and not _spanning_plural(said):
         return False  # a bridge's gap is its span; "two bridges 10 cm apart" is between them
-    shapes = [w for w in said if w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES]
-    return len(shapes) >= 2 or bool(_PLURAL_SHAPES.search(text))
+    return _named_apart(said) or bool(_PLURAL_SHAPES.search(text))
 
 
-def _named_apart(text: str) -> bool:
-    """Two structures named by their shape nouns (a spanning one among them or not)."""
-    said = re.findall(r"[a-z]+", text.lower())
+def _named_apart(said: list[str]) -> bool:
+    """The words `said` name two structures by their shape nouns (a spanning one among them
+    or not)."""
     return sum(w in lx.SHAPE_WORDS and w not in lx.SELDOM_STRUCTURES for w in said) >= 2
 
 
@@ -255,7 +254,11 @@ def take_gap(text: str, st: ReadState) -> str:
         )
     ):
         m = None  # "a row of three cubes between them", "take the two cubes off": no gap
-    offset_only = m is None and _OFFSET.search(text) is not None and _named_apart(text)
+    offset_only = (
+        m is None
+        and _OFFSET.search(text) is not None
+        and _named_apart(re.findall(r"[a-z]+", text.lower()))
+    )
     if not _several(text) and not (m is not None and _RELATED.search(text[: m.start()])) and not (
         offset_only  # "a bridge, and a pyramid 15 cm to its left": no span, a distance
     ):
