@@ -5630,3 +5630,64 @@ def test_the_smaller_one_in_front_and_an_even_t_bar():
     r = plan("a T shape 4 by 3")
     assert r.status == "partial" and "5 long, not 4" in " ".join(r.notes)
     assert plan("a T shape 5 by 3").status == "success"
+
+
+def test_sizes_said_after_a_bare_structure_are_its_own():
+    # "Let's make a block. Two cubes wide, …": a default block and a guessed block beside it
+    r = plan("Let's make a block. Two cubes wide, four cubes deep and three cubes tall.")
+    assert r.status == "success"
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("block", 2, 4, 3)
+    ]
+    r = plan("Now we will build a wall. It should be six cubes long and two cubes high.")
+    assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("wall", 6, 2)]
+    # "canopy. 4 legs. 2 high.": the legs were a tower of their own
+    r = plan("canopy. 4 legs. 2 high.")
+    assert r.status == "success"
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("canopy", 2)]
+    # "bridge. legs 3.": the legs' height was read as an arm's length and dropped
+    r = plan("bridge. legs 3.")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 3)]
+    # sizes somewhere else, or of a structure already sized, stay apart
+    r = plan("a tower on the left. 3 cubes on the right")
+    assert len(r.spec.structures) == 2 and r.status == "partial"
+    r = plan("a wall 4 long. 3 cubes in a row.")
+    assert [s.shape for s in r.spec.structures] == ["wall", "row"]
+
+
+def test_changes_of_mind_said_in_more_ways():
+    # "Wait, I meant a staircase": the bridge was built beside the staircase
+    r = plan("Build a bridge. Wait, I meant a staircase, 4 steps.")
+    assert r.status == "success"
+    assert [(s.shape, s.steps) for s in r.spec.structures] == [("staircase", 4)]
+    r = plan("a row of 4, I meant a row of 6")
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("row", 6)]
+    # "shorten to 5", "go with 4", "make it longer, 6": each was dropped as partial
+    for command, size in (("row 8. shorten to 5.", ("row", "length", 5)),
+                          ("A tower of 6 in the centre. Hmm, 6 is too tall, go with 4.",
+                           ("tower", "height", 4)),
+                          ("a wall 4 long 3 high, then make it more long, 6",
+                           ("wall", "length", 6)),
+                          ("a wall 4 long 3 high, make it taller, 5",
+                           ("wall", "height", 5))):  # fmt: skip
+        r = plan(command)
+        shape, key, value = size
+        assert r.status == "success", command
+        got = [(s.shape, getattr(s, key)) for s in r.spec.structures]
+        assert got == [(shape, value)], command
+    r = plan("a wall 4 long 3 high, make it taller, 5")
+    assert [s.length for s in r.spec.structures] == [4]
+
+
+def test_one_more_and_one_of_them():
+    # "a tower of three then add one more": a second tower of 3, as success
+    r = plan("build a tower of three then add one more")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 4)]
+    r = plan("build three towers of 2 then add one more")
+    assert [s.height for s in r.spec.structures] == [2, 2, 2, 2]
+    # "two towers of 4, then remove one of them": both were built (partial)
+    r = plan("two towers of 4, then remove one of them")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [4]
+    # of two that differ, which one is not said
+    r = plan("a tower of 2 and a tower of 4, then remove one of them")
+    assert r.status == "partial" and [s.height for s in r.spec.structures] == [2, 4]

@@ -16,7 +16,7 @@ _MARKER = re.compile(
     r"\s*[,.!?;…—–-]+\s*no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
     r"ten)\b))|"  # "a stack of 3 to the left of it - no, to the right", "3 - no 6 -", ". No, 3"
     r"\s*[,.;:!?…—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
-    r"scratch\s+that|or\s+rather|i\s+mean|make\s+that|correction|actually\s*,?\s*no|"
+    r"scratch\s+that|or\s+rather|i\s+meant?|make\s+that|correction|actually\s*,?\s*no|"
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|"
     r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*|"
@@ -138,6 +138,7 @@ _CLAUSE_CUT = re.compile(r"[.;:!?]\s*|,\s*(?:and\s+|then\s+)?|\s+(?:and|then)\s+
 _MAKE_IT = re.compile(
     r"^(?:(?:make|change|turn)\s+(?:it|that|this)\s+(?:into\s+|to\s+)?|"
     r"(?:it\s+should\s+be|let'?s\s+(?:do|have|make|build)|i\s+want|we\s+need|build|have|"
+    r"(?:what\s+)?i\s+meant(?:\s+was)?|"
     r"(?:could|can|would)\s+(?:it|that|we|you)\s+(?:be|make\s+it|do|have)|how\s+about)\s+)",
     re.IGNORECASE,
 )

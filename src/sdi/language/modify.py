@@ -110,6 +110,17 @@ MODIFY = [
         "=main",
     ),
     _op(r"\bmake\s+(?:it|them)\s+" + _N + r"\s*(?:instead)?\s*$", "=main"),
+    # "row 8. shorten to 5.", "6 is too tall, go with 4", "make it longer, 6": the new size
+    _op(
+        r"\b(?:(?:shorten|trim|cut|reduce|lower|lengthen|extend|raise|heighten)(?:\s+(?:it|them|"
+        r"the\s+(?:tower|stack|row|wall|staircase|stairs|pyramid|column)))?(?:\s+(?:down|back|up))?"
+        r"\s+to|go\s+(?:with|for)|settle\s+(?:on|for)|"
+        r"make\s+(?:it|them)\s+(?:a\s+bit\s+|a\s+little\s+)?(?:longer|more\s+long|taller|higher|"
+        r"shorter|lower|smaller|bigger)\s*[,:(]?\s*(?:to\s+|like\s+|say\s+)?)\s+" + _N
+        + r"(?:\s+(?:steps|cubes?|levels?|layers?))?(?:\s+(?:high|tall|long))?"
+        r"\s*(?:instead)?\s*[.!)]?\s*$",
+        "=main",
+    ),
     # "a 4x2 slab, then make it 3 wide instead of 2": that side (the one that was 2)
     _op(
         r"\bmake\s+(?:it|them|the\s+(?:slab|grid|block|platform|pad|layer))\s+" + _N
@@ -339,6 +350,9 @@ MODIFY = [
         r"column|pillar)\s+in\s+the\s+(middle)\s+(?:down|away|out|off)\b",
         "drop",
     ),
+    # "two towers of 4, then remove one of them": one of several alike, left out
+    _op(r"\b" + DROP_VERBS + r"\s+(?:just\s+)?(?:one|1)\s+of\s+(?:them|those|the\s+\w+s)\b",
+        "drop_one"),
     # "then take away the one on the right": the one on that side
     _op(
         r"\b(?:take\s+(?:out|away|down)|remove|leave\s+out|drop|skip|lose|ditch|get\s+rid\s+of)\s+"
@@ -772,6 +786,18 @@ def _sizes(s: StructureDraft) -> dict[str, float]:
     return {k: v for k, v in s.model_dump(include=keys).items() if isinstance(v, int | float)}
 
 
+def _drop_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
+              structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "two towers of 4, then remove one of them": one fewer of structures named together
+    alike (which one does not matter); of structures that differ, which is not said."""
+    target = built[-1]
+    alike = structures[target.first : target.first + target.count]
+    if target.count < 2 or any(s != alike[0] for s in alike):
+        return None
+    _take_out(target.first + target.count - 1, before, built, structures)
+    return f"{target.count} left of the {target.count + 1}"
+
+
 def _undo(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
           structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "Then a wall behind them. Undo the last one.": the structures of the step before are
@@ -915,7 +941,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             index = of_family[0]
     last = structures[index]
     if main:
-        key = _main_slot(last)
+        key = _main_slot(last) or _slot_said(m.group(0), last)
         if key is None:
             return None
     if op in ("-", "-1") and last.shape == "pyramid" and re.search(r"\btop\b", p.text, re.I):
@@ -1035,7 +1061,8 @@ _EVERY = re.compile(
 
 _CHANGES: dict[str, Change] = {
     "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars, "=turrets": _turrets,
-    "hollow": _hollow, "drop": _drop, "drop_family": _drop_family, "undo": _undo,
+    "hollow": _hollow, "drop": _drop, "drop_one": _drop_one, "drop_family": _drop_family,
+    "undo": _undo,
     "undo_all": _undo_all,
 }  # fmt: skip
 """The changes that are not a size of the last structure (`_resize` does those)."""
@@ -1047,6 +1074,15 @@ def _main_slot(s: StructureDraft) -> str | None:
     if len(given) == 1:
         return given[0]
     return PRIMARY.get(s.shape) if not given else None
+
+
+def _slot_said(change: str, s: StructureDraft) -> str | None:
+    """ "make it longer, 6" of a wall 4 long and 3 high: the size the change's word names."""
+    if re.search(r"\b(?:longer|long|lengthen|shorten|shorter)\b", change, re.I) and s.length:
+        return "length"
+    if re.search(r"\b(?:taller|higher|raise|heighten|lower)\b", change, re.I) and s.height:
+        return "height"
+    return None
 
 
 def continues(

@@ -2252,6 +2252,13 @@ _ONE_MORE = re.compile(
 """'… and one more next to that': another of the structure named before."""
 
 
+_COUNTED_TOWER = re.compile(
+    r"\b(?:a|one|the)\s+(?:(?:single|small|little|tall)\s+)?(?:tower|stack|column|pile)\s+(?:of\s+)?"
+    r"(?:\d+|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:cubes?|blocks?))?"
+    r"(?![^.;!?]*\b(?:towers|stacks|columns|piles|and\s+(?:a|an|one|two|three)\s)\b)",
+    re.IGNORECASE,
+)
+"""'a tower of three' (one, its cubes counted): 'then add one more' is one more cube on it."""
 _ON_IT = re.compile(r"\b(?:on(?:to)?\s+(?:top|it|that|this)|on\s+the\s+top|atop)\b", re.I)
 _PLACED = re.compile(r"\b(?:next|beside|behind|front|left|right|side|apart|away|another)\b", re.I)
 
@@ -2269,6 +2276,12 @@ def _one_more(m: re.Match[str], text: str) -> str:
         r"column|top)\b)", after, re.I
     ):
         return " one more cube "  # "a row of 4, then add one more to the end": a cube of it
+    if (
+        _COUNTED_TOWER.search(before + step)
+        and re.search(r"\b(?:add|stack|put|pop|place)\s*$", step, re.I)
+        and not after.strip(" ,.!")
+    ):
+        return " one more cube "  # "build a tower of three then add one more": a cube on it
     words = re.findall(r"[a-z]+", before.lower())
     shapes = [w for w in words if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]
     tower = bool(shapes) and shapes[-1] in ("tower", "towers", "stack", "column", "pillar")

@@ -215,6 +215,9 @@ def fill_slots(
             st.material.append(p.text)
             st.notes.append(f"ignored '{p.text}': no structure named there")
             continue
+        legs = bool(_COMPONENT.search(p.text)) and _pillared(phrases[:k])  # "canopy. 4 legs."
+        if (not said_shapes or legs) and _sizes_of_named(p, spec, phrases[:k], structures, st):
+            continue
         told = described(p, spec, phrases[:k], structures)
         if told is not None:
             # "A staircase on the right. It has 5 steps.": more about it, not a second one
@@ -270,6 +273,52 @@ def fill_slots(
         st.material.append(text)
         st.notes.append(f"ignored '{text}': no structure named there")
     return structures
+
+
+def _sizes_of_named(
+    p: Phrase,
+    spec: SpecDraft,
+    before: list[Phrase],
+    structures: list[StructureDraft],
+    st: ReadState,
+) -> bool:
+    """ "Let's make a block. Two cubes wide, four cubes deep and three cubes tall.": sizes said
+    with no structure, after a structure named with none, are that structure's (a row guessed
+    from them was built beside it)."""
+    built = [q for q in before if q.spec is not None and q.count and not q.undone]
+    if len(spec.structures) != 1 or not built or built[-1].clause == p.clause:
+        return False
+    prev = built[-1]
+    own = structures[prev.first : prev.first + prev.count]
+    guessed = spec.structures[0]
+    if len(own) != 1 or own[0].model_dump(exclude_defaults=True).keys() - {"shape", "part"}:
+        return False  # the structure named before has sizes, a place or a way of its own
+    if guessed.region or guessed.at_x is not None or guessed.at_y is not None:
+        return False  # "a tower on the left. 3 cubes on the right": somewhere else
+    if _ANOTHER.search(p.text):
+        return False  # "… and another 4 cubes"
+    if not _NUMBER.search(p.text):
+        return False  # "Medium height.": a vague size, read with the structure elsewhere
+    if re.search(r"\b(?:not|never|no|nor|than)\b|n't", p.text, re.IGNORECASE):
+        return False  # "Not more than 3 high": a bound, read elsewhere
+    try:
+        grown, _ = parse_phrase(prev.text + " , " + p.text, st.cell)
+    except SpecError:
+        return False
+    if len(grown.structures) != 1 or grown.structures[0].shape != own[0].shape:
+        return False  # it read as another family, or more: not sizes of this one
+    prev.text = prev.text + " , " + p.text
+    prev.spec = grown
+    p.count = 0
+    structures[prev.first] = grown.structures[0]
+    _carry_notes(grown.notes, st)
+    st.notes.append(f"read '{p.text}' as the size of the {own[0].shape} named before")
+    return True
+
+
+_ANOTHER = re.compile(r"\b(?:another|second|more|also|too|as\s+well|again|other)\b", re.I)
+_NUMBER = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)\b",
+                     re.IGNORECASE)
 
 
 def _account(p: Phrase, spec: SpecDraft, unused: list[str], doc: Doc, st: ReadState) -> None:

@@ -108,6 +108,9 @@ PART_NOUN_KEYS = {
 }  # fmt: skip
 
 
+_ON_LEGS = frozenset({"bridge", "arch", "canopy"})
+"""Shapes whose legs are their pillars: "legs 3" is how high they are, not an arm's length."""
+
 _SECOND_SIZE = frozenset({"levels", "level", "layers", "layer", "high", "tall", "steps", "long",
                           "wide", "deep", "courses", "storeys", "stories", "tiers"})  # fmt: skip
 """Words after the second of two numbers said with a comma that make it a size of its own
@@ -966,6 +969,8 @@ class _Parser:
                         role = "arms"
                     elif back in ("steps", "stairs") and h.shape == "staircase":
                         role = "steps"
+                    if role == "arms" and self._pillar_legs(h, back):
+                        role = "height"  # "bridge, legs 3": how high its legs are
                     if role:
                         break
                 if role == "arms":
@@ -1366,6 +1371,15 @@ class _Parser:
 
     def between(self, a: Hit, b: Hit | None) -> set[str]:
         return {self.word(m) for m in range(a.index + 1, b.index)} if b else set()
+
+    def _pillar_legs(self, h: Hit, word: str) -> bool:
+        """ "bridge, legs 3": the legs named are a bridge's, arch's or canopy's pillars."""
+        return (
+            word in ("leg", "legs")
+            and h.shape == "tower"
+            and self.word(h.index) in ("leg", "legs")
+            and any(x.shape in _ON_LEGS and x.index < h.index for x in self.hits)
+        )
 
     def absorb(self, container: Hit, part: Hit) -> None:
         """Fold a component noun's attributes into its container."""
