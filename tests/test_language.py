@@ -5691,3 +5691,50 @@ def test_one_more_and_one_of_them():
     # of two that differ, which one is not said
     r = plan("a tower of 2 and a tower of 4, then remove one of them")
     assert r.status == "partial" and [s.height for s in r.spec.structures] == [2, 4]
+
+
+def test_a_castle_with_its_walls_in_the_centre_and_a_couple_of():
+    # "a castle with walls two high … in the centre": the castle stood around a wall of its own
+    r = plan("Build a castle with walls two high and corner towers four high, please, in the "
+             "centre of the table.")
+    assert [s.shape for s in r.spec.structures] == ["castle"] and not r.spec.relations
+    r = plan("a ring with a tower in the centre")
+    assert [x.kind for x in r.spec.relations] == ["around"]
+    # "a couple of towers, …, one at the front and one at the back": four towers
+    r = plan("a couple of towers, both 3 high, one at the front and one at the back")
+    assert [(s.height, s.region) for s in r.spec.structures] == [(3, "front"), (3, "back")]
+    r = plan("a couple of layers of cubes, 3 by 3")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("block", 2)]
+    # "a 150 mm cube made of cubes": a row of 3
+    r = plan("a 150 mm cube made of cubes")
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("block", 3, 3, 3)
+    ]
+    assert len(plan("a 5 cm cube").layout.objects) == 1
+
+
+def test_foreman_codes_stairs_up_and_counts_shared():
+    r = plan("T4 back left")
+    assert [(s.shape, s.height, s.region) for s in r.spec.structures] == [
+        ("tower", 4, "back left")
+    ]
+    r = plan("2x T3, 10 cm apart, back")
+    assert [s.height for s in r.spec.structures] == [3, 3]
+    r = plan("W 5x2 front, T4 behind it")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("wall", 2), ("tower", 4)]
+    assert r.spec.structures[0].length == 5
+    assert [s.shape for s in plan("a T 5x3").spec.structures] == ["t_shape"]
+    # "stairs x4, up to the back": climbing to the left, on the back of the table
+    r = plan("stairs x4, up to the back")
+    assert [(s.steps, s.axis, s.region) for s in r.spec.structures] == [(4, "x", None)]
+    r = plan("a staircase, four steps, it should climb up towards the left side")
+    assert [(s.steps, s.axis, s.region) for s in r.spec.structures] == [(4, "y", None)]
+    # "use 8 cubes for two equal towers": two towers of 8
+    for command in ("use 8 cubes for two equal towers, side by side",
+                    "make two towers out of 8 cubes"):  # fmt: skip
+        assert [s.height for s in plan(command).spec.structures] == [4, 4], command
+    # "two towers, one twice as tall as the other": both 4 (twice the count of towers)
+    r = plan("two towers, one twice as tall as the other")
+    assert r.status == "partial"
+    r = plan("two walls 2 high side by side, one 3 long and the other twice as long")
+    assert [(s.length, s.height) for s in r.spec.structures] == [(3, 2), (6, 2)]

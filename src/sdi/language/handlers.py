@@ -17,11 +17,11 @@ from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
 
 def _split(m: re.Match[str], st: ReadState) -> str:
     """ "twelve cubes in three equal stacks": three stacks of four."""
-    said = [words_to_numbers([g.lower()])[0] for g in (m.group(1), m.group(2))]
+    said = [words_to_numbers([m.group(g).lower()])[0] for g in ("total", "count")]
     if not all(v.isdigit() for v in said):
         return m.group(0)
     total, count = int(said[0]), int(said[1])
-    noun = m.group(3).lower()
+    noun = m.group("noun").lower()
     if count < 1 or total % count:
         st.material.append(m.group(0))
         st.notes.append(f"ignored '{m.group(0)}': {total} parts do not split into {count} equal")
@@ -706,18 +706,32 @@ def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} "
 
 
+_COUNTED = re.compile(
+    r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?=(?:[a-z]+\s+)?(?:"
+    + "|".join(sorted((w for w in lx.SHAPE_WORDS if w.endswith("s") and w not in ("steps", "stairs")
+                       and w.isalpha()), key=len, reverse=True))
+    + r")\b)",
+    re.IGNORECASE,
+)
+"""A number that counts structures ("two towers"), not a size a comparison starts from."""
+
+
 def _said_last(m: re.Match[str]) -> int | None:
     """The last number said before the match (the size a comparison starts from); for a
-    height ("a cube taller"), the last number said as a height, when one was."""
-    if re.search(r"\b(?:taller|higher|shorter|lower|tall|high)\b", m.group(0), re.I):
-        heights = re.findall(
-            r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall)\b",
-            m.string[: m.start()],
-            re.I,
-        )
-        if heights:
-            return int(words_to_numbers([heights[-1].lower()])[0])
-    before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
+    height ("a cube taller") or a length, the last number said as one, when one was."""
+    for compared, said_as in (("taller|higher|shorter|lower|tall|high", "high|tall"),
+                              ("longer|long", "long")):  # fmt: skip
+        if re.search(rf"\b(?:{compared})\b", m.group(0), re.I):
+            sizes = re.findall(
+                r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?"
+                rf"(?:{said_as})\b",
+                m.string[: m.start()],
+                re.I,
+            )
+            if sizes:
+                return int(words_to_numbers([sizes[-1].lower()])[0])
+    told = _COUNTED.sub(" ", m.string[: m.start()])  # "two towers, one twice as tall": no size
+    before = re.findall(r"[a-z]+|\d+", told.lower())
     if before and before[-1] in ("one", "a"):
         before = before[:-1]  # "beside it one half its height": the one being compared
     said = [w for w in words_to_numbers(before) if w.isdigit()]
@@ -764,7 +778,11 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     if value < 1 or value % 1:
         return m.group(0)
     st.notes.append(f"read '{said}' as {int(value)} (from the {base} said before)")
-    return f" {int(value)} high " if groups[1] in _HEIGHT_WORDS else f" of {int(value)} "
+    if groups[1] in _HEIGHT_WORDS:
+        return f" {int(value)} high "
+    if groups[1] in ("long", "longer", "wide", "wider"):  # "the other twice as long": 6 long
+        return f" {int(value)} {groups[1].removesuffix('er')} "
+    return f" of {int(value)} "
 
 
 _HEIGHT_WORDS = ("tall", "high", "taller", "higher", "shorter", "lower", "height")
@@ -927,14 +945,15 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
     """One item per copy ("two towers of 3, one at the far left, one at the far right"), each
     with the shared description; left as it is when the items do not match the count."""
     said, groups = _said(m)
-    n_ = "2" if groups[0].lower() == "both" else words_to_numbers([groups[0]])[0]
+    two = groups[0].lower() == "both" or groups[0].lower().startswith("a ")  # a couple of
+    n_ = "2" if two else words_to_numbers([groups[0]])[0]
     size = re.sub(r"^\s*,\s*|\s+(?:each|apiece)\s*$", " ", (m.group(4) or "").rstrip())
     noun = f"{m.group(2) or ''}{m.group(3)}{size.rstrip()}"
-    first = re.match(r"one|the\s+first(?:\s+one)?", m.group(5), re.IGNORECASE)
+    first = re.match(r"one|the\s+first(?:\s+one)?", m.group("items"), re.IGNORECASE)
     if first is None:
         # "two slabs, 2x2 and 3x3, side by side", "2 towers: 4 high on the left, 2 high on
         # the right": a size each, in turn; the words after them are about all of them
-        listed = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group(5))
+        listed = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("items"))
         sized = list(itertools.takewhile(lambda i: bool(_SIZE_LEAD.match(i)), listed))
         tail = ", ".join(listed[len(sized) :])
         kinds = {_size_kind(i) for i in sized}
@@ -942,7 +961,7 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
             return m.group(0)  # "two walls, 4 long and 3 high": both, each that long and high
         st.notes.append(f"read '{said}' as {n_} {m.group(3)}s, one each")
         return " " + " and ".join(f"a {noun} {i}" for i in sized) + (f", {tail} " if tail else " ")
-    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group(5)[first.end() :])]
+    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group("items")[first.end() :])]
     pair = _ONE_THE_OTHER.fullmatch(items[0]) if len(items) == 1 else None
     if pair and n_ == "2":
         # "two towers of 3, one behind the other": the second placed by the first
@@ -951,7 +970,8 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
     if not n_.isdigit() or int(n_) != len(items) or not all(items):
         return m.group(0)
     st.notes.append(f"read '{said}' as {n_} {m.group(3)}s, one each")
-    return " " + " and ".join(f"a {noun} {item}" for item in items) + " "
+    together = m.group("together") or ""  # "two walls side by side, one 3 long and …"
+    return " " + " and ".join(f"a {noun} {item}" for item in items) + f"{together} "
 
 
 def _more_like(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -1039,14 +1059,19 @@ def _rise_order(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+_ALONG = {"back": "along x", "left": "along y", "front": "along x rotated 180 degrees",
+          "right": "along y rotated 180 degrees"}  # fmt: skip
+"""A staircase climbs towards +x along x and +y along y (left = +y, back = +x)."""
+
+
 def _climb(m: re.Match[str], st: ReadState, note: str) -> str:
-    # a staircase climbs towards +x along x and +y along y (left = +y, back = +x)
-    return {
-        "back": " along x ",
-        "left": " along y ",
-        "front": " along x rotated 180 degrees ",
-        "right": " along y rotated 180 degrees ",
-    }[next(side for side in _said(m)[1] if side)]  # "climbing to the back", "up to the back …"
+    side = next(side for side in _said(m)[1] if side)  # "climbing to the back", "up to the back …"
+    return f" {_ALONG[side.lower()]} "
+
+
+def _stairs_up(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "stairs x4, up to the back": the staircase as said, climbing that way."""
+    return f"{m.group(1)} {_ALONG[m.group(2).lower()]} "
 
 
 def _rows(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -1265,6 +1290,7 @@ HANDLERS: dict[str, Handler] = {
     "{every_side}": _every_side,
     "{times}": _times,
     "{climb}": _climb,
+    "{stairs_up}": _stairs_up,
     "{across_them}": _across_them,
     "{layer_on_top}": _layer_on_top,
     "{rows}": _rows,

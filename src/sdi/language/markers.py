@@ -251,12 +251,16 @@ def _clause_phrases(
             # "a 3x3 slab with a tower in the middle": the middle of the structure before
             # "with" (not the table's centre, which has no "with" before it)
             withs = [i for i in clause if i < k and lower[i] == "with"]
+            nouns = [i for i in range(withs[-1] + 1, k) if doc[i].lower_ in lx.SHAPE_WORDS] if (
+                withs
+            ) else []  # fmt: skip
             if (
                 head is not None
                 or not withs
                 or not names_structure(doc, list(range(withs[-1] + 1, k)))
+                or (nouns and is_component(doc, clause, withs[-1], nouns[0]))
             ):
-                k += n
+                k += n  # "a castle with walls 2 high in the centre": its own walls, placed
                 continue
         implicit = (
             (kind == "on" and words_[-1] == "top" and (head is None or not is_structure))

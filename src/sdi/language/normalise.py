@@ -138,6 +138,15 @@ def _stage(text: str, notes: list[str]) -> str:
     return _STAGE.sub(place, text)
 
 
+def _sized_cube(m: re.Match[str]) -> str:
+    """ "a 150 mm cube": a block 150 mm each way; a cube one part wide stays one part."""
+    size = float(m.group(1)) * {"mm": 0.001, "cm": 0.01, "m": 1.0}[m.group(2).lower()]
+    if size < 0.075:
+        return m.group(0)
+    side = f"{m.group(1)} {m.group(2)}"
+    return f"a {side} by {side} by {side} block"
+
+
 def _plus(m: re.Match[str]) -> str:
     """ "half a dozen cubes plus one": the sum."""
     said = m.group(1).lower()
@@ -685,6 +694,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "2 stacks of 4, single cubes,": what they are made of, as every stack is
     (re.compile(r"(\b(?:stacks?|towers?|columns?|rows?|lines?)\s+of\s+(?:\d+|one|two|three|four|five|six|"
                 r"seven|eight|nine|ten))\s*,\s*(?:all\s+)?single\s+cubes\b", re.I), r"\1"),
+    # "a 150 mm cube made of cubes": a block that size each way (a row of 3 was built)
+    (re.compile(r"\ban?\s+(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+cube\b(?:\s+(?:made\s+)?(?:of|from|out\s+of)\s+"
+                r"(?:small(?:er)?\s+)?cubes)?", re.I), lambda m: _sized_cube(m)),
+    # "a couple of layers of cubes, 3 by 3": two layers (one was built)
+    (re.compile(r"\ba\s+couple\s+of\s+(?=(?:layers|levels|tiers|courses|storeys|steps|cubes|blocks)\b)",
+                re.I), "two "),
     # "half a dozen cubes plus one": seven; "a row of ten cubes, all in one line": a row is one
     # line; "the racket from line 3": a production line's name; "the pallet's front edge": it
     (re.compile(r"\b(half\s+a\s+dozen|a\s+dozen|\d+|two|three|four|five|six|seven|eight|nine|ten)\s+"
@@ -1428,6 +1443,12 @@ _SHORTHAND = [
     (re.compile(r"\b(\d+|one|two|three)\s*(?:clr|clear)\b(?:\s+between(?:\s+(?:them|each))?)?",
                 re.I), r"\1 cubes apart"),
     (re.compile(r"\brmv\b|\brmve\b", re.I), "remove"),
+    # a foreman's codes: "T4 back left", "2x T3", "W 5x2 front" (capital letter, a number)
+    (re.compile(r"\b([2-9])\s*x\s*T(\d{1,2})(?![\w.-])(?!\s*(?:x|by|shape)\b)"),
+     r"\1 towers of \2"),
+    (re.compile(r"(?<![\w-])T(\d{1,2})(?![\w.-])(?!\s*(?:x|by|shape)\b)"), r"a tower of \1"),
+    (re.compile(r"(?<![\w-])W\s*(\d{1,2})\s*x\s*(\d{1,2})(?![\w.-])(?!\s*(?:x|by)\b)"),
+     r"a wall \1 long and \2 high"),
     (re.compile(r"\b(?:cnr|crnr)\b", re.I), "corner"),
     (re.compile(r"\b(?:cnrs|crnrs)\b", re.I), "corners"),
     (re.compile(r"\beachother\b", re.I), "each other"),
@@ -1998,7 +2019,8 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     def many(m: re.Match[str]) -> str:
         noun, size, n = m.group(1).lower(), m.group(2) or "", m.group(3)
-        if noun in ("row", "line", "rows", "lines") and not size:  # "row x5": five along
+        if noun in ("row", "line", "rows", "lines", "stairs", "steps") and not size:
+            # "row x5": five along; "stairs x4": four steps (not four staircases)
             notes.append(f"read '{m.group(0).strip()}' as a {noun} of {n}")
             return f" a {noun} of {n} "
         plural = noun + ("es" if noun.endswith(("ch", "sh", "x")) else "s")

@@ -467,13 +467,23 @@ _REWRITES += [
         re.compile(
             r",?\s*\b(?:(?:climbing|rising|ascending|going|stepping)\s+up|climbing|rising|"
             r"(?:make\s+(?:it|them)\s+)?(?:go|goes)\s+up|"
-            r"ascending|(?:it\s+|they\s+)?(?:to\s+)?(?:climbs?|rises?|ascends?))\s+"
+            r"ascending|(?:it\s+|they\s+)?(?:to\s+)?(?:climbs?|rises?|ascends?)(?:\s+up)?)\s+"
             r"(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+|my\s+|your\s+|our\s+)?"
             r"(left|right|front|back)\b|,?\s*\bup\s+to(?:wards)?\s+the\s+(left|right|front|back)\s+"
             r"(?:climbing|rising|ascending|going)\b",
             re.IGNORECASE,
         ),
         "{climb}",
+        "",
+    ),
+    (  # "stairs x4, up to the back": the way a staircase named just before climbs
+        re.compile(
+            r"((?:\bstairs|\bsteps|\bstaircase)(?:\s+(?:x\s*|of\s+)?(?:\d+|two|three|four|five|six|"
+            r"seven|eight)(?:\s+steps)?)?)\s*,\s*(?:going\s+)?up\s+to(?:wards)?\s+the\s+"
+            r"(left|right|front|back)\b",
+            re.IGNORECASE,
+        ),
+        "{stairs_up}",
         "",
     ),
     (
@@ -1198,10 +1208,21 @@ _REWRITES += [
 _REWRITES += [
     (
         re.compile(
-            r"\b(\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\s+(?:as|in|into|making|to\s+make)\s+"
-            r"(two|three|four|five|six|\d+)\s+(?:equal\s+|identical\s+|even\s+)?"
-            r"(towers|stacks|columns|piles|rows|walls)"
+            r"\b(?P<total>\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\s+(?:as|in|into|making|to\s+make|"
+            r"for|to\s+build|to\s+form)\s+"
+            r"(?P<count>two|three|four|five|six|\d+)\s+(?:equal\s+|identical\s+|even\s+)?"
+            r"(?P<noun>towers|stacks|columns|piles|rows|walls)"
             r"(?:\s+of\s+(?:equal|the\s+same)\s+(?:height|size|length))?",
+            re.IGNORECASE,
+        ),
+        "{split}",
+        "",
+    ),
+    (  # "two equal towers out of 8 cubes": four each
+        re.compile(
+            r"\b(?P<count>two|three|four|five|six|\d+)\s+(?:equal\s+|identical\s+|even\s+)?"
+            r"(?P<noun>towers|stacks|columns|piles|rows|walls)\s+(?:out\s+of|from|using)\s+"
+            r"(?P<total>\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\b(?!\s+(?:each|apiece))",
             re.IGNORECASE,
         ),
         "{split}",
@@ -2518,11 +2539,13 @@ _SAME_AGAIN = re.compile(
     r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?", re.I
 )
 _DISTRIBUTE = re.compile(
-    r"\b(two|three|four|five|[2-5]|both)\s+((?:[\w-]+\s+)?)(" + _SHAPE_ALT + r")s\b"
+    r"\b(two|three|four|five|[2-5]|both|a\s+(?:couple|pair)\s+of)\s+((?:[\w-]+\s+)?)("
+    + _SHAPE_ALT + r")s\b"
     r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
     r"(?:high|tall|long|wide)(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
-    r"(?:\s*,?\s*please)?\s*[:,;]\s*((?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
+    r"(?P<together>\s+(?:side\s+by\s+side|next\s+to\s+each\s+other|in\s+a\s+row))?"
+    r"(?:\s*,?\s*please)?\s*[:,;]\s*(?P<items>(?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
     r"seven|eight)(?=\s*(?:x|by|cubes?\s+high|cubes?\s+tall|high|tall|long)\b))\s*(?:[^.;]|(?<=\d)\.(?=\d))*)",
     re.IGNORECASE,
 )
