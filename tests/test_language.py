@@ -5738,3 +5738,31 @@ def test_foreman_codes_stairs_up_and_counts_shared():
     assert r.status == "partial"
     r = plan("two walls 2 high side by side, one 3 long and the other twice as long")
     assert [(s.length, s.height) for s in r.spec.structures] == [(3, 2), (6, 2)]
+
+
+def test_t_parts_letters_lines_and_positions_of_stacks():
+    # "the top bar 5 long and the stem 3": bar 3 and stem 5
+    for command in ("a T shape, the top bar 5 long and the stem 3",
+                    "a T shape with a bar of 5 and a stem of 3",
+                    "a T shape, bar 5, stem 3"):  # fmt: skip
+        r = plan(command)
+        assert [(s.length, s.width) for s in r.spec.structures] == [(5, 3)], command
+    # "make letter T …": 'letter' left unused (partial)
+    r = plan("make letter T with cubes, top bar 5 cubes and stem 3 cubes")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["t_shape"]
+    # "a U lying flat": a footprint is flat
+    assert plan("an L shape lying flat, 4 by 3").status == "success"
+    assert plan("an L shape 3 high lying flat").status == "partial"
+    # "a tower, a wall and a block in a line from left to right": a row of its own, and the
+    # three stood front to back
+    r = plan("a tower, a wall and a block in a line from left to right, all 2 high")
+    assert [s.shape for s in r.spec.structures] == ["block", "wall", "tower"]
+    ys = [o.position[1] for o in r.layout.objects]  # the block's 8, the wall's 8, the tower's 2
+    assert max(ys[:8]) < min(ys[8:16]) and max(ys[8:16]) < min(ys[16:])
+    # "one cube's width away": a cube was built there
+    r = plan("a wall 8 long and a row of 4 cubes in front of it, one cube's width away")
+    assert [s.shape for s in r.spec.structures] == ["wall", "row"]
+    assert [x.gap_m for x in r.spec.relations] == [0.05]
+    # "… Build that in the back left.": the levels stayed in the middle
+    r = plan("bottom: 5 by 5; middle: 3 by 3; top: a single cube. Build that in the back left.")
+    assert [s.region for s in r.spec.structures] == ["back left", None, None]

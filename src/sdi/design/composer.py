@@ -303,8 +303,11 @@ def _place_all(
         def length(axis: int) -> float:
             return sum(2 * placed[k].half[axis] for k in free) + step * max(0, len(free) - 1)
 
+        tight = sum(2 * placed[k].half[1] for k in free) + 0.01 * max(0, len(free) - 1)
         if line is None and length(1) > span[1] and length(0) <= span[0]:
             d = 0  # a line too long for across the table runs front to back (it broke in two)
+        elif line == "y" and tight > span[1] and length(0) <= span[0]:
+            d = 0  # said across, but too long for it even closed up
         if not stated and len(free) > 1 and length(d) > span[d]:
             # SDI's own gap closes up so the line stays one line (it broke in two)
             room = span[d] - sum(2 * placed[k].half[d] for k in free) - 1e-6

@@ -103,6 +103,7 @@ _HOLDS = {
     "same": "every structure as high as the others",
 }
 _HOLLOW = frozenset({"enclosure", "castle", "u_shape"})
+_FOOTPRINTS = frozenset({"l_shape", "t_shape", "u_shape", "cross"})
 
 
 def take(text: str, st: ReadState) -> str:
@@ -131,6 +132,8 @@ def _one_layer(spec: Spec) -> bool:
     for s in spec.structures:
         if s.shape in ("row", "grid"):
             continue
+        if s.shape in _FOOTPRINTS and getattr(s, "height", None) in (None, 1):
+            continue  # "a letter U lying flat": a footprint is one layer unless raised
         height = getattr(s, "height", None) or (s.count if s.shape == "tower" else None)
         if height != 1:
             return False

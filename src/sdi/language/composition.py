@@ -285,6 +285,7 @@ def relate(
     st.anchors.clear()
     for k, s in replace.items():
         structures[k] = s
+    _to_base(relations, structures)
     if drop:
         keep = [k for k in range(len(structures)) if k not in drop]
         index = {old: new for new, old in enumerate(keep)}
@@ -300,6 +301,25 @@ def relate(
 _OWN_TOPS = frozenset({"top", "roof", "beam", "beams", "lintel", "deck", "tabletop", "slab"})
 _TOPPED = ("grid", "block", "pack")
 """Families whose middle is a top face another structure stands on."""
+
+
+def _to_base(relations: list[Relation], structures: list[StructureDraft]) -> None:
+    """A position moved to the structure something stands on goes on down to the one at the
+    bottom ("bottom: 5 by 5; middle: 3 by 3; top: a cube. Build that in the back left.": it
+    stopped at the middle level, which stands where the bottom does)."""
+    keys = ("at_x", "at_y", "region")
+    for _ in range(len(relations)):
+        moved = False
+        for r in relations:
+            upper, lower = structures[r.subject], structures[r.object]
+            placed = {k: getattr(upper, k) for k in keys}
+            if (r.kind == "on_top_of" and any(v is not None for v in placed.values())
+                    and all(getattr(lower, k) is None for k in keys)):  # fmt: skip
+                structures[r.object] = lower.model_copy(update=placed)
+                structures[r.subject] = upper.model_copy(update=dict.fromkeys(keys))
+                moved = True
+        if not moved:
+            return
 
 
 def _enclosing(host: StructureDraft, st: ReadState) -> StructureDraft:

@@ -186,7 +186,8 @@ MODIFY = [
         "=main",
     ),
     _op(
-        r"\b(?:move|shift|put|place|slide|keep|relocate)\s+(?:it|them)\s+(?:over\s+)?(?:to|towards|into|"
+        r"\b(?:move|shift|put|place|slide|keep|relocate|build|make|set)\s+(?:it|them|that|this|"
+        r"(?:it|them)\s+all|all\s+of\s+(?:it|them)|everything)\s+(?:over\s+)?(?:to|towards|into|"
         r"at|on|in)\s+(?:the\s+)?"
         r"(left|right|front|back|middle|centre|center)(?:\s+(left|right))?\b",
         "region",

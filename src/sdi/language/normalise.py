@@ -697,6 +697,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a 150 mm cube made of cubes": a block that size each way (a row of 3 was built)
     (re.compile(r"\ban?\s+(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+cube\b(?:\s+(?:made\s+)?(?:of|from|out\s+of)\s+"
                 r"(?:small(?:er)?\s+)?cubes)?", re.I), lambda m: _sized_cube(m)),
+    # "in front of it, one cube's width away": a cube apart (a cube was built there)
+    (re.compile(r"\b(one|a|two|three|\d+)\s+(cube|block)s?['’]?s?\s+(?:width|widths|length)\s+"
+                r"(?=away|apart|off|from|between)", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)}"
+     + ("" if m.group(1).lower() in ("one", "a", "1") else "s") + " "),
     # "a couple of layers of cubes, 3 by 3": two layers (one was built)
     (re.compile(r"\ba\s+couple\s+of\s+(?=(?:layers|levels|tiers|courses|storeys|steps|cubes|blocks)\b)",
                 re.I), "two "),
@@ -1443,6 +1448,9 @@ _SHORTHAND = [
     (re.compile(r"\b(\d+|one|two|three)\s*(?:clr|clear)\b(?:\s+between(?:\s+(?:them|each))?)?",
                 re.I), r"\1 cubes apart"),
     (re.compile(r"\brmv\b|\brmve\b", re.I), "remove"),
+    # "make letter T with cubes", "build the letter U 5 wide": that shape
+    (re.compile(r"\b(?:(?:an?|the)\s+)?(?:big\s+|capital\s+)?letter\s+([TLUtlu])\b(?![-'])(?!\s+shape)"),
+     r"a \1 shape"),
     # a foreman's codes: "T4 back left", "2x T3", "W 5x2 front" (capital letter, a number)
     (re.compile(r"\b([2-9])\s*x\s*T(\d{1,2})(?![\w.-])(?!\s*(?:x|by|shape)\b)"),
      r"\1 towers of \2"),

@@ -238,7 +238,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         spec = Spec(
             structures=tuple(specs),
             relations=tuple(relations),
-            line="x" if st.line == "x" and len(specs) > 1 else None,
+            line=st.line if st.line and len(specs) > 1 else None,
             grid=_grid(st, len(specs) - len({r.subject for r in relations})),
             notes=tuple(dict.fromkeys(st.notes)),
         )
@@ -476,6 +476,8 @@ def _listed(
         return specs
     if st.listing in ("front to back", "back to front") and st.line is None:
         st.line = "x"  # "four towers … placed in that order from front to back": one behind another
+    elif st.line is None:
+        st.line = "y"  # "a tower, a wall and a block from left to right": across, even if tight
     if st.listing in ("left to right", "back to front"):
         st.notes.append(f"the structures named {st.listing}, placed in that order")
         return specs[::-1]

@@ -108,6 +108,10 @@ PART_NOUN_KEYS = {
 }  # fmt: skip
 
 
+_T_PARTS = {"bar": "length", "top": "length", "crossbar": "length", "head": "length",
+            "stem": "width", "trunk": "width", "upright": "width", "leg": "width"}  # fmt: skip
+"""A T's parts: its bar (the T's length) and its stem (its width)."""
+
 _ON_LEGS = frozenset({"bridge", "arch", "canopy"})
 """Shapes whose legs are their pillars: "legs 3" is how high they are, not an arm's length."""
 
@@ -821,6 +825,10 @@ class _Parser:
                     if h.shape in ("u_shape", "t_shape"):  # "a U 4 wide and 3 deep"
                         key = "length" if key == "width" and wj != "deep" else key
                         key = "width" if wj in ("deep", "long", "tall", "high") else key
+                    part = next((b for b in (prev, prev2) if b in _T_PARTS), None)
+                    if h.shape == "t_shape" and part:  # "the top bar 5 long and the stem 3"
+                        key = _T_PARTS[part]
+                        take(k - 1 if part == prev else k - 2)
                     if wj == "thick" and "length" in p and "width" in p:
                         key = "height"  # "five across and three deep, one cube thick"
                     elif key in p and p[key] != v and p.get("_word_" + key) != wj:
@@ -971,6 +979,9 @@ class _Parser:
                         role = "steps"
                     if role == "arms" and self._pillar_legs(h, back):
                         role = "height"  # "bridge, legs 3": how high its legs are
+                    if h.shape == "t_shape" and back in _T_PARTS:
+                        role = _T_PARTS[back]  # "a T, bar 5, stem 3"
+                        take(k - 1 if back == prev else k - 2)
                     if role:
                         break
                 if role == "arms":
@@ -1263,7 +1274,7 @@ class _Parser:
             if not (
                 n > 0
                 and h.shape == "row"
-                and not h.params
+                and not set(h.params) - {"axis"}  # "in a line from left to right": the order
                 and self.word(h.index - 1) in ("a", "one", "single", "straight")
                 and self.word(h.index - 2) in ("in", "into", "along", "forming", "form")
             )
