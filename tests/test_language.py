@@ -5766,3 +5766,39 @@ def test_t_parts_letters_lines_and_positions_of_stacks():
     # "… Build that in the back left.": the levels stayed in the middle
     r = plan("bottom: 5 by 5; middle: 3 by 3; top: a single cube. Build that in the back left.")
     assert [s.region for s in r.spec.structures] == ["back left", None, None]
+
+
+def test_places_said_first_and_towers_beside_a_pillared_structure():
+    # "a 3 by 3 grid and, 10 cm behind it, a pyramid": side by side (partial)
+    r = plan("a 3 by 3 grid and, 10 cm behind it, a pyramid")
+    assert [(x.kind, x.side, x.gap_m) for x in r.spec.relations] == [("next_to", "back", 0.1)]
+    r = plan("a 3-high wall and, to its left, a tower twice as high")
+    assert [(x.side, r.spec.structures[x.subject].height) for x in r.spec.relations] == [
+        ("left", 6)
+    ]
+    # "an arch with a tower in front of it and a tower behind it": the towers were its pillars
+    for command in ("an arch with a tower in front of it and a tower behind it",
+                    "an arch, a tower in front of it and a tower behind it"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", command
+        assert sorted(x.side for x in r.spec.relations) == ["back", "front"], command
+    assert [s.shape for s in plan("a bridge, towers 3 high").spec.structures] == ["bridge"]
+    # "a wall of the same width 3 high": 3 high read as width 3 ("3 wide high")
+    r = plan("a 3x3 grid and a wall of the same width, 3 high")
+    wall = r.spec.structures[1]
+    assert (wall.shape, wall.length, wall.height) == ("wall", 3, 3)
+    # "right behind it": against it
+    r = plan("a 3 by 3 grid and, right behind it, a wall 3 long 3 high")
+    assert [x.gap_m for x in r.spec.relations] == [0.0]
+    assert plan("a tower on the right in front of a wall").spec.relations[0].gap_m is None
+    # "a tower of 2 cubes above it": the 2 was dropped with no note
+    r = plan("bridge below, tower of 2 cube above on it")
+    assert [s.shape for s in r.spec.structures] == ["bridge", "tower"]
+    assert r.spec.structures[1].height == 2 and r.spec.relations[0].kind == "on_top_of"
+    assert plan("a tower 2 taller").status == "partial"
+    # labelled levels said "the same" and "level 1 is …"
+    r = plan("layer one 2 by 6, layer two the same, layer three the same")
+    assert [(s.length, s.width) for s in r.spec.structures] == [(2, 6)] * 3
+    assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]
+    r = plan("level 1 is a 4x2 slab, level 2 is a 4x2 slab, that's it")
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("on_top_of", 1, 0)]

@@ -208,7 +208,7 @@ _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.I
 
 
 _SAME_AS = re.compile(
-    r"\b(?:of\s+|with\s+)?the\s+same\s+(length|height)(?:\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|"
+    r"\b(?:of\s+|with\s+)?the\s+same\s+(length|height|width)(?:\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|"
     r"other|last)\s+one))?(?!\s+as\s+the\s+(?!first\b|other\b|last\b)\w+)"
     r"|\bas\s+(long|tall|high)\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|other)\s+one)\b",
     re.IGNORECASE,
@@ -286,7 +286,7 @@ def _same_as(m: re.Match[str]) -> str:
     last = named[-1]
     noun = last[:-1] if last.endswith("s") and last[:-1] in lx.SHAPE_WORDS else last
     said = (m.group(1) or m.group(2)).lower()
-    word = "long" if said in ("length", "long") else "tall"
+    word = {"length": "long", "long": "long", "width": "wide"}.get(said, "tall")
     return f" as {word} as the {noun} "
 
 
@@ -697,6 +697,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a 150 mm cube made of cubes": a block that size each way (a row of 3 was built)
     (re.compile(r"\ban?\s+(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+cube\b(?:\s+(?:made\s+)?(?:of|from|out\s+of)\s+"
                 r"(?:small(?:er)?\s+)?cubes)?", re.I), lambda m: _sized_cube(m)),
+    # "a 3 by 3 grid and, 10 cm behind it, a pyramid": the place said first, between commas
+    (re.compile(r"\band\s*,\s*([^,.;]{2,40}?\b(?:it|them|its\s+(?:left|right)|their\s+(?:left|right)))"
+                r"\s*,\s*(?=(?:an?|one|two|three|four|another|\d+)\b)", re.I), r"and \1 "),
+    # "an arch with a tower in front of it": a tower of its own there (not the arch's pillar)
+    (re.compile(r"\bwith\s+(?=(?:an?|one|two|three|four|\d+)\s+(?:(?!and\b|then\b)[\w-]+\s+){0,4}?"
+                r"(?:in\s+front\s+of|"
+                r"behind|beside|next\s+to|to\s+the\s+(?:left|right)\s+of|to\s+its\s+(?:left|right)|"
+                r"on\s+its\s+(?:left|right))\s+it\b)", re.I), "and "),
     # "in front of it, one cube's width away": a cube apart (a cube was built there)
     (re.compile(r"\b(one|a|two|three|\d+)\s+(cube|block)s?['’]?s?\s+(?:width|widths|length)\s+"
                 r"(?=away|apart|off|from|between)", re.I),
@@ -1699,7 +1707,8 @@ _HIGH_LEVELS = re.compile(
 )
 _NAMED_DIM = re.compile(
     r"\b(?:with\s+)?(?:a\s+)?(length|height|width|depth|thickness)\s+(?:of\s+|is\s+|[:=]\s*)?"
-    + _MEASURE,
+    + _MEASURE
+    + r"(?!\s*(?:high|tall|long|wide|deep|thick)\b)",  # "the same width, 3 high": a height
     re.IGNORECASE,
 )
 # "4 cubes in the length and 3 in the height", "in the height of 20 cm": a value with its

@@ -139,7 +139,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     drafts = _apart(drafts, st)
     relations, drafts = _gap_of_relation(relations, drafts, st)
     _gap_around_middle(drafts, st)
-    touch = _TOUCHING.search(text)
+    touch = _TOUCHING.search(text) or _RIGHT_BY.search(command)  # "right behind it": against it
     if touch and any(r.kind == "next_to" and r.gap_m is None for r in relations):
         # "directly to its left, touching it": no gap between the two
         relations = [
@@ -365,6 +365,10 @@ def _one_each(relations: list[Relation], st: ReadState) -> list[Relation]:
     return kept
 
 
+_RIGHT_BY = re.compile(
+    r"(?<!\bthe\s)(?<!\bits\s)\b(?:right|immediately)\s+(?:behind|in\s+front\s+of|against)\b",
+    re.I,
+)
 _TOUCHING = re.compile(
     r"(?<!\bnot\s)(?<!\ball\s)\b(?:touching|flush\s+(?:with|against)|butting\s+(?:up\s+)?against|"
     r"pressed\s+against|up\s+against)\b",

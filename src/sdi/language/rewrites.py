@@ -1931,9 +1931,10 @@ _REWRITES += [
     ),
     (  # "a tower (twice) as tall as the staircase": the size of the one named before
         re.compile(
-            r"\b(?:(twice|double|thrice|half)\s+)?(?:exactly\s+|just\s+)?(?:as|so)\s+(tall|high|long)"
+            r"\b(?:(twice|double|thrice|half)\s+)?(?:exactly\s+|just\s+)?(?:as|so)\s+(tall|high|long|wide)"
             r"\s+as\s+(?:the|that|this)\s+"
-            r"(tower|stack|column|pillar|wall|row|staircase|stairs|pyramid|block|slab|platform|line)\b"
+            r"(tower|stack|column|pillar|wall|row|staircase|stairs|pyramid|block|slab|platform|line|grid|"
+            r"square|pad)\b"
             r"(?:\s+(?:is|was|will\s+be)(?:\s+(tall|high|long|wide)\b)?)?",
             re.IGNORECASE,
         ),
@@ -2823,7 +2824,8 @@ _LIKENESS_SIZE = re.compile(rf"\b{_N}\s*(?:x|by)\s*{_N}(?:\s*(?:x|by)\s*{_N})?\b
 
 _LEVEL_LABEL = re.compile(
     r"(?:^|(?<=[.;,!\n]))\s*(?:level|layer|tier|floor|storey|story|lvl)\s*"
-    r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*[:=)-]\s*",
+    r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s*[:=)-]|\s+(?:is|has)\b|"
+    r"(?=\s+(?:an?\s|\d|the\s+same\b)))\s*",  # "level 1 is a 4x2 slab", "layer one 2 by 6"
     re.IGNORECASE,
 )
 
@@ -2840,6 +2842,13 @@ _LEVEL_RANK = {"bottom": 1, "base": 1, "lowest": 1, "ground": 1, "first": 1, "1s
 """'Bottom: a 3 by 3 square. Middle: 2 by 2. Top: one cube.': levels named in words."""
 
 
+_SAME_LEVEL = re.compile(
+    r"\s*(?:(?:just\s+)?(?:the\s+)?same(?:\s+again|\s+as\s+(?:the\s+)?(?:one\s+|level\s+|layer\s+)?"
+    r"(?:below|before|under\s+it|first))?|ditto|again)\s*",
+    re.IGNORECASE,
+)
+
+
 def _level_labels(text: str, st: ReadState) -> str:
     """ "level 1: 4x4 floor. level 2: 3x3 on top. level 3: 2x2.": each level labelled after
     the first stands on the one before it (also named in words: "Bottom: … Middle: … Top:")."""
@@ -2853,6 +2862,7 @@ def _level_labels(text: str, st: ReadState) -> str:
     if len(labels) < 2 or numbers != list(range(numbers[0], numbers[0] + len(numbers))):
         return text
     out = [text[: labels[0].start()]]
+    prev = ""
     for i, m in enumerate(labels):
         end = labels[i + 1].start() if i + 1 < len(labels) else len(text)
         segment = text[m.end() : end].strip()
@@ -2860,6 +2870,9 @@ def _level_labels(text: str, st: ReadState) -> str:
         said = re.sub(r"^(?:just|only)?\s*(?:the\s+)?(?:middle|centre|center|one)\s+cube\b",
                       "one cube", said, flags=re.IGNORECASE)  # "just the middle cube": one
         rest = segment[len(said) :].lstrip(".;!? ")
+        if i and _SAME_LEVEL.fullmatch(said):
+            said = prev  # "layer one 2 by 6, layer two the same": that level again
+        prev = re.sub(r"\s+on\s+top\b.*$", "", said, flags=re.IGNORECASE)
         # "second level a 2x2 patch, and a single cube on top": the on top is the cube's
         head = re.split(r"\s*,\s*|\s+and\s+", said, maxsplit=1)[0]
         if i and not re.search(r"\bon\s+(?:top|it|that)\b", head, re.IGNORECASE):

@@ -112,6 +112,8 @@ _T_PARTS = {"bar": "length", "top": "length", "crossbar": "length", "head": "len
             "stem": "width", "trunk": "width", "upright": "width", "leg": "width"}  # fmt: skip
 """A T's parts: its bar (the T's length) and its stem (its width)."""
 
+_MOVED_OVER = frozenset({"to", "towards", "toward", "on", "at", "from", "the", "left", "right",
+                         "there", "here"})  # fmt: skip
 _ON_LEGS = frozenset({"bridge", "arch", "canopy"})
 """Shapes whose legs are their pillars: "legs 3" is how high they are, not an arm's length."""
 
@@ -906,11 +908,13 @@ class _Parser:
                     for m in range(k, last + 1):
                         take(m)
                     continue
-                if wj in ("taller", "higher", "above", "over", "more", "extra") and h.shape in (
-                    "castle",
-                    "tower",
+                if (
+                    wj in ("taller", "higher", "above", "over", "more", "extra")
+                    and h.shape in ("castle", "tower")
+                    and prev != "of"  # "a tower of 2 cubes above it": its height
                 ):
-                    p["_relative"] = v
+                    if not (wj == "over" and self.word(j + 1) in _MOVED_OVER):
+                        p["_relative"] = v  # (not "2 cubes over to the left": how far it moved)
                     for m in range(k, j + 1):
                         take(m)
                     continue
@@ -1316,7 +1320,14 @@ class _Parser:
             # three spans on pillars 3 high", "a courtyard with walls 2 high"
             parts = COMPONENTS.get(h.shape, set())
             regional = bool(between & set(lx.REGION_WORDS)) and "and" in between
-            if nxt and nxt.shape in parts and between & LINKS and not regional:
+            listed = (  # "an arch, a tower in front of it": another structure, listed
+                nxt is not None
+                and h.shape in _ON_LEGS
+                and between <= {",", "and", "a", "an", "one"}
+                and bool(between & {"a", "an", "one"})
+                and not nxt.plural
+            )
+            if nxt and nxt.shape in parts and between & LINKS and not regional and not listed:
                 j = k + 1
                 while j < len(hits) and hits[j].shape in parts:
                     if j > k + 1 and self.between(hits[j - 1], hits[j]) & {
@@ -1605,6 +1616,9 @@ class _Parser:
             p["height"] = 1
         if shape == "castle" and relative is not None:
             p["count"] = int(relative)
+        elif relative is not None:
+            self.notes.append(f"ignored '{relative:g} more': a {shape} has no part above another "
+                              "to size; say how high it is")  # fmt: skip
         elif shape == "castle" and tower_height is not None:
             p["count"] = max(1, int(tower_height) - int(p.get("height", 1)))
         if shape in ("wall", "row") and "width" in p and "length" not in p:
