@@ -5802,3 +5802,46 @@ def test_places_said_first_and_towers_beside_a_pillared_structure():
     assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]
     r = plan("level 1 is a 4x2 slab, level 2 is a 4x2 slab, that's it")
     assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("on_top_of", 1, 0)]
+
+
+def test_changes_made_by_comparison_and_regrouping():
+    # "actually make it one level taller": '4 high' read with no structure (partial)
+    r = plan("start with a pyramid of 3 levels; actually make it one level taller")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [4]
+    # "Make the first one twice as tall", "make it twice as long": each was dropped
+    r = plan("two towers of 3. Make the first one twice as tall.")
+    assert [s.height for s in r.spec.structures] == [6, 3]
+    r = plan("a block 2x2x2; make it twice as long")
+    assert [(s.length, s.width, s.height) for s in r.spec.structures] == [(4, 2, 2)]
+    # "Make the smaller one as tall as the other"
+    r = plan("a tower of 2 and a tower of 4. Make the smaller one as tall as the other.")
+    assert [s.height for s in r.spec.structures] == [4, 4]
+    # "no, stack them instead": a row and a default tower beside it
+    r = plan("a row of five cubes. no, stack them instead")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 5)]
+    r = plan("a tower of 6. actually, line them up")
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("row", 6)]
+    # "Remove the one on the right" of towers placed left and right: the places were said to
+    # disagree
+    r = plan("a 3-high tower on the right and a 5-high tower on the left. Remove the one on "
+             "the right.")
+    assert r.status == "success" and [(s.height, s.region) for s in r.spec.structures] == [
+        (5, "left")
+    ]
+    # "a tower next to it, as tall as it is": as tall as the tower itself (no size: partial)
+    r = plan("a wall 5 long 2 high. Then a tower next to it, as tall as it is.")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 2]
+    assert [x.kind for x in r.spec.relations] == ["next_to"]
+
+
+def test_one_way_and_the_other_each_way_and_the_bottom_layer():
+    r = plan("an L, 4 one way and 3 the other")
+    assert r.status == "success"
+    assert sorted(getattr(r.spec.structures[0], k) for k in ("length", "width")) == [3, 4]
+    r = plan("a plus sign, 5 cubes across each way")
+    assert r.status == "success" and r.spec.structures[0].length == 5
+    r = plan("bottom layer 4 by 4, then 3 by 3 on it, then 2 by 2, then one cube on top")
+    assert r.status == "success" and len(r.spec.relations) == 3
+    r = plan("level 1 a 5x5 square, level 2 a 3x3 square in the middle, level 3 one cube in the "
+             "middle")
+    assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]

@@ -535,7 +535,10 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     for word in lost:
         st.material.append(word)
         st.notes.append(f"ignored '{word}': no structure of the reading stands there")
-    gone = " ".join(n for n in st.notes if "taken back" in n or "(was " in n).lower()
+    gone = " ".join(  # the places of structures taken back, changed or removed
+        n for n in st.notes
+        if "taken back" in n or "(was " in n or re.search(r"\d left of the \d", n)
+    ).lower()
     odds = None if lost else _places_at_odds(doc, spec, tokens, gone)
     if odds:
         where = spec.structures[0].region

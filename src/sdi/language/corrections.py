@@ -163,6 +163,7 @@ def _another_structure(before: str, after: str, notes: list[str]) -> str | None:
     else:
         return None
     new = re.sub(r"\s*\binstead\b", "", _MAKE_IT.sub("", after.strip()), flags=re.I).strip()
+    new = _regrouped(taken_back, new)  # "a row of five cubes. no, stack them": a tower of five
     lead = re.search(r"(?:^|[:;,—–-]\s*)((?:an?|one)\s.*)$", new, re.IGNORECASE | re.DOTALL)
     if lead and not _names_structure(new[: lead.start(1)]):
         new = lead.group(1)  # "scratch that, different thing entirely today: a pyramid of 2"
@@ -173,6 +174,29 @@ def _another_structure(before: str, after: str, notes: list[str]) -> str | None:
         new = f"{new.rstrip(' .!')} {place.group(0)}"
     notes.append(f"corrected by the command itself: '{taken_back}' → '{new.strip(' .!')}'")
     return before[:start] + new
+
+
+_REGROUP = re.compile(
+    r"^(?:(stack|pile)|(line|lay|set|put))\s+(?:them|those|these|the\s+cubes|it)\s*(?:(up)|(out|"
+    r"down|in\s+a\s+(?:row|line)))?\s*[.!]?$",
+    re.IGNORECASE,
+)
+
+
+def _regrouped(taken_back: str, new: str) -> str:
+    """ "a row of five cubes. no, stack them instead": the same cubes as a tower (a row, for
+    "line them up"); other words as they are."""
+    m = _REGROUP.match(new)
+    said = re.search(rf"\b(?:of\s+)?({_NUMBER})\s+(?:cubes|blocks|parts)\b|\bof\s+({_NUMBER})\b",
+                     taken_back, re.I)  # fmt: skip
+    if m is None or said is None:
+        return new
+    n = said.group(1) or said.group(2)
+    if m.group(1) and not m.group(4):
+        return f"a tower of {n}"
+    if m.group(2) and (m.group(3) or m.group(4)):
+        return f"a row of {n}"
+    return new
 
 
 def _with_noun(before: str, value: str, rest: str, notes: list[str]) -> str | None:
@@ -277,7 +301,9 @@ def correct(text: str, notes: list[str], material: list[str] | None = None) -> s
             text = before.rstrip(" ,;:—–-") + ". then undo that. " + rest.lstrip(" .,;")
             continue
         if kind is None:  # a correction in words of its own: a clause the later stages read
-            text = before.rstrip(" ,;:—–-") + ". then " + after
+            change = re.search(r"\bmake\s+(?:that|it)\s*$", m.group(0).strip(" ,:;—–-"), re.I)
+            said_after = f"make it {after}" if change else after  # "actually make it one taller"
+            text = before.rstrip(" ,;:—–-") + ". then " + said_after
             continue
         olds = (
             _bare_counts(before)

@@ -211,6 +211,15 @@ MODIFY = [
         "=",
     ),
     _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
+    # "a tower of 2 and a tower of 4. Make the smaller one as tall as the other."
+    _op(
+        r"\bmake\s+the\s+(smaller|shorter|lower|taller|bigger|higher|larger)\s+(?:one|tower|stack|"
+        r"column)\s+(?:as\s+(?:tall|high)\s+as|the\s+same\s+height\s+as)\s+the\s+other(?:\s+one)?\b",
+        "=other",
+    ),
+    # "make the first one twice as tall", "make it twice as long": that size, doubled
+    _op(r"\bmake\s+" + _REF + r"\s+(twice|double|triple)\s+as\s+(?:tall|high)\b", "*"),
+    _op(r"\bmake\s+" + _REF + r"\s+(twice|double|triple)\s+as\s+long\b", "*length"),
     _op(r"\b(double|triple)\s+(?:its|their|the)\s+height\b", "*"),
     _op(r"\b(double|triple)\s+(?:it|them)\s+in\s+height\b", "*"),
     _op(
@@ -799,6 +808,20 @@ def _drop_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built:
     return f"{target.count} left of the {target.count + 1}"
 
 
+def _as_the_other(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
+                  built: list[Phrase], structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "Make the smaller one as tall as the other": of two towers, one as high as the other."""
+    towers = _tower_heights(built, structures)
+    low = m.group(1).lower() in ("smaller", "shorter", "lower")
+    found_at = _extreme_tower(towers, low) if len(towers) == 2 else None
+    if found_at is None:
+        return None
+    other = next(i for i in towers if i != found_at)
+    was, now = structures[found_at].height, structures[other].height
+    structures[found_at] = structures[found_at].model_copy(update={"height": now})
+    return f"the {m.group(1).lower()} tower now has height {now} (was {was}), as the other"
+
+
 def _undo(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
           structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "Then a wall behind them. Undo the last one.": the structures of the step before are
@@ -1063,6 +1086,7 @@ _EVERY = re.compile(
 _CHANGES: dict[str, Change] = {
     "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars, "=turrets": _turrets,
     "hollow": _hollow, "drop": _drop, "drop_one": _drop_one, "drop_family": _drop_family,
+    "=other": _as_the_other,
     "undo": _undo,
     "undo_all": _undo_all,
 }  # fmt: skip

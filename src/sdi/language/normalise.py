@@ -264,6 +264,13 @@ def _likened(text: str, notes: list[str]) -> str:
     return _LIKENED.sub(gloss, text)
 
 
+_BY_IT = re.compile(
+    r"\b(?:next\s+to|beside|behind|in\s+front\s+of|on\s+top\s+of|left\s+of|right\s+of)\s+it\b"
+    r"[^.;]*$",
+    re.IGNORECASE,
+)
+
+
 def _same_as(m: re.Match[str]) -> str:
     """ "a wall of the same length behind it", "a tower as tall as the first one": as long (tall)
     as the structure named just before, by its name (it was dropped, or a tower of 1 built)."""
@@ -284,6 +291,12 @@ def _same_as(m: re.Match[str]) -> str:
     if not named:
         return m.group(0)  # "two towers of the same height": a claim of their own, checked later
     last = named[-1]
+    if (
+        re.search(r"\bas\s+\w+\s+as\s+it\b", m.group(0), re.I)
+        and _BY_IT.search(before)
+        and len(named) >= 2
+    ):
+        last = named[-2]  # "then a tower next to it, as tall as it is": the one it stands by
     noun = last[:-1] if last.endswith("s") and last[:-1] in lx.SHAPE_WORDS else last
     said = (m.group(1) or m.group(2)).lower()
     word = {"length": "long", "long": "long", "width": "wide"}.get(said, "tall")
@@ -697,6 +710,18 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a 150 mm cube made of cubes": a block that size each way (a row of 3 was built)
     (re.compile(r"\ban?\s+(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+cube\b(?:\s+(?:made\s+)?(?:of|from|out\s+of)\s+"
                 r"(?:small(?:er)?\s+)?cubes)?", re.I), lambda m: _sized_cube(m)),
+    # "an L, 4 one way and 3 the other": 4 by 3; "a plus, 5 cubes across each way": 5 by 5
+    (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?(?:long\s+)?"
+                r"(?:one\s+way|in\s+one\s+direction)\s*,?\s*(?:and\s+)?(\d+|one|two|three|four|five|six|"
+                r"seven|eight)\s+(?:cubes?\s+)?(?:long\s+)?(?:the\s+other(?:\s+way)?|in\s+the\s+other"
+                r"(?:\s+direction)?)\b", re.I), r"\1 by \2"),
+    (re.compile(r"\b(\d+|three|four|five|six|seven|eight|nine)\s+(?:cubes?\s+)?(?:across\s+|long\s+|wide\s+)?"
+                r"(?:each|both|either|every)\s+ways?\b", re.I), r"\1 by \1"),
+    # "bottom layer 4 by 4, then 3 by 3 on it": the first layer ('bottom' was left unused)
+    (re.compile(r"^(\W*)(?:the\s+)?bottom\s+(layer|level|tier|course|row)\b(?!\s*[:=-])"
+                r"(?!.*\b(?:top|middle|second|upper|next)\s+(?:layer|level|tier|course|row)\b)",
+                re.I),
+     r"\1\2"),
     # "a 3 by 3 grid and, 10 cm behind it, a pyramid": the place said first, between commas
     (re.compile(r"\band\s*,\s*([^,.;]{2,40}?\b(?:it|them|its\s+(?:left|right)|their\s+(?:left|right)))"
                 r"\s*,\s*(?=(?:an?|one|two|three|four|another|\d+)\b)", re.I), r"and \1 "),

@@ -2822,10 +2822,19 @@ _WHAT_IT_MAKES = re.compile(
 _LIKENESS_SIZE = re.compile(rf"\b{_N}\s*(?:x|by)\s*{_N}(?:\s*(?:x|by)\s*{_N})?\b", re.IGNORECASE)
 """A size said inside a likeness ("like a floor six by six")."""
 
+_SIZE_AFTER_IT = re.compile(
+    r"\b(next\s+to|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of)\s+(it|them)\s*,?\s+"
+    r"((?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long))\b"
+    r"(?=\s*(?:[.;,]|$))",
+    re.IGNORECASE,
+)
+"""A size said after the pronoun of a relation is the subject's ("… next to it, 2 high")."""
+
 _LEVEL_LABEL = re.compile(
     r"(?:^|(?<=[.;,!\n]))\s*(?:level|layer|tier|floor|storey|story|lvl)\s*"
     r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s*[:=)-]|\s+(?:is|has)\b|"
-    r"(?=\s+(?:an?\s|\d|the\s+same\b)))\s*",  # "level 1 is a 4x2 slab", "layer one 2 by 6"
+    r"(?=\s+(?:(?:an?|one|two|three|four|five|six|just|only|single)\s|\d|the\s+same\b)))\s*",
+    # "level 1 is a 4x2 slab", "layer one 2 by 6", "level 3 one cube"
     re.IGNORECASE,
 )
 
@@ -2993,6 +3002,7 @@ def rewrite(text: str, st: ReadState) -> str:
 
         text = pattern.sub(sub, text)
     text = _LEVEL_ORDINAL.sub(" on top ", text)
+    text = _SIZE_AFTER_IT.sub(r"\3 \1 \2", text)  # "a tower next to it, 2 high": its own size
     for c in _COMPARISON.finditer(text):
         # "the left one taller than the right one": a comparison no rewrite turned into a value
         # ("two cubes taller than the walls" is a difference the grammar reads, or whose
