@@ -5845,3 +5845,20 @@ def test_one_way_and_the_other_each_way_and_the_bottom_layer():
     r = plan("level 1 a 5x5 square, level 2 a 3x3 square in the middle, level 3 one cube in the "
              "middle")
     assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]
+
+
+def test_a_structure_on_either_side_stands_apart():
+    # "a bridge with a 4-high tower on either side of it": the towers stood against its ends,
+    # one structure with it
+    for command in ("a bridge with a 4-high tower on either side of it",
+                    "build a staircase of three and two towers of three one on each side of "
+                    "it"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", command
+        gap = r.spec.relations[0].gap_m
+        assert [x.at for x in r.spec.relations] == ["ends"] and gap is not None and gap > 0
+    # "at each end" of a row: against its ends, as before
+    r = plan("a row of 5 with a cube at each end")
+    assert [(x.at, x.gap_m) for x in r.spec.relations] == [("ends", None)]
+    ys = sorted(round(o.position[1], 3) for o in r.layout.objects)
+    assert len(ys) == 7 and all(round(b - a, 3) == 0.05 for a, b in itertools.pairwise(ys))

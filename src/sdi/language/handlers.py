@@ -87,6 +87,7 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     on_top = re.search(r"\bon\s+top\s*,?\s*$", m.string[: m.start()], re.IGNORECASE)
     kind = "on_top_of" if (on or on_top or at == "corners") and not flanking else "next_to"
     st.anchors.append((kind, at))
+    st.flanking = st.flanking or bool(flanking and kind == "next_to")
     st.notes.append(
         f"read '{said}' as "
         + (f"one at each of its {at}" if at.endswith("s") else f"on one {at}")

@@ -154,6 +154,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         st.material = [w for w in st.material if w.lower() not in said]
         st.notes = [n for n in st.notes if not any(n.startswith(f"ignored '{w}'") for w in said)]
         st.notes.append(f"read '{touch.group(0)}' as no gap between the structures")
+    if st.flanking:  # "a tower on either side of it": apart from it, as separate structures
+        relations = [
+            r.model_copy(update={"gap_m": cell.design.structure_gap})
+            if r.at in ("ends", "sides") and r.kind == "next_to" and r.gap_m is None
+            else r
+            for r in relations
+        ]
     drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     specs = [_arch_overall(s, command, cell.cube[2], st) for s in specs]

@@ -66,6 +66,7 @@ class ReadState:
     listing: str | None = None  # "left to right: a, then b": the order structures are named in
     # "on each corner", "at both ends": (relation kind, anchor) for the next such relation
     anchors: list[tuple[str, str]] = field(default_factory=list)
+    flanking: bool = False  # "a tower on either side of it": beside it, apart, not against it
     region_all: str | None = None  # "keep everything in the left half": every structure's
     delegated: str | None = None  # "your call on sizes", "whatever": the choice left to SDI
     # "not stacked", "they mustn't touch": (kind, what was said), checked on the whole reading
