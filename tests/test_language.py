@@ -5862,3 +5862,40 @@ def test_a_structure_on_either_side_stands_apart():
     assert [(x.at, x.gap_m) for x in r.spec.relations] == [("ends", None)]
     ys = sorted(round(o.position[1], 3) for o in r.layout.objects)
     assert len(ys) == 7 and all(round(b - a, 3) == 0.05 for a, b in itertools.pairwise(ys))
+
+
+def test_more_letter_counts_sides_and_negated_other_side():
+    # "two L shapes, 5 cm apart": the gap was an L's parameter, dropped
+    r = plan("two L shapes, both 3 by 2, 5 cm apart")
+    assert r.status == "success" and r.spec.gap_m == 0.05
+    assert [s.shape for s in plan("2 L shapes").spec.structures] == ["l_shape"] * 2
+    assert plan("a 5-cube tower between two L shapes").status == "success"
+    # "with each side 2 high": 2 was read as the ring's side (a 4 by 4 ring 1 high)
+    r = plan("an enclosure 4 by 4 with each side 2 high")
+    assert [(s.length, s.width, s.height) for s in r.spec.structures] == [(4, 4, 2)]
+    # "a fence round an empty square 5 by 5": a wall beside a 5 by 5 ring
+    r = plan("a fence round an empty square 5 by 5, two cubes high")
+    assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("enclosure", 5, 2)]
+    # "at the corners of a square": in a line, and a slab
+    r = plan("four 3-high towers at the corners of a square")
+    assert [s.shape for s in r.spec.structures] == ["tower"] * 4 and r.spec.grid == (2, 2)
+    # "a row of three 2-high towers with 5 cm between neighbours": a row of its own
+    r = plan("a row of three 2-high towers with 5 cm between neighbours")
+    assert [s.shape for s in r.spec.structures] == ["tower"] * 3 and r.spec.gap_m == 0.05
+    # "on its right, not on its left": the negation was left unused (partial)
+    r = plan("a 2x2x2 block with a 4-high tower on its right, not on its left")
+    assert r.status == "success" and [x.side for x in r.spec.relations] == ["right"]
+    r = plan("Make pyramid of 2 levels, not on the left side, not on the right side, in the "
+             "middle only.")
+    assert r.status == "success" and r.layout.objects[0].position[1] == pytest.approx(0.3, abs=0.03)
+    # "make it more tall with 2 cube": a wall of guessed parts beside the tower
+    r = plan("make tower of 3 cube. after, make it more tall with 2 cube")
+    assert [s.height for s in r.spec.structures] == [5]
+    # "steps, 1, 2, 3 and 4 cubes high": one step
+    r = plan("The result should be steps, 1, 2, 3 and 4 cubes high")
+    assert [(s.shape, s.steps) for s in r.spec.structures] == [("staircase", 4)]
+    # "…, completely solid": 'solid' a second block beside the box
+    r = plan("the finished thing is a box 3 wide, 2 deep, 2 tall, completely solid")
+    assert r.status == "success" and len(r.spec.structures) == 1
+    # "L 4x2 front left": a 2 by 4 slab
+    assert [s.shape for s in plan("L 4x2 front left").spec.structures] == ["l_shape"]

@@ -185,7 +185,13 @@ def _counts_something(doc: Doc, i: int) -> bool:
         return True
     if after[0].lower_ in ("more", "of", "others", "again", "copies", "times", "each", "apiece"):
         return True
-    return any(t.tag_ in ("NNS", "NNPS") for t in after)
+    return any(t.tag_ in ("NNS", "NNPS") or t.lower_ in _PLURAL_NOUNS for t in after)
+
+
+_PLURAL_NOUNS = frozenset(
+    {"shapes", *(w for w in lx.SHAPE_WORDS if w.endswith("s") and w not in ("steps", "stairs"))}
+)
+"""Plural structure nouns the tagger may take for a verb ("2 T shapes")."""
 
 
 _NOT_GEOMETRY = frozenset(

@@ -211,6 +211,11 @@ MODIFY = [
         "=",
     ),
     _op(r"\b(?:make\s+(?:it|them)\s+)?" + _N + r"\s+times\s+as\s+(?:tall|high)\b", "*"),
+    # "make it more tall with 2 cube", "make it taller by 2": that many more
+    _op(r"\bmake\s+" + _REF + r"\s+(?:more\s+(?:tall|high)|taller|higher)\s+(?:with|by)\s+" + _N
+        + r"(?:\s+(?:more\s+)?(?:cubes?|levels?|layers?))?\b", "+"),
+    _op(r"\bmake\s+" + _REF + r"\s+(?:more\s+long|longer)\s+(?:with|by)\s+" + _N
+        + r"(?:\s+(?:more\s+)?cubes?)?\b", "+length"),
     # "a tower of 2 and a tower of 4. Make the smaller one as tall as the other."
     _op(
         r"\bmake\s+the\s+(smaller|shorter|lower|taller|bigger|higher|larger)\s+(?:one|tower|stack|"

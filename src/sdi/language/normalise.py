@@ -710,6 +710,43 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     # "a 150 mm cube made of cubes": a block that size each way (a row of 3 was built)
     (re.compile(r"\ban?\s+(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+cube\b(?:\s+(?:made\s+)?(?:of|from|out\s+of)\s+"
                 r"(?:small(?:er)?\s+)?cubes)?", re.I), lambda m: _sized_cube(m)),
+    # "an enclosure 4 by 4 with each side 2 high": its walls 2 high (2 was read as a side)
+    (re.compile(r"\b(?:each|every|all)\s+(?:of\s+its\s+|the\s+)?(?:sides?|walls?)\s+(?:is\s+|are\s+|being\s+)?"
+                r"(\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(high|tall)\b", re.I),
+     r"\1 \2"),
+    # "a fence round an empty square 5 by 5": a hollow square that size (the fence was a wall
+    # of its own beside a slab)
+    (re.compile(r"\b(?:an?\s+)?(?:fence|wall|walls|ring|border)\s+(?:all\s+)?(?:a?round|enclosing)\s+an?\s+"
+                r"(?:empty|open|hollow|clear)\s+(?:square|rectangle|area|space|yard)\b", re.I),
+     "a hollow square"),
+    # "four towers at the corners of a square": in a square
+    (re.compile(r"\b(?:at|on)\s+the\s+(?:four\s+)?corners\s+of\s+(?:a|an\s+imaginary)\s+square\b",
+                re.I), "in a square"),
+    # "a row of three 2-high towers": three towers in a row ("between neighbours": apart)
+    (re.compile(r"\ba\s+(?:row|line)\s+of\s+(two|three|four|five|six|\d+)\s+((?:[\w-]+\s+)?(?:towers|"
+                r"stacks|columns|pillars|pyramids|walls|blocks|arches|bridges))\b", re.I),
+     r"\1 \2 in a row"),
+    (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:between|from)\s+(?:neighbours|neighbors|"
+                r"neighbouring\s+ones|one\s+to\s+the\s+next)\b", re.I), r"\1 apart"),
+    # "a steps shape, 1, 2, 3 and 4 cubes high": a staircase of 4 steps
+    (re.compile(r"\b(steps|stairs|staircase)\s*,?\s*1\s*,\s*2\s*(?:,\s*3\s*)?(?:,\s*4\s*)?(?:,\s*5\s*)?(?:,\s*6\s*)?"
+                r"(?:,?\s*and|,)\s*([3-7])\s+(?:cubes?\s+)?(?:high|tall)\b", re.I),
+     lambda m: f"{m.group(1)} of {m.group(2)} steps"),
+    # "a box 3 wide, 2 deep, 2 tall, completely solid": what a block is ('solid' was a second)
+    (re.compile(r"\s*,?\s*(?:and\s+)?(?:completely|totally|fully|entirely|all|100%)\s+(?:solid|filled(?:\s+in)?)\b",
+                re.I),
+     lambda m: " " if re.search(r"\b(?:box|block|brick|cuboid|slab|grid|pad|platform)\b",
+                                m.string[: m.start()], re.I) else m.group(0)),
+    # "a tower on its right, not on its left": the side said, the other ruled out
+    (re.compile(r"(?<!\bnot\s)\b((?:on|to)\s+(?:its|the)\s+(left|right|front|back)(?:\s+side)?)\s*,?\s*"
+                r"(?:and\s+|but\s+)?"
+                r"not\s+(?:on\s+|to\s+)?(?:its|the)\s+(left|right|front|back)(?:\s+side)?\b", re.I),
+     lambda m: m.group(1) if m.group(2).lower() != m.group(3).lower() else m.group(0)),
+    # "L 4x2 front left": an L shape that size ("L" alone is left elsewhere)
+    (re.compile(r"(?:^|(?<=[.;,]\s))L\s+(?=\d+\s*(?:x|by)\s*\d)"), "an L shape "),
+    # "2 L shapes", "two T shapes": that many letter shapes (the capital read as 'long')
+    (re.compile(r"\b([2-6])\s+(?=[LTU][\s-]+shape[sd]?\b)"),
+     lambda m: ("two", "three", "four", "five", "six")[int(m.group(1)) - 2] + " "),
     # "an L, 4 one way and 3 the other": 4 by 3; "a plus, 5 cubes across each way": 5 by 5
     (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?(?:long\s+)?"
                 r"(?:one\s+way|in\s+one\s+direction)\s*,?\s*(?:and\s+)?(\d+|one|two|three|four|five|six|"

@@ -68,7 +68,8 @@ _PLURALS = "|".join(
     sorted((w for w in lx.SHAPE_WORDS if w.endswith("s") and w.isalpha()), key=len, reverse=True)
 )
 _PLURAL_SHAPES = re.compile(
-    r"\b(?:two|three|four|five|\d+|both|pair\s+of|couple\s+of)\s+(?:\w+\s+)?(?:" + _PLURALS + r")\b"
+    r"\b(?:two|three|four|five|\d+|both|pair\s+of|couple\s+of)\s+(?:\w+\s+)?(?:" + _PLURALS
+    + r"|shapes)\b"  # "two L shapes"
     r"|\b(?:another|second|identical|copy|same)\b|\bits\b|\bof\s+it\b"
     # "towers of 3 and 6": a size for each of several
     r"|\b(?:" + _PLURALS + r")\s+(?:of\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"

@@ -74,6 +74,8 @@ HARMLESS = _words(
     sorry oops wait req fyi thx asap kindly ta lonely sturdy sign slide visual deck mock
     mockup meanwhile anyway anyways besides btw otherwise replicate reproduce stage staged
     deliver fetch prepare approx approximate exact dimension dimensions better best
+    proper plonk plonked plonking pop popped somewhere finished result resulting end product
+    completely totally fully entirely
     """
 )
 
