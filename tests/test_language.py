@@ -5899,3 +5899,42 @@ def test_more_letter_counts_sides_and_negated_other_side():
     assert r.status == "success" and len(r.spec.structures) == 1
     # "L 4x2 front left": a 2 by 4 slab
     assert [s.shape for s in plan("L 4x2 front left").spec.structures] == ["l_shape"]
+
+
+def test_ticket_abbreviations_confirmations_and_described_shapes():
+    # "len 6, ht 2, pos front": the length dropped (a wall 3.85 m long refused)
+    r = plan("WO-77: wall, len 6, ht 2, runs left-right, pos front")
+    assert r.status == "success"
+    assert [(s.shape, s.length, s.height, s.region) for s in r.spec.structures] == [
+        ("wall", 6, 2, "front")
+    ]
+    r = plan("qty 1 block, len 3 wid 2 ht 2")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("block", 2)]
+    r = plan("ticket: wall A len 6 ht 2, wall B same size")
+    assert [(s.length, s.height) for s in r.spec.structures] == [(6, 2), (6, 2)]
+    # "wall len 5 ht 3 with a tower of 2 on top": 'wall' the verb (a tower 3 high alone)
+    r = plan("wall len 5 ht 3 with a tower of 2 on top")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["wall", "tower"]
+    assert plan("qty 4 twrs ht 1 in a square, 1 clr").spec.grid == (2, 2)
+    # a number confirmed again was built a second time
+    r = plan("a row of, uh, six cubes? no seven. seven cubes")
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("row", 7)]
+    r = plan("maybe a tower of 4? yeah 4 cubes")
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 4)]
+    r = plan("three towers. 3 high.")
+    assert [s.height for s in r.spec.structures] == [3, 3, 3]
+    # steps listed, a closed square, one leg and the other, the far edge, a 2x2 pillar
+    r = plan("steps going up 1, 2, 3, 4 cubes, climbing to the left")
+    assert [(s.steps, s.axis) for s in r.spec.structures] == [(4, "y")]
+    r = plan("a closed square of cubes, 5 by 5, one cube high")
+    assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("enclosure", 5, 1)]
+    r = plan("an L: one leg 4 cubes, the other 3 cubes")
+    assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("l_shape", 4, 3)]
+    r = plan("a 5x5 layer of cubes near the far edge")
+    assert [s.region for s in r.spec.structures] == ["back"]
+    r = plan("a 2x2 pillar 5 blocks tall")
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("block", 2, 2, 5)
+    ]
+    r = plan("stairs 3 steps up to the right, 3 wide")
+    assert [(s.steps, s.axis, s.yaw_deg) for s in r.spec.structures] == [(3, "y", 180.0)]

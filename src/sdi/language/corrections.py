@@ -252,9 +252,37 @@ def _confirmed(m: re.Match[str], notes: list[str]) -> str:
     return f"{m.group(1)}the {m.group(2)}"
 
 
+_RESTATED = re.compile(
+    rf"(?<=[.?!;])(\s*)(?:(?:yes|yeah|yep|yup|ok|okay|right|so|that'?s|i\s+said)\s*,?\s*)?({_NUMBER})"
+    r"(?:\s+(?:cubes?|blocks?|of\s+them))?\s*(?:[.!?]+\s*|$)",
+    re.IGNORECASE,
+)
+
+
+def _restated(text: str, notes: list[str]) -> str:
+    """ "maybe a tower of 4? yeah 4 cubes", "six cubes? no seven. seven cubes": a sentence
+    that only says again the number said last before it (it was built a second time)."""
+
+    def drop(m: re.Match[str]) -> str:
+        said = re.findall(rf"\b{_NUMBER}\b", m.string[: m.start()], re.IGNORECASE)
+        if not said or words_to_numbers([said[-1].lower()]) != words_to_numbers(
+            [m.group(2).lower()]
+        ):
+            return m.group(0)
+        notes.append(f"read '{m.group(0).strip()}' as the {m.group(2)} said before, confirmed")
+        return m.group(1)
+
+    return _RESTATED.sub(drop, text)
+
+
 def correct(text: str, notes: list[str], material: list[str] | None = None) -> str:
-    """`text` with every "old …, no wait, new" replaced by the corrected wording; a correction
-    whose old value the command says more than once is also in `material`."""
+    """`text` with every "old …, no wait, new" replaced by the corrected wording, and a number
+    only confirmed again dropped; a correction whose old value the command says more than once
+    is also in `material`."""
+    return _restated(_corrected(text, notes, material), notes)
+
+
+def _corrected(text: str, notes: list[str], material: list[str] | None = None) -> str:
     if _MARKER.search(text):
         text = _WAS_WRONG.sub(" ", text)
     text = _CONFIRMED.sub(lambda m: _confirmed(m, notes), text)

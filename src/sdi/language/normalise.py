@@ -4,7 +4,7 @@ forms — before anything reads it. Numbers SDI cannot use (not finite, past 10�
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 from rapidfuzz.distance import DamerauLevenshtein
 
@@ -728,10 +728,22 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      r"\1 \2 in a row"),
     (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:between|from)\s+(?:neighbours|neighbors|"
                 r"neighbouring\s+ones|one\s+to\s+the\s+next)\b", re.I), r"\1 apart"),
-    # "a steps shape, 1, 2, 3 and 4 cubes high": a staircase of 4 steps
-    (re.compile(r"\b(steps|stairs|staircase)\s*,?\s*1\s*,\s*2\s*(?:,\s*3\s*)?(?:,\s*4\s*)?(?:,\s*5\s*)?(?:,\s*6\s*)?"
-                r"(?:,?\s*and|,)\s*([3-7])\s+(?:cubes?\s+)?(?:high|tall)\b", re.I),
-     lambda m: f"{m.group(1)} of {m.group(2)} steps"),
+    # "steps, 1, 2, 3 and 4 cubes high", "steps going up 1, 2, 3, 4 cubes": 4 steps
+    (re.compile(r"\b(steps|stairs|staircase)((?:\s+(?:going|climbing|rising|that\s+go|up))*)\s*,?\s*1\s*,\s*2"
+                r"\s*(?:,\s*3\s*)?(?:,\s*4\s*)?(?:,\s*5\s*)?(?:,\s*6\s*)?(?:,?\s*and|,)\s*([3-7])"
+                r"(?:\s+cubes?)?(?:\s+(?:high|tall))?\b", re.I),
+     lambda m: f"{m.group(1)} of {m.group(3)} steps{m.group(2)}"),
+    # "a closed square of cubes, 5 by 5": a ring
+    (re.compile(r"\b(?:closed|fenced|walled)\s+(square|rectangle)\b", re.I), r"hollow \1"),
+    # "an L: one leg 4 cubes, the other 3 cubes": 4 by 3
+    (re.compile(r"\bone\s+(?:leg|arm|side)\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|six|seven)\s*(?:cubes?\s*)?"
+                r"(?:long\s*)?,?\s*(?:and\s+)?the\s+other(?:\s+one)?\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|"
+                r"six|seven)(?:\s+cubes?)?(?:\s+long)?\b", re.I), r"\1 by \2"),
+    # "near the far edge": at the back (near was read as the near edge)
+    (re.compile(r"\bnear\s+(?:to\s+)?the\s+far\s+(edge|side|end)\b", re.I), r"at the far \1"),
+    # "a 2x2 pillar 5 blocks tall": a block that size (a slab beside a pillar)
+    (re.compile(r"\b(?:an?\s+)?(\d+)\s*(?:x|by)\s*(\d+)\s+(?:pillar|column|tower|stack|post)\s+(?:of\s+)?(\d+)\s+"
+                r"(?:cubes?\s+|blocks?\s+)?(?:tall|high)\b", re.I), r"a \1 by \2 by \3 block"),
     # "a box 3 wide, 2 deep, 2 tall, completely solid": what a block is ('solid' was a second)
     (re.compile(r"\s*,?\s*(?:and\s+)?(?:completely|totally|fully|entirely|all|100%)\s+(?:solid|filled(?:\s+in)?)\b",
                 re.I),
@@ -772,6 +784,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?=away|apart|off|from|between)", re.I),
      lambda m: f"{m.group(1)} {m.group(2)}"
      + ("" if m.group(1).lower() in ("one", "a", "1") else "s") + " "),
+    # "wall len 5 ht 3 with …" at a clause's start: the noun, not the verb "to wall"
+    (re.compile(r"(^|[.;:]\s*)(wall|fence|ring|block|bridge)(?=\s+(?:len|lgth|ht|hgt|wid|dp)\b)",
+                re.I), r"\1a \2"),
     # "a couple of layers of cubes, 3 by 3": two layers (one was built)
     (re.compile(r"\ba\s+couple\s+of\s+(?=(?:layers|levels|tiers|courses|storeys|steps|cubes|blocks)\b)",
                 re.I), "two "),
@@ -1467,7 +1482,20 @@ _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps
 
 
 # Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
-_SHORTHAND = [
+_Repl = str | Callable[[re.Match[str]], str]
+_TICKET_DIM = {"len": "long", "lgth": "long", "ht": "high", "hgt": "high", "hght": "high",
+               "wid": "wide", "wdth": "wide", "dp": "deep", "dpth": "deep"}  # fmt: skip
+_SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
+    # a work ticket's abbreviations: "len 6, ht 2, wid 2", "pos front", "qty 1 block"
+    (re.compile(r"\b(len|lgth|ht|hgt|hght|wid|wdth|dp|dpth)\.?\s*[:=]?\s*(\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?)"
+                r"(?:\s*cubes?\b)?", re.I),
+     lambda m: f"{m.group(2)} {_TICKET_DIM[m.group(1).lower()]}"),
+    (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*((?:front|back|rear|left|right|centre|center|middle)"
+                r"(?:[\s-]+(?:left|right|corner))?)\b", re.I), r"at the \1"),
+    (re.compile(r"\b(?:qty|qnty)\.?\s*[:=]?\s*(\d+)\s+(?=[a-z])", re.I), r"\1 "),
+    # "wall A …, wall B same size": a label, not a size or a letter shape
+    (re.compile(r"\b(wall|tower|row|block|slab|stack|column|pyramid)\s+[A-D](?=\s*(?:[,:]|\d|$|same\b|"
+                r"\d+\s|len\b|ht\b|is\b))"), r"\1"),
     # Scots on the shop floor: "a tower o' five", "wi' a gap", "tae the right", "twa high"
     (re.compile(r"\bo['’](?=\s)(?!\s*clock)", re.I), "of"),
     (re.compile(r"\bwi['’](?=\s)", re.I), "with"),
@@ -1821,12 +1849,14 @@ def _dimensioned(m: re.Match[str]) -> str:
     return f" {value.strip()} {_DIM_WORD[dim.lower()]} "
 
 
-def _expand_noted(pairs: list[tuple[re.Pattern[str], str]], text: str, notes: list[str]) -> str:
-    """Each pattern replaced by its template, each replacement noted."""
+def _expand_noted(
+    pairs: Sequence[tuple[re.Pattern[str], _Repl]], text: str, notes: list[str]
+) -> str:
+    """Each pattern replaced by its template (or what its function gives), each noted."""
     for pattern, repl in pairs:
 
-        def expand(m: re.Match[str], repl: str = repl) -> str:
-            out = m.expand(repl)
+        def expand(m: re.Match[str], repl: _Repl = repl) -> str:
+            out = repl(m) if callable(repl) else m.expand(repl)
             notes.append(f"read '{m.group(0).strip()}' as '{out.strip()}'")
             return out
 

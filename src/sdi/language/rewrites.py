@@ -479,7 +479,7 @@ _REWRITES += [
     (  # "stairs x4, up to the back": the way a staircase named just before climbs
         re.compile(
             r"((?:\bstairs|\bsteps|\bstaircase)(?:\s+(?:x\s*|of\s+)?(?:\d+|two|three|four|five|six|"
-            r"seven|eight)(?:\s+steps)?)?)\s*,\s*(?:going\s+)?up\s+to(?:wards)?\s+the\s+"
+            r"seven|eight)(?:\s+steps)?)?)\s*,?\s*(?:going\s+)?up\s+to(?:wards)?\s+the\s+"
             r"(left|right|front|back)\b",
             re.IGNORECASE,
         ),
@@ -1964,7 +1964,7 @@ _REWRITES += [
     (  # "four stacks of 2 arranged in a square": rows and columns where the count makes one
         re.compile(
             r",?\s*\b(?:(?:arranged|set\s+out|laid\s+out|placed|standing|stood|set|positioned)\s+in"
-            r"|(?<=s)\s+in|(?<=\d)\s+in)\s+(?:a\s+)?"
+            r"|(?<=s)\s+in|(?<=\d)\s+in|(?<=high)\s+in|(?<=tall)\s+in|(?<=,)\s+in)\s+(?:a\s+)?"
             r"(square|circle|ring|triangle|cross|grid|diamond)(?:\s+(?:formation|pattern|arrangement|"
             r"shape|layout))?\b(?!\s+(?:of|with|\d)\b)",
             re.IGNORECASE,
