@@ -5938,3 +5938,27 @@ def test_ticket_abbreviations_confirmations_and_described_shapes():
     ]
     r = plan("stairs 3 steps up to the right, 3 wide")
     assert [(s.steps, s.axis, s.yaw_deg) for s in r.spec.structures] == [(3, "y", 180.0)]
+
+
+def test_orders_levels_and_corrections_by_noun():
+    # "towers of 2, 4 and 6 … from left to right, shortest on the left": the order was
+    # reversed twice (4, 6, 2)
+    r = plan("towers of 2, 4 and 6 in a line from left to right, shortest on the left")
+    columns: dict = {}
+    for o in r.layout.objects:
+        columns[round(o.position[1], 3)] = columns.get(round(o.position[1], 3), 0) + 1
+    assert [columns[y] for y in sorted(columns, reverse=True)] == [2, 4, 6]  # left (+y) first
+    # "bottom level: 3 by 3. level 2: …": the bottom stood apart from levels 2 and 3
+    r = plan("bottom level: 3 by 3. level 2: 2 by 2. level 3: 1 cube.")
+    assert [(x.subject, x.object) for x in r.spec.relations] == [(1, 0), (2, 1)]
+    # "a pyramid with base 4... no, base 3": a platform of 3 beside a pyramid of 4
+    r = plan("a pyramid with base 4... no, base 3")
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("pyramid", 3)]
+    # "now one the same as before on the right": dropped (partial)
+    r = plan("put a tower of 4 on the left. now one the same as before on the right")
+    assert [(s.height, s.region) for s in r.spec.structures] == [(4, "left"), (4, "right")]
+    # "from the front to the back", "on the far side of it"
+    r = plan("three single cubes in a line from the front to the back, 10 cm gaps")
+    assert r.status == "success" and [s.axis for s in r.spec.structures] == ["x"]
+    r = plan("a wall 4 long 2 high and, on the far side of it, a tower of 3")
+    assert [x.side for x in r.spec.relations] == ["back"]

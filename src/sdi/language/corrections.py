@@ -199,6 +199,21 @@ def _regrouped(taken_back: str, new: str) -> str:
     return new
 
 
+def _noun_first(before: str, value: str, rest: str, notes: list[str]) -> str | None:
+    """ "a pyramid with base 4... no, base 3": the number said after the same noun, replaced
+    (the noun alone was read as another structure, a platform)."""
+    m = re.fullmatch(rf"([a-z]+)\s+(?:of\s+|is\s+)?({_NUMBER})", value, re.IGNORECASE)
+    if m is None:
+        return None
+    olds = list(re.finditer(rf"\b{re.escape(m.group(1))}\s+(?:of\s+|is\s+)?({_NUMBER})\b", before,
+                            re.IGNORECASE))  # fmt: skip
+    if not olds:
+        return None
+    old = olds[-1]
+    notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
+    return before[: old.start(1)] + m.group(2) + before[old.end(1) :] + rest
+
+
 def _with_noun(before: str, value: str, rest: str, notes: list[str]) -> str | None:
     """ "five steps, no, six steps": the number said last with the same noun, replaced; "three
     towers of three, no, make that four towers of three a cube apart": the whole phrase."""
@@ -310,6 +325,10 @@ def _corrected(text: str, notes: list[str], material: list[str] | None = None) -
         if side != value and _kind(side) == "region":
             value = side
         kind = _kind(value) if value and not _names_structure(value) else None
+        renamed = _noun_first(before, value, rest, notes)  # "with base 4... no, base 3"
+        if renamed is not None:
+            text = renamed
+            continue
         recounted = _with_noun(before, value, rest, notes)  # "3 towers, no wait, 4 towers"
         if recounted is not None:
             text = recounted

@@ -384,6 +384,7 @@ _ENCLOSING = re.compile(
 _EMPTY_INSIDE = re.compile(
     r"\b(?:hollow|empty|open|anything|nothing|something|no)\s+(?:\w+\s+)?$", re.I
 )
+_NOT_THE_TABLE = r"(?!\s+(?:the\s+)?(?:table|workspace|cell|bench|work\s+area|tabletop)\b)"
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # "three towers of two in line": in a line (the line was read as a row of its own)
     (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
@@ -739,6 +740,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bone\s+(?:leg|arm|side)\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|six|seven)\s*(?:cubes?\s*)?"
                 r"(?:long\s*)?,?\s*(?:and\s+)?the\s+other(?:\s+one)?\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|"
                 r"six|seven)(?:\s+cubes?)?(?:\s+long)?\b", re.I), r"\1 by \2"),
+    # "from the front to the back": from front to back ('back' was left unused)
+    (re.compile(r"\bfrom\s+the\s+(front|back|left|right)\s+to\s+the\s+(front|back|left|right)\b",
+                re.I), r"from \1 to \2"),
+    # "on the far side of it": behind it; "on the near side of it": in front of it
+    (re.compile(r"\bon\s+the\s+far\s+side\s+of\b" + _NOT_THE_TABLE, re.I), "behind"),
+    (re.compile(r"\bon\s+the\s+near\s+side\s+of\b" + _NOT_THE_TABLE, re.I), "in front of"),
     # "near the far edge": at the back (near was read as the near edge)
     (re.compile(r"\bnear\s+(?:to\s+)?the\s+far\s+(edge|side|end)\b", re.I), r"at the far \1"),
     # "a 2x2 pillar 5 blocks tall": a block that size (a slab beside a pillar)

@@ -219,8 +219,8 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"{len(specs)} structures is more than 50", understood=understood_summary(doc)
         )
     relations = _one_each(relations, st)
-    specs = _ordered(specs, relations, st)
-    specs = _different(_listed(specs, relations, st), st)
+    specs = _listed(specs, relations, st)  # named left to right: placed right to left
+    specs = _different(_ordered(specs, relations, st), st)
     rows_named = re.search(r"\b(?:rows?|lines?|in\s+a\s+row)\b", text, re.IGNORECASE)
     guessed = [
         s for s in specs if s.shape in ("row", "wall") and (getattr(s, "length", None) or 2) > 1
@@ -539,7 +539,8 @@ def _ordered(
         return [specs[k] for k in up]
     pick = sizes.index(max(sizes) if most == "max" else min(sizes))
     rest = [s for k, s in enumerate(specs) if k != pick]
-    if (where in ("front", "back") and st.line != "x") or (where in ("left", "right") and st.line):
+    if (where in ("front", "back") and st.line != "x") or (where in ("left", "right") and
+                                                           st.line == "x"):  # fmt: skip
         st.material.append(said)
         st.notes.append(f"ignored '{said}': the structures do not stand in a line that way")
         return specs

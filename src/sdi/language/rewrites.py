@@ -2537,7 +2537,10 @@ _LIKE_THAT = re.compile(
 """'And another like that, behind it', 'duplicate it 1 cube to the left': another of the
 one named before."""
 _SAME_AGAIN = re.compile(
-    r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?", re.I
+    r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?"
+    r"|\b(?:one|another(?:\s+one)?)\s+(?:just\s+)?the\s+same\s+as\s+(?:before|the\s+first(?:\s+one)?|that"
+    r"(?:\s+one)?)\b(?:\s*,?\s*but\b)?",  # "now one the same as before on the right"
+    re.I,
 )
 _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5]|both|a\s+(?:couple|pair)\s+of)\s+((?:[\w-]+\s+)?)("
@@ -2863,6 +2866,9 @@ def _level_labels(text: str, st: ReadState) -> str:
     the first stands on the one before it (also named in words: "Bottom: … Middle: … Top:")."""
     labels = list(_LEVEL_LABEL.finditer(text))
     numbers = [int(words_to_numbers([m.group(1).lower()])[0]) for m in labels]
+    first = [w for w in _LEVEL_WORD.finditer(text[: labels[0].start()])] if labels else []
+    if numbers[:1] == [2] and first and _LEVEL_RANK[first[-1].group(1).lower()] == 1:
+        labels, numbers = [first[-1], *labels], [1, *numbers]  # "bottom level: 3 by 3. level 2: …"
     if len(labels) < 2:
         labels = list(_LEVEL_WORD.finditer(text))
         numbers = [_LEVEL_RANK[m.group(1).lower()] for m in labels]
