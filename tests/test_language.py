@@ -5962,3 +5962,18 @@ def test_orders_levels_and_corrections_by_noun():
     assert r.status == "success" and [s.axis for s in r.spec.structures] == ["x"]
     r = plan("a wall 4 long 2 high and, on the far side of it, a tower of 3")
     assert [x.side for x in r.spec.relations] == ["back"]
+
+
+def test_layers_listed_ones_named_and_sides_apart():
+    # "layers from the bottom: 3x2, 3x2, 3x2": one layer
+    r = plan("layers from the bottom: 3x2, 3x2, 3x2")
+    assert len(r.spec.structures) == 3 and len(r.spec.relations) == 2
+    # "two towers: a big one with five blocks and a small one with two blocks": three towers
+    r = plan("Now the robot will build two towers: a big one with five blocks and a small one "
+             "with two blocks. The small one goes on the left!")
+    assert sorted(s.height for s in r.spec.structures) == [2, 5]
+    # "the left one 5 high, the right one 3 high, 15 cm between them": 25 cm apart
+    r = plan("two towers: the left one 5 high, the right one 3 high, 15 cm between them")
+    ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
+    assert r.status == "success" and ys[1] - ys[0] == pytest.approx(0.15 + 0.05, abs=0.002)
+    assert max(r.layout.objects, key=lambda o: o.position[2]).position[1] == ys[1]  # 5 left

@@ -740,6 +740,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
     (re.compile(r"\bone\s+(?:leg|arm|side)\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|six|seven)\s*(?:cubes?\s*)?"
                 r"(?:long\s*)?,?\s*(?:and\s+)?the\s+other(?:\s+one)?\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|"
                 r"six|seven)(?:\s+cubes?)?(?:\s+long)?\b", re.I), r"\1 by \2"),
+    # "two pyramids, a big one with a base of 5 and a small one with a base of 3": each named
+    (re.compile(r"\b(?:two|2|both)\s+(" + _FAMILY_SAID + r")s\s*[:,]\s*(an?\s+[a-z]+\s+)one\b"
+                r"([^.;!?]*?\band\s+)(an?\s+[a-z]+\s+)one\b", re.I),
+     lambda m: f"{m.group(2)}{m.group(1)}{m.group(3)}{m.group(4)}{m.group(1)}"),
+    # "layers from the bottom: 3x2, 3x2, 3x2": each layer on the one before
+    (re.compile(r"\b(?:levels|layers|tiers)\s+(?:from\s+(?:the\s+)?bottom(?:\s+up)?|bottom\s+(?:to|up)(?:\s+(?:to\s+)?top)?)"
+                r"\s*:\s*((?:\d+\s*(?:x|by)\s*\d+|(?:one|a\s+single|1)\s+cube)(?:\s*(?:,|and|,\s*and|then)\s*(?:\d+\s*(?:x|by)\s*\d+|"
+                r"(?:one|a\s+single|1)\s+cube))+)", re.I),
+     lambda m: " ".join(f"level {k + 1}: {size.strip()}." for k, size in enumerate(
+         re.split(r"\s*(?:,\s*and|,|\band\b|\bthen\b)\s*", m.group(1))))),
     # "from the front to the back": from front to back ('back' was left unused)
     (re.compile(r"\bfrom\s+the\s+(front|back|left|right)\s+to\s+the\s+(front|back|left|right)\b",
                 re.I), r"from \1 to \2"),

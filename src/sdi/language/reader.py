@@ -219,6 +219,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"{len(specs)} structures is more than 50", understood=understood_summary(doc)
         )
     relations = _one_each(relations, st)
+    relations, specs = _sides_apart(relations, specs, st)
     specs = _listed(specs, relations, st)  # named left to right: placed right to left
     specs = _different(_ordered(specs, relations, st), st)
     rows_named = re.search(r"\b(?:rows?|lines?|in\s+a\s+row)\b", text, re.IGNORECASE)
@@ -354,6 +355,24 @@ _TOGETHER = re.compile(
 _NO_SIZE = frozenset({"shape", "part", "yaw_deg", "edge", "axis"})
 _SIZED = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.IGNORECASE)
 _ANOTHER = re.compile(r"\b(?:another|second|more|also|too|as\s+well|again)\b", re.IGNORECASE)
+
+
+def _sides_apart(
+    relations: list[Relation], specs: list[StructureSpec], st: ReadState
+) -> tuple[list[Relation], list[StructureSpec]]:
+    """ "the left one 5 high, the right one 3 high, 15 cm between them": two structures said
+    on opposite sides with the space between them said stand beside each other that far apart
+    (each went to its side of the table, the space between them not kept)."""
+    if st.gap_m is None or len(specs) != 2 or relations:
+        return relations, specs
+    first, second = (s.region for s in specs)
+    if first is None or second != lx.OPPOSITE_SIDE.get(first) or any(
+        s.at_x is not None or s.at_y is not None for s in specs
+    ):
+        return relations, specs
+    st.notes.append(f"read the {first} and the {second} one, {st.gap_m:g} m apart, as side by side")
+    beside = Relation(kind="next_to", subject=1, object=0, side=second)
+    return [beside], [s.model_copy(update={"region": None}) for s in specs]
 
 
 def _one_each(relations: list[Relation], st: ReadState) -> list[Relation]:
