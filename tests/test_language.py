@@ -5977,3 +5977,16 @@ def test_layers_listed_ones_named_and_sides_apart():
     ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
     assert r.status == "success" and ys[1] - ys[0] == pytest.approx(0.15 + 0.05, abs=0.002)
     assert max(r.layout.objects, key=lambda o: o.position[2]).position[1] == ys[1]  # 5 left
+
+
+def test_castle_corner_heights_positions_and_axes_said_in_a_ticket():
+    # "towers on the corners 3 high": built, but the 3 reported unused (partial)
+    r = plan("castle: 5 by 5, walls 2 high, towers on the corners 3 high")
+    assert r.status == "success" and max(o.position[2] for o in r.layout.objects) > 0.1
+    # "pos: x 300 mm y 450 mm", "parallel to the y axis": 'pos', 'parallel' left unused
+    r = plan("tower, 2 high, pos: x 300 mm y 450 mm")
+    assert r.status == "success" and (r.spec.structures[0].at_x, r.spec.structures[0].at_y) == (
+        0.3, 0.45
+    )
+    r = plan("wall 250 mm long, 100 mm high, parallel to the y axis, centred at x 0.6 y 0.3")
+    assert r.status == "success" and [s.axis for s in r.spec.structures] == ["y"]

@@ -165,6 +165,7 @@ def _shown(spec: Spec, st: ReadState) -> set[float]:
         except (SDIError, ValueError):  # one the composer will refuse: no count to show
             continue
         shown.add(float(len(boxes)))
+        shown.add(float(len({round(b.z, 4) for b in boxes})))  # how high it stands, in levels
         levels: dict[float, int] = {}
         for b in boxes:
             levels[round(b.z, 4)] = levels.get(round(b.z, 4), 0) + 1

@@ -1507,6 +1507,9 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(len|lgth|ht|hgt|hght|wid|wdth|dp|dpth)\.?\s*[:=]?\s*(\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?)"
                 r"(?:\s*cubes?\b)?", re.I),
      lambda m: f"{m.group(2)} {_TICKET_DIM[m.group(1).lower()]}"),
+    # "pos: x 300 mm y 450 mm": at that place; "parallel to the y axis": along y
+    (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*(?=x\s*[:=]?\s*\d|\(\s*\d)", re.I), "at "),
+    (re.compile(r"\bparallel\s+(?:to|with)\s+the\s+([xy])[\s-]*axis\b", re.I), r"along \1"),
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*((?:front|back|rear|left|right|centre|center|middle)"
                 r"(?:[\s-]+(?:left|right|corner))?)\b", re.I), r"at the \1"),
     (re.compile(r"\b(?:qty|qnty)\.?\s*[:=]?\s*(\d+)\s+(?=[a-z])", re.I), r"\1 "),
