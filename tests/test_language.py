@@ -5990,3 +5990,15 @@ def test_castle_corner_heights_positions_and_axes_said_in_a_ticket():
     )
     r = plan("wall 250 mm long, 100 mm high, parallel to the y axis, centred at x 0.6 y 0.3")
     assert r.status == "success" and [s.axis for s in r.spec.structures] == ["y"]
+
+
+def test_extents_said_with_their_direction():
+    # "5 across from left to right": the 5 ran front to back, silently
+    r = plan("a block 2 deep, 5 across from left to right, 2 high")
+    xs = {round(o.position[0], 3) for o in r.layout.objects}
+    ys = {round(o.position[1], 3) for o in r.layout.objects}
+    assert (len(xs), len(ys)) == (2, 5)
+    # "40 cm along the x axis" of a wall: read as the place x = 0.40 m (a 2-cube column)
+    r = plan("the finished wall: 1 cube thick, 40 cm along the x axis, 10 cm high")
+    assert r.status == "success" and len({round(o.position[0], 3) for o in r.layout.objects}) == 8
+    assert plan("a tower at 40 cm along x").spec.structures[0].at_x == 0.4

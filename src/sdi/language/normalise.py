@@ -384,6 +384,9 @@ _ENCLOSING = re.compile(
 _EMPTY_INSIDE = re.compile(
     r"\b(?:hollow|empty|open|anything|nothing|something|no)\s+(?:\w+\s+)?$", re.I
 )
+_PLACED_AT = re.compile(
+    r"\b(?:at|to|from|position(?:ed)?|placed|centred|centered|centre|center)\s*$", re.I
+)
 _NOT_THE_TABLE = r"(?!\s+(?:the\s+)?(?:table|workspace|cell|bench|work\s+area|tabletop)\b)"
 _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
     # "three towers of two in line": in a line (the line was read as a row of its own)
@@ -455,6 +458,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
      ", touching"),
     (re.compile(r"\b(side\s+by\s+side|next\s+to\s+each\s+other)\s*,?\s*(?:with\s+)?(?:no|without\s+(?:a|any))"
                 r"\s+(?:gap|space)s?\b", re.I), r"\1, touching"),
+    # "a wall, 40 cm along the x axis": that long along x (it was read as the place x = 0.40 m)
+    (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:mm|cm|m)|\d+\s+cubes?)\s+(?:long\s+)?along\s+(?:the\s+)?([xy])"
+                r"(?:[\s-]*axis)?\b(?!\s*=|\s+from\b|\s+(?:and|,)\s+\d)", re.I),
+     lambda m: m.group(0) if _PLACED_AT.search(m.string[: m.start()])
+     or not re.search(r"\b(?:wall|walls|row|rows|line|fence|bar)\b", m.string, re.I)
+     else f"{m.group(1)} long along {m.group(2)}"),
     # "at 35 cm in x and 45 cm in y": the coordinates (the figures were a height)
     (re.compile(r"\b(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+(?:in|along|on)\s+(?:the\s+)?([xy])"
                 r"(?:[\s-]+axis)?\b(?!\s*=)", re.I),
@@ -750,6 +759,19 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"(?:one|a\s+single|1)\s+cube))+)", re.I),
      lambda m: " ".join(f"level {k + 1}: {size.strip()}." for k, size in enumerate(
          re.split(r"\s*(?:,\s*and|,|\band\b|\bthen\b)\s*", m.group(1))))),
+    # "a wall, 1 cube thick, …": what every wall is (the 1 was read as its length)
+    (re.compile(r"\s*,?\s*\b(?:one|1|a\s+single)\s+(?:cube|block|part)s?\s+(?:thick|deep)\b",
+                re.I),
+     lambda m: " " if re.search(r"\b(?:wall|walls|fence|row|line)\b", m.string, re.I)
+     else m.group(0)),
+    # "5 across from left to right", "2 deep from front to back": the side already says which
+    # way (the direction turned the block: 5 ran front to back)
+    (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?(across|wide)\s+"
+                r"(?:from\s+)?(?:the\s+)?(?:left\s+to\s+(?:the\s+)?right|right\s+to\s+(?:the\s+)?left)\b",
+                re.I), r"\1 \2"),
+    (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?(deep)\s+"
+                r"(?:from\s+)?(?:the\s+)?(?:front\s+to\s+(?:the\s+)?back|back\s+to\s+(?:the\s+)?front)\b",
+                re.I), r"\1 \2"),
     # "from the front to the back": from front to back ('back' was left unused)
     (re.compile(r"\bfrom\s+the\s+(front|back|left|right)\s+to\s+the\s+(front|back|left|right)\b",
                 re.I), r"from \1 to \2"),
