@@ -300,13 +300,12 @@ def _place_all(
 
         step: float = gap
 
-        def length(axis: int) -> float:
-            return sum(2 * placed[k].half[axis] for k in free) + step * max(0, len(free) - 1)
+        def length(axis: int, between: float = step) -> float:
+            return sum(2 * placed[k].half[axis] for k in free) + between * max(0, len(free) - 1)
 
-        tight = sum(2 * placed[k].half[1] for k in free) + 0.01 * max(0, len(free) - 1)
         if line is None and length(1) > span[1] and length(0) <= span[0]:
             d = 0  # a line too long for across the table runs front to back (it broke in two)
-        elif line == "y" and tight > span[1] and length(0) <= span[0]:
+        elif line == "y" and length(1, 0.01) > span[1] and length(0) <= span[0]:
             d = 0  # said across, but too long for it even closed up
         if not stated and len(free) > 1 and length(d) > span[d]:
             # SDI's own gap closes up so the line stays one line (it broke in two)

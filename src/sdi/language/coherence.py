@@ -28,7 +28,7 @@ import re
 from typing import TYPE_CHECKING
 
 from sdi.errors import SDIError
-from sdi.language.nouns import BEAMS
+from sdi.language.nouns import BEAMS, STRUCTURE_PLURALS
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -165,11 +165,11 @@ def _shown(spec: Spec, st: ReadState) -> set[float]:
         except (SDIError, ValueError):  # one the composer will refuse: no count to show
             continue
         shown.add(float(len(boxes)))
-        shown.add(float(len({round(b.z, 4) for b in boxes})))  # how high it stands, in levels
         levels: dict[float, int] = {}
         for b in boxes:
             levels[round(b.z, 4)] = levels.get(round(b.z, 4), 0) + 1
         shown.update(float(n) for n in levels.values())
+        shown.add(float(len(levels)))  # how high it stands, in levels
     for note in st.notes:  # a length a note states ("0.0508 m thick is one layer")
         metres.extend(float(v) for v in re.findall(r"(\d+(?:\.\d+)?) m\b", note))
     for m in metres:
@@ -186,13 +186,11 @@ def _counts_something(doc: Doc, i: int) -> bool:
         return True
     if after[0].lower_ in ("more", "of", "others", "again", "copies", "times", "each", "apiece"):
         return True
+    # a plural structure noun the tagger took for a verb ("2 T shapes")
     return any(t.tag_ in ("NNS", "NNPS") or t.lower_ in _PLURAL_NOUNS for t in after)
 
 
-_PLURAL_NOUNS = frozenset(
-    {"shapes", *(w for w in lx.SHAPE_WORDS if w.endswith("s") and w not in ("steps", "stairs"))}
-)
-"""Plural structure nouns the tagger may take for a verb ("2 T shapes")."""
+_PLURAL_NOUNS = STRUCTURE_PLURALS | {"shapes"}
 
 
 _NOT_GEOMETRY = frozenset(

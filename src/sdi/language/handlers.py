@@ -9,7 +9,7 @@ import re
 from collections.abc import Callable
 
 from sdi.errors import SpecError
-from sdi.language.nouns import families_said
+from sdi.language.nouns import STRUCTURE_PLURALS, families_said
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
@@ -709,8 +709,7 @@ def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
 
 _COUNTED = re.compile(
     r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?=(?:[a-z]+\s+)?(?:"
-    + "|".join(sorted((w for w in lx.SHAPE_WORDS if w.endswith("s") and w not in ("steps", "stairs")
-                       and w.isalpha()), key=len, reverse=True))
+    + "|".join(sorted(STRUCTURE_PLURALS, key=len, reverse=True))
     + r")\b)",
     re.IGNORECASE,
 )

@@ -140,7 +140,7 @@ def _stage(text: str, notes: list[str]) -> str:
 
 def _sized_cube(m: re.Match[str]) -> str:
     """ "a 150 mm cube": a block 150 mm each way; a cube one part wide stays one part."""
-    size = float(m.group(1)) * {"mm": 0.001, "cm": 0.01, "m": 1.0}[m.group(2).lower()]
+    size = float(m.group(1)) * lx.UNITS_M[m.group(2).lower()]
     if size < 0.075:
         return m.group(0)
     side = f"{m.group(1)} {m.group(2)}"
@@ -388,7 +388,9 @@ _PLACED_AT = re.compile(
     r"\b(?:at|to|from|position(?:ed)?|placed|centred|centered|centre|center)\s*$", re.I
 )
 _NOT_THE_TABLE = r"(?!\s+(?:the\s+)?(?:table|workspace|cell|bench|work\s+area|tabletop)\b)"
-_PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] = [
+_Repl = str | Callable[[re.Match[str]], str]
+"""What a phrasing becomes: a template, or what a function of the match gives."""
+_PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "three towers of two in line": in a line (the line was read as a row of its own)
     (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
     # "a bridge with a cube sitting in the middle of the beam": on top of it (the cube was the
@@ -719,7 +721,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], str | Callable[[re.Match[str]], str]]] =
                 r"seven|eight|nine|ten))\s*,\s*(?:all\s+)?single\s+cubes\b", re.I), r"\1"),
     # "a 150 mm cube made of cubes": a block that size each way (a row of 3 was built)
     (re.compile(r"\ban?\s+(\d+(?:\.\d+)?)\s*(mm|cm|m)\s+cube\b(?:\s+(?:made\s+)?(?:of|from|out\s+of)\s+"
-                r"(?:small(?:er)?\s+)?cubes)?", re.I), lambda m: _sized_cube(m)),
+                r"(?:small(?:er)?\s+)?cubes)?", re.I), _sized_cube),
     # "an enclosure 4 by 4 with each side 2 high": its walls 2 high (2 was read as a side)
     (re.compile(r"\b(?:each|every|all)\s+(?:of\s+its\s+|the\s+)?(?:sides?|walls?)\s+(?:is\s+|are\s+|being\s+)?"
                 r"(\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(high|tall)\b", re.I),
@@ -1521,7 +1523,6 @@ _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps
 
 
 # Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
-_Repl = str | Callable[[re.Match[str]], str]
 _TICKET_DIM = {"len": "long", "lgth": "long", "ht": "high", "hgt": "high", "hght": "high",
                "wid": "wide", "wdth": "wide", "dp": "deep", "dpth": "deep"}  # fmt: skip
 _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [

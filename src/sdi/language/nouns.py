@@ -131,6 +131,12 @@ def object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[in
     return k, _is_structure_noun(doc, k)
 
 
+STRUCTURE_PLURALS = frozenset(
+    w for w in lx.SHAPE_WORDS if w.endswith("s") and w.isalpha() and w not in ("steps", "stairs")
+)
+"""Plural structure nouns that count structures ("two towers"; a staircase's "steps" size it)."""
+
+
 _COMPONENTS = {
     "castle": {"enclosure", "wall", "tower", "row"},
     "canopy": {"tower", "canopy", "grid"},

@@ -115,7 +115,8 @@ _T_PARTS = {"bar": "length", "top": "length", "crossbar": "length", "head": "len
 _MOVED_OVER = frozenset({"to", "towards", "toward", "on", "at", "from", "the", "left", "right",
                          "there", "here"})  # fmt: skip
 _ON_LEGS = frozenset({"bridge", "arch", "canopy"})
-"""Shapes whose legs are their pillars: "legs 3" is how high they are, not an arm's length."""
+"""Shapes that span an opening on legs or pillars: "legs 3" is how high they are, not an arm's
+length; a gap said of them is their span."""
 
 _SECOND_SIZE = frozenset({"levels", "level", "layers", "layer", "high", "tall", "steps", "long",
                           "wide", "deep", "courses", "storeys", "stories", "tiers"})  # fmt: skip
@@ -609,7 +610,7 @@ class _Parser:
             if (
                 self.hits
                 and self.hits[-1].index == k - 1
-                and self.hits[-1].shape in ("bridge", "arch", "canopy")
+                and self.hits[-1].shape in _ON_LEGS
                 and w
                 in ("pillar", "pillars", "leg", "legs", "post", "posts", "support", "supports")
             ):
@@ -732,7 +733,7 @@ class _Parser:
                 )
                 if word == "thick" and h.shape in ("grid", "block"):
                     fname = "height_m"  # "a slab 2 inches thick": its height, not its width
-                if (fname == "gap_m" and h.shape in ("bridge", "arch", "canopy")) or (
+                if (fname == "gap_m" and h.shape in _ON_LEGS) or (
                     fname == "width_m" and h.shape in ("arch",)
                 ):
                     p["span"] = max(1, round(metres / self.cell.cube[0]))
@@ -919,7 +920,7 @@ class _Parser:
                         take(m)
                     continue
                 if wj in ("apart", "spacing", "gap", "gaps"):
-                    if h.shape in ("bridge", "arch", "canopy") and wj != "apart":
+                    if h.shape in _ON_LEGS and wj != "apart":
                         p["span"] = v
                     else:
                         # "2 cubes apart", "gap 2": parts; a bare "20 apart": centimetres
@@ -963,7 +964,7 @@ class _Parser:
                     elif back in ("width", "wide", "depth", "deep", "breadth"):
                         role = "width"
                     elif back in ("span", "spanning", "opening", "gap", "spacing", "distance"):
-                        role = "span" if h.shape in ("bridge", "arch", "canopy") else "gap"
+                        role = "span" if h.shape in _ON_LEGS else "gap"
                     elif back in ("base", "bottom", "foot", "footprint"):
                         role = "length"
                     elif back in (
@@ -1448,7 +1449,7 @@ class _Parser:
         edges = p.pop("_edges", [])
         count = p.pop("_count", None)
         parts_said = p.pop("_parts_said", False)
-        if parts_said and shape in ("bridge", "arch", "canopy") and count:
+        if parts_said and shape in _ON_LEGS and count:
             # "a bridge of 6 cubes", "a table, 6 cubes in all": its parts follow from its legs
             # and top; the count was read as their height (12 + parts), silently
             self.notes.append(
