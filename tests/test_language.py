@@ -6002,3 +6002,39 @@ def test_extents_said_with_their_direction():
     r = plan("the finished wall: 1 cube thick, 40 cm along the x axis, 10 cm high")
     assert r.status == "success" and len({round(o.position[0], 3) for o in r.layout.objects}) == 8
     assert plan("a tower at 40 cm along x").spec.structures[0].at_x == 0.4
+
+
+def test_a_line_listed_in_order_keeps_its_order_when_one_is_added_to():
+    # "towers of 2, 3 and 4 from front to back, then a cube on the first": they stood across
+    r = plan("build towers of 2, 3 and 4 from front to back. "
+             "then add a cube on top of the first one")
+    assert r.status == "success", r.notes
+    assert [h for _, h in sorted(_columns(r).items())] == [3, 3, 4]  # front (small x) first
+    assert len({y for _, y in _columns(r)}) == 1
+    # named left to right: the first is the leftmost (largest y), and it grows
+    r = plan("build towers of 2, 3 and 4 from left to right. "
+             "then add a cube on top of the first one")
+    by_y = sorted(_columns(r).items(), key=lambda kv: -kv[0][1])
+    assert [h for _, h in by_y] == [3, 3, 4] and len({x for x, _ in _columns(r)}) == 1
+
+
+def test_levels_said_by_size_alone_are_named_by_it():
+    # "second layer 3x3 … top a single cube": two structures, the top not a level
+    r = plan("description: bottom layer a 4x4 square, second layer 3x3, third layer 2x2, "
+             "top a single cube")  # fmt: skip
+    assert r.status == "success", r.notes
+    assert len(r.layout.objects) == 16 + 9 + 4 + 1 and max(_heights(r.layout).values()) == 4
+    # "5 cubes in a line … 3 on top … 1": a row of 5, a row of 3, a cube (no layout)
+    r = plan("first layer 5 cubes in a line, second layer 3 on top in the middle, "
+             "third layer 1 in the middle")  # fmt: skip
+    assert r.status == "success", r.notes
+    assert [h for _, h in sorted(_heights(r.layout).items(), key=lambda kv: kv[0][1])] == [
+        1, 2, 3, 2, 1
+    ]  # fmt: skip
+    # "levels: (1) … (2) … (3)": numbered in brackets
+    r = plan("levels: (1) a 5x5 slab (2) a 3x3 slab centred (3) one cube centred")
+    assert len(r.layout.objects) == 25 + 9 + 1
+    # "level 4: 1 cube on one corner" of three 2x2 levels: the corner was the second level's
+    r = plan("level 1: 2x2; level 2: 2x2; level 3: 2x2; level 4: 1 cube on one corner")
+    assert r.status == "success", r.notes
+    assert sorted(_heights(r.layout).values()) == [3, 3, 3, 4]

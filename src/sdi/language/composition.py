@@ -251,6 +251,10 @@ def relate(
             side = _stair_foot(obj_spec)
             st.stair_foot = False
         at = next((a for a in st.anchors if a[0] == kind), None)
+        if at is not None and _covers(subject, obj_spec) and any(
+            later.kind == r.kind for later in rels[n_rel + 1 :]
+        ):  # "a 2x2 slab on a 2x2 slab, then a cube on one corner": the corner is the cube's
+            at = None
         if at is not None:
             st.anchors.remove(at)
             side = None
@@ -301,6 +305,15 @@ def relate(
 _OWN_TOPS = frozenset({"top", "roof", "beam", "beams", "lintel", "deck", "tabletop", "slab"})
 _TOPPED = ("grid", "block", "pack")
 """Families whose middle is a top face another structure stands on."""
+
+
+def _covers(subject: StructureDraft, obj: StructureDraft) -> bool:
+    """A level as large as the one it stands on: it cannot stand on one of its corners."""
+    if subject.shape not in ("grid", "block") or obj.shape not in ("grid", "block"):
+        return False
+    sides = sorted((subject.length or 0, subject.width or 0))
+    under = sorted((obj.length or 0, obj.width or 0))
+    return sides[0] >= under[0] > 0 and sides[1] >= under[1]
 
 
 def _to_base(relations: list[Relation], structures: list[StructureDraft]) -> None:

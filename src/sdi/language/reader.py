@@ -220,7 +220,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         )
     relations = _one_each(relations, st)
     relations, specs = _sides_apart(relations, specs, st)
-    specs = _listed(specs, relations, st)  # named left to right: placed right to left
+    specs, relations = _listed(specs, relations, st)  # named left to right: placed right to left
     specs = _different(_ordered(specs, relations, st), st)
     rows_named = re.search(r"\b(?:rows?|lines?|in\s+a\s+row)\b", text, re.IGNORECASE)
     guessed = [
@@ -499,19 +499,31 @@ def _apply_one(
 
 def _listed(
     specs: list[StructureSpec], relations: list[Relation], st: ReadState
-) -> list[StructureSpec]:
+) -> tuple[list[StructureSpec], list[Relation]]:
     """ "left to right: a tower, then a block, then a pyramid": separate structures stand from
-    right to left in the order named, so a list given from the left is placed reversed."""
-    if st.listing is None or len(specs) < 2 or relations:
-        return specs
+    right to left in the order named, so a list given from the left is placed reversed. A cube
+    said on top of one of them keeps the line ("towers of 2, 3 and 4 from front to back, then add
+    a cube on top of the first one")."""
+    stacked = {r.subject for r in relations}
+    if (
+        st.listing is None
+        or len(specs) - len(stacked) < 2
+        or any(r.kind != "on_top_of" or r.at is not None for r in relations)
+    ):
+        return specs, relations
     if st.listing in ("front to back", "back to front") and st.line is None:
         st.line = "x"  # "four towers … placed in that order from front to back": one behind another
     elif st.line is None:
         st.line = "y"  # "a tower, a wall and a block from left to right": across, even if tight
     if st.listing in ("left to right", "back to front"):
         st.notes.append(f"the structures named {st.listing}, placed in that order")
-        return specs[::-1]
-    return specs
+        last = len(specs) - 1
+        turned = [
+            r.model_copy(update={"subject": last - r.subject, "object": last - r.object})
+            for r in relations
+        ]
+        return specs[::-1], turned
+    return specs, relations
 
 
 def _different(specs: list[StructureSpec], st: ReadState) -> list[StructureSpec]:

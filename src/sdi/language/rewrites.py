@@ -2834,7 +2834,7 @@ _SIZE_AFTER_IT = re.compile(
 """A size said after the pronoun of a relation is the subject's ("… next to it, 2 high")."""
 
 _LEVEL_LABEL = re.compile(
-    r"(?:^|(?<=[.;,!\n]))\s*(?:level|layer|tier|floor|storey|story|lvl)\s*"
+    r"(?:^|(?<=[.;:,!\n]))\s*(?:level|layer|tier|floor|storey|story|lvl)\s*"
     r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s*[:=)-]|\s+(?:is|has)\b|"
     r"(?=\s+(?:(?:an?|one|two|three|four|five|six|just|only|single)\s|\d|the\s+same\b)))\s*",
     # "level 1 is a 4x2 slab", "layer one 2 by 6", "level 3 one cube"
@@ -2843,9 +2843,10 @@ _LEVEL_LABEL = re.compile(
 
 
 _LEVEL_WORD = re.compile(
-    r"(?:^|(?<=[.;,!\n])|(?<=\band\s))\s*(?:the\s+)?(bottom|base|lowest|ground|first|1st|second|2nd|"
-    r"middle|third|3rd|fourth|4th|top|upper|last)(?:(?:\s+(?:level|layer|tier|floor|storey|course))"
-    r"(?:\s+(?:is|has)\s+|\s*[:=-]\s*|\s+(?=(?:an?|one|just|only|\d)\b))|\s*[:=-]\s*)",
+    r"(?:^|(?<=[.;:,!\n])|(?<=\band\s))\s*(?:the\s+)?(bottom|base|lowest|ground|first|1st|second|"
+    r"2nd|middle|third|3rd|fourth|4th|top|upper|last)(?:(?:\s+(?:level|layer|tier|floor|storey|"
+    r"course))(?:\s+(?:is|has)\s+|\s*[:=-]\s*|\s+(?=(?:an?|one|just|only|\d)\b))|\s*[:=-]\s*|"
+    r"(?<=top)\s+(?=(?:an?\s+single|one|just|only|a\s+1-cube)\b))",
     re.IGNORECASE,
 )
 _LEVEL_RANK = {"bottom": 1, "base": 1, "lowest": 1, "ground": 1, "first": 1, "1st": 1, "second": 2,
@@ -2861,6 +2862,43 @@ _SAME_LEVEL = re.compile(
 )
 
 
+_LEVEL_GRID = re.compile(
+    rf"(?:an?\s+)?({_N})\s*(?:x|by)\s*({_N})(?:\s+(?:square|slab|layer|patch|grid|plate|area))?"
+    r"(?!\s*(?:x|by)\b)",
+    re.IGNORECASE,
+)
+_LEVEL_ROW = re.compile(
+    rf"(?:an?\s+)?({_N})\s+cubes?\s+(?:in\s+a\s+(?:line|row)|(?:long|wide|across)\b)",
+    re.IGNORECASE,
+)
+_LEVEL_BARE = re.compile(
+    rf"(?:a\s+single|just\s+one|only\s+one|one\s+single|({_N}))(?:\s+cubes?)?"
+    r"(?=\s*(?:$|,|on\s|in\s+the\s+(?:middle|centre|center)|cent(?:red|ered)))",
+    re.IGNORECASE,
+)
+
+
+_NUMBERED_LEVEL = re.compile(r"\s*\(\s*([1-9])\s*\)\s*")
+
+
+def _level_named(said: str, prev: str) -> str:
+    """A level said by its size alone names what it is: "2x2" a 2 by 2 slab, "5 cubes in a
+    line" a row of 5, "3" after a row a row of 3, "a single cube" a 1-cube tower."""
+    if m := _LEVEL_GRID.match(said):
+        return f"a {m.group(1)} by {m.group(2)} slab{said[m.end() :]}"
+    if m := _LEVEL_ROW.match(said):
+        return f"a row of {m.group(1)}{said[m.end() :]}"
+    m = _LEVEL_BARE.match(said)
+    if m is None:
+        return said
+    count = int(words_to_numbers([m.group(1).lower()])[0]) if m.group(1) else 1
+    if count == 1:
+        return f"a 1-cube tower{said[m.end() :]}"
+    if re.match(r"a\s+row\s+of\b", prev, re.IGNORECASE):
+        return f"a row of {count}{said[m.end() :]}"  # "5 cubes in a line, … 3 on top": a row
+    return said
+
+
 def _level_labels(text: str, st: ReadState) -> str:
     """ "level 1: 4x4 floor. level 2: 3x3 on top. level 3: 2x2.": each level labelled after
     the first stands on the one before it (also named in words: "Bottom: … Middle: … Top:")."""
@@ -2869,6 +2907,9 @@ def _level_labels(text: str, st: ReadState) -> str:
     first = [w for w in _LEVEL_WORD.finditer(text[: labels[0].start()])] if labels else []
     if numbers[:1] == [2] and first and _LEVEL_RANK[first[-1].group(1).lower()] == 1:
         labels, numbers = [first[-1], *labels], [1, *numbers]  # "bottom level: 3 by 3. level 2: …"
+    if len(labels) < 2 and re.search(r"\b(?:levels|layers|tiers)\b", text, re.IGNORECASE):
+        labels = list(_NUMBERED_LEVEL.finditer(text))  # "levels: (1) a 5x5 slab (2) …"
+        numbers = [int(m.group(1)) for m in labels]
     if len(labels) < 2:
         labels = list(_LEVEL_WORD.finditer(text))
         numbers = [_LEVEL_RANK[m.group(1).lower()] for m in labels]
@@ -2887,10 +2928,15 @@ def _level_labels(text: str, st: ReadState) -> str:
         rest = segment[len(said) :].lstrip(".;!? ")
         if i and _SAME_LEVEL.fullmatch(said):
             said = prev  # "layer one 2 by 6, layer two the same": that level again
+        said = _level_named(said, prev)
         prev = re.sub(r"\s+on\s+top\b.*$", "", said, flags=re.IGNORECASE)
         # "second level a 2x2 patch, and a single cube on top": the on top is the cube's
         head = re.split(r"\s*,\s*|\s+and\s+", said, maxsplit=1)[0]
-        if i and not re.search(r"\bon\s+(?:top|it|that)\b", head, re.IGNORECASE):
+        if i and not re.search(
+            r"\bon\s+(?:top|it|that|(?:one|each|either|both|all|the)\s+(?:\w+\s+)?(?:corner|end)s?)\b",
+            head,
+            re.IGNORECASE,
+        ):  # "level 4: 1 cube on one corner": on the one before, at a corner
             said = f"{head} on top{said[len(head) :]}"
         out.append(f" then {said}. {rest}" if i else f" {said}. {rest}")
     st.notes.append("read the levels labelled in order as each on top of the one before")
