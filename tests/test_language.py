@@ -6038,3 +6038,61 @@ def test_levels_said_by_size_alone_are_named_by_it():
     r = plan("level 1: 2x2; level 2: 2x2; level 3: 2x2; level 4: 1 cube on one corner")
     assert r.status == "success", r.notes
     assert sorted(_heights(r.layout).values()) == [3, 3, 3, 4]
+
+
+def test_spoken_numbers_and_homophones_of_a_dictated_command():
+    # "x zero point three five, y zero point two": the place (it was x = 0, a failure)
+    s = plan("put a stack of two at x zero point three five, y zero point two").spec.structures[0]
+    assert (s.at_x, s.at_y, s.height) == (0.35, 0.2, 2)
+    # "a slab too by three", "arms too long": two (a 3-cube slab and a 5 by 5 U, silently)
+    r = plan("can you make a slab too by three")
+    assert r.status == "success" and len(r.layout.objects) == 6
+    r = plan("i want a u shape five wide with arms too long")
+    assert r.status == "success" and len(r.layout.objects) == 5 + 2
+    # "2 high one behind the other": the one starts the placing, not a height of 1
+    r = plan("two walls 5 long 2 high one behind the other")
+    assert r.status == "success" and len(r.layout.objects) == 20
+
+
+def test_lines_said_with_each_other_or_all_in_a_straight_line():
+    # "towers of 2, 4 and 6 one behind the other": a line front to back (a 2 by 2 grid)
+    for said in ("one behind the other", "behind each other"):
+        r = plan(f"towers of 2, 4 and 6 {said}")
+        cols = sorted(_columns(r).items())
+        assert [h for _, h in cols] == [2, 4, 6] and len({y for (_, y), _ in cols}) == 1
+    # "…, all three in a straight line": the three placed, not a row of 3 beside them
+    r = plan("Place a tower of 2 at the front. Next, a tower of 4 behind it. Then a tower of 6 "
+             "behind that one, all three in a straight line.")  # fmt: skip
+    assert sorted(_columns(r).values()) == [2, 4, 6]
+
+
+def test_places_and_directions_said_in_other_words():
+    # "stacking four cubes": a tower (a row, silently)
+    assert _columns(plan("Would you mind stacking four cubes at the back of the table?")) == {
+        (0.65, 0.3): 4
+    }  # fmt: skip
+    # "nowhere near the robot": at the back (at the front, silently)
+    assert plan("a 2 by 2 block 3 high, nowhere near the robot").spec.structures[0].region == "back"
+    # "climbing toward the far end": to the back; "the high end on the right": to the right
+    cols = sorted(_heights(plan("a staircase of four climbing toward the far end").layout).items())
+    assert [h for _, h in cols] == [1, 2, 3, 4]  # taller with x
+    heights = _heights(plan("please put stair with 4 step, the high part must stay at right "
+                            "side").layout)  # fmt: skip
+    assert [h for _, h in sorted(heights.items(), key=lambda kv: kv[0][1])] == [4, 3, 2, 1]
+    # "one in each corner of the floor": the table's corners (a 3x3 slab with towers on it)
+    r = plan("need four stacks of two, one in each corner of the floor, over")
+    assert sorted(_columns(r).values()) == [2, 2, 2, 2]
+    # "a plinth surmounted by a column": on it (beside it, silently)
+    r = plan("A plinth 2 x 2 x 2 surmounted by a column of three courses.")
+    assert len(r.layout.objects) == 8 + 3 and max(_heights(r.layout).values()) == 5
+
+
+def test_a_row_made_deeper_and_a_slab_made_a_block():
+    # "make it two cubes deep": a row of 2 was built beside the row, silently
+    for said in ("make it 2 cubes deep", "now make it two rows deep"):
+        r = plan(f"a row of 5. {said}")
+        assert r.status == "success" and len(_columns(r)) == 10 and len(r.layout.objects) == 10
+    # "make it a block by stacking two more layers": a 2x2x2 block was built beside it
+    r = plan("slab 3 by 3. okay now make it a block by stacking two more layers")
+    assert r.status == "success" and sorted(set(_columns(r).values())) == [3]
+    assert len(r.layout.objects) == 27

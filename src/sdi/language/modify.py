@@ -124,7 +124,7 @@ MODIFY = [
     # "a 4x2 slab, then make it 3 wide instead of 2": that side (the one that was 2)
     _op(
         r"\bmake\s+(?:it|them|the\s+(?:slab|grid|block|platform|pad|layer))\s+" + _N
-        + r"\s+(?:cubes?\s+)?(?:wide|deep|across)\b"
+        + r"\s+(?:cubes?\s+|rows?\s+)?(?:wide|deep|across|thick)\b"
         r"(?:\s+instead\s+of\s+(\d+|one|two|three|four|five|six|seven|eight))?",
         "=side",
     ),
@@ -882,7 +882,10 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         key = key or ("length" if side in ("left", "right") else "width")
     elif op == "=side":  # "make it 3 wide (instead of 2)": the side it was, else across
         op, last_ = "=", structures[_last_index(built)]
-        if last_.shape not in ("grid", "block"):
+        deep = re.search(r"\b(?:deep|thick)\b", m.group(0), re.I)
+        if last_.shape in ("row", "wall") and deep and not m.group(2):
+            key = "width"  # "a row of 5, now make it two rows deep": a 5 by 2 slab
+        elif last_.shape not in ("grid", "block"):
             return None
         was = m.group(2) and int(words_to_numbers([m.group(2).lower()])[0])
         sides = {k: getattr(last_, k) for k in ("length", "width")}
@@ -891,8 +894,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             if len(matching) != 1:
                 return None
             key = matching[0]
-        else:
-            key = "width" if re.search(r"\bdeep\b", m.group(0), re.I) else "length"
+        elif last_.shape in ("grid", "block"):
+            key = "width" if deep else "length"
     if op in ("+1", "-1"):
         n, op = 1, op[0]
     else:

@@ -389,8 +389,46 @@ _PLACED_AT = re.compile(
 )
 _NOT_THE_TABLE = r"(?!\s+(?:the\s+)?(?:table|workspace|cell|bench|work\s+area|tabletop)\b)"
 _Repl = str | Callable[[re.Match[str]], str]
+_OTHER_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
 """What a phrasing becomes: a template, or what a function of the match gives."""
 _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
+    # "a block, nowhere near the robot": far from it (it stood at the front, silently)
+    (re.compile(r"\b(?:nowhere\s+near)\s+"
+                r"(?=(?:the\s+)?robot\b)", re.I), "far from "),
+    # "climbing toward the far end": the back (it climbed to the left, silently)
+    (re.compile(r"\b((?:climb|ris|ascend)\w*|going\s+up|goes\s+up|up)\s+(?:to(?:wards?)?|toward)\s+the\s+"
+                r"far\s+(?:end|side|edge)\b", re.I), r"\1 towards the back"),
+    # "a staircase of 4, the high end on the right": it climbs towards the right (it climbed
+    # to the left, silently); "the low end on the left": the same way
+    (re.compile(r"\b(?:with\s+)?(?:the|its)\s+(high|higher|highest|tall|taller|tallest|top|low|lower|"
+                r"lowest|bottom)\s+(?:end|part|side|step)\s+(?:(?:must|should|will|has\s+to)\s+)?"
+                r"(?:(?:be|stay|go|sit|stand)\s+)?(?:on|at|to(?:wards?)?)\s+(?:the\s+)?(left|right|back|"
+                r"front)(?:\s+side)?\b", re.I),
+     lambda m: m.group(0) if not re.search(r"\b(?:stair|step)", m.string[: m.start()], re.I)
+     else "going up to the " + (m.group(2) if m.group(1).lower()[:2] in ("hi", "ta", "to")
+                                else _OTHER_SIDE[m.group(2).lower()])),
+    # "one in each corner of the floor": the table's corners, when no floor was named
+    (re.compile(r"\b(each|every|all\s+four|the\s+four)\s+(corners?)\s+of\s+the\s+(?:floor|cell|workspace|"
+                r"work\s+area|area)\b", re.I),
+     lambda m: m.group(0) if re.search(r"\bfloor", m.string[: m.start()], re.I)
+     else f"{m.group(1)} {m.group(2)} of the table"),
+    # "a plinth surmounted by a column", "crowned with a cube": topped by it
+    (re.compile(r"\b(?:surmounted|crowned|capped)\s+(by|with)\b", re.I), r"topped \1"),
+    # "would you mind stacking four cubes at the back": stack them (a row was laid, silently)
+    (re.compile(r"(?:^\W*|\b(?:mind|try|start|begin|about)\s+)(stack|pil)ing\s+(?=(?:\d+|a|an|one|"
+                r"two|three|four|five|six|seven|eight|nine|ten|some)\b)", re.I),
+     lambda m: f"{m.group(1)}{'e' if m.group(1).lower() == 'pil' else ''} "),
+    # "two walls 5 long 2 high one behind the other": the one starts the placing (it was read as
+    # 'high one', a height of 1)
+    (re.compile(r"(?<=\b(?:high|tall|long|wide|deep))\s+(?=one\s+(?:in\s+front\s+of|behind|beside|"
+                r"next\s+to|on\s+top\s+of|above|to\s+the\s+(?:left|right)\s+of|after)\s+the\s+"
+                r"other\b)", re.I), ", "),
+    # "slab 3 by 3. now make it a block by stacking two more layers": the change says how (a
+    # 2x2x2 block was built beside the slab)
+    (re.compile(r"\b(?:make|turn)\s+(it|them)\s+(?:into\s+)?an?\s+(?:solid\s+)?(?:block|wall|slab|"
+                r"platform)\s+by\s+(add|stack|put|pil)(?:ing)\b(?=(?:\s+\w+){1,3}?\s+(?:layers?|levels?|"
+                r"rows?|courses?|tiers?)\b)", re.I),
+     lambda m: f"{m.group(2)}{'e' if m.group(2).lower() == 'pil' else ''}"),
     # "three towers of two in line": in a line (the line was read as a row of its own)
     (re.compile(r"\bin\s+(?:one\s+|single\s+)?line\b(?!\s+with\b)", re.I), "in a line"),
     # "a bridge with a cube sitting in the middle of the beam": on top of it (the cube was the
@@ -930,6 +968,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: m.group(0) + ("the " if re.search(
          r"\b" + re.escape(m.string[m.end():].split()[0].rstrip(",.;:").lower()) + r"\b",
          m.string[: m.start()], re.I) else "")),
+    # "towers of 2, 4 and 6 behind each other": one behind the other (they stood across at the
+    # back, silently)
+    (re.compile(r"\b(?:placed\s+|standing\s+|set\s+)?behind\s+(?:each\s+other|one\s+another)\b",
+                re.I), ", one behind the other"),
+    # "towers of 2, 4 and 6 one behind the other": a list of three or more, in a line front to
+    # back (they stood on a 2 by 2 grid, silently)
+    (re.compile(r"\b((?:towers|stacks|columns|pillars|piles)\s+of\s+(?:\d+\s*,\s*)+\d+\s*,?\s*and\s+"
+                r"\d+(?:\s+(?:cubes|high|tall))?)\s*,?\s*\bone\s+behind\s+(?:the\s+other|another)\b",
+                re.I),
+     r"\1 in a line front to back"),
     # "three walls, each 3 long, one behind the other": more than two in a line front to back
     # (towers and blocks; rows and walls so placed stand side to side, not end to end)
     (re.compile(r"(?<!\bof\s)(?<!\bx\s)(?<!\bby\s)\b((?:three|four|five|six|[3-6])\s+"
@@ -1745,8 +1793,31 @@ _SHAPE_HEARD = [
     (re.compile(r"\brope(s?)\b(?=\s+of\s+" + _SAID_NUMBER + r")", re.I), r"row\1"),
 ]  # fmt: skip
 
-_HOMOPHONES = [
-    (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d))", re.I), "two "),
+_SAID_DIGIT = {"zero": "0", "nought": "0", "oh": "0", "o": "0", "one": "1", "two": "2",
+               "three": "3", "four": "4", "five": "5", "six": "6", "seven": "7", "eight": "8",
+               "nine": "9"}  # fmt: skip
+_DIGITS_SAID = r"(?:zero|nought|oh|o|one|two|three|four|five|six|seven|eight|nine|\d)"
+_SPOKEN_DECIMAL = re.compile(
+    rf"(?:(?<=\bx\s)|(?<=\by\s)|(?<=\bat\s)|(?<=[=:]\s)|(?<=\bis\s)|\b(?=zero\b|nought\b))"
+    rf"(?:(zero|nought|oh|\d)\s+)?point\s+({_DIGITS_SAID}(?:\s+{_DIGITS_SAID})?)\b",
+    re.I,
+)
+"""A decimal said as a speech recogniser writes it: "x zero point three five", "y point two"."""
+
+
+def _spoken_decimal(m: re.Match[str]) -> str:
+    digits = "".join(_SAID_DIGIT.get(w.lower(), w) for w in m.group(2).split())
+    whole = _SAID_DIGIT.get((m.group(1) or "0").lower(), m.group(1) or "0")
+    return f"{whole}.{digits}"
+
+
+_HOMOPHONES: list[tuple[re.Pattern[str], _Repl]] = [
+    (_SPOKEN_DECIMAL, _spoken_decimal),
+    (re.compile(r"\b(?:to|too)\s+(?=" + _COUNTED + r"\b|by\s+(?:to|too|two|\d|one|three|tree|four|"
+                r"for|five|six|seven|eight|nine|ten)\b)", re.I), "two "),
+    # "a u shape five wide with arms too long": only a number fits there
+    (re.compile(r"\b(arms|legs|sides|pillars|posts|wings)\s+(?:to|too)\s+(?=(?:long|high|tall|"
+                r"wide|deep)\b)", re.I), lambda m: f"{m.group(1)} two "),
     (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
     (re.compile(r"\bfor\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "four "),
     (re.compile(r"(?<=\bof\s)for\s*$", re.I), "four"),
@@ -2310,10 +2381,11 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _expand_noted(_SHAPE_HEARD, text, notes)
     for pattern, repl in _HOMOPHONES:
 
-        def heard(m: re.Match[str], repl: str = repl) -> str:
-            if m.group(0).strip().lower() != repl.strip().lower() and notes is not None:
-                notes.append(f"read '{m.group(0).strip()}' as '{repl.strip()}'")
-            return repl
+        def heard(m: re.Match[str], repl: _Repl = repl) -> str:
+            said = repl if isinstance(repl, str) else repl(m)
+            if m.group(0).strip().lower() != said.strip().lower() and notes is not None:
+                notes.append(f"read '{m.group(0).strip()}' as '{said.strip()}'")
+            return said
 
         text = pattern.sub(heard, text)
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read

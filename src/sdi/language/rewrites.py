@@ -1845,7 +1845,8 @@ _REWRITES += [
     ),
     (  # "…, then one of 3, all in a row with gaps": how separate structures stand anyway
         re.compile(
-            r",?\s*\b(?:all|them\s+all|all\s+of\s+them|each)\s+(?:in\s+a\s+(?:row|line)|side\s+by\s+side)"
+            r",?\s*\b(?<!\bnot\s)(?<!\bnever\s)(?:all(?:\s+(?:two|three|four|five|six|\d))?|them\s+all|all\s+of\s+them|each)\s+"
+            r"(?:in\s+(?:a|one)\s+(?:straight\s+)?(?:row|line)|side\s+by\s+side)"
             r"(?:\s*,?\s*(?:with\s+(?:gaps?|space)(?:\s+between(?:\s+them)?)?|spaced\s+out|apart))?",
             re.IGNORECASE,
         ),
