@@ -6096,3 +6096,29 @@ def test_a_row_made_deeper_and_a_slab_made_a_block():
     r = plan("slab 3 by 3. okay now make it a block by stacking two more layers")
     assert r.status == "success" and sorted(set(_columns(r).values())) == [3]
     assert len(r.layout.objects) == 27
+
+
+def test_a_structure_beside_another_lines_up_with_it_not_with_its_group():
+    # "a tower in front of the pyramid, a row to the left of the tower": the tower stood off
+    # the pyramid's line, centred with the row beside it, silently
+    r = plan("a pyramid with a 3 by 3 base at the back right, a tower of 4 in front of it, and a "
+             "row of 3 to the left of the tower")  # fmt: skip
+    cols = _columns(r)
+    (tower,) = [k for k, h in cols.items() if h == 4]
+    ys = [o.position[1] for o in r.layout.objects if o.position[0] > tower[0] + 0.1]  # pyramid
+    assert tower[1] == pytest.approx((min(ys) + max(ys)) / 2)
+    # "a tower to the left of the first one" of two standing one behind the other: beside it
+    r = plan("First, build a tower of four at the front right. After that, put a tower of two "
+             "directly behind it, a cube apart. Finally, put a tower of three directly to the left "
+             "of the first one, also a cube apart.")  # fmt: skip
+    cols = _columns(r)
+    first = next(k for k, h in cols.items() if h == 4)
+    assert next(k for k, h in cols.items() if h == 3)[0] == first[0]
+    # "a row in front of them both": centred on the two together
+    r = plan("Two towers of three, a little apart, and then a longer row of five cubes in front "
+             "of them both.")  # fmt: skip
+    towers = [k for k, h in _columns(r).items() if h == 3]
+    row = [k for k, h in _columns(r).items() if h == 1]
+    assert np.mean([y for _, y in row]) == pytest.approx(np.mean([y for _, y in towers]))
+    with pytest.raises(ValueError, match="whole"):
+        Relation(kind="on_top_of", subject=1, object=0, whole=True)

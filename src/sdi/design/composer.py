@@ -414,7 +414,12 @@ def _ring_for(ring: StructureSpec, inner: _Placed, cell: CellConfig) -> Structur
 
 
 def _beside(
-    base: _Placed, sub: _Placed, side: str | None, cell: CellConfig, gap: float | None = None
+    base: _Placed,
+    sub: _Placed,
+    side: str | None,
+    cell: CellConfig,
+    gap: float | None = None,
+    whole: bool = False,
 ) -> _Placed:
     """`sub` `gap` (else one structure gap) from `base` on `side`; with no side, to the left
     if the pair fits across the workspace that way, else behind — but two long structures
@@ -427,6 +432,10 @@ def _beside(
         d, sign = _SIDES[name]
         dxy = np.zeros(2)
         dxy[d] = sign * (base.half[d] + sub.half[d] + gap)
+        # across, the two structures themselves line up, not the units they head ("a tower in
+        # front of the pyramid, a row to the left of the tower": the tower stands before the
+        # pyramid) — or the whole of the base's unit ("a row in front of them both")
+        dxy[1 - d] = (0.0 if whole else base.origin[1 - d]) - sub.origin[1 - d]
         unit = _merge(base, sub, dxy, 0.0)
         if side or bool(np.all(2 * unit.half <= extent + 1e-9)):
             return unit
@@ -539,7 +548,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                 sub = units[c] = _along_top(sub, top_half, cell)
             bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
             return _merge(base, sub, centre, top - bottom)
-        return _beside(base, sub, rel.side, cell, rel.gap_m)
+        return _beside(base, sub, rel.side, cell, rel.gap_m, bool(rel.whole))
 
     def unit(k: int) -> _Placed:
         if k in units:

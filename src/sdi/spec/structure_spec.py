@@ -392,6 +392,11 @@ class Relation(BaseModel):
     gap_m: float | None = Field(
         None, ge=0, le=0.5, description="next_to: clear space between the two, m (0: touching)"
     )
+    whole: bool | None = Field(
+        None,
+        description="next_to: beside the object together with the structures placed beside it "
+        "('in front of them both'), centred on them all; else lined up with the object itself",
+    )
 
     @model_validator(mode="after")
     def _anchor(self) -> Relation:
@@ -405,6 +410,8 @@ class Relation(BaseModel):
             raise ValueError("at: copies at the corners or ends have no single side")
         if self.gap_m is not None and self.kind != "next_to":
             raise ValueError("gap_m: only a structure beside another has a gap to it")
+        if self.whole is not None and self.kind != "next_to":
+            raise ValueError("whole: only a structure beside others stands beside them all")
         return self
 
     def describe(self, names: list[str] | None = None) -> str:
