@@ -6122,3 +6122,55 @@ def test_a_structure_beside_another_lines_up_with_it_not_with_its_group():
     assert np.mean([y for _, y in row]) == pytest.approx(np.mean([y for _, y in towers]))
     with pytest.raises(ValueError, match="whole"):
         Relation(kind="on_top_of", subject=1, object=0, whole=True)
+
+
+def test_radio_procedure_and_warehouse_talk():
+    # "how copy, over", "at bay left": the radio words carry nothing, the bay is the side
+    r = plan("Base, need one stack of five at bay left, how copy, over")
+    assert r.status == "success" and r.spec.structures[0].region == "left", r.notes
+    r = plan("bay right, one stack of three; bay left, one stack of six; over")
+    assert r.status == "success" and [s.region for s in r.spec.structures] == ["right", "left"]
+    # "one cube of air between them": the gap (the two stood a structure gap apart)
+    r = plan("need two stacks of four at the near end by the robot, one cube of air between them, "
+             "over")  # fmt: skip
+    ys = sorted(y for _, y in _columns(r))
+    assert r.status == "success" and ys[1] - ys[0] == pytest.approx(0.10)
+    # "negative on the stack of six, make it four"; "correction on the pyramid: base four"
+    assert plan("negative on the stack of six, make it four, over").spec.structures[0].height == 4
+    r = plan("correction on the pyramid: base four, not three. three levels. over and out")
+    assert r.status == "success" and r.spec.relations == (), r.notes
+    # "three stacks, heights two, three, two … tall one in the middle": 2, 3, 2 (x = 3 m)
+    r = plan("copy that. three stacks, heights two, three, two, in a line, tall one in the "
+             "middle, out")  # fmt: skip
+    assert [h for _, h in sorted(_columns(r).items(), key=lambda kv: kv[0][1])] == [2, 3, 2]
+    r = plan("three stacks of two, three and two")
+    assert r.status == "success" and sorted(s.height for s in r.spec.structures) == [2, 2, 3]
+
+
+def test_legs_corrections_and_fronted_relations_in_plain_words():
+    # "every leg is two cubes": legs 2 high (the two was dropped, silently)
+    r = plan("I like to have table, four leg, every leg is two cube")
+    cubes = [o for o in r.layout.objects if o.size == (0.05, 0.05, 0.05)]
+    assert r.status == "success" and len(cubes) == 4 * 2
+    # "four by four... he says bigger! Five by five then.": one slab, 5 by 5 (both were built)
+    r = plan("A big flat floor, four by four... he says bigger! Five by five then.")
+    assert len(r.spec.structures) == 1 and len(r.layout.objects) == 25
+    # "and before the wall, a tower" / "and in front of the wall, a tower": in front of it
+    for said in ("before the wall", "in front of the wall", "in front of it"):
+        r = plan(f"Wall long 5, high 3, and {said}, a tower of two cube")
+        assert r.status == "success", (said, r.notes)
+        wall_x = max(x for (x, _), h in _columns(r).items() if h == 3)
+        assert next(x for (x, _), h in _columns(r).items() if h == 2) < wall_x
+    # "… with one cube of air between them" of what was built as one structure: not success
+    r = plan("Two 2 by 2 cakes, two layers each, side by side on the cooling rack with one cube "
+             "of air between them.")  # fmt: skip
+    assert len(r.spec.structures) == 1 and r.status == "partial"
+
+
+def test_a_group_said_together_beside_a_structure_is_centred_on_it():
+    # "three towers in front of the wall": the three together, centred before the wall
+    r = plan("make one wall 6 long 2 high and infront of it three tower of 2")
+    front = min(x for x, _ in _columns(r))
+    towers = [y for (x, y) in _columns(r) if x == front]
+    wall = [y for (x, y) in _columns(r) if x != front]
+    assert (len(towers), len(wall)) == (3, 6) and np.mean(towers) == pytest.approx(np.mean(wall))

@@ -419,11 +419,13 @@ def _beside(
     side: str | None,
     cell: CellConfig,
     gap: float | None = None,
-    whole: bool = False,
+    groups: tuple[bool, bool] = (False, False),
 ) -> _Placed:
     """`sub` `gap` (else one structure gap) from `base` on `side`; with no side, to the left
     if the pair fits across the workspace that way, else behind — but two long structures
-    running left to right (rows, walls) stand alongside, one behind the other."""
+    running left to right (rows, walls) stand alongside, one behind the other. Across, the two
+    structures themselves line up — or the whole of a unit that is one group (`groups`: base,
+    sub; `Relation.whole`)."""
     ws = cell.workspace
     extent = np.array([ws.x_max - ws.x_min, ws.y_max - ws.y_min])
     gap = cell.design.structure_gap if gap is None else gap
@@ -432,10 +434,14 @@ def _beside(
         d, sign = _SIDES[name]
         dxy = np.zeros(2)
         dxy[d] = sign * (base.half[d] + sub.half[d] + gap)
-        # across, the two structures themselves line up, not the units they head ("a tower in
-        # front of the pyramid, a row to the left of the tower": the tower stands before the
-        # pyramid) — or the whole of the base's unit ("a row in front of them both")
-        dxy[1 - d] = (0.0 if whole else base.origin[1 - d]) - sub.origin[1 - d]
+        # "a tower in front of the pyramid, a row to the left of the tower": the tower stands
+        # before the pyramid, not the middle of the tower and row; "a row in front of them both":
+        # before the middle of the two
+        base_at, sub_at = (
+            np.zeros(2) if grouped else p.origin
+            for p, grouped in zip((base, sub), groups, strict=True)
+        )
+        dxy[1 - d] = base_at[1 - d] - sub_at[1 - d]
         unit = _merge(base, sub, dxy, 0.0)
         if side or bool(np.all(2 * unit.half <= extent + 1e-9)):
             return unit
@@ -510,6 +516,9 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
         children.setdefault(r.object, []).append(r.subject)
     units: dict[int, _Placed] = {}
 
+    def grouped(k: int) -> bool:  # the unit of `k` is one group ("them both")
+        return any(r.whole and r.object == k for r in spec.relations)
+
     def ordered(k: int) -> list[int]:
         # on the object's own top first: "a tower in front of a wall, a row on top of the
         # wall" stands on the wall, not on the taller tower merged beside it
@@ -548,7 +557,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                 sub = units[c] = _along_top(sub, top_half, cell)
             bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
             return _merge(base, sub, centre, top - bottom)
-        return _beside(base, sub, rel.side, cell, rel.gap_m, bool(rel.whole))
+        return _beside(base, sub, rel.side, cell, rel.gap_m, (grouped(rel.object), grouped(c)))
 
     def unit(k: int) -> _Placed:
         if k in units:

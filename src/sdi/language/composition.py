@@ -265,7 +265,8 @@ def relate(
             o_idx = group[0]
             along = "back" if st.line == "x" else "left"
             relations.extend(
-                Relation(kind="next_to", subject=m, object=group[0], side=along) for m in group[1:]
+                Relation(kind="next_to", subject=m, object=group[0], side=along, whole=True)
+                for m in group[1:]
             )
             said = phrases[r.object].text if r.object is not None else "them"
             st.notes.append(f"read '{said}' as the {len(group)} together")
@@ -276,13 +277,13 @@ def relate(
                 object=o_idx,
                 side=side,
                 at=at[1] if at else None,
-                whole=True if group and at is None else None,  # "in front of them both"
             )
         )
         if members:
             along = "back" if side in ("left", "right") else "left"
             relations.extend(
-                Relation(kind="next_to", subject=m, object=s_idx, side=along) for m in members
+                Relation(kind="next_to", subject=m, object=s_idx, side=along, whole=True)
+                for m in members
             )
             where = lx.BESIDE_PHRASE.get(side or "", "beside")
             st.notes.append(

@@ -391,7 +391,64 @@ _NOT_THE_TABLE = r"(?!\s+(?:the\s+)?(?:table|workspace|cell|bench|work\s+area|ta
 _Repl = str | Callable[[re.Match[str]], str]
 _OTHER_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
 """What a phrasing becomes: a template, or what a function of the match gives."""
+_NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+
+
+def _listed_figures(said: str) -> str:
+    """ "two, three, two" → "2, 3 and 2": a list of numbers in figures, the last after 'and'."""
+    figures = words_to_numbers([w for w in re.findall(r"\w+", said.lower()) if w != "and"])
+    return ", ".join(figures[:-1]) + " and " + figures[-1]
+
+
+_RADIO = re.compile(
+    r"(?:^|(?<=[.,;:!?]))\s*(?:(?:copy(?:\s+that)?|roger(?:\s+that)?|ten[\s-]four|10-4|wilco|radio\s+"
+    r"check(?:\.{2,}|\s)*(?:ok(?:ay)?\s+cell)?|how\s+copy|over\s+and\s+out|over|out)\s*(?=[.,;:!?]|$))+",
+    re.I,
+)
+"""Radio procedure words ("copy that.", ", how copy, over", "over and out"): no content."""
 _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
+    # warehouse talk: "one stack of five at bay left", "bay right, one stack of three": that
+    # side of the table
+    (re.compile(r"\b(?:(at|on|in|along)\s+)?bay\s+(left|right)\b", re.I),
+     lambda m: f"{m.group(1) or 'on'} the {m.group(2)}"),
+    # "one cube of air between them": the gap between them
+    (re.compile(r"\b(" + _NUM + r"\s+(?:cubes?|blocks?))\s+of\s+(?:air|daylight|clearance)\b",
+                re.I), r"\1 of space"),
+    # "correction on the pyramid: base four, not three": the structure and what it should be
+    # (the 'on' was a relation to nothing)
+    (re.compile(r"^\W*(?:correction|change|update|amendment)\s+(?:on|to|for)\s+(?:the\s+)?(\w+)\s*:",
+                re.I), r"a \1:"),
+    # "three stacks of two, three and two": the list in figures (it was read as three of 2)
+    (re.compile(r"\bof\s+((?:one|two|three|four|five|six|seven|eight|nine)(?:\s*,\s*(?:one|two|three|"
+                r"four|five|six|seven|eight|nine))+\s*,?\s*and\s+(?:one|two|three|four|five|six|seven|"
+                r"eight|nine))\b(?!\s*(?:x|by)\b)", re.I),
+     lambda m: "of " + _listed_figures(m.group(1))),
+    # "four by four... he says bigger! Five by five then.": a correction (both were built)
+    (re.compile(r"(?:\b(?:he|she|they|the\s+(?:boss|customer|client))\s+(?:says?|wants?)\s+(?:it\s+)?)?"
+                r"\b(?:bigger|smaller|taller|shorter|longer|wider|higher|lower)\s*[!.]+\s*(" + _NUM
+                + r"(?:\s*(?:x|by)\s*" + _NUM + r")?)\s+then\b", re.I), r"no, \1"),
+    # "a wall, and before the wall, a tower of two": in front of it (it stood behind, silently)
+    (re.compile(r"\bbefore\s+(?=(?:the\s+(?:wall|tower|row|block|slab|pyramid|staircase|stairs|bridge|"
+                r"arch|castle|ring|fence|stack|column)|it)\s*,?\s*(?:an?|one|two|three|put|place|"
+                r"build|set|stack)\b)", re.I), "in front of "),
+    # "a wall 5 long, and in front of the wall, a tower of 2": the relation said first starts a
+    # sentence of its own (the wall was read as a second wall, or as the tower's subject)
+    (re.compile(r"[,;]\s*and\s+(?=(?:in\s+front\s+of|behind|to\s+the\s+(?:left|right)\s+of|next\s+to|"
+                r"beside|on\s+top\s+of|on\s+(?:either|each)\s+side\s+of)\s+(?:the\s+\w+|it|that(?:\s+one)?)"
+                r"\s*,)", re.I), ". "),
+    # "negative on the stack of six, make it four": the change, on the structure said before
+    (re.compile(r"^\W*negative\s+on\s+(?:the\s+)?([^,.;]+?)\s*,\s*(?=make\s+it\b)", re.I),
+     r"a \1. no, "),
+    # "three stacks, heights two, three, two": one of each height (3 was read as x = 3 m)
+    (re.compile(r"(?<=[a-z]s)\s*,?\s*(?:with\s+)?heights?\s*:?\s+(" + _NUM + r"(?:\s*,\s*" + _NUM
+                + r")*\s*(?:,\s*|,?\s*and\s+)" + _NUM + r")\b(?!\s*(?:x|by|cm|mm|m)\b)", re.I),
+     lambda m: " of " + _listed_figures(m.group(1))),
+    # "a table, four legs, every leg is two cubes": each leg that high (the two was dropped,
+    # silently)
+    (re.compile(r"\b(?:each|every)\s+(leg|pillar|post|support|column)\s+(?:is\s+|of\s+)?(?=(?:\d+|"
+                r"one|two|three|four|five|six)\s+(?:cubes?|blocks?|bricks?)\b(?!\s+(?:high|tall)))",
+                re.I),
+     r"each \1 has "),
     # "a block, nowhere near the robot": far from it (it stood at the front, silently)
     (re.compile(r"\b(?:nowhere\s+near)\s+"
                 r"(?=(?:the\s+)?robot\b)", re.I), "far from "),
@@ -2389,6 +2446,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
         text = pattern.sub(heard, text)
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
+    text = _RADIO.sub(" ", text)  # "copy that.", ", over": radio procedure
     text = _OPPOSITES.sub(lambda m: f"{m.group(1)} to {m.group(2)}", text)  # "front-back"
     text = re.sub(r"\b(left|right)[- ]?hand(?=\s+side\b)", r"\1", text, flags=re.I)
     text = _CSV_AT.sub(_csv_at, text)

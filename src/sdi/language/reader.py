@@ -236,6 +236,15 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"ignored '{things.group(0)}': {len(specs)} structure(s) built; name each of them, "
             "or leave SDI the choice without sizes"
         )
+    apart = next((n for n in st.notes if n.endswith(_APART_ANYWAY)), None)
+    if apart is not None and len(specs) < 2 and getattr(specs[0], "gap_m", None) is None:
+        # "two 2 by 2 cakes … with one cube of air between them": one structure was built, so
+        # there is nothing to stand apart — what was asked was more than one
+        between = apart.removeprefix("read '").removesuffix(f"' as {_APART_ANYWAY}")
+        st.material.append(between)
+        st.notes.remove(apart)
+        st.notes.append(f"ignored '{between}': one structure was built, with nothing to stand "
+                        "apart from; name each structure")  # fmt: skip
     if len(specs) > 1 and _GUESSED_ROW in st.notes and guessed and not rows_named:
         # "five cubes long, three tall - such a wall": parts said apart from the structure they
         # size, built as a row of their own beside it: a guess that is not what was asked
@@ -495,6 +504,10 @@ def _apply_one(
     else:
         st.notes.append(f"read '{said}' as every structure's {key}: {value}")
     return out
+
+
+_APART_ANYWAY = "standing apart (separate structures always do)"
+"""The end of the note on "space between them" (rewrites): what separate structures do anyway."""
 
 
 def _listed(

@@ -394,8 +394,9 @@ class Relation(BaseModel):
     )
     whole: bool | None = Field(
         None,
-        description="next_to: beside the object together with the structures placed beside it "
-        "('in front of them both'), centred on them all; else lined up with the object itself",
+        description="next_to: one group with the object ('in front of them both', 'three towers "
+        "together in front of the wall'): a structure beside the group is centred on all of it, "
+        "else lined up with the structure it is beside",
     )
 
     @model_validator(mode="after")
@@ -411,7 +412,7 @@ class Relation(BaseModel):
         if self.gap_m is not None and self.kind != "next_to":
             raise ValueError("gap_m: only a structure beside another has a gap to it")
         if self.whole is not None and self.kind != "next_to":
-            raise ValueError("whole: only a structure beside others stands beside them all")
+            raise ValueError("whole: only structures side by side make one group")
         return self
 
     def describe(self, names: list[str] | None = None) -> str:
