@@ -6174,3 +6174,27 @@ def test_a_group_said_together_beside_a_structure_is_centred_on_it():
     towers = [y for (x, y) in _columns(r) if x == front]
     wall = [y for (x, y) in _columns(r) if x != front]
     assert (len(towers), len(wall)) == (3, 6) and np.mean(towers) == pytest.approx(np.mean(wall))
+
+
+def test_a_drawing_s_sizes_labels_and_pitch():
+    # "Plate 200 × 200 × 50": all three millimetres (the 50 was 50 parts high)
+    r = plan("Plate 200 × 200 × 50 (single layer).")
+    assert r.status == "success" and len(r.layout.objects) == 16
+    # "L × W × H = 150 × 100 × 100 mm", "300 L × 50 W × 100 H": each by its label
+    r = plan("Solid block, envelope L × W × H = 150 × 100 × 100 mm.")
+    assert r.status == "success" and len(r.layout.objects) == 3 * 2 * 2
+    r = plan("Wall 300 L × 50 W × 100 H, long axis parallel to Y, centreline at X 650.")
+    assert r.status == "success" and r.spec.structures[0].at_x == 0.65
+    assert len({round(o.position[1], 3) for o in r.layout.objects}) == 6  # along y
+    # "Column Ø50, H 250": one cube across, 250 mm high
+    r = plan("Column Ø50, H 250, located at X 400 / Y 300.")
+    assert r.status == "success" and _columns(r) == {(0.4, 0.3): 5}
+    # "parallel to X", "100 clear between inner faces": along x, 100 mm apart (100 cubes)
+    r = plan("Two walls 250 L × 100 H, parallel to X, 100 clear between inner faces.")
+    ys = sorted({round(o.position[1], 3) for o in r.layout.objects})
+    assert r.status == "success" and ys[1] - ys[0] == pytest.approx(0.15)
+    assert len({round(o.position[0], 3) for o in r.layout.objects}) == 5
+    # "centres 150 mm apart", "pitch 150 mm": centre to centre (it was the clear gap)
+    for said in ("centres 150 mm apart", "pitch 150 mm", "on 150 mm pitch"):
+        ys = sorted({y for _, y in _columns(plan(f"two towers of 3, {said}"))})
+        assert ys[1] - ys[0] == pytest.approx(0.15), said

@@ -1328,8 +1328,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?=(?:so|then|let|ok(?:ay)?|now|um+|uh+|here|listen|well|guys|team|folks)\b)",
                 re.I), " "),
     # "the mess on the bench", "in the middle of the bench": the workbench is the table
-    (re.compile(r"\b(on|at|off|across|along|of|from|clear)\s+the\s+(?:work\s*)?bench\b(?!\s+(?:with|of)\b)",
-                re.I), r"\1 the table"),
+    (re.compile(r"\b(on|at|off|across|along|of|from|clear)\s+the\s+(?:(?:work\s*)?bench|(?:building\s+)?site)"
+                r"\b(?!\s+(?:with|of)\b)", re.I), r"\1 the table"),
     # "two towers of three one in the front left corner and one in the back right corner"
     (re.compile(r"\b(of\s+(?:\d+|two|three|four|five|six))\s+(one\s+(?:in|at|on)\s+the\b)", re.I),
      r"\1, \2"),
@@ -1638,6 +1638,9 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     # "pos: x 300 mm y 450 mm": at that place; "parallel to the y axis": along y
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*(?=x\s*[:=]?\s*\d|\(\s*\d)", re.I), "at "),
     (re.compile(r"\bparallel\s+(?:to|with)\s+the\s+([xy])[\s-]*axis\b", re.I), r"along \1"),
+    # "parallel to X", "long axis parallel to Y" (a drawing's axes)
+    (re.compile(r"\b(?:(?:its\s+)?long\s+(?:axis|side|edge)\s+)?parallel\s+(?:to|with)\s+([xy])\b"
+                r"(?![\s-]*(?:=|\d))", re.I), r"along \1"),
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*((?:front|back|rear|left|right|centre|center|middle)"
                 r"(?:[\s-]+(?:left|right|corner))?)\b", re.I), r"at the \1"),
     (re.compile(r"\b(?:qty|qnty)\.?\s*[:=]?\s*(\d+)\s+(?=[a-z])", re.I), r"\1 "),
@@ -1691,8 +1694,9 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(at|front|back|rear)\s+R\b(?![-'])"), r"\1 right"),
     (re.compile(r"(?:(?<=^)|(?<=[\s,;:]))L(?=\s+of\s+(?:it|them|the|that)\b)"), "left"),
     (re.compile(r"(?:(?<=^)|(?<=[\s,;:]))R(?=\s+of\s+(?:it|them|the|that)\b)"), "right"),
-    (re.compile(r"\b(\d+|one|two|three)\s*(?:clr|clear)\b(?:\s+between(?:\s+(?:them|each))?)?",
-                re.I), r"\1 cubes apart"),
+    (re.compile(r"\b(\d+|one|two|three)\s*(?:clr|clear)\b(?:\s+between(?:\s+(?:them|each|(?:the\s+)?"
+                r"inner\s+faces))?)?", re.I),
+     lambda m: f"{m.group(1)} {'mm' if _drawn_mm(m.group(1)) else 'cubes'} apart"),
     (re.compile(r"\brmv\b|\brmve\b", re.I), "remove"),
     # "make letter T with cubes", "build the letter U 5 wide": that shape
     (re.compile(r"\b(?:(?:an?|the)\s+)?(?:big\s+|capital\s+)?letter\s+([TLUtlu])\b(?![-'])(?!\s+shape)"),
@@ -2157,6 +2161,32 @@ _BARE_PAIR = re.compile(
     r"centimet|met|inch|in\b|ft\b|feet|cubes?|blocks?|bricks?|parts?|%))",
     re.IGNORECASE,
 )
+_BARE_TRIPLE = re.compile(
+    r"(?<![\w.,=#@:/-])(\d{2,4})\s*(by|x|×)\s*(\d{2,4})\s*(by|x|×)\s*(\d{2,4})(?![\w.,]\d)"
+    r"(?:\s*(mm|cm|millimet(?:er|re)s?|centimet(?:er|re)s?)\b)?",
+    re.IGNORECASE,
+)
+"""A drawing's size triple, "200 × 200 × 50", "150 x 100 x 100 mm": one unit for all three."""
+_LABELLED_TRIPLE = re.compile(
+    r"\b([LWH])\s*[x×*]\s*([LWH])\s*[x×*]\s*([LWH])\s*[=:]?\s*(\d{1,4})\s*[x×*]\s*(\d{1,4})\s*[x×*]"
+    r"\s*(\d{1,4})(?:\s*(mm|cm)\b)?",
+    re.IGNORECASE,
+)
+"""A drawing's "L × W × H = 150 × 100 × 100 mm": each size by its label (mm unless said)."""
+_TRIPLE_LABELLED = re.compile(
+    r"\b(\d{2,4})\s*([LWH])\s*[x×*]\s*(\d{2,4})\s*([LWH])\s*[x×*]\s*(\d{2,4})\s*([LWH])\b"
+    r"(?:\s*(mm|cm)\b)?"
+)
+"""A drawing's "300 L × 50 W × 100 H": each size followed by its label."""
+_DIAMETER = re.compile(r"[Øø⌀]\s*(\d{2,4})\b(?:\s*mm\b)?")
+_DRAWING_LABEL = re.compile(r"\b([HLW])\s*=?\s*(\d{2,4})\b(?!\s*(?:mm|cm|m\b|x\b|×|by\b))")
+"""A drawing's labelled size, "Column H 250": that many millimetres high (long, wide)."""
+_DRAWN = {"H": "high", "L": "long", "W": "wide"}
+
+
+def _drawn_mm(said: str) -> bool:
+    """A bare number that can only be millimetres: a round 50 or more (no count of parts)."""
+    return said.isdigit() and int(said) >= 50 and int(said) % 10 == 0
 _SAME_UNIT = re.compile(
     r"(?P<said>\b\d+(?:\.\d+)?\s*(?:cm|centimet(?:er|re)s?)\s+(?:long|high|tall|wide|deep)\s*"
     r"(?:,|and|,\s*and|by|x)\s*)(?P<v>\d+)\s+(?P<dim>long|high|tall|wide|deep)\b",
@@ -2171,6 +2201,33 @@ _NOT_A_SIZE_BEFORE = re.compile(
     r"exercise|entry|step|x|y|at|ref|part|sku|item)\s*[#:.]?\s*$",
     re.IGNORECASE,
 )
+
+
+def _drawing_sizes(text: str, notes: list[str]) -> str:
+    """A drawing's sizes: "L × W × H = 150 × 100 × 100 mm" each by its label, "Column Ø50"
+    one cube across (read before the letters are read as words)."""
+
+    def labelled_triple(m: re.Match[str]) -> str:
+        unit = (m.group(7) or "mm").lower()
+        said = [f"{m.group(4 + k)} {unit} {_DRAWN[m.group(1 + k).upper()]}" for k in range(3)]
+        notes.append(f"read '{m.group(0).strip()}' as {', '.join(said)}")
+        return ", ".join(said)
+
+    def diameter(m: re.Match[str]) -> str:
+        n = int(m.group(1))
+        notes.append(f"read '{m.group(0).strip()}' as {n} mm across")
+        return "" if n == 50 else f"{n} mm wide"
+
+    def triple_labelled(m: re.Match[str]) -> str:
+        unit = (m.group(7) or "mm").lower()
+        said = [f"{m.group(1 + 2 * k)} {unit} {_DRAWN[m.group(2 + 2 * k)]}" for k in range(3)]
+        notes.append(f"read '{m.group(0).strip()}' as {', '.join(said)}")
+        return ", ".join(said)
+
+    text = _LABELLED_TRIPLE.sub(labelled_triple, text)
+    text = _TRIPLE_LABELLED.sub(triple_labelled, text)
+    text = re.sub(r"\bcent(?:re|er)[\s-]?line\s+(?=at\b)", "centred ", text, flags=re.I)
+    return _DIAMETER.sub(diameter, text)
 
 
 def _bare_millimetres(text: str, notes: list[str]) -> str:
@@ -2200,6 +2257,27 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
         notes.append(f"read {m.group(1)} and {m.group(3)} without a unit as millimetres")
         return f"{m.group(1)} mm {m.group(2)} {m.group(3)} mm"
 
+    def triple(m: re.Match[str]) -> str:  # "Plate 200 × 200 × 50": all three in millimetres
+        values = (m.group(1), m.group(3), m.group(5))
+        unit = (m.group(6) or "").lower()
+        if unit.startswith(("cm", "centi")):
+            return f"{values[0]} cm {m.group(2)} {values[1]} cm {m.group(4)} {values[2]} cm"
+        if not unit and (any(int(v) < 50 or int(v) % 10 for v in values) or labelled(m)):
+            return m.group(0)
+        if not unit:
+            notes.append(f"read {' × '.join(values)} without a unit as millimetres")
+        return f"{values[0]} mm {m.group(2)} {values[1]} mm {m.group(4)} {values[2]} mm"
+
+    text = _BARE_TRIPLE.sub(triple, text)
+
+    def drawing(m: re.Match[str]) -> str:  # "Column H 250": 250 mm high
+        n = int(m.group(2))
+        if n < 50 or n % 10:
+            return m.group(0)
+        notes.append(f"read '{m.group(0)}' as {n} mm {_DRAWN[m.group(1)]}")
+        return f"{n} mm {_DRAWN[m.group(1)]}"
+
+    text = _DRAWING_LABEL.sub(drawing, text)
     text = _BARE_PAIR.sub(pair, text)
 
     def same_unit(m: re.Match[str]) -> str:  # "15 cm high and 25 long": 25 cm too
@@ -2428,6 +2506,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             "(e.g. '2 towers')",
             understood={"numbers": [neg.group(1)]},
         )
+    text = _drawing_sizes(text, notes)
     text = _LIST_ITEM.sub(" then ", text)  # "1) a tower\n2) another one …"
     text = _BULLET.sub(" , ", text)  # "- tower / - 4 cubes / - left side": one thing's details
     text = _ROBOT_NAME.sub(" the robot ", text)
