@@ -6198,3 +6198,14 @@ def test_a_drawing_s_sizes_labels_and_pitch():
     for said in ("centres 150 mm apart", "pitch 150 mm", "on 150 mm pitch"):
         ys = sorted({y for _, y in _columns(plan(f"two towers of 3, {said}"))})
         assert ys[1] - ys[0] == pytest.approx(0.15), said
+
+
+def test_a_line_in_a_region_closes_up_to_stay_in_it():
+    # "five towers of 3 along the back": the fifth stood out of the back, silently
+    r = plan("A colonnade of five columns, each three courses tall, running along the back of "
+             "the site.")  # fmt: skip
+    cols = _columns(r)
+    assert sorted(cols.values()) == [3] * 5 and {x for x, _ in cols} == {0.65}
+    # "a stair of five risers": five steps (a block and five slabs, silently)
+    r = plan("A monumental stair of five risers, two units wide, rising toward the back.")
+    assert r.spec.structures[0].shape == "staircase" and r.spec.structures[0].steps == 5

@@ -276,24 +276,32 @@ def _place_all(
         k for k, p in enumerate(placed) if centres[k] is None and (p.spec.region or p.spec.edge)
     ]
     free = [k for k in range(len(placed)) if centres[k] is None and k not in regional]
-    wants: list[tuple[int, np.ndarray, str]] = []
+    wants: list[tuple[int, np.ndarray, str, float]] = []
     groups: dict[tuple[str | None, tuple[str, ...]], list[int]] = {}
     for k in regional:  # several in one region ("three towers at the back") stand in a line
         groups.setdefault((placed[k].spec.region, tuple(placed[k].spec.edge)), []).append(k)
+    extent = (ws.x_max - ws.x_min, ws.y_max - ws.y_min)
     for members in groups.values():
         region = placed[members[0]].spec.region or ""
         along = 0 if line == "x" or (region in ("left", "right")) else 1
         widths = [2 * placed[k].half[along] for k in members]
-        start = -(sum(widths) + gap * max(0, len(members) - 1)) / 2
+        between = gap
+        too_long = sum(widths) + gap * (len(members) - 1) > extent[along]
+        if not stated and len(members) > 1 and too_long:
+            # "five towers along the back": SDI's own gap closes up so that the line stays in
+            # its region (it broke in two, the fifth out of the region)
+            room = extent[along] - sum(widths) - 1e-6
+            between = max(min(gap, room / (len(members) - 1)), min(gap, 0.01))
+        start = -(sum(widths) + between * max(0, len(members) - 1)) / 2
         for k, w in zip(members, widths, strict=True):
             x, y = _target(placed[k].spec, cell)
             assert x is not None and y is not None
             want = np.array([x, y])
             want[along] += start + w / 2
-            start += w + gap
-            wants.append((k, _clamp(want, placed[k].half, cell, (0, 1)), "region"))
+            start += w + between
+            wants.append((k, _clamp(want, placed[k].half, cell, (0, 1)), "region", between))
     if grid is not None and len(free) == grid[0] * grid[1]:
-        wants.extend(_grid_wants(placed, free, grid, anchor, gap))
+        wants.extend((*w, gap) for w in _grid_wants(placed, free, grid, anchor, gap))
     else:
         d = 0 if line == "x" else 1
         span = (ws.x_max - ws.x_min, ws.y_max - ws.y_min)
@@ -316,10 +324,10 @@ def _place_all(
         for k, w in zip(free, widths, strict=True):
             want = anchor.copy()
             want[d] = s0 + w / 2
-            wants.append((k, want, "structures"))
+            wants.append((k, want, "structures", gap))
             s0 += w + gap
-    for k, want, field in wants:
-        spot = _search(want, placed[k].half, taken, gap, cell, (0, 1))
+    for k, want, field, clear in wants:
+        spot = _search(want, placed[k].half, taken, clear, cell, (0, 1))
         if spot is None:
             raise InfeasibleError(
                 f"{field}: no free place in the workspace for the {placed[k].spec.shape} "

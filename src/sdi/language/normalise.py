@@ -431,6 +431,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bbefore\s+(?=(?:the\s+(?:wall|tower|row|block|slab|pyramid|staircase|stairs|bridge|"
                 r"arch|castle|ring|fence|stack|column)|it)\s*,?\s*(?:an?|one|two|three|put|place|"
                 r"build|set|stack)\b)", re.I), "in front of "),
+    # "a stair of five risers": five steps (the risers were read as five slabs, silently)
+    (re.compile(r"\b(" + _NUM + r")\s+(?:risers|treads)\b", re.I), r"\1 steps"),
     # "a wall 5 long, and in front of the wall, a tower of 2": the relation said first starts a
     # sentence of its own (the wall was read as a second wall, or as the tower's subject)
     (re.compile(r"[,;]\s*and\s+(?=(?:in\s+front\s+of|behind|to\s+the\s+(?:left|right)\s+of|next\s+to|"
