@@ -6209,3 +6209,19 @@ def test_a_line_in_a_region_closes_up_to_stay_in_it():
     # "a stair of five risers": five steps (a block and five slabs, silently)
     r = plan("A monumental stair of five risers, two units wide, rising toward the back.")
     assert r.spec.structures[0].shape == "staircase" and r.spec.structures[0].steps == 5
+
+
+def test_changes_and_lists_said_with_the_dimension_they_change():
+    # "raise it to two high" of an L: its height (its arm became 2 long, silently)
+    r = plan("First build an L shape with arms of 4 and 3, one high. Then raise it to two high.")
+    assert r.status == "success" and len(r.layout.objects) == 6 * 2, r.notes
+    # "stack a second identical layer on it": a layer more (it was dropped)
+    r = plan("First, a grid 3 by 4. Next, stack a second identical layer on it.")
+    assert r.status == "success" and len(r.layout.objects) == 24
+    # "arms of 4 and 3, one high": the one is the height, not a third arm
+    r = plan("an L shape with arms of 4 and 3, one high")
+    assert r.status == "success" and len(r.layout.objects) == 6
+    # "the small one at left": it on the left, the others in line (all stood at the left)
+    r = plan("three towers in one line, 1, 2 and 3 high, the small one at left")
+    by_y = sorted(_columns(r).items(), key=lambda kv: -kv[0][1])
+    assert by_y[0][1] == 1 and len({x for (x, _), _ in by_y}) == 1

@@ -69,8 +69,9 @@ MODIFY = [
         "+1",
     ),
     _op(
-        r"\badd\s+(?:a|one|another)\s+(?:second|third|fourth|fifth|new|further|extra|more)?"
-        r"\s*(?:(?:identical|same|matching|similar|equal)\s+)?(?:layer|level|tier|storey|course)\b",
+        r"\b(?:add|stack|put|place|lay)\s+(?:a|one|another)\s+(?:second|third|fourth|fifth|new|further|"
+        r"extra|more)?\s*(?:(?:identical|same|matching|similar|equal)\s+)?(?:layer|level|tier|storey|"
+        r"course)\b(?!\s+of\b)",
         "+1",
     ),
     _op(
@@ -870,6 +871,9 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     main = op.endswith("main")  # "make it 4", "make it 3 less": the size it was given, or its main
     if main:
         op = op[0]
+        said = re.search(r"\b(high|tall|long)\s*[.!)]?\s*$", m.group(0), re.I)
+        if said:  # "raise it to two high": its height, whatever its main size is
+            key = "length" if said.group(1).lower() == "long" else "height"
     elif op.endswith("length"):  # "make it 5 long", "remove one column from the end"
         op, key = op.removesuffix("length"), "length"
     elif op == "+row":  # "add a row along the back": a slab's rows, not a course on top
@@ -973,7 +977,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             index = of_family[0]
     last = structures[index]
     if main:
-        key = _main_slot(last) or _slot_said(m.group(0), last)
+        key = key or _main_slot(last) or _slot_said(m.group(0), last)
         if key is None:
             return None
     if op in ("-", "-1") and last.shape == "pyramid" and re.search(r"\btop\b", p.text, re.I):

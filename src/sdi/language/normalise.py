@@ -431,6 +431,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bbefore\s+(?=(?:the\s+(?:wall|tower|row|block|slab|pyramid|staircase|stairs|bridge|"
                 r"arch|castle|ring|fence|stack|column)|it)\s*,?\s*(?:an?|one|two|three|put|place|"
                 r"build|set|stack)\b)", re.I), "in front of "),
+    # "an L shape with arms of 4 and 3, one high": the height is not a third arm (the list took
+    # it, and the 3 was dropped)
+    (re.compile(r"\b((?:arms?|legs?|sides?|wings?)\s+(?:of\s+)?" + _NUM + r"\s+and\s+" + _NUM
+                + r")\s*,\s*(?=" + _NUM + r"\s+(?:cubes?\s+|blocks?\s+|levels?\s+|layers?\s+)?"
+                r"(?:high|tall)\b)", re.I), r"\1; "),
+    # "the small one at left": on the left (every structure stood at the left, silently)
+    (re.compile(r"\b(at|on)\s+(left|right)(?=\s*(?:[,.;!?]|$|side\b))", re.I),
+     lambda m: f"on the {m.group(2)}"),
     # "a stair of five risers": five steps (the risers were read as five slabs, silently)
     (re.compile(r"\b(" + _NUM + r")\s+(?:risers|treads)\b", re.I), r"\1 steps"),
     # "a wall 5 long, and in front of the wall, a tower of 2": the relation said first starts a
