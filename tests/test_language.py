@@ -6225,3 +6225,23 @@ def test_changes_and_lists_said_with_the_dimension_they_change():
     r = plan("three towers in one line, 1, 2 and 3 high, the small one at left")
     by_y = sorted(_columns(r).items(), key=lambda kv: -kv[0][1])
     assert by_y[0][1] == 1 and len({x for (x, _), _ in by_y}) == 1
+
+
+def test_places_said_of_one_structure_of_a_pair_keep_to_it():
+    # "a tower in the centre, the same again 10 cm to its left": the first stays in the centre
+    r = plan("Build a tower of 5 in the centre. Now build the same tower again, 10 cm to its left.")
+    assert sorted(_columns(r)) == [(0.45, 0.3), (0.45, 0.45)]
+    # "the bigger one further from the robot": behind (dropped, silently); "closer": in front
+    r = plan("two pyramids, one with 3 levels and one with 2, the bigger one further from the "
+             "robot")  # fmt: skip
+    top = max(r.layout.objects, key=lambda o: o.position[2])  # the 3-level one's top
+    assert top.position[0] == max(o.position[0] for o in r.layout.objects)
+    cols = _columns(plan("two towers of 2 and 5, the taller one closer to the robot"))
+    assert min(cols.items())[1] == 5  # the front (smallest x) one
+    # "steps 1, 2, 3 and 4 cubes high, going from left to right": 1 at the left
+    heights = _heights(plan("The result should be steps, 1, 2, 3 and 4 cubes high, going from "
+                            "left to right").layout)  # fmt: skip
+    assert [h for _, h in sorted(heights.items(), key=lambda kv: -kv[0][1])] == [1, 2, 3, 4]
+    # "the tall one on the left please: two towers, 2 and 5 high": said before them
+    cols = _columns(plan("the tall one on the left please: two towers, 2 and 5 high"))
+    assert max(cols.items(), key=lambda kv: kv[0][1])[1] == 5

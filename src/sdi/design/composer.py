@@ -297,6 +297,8 @@ def _place_all(
             x, y = _target(placed[k].spec, cell)
             assert x is not None and y is not None
             want = np.array([x, y])
+            if len(members) == 1:  # "a tower in the centre, another 10 cm to its left": the
+                want -= placed[k].origin  # structure said there stands there, not its unit
             want[along] += start + w / 2
             start += w + between
             wants.append((k, _clamp(want, placed[k].half, cell, (0, 1)), "region", between))

@@ -439,6 +439,22 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "the small one at left": on the left (every structure stood at the left, silently)
     (re.compile(r"\b(at|on)\s+(left|right)(?=\s*(?:[,.;!?]|$|side\b))", re.I),
      lambda m: f"on the {m.group(2)}"),
+    # "the bigger one further from the robot": behind the other (it was dropped, silently);
+    # "the taller one closer to the robot": in front
+    (re.compile(r"\b(the\s+\w+\s+one)\s+(?:(?:is|should\s+be|stands?|goes)\s+)?(?:(further|farther)"
+                r"\s+(?:away\s+)?from|(?:closer|nearer)\s+to)\s+(?:the\s+)?robot\b(?!\s+than\b)",
+                re.I),
+     lambda m: f"{m.group(1)} {'behind' if m.group(2) else 'in front'}"),
+    # "steps, 1, 2, 3 and 4 cubes high, going from left to right": they go up that way (they
+    # climbed to the left, silently)
+    (re.compile(r"\b(going|running|rising)\s+(?=from\s+(?:the\s+)?(?:left|right|front|back)\s+to\s+)",
+                re.I),
+     lambda m: "going up " if re.search(r"\b(?:stair|step)", m.string[: m.start()], re.I)
+     else m.group(0)),
+    # "the tall one on the left please: two towers, 2 and 5 high": said after them (the tall
+    # one stood on the right, silently)
+    (re.compile(r"^\W*(the\s+\w+\s+one\s+(?:on|at|to|in)\s+(?:the\s+)?(?:left|right|front|back))"
+                r"(?:\s+please)?\s*:\s*(.+?)\s*$", re.I | re.S), r"\2, \1"),
     # "a stair of five risers": five steps (the risers were read as five slabs, silently)
     (re.compile(r"\b(" + _NUM + r")\s+(?:risers|treads)\b", re.I), r"\1 steps"),
     # "a wall 5 long, and in front of the wall, a tower of 2": the relation said first starts a
