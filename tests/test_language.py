@@ -5733,9 +5733,10 @@ def test_foreman_codes_stairs_up_and_counts_shared():
     for command in ("use 8 cubes for two equal towers, side by side",
                     "make two towers out of 8 cubes"):  # fmt: skip
         assert [s.height for s in plan(command).spec.structures] == [4, 4], command
-    # "two towers, one twice as tall as the other": both 4 (twice the count of towers)
+    # "two towers, one twice as tall as the other": both 4 (twice the count of towers); no
+    # height said, SDI's own 3 and twice that, said
     r = plan("two towers, one twice as tall as the other")
-    assert r.status == "partial"
+    assert [s.height for s in r.spec.structures] == [6, 3] and "6 and 3" in r.notes[0]
     r = plan("two walls 2 high side by side, one 3 long and the other twice as long")
     assert [(s.length, s.height) for s in r.spec.structures] == [(3, 2), (6, 2)]
 
@@ -6245,3 +6246,22 @@ def test_places_said_of_one_structure_of_a_pair_keep_to_it():
     # "the tall one on the left please: two towers, 2 and 5 high": said before them
     cols = _columns(plan("the tall one on the left please: two towers, 2 and 5 high"))
     assert max(cols.items(), key=lambda kv: kv[0][1])[1] == 5
+
+
+def test_one_twice_as_tall_as_the_other_and_ordinal_lists():
+    # no height said: SDI's own 3 and twice that (two towers of 1 were built)
+    r = plan("two towers, one twice as tall as the other")
+    assert r.status == "success" and sorted(_columns(r).values()) == [3, 6]
+    # "two towers of 2, one twice as tall as the other": 2 and 4 (2 and 1, silently)
+    assert sorted(_columns(plan("two towers of 2, one twice as tall as the other")).values()) == [
+        2, 4
+    ]  # fmt: skip
+    r = plan("two towers, one twice as tall as the other, the short one four cubes")
+    assert sorted(_columns(r).values()) == [4, 8]
+    # "first a wall …, second a tower …, third a tower of 5 to the right of the second"
+    r = plan("first a wall 4 long and 2 high, second a tower of 3 to its right, third a tower of 5 "
+             "to the right of the second")  # fmt: skip
+    assert r.status == "success", r.notes
+    # "each step 3 cubes wide": the staircase that wide
+    r = plan("a staircase, 3 steps, climbing to the back, each step 3 cubes wide")
+    assert r.status == "success" and len(r.layout.objects) == 3 * (1 + 2 + 3)

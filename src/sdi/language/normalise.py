@@ -455,6 +455,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # one stood on the right, silently)
     (re.compile(r"^\W*(the\s+\w+\s+one\s+(?:on|at|to|in)\s+(?:the\s+)?(?:left|right|front|back))"
                 r"(?:\s+please)?\s*:\s*(.+?)\s*$", re.I | re.S), r"\2, \1"),
+    # "first a wall …, second a tower …, third a tower of 5 to the right of the second": the
+    # order the structures are said in (the 'third' was left unread)
+    (re.compile(r"(?:(?<=[,;.:])|(?<=\band))\s*(second|third|fourth|fifth)\s*[,:]?\s+(?=(?:an?|one)\s)",
+                re.I), " then "),
+    # "a staircase, 3 steps, each step 3 cubes wide": the staircase that wide (the step unread)
+    (re.compile(r"\b(?:each|every)\s+(?:step|stair|tread)\s+(?:is\s+)?(?=" + _NUM
+                + r"\s+(?:cubes?\s+|blocks?\s+)?(?:wide|across)\b)", re.I), ""),
     # "a stair of five risers": five steps (the risers were read as five slabs, silently)
     (re.compile(r"\b(" + _NUM + r")\s+(?:risers|treads)\b", re.I), r"\1 steps"),
     # "a wall 5 long, and in front of the wall, a tower of 2": the relation said first starts a
@@ -1657,6 +1664,22 @@ _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps
 _TICKET_DIM = {"len": "long", "lgth": "long", "ht": "high", "hgt": "high", "hght": "high",
                "wid": "wide", "wdth": "wide", "dp": "deep", "dpth": "deep"}  # fmt: skip
 _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
+    # "two towers, one twice as tall as the other, the short one three cubes": that one 3
+    (re.compile(r"\b(two\s+(?:towers|stacks|columns|pillars))\s*,?\s*(?:with\s+)?one\s+(?:of\s+them\s+)?"
+                r"twice\s+as\s+(?:tall|high)\s+as\s+the\s+other\s*,?\s*(?:and\s+)?the\s+(?:short|shorter|"
+                r"small|smaller|low|lower|other)\s+one\s+(?:is\s+)?(\d+|one|two|three|four|five)(?:\s+(?:cubes?|"
+                r"blocks?))?(?:\s+(?:high|tall))?\b", re.I),
+     r"\1, one \2 high and one twice as tall"),
+    # "two towers, one twice as tall as the other", no height said: SDI's own 3 and twice that
+    # (two towers of 1 were built)
+    (re.compile(r"\b(two\s+(?:towers|stacks|columns|pillars))\s*,?\s*(?:with\s+)?one\s+(?:of\s+them\s+)?"
+                r"twice\s+as\s+(?:tall|high)\s+as\s+the\s+other\b(?![^.;]*(?:\d|\b(?:one|two|three|four|"
+                r"five|six|seven|eight|nine|ten)\b))", re.I),
+     r"\1 of 6 and 3"),
+    # "two towers of 2, one twice as tall as the other": the other 2 high (they were 2 and 1)
+    (re.compile(r"\btwo\s+(towers|stacks|columns|pillars)\s+of\s+(\d+)\s*,?\s*(?:with\s+)?one\s+"
+                r"(?:of\s+them\s+)?twice\s+as\s+(tall|high)\s+as\s+the\s+other\b", re.I),
+     r"two \1, one \2 high and one twice as tall"),
     # a work ticket's abbreviations: "len 6, ht 2, wid 2", "pos front", "qty 1 block"
     (re.compile(r"\b(len|lgth|ht|hgt|hght|wid|wdth|dp|dpth)\.?\s*[:=]?\s*(\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?)"
                 r"(?:\s*cubes?\b)?", re.I),
