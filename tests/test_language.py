@@ -6265,3 +6265,15 @@ def test_one_twice_as_tall_as_the_other_and_ordinal_lists():
     # "each step 3 cubes wide": the staircase that wide
     r = plan("a staircase, 3 steps, climbing to the back, each step 3 cubes wide")
     assert r.status == "success" and len(r.layout.objects) == 3 * (1 + 2 + 3)
+
+
+def test_a_letter_s_height_in_courses_once_both_sides_are_said():
+    # "a T shape 5 by 3, 2 high": 2 courses (the 2 was its stem, the 3 ignored)
+    r = plan("a T shape 5 by 3, 2 high")
+    assert r.status == "success" and len(r.layout.objects) == 7 * 2
+    assert plan("a U shape 5 by 3, 2 high").spec.structures[0].height == 2
+    assert plan("a U 4 wide and 3 high").spec.structures[0].width == 3  # a letter drawn: its arms
+    # a T "5 across the top and 3 down, one high": its bar and stem (the 3 was dropped)
+    r = plan("Would you mind building a T shape, 5 across the top and 3 down, one high?")
+    s = r.spec.structures[0]
+    assert r.status == "success" and (s.length, s.width) == (5, 3)

@@ -462,6 +462,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a staircase, 3 steps, each step 3 cubes wide": the staircase that wide (the step unread)
     (re.compile(r"\b(?:each|every)\s+(?:step|stair|tread)\s+(?:is\s+)?(?=" + _NUM
                 + r"\s+(?:cubes?\s+|blocks?\s+)?(?:wide|across)\b)", re.I), ""),
+    # a T "5 across the top and 3 down (the stem)": its bar and stem (the 3 was dropped)
+    (re.compile(r"\b(" + _NUM + r")\s+(?:cubes?\s+)?across\s+the\s+top\s*(,|and)?\s*(" + _NUM
+                + r")\s+(?:cubes?\s+)?down(?:\s+the\s+(?:stem|middle|centre|center))?\b", re.I),
+     lambda m: m.group(0) if not re.search(r"\bT\b|\bt[\s-]shape", m.string, re.I)
+     else f"the top bar {m.group(1)} long and the stem {m.group(3)}"),
     # "a stair of five risers": five steps (the risers were read as five slabs, silently)
     (re.compile(r"\b(" + _NUM + r")\s+(?:risers|treads)\b", re.I), r"\1 steps"),
     # "a wall 5 long, and in front of the wall, a tower of 2": the relation said first starts a

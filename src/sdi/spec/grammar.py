@@ -828,6 +828,8 @@ class _Parser:
                     if h.shape in ("u_shape", "t_shape"):  # "a U 4 wide and 3 deep"
                         key = "length" if key == "width" and wj != "deep" else key
                         key = "width" if wj in ("deep", "long", "tall", "high") else key
+                        if wj in ("tall", "high") and "length" in p and "width" in p:
+                            key = "height"  # "a T 5 by 3, 2 high": its courses, both sides said
                     part = next((b for b in (prev, prev2) if b in _T_PARTS), None)
                     if h.shape == "t_shape" and part:  # "the top bar 5 long and the stem 3"
                         key = _T_PARTS[part]
