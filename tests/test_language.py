@@ -6277,3 +6277,14 @@ def test_a_letter_s_height_in_courses_once_both_sides_are_said():
     r = plan("Would you mind building a T shape, 5 across the top and 3 down, one high?")
     s = r.spec.structures[0]
     assert r.status == "success" and (s.length, s.width) == (5, 3)
+
+
+def test_a_castle_s_corners_raised_and_an_ordinal_course_on_top():
+    # "then raise the corners to 4": its corner towers (dropped)
+    r = plan("First make a castle 6 by 6 with walls 1 high and corners 3 high. Then raise the "
+             "corners to 4.")  # fmt: skip
+    assert r.status == "success" and max(_heights(r.layout).values()) == 4
+    # "a third row of 5 on top of that": one course more, the ordinal nothing more (unread)
+    r = plan("a row of 5, then a second row of 5 on top of it. Finally, a third row of 5 on top "
+             "of that.")  # fmt: skip
+    assert r.status == "success" and sorted(set(_columns(r).values())) == [3]

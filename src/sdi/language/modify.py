@@ -58,6 +58,12 @@ MODIFY = [
         + r"(?:\s+(?:cubes?\s+)?(?:high|tall|each))?\)?(?:\s+(?:each|instead))?\s*$",
         "=turrets",
     ),
+    # "then raise the corners to 4": a castle's corner towers
+    _op(
+        r"\b(?:raise|heighten|lift|extend|make)\s+(?:the|its|all\s+the)\s+(?:corners|corner\s+towers|turrets)\s+"
+        r"(?:up\s+)?to\s+" + _N + r"(?:\s+(?:cubes?\s+)?(?:high|tall))?\s*[.!]?\s*$",
+        "=turrets",
+    ),
     _op(r"\b(?:add|put|stack|place|pile)\s+" + _N + r"\s+(?:more|extra|additional)" + _UNIT, "+"),
     _op(r"\b(?:add|put|stack|place)\s+" + _N + _UNIT + r"\s+(?:to|on|onto)\s+" + _REF + r"\b", "+"),
     # "put a cube on top of each of them": one more on each

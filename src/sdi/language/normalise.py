@@ -1079,6 +1079,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:\d+\s*(?:x|by)\s*\d+\s+|[a-wyz-]+\s+)?(?:towers|stacks|columns|pillars|"
                 r"blocks|pyramids|cubes)\b[^.;]{0,40}?),?\s*\bone\s+behind\s+(?:the\s+other|another)\b",
                 re.I), r"\1 in a line front to back"),
+    # "a second row of 5 on top of it": the ordinal is the order said, nothing more (unread)
+    (re.compile(r"\b(an?)\s+(?:second|third|fourth|fifth)\s+(?=(?:row|course|layer)\s+of\s+\d+\s+on\s+"
+                r"top\b)", re.I), "a "),
     # "two towers of 3 with a cube on top of each", "three towers, each with a cube on top"
     (re.compile(r"\s*,?\s*\b(?:(?:each|all)\s+with\s+(?:a|one)\s+(?:single\s+|more\s+|extra\s+)?"
                 r"(?:cube|block)\s+on\s+(?:top|it)\b|with\s+(?:a|one)\s+(?:single\s+|more\s+|extra\s+)?"
