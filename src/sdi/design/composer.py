@@ -285,13 +285,8 @@ def _place_all(
         region = placed[members[0]].spec.region or ""
         along = 0 if line == "x" or (region in ("left", "right")) else 1
         widths = [2 * placed[k].half[along] for k in members]
-        between = gap
-        too_long = sum(widths) + gap * (len(members) - 1) > extent[along]
-        if not stated and len(members) > 1 and too_long:
-            # "five towers along the back": SDI's own gap closes up so that the line stays in
-            # its region (it broke in two, the fifth out of the region)
-            room = extent[along] - sum(widths) - 1e-6
-            between = max(min(gap, room / (len(members) - 1)), min(gap, 0.01))
+        # "five towers along the back": the line stays in its region (the fifth stood out)
+        between = gap if stated else _closed_up(widths, gap, extent[along])
         start = -(sum(widths) + between * max(0, len(members) - 1)) / 2
         for k, w in zip(members, widths, strict=True):
             x, y = _target(placed[k].spec, cell)
@@ -306,22 +301,18 @@ def _place_all(
         wants.extend((*w, gap) for w in _grid_wants(placed, free, grid, anchor, gap))
     else:
         d = 0 if line == "x" else 1
-        span = (ws.x_max - ws.x_min, ws.y_max - ws.y_min)
-
         step: float = gap
 
         def length(axis: int, between: float = step) -> float:
             return sum(2 * placed[k].half[axis] for k in free) + between * max(0, len(free) - 1)
 
-        if line is None and length(1) > span[1] and length(0) <= span[0]:
+        if line is None and length(1) > extent[1] and length(0) <= extent[0]:
             d = 0  # a line too long for across the table runs front to back (it broke in two)
-        elif line == "y" and length(1, 0.01) > span[1] and length(0) <= span[0]:
+        elif line == "y" and length(1, 0.01) > extent[1] and length(0) <= extent[0]:
             d = 0  # said across, but too long for it even closed up
-        if not stated and len(free) > 1 and length(d) > span[d]:
-            # SDI's own gap closes up so the line stays one line (it broke in two)
-            room = span[d] - sum(2 * placed[k].half[d] for k in free) - 1e-6
-            gap = max(min(gap, room / (len(free) - 1)), min(gap, 0.01))
         widths = [2 * placed[k].half[d] for k in free]
+        if not stated:  # the line stays one line (it broke in two)
+            gap = _closed_up(widths, gap, extent[d])
         s0 = anchor[d] - (sum(widths) + gap * max(0, len(free) - 1)) / 2
         for k, w in zip(free, widths, strict=True):
             want = anchor.copy()
@@ -338,6 +329,14 @@ def _place_all(
             )
         put(k, spot)
     return [c for c in centres if c is not None]
+
+
+def _closed_up(widths: list[float], gap: float, room: float) -> float:
+    """SDI's own `gap` between structures of `widths` in a line, closed up (to 1 cm at least)
+    so that the line fits in `room`."""
+    if len(widths) < 2 or sum(widths) + gap * (len(widths) - 1) <= room:
+        return gap
+    return max(min(gap, (room - sum(widths) - 1e-6) / (len(widths) - 1)), min(gap, 0.01))
 
 
 def _grid_wants(
@@ -526,8 +525,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
         children.setdefault(r.object, []).append(r.subject)
     units: dict[int, _Placed] = {}
 
-    def grouped(k: int) -> bool:  # the unit of `k` is one group ("them both")
-        return any(r.whole and r.object == k for r in spec.relations)
+    grouped = {r.object for r in spec.relations if r.whole}  # units that are one group
 
     def ordered(k: int) -> list[int]:
         # on the object's own top first: "a tower in front of a wall, a row on top of the
@@ -567,7 +565,7 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                 sub = units[c] = _along_top(sub, top_half, cell)
             bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
             return _merge(base, sub, centre, top - bottom)
-        return _beside(base, sub, rel.side, cell, rel.gap_m, (grouped(rel.object), grouped(c)))
+        return _beside(base, sub, rel.side, cell, rel.gap_m, (rel.object in grouped, c in grouped))
 
     def unit(k: int) -> _Placed:
         if k in units:

@@ -271,13 +271,7 @@ def relate(
             said = phrases[r.object].text if r.object is not None else "them"
             st.notes.append(f"read '{said}' as the {len(group)} together")
         relations.append(
-            Relation(
-                kind=kind,
-                subject=s_idx,
-                object=o_idx,
-                side=side,
-                at=at[1] if at else None,
-            )
+            Relation(kind=kind, subject=s_idx, object=o_idx, side=side, at=at[1] if at else None)
         )
         if members:
             along = "back" if side in ("left", "right") else "left"

@@ -389,8 +389,8 @@ _PLACED_AT = re.compile(
 )
 _NOT_THE_TABLE = r"(?!\s+(?:the\s+)?(?:table|workspace|cell|bench|work\s+area|tabletop)\b)"
 _Repl = str | Callable[[re.Match[str]], str]
-_OTHER_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
 """What a phrasing becomes: a template, or what a function of the match gives."""
+_OTHER_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
 _NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
 
 
@@ -1694,10 +1694,10 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: f"{m.group(2)} {_TICKET_DIM[m.group(1).lower()]}"),
     # "pos: x 300 mm y 450 mm": at that place; "parallel to the y axis": along y
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*(?=x\s*[:=]?\s*\d|\(\s*\d)", re.I), "at "),
-    (re.compile(r"\bparallel\s+(?:to|with)\s+the\s+([xy])[\s-]*axis\b", re.I), r"along \1"),
     # "parallel to X", "long axis parallel to Y" (a drawing's axes)
-    (re.compile(r"\b(?:(?:its\s+)?long\s+(?:axis|side|edge)\s+)?parallel\s+(?:to|with)\s+([xy])\b"
-                r"(?![\s-]*(?:=|\d))", re.I), r"along \1"),
+    (re.compile(r"\b(?:(?:its\s+)?long\s+(?:axis|side|edge)\s+)?parallel\s+(?:to|with)\s+(?:the\s+([xy])"
+                r"[\s-]*axis|([xy])(?![\s-]*(?:=|\d)))\b", re.I),
+     lambda m: f"along {m.group(1) or m.group(2)}"),
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*((?:front|back|rear|left|right|centre|center|middle)"
                 r"(?:[\s-]+(?:left|right|corner))?)\b", re.I), r"at the \1"),
     (re.compile(r"\b(?:qty|qnty)\.?\s*[:=]?\s*(\d+)\s+(?=[a-z])", re.I), r"\1 "),
@@ -1897,7 +1897,7 @@ _WON = re.compile(
     re.I,
 )
 
-_SAID_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
+_SAID_NUMBER = _NUM + r"\b"
 # what a speech recogniser writes for a structure word, where only that word fits: "a tour of
 # five cubes", "two tours of 3", "a peer amid", "a stare case", "a 3 by 3 slap", "a rope of 6"
 _SHAPE_HEARD = [
@@ -1911,9 +1911,9 @@ _SHAPE_HEARD = [
     (re.compile(r"\brope(s?)\b(?=\s+of\s+" + _SAID_NUMBER + r")", re.I), r"row\1"),
 ]  # fmt: skip
 
-_SAID_DIGIT = {"zero": "0", "nought": "0", "oh": "0", "o": "0", "one": "1", "two": "2",
-               "three": "3", "four": "4", "five": "5", "six": "6", "seven": "7", "eight": "8",
-               "nine": "9"}  # fmt: skip
+_SAID_DIGIT = {w: str(n) for w, n in _DIGITS.items() if n <= 9} | dict.fromkeys(
+    ("nought", "oh", "o"), "0"
+)
 _DIGITS_SAID = r"(?:zero|nought|oh|o|one|two|three|four|five|six|seven|eight|nine|\d)"
 _SPOKEN_DECIMAL = re.compile(
     rf"(?:(?<=\bx\s)|(?<=\by\s)|(?<=\bat\s)|(?<=[=:]\s)|(?<=\bis\s)|\b(?=zero\b|nought\b))"
@@ -2297,7 +2297,7 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
 
     def mm(m: re.Match[str]) -> str:
         n = int(m.group("n"))
-        if n < 50 or n % 10 or labelled(m):
+        if not _drawn_mm(m.group("n")) or labelled(m):
             return m.group(0)
         notes.append(f"read {n} without a unit as {n} mm")
         return f"{m.groupdict().get('said') or ''}{n} mm"
@@ -2309,7 +2309,7 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
     text = _BEAM_150.sub(beam, text)
 
     def pair(m: re.Match[str]) -> str:  # "Block, 100 by 100": both in millimetres
-        if any(int(v) < 50 or int(v) % 10 for v in (m.group(1), m.group(3))) or labelled(m):
+        if not all(_drawn_mm(v) for v in (m.group(1), m.group(3))) or labelled(m):
             return m.group(0)
         notes.append(f"read {m.group(1)} and {m.group(3)} without a unit as millimetres")
         return f"{m.group(1)} mm {m.group(2)} {m.group(3)} mm"
@@ -2319,7 +2319,7 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
         unit = (m.group(6) or "").lower()
         if unit.startswith(("cm", "centi")):
             return f"{values[0]} cm {m.group(2)} {values[1]} cm {m.group(4)} {values[2]} cm"
-        if not unit and (any(int(v) < 50 or int(v) % 10 for v in values) or labelled(m)):
+        if not unit and (not all(_drawn_mm(v) for v in values) or labelled(m)):
             return m.group(0)
         if not unit:
             notes.append(f"read {' × '.join(values)} without a unit as millimetres")
@@ -2329,7 +2329,7 @@ def _bare_millimetres(text: str, notes: list[str]) -> str:
 
     def drawing(m: re.Match[str]) -> str:  # "Column H 250": 250 mm high
         n = int(m.group(2))
-        if n < 50 or n % 10:
+        if not _drawn_mm(m.group(2)):
             return m.group(0)
         notes.append(f"read '{m.group(0)}' as {n} mm {_DRAWN[m.group(1)]}")
         return f"{n} mm {_DRAWN[m.group(1)]}"
