@@ -6288,3 +6288,58 @@ def test_a_castle_s_corners_raised_and_an_ordinal_course_on_top():
     r = plan("a row of 5, then a second row of 5 on top of it. Finally, a third row of 5 on top "
              "of that.")  # fmt: skip
     assert r.status == "success" and sorted(set(_columns(r).values())) == [3]
+
+
+def _level_sizes(layout):
+    """Each level's (cubes across x, cubes across y), bottom up."""
+    levels: dict[int, set[tuple[float, float]]] = {}
+    for p in layout.objects:
+        levels.setdefault(round(p.position[2] / 0.05 - 0.5), set()).add(
+            (round(p.position[0], 3), round(p.position[1], 3))
+        )
+    return [
+        (len({x for x, _ in cells}), len({y for _, y in cells}))
+        for _, cells in sorted(levels.items())
+    ]
+
+
+def test_a_structure_with_another_of_its_family_beside_it_is_two():
+    # "a tower of 4 with a tower of 2 on its left": one tower, the 2 dropped
+    r = plan("a tower of 4 with a tower of 2 on its left")
+    cols = _columns(r)
+    assert r.status == "success" and sorted(cols.values()) == [2, 4]
+    (short_y,) = [y for (_, y), h in cols.items() if h == 2]
+    (tall_y,) = [y for (_, y), h in cols.items() if h == 4]
+    assert short_y > tall_y  # left is +y
+    # "… and one on its right": a third of the same size, on the other side
+    r = plan("a tower of 4 with a tower of 2 on its left and one on its right")
+    cols = _columns(r)
+    assert r.status == "success" and sorted(cols.values()) == [2, 2, 4]
+    tall_y = next(y for (_, y), h in cols.items() if h == 4)
+    assert sorted(y > tall_y for (_, y), h in cols.items() if h == 2) == [False, True]
+    r = plan("a wall of 5 with a tower of 2 in front of it and one behind it")
+    assert r.status == "success" and len(r.layout.objects) == 10 + 2 + 2
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "a pyramid with levels 5x5, 3x3 and 1x1",
+        "a stepped pyramid: 5 by 5, then 3 by 3, then 1 by 1",
+        "a pyramid: bottom level 5x5, middle 3x3, top 1x1",
+        "a pyramid with levels 5x5, 3x3 and a single cube on top",
+        "a pyramid, level 1: 5x5, level 2: 3x3, level 3: 1x1",
+    ],
+)
+def test_a_pyramid_listed_by_its_levels_is_those_levels(command):
+    # was a single cube ("1x1" its size), three structures, or a pyramid beside the levels
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert _level_sizes(r.layout) == [(5, 5), (3, 3), (1, 1)]
+
+
+def test_a_level_list_that_disagrees_with_its_count_is_not_read_as_levels():
+    r = plan("a 4-level pyramid 4x4, 2x2, 1x1")
+    assert not any("as its levels" in n for n in r.notes)
+    r = plan("a 3-level pyramid 4x4, 2x2, 1x1")
+    assert r.status == "success" and _level_sizes(r.layout) == [(4, 4), (2, 2), (1, 1)]

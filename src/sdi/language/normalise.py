@@ -942,7 +942,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:each|both|either|every)\s+ways?\b", re.I), r"\1 by \1"),
     # "bottom layer 4 by 4, then 3 by 3 on it": the first layer ('bottom' was left unused)
     (re.compile(r"^(\W*)(?:the\s+)?bottom\s+(layer|level|tier|course|row)\b(?!\s*[:=-])"
-                r"(?!.*\b(?:top|middle|second|upper|next)\s+(?:layer|level|tier|course|row)\b)",
+                r"(?!.*\b(?:top|middle|second|upper|next)\s+(?:(?:layer|level|tier|course|row)\b|"
+                r"\d+\s*(?:x|by)\s*\d))",
                 re.I),
      r"\1\2"),
     # "a 3 by 3 grid and, 10 cm behind it, a pyramid": the place said first, between commas

@@ -8,6 +8,7 @@ computed handler in `sdi.language.handlers`."""
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from sdi.language.handlers import HANDLERS
@@ -2248,7 +2249,8 @@ _ANOTHER = re.compile(
     r"\b(?:(?:another|one\s+more|a\s+second|a\s+third|a\s+fourth)\s+(?:identical\s+|similar\s+|"
     r"matching\s+)?one\b|an?\s+(?:identical|matching|similar)\s+one\b|a\s+(?:third|fourth|fifth)\b"
     r"(?!\s+(?:as|of|level|layer|tier|row|storey))|(?<=,\s)(?:one|1)(?=\s+(?:on|at|in|to)\s+the\b)|"
-    r"(?<=\band\s)(?:one|1)(?=\s+(?:on|at|in|to)\s+the\b)|"
+    r"(?<=\band\s)(?:one|1)(?=\s+(?:(?:on|at|in|to)\s+(?:the|its)\b|(?:behind|beside|next\s+to|"
+    r"in\s+front\s+of)\s+(?:it|them)\b))|"
     # "and another with double the height", "another 6 high", "and another, a bit lower"
     r"\banother(?=\s*(?:$|[,.;]|\s(?:with|of|that|which|having|at|on|in|next|behind|beside|\d+|"
     r"two|three|four|five|six|seven|eight|nine|ten)\b)))",
@@ -2847,7 +2849,7 @@ _LEVEL_WORD = re.compile(
     r"(?:^|(?<=[.;:,!\n])|(?<=\band\s))\s*(?:the\s+)?(bottom|base|lowest|ground|first|1st|second|"
     r"2nd|middle|third|3rd|fourth|4th|top|upper|last)(?:(?:\s+(?:level|layer|tier|floor|storey|"
     r"course))(?:\s+(?:is|has)\s+|\s*[:=-]\s*|\s+(?=(?:an?|one|just|only|\d)\b))|\s*[:=-]\s*|"
-    r"(?<=top)\s+(?=(?:an?\s+single|one|just|only|a\s+1-cube)\b))",
+    r"(?<=top)\s+(?=(?:an?\s+single|one|just|only|a\s+1-cube)\b)|\s+(?=\d+\s*(?:x|by)\s*\d))",
     re.IGNORECASE,
 )
 _LEVEL_RANK = {"bottom": 1, "base": 1, "lowest": 1, "ground": 1, "first": 1, "1st": 1, "second": 2,
@@ -2882,6 +2884,48 @@ _LEVEL_BARE = re.compile(
 _NUMBERED_LEVEL = re.compile(r"\s*\(\s*([1-9])\s*\)\s*")
 
 
+_LEVEL_SIZE = rf"{_N}\s*(?:x|by|×)\s*{_N}"
+_LEVELS_SAID = (
+    r"(?:(?:its|the)\s+)?(?:(?P<count>" + _N + r")\s+)?(?:levels|layers|tiers)\b"
+    r"(?:\s*[:,=]|\s+(?:are|of))?\s*"
+)
+_LEVEL_LIST = re.compile(
+    r"(?P<lead>\b(?:(?:a|an|the)\s+)?(?:(?P<counted>" + _N + r")[- ](?:levels?|layers?|tiers?|"
+    r"steps?)\s+)?(?:(?:stepped|step|tiered|layered)\s+)?(?:pyramid|ziggurat|(?:wedding\s+)?cake)\b"
+    r"(?:\s*[,:]\s*|\s+(?:with|of|in)\s+|\s+)(?:" + _LEVELS_SAID + r")?|\b"
+    + _LEVELS_SAID.replace("count", "alone") + r")"
+    r"(?P<sizes>" + _LEVEL_SIZE + r"(?:\s*[,;]?\s*(?:and\s+then\s+|and\s+|then\s+)?"
+    + _LEVEL_SIZE + r")+)"
+    r"(?P<top>\s*[,;]?\s*(?:and\s+then\s+|and\s+|then\s+)?(?:a\s+single|one|a|1)\s+cube"
+    r"(?:\s+on\s+top)?\b)?(?!\s*(?:x|by|×)\b)",
+    re.IGNORECASE,
+)
+"""'a pyramid with levels 5x5, 3x3 and 1x1', 'a stepped pyramid: 5 by 5, then 3 by 3': the
+levels listed bottom up."""
+
+
+def _level_list(text: str, st: ReadState) -> str:
+    """A pyramid (or levels) listed by their sizes, each no larger than the one under it: the
+    levels labelled in order, for `_level_labels` (the pyramid is those levels, not another)."""
+    m = _LEVEL_LIST.search(text)
+    if m is None:
+        return text
+    sizes = [
+        [int(words_to_numbers([n.lower()])[0]) for n in re.findall(_N, size, re.IGNORECASE)]
+        for size in re.findall(_LEVEL_SIZE, m.group("sizes"), re.IGNORECASE)
+    ]
+    if m.group("top"):
+        sizes.append([1, 1])
+    if any(b[0] * b[1] > a[0] * a[1] or min(b) > min(a) for a, b in itertools.pairwise(sizes)):
+        return text  # a level larger than the one it would stand on: not listed bottom up
+    counted = m.group("counted") or m.group("count") or m.group("alone")
+    if counted and int(words_to_numbers([counted.lower()])[0]) != len(sizes):
+        return text  # "a 4-level pyramid 3x3, 2x2": the count and the list disagree
+    labels = " ".join(f"({k}) {a} by {b}" for k, (a, b) in enumerate(sizes, 1))
+    st.notes.append(f"read '{m.group(0).strip()}' as its levels, bottom up")
+    return f"{text[: m.start()]} levels: {labels}. {text[m.end() :]}"
+
+
 def _level_named(said: str, prev: str) -> str:
     """A level said by its size alone names what it is: "2x2" a 2 by 2 slab, "5 cubes in a
     line" a row of 5, "3" after a row a row of 3, "a single cube" a 1-cube tower."""
@@ -2898,6 +2942,15 @@ def _level_named(said: str, prev: str) -> str:
     if re.match(r"a\s+row\s+of\b", prev, re.IGNORECASE):
         return f"a row of {count}{said[m.end() :]}"  # "5 cubes in a line, … 3 on top": a row
     return said
+
+
+_LEVELLED = re.compile(
+    r"(?:(?:a|an|the)\s+)?(?:(?:stepped|step|tiered|layered)\s+)?(?:pyramid|ziggurat|"
+    r"(?:wedding\s+)?cake)\s*(?:(?:with|of|in)\s+(?:(?:its|the)\s+)?)?(?:(?:levels|layers|tiers)\b)?"
+    r"\s*[:,.-]?\s*$",
+    re.IGNORECASE,
+)
+"""A pyramid named with no size of its own just before its levels are labelled."""
 
 
 def _level_labels(text: str, st: ReadState) -> str:
@@ -2919,6 +2972,9 @@ def _level_labels(text: str, st: ReadState) -> str:
     if len(labels) < 2 or numbers != list(range(numbers[0], numbers[0] + len(numbers))):
         return text
     out = [text[: labels[0].start()]]
+    if named := _LEVELLED.search(out[0]):  # "a pyramid: bottom level 5x5, …": those levels
+        st.notes.append(f"read '{named.group(0).strip(' :,-')}' as the levels labelled")
+        out[0] = out[0][: named.start()] + " "
     prev = ""
     for i, m in enumerate(labels):
         end = labels[i + 1].start() if i + 1 < len(labels) else len(text)
@@ -2990,7 +3046,7 @@ _ON_END = re.compile(
 def rewrite(text: str, st: ReadState) -> str:
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
-    text = _level_labels(text, st)
+    text = _level_labels(_level_list(text, st), st)
     text = _tetris(text, st)
 
     def on_end(m: re.Match[str]) -> str:

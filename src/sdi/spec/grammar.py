@@ -1352,7 +1352,7 @@ class _Parser:
                 and not between & (lx.SEPARATORS | {"next", "beside"})
                 and not nxt.plural
                 and not (
-                    h.plural
+                    (h.plural or self._sized_apart(h, nxt))
                     and "with" in between
                     and self.word(nxt.index - 1) in ("a", "an", "one", "another", "single")
                 )
@@ -1388,6 +1388,15 @@ class _Parser:
                 continue
             kept.append(h)
         self.hits = kept
+
+    @staticmethod
+    def _sized_apart(h: Hit, nxt: Hit) -> bool:
+        """ "a tower of 4 with a tower of 2 on its left": each has a size of its own that the
+        other's contradicts, so they are two structures, not one named twice."""
+        return any(
+            not key.startswith("_loose") and key in h.params and h.params[key] != value
+            for key, value in nxt.params.items()
+        )
 
     @staticmethod
     def _letter_wall(h: Hit, nxt: Hit) -> bool:
