@@ -6343,3 +6343,40 @@ def test_a_level_list_that_disagrees_with_its_count_is_not_read_as_levels():
     assert not any("as its levels" in n for n in r.notes)
     r = plan("a 3-level pyramid 4x4, 2x2, 1x1")
     assert r.status == "success" and _level_sizes(r.layout) == [(4, 4), (2, 2), (1, 1)]
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # the correction named the family in the plural: the old count replaced, not a second
+        ("uh, staircase, five steps, no, four steps, going up to the, um, left", [1, 2, 3, 4]),
+        # a count corrected with the structure named again: two, not three
+        ("um, a tower... no wait, two towers actually, uh, both four high", [4, 4]),
+        ("er, so, two walls, um, no, just one wall, eight long, one high, at the back", [1] * 8),
+    ],
+)
+def test_a_hesitant_self_correction_replaces_what_it_corrects(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values()) == heights
+    assert any("corrected by the command itself" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command, size, wall, corner",
+    [
+        ("a castle 6x6, walls 2 high, corners 4 high", 6, 2, 4),  # corners were 3, silently
+        ("castle 6x6, wall ht 2, corner ht 4", 6, 2, 4),
+        ("castle 5x5 walls 2 corners 4", 5, 2, 4),  # was a ring, a wall and a tower
+        ("a castle 6 by 6, corners 4 high", 6, 1, 4),  # walls 4, corners 5
+    ],
+)
+def test_a_castle_s_corners_and_walls_said_bare(command, size, wall, corner):
+    r = plan(command)
+    heights = _heights(r.layout)
+    xs = sorted({x for x, _ in heights})
+    ys = sorted({y for _, y in heights})
+    corners = {(x, y) for x in (xs[0], xs[-1]) for y in (ys[0], ys[-1])}
+    assert r.status == "success" and (len(xs), len(ys)) == (size, size)
+    assert {heights[c] for c in corners} == {corner}
+    assert {h for c, h in heights.items() if c not in corners} == {wall}

@@ -57,7 +57,7 @@ _FILLER = re.compile(
     r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|"
     r"(?:make|set)\s+the\s+(?:gap|space|spacing|distance)(?:\s+(?:to|of))?|"
     r"(?:could|can|would)\s+(?:it|that|we|you)\s+(?:be|make\s+it|do|have)|how\s+about|let'?s\s+(?:do|make)|"
-    r"the|a|"
+    r"the|a|just|only|"
     r"an|to|on|at|in|of|with)\s+)+",
     re.I,
 )
@@ -162,12 +162,13 @@ def _another_structure(before: str, after: str, notes: list[str]) -> str | None:
             break
     else:
         return None
-    new = re.sub(r"\s*\binstead\b", "", _MAKE_IT.sub("", after.strip()), flags=re.I).strip()
+    new = re.sub(r"\s*\b(?:instead|actually)\b", "", _MAKE_IT.sub("", after.strip()),
+                 flags=re.I).strip(" ,")  # fmt: skip
     new = _regrouped(taken_back, new)  # "a row of five cubes. no, stack them": a tower of five
     lead = re.search(r"(?:^|[:;,—–-]\s*)((?:an?|one)\s.*)$", new, re.IGNORECASE | re.DOTALL)
     if lead and not _names_structure(new[: lead.start(1)]):
         new = lead.group(1)  # "scratch that, different thing entirely today: a pyramid of 2"
-    if not re.match(r"(?:an?|one)\s", new, re.IGNORECASE):
+    if not re.match(rf"(?:an?|one|{_NUMBER})\s", new, re.IGNORECASE):
         return None  # "actually make the pillars 4": a change of the structure, not another
     place = _PLACE.search(taken_back)
     if place and not _PLACE.search(new):
@@ -218,7 +219,10 @@ def _with_noun(before: str, value: str, rest: str, notes: list[str]) -> str | No
     """ "five steps, no, six steps": the number said last with the same noun, replaced; "three
     towers of three, no, make that four towers of three a cube apart": the whole phrase."""
     m = re.match(rf"({_NUMBER})\s+([a-z]+?)s?\b", value, re.IGNORECASE)
-    if m is None or (m.end() < len(value) and m.group(2).lower() not in lx.SHAPE_WORDS):
+    if m is None or (
+        m.end() < len(value)
+        and not {m.group(2).lower(), m.group(0).split()[-1].lower()} & set(lx.SHAPE_WORDS)
+    ):  # "five steps, no, four steps, going up": the plural names the family
         return None
     olds = list(re.finditer(rf"\b({_NUMBER})\s+{m.group(2)}s?\b", before, re.IGNORECASE))
     if not olds:

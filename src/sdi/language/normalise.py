@@ -1186,6 +1186,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"all\s+the)\s+(?:four\s+)?corners?\b", re.I),
      lambda m: f"castle{m.group(1)} with {m.group(2)}corner towers {m.group(3) or m.group(4)} "
                "high"),
+    # "a castle 6x6, walls 2 high, corners 4 high", "castle 5x5 walls 2 corners 4": its corner
+    # towers and its walls (the corners were dropped, a bare "walls 2" read as a second thing)
+    (re.compile(r"\b(castles?|forts?|fortress)\b([^.;]*?)\bcorners?\s+(?:(?:are|is|of|at|ht|height)\s+)?"
+                r"(\d+|two|three|four|five|six|seven|eight)(?:\s+cubes?)?(?:\s+(?:high|tall))?\b"
+                r"(?!\s*(?:x|by|cm|mm|m)\b)", re.I),
+     r"\1\2corner towers \3 high"),
+    (re.compile(r"\b(castles?|forts?|fortress)\b([^.;]*?)\bwalls?\s+(?:(?:are|is|of|ht|height)\s+)?"
+                r"(\d+|one|two|three|four|five|six)(?:\s+cubes?)?\b(?!\s*(?:x|by|long|wide|across|"
+                r"deep|thick|cm|mm|m|cubes?\s+(?:long|wide))\b)(?:\s+(?:high|tall)\b)?", re.I),
+     r"\1\2walls \3 high"),
     # "take the top row off": the particle before what is taken
     (re.compile(r"\b(take|knock|pull|lift)\s+(the\s+(?:\w+\s+){0,2}?(?:row|layer|course|level|cube|cubes|"
                 r"step|top))\s+(off|away|out)\b(?=\s*(?:$|[.,;!]|\band\b|\bthen\b))", re.I),
@@ -1856,6 +1866,13 @@ _OPPOSITES = re.compile(r"\b(front|back|left|right)\s*[-–/]\s*(back|front|righ
 _FILLERS = re.compile(
     r"\b(?:u+h+|u+m+|e+r+m*|h+m+)\b,?|[\u2600-\u27bf\U0001f300-\U0001faff\u2b50\u2b55\u274c\u2705]"
 )
+_DANGLING = re.compile(
+    r"\b(the|a|an|to|of|on|in|at|by|with|is|are|its|their|some)\s*,\s*(?:u+h+|u+m+|e+r+m*|h+m+|"
+    r"like|you\s+know)\s*,\s*|(?<=,)\s*(?:like|you\s+know)\s*,",
+    re.IGNORECASE,
+)
+"""A filler between commas after an article or preposition ("up to the, um, left"), and its
+commas; ", like," alone."""
 # "0.30,0.45,tower 2": a spreadsheet row of x, y and what stands there
 _CSV_AT = re.compile(
     r"(?:\bx\s*,\s*y\s*,\s*(?:structure|shape|item|what)\b\s*[/\n]?\s*)?"
@@ -2582,6 +2599,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
             return said
 
         text = pattern.sub(heard, text)
+    text = _DANGLING.sub(lambda m: f"{m.group(1) or ''} ", text)
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
     text = _RADIO.sub(" ", text)  # "copy that.", ", over": radio procedure
     text = _OPPOSITES.sub(lambda m: f"{m.group(1)} to {m.group(2)}", text)  # "front-back"

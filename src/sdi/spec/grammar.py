@@ -95,6 +95,8 @@ COMPONENTS = {
     "l_shape": {"wall"},
     "t_shape": {"wall"},
 }
+_SIZE_TOKENS = {"x", "by", "high", "tall", "long", "wide", "cube", "cubes"}
+"""Words of a size said between a structure and its part, with no link word."""
 LINKS = {
     "with", "of", ":", "having", "has", "whose", "on", "atop", "featuring", "including", "where",
     "and", ",", "plus", "each", "at", "between", "over", "across", "upon", "from", "supported",
@@ -1330,7 +1332,10 @@ class _Parser:
                 and bool(between & {"a", "an", "one"})
                 and not nxt.plural
             )
-            if nxt and nxt.shape in parts and between & LINKS and not regional and not listed:
+            # "castle 5x5 walls 2 high corner towers 4": a castle's parts said without a link
+            bare = h.shape == "castle" and all(w.isdigit() or w in _SIZE_TOKENS for w in between)
+            linked = bool(between & LINKS) or bare
+            if nxt and nxt.shape in parts and linked and not regional and not listed:
                 j = k + 1
                 while j < len(hits) and hits[j].shape in parts:
                     if j > k + 1 and self.between(hits[j - 1], hits[j]) & {
