@@ -6380,3 +6380,61 @@ def test_a_castle_s_corners_and_walls_said_bare(command, size, wall, corner):
     assert r.status == "success" and (len(xs), len(ys)) == (size, size)
     assert {heights[c] for c in corners} == {corner}
     assert {h for c, h in heights.items() if c not in corners} == {wall}
+
+
+def test_a_second_one_twice_as_tall_as_the_first_is_not_a_copy():
+    # "… a second tower that is twice as tall as the first": 8 worked out, then copied as 4
+    r = plan("Build a tower of 4 cubes, and next to it a second tower that is twice as tall as "
+             "the first.")  # fmt: skip
+    assert r.status == "success" and sorted(_columns(r).values()) == [4, 8]
+
+
+def test_places_given_to_the_first_and_second_in_a_sentence_of_their_own():
+    r = plan("Build two towers of 3. Put the first one on the left and the second one on the "
+             "right.")  # fmt: skip
+    ys = sorted(y for (_, y) in _columns(r))
+    assert r.status == "success" and len(ys) == 2
+    assert ys[0] <= 0.25 and ys[1] >= 0.35  # one each side, not both on the left
+    r = plan("two walls 4 long. The first one at the back and the other one at the front.")
+    assert r.status == "success" and {s.length for s in r.spec.structures} == {4}
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "a wall and an arch. Put the wall behind the arch.",
+        "Make an arch and a wall; the latter goes behind the former.",
+    ],
+)
+def test_one_of_two_named_together_placed_by_its_name_in_a_later_sentence(command):
+    # "Put the wall", "the latter": one of the two named together, by name or by order
+    r = plan(command)
+    assert r.status == "success", r.notes
+    beam_x = next(p.position[0] for p in r.layout.objects if p.id.startswith("b"))
+    xs = {round(p.position[0], 3) for p in r.layout.objects}
+    assert len(xs) == 2 and max(xs) > beam_x + 0.01  # the wall's line behind the arch's
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "Build a 5 by 5 slab and a 3 by 3 by 2 block. Put the block on top of the slab, in the "
+        "middle.",
+        "Build a 5 by 5 slab and a 3 by 3 by 2 block. Put the latter on top of the former, in the "
+        "middle.",
+    ],
+)
+def test_a_block_put_on_a_slab_named_with_it_stands_on_it(command):
+    r = plan(command)  # was a failure: no room beside the slab
+    assert r.status == "success", r.notes
+    assert _level_sizes(r.layout) == [(5, 5), (3, 3), (3, 3)]
+
+
+def test_the_latter_inside_the_former():
+    r = plan("Make a ring 5 by 5 and a tower of 3; put the latter inside the former.")
+    heights = _heights(r.layout)
+    ((tx, ty),) = [c for c, h in heights.items() if h == 3]
+    ring = [c for c, h in heights.items() if h == 1]
+    assert r.status == "success" and len(ring) == 16
+    assert min(x for x, _ in ring) < tx < max(x for x, _ in ring)
+    assert min(y for _, y in ring) < ty < max(y for _, y in ring)

@@ -913,8 +913,8 @@ def _every_side(m: re.Match[str], st: ReadState, note: str) -> str:
 
 
 _NEXT_ONE = re.compile(
-    r"(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:one|the\s+other|another|the\s+(?:second|third|fourth|"
-    r"last))\b",
+    r"(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:one|(?:the\s+other|another|the\s+(?:second|third|"
+    r"fourth|last))(?:\s+one(?=\s+(?:at|on|in|to|behind|beside|next|near|by)\b))?)\b",
     re.IGNORECASE,
 )
 

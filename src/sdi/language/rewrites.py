@@ -3043,6 +3043,68 @@ _ON_END = re.compile(
 )
 
 
+_ORDINAL_PLACES = re.compile(
+    r"(\b(?:two|three|four|[2-4])\s+(?:[\w-]+\s+){0,2}?([a-z]+)s\b[^.;!?]*?)\s*[.;!]\s*"
+    r"(?:(?:then\s+|now\s+)?(?:put|place|set|position|stand|have|make)\s+)?"
+    r"(?=the\s+first(?:\s+one)?\s+(?:goes\s+|stands\s+|is\s+)?(?:on|at|in|to|behind|beside|next|"
+    r"near|by|against)\b[^.;!?]*\bthe\s+(?:second|other|last)\b)",
+    re.IGNORECASE,
+)
+"""'Build two towers of 3. Put the first one on the left and the second one on the right.': the
+places of the ones just counted, in order."""
+
+
+def _ordinal_places(m: re.Match[str]) -> str:
+    if m.group(2).lower() not in lx.SHAPE_WORDS:
+        return m.group(0)
+    return f"{m.group(1)}, "
+
+
+_PART_NOUNS = frozenset({"leg", "legs", "pillar", "pillars", "post", "posts", "step", "steps",
+                         "arm", "arms", "level", "levels", "layer", "layers"})  # fmt: skip
+_FORMER_LATTER = re.compile(
+    r"\bthe\s+(former|latter)(?:\s+one)?\b|\bthe\s+(shorter|taller|smaller|bigger|larger|longer|"
+    r"higher|lower|wider|narrower)\s+of\s+the\s+two\b",
+    re.IGNORECASE,
+)
+
+
+def _former_latter(text: str, st: ReadState) -> str:
+    """ "a ring and a tower; put the latter inside the former": the second and the first of
+    the two named before; "the shorter of the two": the shorter one."""
+
+    def which(m: re.Match[str]) -> str:
+        if m.group(2):
+            return f"the {m.group(2)} one"
+        words = re.findall(r"[a-z]+|\d+", text[: m.start()].lower())
+        named = [
+            w for k, w in enumerate(words)
+            if w in lx.SHAPE_WORDS and w not in _PART_NOUNS
+            and not (w in lx.AMBIGUOUS_SHAPES and k and (words[k - 1].isdigit()
+                                                          or words[k - 1] in NUMBER_WORDS)
+                     and words[k - 2 : k - 1] not in (["by"], ["x"]))
+        ]  # fmt: skip  # "a canopy with four legs": its own; "5 blocks": cubes
+        if len(named) != 2:
+            return m.group(0)
+        one = named[m.group(1).lower() != "former"]
+        if lx.SHAPE_WORDS[named[0]] != lx.SHAPE_WORDS[named[1]]:
+            said = f"the {one}"  # "the block": the definite name finds it
+        else:
+            said = "the first one" if m.group(1).lower() == "former" else "the second one"
+        st.notes.append(f"read '{m.group(0)}' as {said}" + ("" if one in said else f" ({one})"))
+        return said
+
+    return _FORMER_LATTER.sub(which, text)
+
+
+_COMPARED_TAIL = re.compile(
+    r"(\b\d+\s+(?:high|long|wide)|\bof\s+\d+)\s+as\s+(?:the\s+(?:first|other|last|previous|"
+    r"one\s+before)|it|that)(?:\s+one)?\b",
+    re.IGNORECASE,
+)
+"""What a comparison was made with, left after its value was worked out."""
+
+
 def rewrite(text: str, st: ReadState) -> str:
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
@@ -3077,6 +3139,8 @@ def rewrite(text: str, st: ReadState) -> str:
         return f"{m.group(1)}{m.group(2)} "
 
     text = _OWN_BEAM.sub(own_beam, text)
+    text = _ORDINAL_PLACES.sub(_ordinal_places, text)
+    text = _former_latter(text, st)
     text = _DISTRIBUTE.sub(lambda m: HANDLERS["{distribute}"](m, st, ""), text)
     text = _OTHER_SIDE.sub(_other_side, text)
     text = _CORNERS.sub(lambda m: HANDLERS["{corners}"](m, st, ""), text)
@@ -3111,6 +3175,7 @@ def rewrite(text: str, st: ReadState) -> str:
 
         text = pattern.sub(sub, text)
     text = _LEVEL_ORDINAL.sub(" on top ", text)
+    text = _COMPARED_TAIL.sub(r"\1", text)  # "twice as tall as the first" → "8 high as the first"
     text = _SIZE_AFTER_IT.sub(r"\3 \1 \2", text)  # "a tower next to it, 2 high": its own size
     for c in _COMPARISON.finditer(text):
         # "the left one taller than the right one": a comparison no rewrite turned into a value

@@ -70,6 +70,12 @@ def _more_about(
     p.count = 0
 
 
+_THE_FAMILY = re.compile(
+    r"\W*(?:(?:put|place|set|move|stand|position)\s+)?(?:the|that)\s+(\w+)(?:\W*$|(?=\s*,))"
+)
+"""'the wall', 'put the block', 'the slab, in the middle': one family named, pointed at."""
+
+
 def fill_slots(
     phrases: list[Phrase], rels: list[PhraseRelation], st: ReadState, doc: Doc
 ) -> list[StructureDraft]:
@@ -113,7 +119,7 @@ def fill_slots(
         ref = refers_to(p, phrases[:k], partner)
         if ref is not None:
             p.ref = ref
-            the = re.fullmatch(r"\W*(?:the|that)\s+(\w+)\W*", p.text.lower())
+            the = _THE_FAMILY.match(p.text.lower())  # "the wall", "put the block"
             family = lx.SHAPE_WORDS.get(the.group(1)) if the else None
             q = phrases[ref]
             if family and q.count > 1:  # "the wall" of "a wall, a tower of 3": that one
@@ -251,6 +257,11 @@ def fill_slots(
             if at is not None:  # "staircase. 4 steps. 10cm wide.": kept when read on, and
                 phrases[at].text = f"{phrases[at].text} , {p.text}"
                 p.ref = at  # "… a block two high, with a pyramid on it": it is that one
+            else:  # "a slab and a block. Put the block on it": one of those named together
+                holds = [n for n, q in enumerate(phrases[:k])
+                         if q.count > 1 and q.first <= named < q.first + q.count]  # fmt: skip
+                p.ref = holds[0] if holds else None
+                p.structure = named if p.ref is not None else None
             continue
         ordinal = _ORDINAL_OF.match(p.text)
         family = lx.SHAPE_WORDS.get(ordinal.group(1).lower()) if ordinal else None
