@@ -6438,3 +6438,48 @@ def test_the_latter_inside_the_former():
     assert r.status == "success" and len(ring) == 16
     assert min(x for x, _ in ring) < tx < max(x for x, _ in ring)
     assert min(y for _, y in ring) < ty < max(y for _, y in ring)
+
+
+@pytest.mark.parametrize(
+    "command, length, width, height",
+    [
+        ("an L shape with legs 5 and 3", 5, 3, 1),  # was a default L and two towers
+        ("an L shape, arms 4 and 4, 2 high", 4, 4, 2),  # the 2 was taken for an arm
+        ("U shape; base 5; arms 3; 1 high", 5, 3, 1),  # a U and a platform
+        ("a U shape, base 5, arms 3, 2 high", 5, 3, 2),  # the arms' 3 was dropped
+    ],
+)
+def test_a_letter_s_arms_and_base_said_as_its_two_sides(command, length, width, height):
+    r = plan(command)
+    (s,) = r.spec.structures
+    assert r.status == "success", r.notes
+    assert (s.length, s.width, s.height or 1) == (length, width, height)
+
+
+def test_a_letter_shaped_wall_s_arms_are_not_its_length_and_height():
+    # "4 by 3" of an L-shaped wall is its length and height: its arms are not turned into that
+    r = plan("an L-shaped wall, arms 4 and 3 long, 2 high")
+    (s,) = r.spec.structures
+    assert (s.length, s.width, s.height) == (4, 3, 2)
+
+
+def test_a_small_pyramid_of_so_many_levels_gets_the_base_they_need():
+    # "a little pyramid, three levels" failed: the small base (2) cannot hold 3 levels
+    r = plan("Reckon you could knock up a little pyramid, three levels, over on the right?")
+    assert r.status == "success"
+    assert _level_sizes(r.layout)[0][1] == 3 and len(_level_sizes(r.layout)) == 3
+    assert any("a base of 3" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "Right, stick a ring five by five, two high, smack in the middle.",  # stood on the right
+        "Pop a tower of 3 in the middle, no worries.",  # 'no' made it partial
+    ],
+)
+def test_colloquial_verbs_and_intensifiers_are_read(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    xs = [p.position[1] for p in r.layout.objects]
+    assert abs((min(xs) + max(xs)) / 2 - 0.30) < 0.03  # in the middle, left to right

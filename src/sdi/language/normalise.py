@@ -201,7 +201,8 @@ def courtesy(text: str) -> str:
 
 _IDIOMS = re.compile(
     r"\b(?:break\s+a\s+leg|good\s+luck|(?:a\s+)?quick\s+one(?:\s+before\s+the\s+(?:half|break|show|"
-    r"break|end\s+of\s+(?:the\s+)?shift))?|fingers\s+crossed|knock\s+yourself\s+out)\b[!.,:]?",
+    r"break|end\s+of\s+(?:the\s+)?shift))?|fingers\s+crossed|knock\s+yourself\s+out|"
+    r"no\s+(?:worries|dramas|rush|hurry|stress)(?:\s+mate)?)\b[!.,:]?",
     re.IGNORECASE,
 )
 _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.IGNORECASE)
@@ -406,6 +407,12 @@ _RADIO = re.compile(
     re.I,
 )
 """Radio procedure words ("copy that.", ", how copy, over", "over and out"): no content."""
+_LETTER_BEFORE = re.compile(
+    r"\b(?:[LUTJ][\s-]*(?:shaped?|block)?|letter\s+[LUTJ])\b(?![\s-]*(?:shaped?\s+)?(?:wall|fence))"
+    r"[^.\n]*$"
+)
+"""A letter shape named earlier in the sentence ("an L shape with …", "U-shape, …"); not a
+letter-shaped wall, whose "4 by 3" would be its length and height."""
 _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # warehouse talk: "one stack of five at bay left", "bay right, one stack of three": that
     # side of the table
@@ -933,6 +940,20 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "2 L shapes", "two T shapes": that many letter shapes (the capital read as 'long')
     (re.compile(r"\b([2-6])\s+(?=[LTU][\s-]+shape[sd]?\b)"),
      lambda m: ("two", "three", "four", "five", "six")[int(m.group(1)) - 2] + " "),
+    # "an L shape with legs 5 and 3", "L, arms 4 & 4": its two arms, 5 by 3 (one read as a
+    # length, the other as a tower); "a U, base 5, arms 3": 5 by 3
+    (re.compile(r"\b(?:with\s+)?(?:a\s+|the\s+|its\s+)?base\s+(?:of\s+)?(\d+|two|three|four|five|six|"
+                r"seven|eight)(?:\s+cubes?)?(?:\s+long)?\s*(?:,|;|and|&)\s*(?:(?:with\s+)?(?:its\s+|the\s+)?)"
+                r"arms\s+(?:of\s+)?(\d+|two|three|four|five|six|seven|eight)\b(?:\s+cubes?)?(?:\s+long)?",
+                re.I),
+     lambda m: f"{m.group(1)} by {m.group(2)}" if _LETTER_BEFORE.search(m.string[: m.start()])
+     else m.group(0)),
+    (re.compile(r"\b(?:with\s+)?(?:(?:its|the)\s+)?(?:arms|legs|sides|wings)\s+(?:of\s+|are\s+)?"
+                r"(\d+|two|three|four|five|six|seven|eight)\s*(?:cubes?\s+)?(?:long\s+)?(?:and|&|,)\s*"
+                r"(\d+|two|three|four|five|six|seven|eight)\b(?!\s*(?:cubes?\s+)?(?:high|tall|deep|wide|"
+                r"thick)\b)(?:\s+cubes?)?(?:\s+long)?", re.I),
+     lambda m: f"{m.group(1)} by {m.group(2)}" if _LETTER_BEFORE.search(m.string[: m.start()])
+     else m.group(0)),
     # "an L, 4 one way and 3 the other": 4 by 3; "a plus, 5 cubes across each way": 5 by 5
     (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?(?:long\s+)?"
                 r"(?:one\s+way|in\s+one\s+direction)\s*,?\s*(?:and\s+)?(\d+|one|two|three|four|five|six|"
@@ -1377,7 +1398,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"middle)\b)", re.I), "at the "),
     # "um right let me think", "right, so": "right" as a word to begin, no side
     (re.compile(r"(?:^|(?<=[.!?]\s))\W*(?:(?:um+|uh+|er+|ok(?:ay)?|so|yeah)\W+)*right\b\s*,?\s*"
-                r"(?=(?:so|then|let|ok(?:ay)?|now|um+|uh+|here|listen|well|guys|team|folks)\b)",
+                r"(?=(?:so|then|let|ok(?:ay)?|now|um+|uh+|here|listen|well|guys|team|folks|stick|pop|put|"
+                r"place|build|make|chuck|whack|bung|knock|give|can|could|we|i|you)\b)",
                 re.I), " "),
     # "the mess on the bench", "in the middle of the bench": the workbench is the table
     (re.compile(r"\b(on|at|off|across|along|of|from|clear)\s+the\s+(?:(?:work\s*)?bench|(?:building\s+)?site)"
@@ -1677,6 +1699,21 @@ _SLASH_XY = re.compile(
 
 
 _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps|levels|layers)"
+
+
+_BUILD_SLANG = re.compile(
+    r"\b(?:knock\s+(?:up|together)|whack|bung|chuck|stick|pop)(?:\s+(?:us|me))?\s+(?:up\s+|down\s+)?"
+    r"(?=(?:an?|one|two|three|four|five|six|some|a\s+couple|\d)\b)",
+    re.IGNORECASE,
+)
+"""'pop a bridge on the right', 'chuck us two walls', 'knock up an arch': build (the verb was
+read as nothing, 'knock' as knocking down)."""
+_SMACK = re.compile(
+    r"\b(?:smack(?:\s+bang)?|slap(?:\s+bang)?|bang|plumb|bang\s+on)\s+(?=(?:in|on|at)\s+the\s+"
+    r"(?:middle|centre|center)\b)",
+    re.IGNORECASE,
+)
+"""'smack in the middle': in the middle."""
 
 
 # Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
@@ -2600,6 +2637,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
         text = pattern.sub(heard, text)
     text = _DANGLING.sub(lambda m: f"{m.group(1) or ''} ", text)
+    text = _SMACK.sub("", _BUILD_SLANG.sub("build ", text))
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
     text = _RADIO.sub(" ", text)  # "copy that.", ", over": radio procedure
     text = _OPPOSITES.sub(lambda m: f"{m.group(1)} to {m.group(2)}", text)  # "front-back"

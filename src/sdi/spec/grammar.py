@@ -1626,6 +1626,11 @@ class _Parser:
                     # a small block is still a block (2 high); only a low one is one layer
                     low = shape == "block" and key == "height" and dim == "all"
                     p[key] = max(values[index], 2) if low else values[index]
+                    if shape == "pyramid" and key == "length" and p.get("height", 0) > p[key]:
+                        # "a little pyramid, three levels": the levels said need a wider base
+                        p[key] = levels = p["height"]
+                        self.notes.append(f"a pyramid of {levels} levels said small: a base of "
+                                          f"{levels}, the least those levels need")  # fmt: skip
         if shape == "block" and cube_word and "length" in p:
             p.setdefault("width", p["length"])  # "a compact cube of cubes": equal sides
             p.setdefault("height", p["length"])
