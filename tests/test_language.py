@@ -6483,3 +6483,41 @@ def test_colloquial_verbs_and_intensifiers_are_read(command):
     assert r.status == "success", r.notes
     xs = [p.position[1] for p in r.layout.objects]
     assert abs((min(xs) + max(xs)) / 2 - 0.30) < 0.03  # in the middle, left to right
+
+
+@pytest.mark.parametrize(
+    "command, axis, low",
+    [
+        # the face at the coordinate, the centre half a footprint beyond (was the centre there)
+        ("Slab 2 x 2, front edge at X250, centred on Y300.", 0, 0.25),
+        ("Slab 6 × 3 cubes, single layer, long side along x, front edge at x = 0.30 m.", 0, 0.30),
+        ("a wall 4 long, right side at y = 0.10 m", 1, 0.10),
+    ],
+)
+def test_an_edge_placed_by_a_coordinate_is_that_face_not_the_centre(command, axis, low):
+    lo, _ = boxes(plan(command))
+    assert abs(lo[:, axis].min() - low) < 1e-6
+
+
+def test_an_edge_at_a_coordinate_of_the_other_axis_or_several_structures_is_not_silent():
+    r = plan("a row of 4 with its left end at y = 0.5")
+    _, hi = boxes(r)
+    assert r.status == "success" and abs(hi[:, 1].max() - 0.5) < 1e-6
+    r = plan("two towers at x = 0.4 and a slab, front edge at x = 0.5")
+    assert r.status != "success" and any("front edge at x = 0.5" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command", ["a row of 5 at x = 0.5 m, tolerance ±10 mm", "a tower at x = 0.45 m (±5 mm)"]
+)
+def test_a_tolerance_is_not_a_size(command):
+    r = plan(command)  # the 10 mm was a second length (failure: less than one part)
+    assert r.status == "success" and any("as a tolerance" in n for n in r.notes)
+
+
+def test_ticket_directions_and_approx():
+    r = plan("qty 3 towers, ht 4, pitch 100mm, in line L-R")
+    assert r.status == "success" and len({round(p.position[1], 3) for p in r.layout.objects}) == 3
+    r = plan("a bridge, clear span approx. 5 cm")  # "a" of "approx." was read as the span
+    assert r.status == "success" and not any(n.startswith("ignored") for n in r.notes)
+    assert any("'clear span about 5 cm' as 0.05 m" in n for n in r.notes)

@@ -124,6 +124,10 @@ def _check_fits(p: _Placed, cell: CellConfig) -> None:
             )
 
 
+_FACES = {"front": (0, 1.0), "back": (0, -1.0), "right": (1, 1.0), "left": (1, -1.0)}
+"""A footprint face: the axis it faces along and which way its centre lies from it."""
+
+
 def _target(spec: StructureSpec, cell: CellConfig) -> tuple[float | None, float | None]:
     x, y = spec.at_x, spec.at_y
     if spec.region is not None:
@@ -244,6 +248,10 @@ def _place_all(
         c = c - np.array(
             [p.origin[0] if x is not None else 0.0, p.origin[1] if y is not None else 0.0]
         )
+        for face in p.spec.at_face:  # "its front edge at x = 0.30": the centre behind it
+            d, sign = _FACES[face]
+            if (x, y)[d] is not None:
+                c[d] += sign * p.half[d]
         free_axes = tuple(d for d, v in enumerate((p.spec.at_x, p.spec.at_y)) if v is None)
         c = _clamp(c, p.half, cell, free_axes)
         if not _inside(c, p.half, cell):

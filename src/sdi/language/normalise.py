@@ -1701,6 +1701,21 @@ _SLASH_XY = re.compile(
 _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps|levels|layers)"
 
 
+_TOLERANCE = re.compile(
+    r"\s*,?\s*\(?\s*(?:(?:with\s+)?(?:a\s+)?tolerance(?:\s+of)?\s*:?\s*)?(?:±|\+\s*/\s*-|\+-|plus\s+or\s+"
+    r"minus)\s*(\d+(?:\.\d+)?\s*(?:mm|cm|m))\b\s*\)?",
+    re.IGNORECASE,
+)
+"""A measurement's tolerance: "(±5 mm)", "± 1 cm", "tolerance ±10 mm" (its number was read as a
+size)."""
+
+
+def _tolerance(m: re.Match[str], notes: list[str] | None) -> str:
+    if notes is not None:
+        notes.append(f"read '±{m.group(1)}' as a tolerance: the parts stand at the value said")
+    return " "
+
+
 _BUILD_SLANG = re.compile(
     r"\b(?:knock\s+(?:up|together)|whack|bung|chuck|stick|pop)(?:\s+(?:us|me))?\s+(?:up\s+|down\s+)?"
     r"(?=(?:an?|one|two|three|four|five|six|some|a\s+couple|\d)\b)",
@@ -1740,6 +1755,12 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(len|lgth|ht|hgt|hght|wid|wdth|dp|dpth)\.?\s*[:=]?\s*(\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?)"
                 r"(?:\s*cubes?\b)?", re.I),
      lambda m: f"{m.group(2)} {_TICKET_DIM[m.group(1).lower()]}"),
+    # "approx." (its full stop ended the sentence)
+    (re.compile(r"\b(?:approx\.?|approximately|ca\.|circa)(?=\s)", re.I), "about"),
+    # "in line L-R", "both run F-B": left to right, front to back
+    (re.compile(r"\b(?:L\s*[-–/>]+\s*R|R\s*[-–/>]+\s*L|F\s*[-–/>]+\s*B|B\s*[-–/>]+\s*F)\b"),
+     lambda m: {"L": "left to right", "R": "right to left", "F": "front to back",
+                "B": "back to front"}[m.group(0)[0]]),
     # "pos: x 300 mm y 450 mm": at that place; "parallel to the y axis": along y
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*(?=x\s*[:=]?\s*\d|\(\s*\d)", re.I), "at "),
     # "parallel to X", "long axis parallel to Y" (a drawing's axes)
@@ -2637,6 +2658,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
         text = pattern.sub(heard, text)
     text = _DANGLING.sub(lambda m: f"{m.group(1) or ''} ", text)
+    text = _TOLERANCE.sub(lambda m: _tolerance(m, notes), text)
     text = _SMACK.sub("", _BUILD_SLANG.sub("build ", text))
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
     text = _RADIO.sub(" ", text)  # "copy that.", ", over": radio procedure

@@ -72,6 +72,47 @@ if TYPE_CHECKING:
     from spacy.tokens import Doc
 
 
+_FACE_AT = re.compile(
+    r"\b(?:with\s+)?(?:its|the)?\s*(front|near|back|rear|far|left|right)(?:[\s-]*hand)?\s+(?:edge|face|"
+    r"side|end)\s+(?:is\s+|sits\s+|lies\s+|placed\s+|set\s+)?(?:at|on)\s+(?=([xy])\s*(?:[=:]\s*)?\d)",
+    re.IGNORECASE,
+)
+_FACE_SIDE = {"near": "front", "rear": "back", "far": "back"}
+_FACE_VALUE = re.compile(r"[xy]\s*[=:]?\s*\d+(?:\.\d+)?\s*(?:mm|cm|m\b)?", re.IGNORECASE)
+
+
+def _faces_at(text: str, st: ReadState) -> str:
+    """ "front edge at x = 0.30 m", "left side at y=450": the coordinate places that face of
+    the footprint, not its centre (front and back faces on x, left and right on y)."""
+
+    def face(m: re.Match[str]) -> str:
+        side = _FACE_SIDE.get(m.group(1).lower(), m.group(1).lower())
+        if (side in ("front", "back")) != (m.group(2).lower() == "x"):
+            return m.group(0)  # "front edge at y = …": not a face that coordinate places
+        value = _FACE_VALUE.match(m.string[m.end() :])
+        st.faces.append((side, f"{m.group(0).strip()} {value.group(0).strip() if value else ''}"))
+        return " at "
+
+    return _FACE_AT.sub(face, text)
+
+
+def _placed_by_face(specs: list[StructureSpec], st: ReadState) -> list[StructureSpec]:
+    """The faces said go to the one structure placed by that coordinate."""
+    for side, said in st.faces:
+        axis = "at_x" if side in ("front", "back") else "at_y"
+        placed = [k for k, s in enumerate(specs) if getattr(s, axis) is not None]
+        if len(placed) != 1:
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': not one structure placed by that coordinate; "
+                            "the coordinate is taken as a centre")  # fmt: skip
+            continue
+        k = placed[0]
+        specs[k] = specs[k].model_copy(update={"at_face": (*specs[k].at_face, side)})
+        st.notes.append(f"read '{said}' as the {specs[k].shape}'s {side} face there, not its "
+                        "centre")  # fmt: skip
+    return specs
+
+
 def read(command: str, cell: CellConfig | None = None) -> Reading:
     """Read `command`; `SpecError` (with `understood`) when it names nothing buildable."""
     cell = cell or CellConfig()
@@ -103,6 +144,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = spacing.take_span(text, st)
     text = spacing.take_gap(text, st)
     text = claims.take(text, st)
+    text = _faces_at(text, st)
     text = rewrite(text, st)
     text = text.strip()
     doc = parse(text)
@@ -164,6 +206,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     specs = [_arch_overall(s, command, cell.cube[2], st) for s in specs]
+    specs = _placed_by_face(specs, st)
     for s in specs:
         if s.shape in ("t_shape", "cross") and s.length and s.length % 2 == 0:
             # "a T, the top four cubes wide": the generator centres the stem on an odd bar

@@ -151,7 +151,8 @@ def _measured(m: re.Match[str], part_m: float) -> float | None:
 _SUPPORTS = r"(?:pillars|legs|towers|supports|columns|posts|piers|stacks|uprights)"
 _SPAN = re.compile(
     r",?\s*\b(?:with\s+)?(?:a\s+)?(?:clear\s+|inner\s+)?span(?:\s+between\s+(?:the\s+)?"
-    + _SUPPORTS + r")?\s+(?:of\s+|is\s+|[:=]\s*)?" + _N + r"(?:[- ]?" + _UNIT + r")?"
+    + _SUPPORTS + r")?\s+(?:of\s+|is\s+|[:=]\s*)?(?:(?:about|around|roughly)\s+)?" + _N
+    + r"(?:[- ]?" + _UNIT + r")?"
     + r"|,?\s*\b(?:with\s+)?(?:the\s+|its\s+)?" + _SUPPORTS
     + r"\s+(?:are\s+|standing\s+|set\s+|placed\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+apart"
     + r"|,?\s*\b(?:and\s+)?(?:the\s+)?(?:inner\s+|clear\s+)?(?:distance|gap|space|spacing|"

@@ -69,6 +69,8 @@ class ReadState:
     flanking: bool = False  # "a tower on either side of it": beside it, apart, not against it
     region_all: str | None = None  # "keep everything in the left half": every structure's
     delegated: str | None = None  # "your call on sizes", "whatever": the choice left to SDI
+    # "front edge at x = 0.30 m": (the face, the words) a coordinate places instead of a centre
+    faces: list[tuple[str, str]] = field(default_factory=list)
     # "not stacked", "they mustn't touch": (kind, what was said), checked on the whole reading
     claims: list[tuple[str, str]] = field(default_factory=list)
     centres: str | None = None  # "100 mm apart, centre to centre": the gaps said are pitches

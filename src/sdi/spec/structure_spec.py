@@ -49,7 +49,7 @@ GapM = Annotated[float | None, Field(ge=0, le=0.5, description="gap between neig
 FIELDS: tuple[str, ...] = (
     "shape", "count", "length", "width", "height", "steps", "span", "spans", "dims",
     "length_m", "width_m", "height_m", "axis", "yaw_deg", "at_x", "at_y", "region", "edge",
-    "part", "gap_m",
+    "at_face", "part", "gap_m",
 )  # fmt: skip
 
 
@@ -65,6 +65,11 @@ class _Structure(BaseModel):
     region: str | None = Field(None, description="named region of the cell (left, back right…)")
     edge: tuple[Side, ...] = Field(
         (), description="sides of the workspace it stands against (as far that way as it fits)"
+    )
+    at_face: tuple[Side, ...] = Field(
+        (),
+        description="faces of its footprint that at_x / at_y place, instead of its centre "
+        "('front edge at x = 0.30 m': front on x, back on x, left and right on y)",
     )
     part: str = Field("cube", description="part type name from the cell configuration")
 
@@ -84,12 +89,14 @@ class _Structure(BaseModel):
 
     def describe(self) -> str:
         """Short human summary, e.g. ``tower height=3 at (0.4, ·)``."""
-        values = self.model_dump(exclude_none=True, exclude={"part", "yaw_deg", "edge"})
+        values = self.model_dump(exclude_none=True, exclude={"part", "yaw_deg", "edge", "at_face"})
         parts = [f"{k}={values[k]}" for k in FIELDS if k in values and k != "shape"]
         if self.yaw_deg:
             parts.append(f"yaw={self.yaw_deg:g}°")
         if self.edge:
             parts.append(f"edge={'+'.join(self.edge)}")
+        if self.at_face:
+            parts.append(f"at_face={'+'.join(self.at_face)}")
         if self.part != "cube":
             parts.append(f"part={self.part}")
         return " ".join([values["shape"], *parts])
@@ -341,6 +348,11 @@ class StructureDraft(BaseModel):
     region: str | None = Field(None, description="named region of the cell (left, back right…)")
     edge: tuple[Side, ...] = Field(
         (), description="sides of the workspace it stands against (as far that way as it fits)"
+    )
+    at_face: tuple[Side, ...] = Field(
+        (),
+        description="faces of its footprint that at_x / at_y place, instead of its centre "
+        "('front edge at x = 0.30 m': front on x, back on x, left and right on y)",
     )
     part: str = Field("cube", description="part type name from the cell configuration")
     gap_m: GapM = None
