@@ -6521,3 +6521,19 @@ def test_ticket_directions_and_approx():
     r = plan("a bridge, clear span approx. 5 cm")  # "a" of "approx." was read as the span
     assert r.status == "success" and not any(n.startswith("ignored") for n in r.notes)
     assert any("'clear span about 5 cm' as 0.05 m" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # three towers of 2, silently
+        ("Three towers, please: start with 2 cubes and add one more cube for every next tower.",
+         [2, 3, 4]),
+        # "starting at 2" was dropped as a time of day ("meeting at 2"): three towers of 1
+        ("three towers, starting at 2 and each one cube taller than the one before", [2, 3, 4]),
+        ("four stacks starting from 1, each 2 cubes higher", [1, 3, 5, 7]),
+    ],
+)  # fmt: skip
+def test_a_series_of_towers_from_a_first_height_and_a_step(command, heights):
+    r = plan(command)
+    assert r.status == "success" and sorted(_columns(r).values()) == heights

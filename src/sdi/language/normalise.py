@@ -1067,7 +1067,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b((?:com(?:e|es|ing)|arriv(?:e|es|ing)|back|round|over|here|start(?:s|ing)?|"
                 r"meeting|visit(?:s|ing)?|due|lunch|break|finish(?:es|ing)?|leav(?:e|es|ing))\s+)"
                 r"at\s+(?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|\d{1,2})\b"
-                r"(?!\s*(?:cubes?|blocks?|high|tall|long|wide|levels?|steps?|mm|cm|m\b|x\b|by\b|[.,]\d))",
+                r"(?!\s*(?:cubes?|blocks?|high|tall|long|wide|levels?|steps?|mm|cm|m\b|x\b|by\b|[.,]\d))"
+                r"(?![^.;]*\b(?:taller|higher|more|bigger)\b)",  # "starting at 2, each one taller"
                 re.I), r"\1"),
     # "the big boss", "a big day", "a little while": a size word of a person or a time
     (re.compile(r"\b(?:big|large|little|small|tall|huge|tiny|short)\s+(?=(?:boss|bosses|day|deal|guy|"

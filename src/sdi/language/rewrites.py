@@ -43,6 +43,13 @@ _REJECT_IF = (
 
 
 # Negations and hedges with one clear reading: (pattern, replacement, note).
+_SERIES_LEAD = (
+    r"\b(?P<n>\d+|two|three|four|five|six)\s+(?P<kind>towers|stacks|columns|pillars)\s*(?:,?\s*please)?"
+    r"\s*[;:,]?\s*(?:start(?:ing)?|begin(?:ning)?)\s+(?:with|at|from)\s+(?P<first>\d+|one|two|three|"
+    r"four|five)(?:\s+cubes?)?(?:\s+(?:high|tall))?\s*,?\s*"
+)
+"""'three towers, starting at 2 …': the series' count, family and first height."""
+
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     (  # "two towers joined by a row of 3 cubes on top": cubes alone would not hold across a gap
         re.compile(
@@ -657,6 +664,30 @@ _REWRITES += [
             r"\b(?P<n>\d+|two|three|four|five|six)\s+(?P<kind>towers|stacks|columns|pillars)\s*,?\s*"
             r"one\s+(?:of\s+)?each\s+(?:height|size)\s+from\s+(?P<first>\d+|one|two|three|four|five)"
             r"\s+(?:to|through|up\s+to)\s+(?P<last>\d+|two|three|four|five|six|seven|eight|nine|ten)\b",
+            re.IGNORECASE,
+        ),
+        "{series}",
+        "",
+    ),
+    (  # "three towers, starting at 2 and each one cube taller than the one before": 2, 3, 4;
+        # "three towers: start with 2 cubes and add one more cube for every next tower"
+        re.compile(
+            _SERIES_LEAD
+            + r"(?:and\s+)?(?:then\s+)?(?:(?:each|every)\s+(?:(?:next|following|subsequent)\s+)?"
+            r"(?:one|tower|stack|column)?\s*(?:is\s+)?(?P<step>\d+|one|two|a)\s+(?:more\s+)?(?:cubes?\s+)?"
+            r"(?:taller|higher|more)(?:\s+than\s+the\s+(?:one|last|previous)(?:\s+one)?(?:\s+before"
+            r"(?:\s+it)?)?)?)",
+            re.IGNORECASE,
+        ),
+        "{series}",
+        "",
+    ),
+    (
+        re.compile(
+            _SERIES_LEAD
+            + r"(?:and\s+)?(?:then\s+)?add(?:ing)?\s+(?P<step>\d+|one|two|a)\s+(?:more\s+)?"
+            r"cubes?\s+(?:for|to|on|with)\s+(?:each|every)\s+(?:next|following|subsequent|further)\s+"
+            r"(?:one|tower|stack|column)\b",
             re.IGNORECASE,
         ),
         "{series}",
