@@ -6537,3 +6537,33 @@ def test_ticket_directions_and_approx():
 def test_a_series_of_towers_from_a_first_height_and_a_step(command, heights):
     r = plan(command)
     assert r.status == "success" and sorted(_columns(r).values()) == heights
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        ("need 2 towers of four rn one left one right", [4, 4]),  # 'rn' read as metres: 80 high
+        ("3 towers of 2 in a line w gaps of 1 cube ✌️", [2, 2, 2]),  # a fourth, the gap's cube
+        ("tower of 3 n a tower of 6 next to it", [3, 6]),
+    ],
+)
+def test_chat_shorthand_is_read(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values()) == heights
+
+
+def test_a_ticket_s_short_words():
+    r = plan("pyr, 4 lvls, back rt")  # was an error: nothing named
+    assert r.status == "success" and r.spec.structures[0].shape == "pyramid"
+    assert r.spec.structures[0].region == "back right"
+
+
+def test_two_structures_at_one_coordinate_keep_the_gap_along_the_other():
+    # "both at x = 0.50 m" with a 12 cm gap: the two towers touched, one structure
+    r = plan("Two towers, 15 cm tall each, with a 12 cm clear gap between them, both at x = 0.50 "
+             "m.")  # fmt: skip
+    lo, hi = boxes(r)
+    ys = sorted(set(np.round(lo[:, 1], 3)))
+    assert r.status == "success" and len(ys) == 2 and ys[1] - ys[0] - 0.05 >= 0.12 - 1e-9
+    assert set(np.round((lo[:, 0] + hi[:, 0]) / 2, 3)) == {0.5}

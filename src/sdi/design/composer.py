@@ -264,7 +264,11 @@ def _place_all(
                 f"its centre {'xy'[d]} must lie in [{lo:.3f}, {hi:.3f}] m",
                 parameter=field,
             )
-        spot = _search(c, p.half, taken, 0.0, cell, free_axes)
+        # "two towers, both at x = 0.5": moved along the free axis, they keep the gap apart
+        # (SDI's own gap only where there is room for it)
+        spot = _search(c, p.half, taken, gap, cell, free_axes) if free_axes else None
+        if spot is None and not (stated and free_axes):
+            spot = _search(c, p.half, taken, 0.0, cell, free_axes)
         if spot is None:
             other = next(
                 placed[o]

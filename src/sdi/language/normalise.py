@@ -191,12 +191,14 @@ _FOREIGN_COURTESY = re.compile(
     r"ja|jawohl|genau|fertig|kisses|besos|beijos)\b[!.,]?",
     re.IGNORECASE,
 )
+_CHAT_COURTESY = re.compile(r"\b(?:rn|tysm|thx|thnx|tx|ty|lol|lmao|asap)\b", re.IGNORECASE)
+"""A chat's "right now", "thank you so much", "thanks", "lol" (its full stop kept)."""
 
 
 def courtesy(text: str) -> str:
     """`text` without greetings and thanks in other languages ("Hoi!", "Dank je!"), read before
     typo correction (which would make "Dank" a rank)."""
-    return _FOREIGN_COURTESY.sub(" ", text)
+    return _CHAT_COURTESY.sub(" ", _FOREIGN_COURTESY.sub(" ", text))
 
 
 _IDIOMS = re.compile(
@@ -1702,6 +1704,13 @@ _SLASH_XY = re.compile(
 _COUNTED = r"(?:towers|stacks|rows|walls|cubes|blocks|pillars|columns|more|steps|levels|layers)"
 
 
+_CHAT: list[tuple[re.Pattern[str], _Repl]] = [
+    # texting: "2 stacks of 4 n put a bridge", "a 3x3 square w a hole", "in a line w gaps of 1"
+    # (read before the phrasings, which know "with" and "and")
+    (re.compile(r"(?<=[a-z0-9])\s+n\s+(?=(?:a\b|[a-z]{2,}))", re.I), " and "),
+    (re.compile(r"(?<=[a-z0-9])\s+w\s+(?=(?:a|an|the|one|two|\d|legs?|gaps?|arms?|sides?|walls?|"
+                r"corners?|pillars?|posts?|steps?|levels?|space)\b)", re.I), " with "),
+]
 _TOLERANCE = re.compile(
     r"\s*,?\s*\(?\s*(?:(?:with\s+)?(?:a\s+)?tolerance(?:\s+of)?\s*:?\s*)?(?:±|\+\s*/\s*-|\+-|plus\s+or\s+"
     r"minus)\s*(\d+(?:\.\d+)?\s*(?:mm|cm|m))\b\s*\)?",
@@ -1850,9 +1859,21 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bw/o\b", re.I), "without"),
     (re.compile(r"\bw/(?=\s|\w)", re.I), "with "),
     (re.compile(r"(?<=\d)\s+n\s+(?=\d)", re.I), " and "),
-    # texting: "2 stacks of 4 n put a bridge", "a 3x3 square w a hole", "u pick"
-    (re.compile(r"(?<=[a-z0-9])\s+n\s+(?=[a-z]{2,})", re.I), " and "),
-    (re.compile(r"(?<=[a-z0-9])\s+w\s+(?=(?:a|an|the|one|two|\d)\b)", re.I), " with "),
+    # "2 towers of four one left one right": one on each side
+    (re.compile(r"\bone\s+(left|right)\s*,?\s*(?:and\s+)?(?:one|the\s+other)\s+(left|right)\b",
+                re.I),
+     lambda m: ("" if m.string[: m.start()].rstrip().endswith(",") else ", ")
+     + f"one on the {m.group(1)} and one on the {m.group(2)}"
+     if m.group(1).lower() != m.group(2).lower() else m.group(0)),
+    # a ticket's short words: "pyr, 4 lvls, back rt", "ascend twd robot"
+    (re.compile(r"\bpyr\b\.?", re.I), "pyramid"),
+    (re.compile(r"\blvls?\b\.?", re.I), "levels"),
+    (re.compile(r"\b(?:twd|twds|twrds)\b\.?", re.I), "towards"),
+    (re.compile(r"\b(back|front|rear)\s+rt\b\.?|\brt\b(?=\s+(?:side|corner|of)\b)", re.I),
+     lambda m: f"{m.group(1) or ''} right".strip()),
+    (re.compile(r"\b(back|front|rear)\s+lt\b\.?|\blt\b(?=\s+(?:side|corner|of)\b)", re.I),
+     lambda m: f"{m.group(1) or ''} left".strip()),
+    (re.compile(r"\bascend(?:s|ing)?\b", re.I), "climbing"),
     # a warehouse's places: "the back-left bay", "the left lane", "front lane"
     (
         re.compile(
@@ -1923,7 +1944,8 @@ def _call(m: re.Match[str], notes: list[str]) -> str:
 
 _OPPOSITES = re.compile(r"\b(front|back|left|right)\s*[-–/]\s*(back|front|right|left)\b", re.I)
 _FILLERS = re.compile(
-    r"\b(?:u+h+|u+m+|e+r+m*|h+m+)\b,?|[\u2600-\u27bf\U0001f300-\U0001faff\u2b50\u2b55\u274c\u2705]"
+    r"\b(?:u+h+|u+m+|e+r+m*|h+m+)\b,?|[\u2600-\u27bf\U0001f300-\U0001faff\u2b50\u2b55\u274c\u2705"
+    r"\ufe0f\u200d]"
 )
 _DANGLING = re.compile(
     r"\b(the|a|an|to|of|on|in|at|by|with|is|are|its|their|some)\s*,\s*(?:u+h+|u+m+|e+r+m*|h+m+|"
@@ -2476,6 +2498,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         notes.append(f"ignored '{m.group(0).strip()}': marked as unrelated")
         return " "
 
+    text = _expand_noted(_CHAT, text, notes)
     text = _UNRELATED.sub(unrelated, text)
     text = _aside(text, notes)
     text = _there(text, notes)
