@@ -6567,3 +6567,23 @@ def test_two_structures_at_one_coordinate_keep_the_gap_along_the_other():
     ys = sorted(set(np.round(lo[:, 1], 3)))
     assert r.status == "success" and len(ys) == 2 and ys[1] - ys[0] - 0.05 >= 0.12 - 1e-9
     assert set(np.round((lo[:, 0] + hi[:, 0]) / 2, 3)) == {0.5}
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # "in the centre of the block's top": was a relation with no subject (partial)
+        "A tower of 4 is to be placed on top of a 3 by 3 by 2 block, in the centre of the "
+        "block's top.",
+        # "with a tower in the middle of its top": the tower stood beside the slab, silently
+        "a 3x3 slab with a tower of 4 in the middle of its top",
+    ],
+)
+def test_in_the_middle_of_its_top_is_on_top_centred(command):
+    r = plan(command)
+    heights = _heights(r.layout)
+    assert r.status == "success" and len(heights) == 9
+    (top,) = [c for c, h in heights.items() if h == max(heights.values())]
+    xs = sorted({x for x, _ in heights})
+    ys = sorted({y for _, y in heights})
+    assert top == (xs[1], ys[1])  # the middle of the 3 by 3

@@ -1859,6 +1859,13 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bw/o\b", re.I), "without"),
     (re.compile(r"\bw/(?=\s|\w)", re.I), "with "),
     (re.compile(r"(?<=\d)\s+n\s+(?=\d)", re.I), " and "),
+    # "on top of a block, in the centre of the block's top": centred on it (the top was read
+    # as nothing, the middle as a relation with no subject)
+    (re.compile(r",?\s*(?:right\s+|exactly\s+)?(?:in|at|on)\s+the\s+(?:centre|center|middle)\s+of\s+"
+                r"(?:the\s+[a-z]+['’]s\s+top|its\s+top|the\s+top(?:\s+(?:face|surface))?\s+of\s+(?:the\s+"
+                r"[a-z]+|it))(?:\s+(?:face|surface))?\b", re.I),
+     lambda m: ", centred" if re.search(r"\bon(?:\s+top\s+of|to)?\b", re.split(r"[.;!?]", m.string[
+         : m.start()])[-1], re.I) else " on top, centred"),
     # "2 towers of four one left one right": one on each side
     (re.compile(r"\bone\s+(left|right)\s*,?\s*(?:and\s+)?(?:one|the\s+other)\s+(left|right)\b",
                 re.I),
