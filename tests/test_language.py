@@ -6587,3 +6587,22 @@ def test_in_the_middle_of_its_top_is_on_top_centred(command):
     xs = sorted({x for x, _ in heights})
     ys = sorted({y for _, y in heights})
     assert top == (xs[1], ys[1])  # the middle of the 3 by 3
+
+
+@pytest.mark.parametrize(
+    "command, left_height",
+    [
+        # failed: "the second one" was read as a base of 1
+        ("Make a 3-level pyramid and a 2-level one; the former goes on the left, the latter on "
+         "the right.", 3),
+        ("a tower of 3 and a tower of 5; the first on the left, the other on the right", 3),
+    ],
+)  # fmt: skip
+def test_the_first_and_the_second_of_two_named_given_their_places(command, left_height):
+    r = plan(command)
+    heights = _heights(r.layout)
+    assert r.status == "success", r.notes
+    left = max(y for _, y in heights)
+    right = min(y for _, y in heights)
+    assert left >= 0.35 and right <= 0.25
+    assert max(h for (_, y), h in heights.items() if y > 0.3) == left_height

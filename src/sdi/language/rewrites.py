@@ -3093,6 +3093,29 @@ def _ordinal_places(m: re.Match[str]) -> str:
 
 _PART_NOUNS = frozenset({"leg", "legs", "pillar", "pillars", "post", "posts", "step", "steps",
                          "arm", "arms", "level", "levels", "layer", "layers"})  # fmt: skip
+_PLACE = (
+    r"(?:on|at|in|to)\s+the\s+(?:far\s+)?(?:left|right|front|back|middle|centre|center)"
+    r"(?:\s+(?:left|right))?(?:\s+(?:side|corner|end|half))?"
+)
+_STANDS = r"(?:goes\s+|is\s+|stands\s+|sits\s+)?"
+_PAIR_PLACES = re.compile(
+    r"(\ban?\s[^.;,]*?)\s+and\s+(an?\s[^.;,]*?)\s*[.;,]\s*(?:(?:then\s+)?(?:put|place|set)\s+)?"
+    r"the\s+first(?:\s+one)?\s+" + _STANDS + r"(" + _PLACE + r")\s*,?\s*(?:and\s+)?"
+    r"the\s+(?:second|other)(?:\s+one)?\s+" + _STANDS + r"(" + _PLACE + r")",
+    re.IGNORECASE,
+)
+"""'a 3-level pyramid and a 2-level one; the first one goes on the left, the second one on the
+right': each of the two named its place."""
+
+
+def _pair_places(m: re.Match[str]) -> str:
+    named = [w for w in re.findall(r"[a-z]+", f"{m.group(1)} {m.group(2)}".lower())
+             if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    if len(named) != 2:
+        return m.group(0)
+    return f"{m.group(1)} {m.group(3)} and {m.group(2)} {m.group(4)}"
+
+
 _FORMER_LATTER = re.compile(
     r"\bthe\s+(former|latter)(?:\s+one)?\b|\bthe\s+(shorter|taller|smaller|bigger|larger|longer|"
     r"higher|lower|wider|narrower)\s+of\s+the\s+two\b",
@@ -3176,6 +3199,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _OTHER_SIDE.sub(_other_side, text)
     text = _CORNERS.sub(lambda m: HANDLERS["{corners}"](m, st, ""), text)
     text = _another(SPACES.sub(" ", text))
+    text = _PAIR_PLACES.sub(_pair_places, text)
     if (
         _LEGS.search(text)
         and _TOP.search(text)
