@@ -1950,13 +1950,15 @@ def _call(m: re.Match[str], notes: list[str]) -> str:
 
 
 _OPPOSITES = re.compile(r"\b(front|back|left|right)\s*[-–/]\s*(back|front|right|left)\b", re.I)
+_FILLER_WORD = r"(?:u+h+|u+m+|e+r+m*|h+m+)"
+"""'uh', 'um', 'er', 'hmm': a sound, nothing to read."""
 _FILLERS = re.compile(
-    r"\b(?:u+h+|u+m+|e+r+m*|h+m+)\b,?|[\u2600-\u27bf\U0001f300-\U0001faff\u2b50\u2b55\u274c\u2705"
+    r"\b" + _FILLER_WORD + r"\b,?|[\u2600-\u27bf\U0001f300-\U0001faff\u2b50\u2b55\u274c\u2705"
     r"\ufe0f\u200d]"
 )
 _DANGLING = re.compile(
-    r"\b(the|a|an|to|of|on|in|at|by|with|is|are|its|their|some)\s*,\s*(?:u+h+|u+m+|e+r+m*|h+m+|"
-    r"like|you\s+know)\s*,\s*|(?<=,)\s*(?:like|you\s+know)\s*,",
+    r"\b(the|a|an|to|of|on|in|at|by|with|is|are|its|their|some)\s*,\s*(?:" + _FILLER_WORD
+    + r"|like|you\s+know)\s*,\s*|(?<=,)\s*(?:like|you\s+know)\s*,",
     re.IGNORECASE,
 )
 """A filler between commas after an article or preposition ("up to the, um, left"), and its

@@ -2915,6 +2915,8 @@ _LEVEL_BARE = re.compile(
 _NUMBERED_LEVEL = re.compile(r"\s*\(\s*([1-9])\s*\)\s*")
 
 
+_LEVELLED_NOUN = r"(?:(?:stepped|step|tiered|layered)\s+)?(?:pyramid|ziggurat|(?:wedding\s+)?cake)"
+"""A structure that is its levels: a pyramid, a ziggurat, a (wedding) cake."""
 _LEVEL_SIZE = rf"{_N}\s*(?:x|by|×)\s*{_N}"
 _LEVELS_SAID = (
     r"(?:(?:its|the)\s+)?(?:(?P<count>" + _N + r")\s+)?(?:levels|layers|tiers)\b"
@@ -2922,7 +2924,7 @@ _LEVELS_SAID = (
 )
 _LEVEL_LIST = re.compile(
     r"(?P<lead>\b(?:(?:a|an|the)\s+)?(?:(?P<counted>" + _N + r")[- ](?:levels?|layers?|tiers?|"
-    r"steps?)\s+)?(?:(?:stepped|step|tiered|layered)\s+)?(?:pyramid|ziggurat|(?:wedding\s+)?cake)\b"
+    r"steps?)\s+)?" + _LEVELLED_NOUN + r"\b"
     r"(?:\s*[,:]\s*|\s+(?:with|of|in)\s+|\s+)(?:" + _LEVELS_SAID + r")?|\b"
     + _LEVELS_SAID.replace("count", "alone") + r")"
     r"(?P<sizes>" + _LEVEL_SIZE + r"(?:\s*[,;]?\s*(?:and\s+then\s+|and\s+|then\s+)?"
@@ -2976,8 +2978,8 @@ def _level_named(said: str, prev: str) -> str:
 
 
 _LEVELLED = re.compile(
-    r"(?:(?:a|an|the)\s+)?(?:(?:stepped|step|tiered|layered)\s+)?(?:pyramid|ziggurat|"
-    r"(?:wedding\s+)?cake)\s*(?:(?:with|of|in)\s+(?:(?:its|the)\s+)?)?(?:(?:levels|layers|tiers)\b)?"
+    r"(?:(?:a|an|the)\s+)?" + _LEVELLED_NOUN
+    + r"\s*(?:(?:with|of|in)\s+(?:(?:its|the)\s+)?)?(?:(?:levels|layers|tiers)\b)?"
     r"\s*[:,.-]?\s*$",
     re.IGNORECASE,
 )

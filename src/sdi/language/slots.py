@@ -70,6 +70,12 @@ def _more_about(
     p.count = 0
 
 
+def _holding(phrases: list[Phrase], i: int) -> int | None:
+    """The phrase that built structure `i`."""
+    return next((j for j, q in enumerate(phrases) if q.count and q.first <= i < q.first + q.count),
+                None)  # fmt: skip
+
+
 _THE_FAMILY = re.compile(
     r"\W*(?:(?:put|place|set|move|stand|position)\s+)?(?:the|that)\s+(\w+)(?:\W*$|(?=\s*,))"
 )
@@ -103,14 +109,7 @@ def fill_slots(
         pick = None if dropping else pick_structure(p.text, structures, earlier)
         if pick is not None and structures:
             p.structure = pick
-            p.ref = next(
-                (
-                    j
-                    for j, q in enumerate(phrases[:k])
-                    if q.count and q.first <= pick < q.first + q.count
-                ),
-                None,
-            )
+            p.ref = _holding(phrases[:k], pick)
             if p.ref is not None:
                 continue
             p.structure = None
@@ -252,16 +251,12 @@ def fill_slots(
             # "…; the staircase has 3 steps": more about the staircase named before
             _more_about(named, spec.structures[0].shape, p, spec, structures, st)
             _account(p, spec, unused, doc, st)
-            at = next((n for n, q in enumerate(phrases[:k]) if q.count == 1 and q.first == named),
-                      None)  # fmt: skip
-            if at is not None:  # "staircase. 4 steps. 10cm wide.": kept when read on, and
-                phrases[at].text = f"{phrases[at].text} , {p.text}"
+            at = _holding(phrases[:k], named)
+            if at is not None and phrases[at].count == 1:  # "staircase. 4 steps. 10cm wide.":
+                phrases[at].text = f"{phrases[at].text} , {p.text}"  # kept when read on, and
                 p.ref = at  # "… a block two high, with a pyramid on it": it is that one
-            else:  # "a slab and a block. Put the block on it": one of those named together
-                holds = [n for n, q in enumerate(phrases[:k])
-                         if q.count > 1 and q.first <= named < q.first + q.count]  # fmt: skip
-                p.ref = holds[0] if holds else None
-                p.structure = named if p.ref is not None else None
+            elif at is not None:  # "a slab and a block. Put the block on it": one of those
+                p.ref, p.structure = at, named  # named together
             continue
         ordinal = _ORDINAL_OF.match(p.text)
         family = lx.SHAPE_WORDS.get(ordinal.group(1).lower()) if ordinal else None
