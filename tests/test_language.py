@@ -6606,3 +6606,61 @@ def test_the_first_and_the_second_of_two_named_given_their_places(command, left_
     right = min(y for _, y in heights)
     assert left >= 0.35 and right <= 0.25
     assert max(h for (_, y), h in heights.items() if y > 0.3) == left_height
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # the verb made a third tower of its default size (partial)
+        ("stack six cubes into two towers", [3, 3]),
+        # "of equal height" between the towers and the total: towers of 8 each, silently
+        ("two towers of equal height using 8 cubes", [4, 4]),
+        ("three towers the same height made of 9 cubes", [3, 3, 3]),
+    ],
+)
+def test_a_total_of_parts_split_among_the_structures(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values()) == heights
+
+
+def test_a_pyramid_of_so_many_levels_and_parts():
+    # "a 3-level pyramid using 10 cubes": a base of 4 cut at 3 levels (9 parts), silently
+    r = plan("a 3-level pyramid using 10 cubes")
+    assert r.status == "partial" and any("10 parts" in n for n in r.notes)
+    # two levels of five parts: the whole 3-D pyramid, 2 by 2 and one on top
+    r = plan("a pyramid of 2 levels using exactly 5 cubes")
+    assert r.status == "success"
+    assert sorted(round(p.position[2], 3) for p in r.layout.objects) == [0.025] * 4 + [0.075]
+
+
+@pytest.mark.parametrize(
+    "command, per_level",
+    [
+        # the base and what stands on it were one structure (partial; "a 4x4x3 block")
+        ("a 4x4 base and a tower of 3 on it", [16, 1, 1, 1]),
+        ("4x4 base, tower of 3 on it", [16, 1, 1, 1]),
+        ("a tower of 3 on a 4x4 base", [16, 1, 1, 1]),
+        ("a 3x3 base layer and a 2x2 layer on it", [9, 4]),
+        # a size said with its noun left out: the 3x3 was dropped
+        ("a 3x3 base with a 2x2 on it", [9, 4]),
+        # "then one cube on top" of the stack: read as a beam across both layers (partial)
+        ("a 3x3 base, a 2x2 on that, then one cube on top", [9, 4, 1]),
+        ("a 3x3 layer, a 2x2 layer on that, then a cube on top", [9, 4, 1]),
+    ],
+)
+def test_a_sized_base_is_a_slab_of_its_own(command, per_level):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    levels = [0] * len(per_level)
+    for p in r.layout.objects:
+        levels[round((p.position[2] - 0.025) / 0.05)] += 1
+    assert levels == per_level
+
+
+@pytest.mark.parametrize(
+    "command", ["a pyramid with a 4x4 base", "a 3-level pyramid on a 4x4 base"]
+)
+def test_a_pyramid_s_base_stays_the_pyramid_s(command):
+    r = plan(command)
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["pyramid"]

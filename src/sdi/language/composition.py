@@ -198,6 +198,12 @@ def relate(
             and len(shapes) > 1
         ):
             picked = True  # "a wall, a tower behind it, and a cube on top of that": the last one
+        members_of = range(first, first + phrases[obj].count)
+        if any(
+            rel.kind == "on_top_of" and rel.subject in members_of and rel.object in members_of
+            for rel in relations
+        ):
+            picked = True  # "a 3x3 layer and a 2x2 layer on that, then a cube on top": the stack's
         if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1 and not picked:
             _join(phrases, obj, subj, structures, replace, drop, st, relations)
             continue

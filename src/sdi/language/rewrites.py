@@ -1240,6 +1240,9 @@ _REWRITES += [
 _REWRITES += [
     (
         re.compile(
+            # "stack six cubes into two towers": the verb is the split's, not a stack of its own
+            r"(?:\b(?:stack|split|divide|arrange|sort|pile|share|distribute|separate|group)\s+"
+            r"(?:up\s+)?(?:the\s+)?)?"
             r"\b(?P<total>\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\s+(?:as|in|into|making|to\s+make|"
             r"for|to\s+build|to\s+form)\s+"
             r"(?P<count>two|three|four|five|six|\d+)\s+(?:equal\s+|identical\s+|even\s+)?"
@@ -1253,7 +1256,12 @@ _REWRITES += [
     (  # "two equal towers out of 8 cubes": four each
         re.compile(
             r"\b(?P<count>two|three|four|five|six|\d+)\s+(?:equal\s+|identical\s+|even\s+)?"
-            r"(?P<noun>towers|stacks|columns|piles|rows|walls)\s+(?:out\s+of|from|using)\s+"
+            r"(?P<noun>towers|stacks|columns|piles|rows|walls)"
+            # "two towers of equal height using 8 cubes"
+            r"(?:\s+(?:of\s+(?:equal|the\s+same)\s+(?:height|size|length)|(?:that\s+are\s+)?"
+            r"(?:all\s+)?(?:the\s+same\s+height|equal(?:\s+in\s+height)?)),?)?"
+            r"(?:\s+of(?=\s*,))?(?:\s*,)*"  # what a claim taken out ("of equal height") leaves
+            r"\s+(?:out\s+of|from|using|made\s+(?:out\s+)?of|built\s+(?:out\s+of|from|with))\s+"
             r"(?P<total>\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\b(?!\s+(?:each|apiece))",
             re.IGNORECASE,
         ),
@@ -2353,6 +2361,58 @@ def _one_more(m: re.Match[str], text: str) -> str:
     return " and another one"
 
 
+_BARE_SIZE = re.compile(
+    r"\b(a|an|one|another)\s+(\d+\s+x\s+\d+(\s+x\s+\d+)?)(?=\s*(?:[,.;]|$|\b(?:on|onto|above|"
+    r"atop|then|and|at|in|next|beside|behind|to)\b))",
+    re.IGNORECASE,
+)
+
+
+def _bare_size(text: str, st: ReadState) -> str:
+    """ "a 3x3 base with a 2x2 on it": a size with its noun left out after a structure named
+    is another of its kind — a layer (a block when three sizes are said)."""
+
+    def sub(m: re.Match[str]) -> str:
+        said = re.findall(r"[a-z]+", text[: m.start()].lower())
+        shapes = [w for w in said if w in lx.SHAPE_WORDS or w in ("base", "foundation", "footing")]
+        if not shapes:
+            return m.group(0)  # "build a 2x2": the grammar's own bare size
+        noun = "block" if m.group(3) else "layer"
+        st.notes.append(f"read '{m.group(0)}' as {m.group(1)} {m.group(2)} {noun}")
+        return f"{m.group(0)} {noun}"
+
+    return _BARE_SIZE.sub(sub, text)
+
+
+_SIZED_BASE = re.compile(
+    r"(?<![\w.])(?:(?P<art>a|an|one|the)\s+)?(?P<size>\d+\s+x\s+\d+(?P<third>\s+x\s+\d+)?)\s+"
+    r"(?P<noun>base|foundation|footing)\b(?!\s+(?:of|for|to)\b)"
+    r"(?:\s+(?P<own>layer|slab|plate|pad|block|platform)\b)?",
+    re.IGNORECASE,
+)
+
+
+def _sized_base(text: str, st: ReadState) -> str:
+    """ "a 4x4 base and a tower of 3 on it", "a tower of 3 on a 4x4 base": a base with sides of
+    its own is a slab (a block, three sizes said) — not the base of a pyramid said with it
+    ("a pyramid with a 4x4 base", "whose base is 4x4")."""
+
+    def sub(m: re.Match[str]) -> str:
+        sentence = re.split(r"[.;:!?]\s", text[: m.start()])[-1]
+        before = re.findall(r"[a-z]+", sentence.lower())
+        if {"with", "whose", "its", "has", "having", "of", "their"} & set(before[-1:]):
+            return m.group(0)
+        shapes = [lx.SHAPE_WORDS[w] for w in before if w in lx.SHAPE_WORDS]
+        if shapes[-1:] == ["pyramid"]:
+            return m.group(0)  # "a 3-level pyramid on a 4x4 base": the pyramid's own
+        noun = m.group("own") or ("block" if m.group("third") else "slab")
+        art = m.group("art") or "a"
+        st.notes.append(f"read '{m.group(0).strip()}' as {art} {m.group('size')} {noun}")
+        return f"{art} {m.group('size')} {noun}"
+
+    return _SIZED_BASE.sub(sub, text)
+
+
 def _another(text: str) -> str:
     """ "a tower on the left and another one on the right": another tower."""
     text = _ONE_MORE.sub(lambda m: _one_more(m, text), text)
@@ -3165,6 +3225,7 @@ def rewrite(text: str, st: ReadState) -> str:
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
     text = _level_labels(_level_list(text, st), st)
+    text = _sized_base(text, st)
     text = _tetris(text, st)
 
     def on_end(m: re.Match[str]) -> str:
@@ -3201,6 +3262,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _OTHER_SIDE.sub(_other_side, text)
     text = _CORNERS.sub(lambda m: HANDLERS["{corners}"](m, st, ""), text)
     text = _another(SPACES.sub(" ", text))
+    text = _bare_size(text, st)
     text = _PAIR_PLACES.sub(_pair_places, text)
     if (
         _LEGS.search(text)

@@ -1527,15 +1527,27 @@ class _Parser:
                     f"{p['steps']} steps ({used} parts)"
                 )
             elif shape == "pyramid" and "length" not in p and count > 4:
-                p["length"] = _pyramid_base(count, p.get("dims") == 3)
-                used = sum((p["length"] - k) ** (2 if p.get("dims") == 3 else 1)
-                           for k in range(p["length"]))  # fmt: skip
-                self.notes.append(
-                    f"{count} parts read as a pyramid with a base of {p['length']}"
-                    if used == count
-                    else f"ignored {count} parts: no pyramid has exactly that many; built a "
-                    f"base of {p['length']} ({used} parts)"
-                )
+                levels = p.get("height")
+                if levels and "dims" not in p and _pyramid_parts(levels, True) == count != (
+                    _pyramid_parts(levels, False)
+                ):  # "a pyramid of 2 levels using 5 cubes": 4 and 1, the whole 3-D one
+                    p["dims"] = 3
+                p["length"] = _pyramid_base(count, p.get("dims") == 3, levels)
+                used = _pyramid_parts(p["length"], p.get("dims") == 3, levels)
+                if used == count:
+                    self.notes.append(f"{count} parts read as a pyramid with a base of "
+                                      f"{p['length']}")  # fmt: skip
+                elif levels:  # "a 3-level pyramid using 10 cubes": no base gives both
+                    del p["length"]
+                    self.notes.append(
+                        f"ignored {count} parts: no pyramid of {levels} levels has exactly "
+                        f"that many"
+                    )
+                else:
+                    self.notes.append(
+                        f"ignored {count} parts: no pyramid has exactly that many; built a "
+                        f"base of {p['length']} ({used} parts)"
+                    )
             elif shape in ("wall",) and "length" not in p:
                 p["count"] = count
             elif shape == "wall":
@@ -1797,13 +1809,17 @@ class _Parser:
         return SpecDraft(structures=tuple(structures), notes=tuple(dict.fromkeys(self.notes)))
 
 
-def _pyramid_base(count: int, three_d: bool) -> int:
-    base = 1
-    while True:
-        total = sum((base - k) ** (2 if three_d else 1) for k in range(base))
-        if total >= count:
-            return base
+def _pyramid_parts(base: int, three_d: bool, levels: int | None = None) -> int:
+    """The parts of a pyramid on that base, of that many levels (all of them unsaid)."""
+    return sum((base - k) ** (2 if three_d else 1) for k in range(min(base, levels or base)))
+
+
+def _pyramid_base(count: int, three_d: bool, levels: int | None = None) -> int:
+    """The smallest base whose pyramid (of that many levels) has at least `count` parts."""
+    base = max(1, levels or 1)
+    while _pyramid_parts(base, three_d, levels) < count:
         base += 1
+    return base
 
 
 def _region(regions: list[str]) -> str | None:
