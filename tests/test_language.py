@@ -6664,3 +6664,43 @@ def test_a_sized_base_is_a_slab_of_its_own(command, per_level):
 def test_a_pyramid_s_base_stays_the_pyramid_s(command):
     r = plan(command)
     assert r.status == "success" and [s.shape for s in r.spec.structures] == ["pyramid"]
+
+
+@pytest.mark.parametrize(
+    "command, ok",
+    [
+        # "a 3-cube beam" was a row of its own: the beam dropped (partial)
+        ("two 3-high towers 10cm apart with a 3-cube beam across the top", True),
+        ("two towers of 3 with a beam of 3 cubes on top", True),
+        # a beam SDI does not have: said, never silently the 0.15 m one
+        ("two towers of 3 with a 20 cm beam on top", False),
+        ("two towers of 3 with a beam 4 cubes long on top", False),
+    ],
+)
+def test_a_beam_s_length_is_checked_against_sdi_s_beam(command, ok):
+    r = plan(command)
+    assert [s.shape for s in r.spec.structures] == ["bridge"]
+    assert (r.status == "success") is ok, r.notes
+    assert any("SDI's beam" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command, height",
+    [
+        # "leave off the top cube" was ignored as two words of no meaning: 5 high, silently
+        ("make a tower of 5 but leave off the top cube", 4),
+        ("a tower of 5 without the top cube", 4),
+        ("a tower of 5, minus the top cube", 4),
+        ("a tower of 5 but leave out the top two cubes", 3),
+    ],
+)
+def test_a_structure_without_its_top_parts(command, height):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert list(_columns(r).values()) == [height]
+
+
+def test_a_gap_left_in_a_wall_for_a_door_is_not_silent():
+    # the door was a bridge of its own beside a solid wall, silently
+    r = plan("build a wall that is 6 long and 3 tall, leave a gap in the middle for a door")
+    assert r.status == "partial" and any("no opening" in n for n in r.notes)

@@ -826,9 +826,10 @@ def _step_rise(text: str, st: ReadState) -> str:
 
 
 _OPENING = re.compile(
-    r"\b(?:wall|slab|block|row)\b[^.;]{0,30}?\bwith\s+an?\s+(?:(?:door|doorway|opening|hole|window)"
-    r"(?:\s+(?:in|through)\s+(?:the\s+)?(?:middle|centre|center|it))?|gap\s+(?:in|through)\s+"
-    r"(?:the\s+)?(?:middle|centre|center|it))",
+    r"\b(?:wall|slab|block|row)\b[^.;]{0,40}?\b(?:with|leave|leaving|cut|having)\s+"
+    r"(?:an?\s+|one\s+)?(?:(?:small\s+|little\s+)?(?:door|doorway|opening|hole|window|archway)"
+    r"(?:\s+(?:in|through)\s+(?:the\s+)?(?:middle|centre|center|it))?|gap\s+(?:(?:in|through)\s+"
+    r"(?:the\s+)?(?:middle|centre|center|it)|for\s+(?:an?\s+)?(?:door|doorway|window|entrance)))",
     re.IGNORECASE,
 )
 _CUT_OFF = re.compile(

@@ -1036,6 +1036,17 @@ _REWRITES += [
 
 
 _REWRITES += [
+    (  # "a tower of 5 but leave off the top cube", "… without the top layer": taken off after
+        re.compile(
+            r"(?<=[a-z0-9])\s*,?\s*(?:but\s+|and\s+|only\s+)?(?:leave\s+(?:off|out)|leaving\s+(?:off|out)|"
+            r"without|minus|less|omit(?:ting)?|skip(?:ping)?|drop(?:ping)?)\s+the\s+"
+            r"((?:top|upper|uppermost|highest|last)\s+(?:(?:one|two|three|\d)\s+)?"
+            r"(?:cubes?|blocks?|layers?|levels?|courses?|rows?|steps?|tiers?))\b",
+            re.IGNORECASE,
+        ),
+        ", then remove the {0} ",
+        "",
+    ),
     (
         re.compile(
             r"\b(?:but\s+|and\s+)?(?:do\s+not|never)\s+(?:put|place|build|set)\s+(?:it|them)\s+"
@@ -2384,6 +2395,41 @@ def _bare_size(text: str, st: ReadState) -> str:
     return _BARE_SIZE.sub(sub, text)
 
 
+_BEAM_CUBES = 3  # the cell's beam part: 0.15 m, three cube lengths (`sdi.model.cell`)
+_BEAM_SIZE = re.compile(
+    r"\b(?:(?P<n>\d+)[- ](?:cube|block|part)s?[- ](?:long[- ])?|(?P<m>\d+(?:\.\d+)?)\s*"
+    r"(?P<u>mm|cm|m)[- ](?:long\s+)?)(?P<beam>beams?|planks?|girders?|lintels?)\b"
+    r"|\b(?P<beam2>beams?|planks?|girders?|lintels?)\s+(?:of\s+(?P<n2>\d+)\s+(?:cube|block|part)s?"
+    r"(?:\s+long)?|(?P<n3>\d+)\s+(?:cube|block|part)s?\s+long|(?P<m2>\d+(?:\.\d+)?)\s*"
+    r"(?P<u2>mm|cm|m)\s+long)\b",
+    re.IGNORECASE,
+)
+_METRES = {"mm": 0.001, "cm": 0.01, "m": 1.0}
+
+
+def _beam_size(text: str, st: ReadState) -> str:
+    """ "a 3-cube beam across the top", "a lintel 15 cm long": the length of SDI's one beam
+    part, said and checked — any other length is reported, never silently dropped."""
+
+    def sub(m: re.Match[str]) -> str:
+        beam = m.group("beam") or m.group("beam2")
+        said = m.group(0).strip()
+        if m.group("m") or m.group("m2"):
+            unit = (m.group("u") or m.group("u2")).lower()
+            cubes = float(m.group("m") or m.group("m2")) * _METRES[unit] / 0.05
+        else:
+            cubes = float(m.group("n") or m.group("n2") or m.group("n3"))
+        if abs(cubes - _BEAM_CUBES) < 0.05:
+            st.notes.append(f"read '{said}' as SDI's beam ({_BEAM_CUBES} cubes, 0.15 m long)")
+        else:
+            st.material.append(said)
+            st.notes.append(f"ignored the length in '{said}': SDI's beam is {_BEAM_CUBES} cubes "
+                            "(0.15 m) long")  # fmt: skip
+        return f" {beam} "
+
+    return _BEAM_SIZE.sub(sub, text)
+
+
 _SIZED_BASE = re.compile(
     r"(?<![\w.])(?:(?P<art>a|an|one|the)\s+)?(?P<size>\d+\s+x\s+\d+(?P<third>\s+x\s+\d+)?)\s+"
     r"(?P<noun>base|foundation|footing)\b(?!\s+(?:of|for|to)\b)"
@@ -3225,7 +3271,7 @@ def rewrite(text: str, st: ReadState) -> str:
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
     text = _level_labels(_level_list(text, st), st)
-    text = _sized_base(text, st)
+    text = _sized_base(_beam_size(text, st), st)
     text = _tetris(text, st)
 
     def on_end(m: re.Match[str]) -> str:
