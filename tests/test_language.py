@@ -6704,3 +6704,105 @@ def test_a_gap_left_in_a_wall_for_a_door_is_not_silent():
     # the door was a bridge of its own beside a solid wall, silently
     r = plan("build a wall that is 6 long and 3 tall, leave a gap in the middle for a door")
     assert r.status == "partial" and any("no opening" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # a cube on each cube of a row: one cube on the row, silently
+        "a row of 5, and on every cube of it another cube",
+        "a row of 5 with a cube on each cube",
+        "a row of 5 with another cube on top of each one",
+    ],
+)
+def test_a_cube_on_each_cube_is_another_layer(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values()) == [2] * 5
+
+
+@pytest.mark.parametrize(
+    "command, sides",
+    [
+        # "a 3 long stem": the stem's 3 was refused as a second width (partial)
+        ("Make a T with a 5 long top and a 3 long stem", (5, 3)),
+        ("an L with a 4 long arm and a 2 long arm", (4, 2)),
+        ("an L with an arm of 4 cubes and another arm of 2", (4, 2)),
+    ],
+)
+def test_a_letter_s_parts_said_by_their_length(command, sides):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    (s,) = r.spec.structures
+    assert (s.length, s.width) == sides
+
+
+def test_a_single_layer_of_cubes_is_a_layer():
+    # "a single layer of cubes": a row, with a note that no structure was named
+    r = plan("fill the front left quarter of the table with a single layer of cubes")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["grid"]
+    assert r.spec.structures[0].region == "front left"
+
+
+@pytest.mark.parametrize(
+    "command, heights_left_to_right",
+    [
+        # "starting at two" was taken for a time of day: three towers of 1, silently
+        ("three towers going up by one each starting at two", None),
+        ("three towers getting taller from left to right, starting at 1", [1, 2, 3]),
+    ],
+)
+def test_a_series_said_by_its_first_height(command, heights_left_to_right):
+    r = plan(command)
+    cols = _columns(r)
+    assert r.status == "success", r.notes
+    if heights_left_to_right is None:
+        assert sorted(cols.values()) == [2, 3, 4]
+    else:
+        assert [h for _, h in sorted(cols.items(), key=lambda kv: -kv[0][1])] == [1, 2, 3]
+        assert any("step was not said" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # the sizes given by the side in the next sentence: both towers 5 on the left (partial)
+        "Make two towers. The left one should be 5 high, the right one 2 high.",
+        "Make two towers. The left one 5 high, the right one 2.",  # the 2 in the 5's unit
+        "two towers: left 5 high, right 2 high",
+    ],
+)
+def test_sizes_given_by_side_in_the_next_clause(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    assert [h for _, h in sorted(cols.items(), key=lambda kv: -kv[0][1])] == [5, 2]
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # two fronted "on top of that" in one clause: a cycle of relations, an error
+        "A 3 by 3 square. On top of that a 2 by 2 square, and on top of that a cube.",
+        # "a smaller 2 by 2 square": the comparative left unused (partial)
+        "First a big flat square of 3 by 3. On top of that a smaller 2 by 2 square, and on top "
+        "of that one single cube.",
+    ],
+)
+def test_stacked_in_turn_with_fronted_relations(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    levels = [0, 0, 0]
+    for p in r.layout.objects:
+        levels[round((p.position[2] - 0.025) / 0.05)] += 1
+    assert levels == [9, 4, 1]
+
+
+def test_a_comparative_said_with_its_own_size_is_checked():
+    r = plan("a tower of 5 and a smaller tower of 3")
+    assert r.status == "success" and sorted(_columns(r).values()) == [3, 5]
+    # "a taller tower of 7" was read as 6 and refused as a second height (partial, 5 and 5)
+    r = plan("a tower of 5 and a taller tower of 7")
+    assert r.status == "success" and sorted(_columns(r).values()) == [5, 7]
+    r = plan("a tower of 5 and a taller tower of 3")
+    assert r.status == "partial" and any("3 is not taller" in n for n in r.notes)

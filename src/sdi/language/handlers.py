@@ -1199,8 +1199,12 @@ def _series(m: re.Match[str], st: ReadState, note: str) -> str:
     heights = [first + k * step for k in range(n)]
     listed = ", ".join(str(h) for h in heights[:-1]) + f" and {heights[-1]}"
     kind = m.group("kind")
-    st.notes.append(f"read '{m.group(0).strip()}' as {kind} of {listed}")
-    return f" {n} {kind} of {listed}"
+    unsaid = " (one cube more each: the step was not said)" if "step" in m.re.groupindex and (
+        "step" not in g and "last" not in g
+    ) else ""  # fmt: skip
+    st.notes.append(f"read '{m.group(0).strip()}' as {kind} of {listed}{unsaid}")
+    where = m.groupdict().get("dir") or ""
+    return f" {n} {kind} of {listed}" + (f", {where.strip()}" if where else "")
 
 
 def _part_size(m: re.Match[str], st: ReadState, note: str) -> str:

@@ -415,6 +415,41 @@ _LETTER_BEFORE = re.compile(
 )
 """A letter shape named earlier in the sentence ("an L shape with …", "U-shape, …"); not a
 letter-shaped wall, whose "4 by 3" would be its length and height."""
+def _side_one(m: re.Match[str], size: str | None) -> str:
+    """ "the left one 5 high": one 5 high on the left (a size with no unit: left as said)."""
+    if size is None:
+        return m.group(0)
+    where = "on the " if m.group(1).lower() in ("left", "right") else "at the "
+    return f"one {size} {where}{m.group(1).lower()}"
+
+
+def _with_unit_before(m: re.Match[str]) -> str | None:
+    """ "the left one 5 high, the right one 2": the bare 2 in the unit of the one before."""
+    said = re.findall(
+        r"\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+((?:cubes?\s+)?(?:high|tall|"
+        r"long|wide|levels?))\b",
+        re.split(r"[.;]", m.string[: m.start()])[-1],
+        re.I,
+    )
+    return f"{m.group('bare')} {said[-1]}" if said else None
+
+
+# "three towers going up by one each starting at two": a series' first height, not a time
+_SERIES_START = re.compile(r"start|begin", re.I)
+_SERIES_BEFORE = re.compile(
+    r"\b(?:towers|stacks|columns|pillars|heights|going\s+up|rising|climbing|increasing|growing|"
+    r"getting|ascending)\b",
+    re.I,
+)
+
+
+
+def _series_start(m: re.Match[str]) -> bool:
+    """ "three towers going up by one each starting at two": not a time of day."""
+    sentence = re.split(r"[.;]", m.string[: m.start()])[-1]
+    return bool(_SERIES_START.match(m.group(1)) and _SERIES_BEFORE.search(sentence))
+
+
 _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # warehouse talk: "one stack of five at bay left", "bay right, one stack of three": that
     # side of the table
@@ -769,6 +804,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bas\s+far\s+(?:away\s+)?from\s+the\s+robot\s+as\s+(?:the\s+(?:table|cell|"
                 r"workspace)\s+(?:goes|allows|lets\s+it)|it\s+(?:can|will)\s+go|possible|you\s+can)\b",
                 re.I), " as far back as it can go "),
+    # "On top of that a 2 by 2 square, and on top of that a cube": each fronted relation a
+    # sentence of its own (two in one clause related the pronouns to the wrong phrases)
+    (re.compile(r"(\bon\s+top\s+of\s+(?:that|it|this)\b[^.;]*?)\s*,?\s+and\s+(?:then\s+)?"
+                r"(on\s+top\s+of\s+(?:that|it|this)|on\s+(?:that|it|this)|above\s+(?:that|it|this))\s+"
+                r"(?=(?:a|an|one|another|\d+)\b)", re.I), r"\1. \2 "),
     # "a 3x3 slab with a 2x2 slab on top and a cube on top of that": stacked in turn
     (re.compile(r"(\bon\s+(?:top|it)(?:\s+of\s+it)?\s*,?\s*)and\s+(?=(?:then\s+)?(?:an?|one|"
                 r"a\s+single|single)\s+[^,.;]{0,40}?\bon\s+(?:top\s+of\s+)?(?:that|this|the\s+\w+)\b)",
@@ -776,19 +816,25 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a wall of 6 cubes, 2 rows high": rows counted upwards are courses (its height)
     (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:rows|courses|tiers)"
                 r"\s+(high|tall)\b", re.I), r"\1 \2"),
-    # "two towers, the left one 5 high and the right one 2 high": one each, in those places
-    (re.compile(r"(?<=[,:;]\s)the\s+(left|right|front|back)(?:[\s-]?(?:hand|most))?\s+(?:one|tower|"
-                r"stack|column|wall|row)\s+((?:is\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|"
+    # "two towers, the left one 5 high and the right one 2 high": one each, in those places;
+    # "Make two towers. The left one should be 5 high, the right one 2.", "two towers: left 5
+    # high, right 2 high" (a bare number after the first takes its unit)
+    (re.compile(r"(?<=[,:;.]\s)(?:the\s+)?(left|right|front|back)(?:[\s-]?(?:hand|most))?(?:\s+(?:one|"
+                r"tower|stack|column|wall|row))?\s+(?:(?:is|should\s+be|must\s+be|will\s+be|needs\s+to\s+be|"
+                r"has\s+to\s+be|is\s+to\s+be)\s+)?((?:\d+|one|two|three|four|five|six|seven|eight|"
                 r"nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?))"
-                r"(?=\s*(?:,|;|\.|\band\b|$))", re.I),
-     lambda m: f"one {m.group(2).removeprefix('is ')} "
-     + ("on the " if m.group(1).lower() in ("left", "right") else "at the ") + m.group(1).lower()),
-    (re.compile(r"(?<=\band\s)the\s+(left|right|front|back)(?:[\s-]?(?:hand|most))?\s+(?:one|tower|"
-                r"stack|column|wall|row)\s+((?:is\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|"
-                r"nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?))"
+                r"(?=\s*(?:,|;|\.|\band\b|$))", re.I), lambda m: _side_one(m, m.group(2))),
+    (re.compile(r"(?:(?<=[,;]\s)|(?<=\band\s))(?:the\s+)?(left|right|front|back)(?:[\s-]?(?:hand|most))?(?:\s+(?:one|"
+                r"tower|stack|column|wall|row))?\s+(?:(?:is|should\s+be|must\s+be|will\s+be|needs\s+to\s+be|"
+                r"has\s+to\s+be|is\s+to\s+be)\s+)?(?:(?P<sized>(?:\d+|one|two|three|four|five|six|seven|"
+                r"eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?))|(?P<bare>\d+|one|"
+                r"two|three|four|five|six|seven|eight|nine|ten))"
                 r"(?=\s*(?:,|;|\.|$))", re.I),
-     lambda m: f"one {m.group(2).removeprefix('is ')} "
-     + ("on the " if m.group(1).lower() in ("left", "right") else "at the ") + m.group(1).lower()),
+     lambda m: _side_one(m, m.group("sized") or _with_unit_before(m))),
+    # "Make two towers. One 5 high on the left, one 2 high on the right.": one sentence
+    (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|"
+                r"blocks))\s*\.\s+(?=one\s[^.;]*?\b(?:on|at)\s+the\s+(?:left|right|front|back)\b[^.;]*?,?"
+                r"\s*(?:and\s+)?(?:one|the\s+other)\s)", re.I), r"\1, "),
     # "four cubes in the four corners of the table": one in each corner
     (re.compile(r"\b(in|on|at|into)\s+(?:all\s+)?the\s+(?:four|4)\s+corners\b", re.I),
      r"\1 each corner"),
@@ -1071,7 +1117,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"at\s+(?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|\d{1,2})\b"
                 r"(?!\s*(?:cubes?|blocks?|high|tall|long|wide|levels?|steps?|mm|cm|m\b|x\b|by\b|[.,]\d))"
                 r"(?![^.;]*\b(?:taller|higher|more|bigger)\b)",  # "starting at 2, each one taller"
-                re.I), r"\1"),
+                re.I), lambda m: m.group(0) if _series_start(m) else m.group(1)),
     # "the big boss", "a big day", "a little while": a size word of a person or a time
     (re.compile(r"\b(?:big|large|little|small|tall|huge|tiny|short)\s+(?=(?:boss|bosses|day|deal|guy|"
                 r"girl|boy|man|woman|kid|kids|brother|sister|crowd|fan|thanks|question|favou?r|"

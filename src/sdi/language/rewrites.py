@@ -461,6 +461,22 @@ _REWRITES += [
         "{not_climb}",
         "",
     ),
+    (  # "three towers going up by one each starting at two": 2, 3 and 4
+        re.compile(
+            r"\b(?P<n>\d+|two|three|four|five|six)\s+(?P<kind>towers|stacks|columns|pillars)\s*,?\s*"
+            r"(?:going\s+up|rising|climbing|increasing|growing|getting\s+(?:taller|higher|bigger))"
+            # "… getting taller from left to right, starting at 1": one more each, unsaid
+            r"(?:\s+by\s+(?P<step>\d+|one|two|a)(?:\s+cubes?)?(?:\s+each(?:\s+time)?)?)?"
+            r"(?P<dir>\s+from\s+(?:the\s+)?(?:left\s+to\s+(?:the\s+)?right|right\s+to\s+(?:the\s+)?left|"
+            r"front\s+to\s+(?:the\s+)?back|back\s+to\s+(?:the\s+)?front))?"
+            r"\s*,?\s*(?:and\s+)?(?:starting|beginning)\s+"
+            r"(?:at|from|with)\s+(?P<first>\d+|one|two|three|four|five)(?:\s+cubes?)?"
+            r"(?:\s+(?:high|tall))?\b",
+            re.IGNORECASE,
+        ),
+        "{series}",
+        "",
+    ),
     (  # "three towers of 2, 4 and 6, ascending from right to left": taller towards the left
         re.compile(
             r",?\s*\b(?:ascending|rising|climbing|increasing|growing|getting\s+taller|going\s+up)"
@@ -688,17 +704,6 @@ _REWRITES += [
             + r"(?:and\s+)?(?:then\s+)?add(?:ing)?\s+(?P<step>\d+|one|two|a)\s+(?:more\s+)?"
             r"cubes?\s+(?:for|to|on|with)\s+(?:each|every)\s+(?:next|following|subsequent|further)\s+"
             r"(?:one|tower|stack|column)\b",
-            re.IGNORECASE,
-        ),
-        "{series}",
-        "",
-    ),
-    (  # "three towers going up by one each starting at two": 2, 3 and 4
-        re.compile(
-            r"\b(?P<n>\d+|two|three|four|five|six)\s+(?P<kind>towers|stacks|columns|pillars)\s*,?\s*"
-            r"(?:going\s+up|rising|climbing|increasing|growing|getting\s+taller)\s+by\s+"
-            r"(?P<step>\d+|one|two|a)(?:\s+cubes?)?(?:\s+each(?:\s+time)?)?\s*,?\s*(?:starting|beginning)\s+"
-            r"(?:at|from|with)\s+(?P<first>\d+|one|two|three|four|five)(?:\s+cubes?)?\b",
             re.IGNORECASE,
         ),
         "{series}",
@@ -1036,6 +1041,45 @@ _REWRITES += [
 
 
 _REWRITES += [
+    (  # "a row of 5 with a cube on each cube", "and on every cube of it another cube": a layer
+        re.compile(
+            r"\s*,?\s*\b(?:with|and|then|plus)\s+(?:(?:put|place|stack|add)\s+)?(?:another\s+|a\s+|one\s+)?"
+            r"(?:single\s+|second\s+)?(?:1-cube\s+tower|cube|block)\s+(?:on(?:\s+top\s+of)?|above|onto)\s+(?:each|every)\s+"
+            r"(?:single\s+)?(?:cube|one|part|block)(?:\s+of\s+(?:it|them|that))?"
+            r"|\s*,?\s*\b(?:and|then)\s+(?:put\s+|place\s+|stack\s+)?on\s+(?:top\s+of\s+)?(?:each|every)\s+"
+            r"(?:single\s+)?(?:cube|one|part|block)(?:\s+of\s+(?:it|them|that))?\s*,?\s*(?:another|a|one)\s+"
+            r"(?:more\s+)?(?:cube|block)\b",
+            re.IGNORECASE,
+        ),
+        ", then add another layer on top ",
+        "read '{0}' as another layer on top",
+    ),
+    (  # "a T with a 5 long top and a 3 long stem": the part of that length
+        re.compile(
+            r"\b(?:a|an|one)\s+(\d+)[- ](?:cubes?[- ])?(?:long|wide)\s+"
+            r"(top|stem|bar|crossbar|base)\b",
+            re.IGNORECASE,
+        ),
+        " a {1} of {0} ",
+        "",
+    ),
+    (
+        re.compile(
+            r"\b(?:a|an|one)\s+(\d+)[- ](?:cubes?[- ])?(?:long|wide)\s+(arm|upright)\b",
+            re.IGNORECASE,
+        ),
+        " an {1} of {0} ",
+        "",
+    ),
+    (  # "an arm of 4 and an arm of 2", "one arm of 4 and another arm of 2": the arms 4 and 2
+        re.compile(
+            r"\b(?:an|one)\s+arm\s+of\s+(\d+)(?:\s+cubes?)?\s*,?\s+and\s+(?:an|one|another|the\s+other)"
+            r"\s+arm\s+of\s+(\d+)(?:\s+cubes?)?",
+            re.IGNORECASE,
+        ),
+        " arms {0} and {1} ",
+        "",
+    ),
     (  # "a tower of 5 but leave off the top cube", "… without the top layer": taken off after
         re.compile(
             r"(?<=[a-z0-9])\s*,?\s*(?:but\s+|and\s+|only\s+)?(?:leave\s+(?:off|out)|leaving\s+(?:off|out)|"
@@ -2395,6 +2439,46 @@ def _bare_size(text: str, st: ReadState) -> str:
     return _BARE_SIZE.sub(sub, text)
 
 
+_ATTRIBUTIVE = re.compile(
+    r"\b(?P<art>a|an|one)\s+(?:(?:little|slightly|much|bit)\s+)?(?P<cmp>smaller|bigger|larger|taller|"
+    r"shorter|higher|lower|longer|wider|narrower)\s+(?=[a-z0-9])",
+    re.IGNORECASE,
+)
+_MORE = ("bigger", "larger", "taller", "higher", "longer", "wider")
+
+
+def _attributive(text: str, st: ReadState) -> str:
+    """ "a tower of 5 and a smaller tower of 3", "on it a smaller 2x2 slab": a comparative
+    said with the structure's own size is a claim about it — checked against the number said
+    last before, never a size of its own."""
+
+    def sub(m: re.Match[str]) -> str:
+        own = re.split(r"[,.;]|\band\b", text[m.end() :])[0]
+        said = re.search(r"\d+", own)
+        if not said or not re.search(r"[a-z]", own[: said.start()] + own[said.end() :]):
+            return m.group(0)  # "a smaller one": the comparison handlers' own
+        before = re.findall(r"\d+", _COUNTED_STRUCTURES.sub(" ", text[: m.start()]))
+        word = m.group("cmp").lower()
+        if before:
+            new, old = int(said.group(0)), int(before[-1])
+            if (new > old) != (word in _MORE) or new == old:
+                st.material.append(word)
+                st.notes.append(f"ignored '{word}': {new} is not {word} than the {old} said "
+                                "before")  # fmt: skip
+                return f"{m.group('art')} "
+            st.notes.append(f"'{word}': holds ({new} against the {old} said before)")
+        return f"{m.group('art')} "
+
+    return _ATTRIBUTIVE.sub(sub, text)
+
+
+_COUNTED_STRUCTURES = re.compile(
+    r"\b\d+\s+(?=(?:[a-z]+\s+)?(?:towers|stacks|columns|rows|walls|pyramids|blocks|slabs|layers|"
+    r"bridges|arches|staircases)\b)",
+    re.IGNORECASE,
+)
+
+
 _BEAM_CUBES = 3  # the cell's beam part: 0.15 m, three cube lengths (`sdi.model.cell`)
 _BEAM_SIZE = re.compile(
     r"\b(?:(?P<n>\d+)[- ](?:cube|block|part)s?[- ](?:long[- ])?|(?P<m>\d+(?:\.\d+)?)\s*"
@@ -2436,6 +2520,22 @@ _SIZED_BASE = re.compile(
     r"(?:\s+(?P<own>layer|slab|plate|pad|block|platform)\b)?",
     re.IGNORECASE,
 )
+
+
+_SINGLE_LAYER = re.compile(
+    r"\b(?:a|one)\s+(?:single|flat|one[- ]cube[- ]thick)\s+layer\s+of\s+(?:cubes|blocks|parts)\b",
+    re.I,
+)
+
+
+def _single_layer(text: str) -> str:
+    """ "fill the front left with a single layer of cubes": a layer, when nothing else in the
+    command is the structure it would be the height of."""
+    m = _SINGLE_LAYER.search(text)
+    rest = re.sub(r"\bthe\s+table\b", " ", text[: m.start()] + text[m.end() :]) if m else ""
+    if m and not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", rest.lower())):
+        return f"{text[: m.start()]}a layer of cubes{text[m.end() :]}"
+    return text
 
 
 def _sized_base(text: str, st: ReadState) -> str:
@@ -3271,7 +3371,7 @@ def rewrite(text: str, st: ReadState) -> str:
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
     text = _level_labels(_level_list(text, st), st)
-    text = _sized_base(_beam_size(text, st), st)
+    text = _attributive(_sized_base(_beam_size(_single_layer(text), st), st), st)
     text = _tetris(text, st)
 
     def on_end(m: re.Match[str]) -> str:
