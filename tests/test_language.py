@@ -6806,3 +6806,25 @@ def test_a_comparative_said_with_its_own_size_is_checked():
     assert r.status == "success" and sorted(_columns(r).values()) == [5, 7]
     r = plan("a tower of 5 and a taller tower of 3")
     assert r.status == "partial" and any("3 is not taller" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # "at its centre" after "then" was the table's centre: the tower beside the slab
+        "a 3x3 slab, then a tower of 3 at its centre",
+        "a 3x3 slab, then a tower of 3 in its middle",
+        # "couse" was corrected to "goes" by its sound; an engineer's pier was no structure
+        "Construct a 3x3 slab, one couse thick, then a 1x1 pier of 3 coures at its centre.",
+    ],
+)
+def test_its_centre_is_the_structure_s_named_before(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    heights = _heights(r.layout)
+    assert len(heights) == 9 and max(heights.values()) == 4
+
+
+def test_an_engineer_s_pier_is_a_column():
+    r = plan("Erect a single pier, 5 courses high.")  # was an error: nothing named
+    assert r.status == "success" and list(_columns(r).values()) == [5]

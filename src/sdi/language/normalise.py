@@ -444,6 +444,14 @@ _SERIES_BEFORE = re.compile(
 
 
 
+def _of_it(m: re.Match[str]) -> str:
+    """ "a 3x3 slab, then a tower at its centre": the slab's middle ("of it"), where nothing
+    in the sentence before ("with", "on top of") already relates the two."""
+    sentence = re.split(r"[.;]", m.string[: m.start()])[-1]
+    related = re.search(r"\b(?:with|on\s+top\s+of|around|inside)\b", sentence, re.I)
+    return "" if related else "of it "
+
+
 def _series_start(m: re.Match[str]) -> bool:
     """ "three towers going up by one each starting at two": not a time of day."""
     sentence = re.split(r"[.;]", m.string[: m.start()])[-1]
@@ -1567,9 +1575,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "between neighbouring columns" is between them, a "ground-floor slab" a slab
     (re.compile(r"\b(?:an?\s+)?colonnade\s+(?:of|with)\s+(?=\d|two|three|four|five|six|seven|eight)",
                 re.I), ""),
-    (re.compile(r"\bpier(s?)\b", re.I),  # a bridge's piers are its pillars (a deck on them)
+    # a bridge's piers are its pillars (a deck on them)
+    (re.compile(r"\bpier(s?)\b(?!\s+a\s*mid)", re.I),
      lambda m: ("pillar" + m.group(1)) if _BRIDGE.search(m.string) or _DECK.search(m.string)
-     else m.group(0)),
+     else m.group(0) if re.search(r"\b(?:lintels?|beams?|girders?|spans?|across)\b", m.string, re.I)
+     else ("column" + m.group(1))),  # an engineer's standing alone are columns
     (re.compile(r"\bbetween\s+(?:neighbouring|neighboring|adjacent)\s+(?:columns|towers|stacks|pillars)\b",
                 re.I), "between them"),
     (re.compile(r"\bground[\s-]+floor\s+(?=slab|plate|pad|platform|layer)", re.I), ""),
@@ -1639,7 +1649,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bfrom\s+the\s+desk\s+of\s+[^:]{1,40}:", re.I), " "),
     # "a ring …, with a tower standing at its center": in its middle (not the table's)
     (re.compile(r"\b(?:standing\s+|placed\s+|set\s+)?(?:at|in)\s+its\s+(?:very\s+)?(?:centre|center|"
-                r"middle)\b", re.I), " in the middle "),
+                r"middle)\b", re.I), lambda m: " in the middle " + _of_it(m)),
     # "with a tower in the middle, not touching the ring": inside it, clear of it anyway
     (re.compile(r"\b(in\s+the\s+middle)\s*,?\s*(?:but\s+)?not\s+touching\s+(?:it|them|the\s+\w+)\b",
                 re.I), r"\1"),

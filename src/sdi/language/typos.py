@@ -234,6 +234,11 @@ _WHOLE = sorted(
 )  # fmt: skip
 
 
+def _one_letter_dropped(w: str, word: str) -> bool:
+    """`w` is `word` with one letter left out ("couse", "coures" of course)."""
+    return len(word) == len(w) + 1 and any(word[:i] + word[i + 1 :] == w for i in range(len(word)))
+
+
 def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
     """`text` with typos replaced, and a note per correction. `aggressive` also corrects
     words the English vocabulary knows ("wal"), for a command nothing else could read."""
@@ -319,6 +324,7 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
         if (
             heard
             and heard != top[0]
+            and not _one_letter_dropped(w, top[0])  # "couse" is no "goes" but a course
             and sorted(top[0]) != sorted(w)  # "rign": letters swapped, not a sound
             and jellyfish.metaphone(top[0]) != jellyfish.metaphone(w)
         ):
