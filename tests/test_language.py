@@ -6828,3 +6828,25 @@ def test_its_centre_is_the_structure_s_named_before(command):
 def test_an_engineer_s_pier_is_a_column():
     r = plan("Erect a single pier, 5 courses high.")  # was an error: nothing named
     assert r.status == "success" and list(_columns(r).values()) == [5]
+
+
+@pytest.mark.parametrize(
+    "command, shape, slots",
+    [
+        # "3 is enough" was dropped as a size agreed: 4 levels, silently
+        ("A pyramid with 4 levels - actually 3 is enough.", "pyramid", {"height": 3}),
+        # two staircases (partial)
+        ("Staircase, 5 steps. Or... let's do 3 steps instead.", "staircase", {"steps": 3}),
+        # "change that, legs 4 high": a bridge and a tower of 4 beside it, silently
+        ("Bridge with legs 2 high; change that, legs 4 high.", "bridge", {"height": 4}),
+        # both built (partial)
+        ("Build an arch. Never mind, a tower of 2 instead.", "tower", {"height": 2}),
+        ("Put a tower of 3 in the back right corner. Hmm, no, front left corner.", "tower",
+         {"region": "front left"}),
+    ],
+)  # fmt: skip
+def test_a_change_of_mind_replaces_what_it_corrects(command, shape, slots):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    (s,) = r.spec.structures
+    assert s.shape == shape and {k: getattr(s, k) for k in slots} == slots

@@ -18,9 +18,10 @@ _MARKER = re.compile(
     r"\s*[,.;:!?…—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+meant?|make\s+that|correction|actually\s*,?\s*no|"
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
-    r"on\s+second\s+thoughts?|change\s+of\s+plan|"
+    r"on\s+second\s+thoughts?|change\s+of\s+plan|change\s+that|never\s*mind|nvm|"
     r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*|"
     r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment)\s*:\s*|"  # a ticket's later line
+    r"\s*[,.;!—–-]*\s*\bor\s*(?:\.{2,}|…)\s*|"  # "Staircase, 5 steps. Or... let's do 3 steps"
     # "… 5 cm apart. Then make the gap 15 cm": the gap said again, changed
     r"\s*[,.;!—–-]+\s*(?:then\s+|now\s+)?(?:make|change|set|widen|narrow)\s+the\s+"
     r"(?:gap|spacing|space|distance)(?:\s+between\s+them)?(?:\s+to)?\s+(?=\d)",
@@ -65,7 +66,8 @@ _FILLER = re.compile(
 
 _HEDGE = re.compile(
     r"\s*,?\s*\b(?:i\s+think|i\s+guess|i\s+reckon|i\s+suppose|i'?d\s+say|probably|maybe|perhaps|"
-    r"or\s+so)\s*$",
+    r"or\s+so|instead|(?:is|will|would|should)\s+(?:be\s+)?(?:enough|plenty|fine|ok|okay|good|"
+    r"better|sufficient|do))\s*$",
     re.IGNORECASE,
 )
 
@@ -203,7 +205,8 @@ def _regrouped(taken_back: str, new: str) -> str:
 def _noun_first(before: str, value: str, rest: str, notes: list[str]) -> str | None:
     """ "a pyramid with base 4... no, base 3": the number said after the same noun, replaced
     (the noun alone was read as another structure, a platform)."""
-    m = re.fullmatch(rf"([a-z]+)\s+(?:of\s+|is\s+)?({_NUMBER})", value, re.IGNORECASE)
+    m = re.fullmatch(rf"([a-z]+)\s+(?:of\s+|is\s+)?({_NUMBER})(?:\s+(?:cubes?\s+)?{_DIM_WORDS})?",
+                     value, re.IGNORECASE)  # fmt: skip  # "legs 2 high; change that, legs 4 high"
     if m is None:
         return None
     olds = list(re.finditer(rf"\b{re.escape(m.group(1))}\s+(?:of\s+|is\s+)?({_NUMBER})\b", before,
@@ -328,6 +331,9 @@ def _corrected(text: str, notes: list[str], material: list[str] | None = None) -
         side = _OF_IT.sub("", value)  # "to the right of it": the side of the same relation
         if side != value and _kind(side) == "region":
             value = side
+        place = re.sub(r"\s+(?:hand\s+)?(?:corner|side|edge)$", "", value, flags=re.I)
+        if place != value and _kind(place) == "region":
+            value = place  # "in the back right corner. Hmm, no, front left corner."
         kind = _kind(value) if value and not _names_structure(value) else None
         renamed = _noun_first(before, value, rest, notes)  # "with base 4... no, base 3"
         if renamed is not None:

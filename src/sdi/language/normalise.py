@@ -444,6 +444,10 @@ _SERIES_BEFORE = re.compile(
 
 
 
+# "4 levels - actually 3 is enough": a correction's new value, not a size agreed
+_CORRECTING = re.compile(r"\b(?:actually|no|wait|sorry|rather|instead|or)\s*[,.…-]*\s*$", re.I)
+
+
 def _of_it(m: re.Match[str]) -> str:
     """ "a 3x3 slab, then a tower at its centre": the slab's middle ("of it"), where nothing
     in the sentence before ("with", "on top of") already relates the two."""
@@ -1587,7 +1591,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r",?\s*\bas\s+an?\s+(?:\w+\s+)?(?:study|test|demo|mock-?up|example|sample|trial|"
                 r"placeholder|stand-?in|dummy)\b", re.I), ""),
     (re.compile(r"\b(?:(?:yes|yeah|ok|okay)\s*,?\s*)?(?:\d+\s*(?:x|by)\s*\d+|\d+|one|two|three|four|five|six)"
-                r"\s+(?:is|'s)\s+(?:fine|ok|okay|good|right|correct|perfect|enough)\b", re.I), ""),
+                r"\s+(?:is|'s)\s+(?:fine|ok|okay|good|right|correct|perfect|enough)\b", re.I),
+     lambda m: m.group(0) if _CORRECTING.search(m.string[: m.start()]) else ""),  # "actually 3 is"
     # "table's clear", "the table is empty": the work table; "I packed the test pieces away":
     # what was done before; "a 2x2 tower of 3": a 2 by 2 block 3 high
     (re.compile(r"\b(?:the\s+)?(?:work\s*)?table(?:'s|\s+is)\s+(?:now\s+)?(?:clear|empty|free|ready|clean)"
