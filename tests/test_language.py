@@ -6850,3 +6850,56 @@ def test_a_change_of_mind_replaces_what_it_corrects(command, shape, slots):
     assert r.status == "success", r.notes
     (s,) = r.spec.structures
     assert s.shape == shape and {k: getattr(s, k) for k in slots} == slots
+
+
+@pytest.mark.parametrize(
+    "command, left_to_right",
+    [
+        # "the 5 on the left" placed both towers on the left, silently
+        ("two towers, 3 and 5 high, the 5 on the left", [5, 3]),
+        # "one is 4 high and one is 2 high": both 4 (partial)
+        ("Two towers make, one is 4 high and one is 2 high", None),
+        # "one of height two and one of height six": both of 1 (partial)
+        ("two towers um one of height two and one of height six uh with the six on the right",
+         [2, 6]),
+    ],
+)
+def test_one_each_said_by_its_size(command, left_to_right):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    heights = [h for _, h in sorted(cols.items(), key=lambda kv: -kv[0][1])]
+    if left_to_right is None:
+        assert sorted(heights) == [2, 4]
+    else:
+        assert heights == left_to_right
+
+
+def test_every_corner_of_the_table_should_have_one():
+    # one tower, silently
+    r = plan("In the end, every corner of the table should have a tower of 2 cubes.")
+    assert r.status == "success" and sorted(_columns(r).values()) == [2, 2, 2, 2]
+
+
+@pytest.mark.parametrize(
+    "command, sides",
+    [
+        # "on each side" was one at each end: a row beside the slab (partial)
+        ("Let's make a square mat that is 20 centimetres on each side", (4, 4, 1)),
+        # "a cube": a count of one beside its sides (partial)
+        ("build a cube thats 10cm on every side", (2, 2, 2)),
+        ("Result: a cube made of cubes, three on each edge.", (3, 3, 3)),
+    ],
+)
+def test_a_size_said_on_each_side(command, sides):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert tuple(round(float(v) / 0.05) for v in hi.max(0) - lo.min(0)) == sides
+
+
+def test_a_courtesy_tail_does_not_cut_the_relation():
+    # "on top of it, if that's ok": 'it, if that's ok' was no structure; the tower beside
+    r = plan("Could you put a 2x2 slab down and then stack a tower of 3 on top of it, if that's "
+             "ok?")  # fmt: skip
+    assert r.status == "success" and max(_heights(r.layout).values()) == 4

@@ -239,6 +239,10 @@ def _block_from_count(
             key = "height" if h is None else ("width" if w is None else "length")
             notes.append(f"{count} parts in a block: {key} {third}")
             return spec.model_copy(update={key: third, "count": None})
+    if count == 1 and len(known) == 3 and length == w == h:
+        # "a cube 10 cm on every side": the name of an equal-sided block, not a count
+        notes.append("read 'a cube' with its three sides as a block of that size")
+        return spec.model_copy(update={"count": None})
     notes.append(f"ignored count={count}: a block's part count follows from its sides")
     material.append(f"count={count}")
     return spec.model_copy(update={"count": None})

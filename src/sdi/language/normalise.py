@@ -191,7 +191,12 @@ _FOREIGN_COURTESY = re.compile(
     r"ja|jawohl|genau|fertig|kisses|besos|beijos)\b[!.,]?",
     re.IGNORECASE,
 )
-_CHAT_COURTESY = re.compile(r"\b(?:rn|tysm|thx|thnx|tx|ty|lol|lmao|asap)\b", re.IGNORECASE)
+_CHAT_COURTESY = re.compile(
+    r"\b(?:rn|tysm|thx|thnx|tx|ty|lol|lmao|asap)\b|,?\s*\bif\s+(?:that'?s|that\s+is|it'?s|it\s+is)\s+"
+    r"(?:ok|okay|alright|all\s+right|fine|possible|not\s+too\s+much\s+trouble)\b|,?\s*\bif\s+you\s+"
+    r"(?:can|could|don'?t\s+mind|do\s+not\s+mind)\b|,?\s*\bif\s+possible\b",
+    re.IGNORECASE,
+)
 """A chat's "right now", "thank you so much", "thanks", "lol" (its full stop kept)."""
 
 
@@ -448,12 +453,54 @@ _SERIES_BEFORE = re.compile(
 _CORRECTING = re.compile(r"\b(?:actually|no|wait|sorry|rather|instead|or)\s*[,.…-]*\s*$", re.I)
 
 
+_THE_N_PLACED = re.compile(
+    rf"\s*,?\s*(?:with\s+|and\s+)?the\s+({_NUM})(?:[\s-]high|[\s-]tall)?(?:\s+one)?\s+(?:is\s+|goes\s+|"
+    r"should\s+be\s+|stands\s+)?((?:on|at|in|to)\s+the\s+(?:far\s+)?(?:left|right|front|back)(?:[\s-]hand)?"
+    r"(?:\s+side)?)\b",
+    re.IGNORECASE,
+)
+_UNIT = r"(?:cubes?\s+)?(?:high|tall|long)"
+
+
+def _placed_by_size(text: str) -> str:
+    """ "two towers, 3 and 5 high, the 5 on the left", "one of height two and one of height six,
+    with the six in the back": the one of that size placed there (the place went to both,
+    silently)."""
+    m = _THE_N_PLACED.search(text)
+    if m is None:
+        return text
+    n, where = m.group(1).lower(), m.group(2)
+    sentence = max(text.rfind(".", 0, m.start()), text.rfind(";", 0, m.start())) + 1
+    before, after = text[sentence : m.start()], text[m.end() :]
+    ones = [o for o in re.finditer(rf"\bone\s+({_NUM})\s+{_UNIT}", before, re.I)
+            if o.group(1).lower() == n]  # fmt: skip
+    if len(ones) == 1:
+        at = ones[0].end()
+        return f"{text[:sentence]}{before[:at]} {where}{before[at:]}{after}"
+    pair = re.search(rf"\b(?:of\s+)?({_NUM})\s+and\s+({_NUM})(\s+{_UNIT})?\s*$", before, re.I)
+    if pair is None or n not in (pair.group(1).lower(), pair.group(2).lower()):
+        return text
+    a, b = pair.group(1), pair.group(2)
+    unit = pair.group(3)
+    one_a, one_b = (f"one {a}{unit}", f"one {b}{unit}") if unit else (f"one of {a}", f"one of {b}")
+    said = f"{one_a} {where} and {one_b}" if a.lower() == n else f"{one_a} and {one_b} {where}"
+    lead = before[: pair.start()].rstrip()
+    return f"{text[:sentence]}{lead}, {said}{after}"
+
+
 def _of_it(m: re.Match[str]) -> str:
     """ "a 3x3 slab, then a tower at its centre": the slab's middle ("of it"), where nothing
     in the sentence before ("with", "on top of") already relates the two."""
     sentence = re.split(r"[.;]", m.string[: m.start()])[-1]
     related = re.search(r"\b(?:with|on\s+top\s+of|around|inside)\b", sentence, re.I)
     return "" if related else "of it "
+
+
+def _each_side(m: re.Match[str]) -> str:
+    """ "20 cm on each side": 20 cm by 20 cm; of a cube or a box, by 20 cm a third time."""
+    said = m.group(1) or m.group(2)
+    solid = re.search(r"\b(?:cube|box|block)\b[^.;]*$", m.string[: m.start()], re.I)
+    return f"{said} by {said} by {said}" if solid else f"{said} by {said}"
 
 
 def _series_start(m: re.Match[str]) -> bool:
@@ -821,6 +868,28 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"(\bon\s+top\s+of\s+(?:that|it|this)\b[^.;]*?)\s*,?\s+and\s+(?:then\s+)?"
                 r"(on\s+top\s+of\s+(?:that|it|this)|on\s+(?:that|it|this)|above\s+(?:that|it|this))\s+"
                 r"(?=(?:a|an|one|another|\d+)\b)", re.I), r"\1. \2 "),
+    # "Two towers make, one 4 high …": the verb after its object
+    (re.compile(r"\b((?:two|three|four|five|[2-9])\s+(?:towers|walls|rows|stacks|columns|blocks|pyramids))"
+                r"\s+(make|build)\b", re.I), r"\2 \1"),
+    # "two towers one two high and one six high": one each, said without a comma
+    (re.compile(r"\b((?:two|three|four|five|[2-9])\s+(?:towers|walls|rows|stacks|columns|pillars))\s+"
+                r"(?=(?:(?:um+|uh+|er+|erm)\s+)*one\s+(?:is\s+|being\s+|of\s+(?:a\s+)?height\s+(?:of\s+)?)?"
+                r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)", re.I), r"\1, "),
+    # "one is 4 high and one is 2 high", "one of height two and one of height six": one each
+    (re.compile(r"\b(one|another|the\s+other)\s+(?:is\s+|being\s+|of\s+|with\s+)(?:a\s+)?height\s+"
+                r"(?:of\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:cm|mm|m)\b)",
+                re.I), r"\1 \2 high"),
+    (re.compile(r"\b(one|another|the\s+other)\s+(?:is|being)\s+(\d+|one|two|three|four|five|six|seven|"
+                r"eight|nine|ten)\s+((?:cubes?\s+)?(?:high|tall|long|wide))\b", re.I), r"\1 \2 \3"),
+    # "every corner of the table should have a tower of 2": one in each corner
+    (re.compile(r"\b(?:each|every|all(?:\s+four)?(?:\s+the)?)\s+corners?\s+of\s+the\s+(table|workspace|"
+                r"cell)\s+(?:should|must|shall|will|is\s+to|has\s+to|needs\s+to)?\s*(?:have|get|gets|has|"
+                r"hold|holds|needs)\s+(an?\s+[^.,;]+)", re.I), r"\2 in each corner of the \1"),
+    # "a tile 20 cm on each side", "a cube 10cm on every side", "three on each edge": its sides
+    (re.compile(r"\b(?:(\d+(?:\.\d+)?\s*(?:cm|mm|m|cubes?|(?:centi|milli)?met(?:re|er)s))\s+(?:on|per|along|"
+                r"for)\s+(?:each|every|a|one)\s+(?:side|edge)|(\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
+                r"(?:on|per|along)\s+(?:each|every|an?)\s+edge)\b(?!\s+of\b)", re.I),
+     lambda m: _each_side(m)),
     # "a 3x3 slab with a 2x2 slab on top and a cube on top of that": stacked in turn
     (re.compile(r"(\bon\s+(?:top|it)(?:\s+of\s+it)?\s*,?\s*)and\s+(?=(?:then\s+)?(?:an?|one|"
                 r"a\s+single|single)\s+[^,.;]{0,40}?\bon\s+(?:top\s+of\s+)?(?:that|this|the\s+\w+)\b)",
@@ -2624,6 +2693,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _SQUARED.sub(squared, text)  # "the square of 3", "3 squared"
     for pattern, repl in _PHRASINGS:
         text = pattern.sub(repl, text)  # "tower from 5 cubes", "behind of wall", "near to"
+    text = _placed_by_size(text)  # "3 and 5 high, the 5 on the left": the one of 5 there
     text = _SIDE_OF.sub(_side_of, text)  # "near to wall, on front side of it"
     text = _OFFSET_FROM_LAST.sub(_from_last, text)  # "then another row 1 cube to the left"
     # an aside in parentheses belongs to the noun before it: "the wall (3 long, 2 high)"
