@@ -6903,3 +6903,39 @@ def test_a_courtesy_tail_does_not_cut_the_relation():
     r = plan("Could you put a 2x2 slab down and then stack a tower of 3 on top of it, if that's "
              "ok?")  # fmt: skip
     assert r.status == "success" and max(_heights(r.layout).values()) == 4
+
+
+def test_the_one_of_a_size_kept_on_a_side():
+    # "and 4 one keep on right side": the 2 on the right, silently
+    r = plan("Two towers make, one is 4 high and one is 2 high, and 4 one keep on right side.")
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    assert [h for _, h in sorted(cols.items(), key=lambda kv: kv[0][1])] == [4, 2]
+
+
+def test_a_gap_said_with_walls_side_by_side_is_between_them():
+    # "side by side with a gap": refused as no wall parameter (partial)
+    r = plan("Could you make 2 walls, each 3 long and 3 high, side by side with a gap?")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    ys = sorted(set(np.round((lo[:, 1] + hi[:, 1]) / 2, 3)))
+    steps = sorted(np.round(np.diff(ys), 3))  # along the line: 0.05 in a wall, 0.1 at the gap
+    assert len(ys) == 6 and steps == [0.05] * 4 + [0.1]
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # "give each tower three cubes": a sixth tower of 3 beside five default ones (partial)
+        ("make five towers and give each tower three cubes", [3, 3, 3, 3, 3]),
+        # "over it": the tower beside the plate (partial)
+        ("First make one 2 by 3 plate, after that put one tower of 2 cubes over it.", None),
+    ],
+)
+def test_each_and_over_it_in_plain_words(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    if heights:
+        assert sorted(_columns(r).values()) == heights
+    else:
+        assert max(_heights(r.layout).values()) == 3

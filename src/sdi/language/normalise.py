@@ -454,9 +454,9 @@ _CORRECTING = re.compile(r"\b(?:actually|no|wait|sorry|rather|instead|or)\s*[,.â
 
 
 _THE_N_PLACED = re.compile(
-    rf"\s*,?\s*(?:with\s+|and\s+)?the\s+({_NUM})(?:[\s-]high|[\s-]tall)?(?:\s+one)?\s+(?:is\s+|goes\s+|"
-    r"should\s+be\s+|stands\s+)?((?:on|at|in|to)\s+the\s+(?:far\s+)?(?:left|right|front|back)(?:[\s-]hand)?"
-    r"(?:\s+side)?)\b",
+    rf"\s*,?\s*(?:with\s+|and\s+)?(?:the\s+({_NUM})(?:[\s-]high|[\s-]tall)?(?:\s+one)?|({_NUM})\s+one)\s+"
+    r"(?:is\s+|goes\s+|should\s+be\s+|stands\s+|keep\s+|put\s+|place\s+|set\s+)?((?:on|at|in|to)\s+"
+    r"the\s+(?:far\s+)?(?:left|right|front|back)(?:[\s-]hand)?(?:\s+side)?)\b",
     re.IGNORECASE,
 )
 _UNIT = r"(?:cubes?\s+)?(?:high|tall|long)"
@@ -469,7 +469,7 @@ def _placed_by_size(text: str) -> str:
     m = _THE_N_PLACED.search(text)
     if m is None:
         return text
-    n, where = m.group(1).lower(), m.group(2)
+    n, where = (m.group(1) or m.group(2)).lower(), m.group(3)
     sentence = max(text.rfind(".", 0, m.start()), text.rfind(";", 0, m.start())) + 1
     before, after = text[sentence : m.start()], text[m.end() :]
     ones = [o for o in re.finditer(rf"\bone\s+({_NUM})\s+{_UNIT}", before, re.I)
@@ -875,6 +875,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b((?:two|three|four|five|[2-9])\s+(?:towers|walls|rows|stacks|columns|pillars))\s+"
                 r"(?=(?:(?:um+|uh+|er+|erm)\s+)*one\s+(?:is\s+|being\s+|of\s+(?:a\s+)?height\s+(?:of\s+)?)?"
                 r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)", re.I), r"\1, "),
+    # "make five towers and give each tower three cubes": each that high
+    (re.compile(r"\s*,?\s*\b(?:and\s+)?(?:give|make)\s+(?:each|every)\s+(?:one|tower|stack|column|"
+                r"pillar)\s+(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes|blocks)\b",
+                re.I),
+     r", each \1 cubes high"),
+    # "put one tower of 2 cubes over it": on top of it
+    (re.compile(r"\b((?:tower|stack|column|cube|block|row|layer|slab|pyramid|wall)s?(?:\s+of\s+\S+"
+                r"(?:\s+cubes?)?)?)\s+over\s+(it|that|this)\b", re.I), r"\1 on top of \2"),
     # "one is 4 high and one is 2 high", "one of height two and one of height six": one each
     (re.compile(r"\b(one|another|the\s+other)\s+(?:is\s+|being\s+|of\s+|with\s+)(?:a\s+)?height\s+"
                 r"(?:of\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:cm|mm|m)\b)",

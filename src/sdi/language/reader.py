@@ -669,22 +669,29 @@ def _stacking_on(
     return out
 
 
+_SPACED = ("row", "grid")  # the families whose parts can stand apart (a gap of their own)
+
+
 def _apart(drafts: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
     """ "Three rows, spaced out", "a 2x2 pad and a 3x3 pad, not touching": with several
     structures a vague "apart" is about the structures (which stand apart anyway), not the
     parts inside each one."""
     spaced = any(n.endswith("as a part's width apart") for n in st.notes)
     between = _SIDE_BY_SIDE_GAP.search(st.command)  # "… side by side with a little gap"
-    towers = any(d.shape == "tower" and d.gap_m is not None for d in drafts)
+    towers = any(d.shape not in _SPACED and d.gap_m is not None for d in drafts)
     if len(drafts) < 2 or not (spaced or between or towers):
         return drafts
     out = []
     for d in drafts:
-        if d.shape == "tower" and d.gap_m is not None:
-            # "a tower of 4, with one block in between": a tower has no gaps of its own
+        if d.shape not in _SPACED and d.gap_m is not None and (
+            d.shape == "tower" or st.gap_m in (None, d.gap_m)  # a copy's, said once for both
+        ):
+            # "a tower of 4, with one block in between", "2 walls side by side with a gap": a
+            # tower or a wall has no gaps of its own
             if st.gap_m is None:  # a gap said for the structures already holds ("10 cm apart")
                 st.gap_m = d.gap_m
-                st.notes.append(f"read the gap said with the tower as {d.gap_m:g} m between them")
+                st.notes.append(f"read the gap said with the {d.shape} as {d.gap_m:g} m between "
+                                "them")  # fmt: skip
             out.append(d.model_copy(update={"gap_m": None}))
             continue
         if d.shape in ("row", "grid") and d.gap_m is not None:
