@@ -707,7 +707,7 @@ def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" {value} "
 
 
-_COUNTED = re.compile(
+COUNTED = re.compile(
     r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?=(?:[a-z]+\s+)?(?:"
     + "|".join(sorted(STRUCTURE_PLURALS, key=len, reverse=True))
     + r")\b)",
@@ -730,7 +730,7 @@ def _said_last(m: re.Match[str]) -> int | None:
             )
             if sizes:
                 return int(words_to_numbers([sizes[-1].lower()])[0])
-    told = _COUNTED.sub(" ", m.string[: m.start()])  # "two towers, one twice as tall": no size
+    told = COUNTED.sub(" ", m.string[: m.start()])  # "two towers, one twice as tall": no size
     before = re.findall(r"[a-z]+|\d+", told.lower())
     if before and before[-1] in ("one", "a"):
         before = before[:-1]  # "beside it one half its height": the one being compared

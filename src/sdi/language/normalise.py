@@ -448,7 +448,6 @@ _SERIES_BEFORE = re.compile(
 )
 
 
-
 # "4 levels - actually 3 is enough": a correction's new value, not a size agreed
 _CORRECTING = re.compile(r"\b(?:actually|no|wait|sorry|rather|instead|or)\s*[,.…-]*\s*$", re.I)
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 import itertools
 import re
 
-from sdi.language.handlers import HANDLERS
+from sdi.language.handlers import COUNTED, HANDLERS
 from sdi.language.normalise import SPACES
 from sdi.language.nouns import shape_alternation
 from sdi.language.state import ReadState
@@ -2457,7 +2457,7 @@ def _attributive(text: str, st: ReadState) -> str:
         said = re.search(r"\d+", own)
         if not said or not re.search(r"[a-z]", own[: said.start()] + own[said.end() :]):
             return m.group(0)  # "a smaller one": the comparison handlers' own
-        before = re.findall(r"\d+", _COUNTED_STRUCTURES.sub(" ", text[: m.start()]))
+        before = re.findall(r"\d+", COUNTED.sub(" ", text[: m.start()]))
         word = m.group("cmp").lower()
         if before:
             new, old = int(said.group(0)), int(before[-1])
@@ -2471,12 +2471,6 @@ def _attributive(text: str, st: ReadState) -> str:
 
     return _ATTRIBUTIVE.sub(sub, text)
 
-
-_COUNTED_STRUCTURES = re.compile(
-    r"\b\d+\s+(?=(?:[a-z]+\s+)?(?:towers|stacks|columns|rows|walls|pyramids|blocks|slabs|layers|"
-    r"bridges|arches|staircases)\b)",
-    re.IGNORECASE,
-)
 
 
 _BEAM_CUBES = 3  # the cell's beam part: 0.15 m, three cube lengths (`sdi.model.cell`)
