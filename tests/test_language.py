@@ -6939,3 +6939,13 @@ def test_each_and_over_it_in_plain_words(command, heights):
         assert sorted(_columns(r).values()) == heights
     else:
         assert max(_heights(r.layout).values()) == 3
+
+
+def test_a_beam_s_length_is_checked_against_the_cell_s_beam():
+    from sdi.model.cell import CellConfig
+
+    cell = CellConfig(part_types={"cube": (0.05, 0.05, 0.05), "beam": (0.2, 0.05, 0.05)})
+    reading = read("two towers of 3 with a 4-cube beam on top", cell)
+    assert any("as SDI's beam (4 cubes, 0.2 m long)" in n for n in reading.notes)
+    reading = read("two towers of 3 with a 3-cube beam on top", cell)
+    assert any("SDI's beam is 4 cubes (0.2 m) long" in n for n in reading.notes)

@@ -420,6 +420,22 @@ _LETTER_BEFORE = re.compile(
 )
 """A letter shape named earlier in the sentence ("an L shape with …", "U-shape, …"); not a
 letter-shaped wall, whose "4 by 3" would be its length and height."""
+
+
+def _sentence_before(text: str, at: int) -> str:
+    """The words of the sentence `text` is in at `at`, up to there."""
+    return re.split(r"[.;]", text[:at])[-1]
+
+
+_SIDE_ONE = (
+    r"(?:the\s+)?(left|right|front|back)(?:[\s-]?(?:hand|most))?(?:\s+(?:one|tower|stack|column|"
+    r"wall|row))?\s+(?:(?:is|should\s+be|must\s+be|will\s+be|needs\s+to\s+be|has\s+to\s+be|"
+    r"is\s+to\s+be)\s+)?"
+)
+"""'the left one should be', 'right': one of several, named by its side."""
+_SIDE_SIZE = rf"{_NUM}\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?)"
+
+
 def _side_one(m: re.Match[str], size: str | None) -> str:
     """ "the left one 5 high": one 5 high on the left (a size with no unit: left as said)."""
     if size is None:
@@ -431,16 +447,14 @@ def _side_one(m: re.Match[str], size: str | None) -> str:
 def _with_unit_before(m: re.Match[str]) -> str | None:
     """ "the left one 5 high, the right one 2": the bare 2 in the unit of the one before."""
     said = re.findall(
-        r"\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+((?:cubes?\s+)?(?:high|tall|"
-        r"long|wide|levels?))\b",
-        re.split(r"[.;]", m.string[: m.start()])[-1],
+        rf"\b{_NUM}\s+((?:cubes?\s+)?(?:high|tall|long|wide|levels?))\b",
+        _sentence_before(m.string, m.start()),
         re.I,
     )
     return f"{m.group('bare')} {said[-1]}" if said else None
 
 
 # "three towers going up by one each starting at two": a series' first height, not a time
-_SERIES_START = re.compile(r"start|begin", re.I)
 _SERIES_BEFORE = re.compile(
     r"\b(?:towers|stacks|columns|pillars|heights|going\s+up|rising|climbing|increasing|growing|"
     r"getting|ascending)\b",
@@ -469,8 +483,8 @@ def _placed_by_size(text: str) -> str:
     if m is None:
         return text
     n, where = (m.group(1) or m.group(2)).lower(), m.group(3)
-    sentence = max(text.rfind(".", 0, m.start()), text.rfind(";", 0, m.start())) + 1
-    before, after = text[sentence : m.start()], text[m.end() :]
+    before, after = _sentence_before(text, m.start()), text[m.end() :]
+    sentence = m.start() - len(before)
     ones = [o for o in re.finditer(rf"\bone\s+({_NUM})\s+{_UNIT}", before, re.I)
             if o.group(1).lower() == n]  # fmt: skip
     if len(ones) == 1:
@@ -490,7 +504,7 @@ def _placed_by_size(text: str) -> str:
 def _of_it(m: re.Match[str]) -> str:
     """ "a 3x3 slab, then a tower at its centre": the slab's middle ("of it"), where nothing
     in the sentence before ("with", "on top of") already relates the two."""
-    sentence = re.split(r"[.;]", m.string[: m.start()])[-1]
+    sentence = _sentence_before(m.string, m.start())
     related = re.search(r"\b(?:with|on\s+top\s+of|around|inside)\b", sentence, re.I)
     return "" if related else "of it "
 
@@ -504,8 +518,8 @@ def _each_side(m: re.Match[str]) -> str:
 
 def _series_start(m: re.Match[str]) -> bool:
     """ "three towers going up by one each starting at two": not a time of day."""
-    sentence = re.split(r"[.;]", m.string[: m.start()])[-1]
-    return bool(_SERIES_START.match(m.group(1)) and _SERIES_BEFORE.search(sentence))
+    started = m.group(1).lower().startswith(("start", "begin"))
+    return started and bool(_SERIES_BEFORE.search(_sentence_before(m.string, m.start())))
 
 
 _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
@@ -896,7 +910,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:(\d+(?:\.\d+)?\s*(?:cm|mm|m|cubes?|(?:centi|milli)?met(?:re|er)s))\s+(?:on|per|along|"
                 r"for)\s+(?:each|every|a|one)\s+(?:side|edge)|(\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
                 r"(?:on|per|along)\s+(?:each|every|an?)\s+edge)\b(?!\s+of\b)", re.I),
-     lambda m: _each_side(m)),
+     _each_side),
     # "a 3x3 slab with a 2x2 slab on top and a cube on top of that": stacked in turn
     (re.compile(r"(\bon\s+(?:top|it)(?:\s+of\s+it)?\s*,?\s*)and\s+(?=(?:then\s+)?(?:an?|one|"
                 r"a\s+single|single)\s+[^,.;]{0,40}?\bon\s+(?:top\s+of\s+)?(?:that|this|the\s+\w+)\b)",
@@ -907,16 +921,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "two towers, the left one 5 high and the right one 2 high": one each, in those places;
     # "Make two towers. The left one should be 5 high, the right one 2.", "two towers: left 5
     # high, right 2 high" (a bare number after the first takes its unit)
-    (re.compile(r"(?<=[,:;.]\s)(?:the\s+)?(left|right|front|back)(?:[\s-]?(?:hand|most))?(?:\s+(?:one|"
-                r"tower|stack|column|wall|row))?\s+(?:(?:is|should\s+be|must\s+be|will\s+be|needs\s+to\s+be|"
-                r"has\s+to\s+be|is\s+to\s+be)\s+)?((?:\d+|one|two|three|four|five|six|seven|eight|"
-                r"nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?))"
-                r"(?=\s*(?:,|;|\.|\band\b|$))", re.I), lambda m: _side_one(m, m.group(2))),
-    (re.compile(r"(?:(?<=[,;]\s)|(?<=\band\s))(?:the\s+)?(left|right|front|back)(?:[\s-]?(?:hand|most))?(?:\s+(?:one|"
-                r"tower|stack|column|wall|row))?\s+(?:(?:is|should\s+be|must\s+be|will\s+be|needs\s+to\s+be|"
-                r"has\s+to\s+be|is\s+to\s+be)\s+)?(?:(?P<sized>(?:\d+|one|two|three|four|five|six|seven|"
-                r"eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?))|(?P<bare>\d+|one|"
-                r"two|three|four|five|six|seven|eight|nine|ten))"
+    (re.compile(rf"(?<=[,:;.]\s){_SIDE_ONE}({_SIDE_SIZE})(?=\s*(?:,|;|\.|\band\b|$))", re.I),
+     lambda m: _side_one(m, m.group(2))),
+    (re.compile(rf"(?:(?<=[,;]\s)|(?<=\band\s)){_SIDE_ONE}(?:(?P<sized>{_SIDE_SIZE})|(?P<bare>{_NUM}))"
                 r"(?=\s*(?:,|;|\.|$))", re.I),
      lambda m: _side_one(m, m.group("sized") or _with_unit_before(m))),
     # "Make two towers. One 5 high on the left, one 2 high on the right.": one sentence

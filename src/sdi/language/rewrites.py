@@ -2472,8 +2472,6 @@ def _attributive(text: str, st: ReadState) -> str:
     return _ATTRIBUTIVE.sub(sub, text)
 
 
-
-_BEAM_CUBES = 3  # the cell's beam part: 0.15 m, three cube lengths (`sdi.model.cell`)
 _BEAM_SIZE = re.compile(
     r"\b(?:(?P<n>\d+)[- ](?:cube|block|part)s?[- ](?:long[- ])?|(?P<m>\d+(?:\.\d+)?)\s*"
     r"(?P<u>mm|cm|m)[- ](?:long\s+)?)(?P<beam>beams?|planks?|girders?|lintels?)\b"
@@ -2482,38 +2480,32 @@ _BEAM_SIZE = re.compile(
     r"(?P<u2>mm|cm|m)\s+long)\b",
     re.IGNORECASE,
 )
-_METRES = {"mm": 0.001, "cm": 0.01, "m": 1.0}
 
 
 def _beam_size(text: str, st: ReadState) -> str:
     """ "a 3-cube beam across the top", "a lintel 15 cm long": the length of SDI's one beam
     part, said and checked — any other length is reported, never silently dropped."""
+    cube = st.cell.cube[0]
+    beam_m = st.cell.part_types.get("beam", (0.0,))[0]  # the cell's beam part (0.15 m)
+    cubes_long = f"{beam_m / cube:g} cubes"
 
     def sub(m: re.Match[str]) -> str:
         beam = m.group("beam") or m.group("beam2")
         said = m.group(0).strip()
         if m.group("m") or m.group("m2"):
             unit = (m.group("u") or m.group("u2")).lower()
-            cubes = float(m.group("m") or m.group("m2")) * _METRES[unit] / 0.05
+            cubes = float(m.group("m") or m.group("m2")) * lx.UNITS_M[unit] / cube
         else:
             cubes = float(m.group("n") or m.group("n2") or m.group("n3"))
-        if abs(cubes - _BEAM_CUBES) < 0.05:
-            st.notes.append(f"read '{said}' as SDI's beam ({_BEAM_CUBES} cubes, 0.15 m long)")
+        if beam_m and abs(cubes - beam_m / cube) < 0.05:
+            st.notes.append(f"read '{said}' as SDI's beam ({cubes_long}, {beam_m:g} m long)")
         else:
             st.material.append(said)
-            st.notes.append(f"ignored the length in '{said}': SDI's beam is {_BEAM_CUBES} cubes "
-                            "(0.15 m) long")  # fmt: skip
+            has = f"SDI's beam is {cubes_long} ({beam_m:g} m) long" if beam_m else "no beam part"
+            st.notes.append(f"ignored the length in '{said}': {has}")
         return f" {beam} "
 
     return _BEAM_SIZE.sub(sub, text)
-
-
-_SIZED_BASE = re.compile(
-    r"(?<![\w.])(?:(?P<art>a|an|one|the)\s+)?(?P<size>\d+\s+x\s+\d+(?P<third>\s+x\s+\d+)?)\s+"
-    r"(?P<noun>base|foundation|footing)\b(?!\s+(?:of|for|to)\b)"
-    r"(?:\s+(?P<own>layer|slab|plate|pad|block|platform)\b)?",
-    re.IGNORECASE,
-)
 
 
 _SINGLE_LAYER = re.compile(
@@ -2530,6 +2522,14 @@ def _single_layer(text: str) -> str:
     if m and not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", rest.lower())):
         return f"{text[: m.start()]}a layer of cubes{text[m.end() :]}"
     return text
+
+
+_SIZED_BASE = re.compile(
+    r"(?<![\w.])(?:(?P<art>a|an|one|the)\s+)?(?P<size>\d+\s+x\s+\d+(?P<third>\s+x\s+\d+)?)\s+"
+    r"(?P<noun>base|foundation|footing)\b(?!\s+(?:of|for|to)\b)"
+    r"(?:\s+(?P<own>layer|slab|plate|pad|block|platform)\b)?",
+    re.IGNORECASE,
+)
 
 
 def _sized_base(text: str, st: ReadState) -> str:
