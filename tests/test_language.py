@@ -6949,3 +6949,92 @@ def test_a_beam_s_length_is_checked_against_the_cell_s_beam():
     assert any("as SDI's beam (4 cubes, 0.2 m long)" in n for n in reading.notes)
     reading = read("two towers of 3 with a 3-cube beam on top", cell)
     assert any("SDI's beam is 4 cubes (0.2 m) long" in n for n in reading.notes)
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # the roof's size went with the noun: a default table, silently
+        "a pavilion with legs 3 high and a 20 by 20 cm roof",
+        "Canopy:\n- four legs, 15 cm each\n- roof 20 x 20 cm",
+        # a top sized after the legs was a 4 by 4 block of its own (partial)
+        "a table, legs 2 high, 4x4 top",
+        "a gazebo with a 4x4 deck",
+    ],
+)
+def test_a_table_s_top_said_with_its_size_sizes_the_table(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert r.notes[-1] == "a table top 4 parts across: legs 2 apart"  # as "a table, 4x4 top"
+    lo, hi = boxes(r)  # the legs (cubes: no turn to undo) stand 4 parts across each way
+    legs = lo[:, 2] < 1e-6
+    span = hi[legs].max(0) - lo[legs].min(0)
+    assert tuple(round(float(v) / 0.05) for v in span[:2]) == (4, 4)
+
+
+@pytest.mark.parametrize(
+    "command, parts",
+    [
+        # a one-cube tower was built beside the ring, silently
+        ("Ring 4x4, 1 high, leave out one cube on the left side", 12),
+        ("Ring:\n- 4 x 4 outside\n- 1 high\n- NOT closed: leave one cube out of the front side",
+         12),
+        # the door was read as a bridge beside the wall, the wall built as a ring
+        ("a wall of 6 with a doorway in the middle", 6),
+        ("a 4x4 ring, leave a gap for a door", 12),
+    ],
+)
+def test_an_opening_asked_is_reported_and_builds_nothing_of_its_own(command, parts):
+    r = plan(command)
+    assert r.status == "partial"
+    assert len(r.layout) == parts
+    assert any("with no opening in them" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command, along",
+    [
+        # the wall stood across the middle of the pad, silently
+        ("a 3x3 pad and along its back edge a wall 3 long, 2 high, standing on the pad", "back"),
+        ("a 4x4 slab with a row of 4 on top along its left edge", "left"),
+    ],
+)
+def test_a_structure_on_a_top_along_its_edge_stands_flush_with_it(command, along):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    base = lo[:, 2] < 1e-6
+    upper = ~base
+    axis, far = {"back": (0, True), "left": (1, True), "front": (0, False)}[along]
+    edge = hi[base, axis].max() if far else lo[base, axis].min()
+    side = hi[upper, axis].max() if far else lo[upper, axis].min()
+    assert abs(side - edge) < 1e-6
+    other = 1 - axis  # it runs along the edge: as long as the top there
+    assert abs((hi[upper, other].max() - lo[upper, other].min())
+               - (hi[base, other].max() - lo[base, other].min())) < 1e-6  # fmt: skip
+    assert hi[upper, axis].max() - lo[upper, axis].min() < 0.05 + 1e-6
+
+
+@pytest.mark.parametrize(
+    "command, height, across",
+    [
+        # a 5 by 5 slab was built with a tower on each corner, silently
+        ("Four towers of 2, one at each corner of a 5 by 5 square.", 2, 5),
+        ("a tower of 3 at each corner of a 4 by 4 square", 3, 4),
+        # one 4 by 4 slab, silently
+        ("I need to mark the four corners of a 20 cm square with single cubes.", 1, 4),
+    ],
+)
+def test_towers_at_the_corners_of_a_square_outline_it(command, height, across):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    assert sorted(cols.values()) == [height] * 4
+    lo, hi = boxes(r)
+    assert tuple(round(float(v) / 0.05) for v in (hi.max(0) - lo.min(0))[:2]) == (across, across)
+
+
+def test_towers_on_the_corners_of_a_built_square_stand_on_it():
+    r = plan("a 4x4 slab with a tower of 3 at each corner")
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 16 + 4 * 3

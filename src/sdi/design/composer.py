@@ -407,12 +407,18 @@ def _top(p: _Placed) -> tuple[float, np.ndarray, np.ndarray]:
     return top, (lo + hi) / 2, (hi - lo) / 2
 
 
-def _along_top(sub: _Placed, top_half: np.ndarray, cell: CellConfig) -> _Placed:
+def _along_top(
+    sub: _Placed, top_half: np.ndarray, cell: CellConfig, edge: str | None = None
+) -> _Placed:
     """A structure whose axis was not said, set on a top it overhangs but would fit on if
-    turned ("a wall along x, with a row of 3 on top"): turned to run along that top."""
+    turned ("a wall along x, with a row of 3 on top"), or set along the top's left or right
+    edge: turned to run along that top or edge."""
     s = sub.spec
     fits = bool(np.all(sub.half <= top_half + 1e-6))
-    if s.axis is not None or s.yaw_deg or fits or np.any(sub.half[::-1] > top_half + 1e-6):
+    along = edge in ("left", "right") and sub.half[1] > sub.half[0] + 1e-6
+    if s.axis is not None or s.yaw_deg or (fits and not along):
+        return sub
+    if np.any(sub.half[::-1] > top_half + 1e-6):
         return sub
     turned = s.model_copy(update={"axis": "x"})  # its axis was not said: y, turned to x
     sizes = part_sizes(cell, turned.part)
@@ -574,7 +580,11 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
         if rel.kind == "on_top_of":
             top, centre, top_half = _top(base)
             if c not in children:
-                sub = units[c] = _along_top(sub, top_half, cell)
+                sub = units[c] = _along_top(sub, top_half, cell, rel.side)
+            if rel.side is not None:  # "a wall on the slab, along its back edge": flush with it
+                axis, sign = _SIDES[rel.side]
+                centre = centre.copy()
+                centre[axis] += sign * (top_half[axis] - sub.half[axis])
             bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
             return _merge(base, sub, centre, top - bottom)
         return _beside(base, sub, rel.side, cell, rel.gap_m, (rel.object in grouped, c in grouped))

@@ -239,6 +239,15 @@ def relate(
             st.notes.append(f"ignored a second relation of '{phrases[subj].text}'")
             continue
         kind: RelationKind = _KINDS[r.kind]
+        edge = subject.edge[0] if kind == "on_top_of" and len(subject.edge) == 1 else None
+        if edge is not None:
+            # "a wall standing on the pad, along its back edge": the edge of the top it stands
+            # on, not of the table (the unit was pulled to the table's back edge)
+            subject = subject.model_copy(
+                update={"edge": (), "region": None if subject.region == edge else subject.region}
+            )
+            st.notes.append(f"read the {edge} edge as the {obj_spec.shape}'s: the "
+                            f"{subject.shape} stands on it along that edge")  # fmt: skip
         placed = {"at_x": subject.at_x, "at_y": subject.at_y, "region": subject.region}
         if kind != "around" and any(v is not None for v in placed.values()):
             # the unit stands where the object stands: a position said of the subject moves
@@ -252,6 +261,8 @@ def relate(
                 )
             replace[s_idx] = subject.model_copy(update=dict.fromkeys(placed))
         side = r.side or (phrases[r.object].side if r.object is not None else None)
+        if kind == "on_top_of":
+            side = edge  # on a top: only an edge said places it off the top's centre
         if kind == "next_to" and st.stair_foot and obj_spec.shape == "staircase":
             # "a tower at its low end": the side the staircase climbs from
             side = _stair_foot(obj_spec)

@@ -59,7 +59,7 @@ from sdi.language.markers import find_phrases
 from sdi.language.normalise import courtesy, normalise
 from sdi.language.nouns import shape_alternation
 from sdi.language.reading import Reading
-from sdi.language.rewrites import rewrite
+from sdi.language.rewrites import outline_corners, rewrite
 from sdi.language.slots import fill_slots
 from sdi.language.state import Phrase, ReadState
 from sdi.language.syntax import parse
@@ -139,6 +139,8 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = viewpoint.take(text, st.notes)  # "I'm opposite the robot … on my left": its right
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes, st.material)
+    text = _opening(text, st)
+    text = outline_corners(text, st)  # before the gaps are taken: it says one
     text = _step_rise(text, st)
     text = spacing.take_centres(text, st)
     text = spacing.take_span(text, st)
@@ -309,12 +311,6 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"the structures cannot be related: {why}", understood=understood_summary(doc)
         ) from None
     spec = spacing.pitches(spacing.apply_gap(spec, st), st)
-    opening = _OPENING.search(command)
-    if opening:
-        # "a wall with a door in the middle": SDI's walls are solid
-        st.material.append(opening.group(0))
-        st.notes.append(f"ignored '{opening.group(0)}': SDI builds walls and slabs solid, "
-                        "with no opening in them")  # fmt: skip
     cut = _CUT_OFF.search(command)
     if cut:  # "Tower of": the command stops mid-phrase, its size unsaid
         st.material.append(cut.group(1))
@@ -832,13 +828,39 @@ def _step_rise(text: str, st: ReadState) -> str:
     return text[: m.start()] + " " + text[m.end() :]
 
 
+_SOLID = r"\b(?:walls?|slabs?|blocks?|rows?|rings?|enclosures?|fences?|pens?)\b"
 _OPENING = re.compile(
-    r"\b(?:wall|slab|block|row)\b[^.;]{0,40}?\b(?:with|leave|leaving|cut|having)\s+"
-    r"(?:an?\s+|one\s+)?(?:(?:small\s+|little\s+)?(?:door|doorway|opening|hole|window|archway)"
-    r"(?:\s+(?:in|through)\s+(?:the\s+)?(?:middle|centre|center|it))?|gap\s+(?:(?:in|through)\s+"
-    r"(?:the\s+)?(?:middle|centre|center|it)|for\s+(?:an?\s+)?(?:door|doorway|window|entrance)))",
+    rf"{_SOLID}[^.;\n]{{0,40}}?(?:,\s*|\s+(?:and|but)\s+|\s+)?\b("
+    r"(?:with|leave|leaving|cut|having)\s+(?:an?\s+|one\s+)?(?:(?:small\s+|little\s+)?"
+    r"(?:doorway|door|opening|hole|window|archway|entrance)\b(?:\s+(?:in|through)\s+(?:the\s+)?"
+    r"(?:middle|centre|center|it))?|gap\s+(?:(?:in|through)\s+(?:the\s+)?(?:middle|centre|center|"
+    r"it)|for\s+(?:an?\s+)?(?:door|doorway|window|entrance))(?:\s+for\s+(?:an?\s+)?(?:door|"
+    r"doorway|window|entrance))?)|"
+    # "leave out one cube on the left side", "leave one cube out of the front side"
+    r"(?:leave|leaving|miss|missing|skip|skipping|omit|omitting|take|taking)\s+(?:out\s+)?"
+    r"(?:one|1|a|a\s+single)\s+(?:cube|block|brick|part)\s+(?:out\s+)?(?:of|from|on|in)\s+"
+    r"(?:the\s+|its\s+)?(?:[a-z-]+\s+){0,2}?(?:side|wall|edge|middle|centre|center)\b)",
     re.IGNORECASE,
 )
+"""An opening asked in a wall, slab or ring ("a wall with a door in the middle", "leave out one
+cube on the left side"): SDI builds them solid."""
+
+
+def _opening(text: str, st: ReadState) -> str:
+    """The opening asked taken out of the words read, and said not built (it was read as a
+    bridge or a one-cube tower beside the structure)."""
+    m = _OPENING.search(text)
+    if m is None:
+        return text
+    said = m.group(1)
+    st.material.append(said)
+    st.notes.append(f"ignored '{said}': SDI builds walls, rings and slabs solid, with no "
+                    "opening in them")  # fmt: skip
+    cut = m.start(1)
+    while cut > 0 and text[cut - 1] in " ,:":
+        cut -= 1
+    before = re.sub(r"(?:,|\band|\bbut|\bnot\s+closed:?)\s*$", "", text[:cut], flags=re.I)
+    return before.rstrip(" ,") + text[m.end(1) :]
 _CUT_OFF = re.compile(
     r"\b(of|with|and|by|at|from|the|an?|than|into|onto)\s*[,;:-]*\s*$",
     re.IGNORECASE,

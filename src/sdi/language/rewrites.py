@@ -2361,6 +2361,37 @@ _TOP = re.compile(r"\b(?:top|roof|tabletop|surface|lid)\b", re.IGNORECASE)
 _ARTICLES = frozenset({"a", "an", "another", "the", "it", "them", "one", "two", "three"})
 
 
+_SIZE2 = r"\d+(?:\.\d+)?\s*(?:x|by)\s*\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?"
+_SIZED_TOP = re.compile(
+    rf"(?:\s*(?:,|;|:|\band\b|\bwith\b|\n\s*-)\s*)?(?:(?:an?|the|its)\s+)?"
+    rf"(?:({_SIZE2})\s+(?:top|roof|deck|tabletop)\b|"
+    rf"\b(?:top|roof|deck|tabletop)\s*(?:of\s+|:\s*)?({_SIZE2}))",
+    re.IGNORECASE,
+)
+"""'a pavilion with legs 3 high and a 20 by 20 cm roof': the size of a table's own top."""
+
+
+def _sized_top(text: str) -> str:
+    """A canopy's top, roof or deck said with its size after the canopy is the canopy's size
+    (said after its legs it was read as a block of its own, or its size went with the noun):
+    the size goes next to the canopy's name (no bridge or arch said)."""
+    named = [
+        m for m in re.finditer(r"[a-z]+", text, re.IGNORECASE)
+        if lx.SHAPE_WORDS.get(m.group(0).lower()) in ("canopy", "bridge", "arch")
+        and m.group(0).lower() not in ("roof", "deck")  # the top itself
+    ]  # fmt: skip
+    if len(named) != 1 or lx.SHAPE_WORDS.get(named[0].group(0).lower()) != "canopy":
+        return text
+    top = [m for m in _SIZED_TOP.finditer(text) if m.start() >= named[0].end()]
+    if len(top) != 1:
+        return text
+    m = top[0]
+    size = m.group(1) or m.group(2)
+    end = named[0].end()
+    rest = text[end : m.start()] + text[m.end() :]
+    return f"{text[:end]} with a {size} top{'' if rest[:1] in ',.;:' else ','}{rest}"
+
+
 _ONE_MORE = re.compile(
     r"(?<!\boff\s)(?<!\baway\s)"  # "take off one more": a change, not another structure
     r"(?<!\bsecond\s)(?<!\bother\s)(?<!\bthird\s)"  # "the second one more": a size of it
@@ -3361,6 +3392,57 @@ _COMPARED_TAIL = re.compile(
 """What a comparison was made with, left after its value was worked out."""
 
 
+_OUTLINE = re.compile(
+    r"(?:,\s*)?\b(?:one\s+)?(?:at|in)\s+(?:each|every|all\s+four|the\s+four|the)\s+corners?\s+of\s+"
+    r"an?\s+(?:(\d+)\s*(?:x|by)\s*(\d+)|(\d+(?:\.\d+)?)\s*(mm|cm|m))\s+(?:square|outline|area|"
+    r"space|footprint|zone)\b(?!\s+(?:slab|layer|base|plate|of))",
+    re.IGNORECASE,
+)
+"""'four towers, one at each corner of a 5 by 5 square': a square outlined, not built."""
+_MARK_CORNERS = re.compile(
+    r"\bmark\s+(?:out\s+)?(?:the\s+)?(?:four\s+)?corners\s+of\s+(an?\s+\S+\s*(?:(?:x|by)\s*\d+\s*)?"
+    r"(?:mm|cm|m\b)?\s*square)\s+with\s+([^.;]+)",
+    re.IGNORECASE,
+)
+_THIN = ("tower", "towers", "cube", "cubes", "column", "columns", "stack", "stacks", "pillar",
+         "pillars", "post", "posts", "block", "blocks", "pile", "piles")  # fmt: skip
+
+
+def outline_corners(text: str, st: ReadState) -> str:
+    """Towers or cubes at the corners of a square said by its size and never built: the four
+    stand in two rows of two, the square's side apart at their outer faces ("one at each
+    corner of a 5 by 5 square" built a 5 by 5 slab with a tower on each corner, silently)."""
+    text = _MARK_CORNERS.sub(
+        lambda m: f"put {m.group(2).strip()} at each corner of {m.group(1)}", text
+    )
+    m = _OUTLINE.search(text)
+    if m is None:
+        return text
+    if m.group(1):
+        side, other = int(m.group(1)), int(m.group(2))
+    else:
+        side = other = round(float(m.group(3)) * lx.UNITS_M[m.group(4).lower()] / st.cell.cube[0])
+    before = text[: m.start()]
+    nouns = [w for w in re.findall(r"[a-z]+", before.lower()) if w in lx.SHAPE_WORDS or w in _THIN]
+    if side != other or side < 3 or not nouns or nouns[-1] not in _THIN:
+        return text  # a rectangle's two gaps, or something wider than a cube at each corner
+    said = m.group(0).strip(" ,")
+    gap = side - 2
+    st.notes.append(f"read '{said}' as four standing in two rows of two, {gap} cubes apart "
+                    f"({side} parts across at their outer faces; no square built)")  # fmt: skip
+    thin = "|".join(_THIN)
+    noun = list(re.finditer(rf"\b(?:(\w+)\s+)?(?:\w+\s+)?({thin})\b", before, re.I))[-1]
+    count = (noun.group(1) or "").lower()
+    if not noun.group(2).lower().endswith("s"):  # "a tower of 3 at each corner": one at each
+        if count not in ("a", "an", "one"):
+            return text
+        before = before[: noun.start()] + "four " + noun.group(0).split(None, 1)[-1] + "s" + (
+            before[noun.end() :])  # fmt: skip
+    elif count in set(NUMBER_WORDS) - {"four"} or (count.isdigit() and count != "4"):
+        return text  # "three towers at the corners": not one at each of four
+    return f"{before.rstrip(' ,')} in a 2 by 2 grid, {gap} cubes apart{text[m.end():]}"
+
+
 def rewrite(text: str, st: ReadState) -> str:
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
@@ -3404,6 +3486,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _another(SPACES.sub(" ", text))
     text = _bare_size(text, st)
     text = _PAIR_PLACES.sub(_pair_places, text)
+    text = _sized_top(text)
     if (
         _LEGS.search(text)
         and _TOP.search(text)

@@ -381,7 +381,9 @@ Anchor = Literal[
 class Relation(BaseModel):
     """How one structure stands to another; indices into `Spec.structures`.
 
-    ``on_top_of``: `subject` stands on the top face of `object`, centred on it. ``around``:
+    ``on_top_of``: `subject` stands on the top face of `object`, centred on it, or with
+    `side` flush with that edge of the top face ("a wall on the slab along its back edge"),
+    centred along it. ``around``:
     `subject` (a ring) encloses `object`, sized to leave one part of room on every side.
     ``next_to``: `subject` stands beside `object` on `side` (left = +y, back = +x), one
     structure gap away. A structure is the subject of at most one relation.
@@ -397,7 +399,11 @@ class Relation(BaseModel):
     kind: RelationKind
     subject: int = Field(ge=0, description="index of the structure that is placed")
     object: int = Field(ge=0, description="index of the structure it is placed against")
-    side: Side | None = Field(None, description="next_to: which side of the object")
+    side: Side | None = Field(
+        None,
+        description="next_to: which side of the object; on_top_of: which edge of its top face "
+        "the subject stands flush with (default: centred)",
+    )
     at: Anchor | None = Field(
         None, description="one copy of the subject at each corner or end of the object"
     )
@@ -435,6 +441,8 @@ class Relation(BaseModel):
             return f"{a} {kind} {b} (one at each of its {self.at})"
         if self.kind == "next_to" and self.side:
             return f"{a} {kind} {b} ({self.side})"
+        if self.kind == "on_top_of" and self.side:
+            return f"{a} {kind} {b} (along its {self.side} edge)"
         return f"{a} {kind} {b}"
 
 
