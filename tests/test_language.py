@@ -7038,3 +7038,43 @@ def test_towers_on_the_corners_of_a_built_square_stand_on_it():
     r = plan("a 4x4 slab with a tower of 3 at each corner")
     assert r.status == "success", r.notes
     assert len(r.layout) == 16 + 4 * 3
+
+
+@pytest.mark.parametrize(
+    "command, height",
+    [
+        # "And one more layer." was ignored, and the run still said success
+        ("Make a 3x3 slab. And one more layer.", 2),
+        ("a wall 4 long 2 high. One more course.", 3),
+    ],
+)
+def test_one_more_level_said_without_a_verb_adds_it(command, height):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert set(_columns(r).values()) == {height}
+
+
+def test_a_tower_on_the_wall_s_left_end_stands_there():
+    # "on the wall's left end" was read as "on it": the tower stood on the middle, silently
+    r = plan("Build a wall 6 long and 2 high along the back. Put a tower of 3 on the wall's left "
+             "end.")  # fmt: skip
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    left = max(y for _, y in cols)
+    assert {h for (_, y), h in cols.items() if y == left} == {5}
+    assert {h for (_, y), h in cols.items() if y != left} == {2}
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # built flat, one cube deep, silently
+        "a pyramid of 3 levels with a square base",
+        "A pyramid, not a flat one: 3 levels with a square base.",
+        "a 3-level pyramid, square base",
+    ],
+)
+def test_a_pyramid_on_a_square_base_is_a_square_pyramid(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 9 + 4 + 1

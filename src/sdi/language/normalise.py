@@ -1137,6 +1137,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"(\b(?:row|line)\s+of\s+[^.;]*?)\s*,?\s*(?:all\s+)?in\s+(?:a|one)\s+(?:single\s+|straight\s+)?"
                 r"line\b", re.I), r"\1"),
     (re.compile(r"\b(?:from|on|at|in)\s+(?:production\s+)?line\s+\d+\b", re.I), " "),
+    # "on the wall's left end": on its end ("on it" placed the tower in the middle, silently)
+    (re.compile(r"\bthe\s+(?:" + _FAMILY_SAID + r")'s\s+(left|right|front|back|rear)"
+                r"(?:[\s-]+hand)?\s+end\b", re.I), r"its \1 end"),
     (re.compile(r"\bthe\s+(" + _FAMILY_SAID + r")'s\s+(?:front|back|rear|left|right|near|far)?\s*"
                 r"(?:edge|side|face|end)\b", re.I), "it"),
     # "rising in -y", "do not rise toward +y": the side of the table that axis points to
@@ -1331,9 +1334,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "5 cm off the front edge", "10 cm in from the left edge": from it
     (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m))\s+(?:off|in\s+from|in\s+off|inside|away\s+from)\s+the\s+"
                 r"(front|back|left|right)\s+edge\b", re.I), r"\1 from the \2 edge"),
-    # "a pyramid with a square base 15 cm across": its base (a square is no second structure)
-    (re.compile(r"\b(pyramid|ziggurat)(\b[^.;]{0,30}?\bwith\s+(?:a|its)\s+)square\s+(base|bottom|footprint)\b",
-                re.I), r"\1\2\3"),
+    # "a pyramid with a square base 15 cm across": its base (a square is no second structure),
+    # and the pyramid a square one (it was built flat, one cube deep)
+    (re.compile(r"\b(pyramid|ziggurat)(\b[^.;]{0,30}?\bwith\s+(?:a|its)\s+)square\s+(base|bottom|"
+                r"footprint)\s+of\s+(\d+)(?!\s*(?:cubes?|parts?|blocks?)?\s+in\b)", re.I),
+     r"\1\2\4 by \4 \3"),  # "with a square base of 4": 4 on a side
+    (re.compile(r"(?<!square\s)\b(pyramid|ziggurat)(\b[^.;]{0,30}?\bwith\s+(?:a|its)\s+)square\s+"
+                r"(base|bottom|footprint)\b", re.I), r"square \1\2\3"),
     # "a stack where every layer is a 2 by 2 square, five layers in all": that footprint
     (re.compile(r"\s*,?\s*\b(?:where|in\s+which|with)\s+(?:every|each)\s+(?:layer|level)\s+(?:is|being)\s+"
                 r"(?:an?\s+)?(\d+\s*(?:x|by)\s*\d+)(?:\s+(?:square|slab|grid|layer))?", re.I),

@@ -3443,7 +3443,42 @@ def outline_corners(text: str, st: ReadState) -> str:
     return f"{before.rstrip(' ,')} in a 2 by 2 grid, {gap} cubes apart{text[m.end():]}"
 
 
+_MORE_LEVELS = re.compile(
+    r"(?:(?<=[.;!?])|(?<=^)|(?<=,)|(?<=\band)|(?<=\bthen)|(?<=\bplus))(\s*)(?:and\s+|then\s+|plus\s+)?"
+    r"(?:just\s+)?((?:one|two|three|1|2|3)\s+more\s+(?:layers?|levels?|courses?|tiers?|storeys?|"
+    r"stor(?:y|ies))\b)",
+    re.IGNORECASE,
+)
+"""'Make a 3x3 slab. And one more layer.': a change said with no verb (it was ignored)."""
+
+
+_SQUARE_BASE = re.compile(
+    r"(?:\s*,\s*|\s+(?:with|on|and)\s+)(?:an?\s+|its\s+)?(?:square\s+(?:base|footprint|bottom|"
+    r"plan)|(?:base|footprint|bottom)\s+(?:that\s+is\s+|being\s+)?square)\b|"
+    r"(?:\s*,\s*)?\bnot\s+(?:a\s+)?flat(?:\s+one)?\b",
+    re.IGNORECASE,
+)
+"""'a pyramid of 3 levels with a square base', 'a pyramid, not a flat one': a square one."""
+
+
+def _square_pyramid(text: str, st: ReadState) -> str:
+    """A pyramid said to stand on a square base (or not to be flat) is a square pyramid (it
+    was built flat, one cube deep)."""
+    pyramids = list(re.finditer(r"\bpyramid\b", text, re.IGNORECASE))
+    m = _SQUARE_BASE.search(text)
+    if len(pyramids) != 1 or m is None or m.start() < pyramids[0].start():
+        return text
+    if re.search(r"\b(?:flat|2-?d|two[\s-]dimensional)\s+pyramid", text, re.IGNORECASE):
+        return text
+    st.notes.append(f"read '{m.group(0).strip(' ,')}' as a square pyramid")
+    p = pyramids[0]
+    square = "" if re.search(r"\bsquare\s+$", text[: p.start()], re.I) else "square "
+    return text[: p.start()] + square + text[p.start() : m.start()] + text[m.end() :]
+
+
 def rewrite(text: str, st: ReadState) -> str:
+    text = _MORE_LEVELS.sub(r"\1 add \2", text)
+    text = _square_pyramid(text, st)
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
     text = _level_labels(_level_list(text, st), st)
