@@ -7078,3 +7078,33 @@ def test_a_pyramid_on_a_square_base_is_a_square_pyramid(command):
     r = plan(command)
     assert r.status == "success", r.notes
     assert len(r.layout) == 9 + 4 + 1
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # the second "one shorter" counted from the "one" said in the first: a tower of 1
+        ("A 4-cube tower. Then another, one shorter, to its right. Then another, one shorter "
+         "again, to the right of that.", [4, 3, 2]),
+    ],
+)
+def test_a_comparison_after_a_comparison_starts_from_the_size_it_gave(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values(), reverse=True) == heights
+
+
+def test_twice_as_tall_again_is_not_the_same_height_again():
+    # "then one twice as tall again" was 6 again, silently; 12 does not fit: refused
+    r = plan("a tower of 3, then one twice as tall, then one twice as tall again")
+    assert r.status != "success"
+    assert any("as 12 (from the 6 said before)" in n for n in r.notes)
+
+
+def test_the_one_in_the_middle_is_not_read_as_a_place():
+    # "make the one in the middle 2 cubes taller": every tower placed in the middle and the
+    # change read as a tower of 3 ("from the 1 said before"), silently
+    r = plan("Make three towers of 2, 4 and 3 cubes in a row. Make the one in the middle 2 cubes "
+             "taller.")  # fmt: skip
+    assert r.status != "success"
+    assert any("Make the middle one 2 cubes taller" in n for n in r.notes)

@@ -743,9 +743,14 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     one a cube taller": the number said last before it, changed."""
     said, groups = _said(m)
     base = _said_last(m)
+    number = r"(?:\d+|" + "|".join(NUMBER_WORDS) + r")"
+    read = [(at, v) for w, v in st.compared if (at := m.string.rfind(w, 0, m.start())) >= 0]
+    if read and not re.search(rf"\b{number}\b", m.string[max(read)[0] + 1 : m.start()], re.I):
+        # "another, one shorter, … then another, one shorter again": from the size the
+        # comparison before gave, no number said since (its own words were the base)
+        base = max(read)[1]
     if base is None:
         return m.group(0)
-    number = r"(?:\d+|" + "|".join(NUMBER_WORDS) + r")"
     sizes = re.findall(rf"\bof\s+{number}\b|\b{number}\s+(?:cubes?\s+)?(?:high|tall|long|wide)\b",
                        m.string[: m.start()], re.I)  # fmt: skip
     if re.match(r"\s+as\s+the\s+first\b", m.string[m.end() :], re.I) and len(sizes) != 1:
@@ -778,6 +783,7 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     if value < 1 or value % 1:
         return m.group(0)
     st.notes.append(f"read '{said}' as {int(value)} (from the {base} said before)")
+    st.compared.append((m.group(0), int(value)))
     if groups[1] in _HEIGHT_WORDS:
         return f" {int(value)} high "
     if groups[1] in ("long", "longer", "wide", "wider"):  # "the other twice as long": 6 long

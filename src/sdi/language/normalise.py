@@ -1137,6 +1137,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"(\b(?:row|line)\s+of\s+[^.;]*?)\s*,?\s*(?:all\s+)?in\s+(?:a|one)\s+(?:single\s+|straight\s+)?"
                 r"line\b", re.I), r"\1"),
     (re.compile(r"\b(?:from|on|at|in)\s+(?:production\s+)?line\s+\d+\b", re.I), " "),
+    # "make the one in the middle 2 taller": the middle one (its words were read as a place)
+    (re.compile(r"\bthe\s+(one|tower|stack|column|pillar)\s+in\s+the\s+(middle|centre|center)\b"
+                r"(?!\s+of\b)", re.I), r"the \2 \1"),
     # "on the wall's left end": on its end ("on it" placed the tower in the middle, silently)
     (re.compile(r"\bthe\s+(?:" + _FAMILY_SAID + r")'s\s+(left|right|front|back|rear)"
                 r"(?:[\s-]+hand)?\s+end\b", re.I), r"its \1 end"),

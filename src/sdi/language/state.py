@@ -54,6 +54,8 @@ class ReadState:
     gap_said: str | None = None  # the words of that gap
     gap_first: bool = False  # said before any "between" or "in the middle"
     flanked: bool = False  # a structure was placed between two others
+    # "one shorter", "twice as tall": the comparisons read, as (the words, the size they gave)
+    compared: list[tuple[str, int]] = field(default_factory=list)
     span_m: float | None = None  # "pillars 10 cm apart": between a bridge's own supports
     line: str | None = None  # "three towers in a line front to back": the axis they stand along
     # "four towers in a square", "in two rows of three": (rows, columns), or 0 for each when
