@@ -7108,3 +7108,26 @@ def test_the_one_in_the_middle_is_not_read_as_a_place():
              "taller.")  # fmt: skip
     assert r.status != "success"
     assert any("Make the middle one 2 cubes taller" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command, said, value",
+    [
+        # built as 3 and 4 with no word of it
+        ("A few cubes in a row.", "A few", 3),
+        ("several towers of 3", "several", 4),
+    ],
+)
+def test_a_vague_count_says_the_number_it_was_read_as(command, said, value):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert f"read '{said}' as {value}: the number was not said; say how many if it matters" in (
+        r.notes
+    )
+
+
+def test_a_wall_in_a_line_is_one_wall():
+    # "in a line" was read as a row of its own beside the wall, silently
+    r = plan("A one-high wall of 6 in a line along the left edge of the table.")
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 6 and set(_columns(r).values()) == {1}

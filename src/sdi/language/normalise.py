@@ -1134,7 +1134,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(half\s+a\s+dozen|a\s+dozen|\d+|two|three|four|five|six|seven|eight|nine|ten)\s+"
                 r"(cubes?\s+|blocks?\s+)?plus\s+(\d+|one|two|three|four|five)\b(?:\s+(?:more|extra))?",
                 re.I), _plus),
-    (re.compile(r"(\b(?:row|line)\s+of\s+[^.;]*?)\s*,?\s*(?:all\s+)?in\s+(?:a|one)\s+(?:single\s+|straight\s+)?"
+    (re.compile(r"(\b(?:row|line|wall)\s+of\s+[^.;]*?)\s*,?\s*(?:all\s+)?in\s+(?:a|one)\s+(?:single\s+|straight\s+)?"
                 r"line\b", re.I), r"\1"),
     (re.compile(r"\b(?:from|on|at|in)\s+(?:production\s+)?line\s+\d+\b", re.I), " "),
     # "make the one in the middle 2 taller": the middle one (its words were read as a place)

@@ -57,7 +57,7 @@ from sdi.language.composition import relate, unstack
 from sdi.language.families import check_family
 from sdi.language.markers import find_phrases
 from sdi.language.normalise import courtesy, normalise
-from sdi.language.nouns import shape_alternation
+from sdi.language.nouns import STRUCTURE_PLURALS, shape_alternation
 from sdi.language.reading import Reading
 from sdi.language.rewrites import outline_corners, rewrite
 from sdi.language.slots import fill_slots
@@ -65,7 +65,7 @@ from sdi.language.state import Phrase, ReadState
 from sdi.language.syntax import parse
 from sdi.model.cell import CellConfig
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import words_to_numbers
+from sdi.spec.numbers import QUANTITY_WORDS, words_to_numbers
 from sdi.spec.structure_spec import Relation, Spec, StructureDraft, StructureSpec
 
 if TYPE_CHECKING:
@@ -140,6 +140,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes, st.material)
     text = _opening(text, st)
+    _vague_counts(command, st)
     text = outline_corners(text, st)  # before the gaps are taken: it says one
     text = _step_rise(text, st)
     text = spacing.take_centres(text, st)
@@ -844,6 +845,25 @@ _OPENING = re.compile(
 )
 """An opening asked in a wall, slab or ring ("a wall with a door in the middle", "leave out one
 cube on the left side"): SDI builds them solid."""
+
+
+_VAGUE = re.compile(
+    r"\b(a\s+few|several|a\s+handful\s+of|some|many|lots\s+of|a\s+bunch\s+of)\s+(?:(?:small|little|"
+    r"big|tall|short|single|separate|loose)\s+)?(cubes|blocks|bricks|parts|"
+    + "|".join(sorted(STRUCTURE_PLURALS, key=len, reverse=True)) + r")\b",
+    re.IGNORECASE,
+)
+"""'a few cubes in a row', 'several towers': a count not said exactly."""
+
+
+def _vague_counts(command: str, st: ReadState) -> None:
+    """A count said vaguely is read as SDI's number for the word; the note says which."""
+    for m in _VAGUE.finditer(command):
+        said = [w for w in m.group(1).lower().split() if w in QUANTITY_WORDS]
+        if said:
+            value = QUANTITY_WORDS[said[-1]]
+            st.notes.append(f"read '{m.group(1)}' as {value}: the number was not said; say how "
+                            "many if it matters")  # fmt: skip
 
 
 def _opening(text: str, st: ReadState) -> str:
