@@ -7131,3 +7131,26 @@ def test_a_wall_in_a_line_is_one_wall():
     r = plan("A one-high wall of 6 in a line along the left edge of the table.")
     assert r.status == "success", r.notes
     assert len(r.layout) == 6 and set(_columns(r).values()) == {1}
+
+
+@pytest.mark.parametrize(
+    "command, across",
+    [
+        # "Turn it so …" was left unread: the 4 ran front to back, silently
+        ("Build a 2x4 slab. Turn it so the long side runs left to right.", (2, 4)),
+        ("a 2 by 4 slab with the long side front to back", (4, 2)),
+    ],
+)
+def test_the_way_a_slab_s_long_side_runs(command, across):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert tuple(round(float(v) / 0.05) for v in (hi.max(0) - lo.min(0))[:2]) == across
+
+
+def test_a_size_said_by_the_body_is_reported():
+    # "a hand's width high" was read as nothing: a wall of the default height, silently
+    r = plan("A wall a hand's width high and 5 cubes long.")
+    assert r.status == "partial"
+    said = "ignored 'a hand's width': not a size SDI can measure"
+    assert any(n.startswith(said) for n in r.notes)

@@ -141,6 +141,8 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = corrections.correct(text, st.notes, st.material)
     text = _opening(text, st)
     _vague_counts(command, st)
+    text = _body_measures(text, st)
+    text = _take_long_side(text, st)
     text = outline_corners(text, st)  # before the gaps are taken: it says one
     text = _step_rise(text, st)
     text = spacing.take_centres(text, st)
@@ -156,6 +158,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     structures = fill_slots(phrases, rels, st, doc)
     structures = _asked_then_described(phrases, structures, st, doc)
     structures = _apply_shared(structures, st)
+    structures = _long_side(structures, st)
     if not structures and any(p.undone for p in phrases):
         raise SpecError(
             f"'{command.strip()[:60]}' takes back everything it names: nothing is left to "
@@ -864,6 +867,71 @@ def _vague_counts(command: str, st: ReadState) -> None:
             value = QUANTITY_WORDS[said[-1]]
             st.notes.append(f"read '{m.group(1)}' as {value}: the number was not said; say how "
                             "many if it matters")  # fmt: skip
+
+
+_LONG_SIDE = re.compile(
+    r"(?:\s*[,;]?\s*(?:and\s+|then\s+)?(?:turn|rotate|orient|set|lay|place)\s+(?:it|them|the\s+\w+)\s+"
+    r"(?:so\s+(?:that\s+)?)?|\s*,?\s*(?:with\s+)?)(?:the|its)\s+(long(?:er)?|short(?:er)?)\s+(?:sides?|"
+    r"edges?|way|dimension)\s+(?:(?:runs?|running|goes|going|is|lies|lying|pointing)\s+)?(?:from\s+)?"
+    r"(left\s+to\s+right|right\s+to\s+left|side\s+to\s+side|front\s+to\s+back|back\s+to\s+front)\b",
+    re.IGNORECASE,
+)
+"""'Turn it so the long side runs left to right': which way a slab's long side runs."""
+
+
+def _take_long_side(text: str, st: ReadState) -> str:
+    """The way a structure's long (or short) side is said to run, taken from the words."""
+    m = _LONG_SIDE.search(text)
+    if m is None:
+        return text
+    across = m.group(2).lower() in ("left to right", "right to left", "side to side")
+    st.long_side = (m.group(1).lower().removesuffix("er"), "y" if across else "x",
+                    m.group(0).strip(" ,;"))  # fmt: skip
+    return text[: m.start()] + text[m.end() :]
+
+
+def _long_side(structures: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
+    """The structure named last with two sides runs its long side the way it was said: its
+    axis that way, its length the longer side (a 2 by 4 slab 'turned so the long side runs left
+    to right' kept its 4 front to back, silently)."""
+    if st.long_side is None:
+        return structures
+    which, along, said = st.long_side
+    k = next((i for i in range(len(structures) - 1, -1, -1)
+              if structures[i].shape in ("grid", "block", "wall", "row")), None)  # fmt: skip
+    if k is None:
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': no slab, block or wall to turn")
+        return structures
+    s = structures[k]
+    if which == "short":
+        along = "x" if along == "y" else "y"
+    sides = [v for v in (s.length, s.width) if v is not None]
+    update: dict[str, object] = {"axis": along}
+    if s.shape in ("grid", "block") and len(sides) == 2:
+        update |= {"length": max(sides), "width": min(sides)}
+    st.notes.append(f"read '{said}' as the {s.shape}'s long side along {along}")
+    out = list(structures)
+    out[k] = s.model_copy(update=update)
+    return out
+
+
+_BODY_MEASURE = re.compile(
+    r"\b(?:an?\s+|one\s+)?(?:(?:hand|finger|thumb|palm|arm|foot)(?:'s|s)?\s+(?:width|breadth|length|"
+    r"span)|hand\s*span)\b|\b(?:knee|waist|shoulder|ankle|chest|hip)[\s-]+(?:high|height|tall)\b",
+    re.IGNORECASE,
+)
+"""'a hand's width high', 'knee-high': a size measured by the body, not one SDI can take."""
+
+
+def _body_measures(text: str, st: ReadState) -> str:
+    """A size said by a body measure is reported and left out (it was read as nothing, the
+    structure built to its default size, silently)."""
+    for m in _BODY_MEASURE.finditer(text):
+        st.material.append(m.group(0).strip())
+        st.notes.append(f"ignored '{m.group(0).strip()}': not a size SDI can measure; say it in "
+                        "cubes, cm or mm")  # fmt: skip
+    return _BODY_MEASURE.sub(" ", text)
 
 
 def _opening(text: str, st: ReadState) -> str:

@@ -56,6 +56,8 @@ class ReadState:
     flanked: bool = False  # a structure was placed between two others
     # "one shorter", "twice as tall": the comparisons read, as (the words, the size they gave)
     compared: list[tuple[str, int]] = field(default_factory=list)
+    # "turn it so the long side runs left to right": (long|short, the axis it runs along, words)
+    long_side: tuple[str, str, str] | None = None
     span_m: float | None = None  # "pillars 10 cm apart": between a bridge's own supports
     line: str | None = None  # "three towers in a line front to back": the axis they stand along
     # "four towers in a square", "in two rows of three": (rows, columns), or 0 for each when
