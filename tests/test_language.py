@@ -7154,3 +7154,27 @@ def test_a_size_said_by_the_body_is_reported():
     assert r.status == "partial"
     said = "ignored 'a hand's width': not a size SDI can measure"
     assert any(n.startswith(said) for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # a ring was built around a tower, silently
+        "two towers of 3 and a tower of 5 in the middle of them",
+        "two towers of 3 and a tower of 5 in between",
+        # a ring around a tower; the 5 reported unused
+        "My kid wants two towers of 3 with one of 5 in the middle of them.",
+        "two towers of 3 with one of 5 between them",
+    ],
+)
+def test_one_in_the_middle_of_two_stands_between_them(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = sorted(_columns(r).items(), key=lambda kv: kv[0][1])
+    assert [h for _, h in cols] == [3, 5, 3]
+
+
+def test_a_request_made_for_someone_is_the_operator_s_own():
+    # "She wants …": 'she' and 'wants' reported as unused words (partial)
+    r = plan("She wants a wall 6 blocks long and 3 high.")
+    assert r.status == "success", r.notes

@@ -604,6 +604,8 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
         # more than counted: only when nothing else names one ("a column between two stacks")
         if f"left of the {count}" in noted:
             continue  # "5 towers, then take away the middle one": 4 left, as asked
+        if got == count + 1 and "placed between the two" in noted:
+            continue  # "two towers of 3 with one of 5 between them": the one between is more
         if got < count and "the step before taken back" in noted:
             continue  # "3 towers of 2. scratch that, one tower of 6": the count taken back
         if got < count or (got > count and not more and named == 1):

@@ -1137,6 +1137,24 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"(\b(?:row|line|wall)\s+of\s+[^.;]*?)\s*,?\s*(?:all\s+)?in\s+(?:a|one)\s+(?:single\s+|straight\s+)?"
                 r"line\b", re.I), r"\1"),
     (re.compile(r"\b(?:from|on|at|in)\s+(?:production\s+)?line\s+\d+\b", re.I), " "),
+    # "and a tower of 5 in the middle of them": between them (built as a ring around a tower)
+    (re.compile(r"\bin\s+the\s+(?:middle|centre|center)\s+of\s+(?:them|those|both(?:\s+of\s+them)?|"
+                r"the\s+two(?:\s+\w+)?)\b", re.I), "between them"),
+    (re.compile(r"\bin\s+between\b(?!\s+(?:them|the|those|these|both|two|it)\b)", re.I),
+     "between them"),
+    # "two towers of 3 with one of 5 between them": and one of 5 between them (a size of theirs)
+    (re.compile(r"(\b(?:two|2)\s+(towers|stacks|columns|pillars)\b[^.;]*?)\s+with\s+(?:one|another)"
+                r"(?:\s+(?:tower|stack|column|pillar))?(\s+(?:of\s+)?\w+(?:\s+(?:cubes?|high|tall))?\s+"
+                r"between\s+them)\b", re.I),
+     lambda m: f"{m.group(1)} and a {m.group(2)[:-1]}{m.group(3)}"),
+    # "my son wants a tower", "the client would like …": a request made for someone, as one's own
+    (re.compile(r"\b(?:my|our|the|his|her|their)\s+(?:little\s+|young\s+|eldest\s+|youngest\s+)?"
+                r"(?:sons?|daughters?|kids?|child(?:ren)?|boys?|girls?|grandson|granddaughter|"
+                r"grandkids|nephew|niece|little\s+one|boss|client|customer|supervisor|manager|"
+                r"foreman|teacher|students)\s+(?:wants?|would\s+(?:like|love)|asked\s+for|needs?)\b",
+                re.I), "I want"),
+    (re.compile(r"(?:^|(?<=[.!?]\s))(?:she|he|they)\s+(?:wants?|would\s+like|needs?)\b", re.I),
+     "I want"),
     # "make the one in the middle 2 taller": the middle one (its words were read as a place)
     (re.compile(r"\bthe\s+(one|tower|stack|column|pillar)\s+in\s+the\s+(middle|centre|center)\b"
                 r"(?!\s+of\b)", re.I), r"the \2 \1"),
