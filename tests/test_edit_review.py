@@ -138,9 +138,11 @@ def test_nearest_order_moves_only_what_must_come_later():
 def test_nearest_order_keeps_the_move_before_pairs_the_supports_allow():
     layout = build("canopy", height=4)  # Table IV's H9: the roof before the pillars
     first = layout.ids[0]  # the first pillar cube of the generator's order
+    roof = ("b1", "b2", "b3", "b4", "b5")
+    assert len(layout) == 21  # the paper's 21-step canopy: 4 pillars of 4 and a 5-beam roof
     wanted = edit(layout, [{"op": "sequence", "move": b, "before": first}
-                           for b in ("b1", "b2", "b3", "b4")], sequence=layout.ids)  # fmt: skip
-    assert wanted.asked == tuple((b, first) for b in ("b1", "b2", "b3", "b4"))
+                           for b in roof], sequence=layout.ids)  # fmt: skip
+    assert wanted.asked == tuple((b, first) for b in roof)
     fix = repair_edit(wanted.layout, touched=(), sequence=wanted.sequence, asked=wanted.asked)
     assert fix is not None and verify(layout, sequence=fix.sequence).passed
     at = {pid: k for k, pid in enumerate(fix.sequence)}

@@ -54,7 +54,8 @@ def _canopy(drop_pillar: bool) -> Layout:
         _beam("b1", 0.5, 0.3, 0.075, along_y=True),
         _beam("b2", 0.4, 0.3, 0.075, along_y=True),
         _beam("b3", 0.45, 0.25, 0.125),
-        _beam("b4", 0.45, 0.35, 0.125),
+        _beam("b4", 0.45, 0.3, 0.125),
+        _beam("b5", 0.45, 0.35, 0.125),
     ]
     if drop_pillar:
         parts = parts[1:]

@@ -254,7 +254,8 @@ def arch(sp: ArchSpec, z: Sizes) -> list[Box]:
 
 
 def canopy(sp: CanopySpec, z: Sizes) -> list[Box]:
-    """Four pillars and a two-layer roof of beams (along u, then across along v)."""
+    """Four pillars and a two-layer roof of beams: two along u on the pillars, then a closed
+    top of beams side by side across them along v."""
     beam = _beam(z, "span")
     height = _resolve(sp.height, sp.height_m, z.h, 3, "height")
     span = _resolve(sp.span, None, z.s, 1, "span")
@@ -267,7 +268,7 @@ def canopy(sp: CanopySpec, z: Sizes) -> list[Box]:
         )
     pitch = (span + 1) * z.s
     top = height * z.h
-    inset = beam[0] / 2 - z.s / 2  # cross beams sit fully on the long beams
+    across = round(beam[0] / beam[1])  # cross beams side by side close the roof
     out = [
         Box(u, v, zc)
         for v in (0.0, pitch)
@@ -276,9 +277,10 @@ def canopy(sp: CanopySpec, z: Sizes) -> list[Box]:
     ]
     out += [Box(pitch / 2, v, top + beam[2] / 2, "beam") for v in (0.0, pitch)]
     out += [
-        Box(pitch / 2 + d, pitch / 2, top + 1.5 * beam[2], "beam", along_v=True)
-        for d in (-inset, inset)
-    ]
+        Box(pitch / 2 + (k - (across - 1) / 2) * beam[1], pitch / 2, top + 1.5 * beam[2], "beam",
+            along_v=True)
+        for k in range(across)
+    ]  # fmt: skip
     return out
 
 

@@ -121,7 +121,7 @@ SHAPE_HELP = {
     "staircase": "steps columns rising by one; width parts across",
     "bridge": "pillars height high joined by beams; span gap in parts (1–2); spans",
     "arch": "two pillars, corbels and a beam; span = opening in parts (1–3)",
-    "canopy": "four pillars height high with a two-layer beam roof; span 1–2",
+    "canopy": "four pillars height high with a closed two-layer beam roof; span 1–2",
     "enclosure": "a hollow ring length × width, height levels",
     "castle": "an enclosure with corner towers count levels higher",
     "l_shape": "an L with arms length and width",
