@@ -720,3 +720,16 @@ def test_plain_turns_numpy_values_into_json_values():
 
     value = {"a": np.float64(0.5), "b": (np.int64(2), np.array([1.0, 2.0])), 3: [np.bool_(True)]}
     assert json.loads(json.dumps(plain(value))) == {"a": 0.5, "b": [2, [1.0, 2.0]], "3": [True]}
+
+
+def test_the_canopy_roof_is_closed_and_the_paper_s_21_steps():
+    # the roof was two beams on the pillars and two across them, a cube-wide gap down the
+    # middle of its top (20 parts at height 4; the paper counts 21)
+    lay = gen("canopy", height=4)
+    assert len(lay) == 21
+    c, h = lay.centres, lay.half_extents
+    top = c[:, 2] == c[:, 2].max()
+    lo, hi = (c[top] - h[top])[:, :2], (c[top] + h[top])[:, :2]
+    covered = float(((hi - lo)[:, 0] * (hi - lo)[:, 1]).sum())
+    span = hi.max(0) - lo.min(0)
+    assert covered == pytest.approx(float(span[0] * span[1]))  # side by side, no gap, no overlap
