@@ -56,11 +56,13 @@ run: $(STAMP) $(TWIN_STAMP)
 	$(VENV)/bin/sdi twin --plan "$(DEMO)"
 
 # The tests include the integration tests against the real local model, so they need the extra;
-# SDI_REQUIRE_LOCAL_LLM turns their skip into a failure if it is missing.
+# SDI_REQUIRE_LOCAL_LLM turns their skip into a failure if it is missing. They run on TEST_JOBS
+# worker processes (pytest-xdist; every test is independent of the others' order and process).
+TEST_JOBS ?= 2
 test: $(STAMP) $(LOCAL_STAMP) $(TWIN_STAMP) browser
 	$(VENV)/bin/ruff check src tests benchmarks
 	$(VENV)/bin/mypy
-	SDI_REQUIRE_LOCAL_LLM=1 SDI_REQUIRE_BROWSER=1 SDI_CHROMIUM=$(CHROMIUM) $(PY) -m pytest
+	SDI_REQUIRE_LOCAL_LLM=1 SDI_REQUIRE_BROWSER=1 SDI_CHROMIUM=$(CHROMIUM) $(PY) -m pytest -n $(TEST_JOBS)
 
 bench: $(STAMP) $(LOCAL_STAMP) $(TWIN_STAMP) browser
 	$(PY) benchmarks/inspector_scaling.py
