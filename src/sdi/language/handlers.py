@@ -745,10 +745,11 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     base = _said_last(m)
     number = r"(?:\d+|" + "|".join(NUMBER_WORDS) + r")"
     read = [(at, v) for w, v in st.compared if (at := m.string.rfind(w, 0, m.start())) >= 0]
-    if read and not re.search(rf"\b{number}\b", m.string[max(read)[0] + 1 : m.start()], re.I):
+    at, gave = max(read, default=(-1, None))
+    if gave is not None and not re.search(rf"\b{number}\b", m.string[at + 1 : m.start()], re.I):
         # "another, one shorter, … then another, one shorter again": from the size the
         # comparison before gave, no number said since (its own words were the base)
-        base = max(read)[1]
+        base = gave
     if base is None:
         return m.group(0)
     sizes = re.findall(rf"\bof\s+{number}\b|\b{number}\s+(?:cubes?\s+)?(?:high|tall|long|wide)\b",

@@ -949,6 +949,8 @@ def _opening(text: str, st: ReadState) -> str:
         cut -= 1
     before = re.sub(r"(?:,|\band|\bbut|\bnot\s+closed:?)\s*$", "", text[:cut], flags=re.I)
     return before.rstrip(" ,") + text[m.end(1) :]
+
+
 _CUT_OFF = re.compile(
     r"\b(of|with|and|by|at|from|the|an?|than|into|onto)\s*[,;:-]*\s*$",
     re.IGNORECASE,
