@@ -7178,3 +7178,98 @@ def test_a_request_made_for_someone_is_the_operator_s_own():
     # "She wants …": 'she' and 'wants' reported as unused words (partial)
     r = plan("She wants a wall 6 blocks long and 3 high.")
     assert r.status == "success", r.notes
+
+
+@pytest.mark.parametrize(
+    "command, tower, legs, gap",
+    [
+        # the tower was read into the table's "with …" (its height reported unused, no tower)
+        ("a table with legs 2 high and a tower of 3 on its right", 3, 2, None),
+        ("a bridge with pillars of 3 high and a tower of 4 on its right", 4, 3, None),
+        # the gap's clause made the bridge the one on the right, silently
+        ("Put a bridge with pillars of 3 high and next to it on the right side a tower of 4 "
+         "high, with one block in between.", 4, 3, 0.10),
+    ],
+)
+def test_a_structure_after_one_said_with_its_legs_stands_on_its_side(command, tower, legs, gap):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    (ty,) = [y for (_, y), h in cols.items() if h == tower]
+    others = [y for (_, y), h in cols.items() if h != tower]
+    assert legs in cols.values()
+    assert ty < min(others)  # the robot's right: smaller y
+    if gap is not None:
+        pillar = min(y for (_, y), h in cols.items() if h == legs)
+        assert pillar - ty == pytest.approx(gap)
+
+
+@pytest.mark.parametrize(
+    "command, length",
+    [
+        # a 3 by 2 floor and a tower beside it, silently
+        ("a tower of 5 standing between two rows of three, not touching either row", 3),
+        ("a tower of 5 between two lines of 4 cubes", 4),
+    ],
+)
+def test_a_tower_between_two_rows_has_a_row_on_each_side(command, length):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    assert sorted(cols.values()) == [1] * 2 * length + [5]
+    (tx, ty) = next(k for k, h in cols.items() if h == 5)
+    rows = [k for k, h in cols.items() if h == 1]
+    # the rows run parallel on either side of the tower, one part thick each
+    for axis in (0, 1):
+        lines = {round(k[axis], 3) for k in rows}
+        if len(lines) == 2:
+            a, b = sorted(lines)
+            assert a < (tx, ty)[axis] < b
+            break
+    else:
+        raise AssertionError(f"not two parallel rows: {rows}")
+
+
+@pytest.mark.parametrize(
+    "command, tower, end",
+    [
+        # the end was not read: the tower stood anywhere, silently
+        ("a 4-step staircase climbing to the right, with a tower of 5 at its high end", 5,
+         "right"),
+        ("3 step stairs going up to the left pls, and a tower of 2 touching the low end", 2,
+         "right"),
+        # "at the bottom of the stairs": the 2 was read as a length a tower has not (partial)
+        ("a staircase of 3 steps going up to the right and a tower of 2 at the bottom of the "
+         "stairs", 2, "left"),
+    ],
+)
+def test_a_tower_at_an_end_of_a_staircase_stands_beside_that_end(command, tower, end):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = sorted(_columns(r).items(), key=lambda kv: kv[0][1])  # right (small y) to left
+    heights = [h for _, h in cols]
+    # the tower beside the end, the staircase's steps rising away from or towards it
+    assert heights[-1 if end == "left" else 0] == tower
+    steps = heights[:-1] if end == "left" else heights[1:]
+    assert sorted(steps) == list(range(1, len(steps) + 1))
+
+
+@pytest.mark.parametrize(
+    "command, climbs",
+    [
+        # the field's side was read as the table's region: it climbed to the back, silently
+        ("Staircase spec:\n- steps: 6\n- width: 2 cubes\n- direction: up towards the left", "left"),
+        ("stairs | steps: 4 | direction: right", "right"),
+    ],
+)
+def test_a_staircase_s_direction_field_is_the_way_it_climbs(command, climbs):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    tops: dict[float, float] = {}
+    for o in r.layout.objects:
+        y = round(o.position[1], 3)
+        tops[y] = max(tops.get(y, 0.0), o.position[2])
+    ys = sorted(tops)
+    assert len(ys) > 2  # along y, not front to back
+    rising = [tops[y] for y in ys]  # right (small y) to left
+    assert rising == sorted(rising, reverse=climbs == "right")

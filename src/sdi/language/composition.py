@@ -263,10 +263,11 @@ def relate(
         side = r.side or (phrases[r.object].side if r.object is not None else None)
         if kind == "on_top_of":
             side = edge  # on a top: only an edge said places it off the top's centre
-        if kind == "next_to" and st.stair_foot and obj_spec.shape == "staircase":
-            # "a tower at its low end": the side the staircase climbs from
+        if kind == "next_to" and st.stair_end and obj_spec.shape == "staircase":
+            # "a tower at its low end": the side the staircase climbs from (or to)
             side = _stair_foot(obj_spec)
-            st.stair_foot = False
+            side = lx.OPPOSITE_SIDE[side] if st.stair_end == "high" else side
+            st.stair_end = None
         at = next((a for a in st.anchors if a[0] == kind), None)
         if at is not None and _covers(subject, obj_spec) and any(
             later.kind == r.kind for later in rels[n_rel + 1 :]

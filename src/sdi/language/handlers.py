@@ -662,19 +662,20 @@ def _corner_named(m: re.Match[str], st: ReadState, note: str) -> str:
 
 
 def _stair_end(m: re.Match[str], st: ReadState, note: str) -> str:
-    """ "a tower of 3 at its low end", "at the foot of the stairs": beside the staircase's low
-    end (which end follows the way it climbs)."""
+    """ "a tower of 3 at its low end", "at the foot of the stairs", "touching its high end":
+    beside that end of the staircase (which end follows the way it climbs)."""
     said = _said(m)[0]
     if not re.search(r"\b(?:stair|stairs|staircase|steps?)\b", m.string, re.IGNORECASE):
         return m.group(0)  # "at the top end of the wall": no staircase named
     if re.match(r"\s*,?\s*(?:a|an|one|two|three|the)\s", m.string[m.end() :], re.IGNORECASE):
         return m.group(0)  # "against its tall end a tower of five": said before what it places
-    st.stair_foot = True
-    st.notes.append(f"read '{said}' as beside the staircase's low end")
+    high = re.search(r"\b(?:high|higher|highest|upper|tall|taller)\s+end\b", said, re.I)
+    st.stair_end = "high" if high else "low"
+    st.notes.append(f"read '{said}' as beside the staircase's {st.stair_end} end")
     if m.group(0).lstrip().startswith(","):
         return " "  # "tower 3 next to a 3 step staircase, low end": the relation is said
     of = re.search(r"\bof\s+(the\s+\w+)\s*$", said, re.IGNORECASE)
-    touching = " touching " if said.lower().startswith("against") else " "
+    touching = " touching " if said.lower().startswith(("against", "touching")) else " "
     return f" next to {of.group(1) if of else 'it'}{touching}"
 
 

@@ -165,6 +165,28 @@ _OWN_SIZE_WORDS = frozenset({
 })  # fmt: skip
 
 
+# a structure's own supports, sized after "with" ("a table with legs 2 high and …")
+_OWN_PARTS = frozenset({"legs", "pillars", "posts", "supports", "feet"})
+
+
+def _own_then_and(doc: Doc, toks: list[int]) -> int | None:
+    """Where "and" starts a structure of its own after the own sizes said with "with" ("a
+    staircase with 4 steps and a tower of 2"): its position in toks, or None."""
+    withs = [n for n, i in enumerate(toks) if doc[i].lower_ == "with"]
+    if not withs:
+        return None
+    ands = [n for n in range(withs[-1] + 1, len(toks)) if doc[toks[n]].lower_ == "and"]
+    own = bool(ands) and all(
+        doc[i].like_num
+        or doc[i].lower_ in lx.STEP_WORDS | lx.LEVEL_WORDS | lx.PART_WORDS
+        or doc[i].lower_ in _OWN_SIZE_WORDS | _OWN_PARTS
+        for i in toks[withs[-1] + 1 : ands[0]]
+    )
+    if own and names_structure(doc, toks[ands[0] + 1 :]):
+        return ands[0]
+    return None
+
+
 def find_phrases(doc: Doc) -> tuple[list[Phrase], list[PhraseRelation]]:
     phrases: list[Phrase] = []
     rels: list[PhraseRelation] = []
@@ -362,7 +384,7 @@ def _clause_phrases(
             and len(tail) > 1
             and doc[tail[0]].lower_ in ("it", "them", "that", "this")
             and (doc[tail[1]].lower_ in ("a", "an", "another") or doc[tail[1]].like_num)
-            and names_structure(doc, tail[1:])
+            and names_structure(doc, tail[1 : commas[0] if commas else None])
             and not markers[j][2].endswith("_verb")
             and markers[j][2] in ("on", "next", "inside", "around", "middle")
         ):
@@ -415,18 +437,11 @@ def _clause_phrases(
             toks = phrases[before].tokens
             withs = [n for n, i in enumerate(toks) if doc[i].lower_ == "with"]
             if withs and names_structure(doc, toks[withs[-1] + 1 :]):
-                cut = withs[-1]
                 # "a staircase with 4 steps and a tower of 2 on top": the steps are the
                 # staircase's own; what stands on it comes after the "and"
-                ands = [n for n in range(cut + 1, len(toks)) if doc[toks[n]].lower_ == "and"]
-                own = bool(ands) and all(
-                    doc[i].like_num
-                    or doc[i].lower_ in lx.STEP_WORDS | lx.LEVEL_WORDS | lx.PART_WORDS
-                    or doc[i].lower_ in _OWN_SIZE_WORDS
-                    for i in toks[cut + 1 : ands[0]]
-                )
-                if own and names_structure(doc, toks[ands[0] + 1 :]):
-                    cut = ands[0]
+                cut = _own_then_and(doc, toks)
+                if cut is None:
+                    cut = withs[-1]
                 phrases[before].tokens = toks[:cut]
                 phrases[after].tokens = toks[cut + 1 :] + phrases[after].tokens
                 if pronoun:
@@ -466,6 +481,14 @@ def _clause_phrases(
             rels.append(PhraseRelation("next", before, after, side))
         elif kind == "next_implicit" and named and names_structure(doc, phrases[before].tokens):
             # "a wall and behind it a tower": the one after, beside the one before
+            rels.append(PhraseRelation("next", after, before, side))
+        elif kind == "next_implicit" and (cut := _own_then_and(doc, phrases[before].tokens)) and (
+            not [i for i in after_toks if doc[i].lower_ not in words.HARMLESS | {","}]
+        ):
+            # "a table with legs 2 high and a tower of 3 on its right": the legs are the
+            # table's own; what stands to its right comes after the "and"
+            toks = phrases[before].tokens
+            phrases[before].tokens, phrases[after].tokens = toks[:cut], toks[cut + 1 :]
             rels.append(PhraseRelation("next", after, before, side))
         elif kind == "next_implicit":
             rels.append(

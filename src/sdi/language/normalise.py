@@ -618,6 +618,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: m.group(0) if not re.search(r"\b(?:stair|step)", m.string[: m.start()], re.I)
      else "going up to the " + (m.group(2) if m.group(1).lower()[:2] in ("hi", "ta", "to")
                                 else _OTHER_SIDE[m.group(2).lower()])),
+    # a staircase's "direction: up towards the left" (a field): the way it climbs (read as the
+    # table's left region, silently)
+    (re.compile(r"\b(?:direction\s*[:=]?|(?:climb(?:ing)?|rises?|rising)\s*[:=])\s*(?:(?:going\s+)?up\s+)?(?:(?:to(?:wards?)?|"
+                r"toward)\s+)?(?:the\s+)?(left|right|back|front)\b", re.I),
+     lambda m: m.group(0) if not re.search(r"\b(?:stair|step)", m.string, re.I)
+     else f"going up to the {m.group(1)}"),
     # "one in each corner of the floor": the table's corners, when no floor was named
     (re.compile(r"\b(each|every|all\s+four|the\s+four)\s+(corners?)\s+of\s+the\s+(?:floor|cell|workspace|"
                 r"work\s+area|area)\b", re.I),
@@ -1429,6 +1435,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:i|we|they)\s+(?:also\s+)?(?:want|need)|(?:he|she|it)\s+(?:also\s+)?(?:wants|needs))\s+"
                 r"(?=(?:one\s+more|another|an\s+extra|(?:\d+|two|three)\s+more)\s+(?:layer|level|course|tier|"
                 r"cube|block|step|row)s?\b)", re.I), "add "),
+    # "a tower between two rows of three": two rows, one on each side (not a 3 by 2 floor)
+    (re.compile(r"\b(between\s+)(?:two|2)\s+(?:row|line)s\s+of\s+(\d+|two|three|four|five|six|seven|"
+                r"eight|nine|ten)(?:\s+(?:cubes|blocks|bricks))?(?:\s+each)?\b", re.I),
+     r"\1a row of \2 and another row of \2"),
     # "two rows of six, parallel, with one cube between them": separate rows, not one floor
     (re.compile(r"\b(two|three|2|3)\s+(rows|lines|walls)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|"
                 r"ten)(?:\s+(?:cubes|blocks|bricks))?(?:\s+each)?(?=[^.;]*\b(?:parallel|between\s+them)\b)"

@@ -1888,10 +1888,12 @@ _REWRITES += [
         " running left to right ",
         "read '{0}' as running left to right",
     ),
-    (  # "a tower at its low end", "at the foot of the stairs": beside that end of a staircase
-        # (its top end is left as it was: a tower there may stand on the top step)
+    (  # "a tower at its low end", "at the foot of the stairs", "touching its high end": beside
+        # that end of a staircase ("at its top end", "at the top of the stairs" are left as they
+        # were: a tower there may stand on the top step)
         re.compile(
-            r"\b(?:at|by|beside|next\s+to|against)\s+(?:its|the)\s+(?:(?:low|lower|lowest|bottom)\s+end|foot)\b"
+            r"\b(?:at|by|beside|next\s+to|against|touching)\s+(?:its|the)\s+(?:(?:low|lower|lowest|"
+            r"bottom|high|higher|highest|upper|tall|taller)\s+end|foot|bottom(?=\s+of\s+(?:it|the\s+st)))\b"
             r"(?:\s+of\s+(?:it|the\s+(?:staircase|stairs|steps|stair)))?"
             r"|\s*,\s*(?:at\s+)?(?:its\s+|the\s+)?(?:low|lower|bottom)\s+end\b",
             re.IGNORECASE,

@@ -65,7 +65,8 @@ class ReadState:
     grid: tuple[int, int, str] | None = None
     # "with the tallest one in the middle": (what was said, "max" | "min", middle|left|right)
     order: tuple[str, str, str] | None = None
-    stair_foot: bool = False  # "a tower at its low end", "at its foot": beside a staircase's foot
+    # "a tower at its low end", "at its foot", "at its high end": beside that end of a staircase
+    stair_end: str | None = None
     distinct: str | None = None  # "none of them the same height": what was said
     listing: str | None = None  # "left to right: a, then b": the order structures are named in
     # "on each corner", "at both ends": (relation kind, anchor) for the next such relation
