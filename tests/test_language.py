@@ -7273,3 +7273,107 @@ def test_a_staircase_s_direction_field_is_the_way_it_climbs(command, climbs):
     assert len(ys) > 2  # along y, not front to back
     rising = [tops[y] for y in ys]  # right (small y) to left
     assert rising == sorted(rising, reverse=climbs == "right")
+
+
+def test_three_sizes_said_with_times_are_a_block_s_sides():
+    # "3 times 3" was multiplied: a 9 by 2 floor, silently
+    r = plan("Make one block of 3 times 3 times 2 cubes.")
+    assert r.status == "success", r.notes
+    lo, hi = boxes(r)
+    assert len(lo) == 18
+    assert sorted(round(float(v) / 0.05) for v in (hi.max(0) - lo.min(0))) == [2, 3, 3]
+
+
+@pytest.mark.parametrize("command", ["Build a wall of length −3.", "a tower, height: -2 cubes"])
+def test_a_size_below_zero_is_an_error(command):
+    # the minus was dropped: a wall 3 long, silently
+    r = plan(command)
+    assert r.status == "error"
+    assert "a size below zero cannot be built" in r.error
+
+
+@pytest.mark.parametrize(
+    "command, parts", [("ring 5x5 h2", 32), ("wall 5 long h2", 10), ("twr H4", 4)]
+)
+def test_a_height_written_against_its_letter(command, parts):
+    # "h2" was dropped (a ring 1 high) or read as a length, silently
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == parts
+    assert max(round(o.position[2] / 0.05 - 0.5) for o in r.layout.objects) + 1 in (2, 4)
+
+
+def test_a_letter_shaped_wall_with_its_height_said_apart_has_arms_of_the_by_sizes():
+    # "4 by 4" was read as 4 long and 4 high, the "2 cubes high" dropped, silently
+    r = plan("As a QA-minded PM, I want an L-shaped wall, 4 by 4 cubes, 2 cubes high.")
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 2 * 7
+    assert set(_columns(r).values()) == {2}
+
+
+def test_towers_evenly_spaced_in_a_row_are_the_row():
+    # "in a row" after "evenly spaced" was built as a row of 5 cubes beside the columns
+    r = plan("A colonnade of four columns, each three cubes tall, evenly spaced in a row.")
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values()) == [3, 3, 3, 3]
+
+
+@pytest.mark.parametrize(
+    "command, middle, sides",
+    [
+        # 'flanking' was dropped as a word of no meaning; "towers 4 cubes tall" a third tower
+        ("Two towers flanking a central pyramid of 3 levels; towers 4 cubes tall.", 6, 4),
+        ("a pyramid of 3 levels flanked by two towers of 4", 6, 4),
+        ("a pyramid of 3 levels between two towers. The towers are 4 cubes tall.", 6, 4),
+    ],
+)
+def test_two_towers_flanking_a_structure_stand_either_side_of_it(command, middle, sides):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    towers = sorted(k for k, h in cols.items() if h == sides)
+    assert len(towers) == 2 and len(r.layout) == middle + 2 * sides
+    rest = [k for k, h in cols.items() if h != sides]
+    axis = 0 if abs(towers[0][0] - towers[1][0]) > abs(towers[0][1] - towers[1][1]) else 1
+    lo, hi = sorted(t[axis] for t in towers)
+    assert all(lo < k[axis] < hi for k in rest)
+
+
+def test_a_check_said_after_the_structure_restates_it():
+    # "Acceptance: 5 steps, 1 cube wide" was built as a second staircase, silently
+    r = plan("As a user I want a 5-step staircase rising towards the right so that the demo "
+             "looks good. Acceptance: 5 steps, 1 cube wide.")  # fmt: skip
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 15
+    r = plan("A 5-step staircase. Acceptance: 6 steps.")
+    assert r.status == "partial" and len(r.layout) == 15
+    assert any("differs from the staircase described before (steps 6)" in n for n in r.notes)
+
+
+@pytest.mark.parametrize(
+    "command, parts",
+    [
+        # ", solid," was read as a second block; "!!" ended the sentence (a tower of its own)
+        ("Verify: a cube of 3x3x3 cubes, solid, centred on the table.", 27),
+        ("He wants a castle!! with towers in the corners", len(plan("a castle").layout)),
+    ],
+)
+def test_words_said_of_the_structure_are_not_a_second_one(command, parts):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == parts
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # the gap's width was read as a span of 1 / ignored with the river, silently
+        "a bridge with pillars 2 high, the gap is 2 blocks wide",
+        "a bridge over a river 2 cubes wide",
+    ],
+)
+def test_the_width_of_what_a_bridge_crosses_is_its_span(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    pillars = sorted(k[1] for k, h in _columns(r).items() if h > 1)
+    assert len(pillars) == 2 and pillars[1] - pillars[0] == pytest.approx(0.15)

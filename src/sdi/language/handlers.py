@@ -249,12 +249,19 @@ def _listing(m: re.Match[str], st: ReadState, note: str) -> str:
     return " : "
 
 
+# how separate structures stand in their row ("standing", "evenly spaced", "set out")
+_HOW_THEY_STAND = frozenset({
+    "standing", "placed", "arranged", "set", "lined", "up", "spaced", "evenly", "equally",
+    "regularly", "out",
+})  # fmt: skip
+
+
 def _in_a_row(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "three towers of 3 in a row with gaps": separate structures stand side by side anyway;
     "in a line front to back": one behind the other; "cubes in a row" is a row (left to the
     grammar)."""
     before = re.findall(r"[a-z]+", m.string[: m.start()].lower())
-    while before and before[-1] in ("standing", "placed", "arranged", "set", "lined", "up"):
+    while before and before[-1] in _HOW_THEY_STAND:
         before.pop()  # "three columns of four cubes standing in a row": how they stand
     noun = before[-1] if before else ""
     plural = [w for w in before[-5:] if w.endswith("s") and w in lx.SHAPE_WORDS

@@ -887,6 +887,33 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"(\bon\s+top\s+of\s+(?:that|it|this)\b[^.;]*?)\s*,?\s+and\s+(?:then\s+)?"
                 r"(on\s+top\s+of\s+(?:that|it|this)|on\s+(?:that|it|this)|above\s+(?:that|it|this))\s+"
                 r"(?=(?:a|an|one|another|\d+)\b)", re.I), r"\1. \2 "),
+    # "two towers flanking a central pyramid", "a pyramid flanked by two towers": the one
+    # between the two ('flanking' was dropped as a word of no meaning, silently)
+    (re.compile(r"\b((?:two|2|a\s+pair\s+of)\s+[^,.;]*?)\s+flanking\s+(?:a|an|the)\s+(?:central\s+|middle\s+)?"
+                r"([^,.;]+?)(?=\s*(?:[,.;]|\band\b|\bthen\b|$))", re.I),
+     r"a \2 between \1"),
+    (re.compile(r"\bflanked\s+(?:on\s+(?:both|either|each)\s+sides?\s+)?(?:by|with)\s+", re.I),
+     lambda m: "between " if re.match(r"(?:two|2|a\s+pair|both)\b", m.string[m.end() :], re.I)
+     else "between two "),
+    # "a pyramid between two towers, towers 4 cubes tall": the size of those named before, in
+    # a sentence of its own (a third tower was built, silently)
+    (re.compile(r"\s*[,;]\s*(?:and\s+)?((?:both|all|the)\s+)?(towers|walls|rows|stacks|columns|pillars|"
+                r"pyramids|staircases)(\s+(?:are\s+|each\s+|both\s+)?(?:(?:\d+|one|two|three|four|five|six|"
+                r"seven|eight|nine|ten)\s+(?:cubes?\s+|blocks?\s+)?(?:high|tall|long|levels?|steps?)))\b"
+                r"(?=\s*(?:[.;]|$))", re.I),
+     lambda m: m.group(0) if not re.search(
+         r"\b(?:two|three|four|both|2|3|4)\s+(?:\w+\s+)?" + m.group(2) + r"\b",
+         _sentence_before(m.string, m.start()), re.I)
+     else f". The {m.group(2)}{m.group(3)}"),
+    # "a block of 3 times 3 times 2 cubes": three sizes, not a product (read as 9 by 2)
+    (re.compile(r"\b(" + _NUM + r")\s+times\s+(" + _NUM + r")\s+times\s+(" + _NUM + r")\b", re.I),
+     r"\1 by \2 by \3"),
+    # "an L-shaped wall, 4 by 4 cubes, 2 cubes high": with its height said apart, the "4 by 4"
+    # is the letter's arms (read as 4 long and 4 high, the 2 dropped, silently)
+    (re.compile(r"\b([LUT])[\s-]*shaped?\s+(?:wall|fence)(\s*,?\s*(?:of\s+)?" + _NUM
+                + r"\s*(?:by|x)\s*" + _NUM + r"(?:\s+(?:cubes?|blocks?))?)(?=\s*,?\s*(?:and\s+)?"
+                + _NUM + r"\s+(?:cubes?\s+|blocks?\s+|courses?\s+)?(?:high|tall)\b)", re.I),
+     r"\1 shape\2"),
     # "Two towers make, one 4 high …": the verb after its object
     (re.compile(r"\b((?:two|three|four|five|[2-9])\s+(?:towers|walls|rows|stacks|columns|blocks|pyramids))"
                 r"\s+(make|build)\b", re.I), r"\2 \1"),
@@ -1078,6 +1105,22 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\s*,?\s*(?:and\s+)?(?:completely|totally|fully|entirely|all|100%)\s+(?:solid|filled(?:\s+in)?)\b",
                 re.I),
      lambda m: " " if re.search(r"\b(?:box|block|brick|cuboid|slab|grid|pad|platform)\b",
+                                m.string[: m.start()], re.I) else m.group(0)),
+    # "a bridge over the river …, the river is 3 blocks wide", "the gap is 3 blocks wide": the
+    # span under it (ignored as a word of no meaning, or read as a span of 1, silently)
+    (re.compile(r"\b(?:the|a|an)\s+(?:gap|river|stream|road|canal|channel|ravine|moat|ditch|valley|"
+                r"opening|space)\s+(?:(?:between\s+(?:them|the\s+\w+)|under\s+(?:it|the\s+\w+))\s+)?"
+                r"(?:is\s+|being\s+|of\s+)?(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+|parts?\s+)?"
+                r"(?:wide|across)\b", re.I),
+     lambda m: m.group(0)
+     if not re.search(r"\b(?:bridges?|arch(?:es)?|viaducts?|spans?)\b", m.string, re.I)
+     else f"over a {m.group(1)}-block gap"),
+    # "a castle!! with towers in the corners": an exclamation mid-sentence, not its end (the
+    # towers were read as a structure of their own)
+    (re.compile(r"(?<=\w)\s*!+(?=\s+[a-z])"), ""),
+    # "a cube of 3x3x3 cubes, solid, centred": said of the block (read as a second block)
+    (re.compile(r"\s*,\s*(?:and\s+)?(?:solid|filled(?:\s+in)?)\s*(?=[,.;]|$)", re.I),
+     lambda m: " " if re.search(r"\b(?:box|block|brick|cuboid|slab|grid|pad|platform|cube|layer)\b",
                                 m.string[: m.start()], re.I) else m.group(0)),
     # "a tower on its right, not on its left": the side said, the other ruled out
     (re.compile(r"(?<!\bnot\s)\b((?:on|to)\s+(?:its|the)\s+(left|right|front|back)(?:\s+side)?)\s*,?\s*"
@@ -2355,6 +2398,10 @@ _LETTER_EQ = re.compile(
 )
 
 
+# "ring 5x5 h2", "twr H4": a height written against its letter (the 2 was dropped, silently)
+_H_JOINED = re.compile(r"(?<![\w.-])h(\d{1,2})\b(?!\s*(?:mm|cm|m)\b)", re.IGNORECASE)
+
+
 def _letter_eq(m: re.Match[str]) -> str:
     return f" {m.group(2)} {m.group(3) or ''} {_DIM_WORD[m.group(1).lower()]} "
 
@@ -2887,6 +2934,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         text = f"{text.rstrip(' ./;,')} , {quantities[0]} of them"
     text = _LETTER_LIST.sub(_letter_list, text)  # "h=2/h=4/h=6": one value each
     text = _LETTER_EQ.sub(_letter_eq, text)
+    text = _H_JOINED.sub(r" \1 high ", text)  # "ring 5x5 h2"
     text = _expand_noted(_SHORTHAND, text, notes)
     text = _bare_millimetres(text, notes)
     text = _N_ON_M.sub(_n_by_m, text)  # "a block two on two", "base three on three"

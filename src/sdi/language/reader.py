@@ -113,6 +113,16 @@ def _placed_by_face(specs: list[StructureSpec], st: ReadState) -> list[Structure
     return specs
 
 
+# "a wall of length −3", "height: -2 cubes": a size below zero (read as 3, silently); not a
+# coordinate ("y = -0.1"), a range ("3-4") or a dash ("tower - 3 high")
+_NEGATIVE_SIZE = re.compile(
+    r"\b(?:(?:length|height|width|depth|size|levels?|steps?|count)\s*(?:of|is|=|:)?|of|"
+    r"(?:high|long|wide|tall)\s*[:=])\s*[−-]\s?\d+(?:\.\d+)?(?=\s*(?:cubes?|blocks?|parts?|mm|cm|m|"
+    r"high|long|wide|tall|levels?|steps?)?\s*(?:[.,;!?]|$))",
+    re.IGNORECASE,
+)
+
+
 def read(command: str, cell: CellConfig | None = None) -> Reading:
     """Read `command`; `SpecError` (with `understood`) when it names nothing buildable."""
     cell = cell or CellConfig()
@@ -127,6 +137,13 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     if not command.strip():
         raise SpecError(
             "the command is empty; say what to build, e.g. 'a 3-cube tower'", understood={}
+        )
+    negative = _NEGATIVE_SIZE.search(command)
+    if negative:
+        raise SpecError(
+            f"'{negative.group(0).strip()}': a size below zero cannot be built; sizes count parts "
+            "(whole numbers ≥ 1) or measure lengths",
+            understood={},
         )
     st = ReadState(command, cell)
     text = structured.as_words(command, st.notes)  # '{"shape": "tower", "height": 4}'

@@ -1963,7 +1963,7 @@ _REWRITES += [
     (  # "three towers of 3 in a row with gaps": how separate structures stand anyway
         re.compile(
             r"(?:(?<=s)|(?<=high)|(?<=tall)|(?<=\d)|(?<=standing)|(?<=placed)|(?<=arranged)|"
-            r"(?<=set)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,)|(?<=\d,)|(?<=\d\s,)|(?<=er)|(?<=er,)|"
+            r"(?<=set)|(?<=spaced)|(?<=set\sout)|(?<=lined\sup)|(?<=s,)|(?<=high,)|(?<=tall,)|(?<=\d,)|(?<=\d\s,)|(?<=er)|(?<=er,)|"
             r"(?<=one)|(?<=two)|(?<=three)|(?<=four)|(?<=five)|(?<=six)|(?<=seven)|(?<=eight)|(?<=nine))\s+in\s+"
             r"(?:a|one|a\s+single)\s+"
             r"(?:straight\s+|neat\s+)?"

@@ -223,6 +223,10 @@ def fill_slots(
         legs = bool(_COMPONENT.search(p.text)) and _pillared(phrases[:k])  # "canopy. 4 legs."
         if (not said_shapes or legs) and _sizes_of_named(p, spec, phrases[:k], structures, st):
             continue
+        if _sizes_of_plural(p, spec, structures, st):
+            continue  # "two towers and a pyramid; towers 4 cubes tall"
+        if _restated(p, spec, phrases[:k], structures, st):
+            continue  # "… a 5-step staircase. Acceptance: 5 steps, 1 cube wide."
         told = described(p, spec, phrases[:k], structures)
         if told is not None:
             # "A staircase on the right. It has 5 steps.": more about it, not a second one
@@ -319,6 +323,86 @@ def _sizes_of_named(
     structures[prev.first] = grown.structures[0]
     _carry_notes(grown.notes, st)
     st.notes.append(f"read '{p.text}' as the size of the {own[0].shape} named before")
+    return True
+
+
+_PLURAL_SIZED = re.compile(
+    r"^\W*(?:and\s+)?(?:(?:the|both|all|all\s+the|both\s+the|each\s+of\s+the)\s+)?([a-z]+s)\b"
+    r"(?:\s+(?:are|should\s+be|must\s+be|will\s+be|each|both|all|of))*\s+(?=\d|(?:one|two|three|"
+    r"four|five|six|seven|eight|nine|ten)\b)",
+    re.IGNORECASE,
+)
+
+
+def _sizes_of_plural(
+    p: Phrase, spec: SpecDraft, structures: list[StructureDraft], st: ReadState
+) -> bool:
+    """ "two towers flanking a pyramid; towers 4 cubes tall", "… The towers are 4 high.": the
+    size of every structure of that family named before with none (a third tower was built)."""
+    m = _PLURAL_SIZED.match(p.text)
+    word = m.group(1).lower() if m else ""
+    family = lx.SHAPE_WORDS.get(word)
+    if family is None or word in lx.AMBIGUOUS_SHAPES or _ANOTHER.search(p.text):
+        return False
+    if not spec.structures or any(s.shape != family for s in spec.structures):
+        return False
+    sizes = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape", "part"})
+    if not sizes or sizes.keys() & {"region", "at_x", "at_y", "edge", "yaw_deg"}:
+        return False  # "towers at the back": a place, read elsewhere
+    if any(s.model_dump(exclude_defaults=True, exclude={"shape", "part"}) != sizes
+           for s in spec.structures):  # fmt: skip
+        return False
+    mine = [n for n, s in enumerate(structures) if s.shape == family]
+    if len(mine) < 2 or any(
+        structures[n].model_dump(exclude_defaults=True).keys() & sizes.keys() for n in mine
+    ):
+        return False  # one named before, or their sizes said already: not theirs
+    for n in mine:
+        structures[n] = structures[n].model_copy(update=sizes)
+    _carry_notes(spec.notes, st)
+    st.notes.append(f"read '{p.text}' as the size of the {len(mine)} {family}s named before")
+    p.count = 0
+    return True
+
+
+_CHECK_LABEL = re.compile(
+    r"^\W*(?:acceptance(?:\s+criteria)?|ac|expected(?:\s+result)?|check|verify|"
+    r"definition\s+of\s+done|dod|then)\s*[:=-]", re.IGNORECASE
+)
+
+
+def _restated(
+    p: Phrase,
+    spec: SpecDraft,
+    before: list[Phrase],
+    structures: list[StructureDraft],
+    st: ReadState,
+) -> bool:
+    """ "As a user I want a 5-step staircase … Acceptance: 5 steps, 1 cube wide.": a check
+    said after the structure restates it — its sizes are that structure's, not a second one's
+    (a second staircase was built, silently); a size the check gives differently is reported."""
+    if not _CHECK_LABEL.match(p.text) or len(spec.structures) != 1:
+        return False
+    built = [q for q in before if q.spec is not None and q.count and not q.undone]
+    if not built or built[-1].clause == p.clause or built[-1].count != 1:
+        return False
+    idx = built[-1].first
+    own, said = structures[idx], spec.structures[0]
+    if said.shape != own.shape:
+        return False
+    sizes = said.model_dump(exclude_defaults=True, exclude={"shape", "part"})
+    mine = own.model_dump(exclude_defaults=True)
+    differ = {k: v for k, v in sizes.items() if k in mine and mine[k] != v}
+    structures[idx] = own.model_copy(update={k: v for k, v in sizes.items() if k not in mine})
+    _carry_notes(spec.notes, st)
+    p.count = 0
+    if differ:
+        st.material.append(p.text)
+        st.notes.append(f"ignored '{p.text}' where it differs from the {own.shape} described "
+                        f"before ({', '.join(f'{k} {v}' for k, v in differ.items())}); "
+                        "built the one described")  # fmt: skip
+    else:
+        st.notes.append(f"read '{p.text}' as a check of the {own.shape} described before")
     return True
 
 

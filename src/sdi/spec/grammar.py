@@ -1039,8 +1039,14 @@ class _Parser:
                     h.multiplicity = v
                     take(k)
                     continue
-                if v == 1 and k + 1 == h.index and not h.plural:
-                    take(k)  # "1 tower", "one tower": one structure, not one part
+                if v == 1 and not h.plural and (
+                    k + 1 == h.index or lx.SHAPE_WORDS.get(self.word(k + 1)) == h.shape
+                ):
+                    # "1 tower", "one tower", "one block 3 by 3 by 2" (its sizes after it):
+                    # one structure, not one part
+                    take(k)
+                    if k + 1 != h.index:
+                        take(k + 1)
                     continue
                 if (
                     self.word(k + 1) in lx.PART_WORDS
