@@ -7377,3 +7377,74 @@ def test_the_width_of_what_a_bridge_crosses_is_its_span(command):
     assert r.status == "success", r.notes
     pillars = sorted(k[1] for k, h in _columns(r).items() if h > 1)
     assert len(pillars) == 2 and pillars[1] - pillars[0] == pytest.approx(0.15)
+
+
+@pytest.mark.parametrize(
+    "command, height",
+    [
+        # each correction was left unread: the first value built (or both, as two towers)
+        ("Build me a tower of 6, ah no, of 4 cubes.", 4),
+        ("Stack of 6, no, stack of 4, at the back.", 4),
+        ("Tower 5 cubes. Correction to previous line: tower 4 cubes.", 4),
+    ],
+)
+def test_a_correction_said_again_with_its_noun_or_a_filler_replaces_the_value(command, height):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert list(_columns(r).values()) == [height]
+    assert any(n.startswith("corrected by the command itself") for n in r.notes)
+
+
+def test_a_corrected_length_in_millimetres_replaces_the_one_said():
+    # "— correction: height 100 mm" left both heights; the 150 reported unused (partial)
+    r = plan("Wall length 250 mm, height 150 mm — correction: height 100 mm.")
+    assert r.status == "success", r.notes
+    assert set(_columns(r).values()) == {2}
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # "a taller one on the right" was read as ordering a row (one tower built)
+        ("a tower of 2 on the left and a taller one on the right", [2, 3]),
+        # "a bigger one of 4": "a one of 4", read as nothing (one tower built)
+        ("Put a little tower of 2 on the left and a bigger one of 4 on the right side of the "
+         "table.", [2, 4]),
+    ],
+)
+def test_a_comparative_one_is_a_second_structure(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = sorted(_columns(r).items(), key=lambda kv: -kv[0][1])  # left to right
+    assert [h for _, h in cols] == heights
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # "stack 5 on the right" made the first stack 8 high, silently
+        "Stack 3 on the left, stack 5 on the right, stack 4 in between them.",
+        # the three were read as the towers of one beam (partial)
+        "a tower of 3 on the left, a tower of 5 on the right, a tower of 4 in between them",
+    ],
+)
+def test_a_third_stack_in_between_them_stands_between_the_two(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = sorted(_columns(r).items(), key=lambda kv: -kv[0][1])  # left to right
+    assert [h for _, h in cols] == [3, 4, 5]
+
+
+@pytest.mark.parametrize(
+    "command, height",
+    [
+        # a row of 2 was laid across the tower's one-cube top (failure)
+        ("a tower of 3, then put 2 cubes on top", 5),
+        # a block of its own beside the tower, "to make it taller" reported (partial)
+        ("Build a tower of 4 and then put a block on top of it to make it taller.", 5),
+    ],
+)
+def test_cubes_put_on_top_of_a_tower_make_it_taller(command, height):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert list(_columns(r).values()) == [height]

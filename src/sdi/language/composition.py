@@ -451,6 +451,11 @@ def _flanked(
     middle: list[int] = []
     if own.ref is not None:
         pair = _structures_of(phrases[resolve(phrases, r.subject)])
+        if len(pair) < 2 and said[:1] == ["them"] and r.object is not None:
+            # "stack 3 on the left, stack 5 on the right, stack 4 in between them": "them"
+            # are the two named, one a clause, before the one between
+            named = [k for q in phrases[: r.object] for k in _structures_of(q)]
+            pair = named[-2:]
     elif said[:1] == ["them"] and own.count:
         # "between them please a tower of 2": the middle is named after the pronoun
         earlier = [q for q in phrases[: r.subject] if q.count and q.spec is not None]
@@ -469,6 +474,10 @@ def _flanked(
     if len(pair) > 2:
         pair, extra = _alike_pair(pair, structures)
         middle = middle or extra
+    if len(pair) == 3 and not middle:
+        # "a tower of 3, a tower of 5 and a tower of 4 between them": the one said with
+        # "between", last, stands between the two named before it
+        pair, middle = pair[:2], pair[2:]
     if len(pair) != 2 or len(middle) != 1 or middle[0] in pair:
         return []
     x = middle[0]
@@ -478,8 +487,12 @@ def _flanked(
     if x in related or pair[1] in related:
         return []
     a, b = pair
-    # a wall or row between two: at its ends, along its length (left to right)
+    # a wall or row between two: at its ends, along its length (left to right); two said on
+    # either side ("3 on the left, 5 on the right"): from the one to the other
     along = "left" if structures[x].shape in ("wall", "row") else "back"
+    sides = (structures[a].region, structures[b].region)
+    if sides in (("left", "right"), ("right", "left"), ("front", "back"), ("back", "front")):
+        along = lx.OPPOSITE_SIDE[sides[0]]
     return [
         Relation(kind="next_to", subject=x, object=a, side=along),
         Relation(kind="next_to", subject=b, object=x, side=along),

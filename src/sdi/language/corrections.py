@@ -13,10 +13,11 @@ from sdi.spec import lexicon as lx
 from sdi.spec.numbers import TENS, UNITS, words_to_numbers
 
 _MARKER = re.compile(
-    r"\s*[,.!?;…—–-]+\s*no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
+    r"\s*[,.!?;…—–-]+\s*(?:(?:ah|oh|uh|um|erm|er|hmm)\s*,?\s*)?no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
     r"ten)\b))|"  # "a stack of 3 to the left of it - no, to the right", "3 - no 6 -", ". No, 3"
     r"\s*[,.;:!?…—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
-    r"scratch\s+that|or\s+rather|i\s+meant?|make\s+that|correction|actually\s*,?\s*no|"
+    r"scratch\s+that|or\s+rather|i\s+meant?|make\s+that|actually\s*,?\s*no|"
+    r"correction(?:\s+to\s+(?:the\s+)?(?:previous|last|above|first)\s+(?:line|sentence|one|item))?|"
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|change\s+that|never\s*mind|nvm|"
     r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*|"
@@ -101,7 +102,8 @@ _NOT_THAT = re.compile(
 )
 _DIM_WORDS = r"(?:long|high|tall|wide|deep|thick)"
 _WITH_DIM = re.compile(
-    rf"^({_NUMBER})\s+((?:cubes?\s+|parts?\s+)?{_DIM_WORDS})\b(.*)$", re.IGNORECASE | re.DOTALL
+    rf"^({_NUMBER}(?:\s*{_UNIT})?)\s+((?:cubes?\s+|parts?\s+)?{_DIM_WORDS})\b(.*)$",
+    re.IGNORECASE | re.DOTALL,
 )
 
 
@@ -121,7 +123,8 @@ def _with_dimension(before: str, value: str, rest: str, notes: list[str]) -> str
     if m is None:
         return None
     dim = m.group(2).split()[-1]
-    olds = list(re.finditer(rf"\b({_NUMBER})\s+(?:cubes?\s+|parts?\s+)?{dim}\b", before, re.I))
+    olds = list(re.finditer(rf"\b({_NUMBER}(?:\s*{_UNIT})?)\s+(?:cubes?\s+|parts?\s+)?{dim}\b",
+                            before, re.I))  # fmt: skip
     if not olds:  # "a tower six, no wait, five high": the count said last, now with its word
         counts = _bare_counts(before)
         if not counts:
@@ -205,17 +208,23 @@ def _regrouped(taken_back: str, new: str) -> str:
 def _noun_first(before: str, value: str, rest: str, notes: list[str]) -> str | None:
     """ "a pyramid with base 4... no, base 3": the number said after the same noun, replaced
     (the noun alone was read as another structure, a platform)."""
-    m = re.fullmatch(rf"([a-z]+)\s+(?:of\s+|is\s+)?({_NUMBER})(?:\s+(?:cubes?\s+)?{_DIM_WORDS})?",
-                     value, re.IGNORECASE)  # fmt: skip  # "legs 2 high; change that, legs 4 high"
+    m = _NOUN_VALUE.fullmatch(value)  # "legs 2 high; change that, legs 4 high"
     if m is None:
         return None
-    olds = list(re.finditer(rf"\b{re.escape(m.group(1))}\s+(?:of\s+|is\s+)?({_NUMBER})\b", before,
-                            re.IGNORECASE))  # fmt: skip
+    olds = list(re.finditer(rf"\b{re.escape(m.group(1))}\s+(?:of\s+|is\s+)?({_NUMBER})\b"
+                            rf"(\s*{_UNIT}\b)?", before, re.IGNORECASE))  # fmt: skip
     if not olds:
         return None
     old = olds[-1]
     notes.append(f"corrected by the command itself: '{old.group(0)}' → '{value}'")
-    return before[: old.start(1)] + m.group(2) + before[old.end(1) :] + rest
+    end = old.end(2) if m.group(3) and old.group(2) else old.end(1)  # "height 150 mm … 100 mm"
+    return before[: old.start(1)] + m.group(2) + (m.group(3) or "") + before[end:] + rest
+
+
+_NOUN_VALUE = re.compile(
+    rf"(?!(?:not|no|and|but|or|then|of|to|make)\b)([a-z]+)\s+(?:of\s+|is\s+)?({_NUMBER})(\s*{_UNIT})?(?:\s+(?:cubes?\s+)?{_DIM_WORDS})?",
+    re.IGNORECASE,
+)
 
 
 def _with_noun(before: str, value: str, rest: str, notes: list[str]) -> str | None:
@@ -322,7 +331,11 @@ def _corrected(text: str, notes: list[str], material: list[str] | None = None) -
         if stop:  # "no, 4 high. then on the right": the sentence ends where it ended
             said, rest = said[: stop.start()], stop.group(0) + rest
         first = re.match(r"[^,;—–-]+", said)
-        if first and first.end() < len(said.rstrip(" .!?")) and _value(first.group(0)) is not None:
+        if (
+            first
+            and first.end() < len(said.rstrip(" .!?"))
+            and (_value(first.group(0)) is not None or _NOUN_VALUE.fullmatch(first.group(0)))
+        ):
             # "four towers of 2, make that five, in a row": the value, then the command goes on
             said, rest = first.group(0), after[first.end() :]
         value = _FILLER.sub("", _NOT_OLD.sub("", said.strip())).strip(" ,.;!?")

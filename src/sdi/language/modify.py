@@ -25,8 +25,10 @@ _UNIT = (
 )
 
 
-_REF = (
-    r"(?:it|them|the\s+\w+(?:\s+one)?|each(?:\s+of\s+them|\s+one)?|all\s+of\s+them|them\s+all|both)"
+_REF = (  # not a place: "stack 5 on the right" is a stack of its own there
+    r"(?:it|them|the\s+(?!(?:left|right|front|back|middle|centre|center|table)\b(?!\s+(?:one|tower|"
+    r"stack|column|pillar|wall|row|block)\b))\w+(?:\s+one)?|"
+    r"each(?:\s+of\s+them|\s+one)?|all\s+of\s+them|them\s+all|both)"
 )
 
 

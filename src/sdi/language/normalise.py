@@ -905,6 +905,23 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
          r"\b(?:two|three|four|both|2|3|4)\s+(?:\w+\s+)?" + m.group(2) + r"\b",
          _sentence_before(m.string, m.start()), re.I)
      else f". The {m.group(2)}{m.group(3)}"),
+    # "a tower of 3, then put 2 cubes on top", "put a block on top of it to make it taller":
+    # the tower that much taller (a row of 2 was laid across its top; a block beside it)
+    (re.compile(r"\b(add|put|stack|place|set)\s+(\d+|a|an|one|two|three|four|five)\s+(cubes?|blocks?)\s+"
+                r"(?=on(?:to)?\s+(?:the\s+)?top\b(?:\s+of\s+(?:it|that|the\s+(?:tower|stack|column)))?"
+                r"(?!\s+of\b))", re.I),
+     lambda m: m.group(0) if (lambda named: not named or named[-1].lower() not in (
+         "tower", "towers", "stack", "column", "pillar"))(
+         re.findall(r"\b(" + "|".join(lx.SHAPE_WORDS) + r")\b", m.string[: m.start()], re.I))
+     else f"{m.group(1)} {'one' if m.group(2).lower() in ('a', 'an') else m.group(2)} more "
+          f"{m.group(3)} "),
+    # "put a block on top of it to make it taller": what the addition is for (read as a
+    # phrase of its own)
+    (re.compile(r"\s*,?\s*(?:in\s+order\s+|so\s+as\s+)?to\s+make\s+(?:it|them)\s+(?:a\s+(?:bit|little)\s+|"
+                r"one\s+)?(?:taller|higher|bigger|longer|wider)\b", re.I),
+     lambda m: " "
+     if re.search(r"\b(?:more|on\s+top|onto)\b", _sentence_before(m.string, m.start()), re.I)
+     else m.group(0)),
     # "a block of 3 times 3 times 2 cubes": three sizes, not a product (read as 9 by 2)
     (re.compile(r"\b(" + _NUM + r")\s+times\s+(" + _NUM + r")\s+times\s+(" + _NUM + r")\b", re.I),
      r"\1 by \2 by \3"),

@@ -1643,7 +1643,8 @@ _REWRITES += [
     ),
     (  # "with the tallest one in the middle": the order of several structures
         re.compile(
-            r",?\s*(?:and\s+|with\s+)?(?:the\s+)?(tallest|highest|biggest|largest|longest|shortest|"
+            r",?\s*(?:and\s+|with\s+)?(?:the\s+)?(?<!\ba\s)(?<!\ban\s)(?<!\banother\s)"
+            r"(tallest|highest|biggest|largest|longest|shortest|"
             r"lowest|smallest|taller|higher|bigger|larger|longer|shorter|lower|smaller)\s+"
             r"(?:one|tower|stack|column|pillar|wall|row)?\s*(?:(?:goes|is|stands|sits|should\s+(?:be|go|"
             r"stand)|(?:has|needs|wants)\s+to\s+(?:be|go|stand)|must\s+(?:be|go|stand))\s+)?"
@@ -2492,15 +2493,17 @@ def _attributive(text: str, st: ReadState) -> str:
             return m.group(0)  # "a smaller one": the comparison handlers' own
         before = re.findall(r"\d+", COUNTED.sub(" ", text[: m.start()]))
         word = m.group("cmp").lower()
+        # "a bigger one of 4": "one of 4" (not "a one of 4", read as nothing)
+        art = "" if re.match(r"one\b", text[m.end() :], re.I) else f"{m.group('art')} "
         if before:
             new, old = int(said.group(0)), int(before[-1])
             if (new > old) != (word in _MORE) or new == old:
                 st.material.append(word)
                 st.notes.append(f"ignored '{word}': {new} is not {word} than the {old} said "
                                 "before")  # fmt: skip
-                return f"{m.group('art')} "
+                return art
             st.notes.append(f"'{word}': holds ({new} against the {old} said before)")
-        return f"{m.group('art')} "
+        return art
 
     return _ATTRIBUTIVE.sub(sub, text)
 
