@@ -7448,3 +7448,63 @@ def test_cubes_put_on_top_of_a_tower_make_it_taller(command, height):
     r = plan(command)
     assert r.status == "success", r.notes
     assert list(_columns(r).values()) == [height]
+
+
+@pytest.mark.parametrize(
+    "command, parts, heights",
+    [
+        # "four blocks on each side" was read as a tower at each end (a 3 by 3 ring)
+        ("Please build a ring of blocks with an empty middle, four blocks on each side.", 12, {1}),
+        ("Can you lay out a square of nine blocks, three on each side, all flat on the table?",
+         9, {1}),
+        # the arms' 3 was read as the wall's height, the "2 high" reported unused
+        ("An L-shaped corridor wall, arms 5 and 3, 2 high.", 14, {2}),
+        # what she likes was built as a second staircase of its own
+        ("She likes stairs, can you do stairs with 3 steps going up to the right?", 6, {1, 2, 3}),
+        # "a long block across them" was a 3-long block laid on the bridge (failure)
+        ("Now make a bridge: two towers of two blocks and lay a long block across them.", 5, None),
+        # "single stack" and "each stack three high" were stacks of their own
+        ("Stack 'em four high, single stack.", 4, {4}),
+        ("Give me a row of three stacks, each stack three high.", 9, {3}),
+        # the 3 was dropped: a 3 by 3 L
+        ("Make an L with five blocks going one way and three blocks going the other way.", 7,
+         {1}),
+        # "around a middle block": a ring around a block (failure); "arms 1 block long": a bar
+        ("Make a cross with arms of two blocks around a middle block.", 9, {1}),
+        ("A cross-shaped plaza, arms 1 block long around a centre block, single layer.", 5, {1}),
+    ],
+)
+def test_words_that_size_the_structure_are_not_structures_of_their_own(command, parts, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == parts
+    if heights is not None:
+        assert set(_columns(r).values()) == heights
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        # its rows, said from the bottom: the three and two reported unused (partial)
+        "Build a pyramid: four blocks at the bottom, then three, then two, then one on top.",
+        # a default pyramid and four rows beside it
+        "a pyramid with rows of 4, 3, 2 and 1",
+    ],
+)
+def test_a_pyramid_s_rows_listed_are_its_levels(command):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    levels: dict[int, int] = {}
+    for o in r.layout.objects:
+        z = round(o.position[2] / 0.05 - 0.5)
+        levels[z] = levels.get(z, 0) + 1
+    assert [levels[z] for z in sorted(levels)] == [4, 3, 2, 1]
+
+
+def test_a_comparison_starts_from_the_parts_of_a_tower_said_in_words():
+    # "of four blocks" was taken for a count of structures: "half as tall" unread, a tower of 6
+    r = plan("Build a tower of four blocks. Next to it, on its left, build another one that is "
+             "half as tall.")  # fmt: skip
+    assert r.status == "success", r.notes
+    cols = sorted(_columns(r).items(), key=lambda kv: kv[0][1])  # right to left
+    assert [h for _, h in cols] == [4, 2]

@@ -57,9 +57,10 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
         sided
         and not m.group(1)
         and re.search(
-            r"(?<!\bof\s)(?<![\w.])\d+(?:\.\d+)?\s*(?:cubes?|parts?|blocks?|cm|mm|m|in|inch(?:es)?|ft|feet|foot)?"
-            r"\s*(?:long\s*)?$",
+            r"(?<!\bof\s)(?<![\w.])(?:\d+(?:\.\d+)?|two|three|four|five|six|seven|eight|nine|ten)\s*"
+            r"(?:cubes?|parts?|blocks?|cm|mm|m|in|inch(?:es)?|ft|feet|foot)?\s*(?:long\s*)?$",
             m.string[: m.start()],
+            re.IGNORECASE,
         )
     ):
         return m.group(0)  # "a courtyard 5 cubes on each side": a size
@@ -716,12 +717,13 @@ def _relative(m: re.Match[str], st: ReadState, note: str) -> str:
 
 
 COUNTED = re.compile(
-    r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?=(?:[a-z]+\s+)?(?:"
+    r"(?<!\bof\s)\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\s+(?=(?:[a-z]+\s+)?(?:"
     + "|".join(sorted(STRUCTURE_PLURALS, key=len, reverse=True))
     + r")\b)",
     re.IGNORECASE,
 )
-"""A number that counts structures ("two towers"), not a size a comparison starts from."""
+"""A number that counts structures ("two towers"), not a size a comparison starts from ("a
+tower of four blocks": its parts)."""
 
 
 def _said_last(m: re.Match[str]) -> int | None:

@@ -3,6 +3,7 @@ forms â€” before anything reads it. Numbers SDI cannot use (not finite, past 10â
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Callable, Sequence
 
@@ -400,6 +401,17 @@ _Repl = str | Callable[[re.Match[str]], str]
 """What a phrasing becomes: a template, or what a function of the match gives."""
 _OTHER_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
 _NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+
+
+def _pyramid_rows(m: re.Match[str]) -> str:
+    """ "a pyramid with rows of 4, 3, 2 and 1": its base and levels, when the rows count down
+    one at a time; else the words as they were."""
+    if not re.search(r"\bpyramid", _sentence_before(m.string, m.start()), re.I):
+        return m.group(0)
+    rows = [int(v) for v in words_to_numbers(re.findall(_NUM, m.group(1), re.I)) if v.isdigit()]
+    if len(rows) < 2 or any(a - b != 1 for a, b in itertools.pairwise(rows)):
+        return m.group(0)
+    return f" with a base of {rows[0]} , {len(rows)} levels "
 
 
 def _listed_figures(said: str) -> str:
@@ -922,9 +934,60 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: " "
      if re.search(r"\b(?:more|on\s+top|onto)\b", _sentence_before(m.string, m.start()), re.I)
      else m.group(0)),
+    # "a row of three stacks, each stack three high": each that high (a fourth stack was built)
+    (re.compile(r"\b(each|every)\s+(?:stack|tower|column|pillar|pile|post)\s+(?:is\s+|being\s+)?(?=(?:\d+|one|"
+                r"two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+|blocks?\s+)?(?:high|tall)\b)",
+                re.I), r"\1 "),
+    # "two towers of two blocks and lay a long block across them": a beam (a 3-long block was
+    # laid on a bridge, and failed)
+    (re.compile(r"\b(?:a|one)\s+long\s+(?:block|brick|piece|cube|bar)\s+(?=(?:across|over|on\s+top\s+of|onto|on)\s+"
+                r"(?:them|the\s+two|both|the\s+(?:towers|stacks|columns|pillars|posts)))", re.I),
+     "a beam "),
+    # "Stack 'em four high, single stack.": one stack (a second one was built)
+    (re.compile(r"(?<=\w)\s+'em\b", re.I), " them"),
+    (re.compile(r"\s*,\s*(?:just\s+|only\s+)?(?:a\s+|one\s+)?single\s+(?:stack|tower|column|pile)\s*(?=[.;!]|$)",
+                re.I),
+     lambda m: " " if re.search(r"\bstack", _sentence_before(m.string, m.start()), re.I)
+     else m.group(0)),
+    # "She likes stairs, can you do stairs with 3 steps": what someone likes, not a structure
+    (re.compile(r"\b(?:she|he|they|my\s+\w+|the\s+kids?|the\s+children|our\s+\w+)\s+(?:really\s+)?(?:likes?|"
+                r"loves?|adores?|is\s+into|are\s+into|enjoys?|is\s+crazy\s+about)\s+(?:\w+\s+)?(stairs|"
+                r"staircases|towers|bridges|castles|pyramids|arches|walls)\s*[,.;!]\s*", re.I),
+     lambda m: m.group(0) if not re.search(rf"\b{m.group(1)[:5]}", m.string[m.end() :], re.I)
+     else ""),
+    # "a pyramid: four blocks at the bottom, then three, then two, then one on top": its rows,
+    # said from the bottom (the three and two were reported unused)
+    (re.compile(r"\b(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?(?:at|on|in|along)\s+the\s+bottom"
+                r"(?:\s+row)?((?:\s*,?\s*(?:and\s+)?then\s+" + _NUM
+                + r"(?:\s+(?:cubes?|blocks?))?)+)(?:\s+(?:on\s+top|at\s+the\s+top))?", re.I),
+     lambda m: m.group(0) if not re.search(r"\bpyramid", m.string, re.I)
+     else "rows of " + ", ".join([m.group(1), *re.findall(_NUM, m.group(2), re.I)])),
+    # "a pyramid with rows of 4, 3, 2 and 1": a base of 4, one fewer each level up (a pyramid
+    # and four rows beside it were built); rows to a flat top say its levels
+    (re.compile(r"\b(?:with\s+|of\s+|in\s+)?(?:rows|levels|layers|tiers|courses)\s+of\s+(" + _NUM
+                + r"(?:\s*,\s*" + _NUM + r")*(?:\s*,?\s*(?:and\s+)?" + _NUM + r"))"
+                r"(?:\s+(?:cubes|blocks))?(?:\s+(?:each|respectively))?", re.I),
+     lambda m: _pyramid_rows(m)),
+    # "an L with five blocks going one way and three going the other way": its arms (the 3
+    # was dropped)
+    (re.compile(r"\b(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?(?:going\s+|running\s+|in\s+)?one\s+"
+                r"(?:way|direction)\s*,?\s+and\s+(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?"
+                r"(?:going\s+|running\s+|in\s+)?the\s+other(?:\s+(?:way|direction|one))?\b", re.I),
+     r"arms \1 and \2"),
+    # "a cross with arms of two around a middle block": its own centre (read as a ring around a
+    # block)
+    (re.compile(r"\s+(?:around|round|from)\s+(?:a|the|one)\s+(?:middle|centre|center|central|"
+                r"single)\s+(?:block|cube|square)\b", re.I),
+     lambda m: " "
+     if re.search(r"\b(?:cross|plus|arms?)\b", _sentence_before(m.string, m.start()), re.I)
+     else m.group(0)),
     # "a block of 3 times 3 times 2 cubes": three sizes, not a product (read as 9 by 2)
     (re.compile(r"\b(" + _NUM + r")\s+times\s+(" + _NUM + r")\s+times\s+(" + _NUM + r")\b", re.I),
      r"\1 by \2 by \3"),
+    # "an L-shaped corridor wall, arms 5 and 3, 2 high": its arms said, the letter's (its arms'
+    # second value was read as the wall's height)
+    (re.compile(r"\b([LUT])[\s-]*shaped?\s+(?:\w+\s+)?(?:wall|fence)\b(?=[^.;]*\barms?\b)", re.I),
+     r"\1 shape"),
     # "an L-shaped wall, 4 by 4 cubes, 2 cubes high": with its height said apart, the "4 by 4"
     # is the letter's arms (read as 4 long and 4 high, the 2 dropped, silently)
     (re.compile(r"\b([LUT])[\s-]*shaped?\s+(?:wall|fence)(\s*,?\s*(?:of\s+)?" + _NUM

@@ -729,8 +729,8 @@ _REWRITES += [
     ),
     (  # "a cross with arms 2 cubes long": each arm from the middle, a bar of 5
         re.compile(
-            r"\bcross\s+with\s+(?:arms?|each\s+arm)\s+(?:of\s+)?(\d+|one|two|three|four)\s*(?:cubes?\s+)?"
-            r"(?:long\b)?",
+            r"\bcross(?:[\s-]*shaped\s+\w+)?\s*,?\s+(?:with\s+)?(?:arms?|each\s+arm)\s+(?:of\s+)?"
+            r"(\d+|one|two|three|four)(?:\s*(?:cubes?|blocks?)\b)?(?:\s+long\b)?",
             re.IGNORECASE,
         ),
         "{cross_arms}",
