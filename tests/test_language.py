@@ -7508,3 +7508,59 @@ def test_a_comparison_starts_from_the_parts_of_a_tower_said_in_words():
     assert r.status == "success", r.notes
     cols = sorted(_columns(r).items(), key=lambda kv: kv[0][1])  # right to left
     assert [h for _, h in cols] == [4, 2]
+
+
+@pytest.mark.parametrize(
+    "command, parts, heights",
+    [
+        # the columns stood bare and the lintel was a default bridge beside them (partial)
+        ("Two columns of three cubes carrying a lintel.", 7, {3, 1}),
+        # four bare columns and a default slab beside them (partial)
+        ("A portico: four columns of two cubes supporting a flat roof slab.",
+         len(plan("a table with legs 2 high").layout), None),
+        # "bridge btw 2 twrs": a default bridge beside two towers (partial)
+        ("bridge btw 2 twrs hgt 3", 7, {3, 1}),
+    ],
+)
+def test_columns_carrying_a_top_are_its_supports(command, parts, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == parts
+    assert any(max(o.size) > 0.06 for o in r.layout.objects)  # a beam or a top across them
+    if heights is not None:
+        assert set(_columns(r).values()) == heights
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # both on the left ('opposite' and the right reported unused)
+        ("Two spawn towers, 4 tall, on opposite sides of the map — left and right.", [4, 4]),
+        # the 5 was dropped: two towers of 3
+        ("2 towers h=3,h=5", [3, 5]),
+        # a default row beside ten single cubes (partial)
+        ("Row of 5 stacks, heights going up 1 2 3 4 5 from right to left.", [1, 2, 3, 4, 5]),
+    ],
+)
+def test_each_structure_of_several_gets_what_was_said_for_it(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    cols = sorted(_columns(r).items(), key=lambda kv: kv[0][1])  # right to left
+    assert [h for _, h in cols] == heights
+    if len(heights) == 2 and "left" in command:
+        assert cols[0][0][1] < 0.25 < cols[1][0][1]  # one each side of the table's middle
+
+
+@pytest.mark.parametrize(
+    "command, height",
+    [
+        # "±0.01" was read as a count of its own: an error
+        ("Cube stack 0.25 m ±0.01 tall at x = 450 mm, y = 300 mm.", 5),
+        # "single 50 mm cube footprint" was read as its height: one cube (partial)
+        ("Tower, height 150 mm ±5 mm, single 50 mm cube footprint.", 3),
+    ],
+)
+def test_a_tolerance_and_a_one_part_footprint_leave_a_tower_its_height(command, height):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert list(_columns(r).values()) == [height]

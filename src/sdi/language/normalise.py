@@ -981,6 +981,46 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: " "
      if re.search(r"\b(?:cross|plus|arms?)\b", _sentence_before(m.string, m.start()), re.I)
      else m.group(0)),
+    # "two columns of three cubes carrying a lintel", "supporting a flat roof slab": the beam
+    # on top of them (the columns stood bare, the lintel a default bridge beside them)
+    (re.compile(r"\b(?:carrying|supporting|holding\s+up|bearing|that\s+carry|that\s+support|which\s+carry|"
+                r"which\s+support)\s+(?:a|an|one|the)\s+(?:flat\s+|long\s+|single\s+)?(lintel|beam|plank|"
+                r"girder|slab|roof(?:\s+slab)?|deck|top)\b", re.I),
+     lambda m: m.group(0)
+     if not re.search(
+         r"\b(?:two|2|both|pair\s+of)\s+(?:\w+\s+)?(?:columns|towers|pillars|posts|stacks|piers|jambs)\b",
+         _sentence_before(m.string, m.start()), re.I)
+     else (" with a beam on top" if m.group(1).lower() in ("lintel", "beam", "plank", "girder")
+           else f" with a {m.group(1)} on top")),
+    # "a portico: four columns of two cubes supporting a flat roof slab": a table on those legs
+    (re.compile(r"\b(?:four|4)\s+(?:columns|pillars|posts|legs|piers)\s+(?:of\s+)?(" + _NUM
+                + r")\s+"
+                r"(?:cubes?\s+|blocks?\s+)?(?:high\s+|tall\s+)?(?:each\s+)?,?\s*(?:carrying|supporting|holding\s+up|"
+                r"bearing|under)\s+(?:a|an|one|the)\s+(?:flat\s+)?(?:roof(?:\s+slab)?|slab|top|deck|table\s?top)\b",
+                re.I),
+     r"a table with legs \1 high"),
+    # "Tower, height 150 mm, single 50 mm cube footprint": one part across, what a tower is
+    # (the 50 mm was read as its height)
+    (re.compile(r"\s*,?\s*(?:on\s+)?(?:a\s+)?(?:single|one)[\s-]+(?:\d+\s*(?:mm|cm)\s+)?"
+                r"(?:cube|block|part)s?\s+(?:footprint|base|wide)\b", re.I),
+     lambda m: " " if re.search(r"\b(?:tower|stack|column|pillar|post)", m.string, re.I)
+     else m.group(0)),
+    # "Row of 5 stacks": five stacks in a row (a row of its own was built beside them)
+    (re.compile(r"\b(?:a\s+)?(?:row|line)\s+of\s+(" + _NUM
+                + r")\s+(stacks|towers|columns|pillars|piles|posts)\b", re.I), r"\1 \2 in a row"),
+    # "heights going up 1 2 3 4 5": a list said without commas
+    (re.compile(
+        r"\b(heights?(?:\s+(?:going\s+up|rising|of))?)\s+(\d+)((?:\s+\d+){2,})\b(?!\s*(?:mm|cm|m)\b)",
+        re.I),
+     lambda m: f"{m.group(1)} {_listed_figures(m.group(2) + m.group(3))}"),
+    # "two towers, 4 tall, on opposite sides — left and right": one on each side said
+    (re.compile(r"\s*,?\s*(?:on|at)\s+(?:the\s+)?opposite\s+(?:sides|ends)(?:\s+of\s+the\s+\w+)?\s*[,:—–-]*\s*"
+                r"(?:the\s+)?(left|front)\s+and\s+(?:the\s+)?(right|back)\b", re.I),
+     r", one on the \1 and one on the \2"),
+    # "2 towers h=3,h=5": one height each (the 5 was dropped)
+    (re.compile(r"\bh\s*=\s*(\d+)\s*,\s*h\s*=\s*(\d+)(?:\s*,\s*h\s*=\s*(\d+))?", re.I),
+     lambda m: (f"{m.group(1)}, {m.group(2)} and {m.group(3)}" if m.group(3)
+                else f"{m.group(1)} and {m.group(2)}") + " high"),
     # "a block of 3 times 3 times 2 cubes": three sizes, not a product (read as 9 by 2)
     (re.compile(r"\b(" + _NUM + r")\s+times\s+(" + _NUM + r")\s+times\s+(" + _NUM + r")\b", re.I),
      r"\1 by \2 by \3"),
@@ -2155,6 +2195,8 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bnextto\b", re.I), "next to"),
     (re.compile(r"\binfront\b", re.I), "in front"),
     (re.compile(r"\bnxt\b", re.I), "next"),
+    # "bridge btw 2 twrs" (not "by the way")
+    (re.compile(r"\bbtw(?=\s+(?:\d|two\b|them\b|both\b))", re.I), "between"),
     (re.compile(r"\b(?:bhnd|bhd)\b", re.I), "behind"),
     (re.compile(r"\bfrnt\b", re.I), "front"),
     (re.compile(r"\blft\b", re.I), "left"),

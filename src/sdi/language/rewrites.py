@@ -727,6 +727,16 @@ _REWRITES += [
         " ",
         "'{0}': the structures stand centred on the table",
     ),
+    (  # "0.25 m ±0.01 tall": a tolerance said without its unit (read as a count of its own,
+        # "0.01 is not a usable count")
+        re.compile(
+            r"\s*(?:±|\+\s*/\s*-|\+-|plus\s+or\s+minus)\s*\d+(?:\.\d+)?\b(?!\s*(?:mm|cm|m)\b)"
+            r"(?:\s+(?:tolerance|tol\.?))?",
+            re.IGNORECASE,
+        ),
+        " ",
+        "read '{0}' as a tolerance: the parts stand at the value said",
+    ),
     (  # "a cross with arms 2 cubes long": each arm from the middle, a bar of 5
         re.compile(
             r"\bcross(?:[\s-]*shaped\s+\w+)?\s*,?\s+(?:with\s+)?(?:arms?|each\s+arm)\s+(?:of\s+)?"
