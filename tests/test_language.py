@@ -7564,3 +7564,62 @@ def test_a_tolerance_and_a_one_part_footprint_leave_a_tower_its_height(command, 
     r = plan(command)
     assert r.status == "success", r.notes
     assert list(_columns(r).values()) == [height]
+
+
+@pytest.mark.parametrize(
+    "command, parts",
+    [
+        # "Test case 7" was read as the pyramid's base: 7, 6 and 5 (18 parts)
+        ("Test case 7: pyramid with 3 levels.", 6),
+        # the purpose's words were read as a structure to enclose (partial)
+        ("As a user I want an enclosure 5x3 cubes so that a ball can be kept inside.", 12),
+        # 'egypt' reported unused (partial)
+        ("Can you make a pyramid like the ones in Egypt, with 3 layers?", 6),
+    ],
+)
+def test_a_label_a_purpose_and_a_likeness_are_no_sizes(command, parts):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == parts
+    assert any(n.startswith("ignored '") for n in r.notes)  # what was set aside is said
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # a row of 2 beside one tower, 'times' reported unused (partial)
+        ("build a tower three cubes high and then build the same thing two more times in a row",
+         [3, 3, 3]),
+        ("a tower of 3 cubes, then two more of the same in a row", [3, 3, 3]),
+        # 'build it one more time' reported unused: one tower (partial)
+        ("Build tower 3 cubes. Then build it one more time on the left of it.", [3, 3]),
+    ],
+)
+def test_the_same_again_is_a_copy_of_the_one_before(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values()) == heights
+
+
+@pytest.mark.parametrize(
+    "command, parts, heights",
+    [
+        # spoken "no make it" with no comma: the four reported unused (partial)
+        ("make a flat square um four by four no make it three by three", 9, {1}),
+        # 'tall' after three sizes reported unused (partial)
+        ("make a block two by two by three tall", 12, {3}),
+        # a dictated "new line": the bridge laid across one tower (failure)
+        ("build two towers four cubes each new line and a bridge across the top of them", 9,
+         {4, 1}),
+        # "a gap between the rows" read as rows a beam joins (partial)
+        ("Two rows of 4 cubes, one behind the other, with a gap between the rows.", 8, {1}),
+        # "step width" reported unused; "+y (left)" read as the table's left region
+        ("Spec: staircase, N=4 steps, step width 2 cubes, ascending toward +y (left).", 20,
+         {1, 2, 3, 4}),
+    ],
+)
+def test_spoken_and_spec_phrasings_size_the_structure(command, parts, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == parts
+    assert set(_columns(r).values()) == heights

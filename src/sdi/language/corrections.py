@@ -45,8 +45,10 @@ _KINDS: tuple[tuple[str, re.Pattern[str]], ...] = (
 
 # spoken, with no commas: "five steps no six steps", "of five no not five six"
 _SPOKEN_NO = re.compile(
-    rf"(\b{_NUMBER}\b(?:\s+[a-z]+){{0,2}}?)\s+no\s+(?=(?:not\s+{_NUMBER}\s+)?{_NUMBER}\b)", re.I
-)
+    rf"(\b{_NUMBER}\b(?:\s+[a-z]+){{0,2}}?)\s+no\s+(?=(?:not\s+{_NUMBER}\s+|make\s+(?:it|that)\s+)?"
+    rf"{_NUMBER}\b)",
+    re.I,
+)  # "five steps no six steps", "four by four no make it three by three"
 # "a wall not of seven, of five": the number taken back, and the one meant
 _NOT_A_BUT_B = re.compile(
     rf"(?<=[a-z]\s)not\s+(of\s+)?({_NUMBER})\s*,\s*(?:but\s+)?(of\s+)?({_NUMBER})\b", re.I

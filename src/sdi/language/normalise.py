@@ -53,7 +53,7 @@ _REFERENCE_NO = re.compile(
     r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|stn|"
     r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
     r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
-    r"exercise|lesson|experiment|sample|bench|rig|line\s+no|task|assignment|question)\s*"
+    r"exercise|lesson|experiment|sample|bench|rig|line\s+no|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
     r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
     r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
     re.IGNORECASE,
@@ -1005,6 +1005,36 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:cube|block|part)s?\s+(?:footprint|base|wide)\b", re.I),
      lambda m: " " if re.search(r"\b(?:tower|stack|column|pillar|post)", m.string, re.I)
      else m.group(0)),
+    # "then build the same thing two more times", "two more of the same", "build it one more
+    # time": copies of the one before (a row of 2 was built, silently)
+    (re.compile(
+        r"\b(?:(?:build|make|do|add|put|stack|take)\s+)?(?:the\s+same(?:\s+(?:thing|one|again))?|"
+        r"it\s+again|that\s+again)\s+(" + _NUM + r")\s+more\s+times?\b", re.I), r"\1 more like it"),
+    (re.compile(r"\b(" + _NUM + r")\s+more\s+of\s+the\s+same\b", re.I), r"\1 more like it"),
+    (re.compile(
+        r"\b(?:build|make|do|stack|take)\s+(?:it|that|this|the\s+same(?:\s+thing)?)\s+(?:one\s+more\s+time|"
+        r"once\s+more|(?:all\s+over\s+)?again)\b(?:\s+and\s+put\s+it)?", re.I), "one more like it"),
+    # "a block two by two by three tall": its three sides, the last its height ('tall' was
+    # reported unused)
+    (re.compile(
+        r"\b(" + _NUM + r"\s*(?:by|x)\s*" + _NUM + r"\s*(?:by|x)\s*" + _NUM + r")\s+(?:cubes?\s+)?"
+        r"(?:tall|high)\b", re.I), r"\1"),
+    # "… four cubes each new line and a bridge …": a dictated line break
+    (re.compile(
+        r"(?<!\ba\s)(?<!\bthe\s)\s*\bnew\s+(?:line|paragraph)\b(?!\s+of\b)\s*", re.I), ". "),
+    # "with a gap between the rows": the gap between them (read as rows a beam joins)
+    (re.compile(
+        r"\b(gap|space)\s+between\s+the\s+(?:rows|towers|walls|stacks|columns|lines|two)\b", re.I),
+     r"\1 between them"),
+    # "step width 2 cubes": the staircase's width
+    (re.compile(r"\bstep\s+(width|depth)\b", re.I), r"\1"),
+    # "ascending toward +y (left)": the side that axis points to
+    (re.compile(
+        r"\b(to(?:wards?)?|toward)\s+([+-])\s*([xy])\b(?:\s*\(\s*(?:left|right|back|front)\s*\))?",
+        re.I),
+     lambda m: f"{m.group(1)} the "
+     + {("+", "y"): "left", ("-", "y"): "right", ("+", "x"): "back", ("-", "x"): "front"}[
+         (m.group(2), m.group(3).lower())]),
     # "Row of 5 stacks": five stacks in a row (a row of its own was built beside them)
     (re.compile(r"\b(?:a\s+)?(?:row|line)\s+of\s+(" + _NUM
                 + r")\s+(stacks|towers|columns|pillars|piles|posts)\b", re.I), r"\1 \2 in a row"),

@@ -727,6 +727,26 @@ _REWRITES += [
         " ",
         "'{0}': the structures stand centred on the table",
     ),
+    (  # "so that a ball can be kept inside", "so the dolls can walk across": what it is for
+        # (its words were read as a structure to enclose, or reported unused)
+        re.compile(
+            r"\s*,?\s*\b(?:so\s+that|so|in\s+order\s+that)\s+(?:a|an|the|my|our|his|her|their|it|we|they|he|"
+            r"she|you|i|people|kids|children)\b(?:\s+\w+){0,3}?\s+(?:can|could|will|would|may|might|fits?)\b"
+            r"[^.,;!?\d]*",
+            re.IGNORECASE,
+        ),
+        " ",
+        "ignored '{0}': what it is for, not how to build it",
+    ),
+    (  # "a pyramid like the ones in Egypt": a likeness, with no size or place in it
+        re.compile(
+            r"\s*,?\s*\blike\s+(?:the\s+ones?|those|the\s+one|that\s+one)\s+(?:in|at|from|of)\s+(?:the\s+)?"
+            r"[a-z]+(?:\s+[a-z]+)?(?=\s*(?:[,.;!?]|$))",
+            re.IGNORECASE,
+        ),
+        " ",
+        "ignored '{0}': a likeness, with no size or place in it",
+    ),
     (  # "0.25 m ±0.01 tall": a tolerance said without its unit (read as a count of its own,
         # "0.01 is not a usable count")
         re.compile(
