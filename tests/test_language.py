@@ -7623,3 +7623,25 @@ def test_spoken_and_spec_phrasings_size_the_structure(command, parts, heights):
     assert r.status == "success", r.notes
     assert len(r.layout) == parts
     assert set(_columns(r).values()) == heights
+
+
+@pytest.mark.parametrize(
+    "command, parts, heights",
+    [
+        # 'more high than 2' and 'not' reported unused (partial)
+        ("Please build a wall of 4 cubes length and not more high than 2.", 8, {2}),
+        # "T form … the leg": a table, a T and a tower (partial)
+        ("Make T form, the top is 5 cubes, the leg is 3 cubes.", 7, {1}),
+        # "4 cubes outside dimensions" read as a gap: a 5 by 5 ring (partial)
+        ("An enclosed courtyard, 5 by 4 cubes outside dimensions, walls two courses high.", 28,
+         {2}),
+        # "four walls in a square": four 4 by 4 blocks and a ring (failure)
+        ("Can you make a little house for her teddy? Four walls in a square, 4 blocks each side, "
+         "2 high.", 24, {2}),
+    ],
+)
+def test_non_native_and_drawing_phrasings_size_the_structure(command, parts, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert len(r.layout) == parts
+    assert set(_columns(r).values()) == heights

@@ -1035,6 +1035,26 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: f"{m.group(1)} the "
      + {("+", "y"): "left", ("-", "y"): "right", ("+", "x"): "back", ("-", "x"): "front"}[
          (m.group(2), m.group(3).lower())]),
+    # "Make T form": the letter's shape
+    (re.compile(r"\b([LTU])[\s-]*form\b", re.I), r"\1 shape"),
+    # "a T shape, the top is 5 cubes, the leg is 3 cubes": the T's stem (a tower)
+    (re.compile(
+        r"\b(the\s+|its\s+)?leg\b(?=\s+(?:is\s+)?(?:\d|one|two|three|four|five|six)\b)", re.I),
+     lambda m: f"{m.group(1) or ''}stem"
+     if re.search(r"\bT\s+shape|\bT-shape", _sentence_before(m.string, m.start()))
+     else m.group(0)),
+    # "a wall … not more high than 2": no higher than that
+    (re.compile(r"\bnot\s+more\s+(high|tall|long|wide)\s+than\b", re.I),
+     lambda m: "no " + {"high": "higher", "tall": "taller", "long": "longer", "wide": "wider"}[
+         m.group(1).lower()] + " than"),
+    # "a courtyard, 5 by 4 cubes outside dimensions": its size over all ('4 cubes out' was read
+    # as a gap)
+    (re.compile(r"(\d\s*(?:cubes?|blocks?|cm|mm)?)\s+(?:outside|outer|external|overall|exterior)"
+                r"(?:\s+(?:dimensions?|size|measurements?))?\b", re.I), r"\1"),
+    (re.compile(r"\benclosed\s+(?=(?:courtyard|yard|court|garden|pen|area|space)\b)", re.I), ""),
+    # "four walls in a square, 4 blocks each side": a square ring (four blocks side by side)
+    (re.compile(r"\b(?:four|4)\s+walls\s+(?:in|forming|making|as)\s+a\s+square\b", re.I),
+     "a square ring"),
     # "Row of 5 stacks": five stacks in a row (a row of its own was built beside them)
     (re.compile(r"\b(?:a\s+)?(?:row|line)\s+of\s+(" + _NUM
                 + r")\s+(stacks|towers|columns|pillars|piles|posts)\b", re.I), r"\1 \2 in a row"),

@@ -3561,9 +3561,10 @@ def rewrite(text: str, st: ReadState) -> str:
         _LEGS.search(text)
         and _TOP.search(text)
         and not any(
-            lx.SHAPE_WORDS.get(w) in ("canopy", "bridge", "arch")
+            lx.SHAPE_WORDS.get(w) in ("canopy", "bridge", "arch", "t_shape")
             for w in re.findall(r"[a-z]+", text.lower())
         )
+        and not re.search(r"\bt[\s-]*(?:shaped?|form)\b", text, re.I)  # "a T: top 5, leg 3"
     ):
         st.notes.append("legs with a top: read as a table")
         text = "a table with " + text
