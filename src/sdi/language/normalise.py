@@ -1049,8 +1049,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
          m.group(1).lower()] + " than"),
     # "a courtyard, 5 by 4 cubes outside dimensions": its size over all ('4 cubes out' was read
     # as a gap)
-    (re.compile(r"(\d\s*(?:cubes?|blocks?|cm|mm)?)\s+(?:outside|outer|external|overall|exterior)"
-                r"(?:\s+(?:dimensions?|size|measurements?))?\b", re.I), r"\1"),
+    (re.compile(r"((?:by|x)\s*\d+\s*(?:cubes?|blocks?|cm|mm)?)\s+(?:outside|outer|external|overall|exterior)"
+                r"(?:\s+(?:dimensions?|size|measurements?))?\b|(\d\s*(?:cubes?|blocks?|cm|mm)?)\s+(?:outside|"
+                r"outer|external|overall|exterior)\s+(?:dimensions?|size|measurements?)\b", re.I),
+     lambda m: m.group(1) or m.group(2)),
     (re.compile(r"\benclosed\s+(?=(?:courtyard|yard|court|garden|pen|area|space)\b)", re.I), ""),
     # "four walls in a square, 4 blocks each side": a square ring (four blocks side by side)
     (re.compile(r"\b(?:four|4)\s+walls\s+(?:in|forming|making|as)\s+a\s+square\b", re.I),
