@@ -7645,3 +7645,18 @@ def test_non_native_and_drawing_phrasings_size_the_structure(command, parts, hei
     assert r.status == "success", r.notes
     assert len(r.layout) == parts
     assert set(_columns(r).values()) == heights
+
+
+def test_rows_of_towers_are_that_many_towers_in_rows():
+    # a 2 by 3 floor and a tower of 3 beside it, silently
+    r = plan("Three rows of two towers each, every tower three cubes tall.")
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    assert sorted(cols.values()) == [3] * 6
+    assert len({x for x, _ in cols}) == 3 and len({y for _, y in cols}) == 2
+
+
+def test_a_purpose_that_names_a_size_is_not_set_aside():
+    # "so my toy can climb onto a 3-cube-high platform": the platform's 3 is a size
+    r = plan("Make a step so my toy can climb onto a 3-cube-high platform.")
+    assert not any("what it is for" in n for n in r.notes)

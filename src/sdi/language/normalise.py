@@ -988,7 +988,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"girder|slab|roof(?:\s+slab)?|deck|top)\b", re.I),
      lambda m: m.group(0)
      if not re.search(
-         r"\b(?:two|2|both|pair\s+of)\s+(?:\w+\s+)?(?:columns|towers|pillars|posts|stacks|piers|jambs)\b",
+         r"\b(?:two|2|both|pair\s+of)\s+(?:\w+\s+)?(?:columns|towers|pillars|posts|stacks)\b",
          _sentence_before(m.string, m.start()), re.I)
      else (" with a beam on top" if m.group(1).lower() in ("lintel", "beam", "plank", "girder")
            else f" with a {m.group(1)} on top")),
@@ -1057,6 +1057,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "four walls in a square, 4 blocks each side": a square ring (four blocks side by side)
     (re.compile(r"\b(?:four|4)\s+walls\s+(?:in|forming|making|as)\s+a\s+square\b", re.I),
      "a square ring"),
+    # "three rows of two towers each": six towers, three rows of two (a 2 by 3 floor was built)
+    (re.compile(r"\b(" + _NUM + r")\s+rows\s+of\s+(" + _NUM
+                + r")\s+(towers|stacks|columns|pillars|piles)(?:\s+each)?\b", re.I),
+     lambda m: (lambda n: m.group(0) if not all(v.isdigit() for v in n)
+                else f"{int(n[0]) * int(n[1])} {m.group(3)} in {n[0]} rows of {n[1]}")(
+         words_to_numbers([m.group(1).lower(), m.group(2).lower()]))),
     # "Row of 5 stacks": five stacks in a row (a row of its own was built beside them)
     (re.compile(r"\b(?:a\s+)?(?:row|line)\s+of\s+(" + _NUM
                 + r")\s+(stacks|towers|columns|pillars|piles|posts)\b", re.I), r"\1 \2 in a row"),

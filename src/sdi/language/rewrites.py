@@ -732,7 +732,7 @@ _REWRITES += [
         re.compile(
             r"\s*,?\s*\b(?:so\s+that|so|in\s+order\s+that)\s+(?:a|an|the|my|our|his|her|their|it|we|they|he|"
             r"she|you|i|people|kids|children)\b(?:\s+\w+){0,3}?\s+(?:can|could|will|would|may|might|fits?)\b"
-            r"[^.,;!?\d]*",
+            r"[^.,;!?\d]*(?=[.,;!?]|$)",
             re.IGNORECASE,
         ),
         " ",
