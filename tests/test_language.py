@@ -7660,3 +7660,13 @@ def test_a_purpose_that_names_a_size_is_not_set_aside():
     # "so my toy can climb onto a 3-cube-high platform": the platform's 3 is a size
     r = plan("Make a step so my toy can climb onto a 3-cube-high platform.")
     assert not any("what it is for" in n for n in r.notes)
+
+
+def test_rows_said_after_the_towers_size_arrange_them():
+    # "three cubes tall" between the towers and "in 3 rows of 2" hid the towers: a floor of 6
+    # was built beside them, silently
+    r = plan("six towers, three cubes tall, in 3 rows of 2")
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    assert sorted(cols.values()) == [3] * 6
+    assert len({x for x, _ in cols}) == 3 and len({y for _, y in cols}) == 2

@@ -470,10 +470,19 @@ def _centred_beside(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+_PARTS_SIZE = re.compile(
+    r"\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes|blocks)\s+(?:high|tall|"
+    r"long|wide|each|apiece)\b",
+    re.IGNORECASE,
+)
+"""A size said in parts ("three cubes tall"): not the structures named."""
+
+
 def _structures_before(m: re.Match[str]) -> bool:
     """The clause before `m` names separate structures in the plural ("four towers of 2"),
     not parts ("nine cubes")."""
     clause = re.split(r"[.;]|\bthen\b", m.string[: m.start()])[-1]
+    clause = _PARTS_SIZE.sub(" ", clause)  # "six towers, three cubes tall, in 3 rows of 2"
     nouns = _PLURAL_STRUCTURE.findall(clause)
     return bool(nouns) and nouns[-1].lower() not in ("cubes", "blocks", "things", "ones", "rows")
 
