@@ -7670,3 +7670,17 @@ def test_rows_said_after_the_towers_size_arrange_them():
     cols = _columns(r)
     assert sorted(cols.values()) == [3] * 6
     assert len({x for x, _ in cols}) == 3 and len({y for _, y in cols}) == 2
+
+
+def test_towers_joined_by_a_beam_across_the_top_are_a_bridge():
+    # 'a beam across the top' was reported as naming nothing (partial)
+    r = plan("two towers of 3 joined by a beam across the top")
+    assert r.status == "success", r.notes
+    assert len(r.layout) == 7 and set(_columns(r).values()) == {3, 1}
+
+
+def test_an_arch_lower_overall_than_any_arch_is_not_a_silent_success():
+    # "3 cubes tall in total" built an arch 6 high, and the run said success
+    r = plan("Please make an arch. It should be 3 cubes tall in total.")
+    assert r.status == "partial"
+    assert any("read 3 high as its legs, 6 high overall" in n for n in r.notes)

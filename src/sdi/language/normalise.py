@@ -1063,6 +1063,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: (lambda n: m.group(0) if not all(v.isdigit() for v in n)
                 else f"{int(n[0]) * int(n[1])} {m.group(3)} in {n[0]} rows of {n[1]}")(
          words_to_numbers([m.group(1).lower(), m.group(2).lower()]))),
+    # "two towers of 3 joined by a beam across the top": the beam that joins them ('a beam across
+    # the top' was reported as naming nothing)
+    (re.compile(r"\b((?:joined|connected|linked|bridged|spanned)\s+(?:by|with)\s+(?:a|one|the)\s+(?:beam|lintel|"
+                r"plank|girder))\s+(?:(?:laid|lying|running)\s+)?(?:across|over|on)\s+(?:the\s+)?(?:tops?|top\s+of\s+"
+                r"them|them)\b", re.I), r"\1"),
     # "Row of 5 stacks": five stacks in a row (a row of its own was built beside them)
     (re.compile(r"\b(?:a\s+)?(?:row|line)\s+of\s+(" + _NUM
                 + r")\s+(stacks|towers|columns|pillars|piles|posts)\b", re.I), r"\1 \2 in a row"),
