@@ -490,9 +490,9 @@ def _flanked(
     # a wall or row between two: at its ends, along its length (left to right); two said on
     # either side ("3 on the left, 5 on the right"): from the one to the other
     along = "left" if structures[x].shape in ("wall", "row") else "back"
-    sides = (structures[a].region, structures[b].region)
-    if sides in (("left", "right"), ("right", "left"), ("front", "back"), ("back", "front")):
-        along = lx.OPPOSITE_SIDE[sides[0]]
+    side_a, side_b = structures[a].region, structures[b].region
+    if side_a in lx.OPPOSITE_SIDE and lx.OPPOSITE_SIDE[side_a] == side_b:
+        along = side_b
     return [
         Relation(kind="next_to", subject=x, object=a, side=along),
         Relation(kind="next_to", subject=b, object=x, side=along),
