@@ -10,6 +10,7 @@ layout must pass the verifier, or the Designer says which constraint it breaks.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -426,6 +427,27 @@ def _along_top(
 
 
 _SIDES = {"left": (1, 1.0), "right": (1, -1.0), "back": (0, 1.0), "front": (0, -1.0)}
+_SIDE_OF = {v: k for k, v in _SIDES.items()}
+_CLIMBING_BACK = {"left": ("y", 180.0), "right": ("y", 0.0), "back": ("x", 180.0),
+                  "front": ("x", 0.0)}  # fmt: skip
+"""A staircase on that side of another climbs back towards it: its axis and yaw (it climbs
++y along y, +x along x, the other way turned half round)."""
+
+
+def _facing(stairs: StructureSpec, cell: CellConfig) -> Callable[[str], _Placed] | None:
+    """A staircase whose way up was not said, put beside another structure, climbs towards it
+    ("a staircase leading up to a tower", "a staircase against each end of a wall"): the
+    staircase as placed on each side; None for any other structure."""
+    if stairs.shape != "staircase" or stairs.axis is not None or stairs.yaw_deg:
+        return None
+    sizes = part_sizes(cell, stairs.part)
+    boxes = generate(stairs, sizes)
+
+    def on(side: str) -> _Placed:
+        axis, yaw = _CLIMBING_BACK[side]
+        return _orient(stairs.model_copy(update={"axis": axis, "yaw_deg": yaw}), boxes, sizes)
+
+    return on
 
 
 def _ring_for(ring: StructureSpec, inner: _Placed, cell: CellConfig) -> StructureSpec:
@@ -447,17 +469,19 @@ def _beside(
     cell: CellConfig,
     gap: float | None = None,
     groups: tuple[bool, bool] = (False, False),
+    facing: Callable[[str], _Placed] | None = None,
 ) -> _Placed:
     """`sub` `gap` (else one structure gap) from `base` on `side`; with no side, to the left
     if the pair fits across the workspace that way, else behind — but two long structures
     running left to right (rows, walls) stand alongside, one behind the other. Across, the two
     structures themselves line up — or the whole of a unit that is one group (`groups`: base,
-    sub; `Relation.whole`)."""
+    sub; `Relation.whole`). `facing` gives `sub` as turned on a side (see `_facing`)."""
     ws = cell.workspace
     extent = np.array([ws.x_max - ws.x_min, ws.y_max - ws.y_min])
     gap = cell.design.structure_gap if gap is None else gap
     along_y = all(p.half[1] >= 2 * p.half[0] for p in (base, sub))
     for name in [side] if side else (["back", "left"] if along_y else ["left", "back"]):
+        sub = facing(name) if facing else sub
         d, sign = _SIDES[name]
         dxy = np.zeros(2)
         dxy[d] = sign * (base.half[d] + sub.half[d] + gap)
@@ -476,11 +500,18 @@ def _beside(
 
 
 def _at_anchors(
-    base: _Placed, sub: _Placed, kind: str, at: str, cell: CellConfig, gap: float | None = None
+    base: _Placed,
+    sub: _Placed,
+    kind: str,
+    at: str,
+    cell: CellConfig,
+    gap: float | None = None,
+    facing: Callable[[str], _Placed] | None = None,
 ) -> _Placed:
     """One copy of `sub` at each corner or end of `base`: on its top face (``on_top_of``)
     or against its two ends (or all four sides) on the ground, `gap` away (``next_to``;
-    touching by default). A square base's ends are its left and right sides."""
+    touching by default; `facing` turns the copy on each side to face `base`). A square
+    base's ends are its left and right sides."""
     sub_bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
     if kind == "on_top_of":
         top, _, _ = _top(base)
@@ -489,7 +520,9 @@ def _at_anchors(
         lo, hi = (base.xy[high] - half).min(axis=0), (base.xy[high] + half).max(axis=0)
         centre, room = (lo + hi) / 2, (hi - lo) / 2 - sub.half  # where a copy's centre may go
         long = int(np.argmax(hi - lo))
-        if at.startswith("corner") or at.endswith(" corner"):
+        if at == "bend":  # the corner of an L where its two arms meet
+            offsets = [_bend(base.xy[high], cell.cube[0], base.spec.shape) - centre]
+        elif at.startswith("corner") or at.endswith(" corner"):
             if np.any(room < sub.half - 1e-9):  # two copies side by side would touch
                 raise InfeasibleError(
                     f"on each corner: the {base.spec.shape}'s top face is too small for four "
@@ -516,20 +549,38 @@ def _at_anchors(
         long = 1 if base.half[1] >= base.half[0] - 1e-9 else 0
         axes = (0, 1) if at == "sides" else (long,)
         base_bottom = float((base.z - np.array([d[2] for d in base.sizes]) / 2).min())
+        sides = [(d, s) for d in axes for s in (-1.0, 1.0)]
+        copies = [(facing or (lambda _: sub))(_SIDE_OF[side]) for side in sides]
         anchors = [
-            s * (base.half[d] + sub.half[d] + (gap or 0.0)) * np.eye(2)[d]
-            for d in axes
-            for s in (-1.0, 1.0)
+            s * (base.half[d] + copy.half[d] + (gap or 0.0)) * np.eye(2)[d]
+            for (d, s), copy in zip(sides, copies, strict=True)
         ]
         dz = base_bottom - sub_bottom
     if not at.endswith("s"):  # "on one corner", "at one end": the first of them
         anchors = anchors[:1]
     shift = np.zeros(2)  # `_merge` re-centres the unit: anchors move with it
-    for anchor in anchors:
-        merged = _merge(base, sub, anchor - shift, dz)
+    for n, anchor in enumerate(anchors):
+        merged = _merge(base, copies[n] if kind != "on_top_of" else sub, anchor - shift, dz)
         shift = shift + (base.xy[0] - merged.xy[0])
         base = merged
     return base
+
+
+def _bend(xy: np.ndarray, step: float, shape: str) -> np.ndarray:
+    """The one part of a top face (part centres `xy`) with a neighbour along x and along y
+    and no more: where an L's two arms meet."""
+    near = np.abs(xy[:, None, :] - xy[None, :, :])
+    along = [
+        (np.abs(near[..., axis] - step) < 1e-6) & (near[..., 1 - axis] < 1e-6) for axis in (0, 1)
+    ]
+    bends = [k for k in range(len(xy)) if along[0][k].sum() == 1 and along[1][k].sum() == 1]
+    if len(bends) != 1:
+        raise InfeasibleError(
+            f"at its corner: the {shape}'s top has {len(bends)} corners where two arms meet, "
+            "not one; say which corner",
+            parameter="relations",
+        )
+    return np.asarray(xy[bends[0]], dtype=float)
 
 
 def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[_Placed]:
@@ -574,8 +625,11 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                     )
                 base = attach(base, cc)  # the ring is the unit's outside: beside it is beside that
             return base
+        # a staircase beside another stands parallel to it ("a second staircase next to it")
+        alike = spec.structures[rel.object].shape == spec.structures[c].shape
+        facing = _facing(spec.structures[c], cell) if c not in children and not alike else None
         if rel.at is not None:
-            return _at_anchors(base, unit(c), rel.kind, rel.at, cell, rel.gap_m)
+            return _at_anchors(base, unit(c), rel.kind, rel.at, cell, rel.gap_m, facing)
         sub = unit(c)
         if rel.kind == "on_top_of":
             top, centre, top_half = _top(base)
@@ -587,7 +641,9 @@ def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[
                 centre[axis] += sign * (top_half[axis] - sub.half[axis])
             bottom = float((sub.z - np.array([d[2] for d in sub.sizes]) / 2).min())
             return _merge(base, sub, centre, top - bottom)
-        return _beside(base, sub, rel.side, cell, rel.gap_m, (rel.object in grouped, c in grouped))
+        return _beside(
+            base, sub, rel.side, cell, rel.gap_m, (rel.object in grouped, c in grouped), facing
+        )
 
     def unit(k: int) -> _Placed:
         if k in units:

@@ -48,7 +48,10 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
         # nothing on top of what is named
         ("bare", _N + r"(?:please\s+)?(?:do\s+not|never)\s+(?:stack|put|place|build)\s+"
                       r"anything\s+(?:else\s+)?(?:on\s+top\s+of|on|onto|above)\s+" + _THEM + r"\b"),
-        ("bare", _N + r"(?:with\s+)?nothing\s+(?:else\s+)?(?:on\s+top|on\s+it|on\s+them|above\s+it)"
+        ("bare", _N + r"(?:with\s+)?(?:nothing|no\s+(?:cubes?|parts?|blocks?|bricks?|"
+                      r"more\s+cubes?))"
+                      r"\s+(?:else\s+)?(?:(?:stacked|piled|put|placed|sitting|standing)\s+)?"
+                      r"(?:on\s+top|on\s+it|on\s+them|above\s+it)"
                       r"(?:\s+of\s+(?:it|them))?(?:\s+at\s+all)?\b"),
         # separate structures with space between them
         ("apart", _N + r"(?:and\s+)?(?:make\s+sure\s+(?:that\s+)?|ensure\s+(?:that\s+)?|so\s+"

@@ -35,9 +35,19 @@ def relate(
 
     def built(j: int | None, fallback: int) -> int | None:
         if j is None:
-            # "on top" with no object: the phrase before the subject
-            cands = [q for q in range(fallback) if phrases[q].count and phrases[q].spec]
-            return cands[-1] if cands else None
+            # "on top" with no object: the phrase before the subject — or the one a pronoun
+            # just before it names ("a tower on the left of it and a row behind it": it)
+            cands = [
+                q
+                for q in range(fallback)
+                if (phrases[q].count and phrases[q].spec)
+                or (
+                    phrases[q].ref is not None
+                    and q == fallback - 1
+                    and phrases[q].clause == phrases[fallback].clause
+                )
+            ]
+            return resolve(phrases, cands[-1]) if cands else None
         j = resolve(phrases, j)
         return j if phrases[j].count and phrases[j].spec is not None else None
 
@@ -213,7 +223,9 @@ def relate(
         if r.kind == "middle":
             # "a 3x3 slab with a tower in the middle": on the slab, centred; "a 6 by 6 fence with
             # a pyramid in the middle": inside it. The subject is the one with a middle.
-            if subject.shape in _TOPPED:
+            if subject.shape in _TOPPED or (subject.shape == "row" and (subject.width or 1) == 1):
+                # "a cross with a tower in the centre", "a row of 5 with a tower in the middle"
+                # (a wall's middle stays inside it: "a wall 6 by 6 with a pyramid in the middle")
                 st.notes.append(f"read 'in the middle' of the {subject.shape} as on top of it, "
                                 "centred")  # fmt: skip
                 subject, obj_spec, s_idx, o_idx = obj_spec, subject, o_idx, s_idx
@@ -323,7 +335,7 @@ def relate(
 
 
 _OWN_TOPS = frozenset({"top", "roof", "beam", "beams", "lintel", "deck", "tabletop", "slab"})
-_TOPPED = ("grid", "block", "pack")
+_TOPPED = ("grid", "block", "pack", "cross")
 """Families whose middle is a top face another structure stands on."""
 
 

@@ -8,7 +8,7 @@ import itertools
 import re
 from collections.abc import Callable
 
-from sdi.errors import SpecError
+from sdi.errors import InfeasibleError, SpecError
 from sdi.language.nouns import STRUCTURE_PLURALS, families_said
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
@@ -100,6 +100,20 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     if kind == "on_top_of":
         return f" on top of {obj} " if obj else " on top "
     return f" next to {obj or 'it'} "
+
+
+_L_NAMED = re.compile(r"\b(?:l[\s-]?shaped?|an?\s+l|l[\s-]?form)\b", re.IGNORECASE)
+
+
+def _bend(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "an L shape of 5 by 3 with a tower of 4 at the corner": on top of the L where its arms
+    meet (it went to the table's back left corner)."""
+    sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+    if not _L_NAMED.search(sentence) or not re.search(r"\bwith\b", sentence, re.IGNORECASE):
+        return m.group(0)
+    st.anchors.append(("on_top_of", "bend"))
+    st.notes.append(f"read '{_said(m)[0]}' as on top of the L's corner, where its arms meet")
+    return " on top "
 
 
 def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -343,7 +357,7 @@ def _measure_named(before: str, family: str | None, measure: str, st: ReadState)
     from sdi.language.families import check_family
     from sdi.spec.grammar import parse_phrase
 
-    clauses = [c for c in re.split(r"[.;]|,|\band\b", before) if c.strip()]
+    clauses = [c for c in re.split(r"[.;](?!\d)|,|\band\b", before) if c.strip()]
     if len(clauses) > 1:
         clauses = clauses[:-1]
     for clause in reversed(clauses):
@@ -357,8 +371,8 @@ def _measure_named(before: str, family: str | None, measure: str, st: ReadState)
             spec = check_family(found[-1], [], [], part_m=st.cell.cube[0])
             sizes = part_sizes(st.cell, spec.part)
             boxes = generate(spec, sizes)
-        except (SpecError, ValueError):
-            continue
+        except (SpecError, ValueError, InfeasibleError):
+            continue  # "a 3 mm row": no size in parts to take
         if measure in ("tall", "high"):
             return round(max(b.z for b in boxes) / sizes.h + 0.5)
         us, vs = [b.u for b in boxes], [b.v for b in boxes]
@@ -1251,6 +1265,7 @@ HANDLERS: dict[str, Handler] = {
     "{no_stack}": _no_stack,
     "{no_beams}": _no_beams,
     "{placement}": _placement,
+    "{bend}": _bend,
     "{arith}": _arith,
     "{from_centre}": _from_centre,
     "{relative}": _relative,

@@ -86,6 +86,9 @@ _MARKERS: list[tuple[tuple[str, ...], str, str | None]] = [
     (("near", "to"), "next", None),
     (("leading", "up", "to"), "next", None),
     (("leading", "to"), "next", None),
+    (("up", "against"), "next", None),
+    (("right", "against"), "next", None),
+    (("against",), "next", None),
     (("near",), "next", None),
     (("to", "its", "left"), "next_implicit", "left"),
     (("to", "its", "right"), "next_implicit", "right"),
@@ -187,6 +190,27 @@ def _own_then_and(doc: Doc, toks: list[int]) -> int | None:
     return None
 
 
+_BESIDE_OR_ON = frozenset({"next", "on", "next_implicit"})
+
+
+def _listed_pair(doc: Doc, seg: list[int]) -> int | None:
+    """Where "and" joins two structures named in `seg` ("a 3x2 patch, and a row of 3"), else
+    None."""
+    for n, i in enumerate(seg[1:-1], start=1):
+        follows = doc[seg[n + 1]]
+        if (
+            doc[i].lower_ == "and"
+            and (follows.lower_ in ("a", "an") or follows.like_num)
+            and (
+                names_structure(doc, seg[:n])
+                or [doc[k].lower_ for k in seg[:n] if doc[k].lower_ != ","] in (["it"], ["them"])
+            )
+            and names_structure(doc, seg[n + 1 :])
+        ):
+            return n
+    return None
+
+
 def find_phrases(doc: Doc) -> tuple[list[Phrase], list[PhraseRelation]]:
     phrases: list[Phrase] = []
     rels: list[PhraseRelation] = []
@@ -255,6 +279,14 @@ def _clause_phrases(
             continue
         words_, kind, side = found
         n = len(words_)
+        if (
+            words_[-1] == "against"
+            and lower[k + n : k + n + 1] == ["the"]
+            and lower[k + n + 1 : k + n + 2]
+            and lower[k + n + 1] not in lower[:k]
+        ):
+            k += n  # "a tower against the wall", no wall named: which is not said
+            continue
         strong = words_ in (("on", "top", "of"), ("on", "the", "top", "of"), ("atop",))
         head, is_structure = object_head(doc, k + n, end, strong)
         if (
@@ -408,14 +440,24 @@ def _clause_phrases(
                 phrases.append(Phrase(tokens=segments[j], clause=ci))
             segments[j] = tail[commas[0] + 1 :]
             segments[j + 1] = tail[: commas[0]]
-    base = len(phrases)
-    for seg in segments:
+    first_of: list[int] = []  # the phrase each segment starts with, and the one it ends with
+    last_of: list[int] = []
+    for j, seg in enumerate(segments):
+        first_of.append(len(phrases))
+        cut = _listed_pair(doc, seg) if 0 < j < len(markers) else None
+        if cut is not None and {markers[j - 1][2], markers[j][2]} <= _BESIDE_OR_ON:
+            # "a tower to the left of a 3x2 patch, and a row to the right of it": the patch is
+            # the first relation's object, the row the second's subject (the row stood left of
+            # the tower and right of it: a cycle)
+            phrases.append(Phrase(tokens=[i for i in seg[:cut] if doc[i].lower_ != ","], clause=ci))
+            seg = seg[cut + 1 :]
+        last_of.append(len(phrases))
         phrases.append(Phrase(tokens=seg, clause=ci))
     if trailing:
         phrases.append(Phrase(tokens=trailing, clause=ci))
     # relate the segments: marker j sits between segment j and j + 1
     for j, (start, _, kind, side) in enumerate(markers):
-        before, after = base + j, base + j + 1
+        before, after = last_of[j], first_of[j + 1]
         if kind.endswith("_verb"):
             continue
         if kind == "inside" and any(doc[i].lower_ in SPACE_WORDS for i in phrases[before].tokens):

@@ -570,16 +570,24 @@ def _fill(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
 
 def _region(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
             structures: list[StructureDraft]) -> str | None:  # fmt: skip
-    """ "move it to the left": the structure named last goes there."""
+    """ "move it to the left": the structure named last goes there — on that side only: "at
+    the front … put it on the left" is the front left."""
     place = " ".join(g.lower() for g in m.groups() if g)
     place = {"middle": "centre", "center": "centre"}.get(place, place)
     index = _last_index(built)
     was = structures[index].region
+    kept = [w for w in (was or "").split() if w in _ACROSS.get(place, ())]
+    if kept:
+        place = f"{place} {kept[0]}" if place in ("front", "back") else f"{kept[0]} {place}"
     structures[index] = structures[index].model_copy(
         update={"region": place, "at_x": None, "at_y": None}
     )
     return f"the {structures[index].shape} goes {place}" + (f" (was {was})" if was else "")
 
+
+_ACROSS = {"left": ("front", "back"), "right": ("front", "back"), "front": ("left", "right"),
+           "back": ("left", "right")}  # fmt: skip
+"""The words of a region a move to one side keeps (a move left keeps the front)."""
 
 _DIRECTIONS = {
     "x": ("at_x", 1),  # "move it 10 cm in x": along it, the positive way

@@ -217,7 +217,7 @@ _SQUARED = re.compile(r"\bthe\s+square\s+of\s+(\d+)\b|\b(\d+)\s+squared\b", re.I
 
 
 _SAME_AS = re.compile(
-    r"\b(?:of\s+|with\s+)?the\s+same\s+(length|height|width)(?:\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|"
+    r"(?:\b(?:of\s+|with\s+)?the\s+|(?<=,)\s*)same\s+(length|height|width)(?:\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|"
     r"other|last)\s+one))?(?!\s+as\s+the\s+(?!first\b|other\b|last\b)\w+)"
     r"|\bas\s+(long|tall|high)\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|other)\s+one)\b",
     re.IGNORECASE,
@@ -285,14 +285,32 @@ def _same_as(m: re.Match[str]) -> str:
     as the structure named just before, by its name (it was dropped, or a tower of 1 built)."""
     before = m.string[: m.start()].lower()
     prev = re.findall(r"[a-z]+", before)[-1:]
-    bare = not re.match(r"(?:of|with|as)\b", m.group(0).strip(), re.I)
+    bare = not re.match(r"(?:of|with|as|same)\b", m.group(0).strip(), re.I)
     if re.search(r"\bmake\s+(?:it|them|the\s+\w+(?:\s+one)?)\s*$", before) or (
         bare and not (prev and (prev[0] == "one" or prev[0] in lx.SHAPE_WORDS))
     ):
         return m.group(0)  # "make the first one the same height", "none of them the same height"
-    own = re.split(r"\band\b|,|;|\bthen\b", before)[-1]  # the phrase the size is said in
+    # the phrase the size is said in (", same length": the one before the comma)
+    own = re.split(r"\band\b|,|;|\bthen\b", before.rstrip(" ,"))[-1]
+    counted = re.findall(
+        r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|both|all|each)\s+([a-z]+)", own
+    )
     own_nouns = [w for w in re.findall(r"[a-z]+", own) if w in lx.SHAPE_WORDS]
-    earlier = before[: len(before) - len(own)] if own_nouns else before
+    before_own = before.rstrip(" ,")[: len(before.rstrip(" ,")) - len(own)]
+    said_before = [w for w in re.findall(r"[a-z]+", before_own) if w in lx.SHAPE_WORDS]
+    if m.group(0).strip().lower().startswith("same") and (
+        any(w in lx.SHAPE_WORDS or w.rstrip("s") in lx.SHAPE_WORDS for w in counted)
+        or (
+            own_nouns
+            and said_before
+            and lx.SHAPE_WORDS[own_nouns[-1]] == lx.SHAPE_WORDS[said_before[-1]]
+            and not re.search(r"\b(?:second|another|other|next|new|more)\b", own)
+        )
+    ):
+        # "Total 2 tower, same height", "a tower of 3 and a tower of 4, same height": a claim
+        # of their own, checked later
+        return m.group(0)
+    earlier = before_own if own_nouns else before
     named = [
         w for w in re.findall(r"[a-z]+", earlier)
         if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES
@@ -853,8 +871,21 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bas\s+(long|tall|high)\s+as\s+an?\s+(?:row|tower|stack|column|line|wall)\s+of\s+"
                 r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s+cubes?)?\b", re.I),
      lambda m: f" {m.group(2)} {'long' if m.group(1).lower() == 'long' else 'high'} "),
-    # "a wall of the same length behind it", "a tower as tall as the first one"
+    # "a tower next to it, as tall as its top step": as tall as the staircase (read as a vague
+    # "tall": 6 high)
+    (re.compile(r"\bas\s+(tall|high)\s+as\s+(?:its|the(?:\s+(?:staircase|stairs?)(?:'s|')?)?)\s+(?:very\s+)?"
+                r"(?:top|highest|last|upper(?:most)?)\s+(?:step|stair|level)\b", re.I),
+     lambda m: m.group(0) if not re.search(r"\bstair|\bsteps?\b", m.string[: m.start()], re.I)
+     else f"as {m.group(1)} as the staircase"),
+    # "a wall of the same length behind it", "a tower as tall as the first one", "then a wall
+    # behind it, same length, 3 high" (dropped, silently)
     (_SAME_AS, _same_as),
+    # "a second wall the same size behind it": a copy of the first, which is what a second of
+    # the same family is ('size' was left over: partial)
+    (re.compile(r"\b((?:a\s+second|another|one\s+more|an\s+other)\s+(" + _FAMILY_SAID
+                + r"|one))\s*,?\s+(?:of\s+|in\s+)?(?:exactly\s+)?the\s+same\s+(?:size|dimensions)"
+                r"(?:\s+as\s+(?:it|that(?:\s+one)?|the\s+(?:first|other)(?:\s+one)?|the\s+\2))?\b",
+                re.I), r"\1"),
     # "a row of 5 towers", "a line of 4 stacks of 2": that many in a row (a row was built too)
     (re.compile(r"\ban?\s+(?:row|line)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+"
                 r"(towers|stacks|columns|pillars|posts|pyramids|walls|staircases|arches|bridges)\b"
@@ -872,6 +903,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:\s+(?:\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall|long))?)"
                 r"\s*,?\s+(on\s+(?:either|each|both)\s+sides?\s+of)\b", re.I),
      r"a \1\2 \3"),
+    # "stand two towers of 3 on its two ends", "four cubes on its four corners": one at each (the
+    # second stood on the first: failure)
+    (re.compile(r"\b(two|2|four|4)\s+(tower|stack|column|pillar|post|cube|block|pyramid)s"
+                r"((?:\s+of\s+(?:\d+|one|two|three|four|five|six|seven|eight)(?:\s+(?:cubes?|high|tall))?)?"
+                r"(?:\s+(?:\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall|long))?)"
+                r"\s*,?\s+(?:one\s+)?(on|at)\s+(?:its|the|both|all|each\s+of\s+its)\s+(?:(?:two|2|four|4)\s+)?"
+                r"(ends|corners)\b", re.I),
+     lambda m: m.group(0) if (m.group(1).lower() in ("two", "2")) != (m.group(5).lower() == "ends")
+     else f"a {m.group(2)}{m.group(3)} {m.group(4)} each {m.group(5)[:-1]} of it"),
     # "a 3x3 square with the middle missing": hollow
     (re.compile(r"\bwith\s+(?:the|its)\s+(?:middle|centre|center)(?:\s+(?:cube|one|bit))?\s+"
                 r"(?:missing|empty|left\s+out|left\s+empty|removed|open|taken\s+out)\b", re.I),
@@ -890,6 +930,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:and\s+)?not\s+one\s+behind\s+(?:the\s+other|another)\b", re.I),
      " side by side "),
     (re.compile(r"\b(?:and\s+)?not\s+side\s+by\s+side\b", re.I), " one behind the other "),
+    # "a pen and a tower outside it on the left": beside it, on that side (the tower went to
+    # the table's left; "outside it" alone named nothing)
+    (re.compile(r"\boutside\s+(?:of\s+)?(it|them|the\s+(?!table\b|workspace\b|cell\b|bench\b)"
+                r"[a-z]+)(?:\s*,?\s*(?:on|to|at)\s+(?:the|its)\s+(left|right|back|front)"
+                r"(?:\s+side)?\b)?", re.I),
+     lambda m: m.group(0) if re.search(r"\b(?:nothing|anything|no\s+\w+)\s+(?:else\s+)?$",
+                                       m.string[: m.start()], re.I)  # "nothing outside it"
+     else f"to the {m.group(2)} of {m.group(1)}" if m.group(2) else f"next to {m.group(1)}"),
     # "as far from the robot as the table goes": flush with the back edge
     (re.compile(r"\bas\s+far\s+(?:away\s+)?from\s+the\s+robot\s+as\s+(?:the\s+(?:table|cell|"
                 r"workspace)\s+(?:goes|allows|lets\s+it)|it\s+(?:can|will)\s+go|possible|you\s+can)\b",

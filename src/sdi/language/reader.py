@@ -275,6 +275,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             else s.model_copy(update={"region": st.region_all})
             for k, s in enumerate(specs)
         ]
+    specs = _place_for_all(text, specs, relations, st)
     if st.no_beams:
         for s in specs:
             if s.shape in ("bridge", "arch", "canopy") or s.part == "beam":
@@ -292,7 +293,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     guessed = [
         s for s in specs if s.shape in ("row", "wall") and (getattr(s, "length", None) or 2) > 1
     ]
-    things = _THINGS.search(text)
+    things = _THINGS.search(text) or _THINGS.search(command)  # "I need two things." went
     count_word = (things.group(1) or things.group(2)).lower() if things else "0"
     asked = int(words_to_numbers([count_word])[0])
     if things and asked != len(specs):
@@ -466,9 +467,12 @@ _RIGHT_BY = re.compile(
 )
 _TOUCHING = re.compile(
     r"(?<!\bnot\s)(?<!\ball\s)\b(?:touching|flush\s+(?:with|against)|butting\s+(?:up\s+)?against|"
-    r"pressed\s+against|up\s+against)\b",
+    r"pressed\s+against|up\s+against|against(?=\s+(?:a|an|the|it|them|one|each)\b)|"
+    r"leading\s+up\s+to(?=\s+(?:a|an|the|it)\b))\b",
     re.IGNORECASE,
 )
+"""Structures side by side with no gap: "touching", "against a tower", a staircase "leading up
+to" it (its top step reaches it)."""
 
 
 _GUESSED_ROW = "no structure named: placed the parts in a row"
@@ -509,6 +513,35 @@ _SHARED_TWO = re.compile(
     r"(?:,\s*|and\s+|by\s+)?(" + _N_WORD + r")\s+(?:cubes?\s+)?(long|high|tall)\b",
     re.IGNORECASE,
 )
+
+
+_PLACE_FOR_ALL = re.compile(
+    r",\s*(?:and\s+)?(?:(?:all|both|each)\s+)?(?:(?:evenly|equally)\s+spaced(?:\s+out)?\s+|spaced\s+out\s+|"
+    r"(?:side\s+by\s+side|in\s+a\s+(?:row|line))\s+)?(?:along|at|on|in|across|to)\s+the\s+(?:[a-z]+\s+){0,2}?"
+    r"(?:back|front|left|right|middle|centre|center)(?:\s+(?:left|right|edge|side|half|corner))?"
+    r"\s*(?:[.!]\s*)?$",
+    re.IGNORECASE,
+)
+"""'a tower of 2, a tower of 4 and a tower of 6, evenly spaced along the back': a place said
+once after a list, with a comma, for all of it."""
+
+
+def _place_for_all(
+    text: str, specs: list[StructureSpec], relations: list[Relation], st: ReadState
+) -> list[StructureSpec]:
+    """The place said after a list of structures, with a comma, is every one's (it went to the
+    last only, silently), when nothing else places them."""
+    m = _PLACE_FOR_ALL.search(text)
+    last = specs[-1] if specs else None
+    if m is None or relations or len(specs) < 2 or last is None or last.region is None:
+        return specs
+    if any(s.region or s.at_x is not None or s.at_y is not None for s in specs[:-1]):
+        return specs
+    sentence = re.split(r"[.;!?:\n]", text[: m.start()])[-1].lower()
+    if sum(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", sentence)) < len(specs):
+        return specs  # "A wall of 4. A tower of 2, at the back.": the one in its sentence
+    st.notes.append(f"read '{m.group(0).strip(' ,.!')}' as the place of all {len(specs)}")
+    return [s.model_copy(update={"region": last.region}) for s in specs]
 
 
 def _shared_size(text: str, st: ReadState) -> str:

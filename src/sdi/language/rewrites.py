@@ -738,10 +738,54 @@ _REWRITES += [
         " ",
         "ignored '{0}': what it is for, not how to build it",
     ),
+    (  # "I need two things. A pyramid with 3 levels …": how many structures follow, said in a
+        # sentence of its own (its "two" sized the pyramid: a base of 2, failure); checked
+        # against the structures built
+        re.compile(
+            r"(?:^|(?<=[.;:!?]))\s*(?:(?:so\s+|ok(?:ay)?\s*,?\s*)?(?:i|we)\s+(?:need|want|would\s+like)\s+|"
+            r"(?:please\s+)?(?:build|make)\s+(?:me\s+|us\s+)?|there\s+(?:are|will\s+be)\s+)?"
+            r"(?:two|three|four|five|[2-5])\s+(?:different\s+|separate\s+|small\s+|little\s+)?"
+            r"(?:things|structures|items|objects|shapes|builds|models)\s*(?:[.;!]|:(?!\s*$))",
+            re.IGNORECASE,
+        ),
+        " ",
+        "",
+    ),
+    (  # "Grid of 2 by 5. Flat. Put it on the right.": a word of the structure before, said as
+        # a sentence of its own ('Flat' named no structure: partial)
+        re.compile(
+            r"(?<=\w)\s*[.;!]\s+((?:(?:it\s+(?:should|must)\s+be|keep\s+it|make\s+it)\s+)?(?:flat|"
+            r"(?:just\s+|only\s+)?(?:one|a\s+single|single)\s+(?:layer|level)(?:\s+(?:high|thick|deep))?"
+            r"(?:\s+only)?))\s*(?=[.;!]|$)",
+            re.IGNORECASE,
+        ),
+        ", {0}",
+        "",
+    ),
+    (  # "an L shape of 5 by 3 with a tower of 4 at the corner": on the L's own corner
+        re.compile(
+            r"\s*,?\s*\b(?:standing\s+|sitting\s+|placed\s+)?(?:at|on|in)\s+(?:the|its)\s+"
+            r"(?:inner\s+|inside\s+|outer\s+)?corner\b(?!\s+of\s+the\s+(?:table|workspace|cell|bench|"
+            r"work\s*area|area)\b)(?:\s+of\s+(?:it|the\s+l(?:[\s-]?shape)?))?",
+            re.IGNORECASE,
+        ),
+        "{bend}",
+        "",
+    ),
     (  # "a pyramid like the ones in Egypt": a likeness, with no size or place in it
         re.compile(
             r"\s*,?\s*\blike\s+(?:the\s+ones?|those|the\s+one|that\s+one)\s+(?:in|at|from|of)\s+(?:the\s+)?"
             r"[a-z]+(?:\s+[a-z]+)?(?=\s*(?:[,.;!?]|$))",
+            re.IGNORECASE,
+        ),
+        " ",
+        "ignored '{0}': a likeness, with no size or place in it",
+    ),
+    (  # "…, touching it, like the gable end of a house": a likeness said last (the house was
+        # built as a ring)
+        re.compile(
+            r"\s*,\s*(?:a\s+bit\s+|just\s+|kind\s+of\s+)?like\s+(?:a|an|the)\s+(?:[a-z]+\s+){1,3}of\s+"
+            r"(?:a|an|the|some)\s+[a-z]+(?:\s+[a-z]+)?(?=\s*(?:[.;!?]|$))",
             re.IGNORECASE,
         ),
         " ",
@@ -759,8 +803,9 @@ _REWRITES += [
     ),
     (  # "a cross with arms 2 cubes long": each arm from the middle, a bar of 5
         re.compile(
-            r"\bcross(?:[\s-]*shaped\s+\w+)?\s*,?\s+(?:with\s+)?(?:arms?|each\s+arm)\s+(?:of\s+)?"
-            r"(\d+|one|two|three|four)(?:\s*(?:cubes?|blocks?)\b)?(?:\s+long\b)?",
+            r"\b(?:cross|plus(?:\s+sign)?)(?:[\s-]*shaped\s+\w+)?(?:\s+(?:made|built)\s+(?:of|from|out\s+of)\s+"
+            r"(?:\w+\s+)?(?:cubes?|blocks?))?\s*,?\s+(?:with\s+)?(?:(?:its|the)\s+)?(?:arms?|each\s+arm)\s+"
+            r"(?:(?:are|is)\s+)?(?:of\s+)?(\d+|one|two|three|four)(?:\s*(?:cubes?|blocks?)\b)?(?:\s+long\b)?",
             re.IGNORECASE,
         ),
         "{cross_arms}",
@@ -2398,10 +2443,12 @@ _SIZE2 = r"\d+(?:\.\d+)?\s*(?:x|by)\s*\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?"
 _SIZED_TOP = re.compile(
     rf"(?:\s*(?:,|;|:|\band\b|\bwith\b|\n\s*-)\s*)?(?:(?:an?|the|its)\s+)?"
     rf"(?:({_SIZE2})\s+(?:top|roof|deck|tabletop)\b|"
-    rf"\b(?:top|roof|deck|tabletop)\s*(?:of\s+|:\s*)?({_SIZE2}))",
+    rf"\b(?:top|roof|deck|tabletop)\s*(?:of\s+|:\s*)?(?:(?:about|around|roughly|approx\w*)\s+)?"
+    rf"({_SIZE2})(?:\s+(?:cubes?|parts?|blocks?)\b)?)",
     re.IGNORECASE,
 )
-"""'a pavilion with legs 3 high and a 20 by 20 cm roof': the size of a table's own top."""
+"""'a pavilion with legs 3 high and a 20 by 20 cm roof', "… Top about 4 by 4 cubes": the size
+of a table's own top."""
 
 
 def _sized_top(text: str) -> str:
@@ -3071,6 +3118,14 @@ _RESULT = re.compile(
 )
 
 
+_RESTATED = re.compile(
+    r"\b(an?)\s+([a-z]+)((?:\s+(?:down|first|in\s+the\s+middle|here))*)\s*,\s*"
+    r"(an?\s+(?=[^,.;]*\d)[^,.;]*?)\s*(?=,|[.;]|$)",
+    re.IGNORECASE,
+)
+"""A structure named bare, then again with its size after a comma: the same one."""
+
+
 def _described_again(text: str, st: ReadState) -> str:
     """Apposition and likeness: 'a fence, a square one' is that fence, square; 'two towers, a
     big one and a small one' one of each; 'a block 2 by 3, like a little tower house' the
@@ -3081,6 +3136,28 @@ def _described_again(text: str, st: ReadState) -> str:
         return " " + " and ".join(f"one {w}" for w in words) + " "
 
     text = _APPOSED_LIST.sub(listed, text)
+
+    def restated(m: re.Match[str]) -> str:
+        nouns = [w for w in re.findall(r"[a-z]+", m.group(4).lower()) if w in lx.SHAPE_WORDS]
+        first = lx.SHAPE_WORDS.get(m.group(2).lower())
+        if first is None or re.search(r"\b(?:and|or|then)\b", m.group(4)):
+            return m.group(0)  # "a tower, a tower of 3 and a wall": a list
+        one = re.match(r"an?\s+(?:(\w+)\s+)?one\b(?!\s+(?:cube|block|part|level|layer)s?\b)(.*)",
+                       m.group(4), re.IGNORECASE)  # fmt: skip
+        if not nouns and one:  # "a wall, a long one of 6 cubes" (a column of 6 was built)
+            st.notes.append(f"read '{m.group(0).strip(' ,')}' as one {m.group(2).lower()}")
+            return f" a {one.group(1) or ''} {m.group(2)}{one.group(2)}{m.group(3)} "
+        if len(nouns) != 1:
+            return m.group(0)
+        second = lx.SHAPE_WORDS[nouns[0]]
+        if not (first == second or {first, second} <= {"block", "grid"}):
+            return m.group(0)
+        st.notes.append(f"read '{m.group(0).strip(' ,')}' as one {nouns[0]}")
+        return f" {m.group(4)}{m.group(3)} "
+
+    # "Put a plinth down first, a 3 by 3 slab one cube thick, and …": the plinth said again
+    # with its size (a plinth of the default size was built beside the slab)
+    text = _RESTATED.sub(restated, text)
 
     def again(m: re.Match[str]) -> str:
         adjective = (m.group(1) or m.group(2)).lower()  # "a big one", "big one"
@@ -3125,13 +3202,23 @@ _WHAT_IT_MAKES = re.compile(
 _LIKENESS_SIZE = re.compile(rf"\b{_N}\s*(?:x|by)\s*{_N}(?:\s*(?:x|by)\s*{_N})?\b", re.IGNORECASE)
 """A size said inside a likeness ("like a floor six by six")."""
 
+_A_SIZE = (
+    r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long)\b"
+)
 _SIZE_AFTER_IT = re.compile(
     r"\b(next\s+to|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of)\s+(it|them)\s*,?\s+"
-    r"((?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long))\b"
+    r"(" + _A_SIZE + r"(?:\s*,?\s*(?:and\s+)?" + _A_SIZE + r")*)"
     r"(?=\s*(?:[.;,]|$))",
     re.IGNORECASE,
 )
-"""A size said after the pronoun of a relation is the subject's ("… next to it, 2 high")."""
+"""A size said after the pronoun of a relation is the subject's ("… next to it, 2 high", "… next
+to it, 5 high, 4 long")."""
+
+_TOUCHING_IT = re.compile(
+    r"\b(it|them)\s*,?\s*(?:and\s+)?touching\s+(?:it|them|each\s+other)\b", re.IGNORECASE
+)
+"""'a wall next to it, touching it': the same one, said again (the relation's object was read
+as 'it, touching it': no structure)."""
 
 _LEVEL_LABEL = re.compile(
     r"(?:^|(?<=[.;:,!\n]))\s*(?:level|layer|tier|floor|storey|story|lvl)\s*"
@@ -3590,6 +3677,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _LEVEL_ORDINAL.sub(" on top ", text)
     text = _COMPARED_TAIL.sub(r"\1", text)  # "twice as tall as the first" → "8 high as the first"
     text = _SIZE_AFTER_IT.sub(r"\3 \1 \2", text)  # "a tower next to it, 2 high": its own size
+    text = _TOUCHING_IT.sub(r"\1, touching", text)
     for c in _COMPARISON.finditer(text):
         # "the left one taller than the right one": a comparison no rewrite turned into a value
         # ("two cubes taller than the walls" is a difference the grammar reads, or whose

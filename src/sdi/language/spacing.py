@@ -149,15 +149,17 @@ def _measured(m: re.Match[str], part_m: float) -> float | None:
 
 
 _SUPPORTS = r"(?:pillars|legs|towers|supports|columns|posts|piers|stacks|uprights)"
+_IS = r"(?:is\s+|of\s+|[:=]\s*|(?:should|must|will|shall|has\s+to|needs\s+to)\s+be\s+)?"
+"""How a gap's size is said: "the gap between them should be 3 cubes"."""
 _SPAN = re.compile(
-    r",?\s*\b(?:with\s+)?(?:a\s+)?(?:clear\s+|inner\s+)?span(?:\s+between\s+(?:the\s+)?"
-    + _SUPPORTS + r")?\s+(?:of\s+|is\s+|[:=]\s*)?(?:(?:about|around|roughly)\s+)?" + _N
+    r",?\s*\b(?:with\s+)?(?:a\s+|the\s+)?(?:clear\s+|inner\s+)?span(?:\s+between\s+(?:the\s+)?"
+    + _SUPPORTS + r")?\s+" + _IS + r"(?:(?:about|around|roughly)\s+)?" + _N
     + r"(?:[- ]?" + _UNIT + r")?"
     + r"|,?\s*\b(?:with\s+)?(?:the\s+|its\s+)?" + _SUPPORTS
     + r"\s+(?:are\s+|standing\s+|set\s+|placed\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+apart"
     + r"|,?\s*\b(?:and\s+)?(?:the\s+)?(?:inner\s+|clear\s+)?(?:distance|gap|space|spacing|"
     r"clearance|opening)\s+(?:of|between)\s+(?:the\s+)?(?:" + _SUPPORTS + r"|them)"
-    + r"\s+(?:is\s+|of\s+|[:=]\s*)?"
+    + r"\s+" + _IS
     + _N + r"[- ]?" + _UNIT
     + r"|,?\s*\bbetween\s+(?:them|the\s+" + _SUPPORTS + r")\s+(?:is\s+|a\s+gap\s+of\s+)?" + _N
     + r"[- ]?" + _UNIT

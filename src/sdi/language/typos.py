@@ -35,7 +35,7 @@ _FUNCTION = {"side", "sides", "then", "another", "other", "each", "every", "edge
              "bottom", "middle", "centre", "center", "after", "first", "second", "third", "last",
              "across", "along", "same", "space", "gap", "level", "layer", "inch", "inches",
              "foot", "feet", "wait", "sorry", "tetris", "piece", "downstage",
-             "upstage", "actually", "instead", "height"}  # fmt: skip
+             "upstage", "actually", "instead", "height", "beam", "beams"}  # fmt: skip
 _TARGETS = words.CORRECTABLE | _FUNCTION  # what a word may be corrected to
 _CHOICES = sorted(_TARGETS)
 

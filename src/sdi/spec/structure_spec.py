@@ -374,8 +374,10 @@ RelationKind = Literal["on_top_of", "around", "next_to"]
 Anchor = Literal[
     "corners", "ends", "corner", "end", "sides",
     "back left corner", "back right corner", "front left corner", "front right corner",
-    "left end", "right end", "front end", "back end",
+    "left end", "right end", "front end", "back end", "bend",
 ]  # fmt: skip
+"""Where copies stand: every corner or end of the object's top (or beside its ends or sides);
+one named corner or end; "bend": the corner of an L where its two arms meet."""
 
 
 class Relation(BaseModel):
@@ -423,6 +425,8 @@ class Relation(BaseModel):
             raise ValueError("at: a ring around a structure has no corners or ends to stand at")
         if self.at == "sides" and self.kind != "next_to":
             raise ValueError("at: copies on all four sides stand beside the structure")
+        if self.at == "bend" and self.kind != "on_top_of":
+            raise ValueError("at: 'bend' is the corner of an L's top where its arms meet")
         if self.at is not None and " " in self.at and self.kind != "on_top_of":
             raise ValueError(f"at: '{self.at}' names a corner of the structure's top face")
         if self.at is not None and self.side is not None:
