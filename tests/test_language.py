@@ -7989,3 +7989,49 @@ def test_a_structure_said_again_with_its_size_is_the_same_one(command, shapes, p
 def test_a_list_after_a_comma_is_not_one_structure_said_again():
     r = plan("a tower, a tower of 3 and a wall")
     assert [s.shape for s in r.spec.structures] == ["tower", "tower", "wall"]
+
+
+def test_a_tower_at_the_corner_of_a_slab_stands_on_one_corner_of_it():
+    # the tower went to the table's back left corner, apart from the slab, silently
+    r = plan("a 3x3 slab with a tower at the corner")
+    assert r.status == "success", r.notes
+    assert [(rel.kind, rel.at) for rel in r.spec.relations] == [("on_top_of", "corner")]
+    assert any("which corner was not said" in n for n in r.notes)
+    cols = _columns(r)
+    (corner,) = [k for k, h in cols.items() if h > 1]
+    assert corner == (min(x for x, _ in cols), min(y for _, y in cols))  # the front right
+
+
+def test_one_more_block_on_a_wall_is_a_cube_on_it():
+    # a 2x2x2 block stood on the wall's ends: failure
+    r = plan("a wall 5 long, 2 high. put one more block on top at each end")
+    assert r.status == "success", r.notes
+    levels = [round(o.position[2] / 0.05 + 0.5) for o in r.layout.objects]
+    assert len(levels) == 12 and levels.count(3) == 2
+    # a tower named last grows by it
+    r = plan("a tower of 3. put one more cube on top")
+    assert [s.height for s in r.spec.structures] == [4]
+
+
+@pytest.mark.parametrize(
+    "command, heights",
+    [
+        # every tower was built 1 high, the comparison reported unused (partial)
+        ("three towers in a row, each one block taller than the one before", [1, 2, 3]),
+        ("four stacks, each 2 cubes shorter than the previous one, starting at 8", [8, 6, 4, 2]),
+        ("three towers, the first 2 high, each one cube taller than the one before", [2, 3, 4]),
+        # the heights listed after it
+        ("three towers, each one block taller than the one before: one, two, three", [1, 2, 3]),
+        # "a row of towers": a row of 5 was built beside them (partial)
+        ("a row of towers, 1, 2, 3, 4 cubes high", [1, 2, 3, 4]),
+    ],
+)
+def test_towers_each_taller_than_the_one_before(command, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.height for s in r.spec.structures] == heights
+
+
+def test_towers_each_shorter_with_no_start_are_not_guessed():
+    r = plan("three towers, each one shorter than the last")
+    assert r.status == "partial" and "shorter than the last" in (r.error or "")

@@ -107,13 +107,38 @@ _L_NAMED = re.compile(r"\b(?:l[\s-]?shaped?|an?\s+l|l[\s-]?form)\b", re.IGNORECA
 
 def _bend(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "an L shape of 5 by 3 with a tower of 4 at the corner": on top of the L where its arms
-    meet (it went to the table's back left corner)."""
+    meet; "a 3x3 slab with a tower at the corner": on one corner of its top (both went to the
+    table's back left corner)."""
     sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1]
-    if not _L_NAMED.search(sentence) or not re.search(r"\bwith\b", sentence, re.IGNORECASE):
+    withs = list(re.finditer(r"\bwith\b", sentence, re.IGNORECASE))
+    if not withs:
         return m.group(0)
-    st.anchors.append(("on_top_of", "bend"))
-    st.notes.append(f"read '{_said(m)[0]}' as on top of the L's corner, where its arms meet")
+    named = [
+        lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", sentence[: withs[-1].start()].lower())
+        if w in lx.SHAPE_WORDS
+    ]  # fmt: skip
+    if _L_NAMED.search(sentence):
+        st.anchors.append(("on_top_of", "bend"))
+        st.notes.append(f"read '{_said(m)[0]}' as on top of the L's corner, where its arms meet")
+    elif named and named[-1] in ("grid", "block", "pack"):
+        st.anchors.append(("on_top_of", "corner"))
+        st.notes.append(f"read '{_said(m)[0]}' as on one corner of its top (which corner was not "
+                        "said: the front right)")  # fmt: skip
+    else:
+        return m.group(0)
     return " on top "
+
+
+def _extra_cube(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "… put one more block on top at each end" after a wall: a single cube; after a tower it
+    makes the tower taller (a change, read later)."""
+    named = [
+        lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+        if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES
+    ]  # fmt: skip
+    if not named or named[-1] == "tower":
+        return m.group(0)
+    return " a 1-cube tower "
 
 
 def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -1266,6 +1291,7 @@ HANDLERS: dict[str, Handler] = {
     "{no_beams}": _no_beams,
     "{placement}": _placement,
     "{bend}": _bend,
+    "{extra_cube}": _extra_cube,
     "{arith}": _arith,
     "{from_centre}": _from_centre,
     "{relative}": _relative,

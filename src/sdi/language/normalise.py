@@ -339,6 +339,49 @@ def _height_run(m: re.Match[str]) -> str:
     return f"{m.group(1)}{', '.join(run[:-1])} and {run[-1]}"
 
 
+_NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+_PROGRESSION = re.compile(
+    r"\b(" + _NUM + r")\s+(towers|stacks|columns|pillars|posts)\b([^.;:]*?)\s*,?\s*(?:with\s+)?each"
+    r"(?:\s+one)?\s+(?:(" + _NUM + r"|a)\s+)?(?:(?:cubes?|blocks?|levels?)\s+)?"
+    r"(taller|higher|shorter|lower)\s+"
+    r"than\s+the\s+(?:one\s+(?:before(?:\s+it)?|to\s+its\s+(?:left|right)|on\s+its\s+(?:left|right))|"
+    r"last(?:\s+one)?|previous(?:\s+one)?)"
+    r"(?:\s*,?\s*(?:starting|beginning)\s+(?:at|with|from)\s+(" + _NUM + r")"
+    r"(?:\s+(?:cubes?|high|tall))?)?",
+    re.IGNORECASE,
+)
+"""'three towers in a row, each one cube taller than the one before': heights that rise by a
+step (every tower was built 1 high, the comparison reported unused)."""
+
+
+def _progression(m: re.Match[str], notes: list[str]) -> str:
+    said = [words_to_numbers([g.lower()])[0] if g else "" for g in m.groups()]
+    count, step, start = int(said[0]), int(said[3]) if said[3].isdigit() else 1, said[5]
+    own = re.search(r"\b(?:of|(?:starting|beginning)\s+(?:at|with|from))\s+(" + _NUM + r")\b|\b("
+                    + _NUM + r")\s+(?:cubes?\s+)?(?:high|tall)\b", m.group(3), re.IGNORECASE)
+    if own and not start.isdigit():  # "three towers, the first of 2, each one taller …"
+        start = words_to_numbers([(own.group(1) or own.group(2)).lower()])[0]
+    listed = re.match(r"\s*[:,-]?\s*" + _NUM + r"\s*,", m.string[m.end() :], re.IGNORECASE)
+    if listed:  # "… taller than the one before: one, two, three": the heights are listed
+        return f"{m.group(1)} {m.group(2)}{m.group(3)}"
+    rising = m.group(5).lower() in ("taller", "higher")
+    rest = m.string[: m.start()] + " " + m.string[m.end() :]
+    if not start.isdigit() and (
+        not rising or re.search(r"\b" + _NUM + r"\b", rest, re.IGNORECASE)
+    ):
+        # "each one shorter than the last": from what height is not said; a number said
+        # elsewhere may say it ("… the smallest 2 high"), so nothing is guessed
+        return m.group(0)
+    first = int(start) if start.isdigit() else 1
+    heights = [first + (k if rising else -k) * step for k in range(count)]
+    if not 2 <= count <= 10 or min(heights) < 1 or max(heights) > 20:
+        return m.group(0)
+    run = [str(h) for h in heights]
+    notes.append(f"read '{m.group(0).strip()}' as heights {', '.join(run)}"
+                 + ("" if start.isdigit() else " (the first 1 high: where it starts was not said)"))
+    return f"{m.group(1)} {m.group(2)}{m.group(3)}, heights {', '.join(run[:-1])} and {run[-1]}"
+
+
 def _list_in_cubes(m: re.Match[str]) -> str:
     """ "5, 10 and 15 cm": "1, 2 and 3 cubes" when every value is a whole number of 5 cm cubes
     (the unit said once was read for the last value only)."""
@@ -418,7 +461,6 @@ _NOT_THE_TABLE = r"(?!\s+(?:the\s+)?(?:table|workspace|cell|bench|work\s+area|ta
 _Repl = str | Callable[[re.Match[str]], str]
 """What a phrasing becomes: a template, or what a function of the match gives."""
 _OTHER_SIDE = {"left": "right", "right": "left", "front": "back", "back": "front"}
-_NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
 
 
 def _pyramid_rows(m: re.Match[str]) -> str:
@@ -891,6 +933,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(towers|stacks|columns|pillars|posts|pyramids|walls|staircases|arches|bridges)\b"
                 r"((?:\s+(?:of\s+)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
                 r"(?:\s+(?:cubes?|high|tall|levels?|steps?))?)?)", re.I), r"\1 \2\3 in a row"),
+    # "a row of towers, 1, 2, 3, 4 cubes high": towers in a row (a row of 5 was built too)
+    (re.compile(r"\ban?\s+(?:row|line)\s+of\s+(towers|stacks|columns|pillars|posts)\b"
+                r"(?!\s+(?:of\s+)?(?:\d|one|two|three|four|five|six|seven|eight|nine|ten)\b)",
+                re.I),
+     r"\1 in a row"),
     # "5 towers, heights 1 to 5": one of each height (five of height 1 were built)
     (re.compile(r"\b(heights?\s+(?:of\s+)?)(?:from\s+)?(\d)\s*(?:to|through|-|–)\s*(\d+)\b", re.I),
      _height_run),
@@ -3023,6 +3070,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f" {n * n} "
 
     text = _SQUARED.sub(squared, text)  # "the square of 3", "3 squared"
+    text = _PROGRESSION.sub(lambda m: _progression(m, notes), text)  # "each one taller"
     for pattern, repl in _PHRASINGS:
         text = pattern.sub(repl, text)  # "tower from 5 cubes", "behind of wall", "near to"
     text = _placed_by_size(text)  # "3 and 5 high, the 5 on the left": the one of 5 there

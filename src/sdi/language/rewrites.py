@@ -738,6 +738,13 @@ _REWRITES += [
         " ",
         "ignored '{0}': what it is for, not how to build it",
     ),
+    (  # "a wall 5 long. put one more block on top at each end": a single cube (a 2x2x2 block
+        # fell off the wall: failure), unless a tower named last grows by it
+        re.compile(r"\b(?:one\s+more|an\s+extra|one\s+extra|another)\s+(?:single\s+)?(?:cube|block|brick)"
+                   r"(?=\s+(?:on|onto|up)\b)", re.IGNORECASE),
+        "{extra_cube}",
+        "",
+    ),
     (  # "I need two things. A pyramid with 3 levels …": how many structures follow, said in a
         # sentence of its own (its "two" sized the pyramid: a base of 2, failure); checked
         # against the structures built
