@@ -8035,3 +8035,21 @@ def test_towers_each_taller_than_the_one_before(command, heights):
 def test_towers_each_shorter_with_no_start_are_not_guessed():
     r = plan("three towers, each one shorter than the last")
     assert r.status == "partial" and "shorter than the last" in (r.error or "")
+
+
+@pytest.mark.parametrize(
+    "command, side, height",
+    [
+        # a wall 6 long and 6 high, its 3 reported unused (partial)
+        ("a 3-high wall all the way around a 6 by 6 area", 8, 3),
+        # a wall 7 long and 7 high, silently
+        ("a fence around a 5 by 5 space", 7, 1),
+        ("walls around a 4 by 4 area, 2 high", 6, 2),
+    ],
+)
+def test_a_wall_around_an_area_is_a_ring_with_that_inside(command, side, height):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    (ring,) = r.spec.structures
+    assert ring.shape == "enclosure" and (ring.length, ring.width) == (side, side)
+    assert set(_columns(r).values()) == {height} and len(_columns(r)) == 4 * (side - 1)

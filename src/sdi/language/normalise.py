@@ -977,6 +977,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:and\s+)?not\s+one\s+behind\s+(?:the\s+other|another)\b", re.I),
      " side by side "),
     (re.compile(r"\b(?:and\s+)?not\s+side\s+by\s+side\b", re.I), " one behind the other "),
+    # "a 3-high wall all the way around a 6 by 6 area": a ring with that inside (a wall 6 long
+    # and 6 high was built)
+    (re.compile(r"\b(?:walls?|fences?|fencing|borders?|barriers?|rings?)\b([^.;]*?)\s+"
+                r"(?:all\s+the\s+way\s+)?(?:around|round|surrounding|enclosing)\s+(?:a|an|the)\s+"
+                r"(\d+\s*(?:by|x)\s*\d+)\s+(?:square\s+)?(?:area|space|region|zone|yard|plot|field)\b",
+                re.I),  # not a patch or a square: a structure of its own, enclosed
+     r"ring\1 around a \2 space"),
     # "a pen and a tower outside it on the left": beside it, on that side (the tower went to
     # the table's left; "outside it" alone named nothing)
     (re.compile(r"\boutside\s+(?:of\s+)?(it|them|the\s+(?!table\b|workspace\b|cell\b|bench\b)"
