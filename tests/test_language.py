@@ -6965,7 +6965,8 @@ def test_a_beam_s_length_is_checked_against_the_cell_s_beam():
 def test_a_table_s_top_said_with_its_size_sizes_the_table(command):
     r = plan(command)
     assert r.status == "success", r.notes
-    assert r.notes[-1] == "a table top 4 parts across: legs 2 apart"  # as "a table, 4x4 top"
+    assert r.notes[-2] == "a table top 4 parts across: legs 2 apart"  # as "a table, 4x4 top"
+    assert r.notes[-1].startswith("the table's top is its beams, 3 parts across")
     lo, hi = boxes(r)  # the legs (cubes: no turn to undo) stand 4 parts across each way
     legs = lo[:, 2] < 1e-6
     span = hi[legs].max(0) - lo[legs].min(0)
@@ -8053,3 +8054,13 @@ def test_a_wall_around_an_area_is_a_ring_with_that_inside(command, side, height)
     (ring,) = r.spec.structures
     assert ring.shape == "enclosure" and (ring.length, ring.width) == (side, side)
     assert set(_columns(r).values()) == {height} and len(_columns(r)) == 4 * (side - 1)
+
+
+def test_a_table_top_wider_than_its_beams_says_so():
+    # the top built is its beams over the legs' centres: 3 across under a "4 by 4 top", unsaid
+    r = plan("a table with legs 3 tall and a 4 by 4 top")
+    assert any("the table's top is its beams, 3 parts across" in n for n in r.notes)
+    top = [o for o in r.layout.objects if o.position[2] == max(p.position[2] for p in r.layout)]
+    across = {round(o.position[1], 3) for o in top}
+    assert len(across) == 3  # three beams side by side: the note tells the truth
+    assert not any("top is its beams" in n for n in plan("a table with a 3 by 3 top").notes)

@@ -193,6 +193,9 @@ def _derive(spec: StructureDraft, notes: list[str], part_m: float) -> StructureD
         if side >= 3:
             notes.append(f"a table top {side} parts across: legs {side - 2} apart")
             spec = spec.model_copy(update={"span": side - 2, "length": None, "width": None})
+        if side >= 4:  # the top is its beams, which span the legs' centres, not their faces
+            notes.append(f"the table's top is its beams, {side - 1} parts across over the legs' "
+                         f"centres; the legs stand {side} parts across outside")  # fmt: skip
     return spec
 
 
