@@ -8064,3 +8064,48 @@ def test_a_table_top_wider_than_its_beams_says_so():
     across = {round(o.position[1], 3) for o in top}
     assert len(across) == 3  # three beams side by side: the note tells the truth
     assert not any("top is its beams" in n for n in plan("a table with a 3 by 3 top").notes)
+
+
+@pytest.mark.parametrize(
+    "command, shapes, heights",
+    [
+        # "another one" after "the corner of the table" built a table, silently
+        ("build a tower at the back left corner of the table then another one at the front right "
+         "corner", ["tower", "tower"], [3, 3]),
+        # "scratch that" took back the wall: error
+        ("Make a wall 4 long, scratch that, 6 long, 2 high.", ["wall"], [2] * 6),
+        # spoken "too high" after a length: 4 high were built for a vague "high"
+        ("build a wall six long and too high", ["wall"], [2] * 6),
+        # one cube was built
+        ("stack one cube on top of another cube", ["tower"], [2]),
+    ],
+)
+def test_spoken_and_revised_commands_are_read_as_meant(command, shapes, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    assert sorted(_columns(r).values()) == heights
+
+
+def test_a_per_b_is_a_by_b_and_a_kind_field_qualifies_the_family():
+    # "two per two" was a pack of 2, silently
+    r = plan("Put a tower of three cubes over the block of two per two.")
+    assert r.spec.structures[1].shape == "block"
+    assert (r.spec.structures[1].length, r.spec.structures[1].width) == (2, 2)
+    # "kind: square" was read as the family: a 2x2x4 block, silently
+    r = plan("item: pyramid\nlevels: 4\nkind: square")
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == ["pyramid"]
+    levels = sorted(round(o.position[2] / 0.05 + 0.5) for o in r.layout.objects)
+    assert [levels.count(k) for k in (1, 2, 3, 4)] == [16, 9, 4, 1]
+
+
+def test_a_staircase_way_up_said_in_the_past_or_corrected():
+    # "rose toward the left" was an unknown word: it climbed to the back, silently
+    r = plan("a staircase of six steps rose toward the left")
+    assert r.spec.structures[0].axis == "y" and not r.spec.structures[0].yaw_deg
+    # "going up to the back, no, to the front" went to the table's front, climbing back
+    r = plan("Staircase of 4 going up to the back, no, to the front actually.")
+    assert r.status == "success", r.notes
+    (stairs,) = r.spec.structures
+    assert (stairs.axis, stairs.yaw_deg, stairs.region) == ("x", 180.0, None)

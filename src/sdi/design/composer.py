@@ -545,6 +545,7 @@ def _at_anchors(
             if " " in at:  # "left end": that end of the long side (left = +y, back = +x)
                 offsets = offsets[1:] if at.split()[0] in ("left", "back") else offsets[:1]
         anchors, dz = [centre + off for off in offsets], top - sub_bottom
+        copies = [sub] * len(anchors)  # on a top, every copy as said
     else:
         long = 1 if base.half[1] >= base.half[0] - 1e-9 else 0
         axes = (0, 1) if at == "sides" else (long,)
@@ -560,7 +561,7 @@ def _at_anchors(
         anchors = anchors[:1]
     shift = np.zeros(2)  # `_merge` re-centres the unit: anchors move with it
     for n, anchor in enumerate(anchors):
-        merged = _merge(base, copies[n] if kind != "on_top_of" else sub, anchor - shift, dz)
+        merged = _merge(base, copies[n], anchor - shift, dz)
         shift = shift + (base.xy[0] - merged.xy[0])
         base = merged
     return base

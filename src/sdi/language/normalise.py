@@ -354,6 +354,23 @@ _PROGRESSION = re.compile(
 step (every tower was built 1 high, the comparison reported unused)."""
 
 
+_WAY_UP_CORRECTED = re.compile(
+    r"(\b(?:going|climbing|rising|goes|climbs|rises)\s+up\s+(?:to(?:wards?)?|toward)\s+the\s+)"
+    r"(left|right|back|front)\s*,?\s*(?:no|sorry|wait|i\s+mean|rather)\s*,?\s*(?:to(?:wards?)?|toward)\s+"
+    r"the\s+(left|right|back|front)\b(?:\s*,?\s*actually\b)?",
+    re.IGNORECASE,
+)
+"""A staircase's way up corrected ("going up to the back, no, to the front actually"): the
+correction was read as a place on the table."""
+_TOO_HIGH = re.compile(
+    r"(\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:long|wide|deep)\s+"
+    r"and\s+)too\s+(high|tall|long|wide|deep)\b",
+    re.IGNORECASE,
+)
+"""'a wall six long and too high' (spoken): two high, a size beside a size (4 high were built
+for a vague "high")."""
+
+
 def _progression(m: re.Match[str], notes: list[str]) -> str:
     said = [words_to_numbers([g.lower()])[0] if g else "" for g in m.groups()]
     count, step, start = int(said[0]), int(said[3]) if said[3].isdigit() else 1, said[5]
@@ -977,6 +994,24 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:and\s+)?not\s+one\s+behind\s+(?:the\s+other|another)\b", re.I),
      " side by side "),
     (re.compile(r"\b(?:and\s+)?not\s+side\s+by\s+side\b", re.I), " one behind the other "),
+    # "a tower at the back left corner of the table then another one …": the table's corner
+    # (the table was the last noun: "another one" built a table, silently)
+    (re.compile(r"\b(the\s+(?:back|front|rear|far|near)[\s-](?:left|right)\s+corner)\s+of\s+the\s+"
+                r"(?:work\s*)?(?:table|bench|workspace|cell)(?:\s*top)?\b", re.I), r"\1"),
+    # "a wall 4 long, scratch that, 6 long": the value taken back, not the wall ("takes back
+    # everything it names": error)
+    (re.compile(r"(\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?"
+                r"(?:long|high|tall|wide|deep|steps?|levels?)\s*),\s*(?:scratch|strike|cross\s+out)\s+"
+                r"that\s*,\s*(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)", re.I),
+     r"\1, no, "),
+    # "the block of two per two": two by two (a pack of 2 was built, silently)
+    (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+per\s+"
+                r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:row|level|layer)s?\b)",
+                re.I), r"\1 by \2"),
+    # "stack one cube on top of another cube": a tower of two (one cube was built)
+    (re.compile(r"\b(?:stack|put|place|set)\s+(?:one|a|a\s+single)\s+(?:cube|block)\s+(?:on\s+top\s+of|"
+                r"onto|on)\s+(?:another|a\s+second|one\s+more)(?:\s+(?:cube|block|one))?\b", re.I),
+     "stack a tower of 2"),
     # "a 3-high wall all the way around a 6 by 6 area": a ring with that inside (a wall 6 long
     # and 6 high was built)
     (re.compile(r"\b(?:walls?|fences?|fencing|borders?|barriers?|rings?)\b([^.;]*?)\s+"
@@ -3078,6 +3113,19 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
 
     text = _SQUARED.sub(squared, text)  # "the square of 3", "3 squared"
     text = _PROGRESSION.sub(lambda m: _progression(m, notes), text)  # "each one taller"
+
+    def too(m: re.Match[str]) -> str:
+        notes.append(f"read 'too {m.group(2)}' as 'two {m.group(2)}' (a size beside a size)")
+        return f"{m.group(1)}two {m.group(2)}"
+
+    text = _TOO_HIGH.sub(too, text)
+
+    def way_up(m: re.Match[str]) -> str:
+        notes.append(f"corrected by the command itself: up to the {m.group(2).lower()} → up to "
+                     f"the {m.group(3).lower()}")  # fmt: skip
+        return f"{m.group(1)}{m.group(3)}"
+
+    text = _WAY_UP_CORRECTED.sub(way_up, text)  # "going up to the back, no, to the front"
     for pattern, repl in _PHRASINGS:
         text = pattern.sub(repl, text)  # "tower from 5 cubes", "behind of wall", "near to"
     text = _placed_by_size(text)  # "3 and 5 high, the 5 on the left": the one of 5 there

@@ -491,7 +491,8 @@ _REWRITES += [
         re.compile(
             r",?\s*\b(?:(?:climbing|rising|ascending|going|stepping)\s+up|climbing|rising|"
             r"(?:make\s+(?:it|them)\s+)?(?:go|goes)\s+up|"
-            r"ascending|(?:it\s+|they\s+)?(?:to\s+)?(?:climbs?|rises?|ascends?)(?:\s+up)?)\s+"
+            r"ascending|(?:it\s+|they\s+)?(?:to\s+)?(?:climbs?|rises?|ascends?|rose|climbed|ascended|"
+            r"went\s+up)(?:\s+up)?)\s+"
             r"(?:to(?:wards)?|toward|to\s+the)\s+(?:the\s+|my\s+|your\s+|our\s+)?"
             r"(left|right|front|back)\b|,?\s*\bup\s+to(?:wards)?\s+the\s+(left|right|front|back)\s+"
             r"(?:climbing|rising|ascending|going)\b",
@@ -787,6 +788,16 @@ _REWRITES += [
         ),
         " ",
         "ignored '{0}': a likeness, with no size or place in it",
+    ),
+    (  # "a lonely staircase …, away from everything": apart, as separate structures stand
+        # anyway ("away" turned the staircase to climb to the back, silently)
+        re.compile(
+            r"\s*,?\s*\b(?:well\s+|far\s+)?away\s+from\s+(?:everything|anything|all\s+else|the\s+rest|"
+            r"the\s+others|other\s+things)(?:\s+else)?\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "read '{0}' as standing apart (separate structures always do)",
     ),
     (  # "…, touching it, like the gable end of a house": a likeness said last (the house was
         # built as a ring)

@@ -25,6 +25,9 @@ _KEY_VALUE_STRICT = re.compile(
 _YAML_LINE = re.compile(r"^\s*(?:-\s+)?[A-Za-z_][\w.]*\s*:(?:\s|$)")
 
 _SHAPE_KEYS = ("shape", "type", "kind", "structure", "family", "item", "object")
+_KIND_WORDS = frozenset({"square", "flat", "solid", "hollow", "stepped", "2d", "3d", "open",
+                         "closed"})  # fmt: skip
+"""What a "kind:" says of the family named under another key ("item: pyramid / kind: square")."""
 _COUNT_KEYS = ("count", "n", "number", "qty", "quantity", "copies")
 _SIZE_WORDS = {
     "height": "high", "h": "high", "levels": "levels", "tiers": "levels", "layers": "layers",
@@ -166,7 +169,12 @@ def _describe(data: Any) -> str:
         if isinstance(data.get(key), list):
             rest = {k: v for k, v in data.items() if k != key}
             return " . then ".join(p for p in (_describe(data[key]), _loose(rest)) if p.strip())
-    shape = next((data[k] for k in _SHAPE_KEYS if k in data), None)
+    said = [data[k] for k in _SHAPE_KEYS if k in data]
+    kinds = [v for v in said if isinstance(v, str) and v.lower() in _KIND_WORDS]
+    shape = next((v for v in said if v not in kinds), said[0] if said else None)
+    if kinds and shape is not None and shape not in kinds:
+        # "item: pyramid / kind: square": a square pyramid (the kind was read as the family)
+        shape = f"{kinds[0]} {shape}"
     if shape is not None or "op" in data:
         return _structure(data, shape)
     named = [k for k in data if family_word(k) and not isinstance(data[k], int | float | str)]
