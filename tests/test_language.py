@@ -7968,6 +7968,17 @@ def test_as_many_as_the_ends_or_corners_are_one_at_each(command, parts, top, on_
     assert levels.count(top) == on_top
 
 
+def test_towers_at_the_four_corners_of_the_table_stay_one_in_each_corner():
+    r = plan("four towers of 3 at the four corners of the table")
+    assert r.status == "success", r.notes
+    assert sorted(s.region for s in r.spec.structures) == [
+        "back left", "back right", "front left", "front right"]  # fmt: skip
+    # the object said after "the corners of": the copies stand on it
+    r = plan("four towers of 2 at the corners of a 4x4 slab")
+    assert r.status == "success", r.notes
+    assert [(rel.kind, rel.at) for rel in r.spec.relations] == [("on_top_of", "corners")]
+
+
 @pytest.mark.parametrize(
     "command, shapes, parts, tallest",
     [

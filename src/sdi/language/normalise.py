@@ -973,9 +973,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"((?:\s+of\s+(?:\d+|one|two|three|four|five|six|seven|eight)(?:\s+(?:cubes?|high|tall))?)?"
                 r"(?:\s+(?:\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall|long))?)"
                 r"\s*,?\s+(?:one\s+)?(on|at)\s+(?:its|the|both|all|each\s+of\s+its)\s+(?:(?:two|2|four|4)\s+)?"
-                r"(ends|corners)\b", re.I),
+                r"(ends|corners)\b(?!\s+of\s+the\s+(?:table|workspace|cell|bench|floor|area|work))(\s+of\b)?",
+                re.I),  # the table's four corners are its corner regions, one each
      lambda m: m.group(0) if (m.group(1).lower() in ("two", "2")) != (m.group(5).lower() == "ends")
-     else f"a {m.group(2)}{m.group(3)} {m.group(4)} each {m.group(5)[:-1]} of it"),
+     else f"a {m.group(2)}{m.group(3)} {m.group(4)} each {m.group(5)[:-1]} of"
+     + ("" if m.group(6) else " it")),
     # "a 3x3 square with the middle missing": hollow
     (re.compile(r"\bwith\s+(?:the|its)\s+(?:middle|centre|center)(?:\s+(?:cube|one|bit))?\s+"
                 r"(?:missing|empty|left\s+out|left\s+empty|removed|open|taken\s+out)\b", re.I),
