@@ -363,7 +363,7 @@ _WAY_UP_CORRECTED = re.compile(
 """A staircase's way up corrected ("going up to the back, no, to the front actually"): the
 correction was read as a place on the table."""
 _TOO_HIGH = re.compile(
-    r"(\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:long|wide|deep)\s+"
+    r"(\b" + _NUM + r"\s+(?:cubes?\s+)?(?:long|wide|deep)\s+"
     r"and\s+)too\s+(high|tall|long|wide|deep)\b",
     re.IGNORECASE,
 )
@@ -1002,14 +1002,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:work\s*)?(?:table|bench|workspace|cell)(?:\s*top)?\b", re.I), r"\1"),
     # "a wall 4 long, scratch that, 6 long": the value taken back, not the wall ("takes back
     # everything it names": error)
-    (re.compile(r"(\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?"
-                r"(?:long|high|tall|wide|deep|steps?|levels?)\s*),\s*(?:scratch|strike|cross\s+out)\s+"
-                r"that\s*,\s*(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)", re.I),
+    (re.compile(r"(\b" + _NUM + r"\s+(?:cubes?\s+)?(?:long|high|tall|wide|deep|steps?|levels?)\s*),"
+                r"\s*(?:scratch|strike|cross\s+out)\s+that\s*,\s*(?=" + _NUM + r"\b)", re.I),
      r"\1, no, "),
     # "the block of two per two": two by two (a pack of 2 was built, silently)
-    (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+per\s+"
-                r"(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:row|level|layer)s?\b)",
-                re.I), r"\1 by \2"),
+    (re.compile(r"\b(" + _NUM + r")\s+per\s+(" + _NUM + r")\b(?!\s*(?:row|level|layer)s?\b)", re.I),
+     r"\1 by \2"),
     # "stack one cube on top of another cube": a tower of two (one cube was built)
     (re.compile(r"\b(?:stack|put|place|set)\s+(?:one|a|a\s+single)\s+(?:cube|block)\s+(?:on\s+top\s+of|"
                 r"onto|on)\s+(?:another|a\s+second|one\s+more)(?:\s+(?:cube|block|one))?\b", re.I),
