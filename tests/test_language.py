@@ -4385,10 +4385,13 @@ def test_a_noun_naming_a_structures_use_is_noted_not_material():
     r = plan("Three lookout towers of 3 in a line")  # and the count before it still counts
     assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 3, 3]
     # what it is made of, a misspelling, or a verb the parser took for a noun stay material
-    for command, word in (("a glass tower of 3", "glass"), ("a signall post 3 high", "signall"),
-                          ("Tower of 3. Disregard pyramid.", "disregard")):  # fmt: skip
+    for command, word in (("a glass tower of 3", "glass"), ("a signall post 3 high", "signall")):
         r = plan(command)
         assert r.status == "partial" and any(f"ignored '{word}'" in n for n in r.notes), r.notes
+    # a verb the parser took for a noun: "Disregard pyramid" takes the pyramid back
+    r = plan("Tower of 3. Disregard pyramid.")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["tower"]
+    assert any("not wanted: 'Disregard pyramid'" in n for n in r.notes)
 
 
 def test_parts_counted_for_a_bridge_or_table_and_cubes_by_cubes_and_posts_at_each_end():
@@ -8120,3 +8123,102 @@ def test_a_staircase_way_up_said_in_the_past_or_corrected():
     assert r.status == "success", r.notes
     (stairs,) = r.spec.structures
     assert (stairs.axis, stairs.yaw_deg, stairs.region) == ("x", 180.0, None)
+
+
+@pytest.mark.parametrize(
+    "command, shapes, heights",
+    [
+        # a sentence telling what happened before built the structure it named, as well
+        ("Left off before the bridge. Please build a bridge with pillars 2 cubes tall.",
+         ["bridge"], [1, 2, 2]),
+        ("Hello again! Last time the enclosure was too small. Could you build it 6 by 6 this "
+         "time, one cube high? Thanks so much.", ["enclosure"], [1] * 20),
+        # a structure taken back by its name was built all the same
+        ("Castle. Wait, no castle. Just a tower of 6.", ["tower"], [6]),
+        ("Hello, please disregard my earlier message asking for a pyramid. What we actually "
+         "need is a tower eight cubes tall.", ["tower"], [8]),
+        ("forget the pyramid, build a tower of 8", ["tower"], [8]),
+        ("Nothing fancy, no bridges or arches — just two towers of five, side by side.",
+         ["tower", "tower"], [5, 5]),
+    ],
+)
+def test_what_is_recounted_or_taken_back_by_name_is_not_built(command, shapes, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    assert sorted(_columns(r).values()) == heights
+    assert any("happened before" in n or "taken back" in n or "not wanted" in n for n in r.notes)
+
+
+def test_a_structure_taken_back_by_name_needs_the_name_of_a_structure():
+    # "skip the centre cube": a part, not a structure — still reported, nothing taken back
+    r = plan("Build a 3x3x3 block. skip the centre cube of the top layer")
+    assert r.status == "partial" and len(r.layout.objects) == 27
+    # a sentence in the past with no request after it is what to build (a story)
+    r = plan("There was a great pyramid, four levels high.")
+    assert [s.shape for s in r.spec.structures] == ["pyramid"]
+
+
+@pytest.mark.parametrize(
+    "command, levels",
+    [
+        ("Pyramid replacement: 4x4 base, go up until it's a single cube on top.",
+         [16, 9, 4, 1]),
+        ("a pyramid with a 4x4 base, a single cube on top", [16, 9, 4, 1]),
+        ("a 4-level pyramid topped with one cube", [4, 3, 2, 1]),
+    ],
+)
+def test_a_pyramid_said_to_end_in_one_cube_is_that_pyramid(command, levels):
+    # the single cube was a tower stood on the pyramid (or a 4x4 block on it: failure)
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [a * b for a, b in _level_sizes(r.layout)] == levels
+    # a cube put on top of it is a cube added
+    r = plan("a pyramid, then put one cube on top of it")
+    assert [s.shape for s in r.spec.structures] == ["pyramid", "tower"]
+
+
+@pytest.mark.parametrize(
+    "command, shapes, heights",
+    [
+        # "2nd" was read as the row's length
+        ("row of 4 pls, then 2nd row behind it", ["row", "row"], [1] * 8),
+        # "three cubes, one on top of another": three towers of one, two stacked (partial)
+        ("Shim stack: three cubes, one on top of another, in the front right.", ["tower"], [3]),
+        # "a cube alone" between them was read as a one-cube gap
+        ("Build a tower of 4 cubes and an other tower of 4 cubes, and between them a cube alone.",
+         ["tower", "tower", "tower"], [1, 4, 4]),
+        # a 1x6 wall with its height said apart was a column 6 high
+        ("Place a 1x6 wall along +y, height 2, centred at x=0.55 y=0.30.", ["wall"], [2] * 6),
+        # sizes said after "a small wall" built a second wall beside it
+        ("could you please build a small wall for us? Six cubes long and two cubes high would be "
+         "ideal.", ["wall"], [2] * 6),
+    ],
+)
+def test_counts_and_sizes_said_in_other_words(command, shapes, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    assert sorted(_columns(r).values()) == heights
+
+
+def test_a_tower_over_a_block_stands_on_it_and_a_corner_said_with_a_hyphen():
+    # "a tower of three cubes over the block": beside it, silently
+    r = plan("Put a tower of three cubes over the block of two per two.")
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [("on_top_of", 0, 1)]
+    # "on its back-left corner" was read as "back to left": the table's back left region
+    r = plan("a 3 by 4 slab with a tower of 2 on its back-left corner")
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+    assert max(o.position[2] for o in r.layout.objects) > 0.1
+    # "front-back" still runs from one to the other
+    assert plan("a row of 5 running front-back").spec.structures[0].axis == "x"
+
+
+def test_the_small_one_said_without_one():
+    r = plan("Construct two towers, the one of four cubes and the other of two, the small at "
+             "the right.")
+    assert r.status == "success", r.notes
+    cols = _columns(r)
+    (small,) = [k for k, v in cols.items() if v == 2]
+    (tall,) = [k for k, v in cols.items() if v == 4]
+    assert small[1] < tall[1]  # right = smaller y

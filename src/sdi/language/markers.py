@@ -323,7 +323,13 @@ def _clause_phrases(
         )
         if kind == "next" and head is None and words_[0] in ("alongside", "beside", "besides"):
             kind, implicit = "next_implicit", True  # "… then a second row alongside"
-        if numeric_before and kind == "on" and words_[0] in ("above", "over"):
+        said_of = k - (1 if doc[k - 1].like_num else 2) - 1  # "a tower of three cubes over":
+        if (  # the tower's own size, and then where it stands
+            numeric_before
+            and kind == "on"
+            and words_[0] in ("above", "over")
+            and not (said_of >= clause[0] and lower[said_of] == "of" and is_structure)
+        ):
             k += n
             continue
         if kind == "inside_ref":

@@ -830,10 +830,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                                           "right": "left"}[m.group(1).lower()]),
     # "put the tall one at the back", "the big one on the right": the tallest (or the
     # taller) of those named, not a structure one cube high
-    (re.compile(r"\bthe\s+(tall|high|big|large|long|short|low|small|little)\s+(one|tower|stack|column)\b"
+    # ("the small at the right": the noun left unsaid)
+    (re.compile(r"\bthe\s+(tall|high|big|large|long|short|low|small|little)\s+(?:(one|tower|stack|column)\b|"
+                r"(?=(?:at|on|in)\s+the\s+(?:left|right|front|back)\b))"
                 r"(?=\s*(?:,\s*)?(?:goes\s+|is\s+|stands\s+|should\s+(?:be|go|stand)\s+|must\s+(?:be|go)\s+)?"
                 r"(?:(?:in|on|at|to)\s+the|behind)\b)", re.I),
-     lambda m: "the " + _SUPERLATIVE[m.group(1).lower()] + " " + m.group(2)
+     lambda m: "the " + _SUPERLATIVE[m.group(1).lower()] + " " + (m.group(2) or "one ")
      if _FAMILY_BEFORE.search(m.string[: m.start()]) else m.group(0)),
     # "then remove the tall one": the tallest named (it was read as a pointer, nothing removed)
     (re.compile(r"\b(remove|take\s+(?:away|out|down)|knock\s+(?:down|over)|get\s+rid\s+of|drop|"
@@ -1012,6 +1014,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:stack|put|place|set)\s+(?:one|a|a\s+single)\s+(?:cube|block)\s+(?:on\s+top\s+of|"
                 r"onto|on)\s+(?:another|a\s+second|one\s+more)(?:\s+(?:cube|block|one))?\b", re.I),
      "stack a tower of 2"),
+    # "a 1x6 wall along +y, height 2": its footprint, one cube thick and six long (a wall 1
+    # long and 6 high was built, a column)
+    (re.compile(r"\b(?:1\s*[x×]\s*(\d+)|(\d+)\s*[x×]\s*1(?=\s+\w+\b[^.;]*\b(?:height|high|tall)\b))"
+                r"\s+(wall|row)\b(?!\s*[x×])", re.I),
+     lambda m: f"{m.group(3)} {m.group(1) or m.group(2)} long"),
+    # "three cubes, one on top of another": a tower of three (three towers of one, two stacked)
+    (re.compile(r"(?<!\bof\s)\b(" + _NUM + r")\s+(?:cubes|blocks)\s*,?\s*(?:stacked\s+|piled\s+)?"
+                r"(?:one\s+on\s+top\s+of|one\s+on|one\s+above)\s+(?:another|the\s+other|each\s+other|"
+                r"the\s+next|the\s+last)\b", re.I),
+     r"a tower of \1"),
     # "a 3-high wall all the way around a 6 by 6 area": a ring with that inside (a wall 6 long
     # and 6 high was built)
     (re.compile(r"\b(?:walls?|fences?|fencing|borders?|barriers?|rings?)\b([^.;]*?)\s+"
@@ -2496,7 +2508,9 @@ def _call(m: re.Match[str], notes: list[str]) -> str:
     return out
 
 
-_OPPOSITES = re.compile(r"\b(front|back|left|right)\s*[-–/]\s*(back|front|right|left)\b", re.I)
+_OPPOSITES = re.compile(
+    r"\b(?:(front|back)\s*[-–/]\s*(back|front)|(left|right)\s*[-–/]\s*(right|left))\b", re.I
+)  # "front-back", "left/right": from one to the other; "back-left" is a corner
 _FILLER_WORD = r"(?:u+h+|u+m+|e+r+m*|h+m+)"
 """'uh', 'um', 'er', 'hmm': a sound, nothing to read."""
 _FILLERS = re.compile(
@@ -3044,6 +3058,15 @@ def _there(text: str, notes: list[str]) -> str:
     return text[: m.end() - len("there")] + place + text[m.end() :]
 
 
+_ALONE = re.compile(
+    r"\b(?:a|one)\s+(cube|block|brick)\s+(?:alone|on\s+its\s+own|by\s+itself|all\s+alone)\b", re.I
+)
+_ORDINAL_WORD = {"1": "first", "2": "second", "3": "third", "4": "fourth", "5": "fifth",
+                 "6": "sixth", "7": "seventh", "8": "eighth", "9": "ninth",
+                 "10": "tenth"}  # fmt: skip
+_ORDINAL_FIGURE = re.compile(r"\b(10|[1-9])(?:st|nd|rd|th)\b(?=\s+[a-z])", re.IGNORECASE)
+
+
 def normalise(command: str, notes: list[str] | None = None) -> str:
     """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
     notes = notes if notes is not None else []
@@ -3052,6 +3075,8 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         text = text.replace(a, b)
     text = text.replace("@", " at ")
     text = re.sub(r"\bontop\b", "on top", text, flags=re.IGNORECASE)
+    text = _ORDINAL_FIGURE.sub(lambda m: _ORDINAL_WORD[m.group(1)], text)  # "a 2nd row"
+    text = _ALONE.sub(r"a single \1", text)  # "between them a cube alone": a cube, not a gap
 
     # "Line 3 down for maintenance (unrelated).": a sentence its writer marks as unrelated
     def unrelated(m: re.Match[str]) -> str:
@@ -3261,7 +3286,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _SMACK.sub("", _BUILD_SLANG.sub("build ", text))
     text = _FILLERS.sub(" ", text)  # "uh", "um", emoji: nothing to read
     text = _RADIO.sub(" ", text)  # "copy that.", ", over": radio procedure
-    text = _OPPOSITES.sub(lambda m: f"{m.group(1)} to {m.group(2)}", text)  # "front-back"
+    text = _OPPOSITES.sub(lambda m: " to ".join(g for g in m.groups() if g), text)
     text = re.sub(r"\b(left|right)[- ]?hand(?=\s+side\b)", r"\1", text, flags=re.I)
     text = _CSV_AT.sub(_csv_at, text)
     quantities: list[int] = []

@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING
 
 from sdi.errors import LimitError, SpecError
 from sdi.language import (
+    background,
     claims,
     coherence,
     corrections,
@@ -151,6 +152,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text, corrected = typos.correct(text)
     corrected[:0] = unscanned
     text = fields.as_words(text, st.notes)  # "Tower | H: 4 | X (mm): 500 | Y (mm): 400"
+    text = background.taken_back(background.recounted(text, st.notes), st.notes)
     text = _shared_size(text, st)  # "…, both 3 high": every structure's height
     text = normalise(text, st.notes)
     text = viewpoint.take(text, st.notes)  # "I'm opposite the robot … on my left": its right

@@ -2669,7 +2669,7 @@ def _sized_base(text: str, st: ReadState) -> str:
     ("a pyramid with a 4x4 base", "whose base is 4x4")."""
 
     def sub(m: re.Match[str]) -> str:
-        sentence = re.split(r"[.;:!?]\s", text[: m.start()])[-1]
+        sentence = re.split(r"[.;!?]\s", text[: m.start()])[-1]  # "Pyramid: 4x4 base": its own
         before = re.findall(r"[a-z]+", sentence.lower())
         if {"with", "whose", "its", "has", "having", "of", "their"} & set(before[-1:]):
             return m.group(0)
@@ -3601,6 +3601,42 @@ _SQUARE_BASE = re.compile(
 """'a pyramid of 3 levels with a square base', 'a pyramid, not a flat one': a square one."""
 
 
+_ONE_CUBE = (
+    r"(?:just\s+|only\s+)?(?:a\s+single|one\s+single|a\s+lone|one|1|a)\s+(?:single\s+)?"
+    r"(?:cube|block|brick)"
+)
+_AT_TOP = r"(?:on\s+(?:the\s+)?top|at\s+the\s+(?:top|peak|apex|tip|summit)|up\s+top)"
+_APEX = re.compile(
+    r"\s*(?:,\s*|\s)(?:and\s+|with\s+)?(?:"
+    r"(?:(?:then\s+)?(?:go(?:ing)?|ris(?:e|ing)|build(?:ing)?|work(?:ing)?|step(?:ping)?|"
+    r"narrow(?:ing)?|taper(?:ing)?)\s+(?:up\s+|in\s+)?)?(?:until|till|up\s+to)\s+"
+    r"(?:there(?:'s|\s+is)\s+|it(?:'s|\s+is)\s+|you\s+(?:reach|get\s+to|have)\s+)?"
+    rf"{_ONE_CUBE}(?:\s+{_AT_TOP})?"
+    rf"|(?:topped|capped)(?:\s+off)?\s+(?:with|by)\s+{_ONE_CUBE}(?:\s+{_AT_TOP})?"
+    rf"|end(?:s|ing)?\s+(?:in|with|at)\s+{_ONE_CUBE}(?:\s+{_AT_TOP})?"
+    rf"|{_ONE_CUBE}\s+{_AT_TOP})\b(?!\s+of\b)",
+    re.IGNORECASE,
+)
+"""'a pyramid, 4x4 base, go up until it's a single cube on top', 'a pyramid with a single cube
+on top': the pyramid's own top level, not a cube added on it."""
+
+
+def _apex(text: str, st: ReadState) -> str:
+    """A pyramid's top said as one cube: the pyramid ends in one, nothing is added on it."""
+    for m in reversed(list(_APEX.finditer(text))):
+        sentence = re.split(r"[.;!?]\s", text[: m.start()])[-1]
+        said = [w for w in re.findall(r"[a-z]+", sentence.lower()) if w in lx.SHAPE_WORDS]
+        if said[-1:] != ["pyramid"] or re.search(r"\b(?:on|of)\s*$", sentence, re.I):
+            continue
+        after = re.split(r"\bpyramid\b", sentence, flags=re.I)[-1]
+        if re.search(r"\b(?:put|place|add|stack|set|lay|build|then)\b", after, re.I):
+            continue  # "a pyramid, then put one cube on top of it": a cube added
+        st.notes.append(f"read '{m.group(0).strip(' ,')}' as the pyramid's own top: it ends "
+                        "in one cube")  # fmt: skip
+        text = text[: m.start()] + text[m.end() :]
+    return text
+
+
 def _square_pyramid(text: str, st: ReadState) -> str:
     """A pyramid said to stand on a square base (or not to be flat) is a square pyramid (it
     was built flat, one cube deep)."""
@@ -3621,7 +3657,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _square_pyramid(text, st)
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
-    text = _level_labels(_level_list(text, st), st)
+    text = _apex(_level_labels(_level_list(text, st), st), st)
     text = _attributive(_sized_base(_beam_size(_single_layer(text), st), st), st)
     text = _tetris(text, st)
 

@@ -285,6 +285,9 @@ def fill_slots(
     return structures
 
 
+_PLACE_SLOTS = {"region", "at_x", "at_y", "axis", "count"}
+
+
 def _sizes_of_named(
     p: Phrase,
     spec: SpecDraft,
@@ -301,7 +304,10 @@ def _sizes_of_named(
     prev = built[-1]
     own = structures[prev.first : prev.first + prev.count]
     guessed = spec.structures[0]
-    if len(own) != 1 or own[0].model_dump(exclude_defaults=True).keys() - {"shape", "part"}:
+    said = own[0].model_dump(exclude_defaults=True).keys() - {"shape", "part"} if own else set()
+    if said and not _NUMBER.search(prev.text) and not said & _PLACE_SLOTS:
+        said = set()  # "a small wall. Six cubes long …": the vague size gives way to the figures
+    if len(own) != 1 or said:
         return False  # the structure named before has sizes, a place or a way of its own
     if guessed.region or guessed.at_x is not None or guessed.at_y is not None:
         return False  # "a tower on the left. 3 cubes on the right": somewhere else

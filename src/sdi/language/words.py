@@ -75,7 +75,8 @@ HARMLESS = _words(
     mockup meanwhile anyway anyways besides btw otherwise replicate reproduce stage staged
     deliver fetch prepare approx approximate exact dimension dimensions better best
     proper plonk plonked plonking pop popped somewhere finished result resulting end product
-    completely totally fully entirely
+    completely totally fully entirely rebuild rebuilding rebuilt redo remake replace replacing
+    replacement fallen collapsed segment shim shims
     """
 )
 

@@ -1,0 +1,94 @@
+"""What a command says about the conversation rather than about what to build: a sentence that
+recounts what happened before ("Last time the enclosure was too small. Could you build it 6 by
+6?", "Left off before the bridge. Please build a bridge …"), and a structure taken back by its
+name ("Castle. Wait, no castle.", "disregard my earlier message asking for a pyramid"). Both are
+read out of the words before anything else counts structures, each with a note."""
+
+from __future__ import annotations
+
+import re
+
+from sdi.language.nouns import families_said, shape_alternation
+from sdi.spec.numbers import TENS, UNITS
+
+_SENTENCE = re.compile(r"[^.!?]+(?:[.!?]+\s*|$)")
+_PAST = re.compile(
+    r"\b(?:last\s+time|yesterday|earlier|previously|before|left\s+off|was|were|had|fell|"
+    r"collapsed|broke|came\s+out|ended\s+up|did\s+not|didn't)\b",
+    re.IGNORECASE,
+)
+_ASKS = re.compile(
+    r"\?|\b(?:please|pls|plz|could|can|would|will|shall|build|make|put|place|stack|lay|set|"
+    r"add|need|want|like|let's|lets|do|give|create|construct|arrange|erect|form|rebuild|redo|"
+    r"remake|try|go|i'd|we'd)\b",
+    re.IGNORECASE,
+)
+_NUMBER = re.compile(r"\d|\b(?:" + "|".join(sorted(set(UNITS) | set(TENS))) + r")\b", re.I)
+_BUILD_IT = re.compile(
+    r"\b((?:build|make|do|redo|rebuild|remake|put\s+up|set\s+up|try)\s+)(it)\b", re.IGNORECASE
+)
+_FAMILY = re.compile(r"\b(" + shape_alternation(min_len=3) + r")\b", re.IGNORECASE)
+
+
+def recounted(text: str, notes: list[str]) -> str:
+    """`text` without the sentences that only recount what happened before, when a later
+    sentence asks for the structure they name: "it" there is that structure."""
+    sentences = _SENTENCE.findall(text)
+    if len(sentences) < 2:
+        return text
+    kept: list[str] = []
+    for k, said in enumerate(sentences):
+        named = families_said(said)
+        if not named or not _PAST.search(said) or _ASKS.search(said) or _NUMBER.search(said):
+            kept.append(said)
+            continue
+        later = next((j for j in range(k + 1, len(sentences)) if _ASKS.search(sentences[j])), None)
+        if later is None:
+            kept.append(said)
+            continue
+        asked = sentences[later]
+        noun = _FAMILY.search(said)
+        if set(families_said(asked)) & set(named):
+            pass
+        elif not families_said(asked) and noun is not None and _BUILD_IT.search(asked):
+            sentences[later] = _BUILD_IT.sub(rf"\g<1>the {noun.group(1)}", asked, count=1)
+        else:
+            kept.append(said)
+            continue
+        notes.append(f"read '{said.strip()}' as what happened before, not as something to build")
+    return "".join(kept) if len(kept) < len(sentences) else text
+
+
+_SHAPES = shape_alternation(min_len=3)
+_TAKE_BACK = re.compile(
+    r"(?:(?:\b(?:wait|actually|sorry|oh|hmm|no)\s*[,.!]?\s*)*)"
+    r"(?:(?<![a-z]\s)(?<![a-z])\bno\s+(?=(?:" + _SHAPES + r")\b)|"
+    r"\b(?:forget(?:\s+about)?|scrap|cancel|ditch|disregard|ignore|skip)\s+)"
+    r"(?P<words>(?:(?!and\b|then\b|but\b)[a-z']+\s+){0,6}?)"
+    r"(?P<families>(?:" + _SHAPES + r")(?:\s*(?:,|or|nor|and)\s+(?:an?\s+|any\s+)?(?:"
+    + _SHAPES + r"))*)\b(?!\s*\d)"
+    r"(?:\s+(?:idea|request|message|one|thing|part|bit|for\s+now))?",
+    re.IGNORECASE,
+)
+
+
+def taken_back(text: str, notes: list[str]) -> str:
+    """`text` with a structure taken back by name ("no castle", "forget the pyramid") read as
+    taking back the one named before it, or, when none was, as not to be built."""
+    for m in reversed(list(_TAKE_BACK.finditer(text))):
+        named = families_said(m.group("families"))
+        words = m.group("words")
+        if not named or _NUMBER.search(words) or families_said(words):
+            continue
+        before = text[: m.start()]
+        said_before = families_said(before)
+        earlier = [w for w in re.findall(r"[a-z]+", m.group("families").lower())
+                   if families_said(w) and families_said(w)[0] in said_before]  # fmt: skip
+        if earlier:
+            removed = "".join(f". then remove the {w}" for w in earlier)
+            after = text[m.end() :].lstrip(" .,;:—–-")
+            text = before.rstrip(" .,;:—–-") + removed + ". " + after
+            continue
+        notes.append(f"left out what is not wanted: '{m.group(0).strip()}'")
+        text = before.rstrip(" ,;:—–-") + " " + text[m.end() :].lstrip(" ,;:—–-")
+    return text
