@@ -8222,3 +8222,101 @@ def test_the_small_one_said_without_one():
     (small,) = [k for k, v in cols.items() if v == 2]
     (tall,) = [k for k, v in cols.items() if v == 4]
     assert small[1] < tall[1]  # right = smaller y
+
+
+@pytest.mark.parametrize(
+    "command, shapes, heights",
+    [
+        # "WO-4474" was a tower of 4474 parts: failure
+        ("WO-4474 ITEM 1 TOWER 3 CUBES; ITEM 2 TOWER 3 CUBES; ITEM 3 BRIDGE JOINING ITEMS 1 AND "
+         "2.", ["bridge"], [1, 3, 3]),
+        # "REVISED TO 6 CUBES PER ENG": the 8 kept, the 6 a row beside it
+        ("WO-4478 REV B: TOWER 8 CUBES, REVISED TO 6 CUBES PER ENG.", ["tower"], [6]),
+        # "QTY 1" of an arch was its legs' height
+        ("WO-4482: ARCH, QTY 1, LOC X=0.45 Y=0.30.", ["arch"], None),
+        # "BETWEEN ITEMS 1 AND 2": between nothing (partial)
+        ("WO-4485 ITEM 1: TOWER 4. ITEM 2: TOWER 4. ITEM 3: TOWER 2 BETWEEN ITEMS 1 AND 2.",
+         ["tower", "tower", "tower"], [2, 4, 4]),
+    ],
+)
+def test_a_work_order_numbers_its_items_and_says_its_quantities(command, shapes, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    if heights is not None:
+        assert sorted(_columns(r).values()) == heights
+    else:
+        assert r.spec.structures[0].height is None  # the arch of its own size
+
+
+def test_an_item_referred_to_by_its_number_is_that_structure():
+    # "ADJACENT TO LEFT END OF ITEM 1": the tower went to the table's left, silently
+    r = plan("WO-4481 ITEM 1 WALL LEN 5 HT 3. ITEM 2 TOWER HT 5 ADJACENT TO LEFT END OF ITEM 1.")
+    assert r.status == "success", r.notes
+    assert [(x.kind, x.subject, x.object, x.side) for x in r.spec.relations] == [
+        ("next_to", 1, 0, "left")
+    ]
+
+
+@pytest.mark.parametrize(
+    "command, shapes",
+    [
+        # a likeness said first, then what to build after a colon (partial: 'city', 'skyline')
+        ("Like a city skyline: three towers side by side, 2, 5 and 3 tall.",
+         ["tower", "tower", "tower"]),
+        ("Like a Jenga tower but solid: a 3x3 block, 4 high.", ["block"]),
+        ("Like a scoreboard: a wall 6 wide and 3 high at the back of the table.", ["wall"]),
+        # a likeness with "the" or a plural after the structure it describes
+        ("A big L like the letter magnet on the fridge, five down and three across.",
+         ["l_shape"]),
+        ("Two towers like twin teddy bears, three blocks each, standing next to each other.",
+         ["tower", "tower"]),
+    ],
+)
+def test_a_likeness_is_a_description(command, shapes):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    assert any("as a description, not a structure" in n for n in r.notes)
+
+
+def test_a_likeness_that_names_the_structure_or_one_named_before_is_read():
+    # "a tower like the first one": a tower one cube high, silently
+    r = plan("a tower of 3 and a tower like the first one")
+    assert [s.height for s in r.spec.structures] == [3, 3]
+    # the likeness names what to build when nothing after the colon does
+    r = plan("Like a T formation: bar of 3, stem of 3.")
+    assert [s.shape for s in r.spec.structures] == ["t_shape"]
+
+
+def _opening(r):
+    """The side of its bounding box a U leaves open: where its arms end."""
+    cells = {(round(o.position[0] / 0.05), round(o.position[1] / 0.05)) for o in r.layout}
+    xs, ys = sorted({x for x, _ in cells}), sorted({y for _, y in cells})
+    full = {"front": all((xs[0], y) in cells for y in ys),
+            "back": all((xs[-1], y) in cells for y in ys),
+            "right": all((x, ys[0]) in cells for x in xs),
+            "left": all((x, ys[-1]) in cells for x in xs)}  # fmt: skip
+    (open_side,) = [side for side, closed in full.items() if not closed]  # base and arms: full
+    return open_side
+
+
+@pytest.mark.parametrize(
+    "command, side, across",
+    [
+        # every U opened to the front; "opening at the back" was read as its place
+        ("Pilot a U-shape, 4 wide, 4 deep, as a cell layout, opening at the back.", "back", 4),
+        ("Opening toward the back, 4 wide, 3 deep: a U.", "back", 4),
+        ("a U-shape: base 5, arms 3 including the corner cubes, opening toward the left.",
+         "left", 3),
+        ("a U, 4 wide and 3 deep, opening to the right", "right", 4),
+        ("Like the letter U with its open end facing the front of the table, 3 wide and 3 deep.",
+         "front", 3),
+    ],
+)
+def test_a_u_opens_the_way_it_is_said(command, side, across):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert _opening(r) == side
+    ys = {round(o.position[1], 3) for o in r.layout}
+    assert len(ys) == across  # "wide": left to right, whichever way it opens

@@ -20,7 +20,7 @@ _MARKER = re.compile(
     r"correction(?:\s+to\s+(?:the\s+)?(?:previous|last|above|first)\s+(?:line|sentence|one|item))?|"
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|change\s+that|never\s*mind|nvm|"
-    r"actually|sorry|oops|wait)\b\s*[,:;—–-]?\s*|"
+    r"actually|sorry|oops|wait|(?:revised|changed|updated|amended|corrected)\s+to)\b\s*[,:;—–-]?\s*|"
     r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment)\s*:\s*|"  # a ticket's later line
     r"\s*[,.;!—–-]*\s*\bor\s*(?:\.{2,}|…)\s*|"  # "Staircase, 5 steps. Or... let's do 3 steps"
     # "… 5 cm apart. Then make the gap 15 cm": the gap said again, changed

@@ -54,7 +54,7 @@ _REFERENCE_NO = re.compile(
     r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
     r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
     r"exercise|lesson|experiment|sample|bench|rig|line\s+no|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
-    r"[:#]?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
+    r"(?:[:#]|-(?=\d))?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
     r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
     re.IGNORECASE,
 )
@@ -1019,6 +1019,25 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:1\s*[x×]\s*(\d+)|(\d+)\s*[x×]\s*1(?=\s+\w+\b[^.;]*\b(?:height|high|tall)\b))"
                 r"\s+(wall|row)\b(?!\s*[x×])", re.I),
      lambda m: f"{m.group(3)} {m.group(1) or m.group(2)} long"),
+    # a work order's "TOWER, QTY 3": three towers; "QTY CUBES 5": five cubes ("QTY 1" of an
+    # arch was its height); "… PER ENG": who asked for it
+    (re.compile(r"\b(" + _FAMILY_SAID + r")\s*,?\s*(?:qty|quantity)\s*[:=]?\s*(\d+)\b",
+                re.I),
+     lambda m: f"{m.group(2)} {m.group(1)}" + ("" if m.group(2) == "1" else "s")),
+    # "arms 3 including the corner cubes": as SDI counts them (read as the table's corner)
+    (re.compile(r"\s*,?\s*\b(?:including|incl\.?|counting)\s+the\s+corners?(?:\s+(?:cubes?|blocks?|"
+                r"ones?|pieces?))?\b", re.I), " "),
+    (re.compile(r"\b(?:qty|quantity)\s*(?:of\s+)?(cubes|blocks|parts)\s*[:=]?\s*(\d+)\b", re.I),
+     r"\2 \1"),
+    (re.compile(r"\s*\bper\s+(?:the\s+)?(?:eng|engineering|engineer|customer|client|spec|drawing|"
+                r"request|qa|manager|management|supervisor|instructions?)\b\.?", re.I), " "),
+    # a work order's "BETWEEN ITEMS 1 AND 2", "JOINING ITEMS 1 AND 2": the two named
+    (re.compile(r"\b(?:items|parts|structures|nos?\.?)\s+\d+\s+(?:and|&)\s+\d+\b", re.I), "them"),
+    # "a tower adjacent to the left end of the wall": at that end, beside it (the tower went
+    # to the table's left)
+    (re.compile(r"\b(?:adjacent\s+to|next\s+to|beside|touching|against|right\s+by)\s+"
+                r"(?:(the|its)\s+)?(?=(?:left|right|front|back)\s+end\b)", re.I),
+     lambda m: f"at {m.group(1) or 'the'} "),
     # "three cubes, one on top of another": a tower of three (three towers of one, two stacked)
     (re.compile(r"(?<!\bof\s)\b(" + _NUM + r")\s+(?:cubes|blocks)\s*,?\s*(?:stacked\s+|piled\s+)?"
                 r"(?:one\s+on\s+top\s+of|one\s+on|one\s+above)\s+(?:another|the\s+other|each\s+other|"
@@ -3067,6 +3086,24 @@ _ORDINAL_WORD = {"1": "first", "2": "second", "3": "third", "4": "fourth", "5": 
 _ORDINAL_FIGURE = re.compile(r"\b(10|[1-9])(?:st|nd|rd|th)\b(?=\s+[a-z])", re.IGNORECASE)
 
 
+_ITEM_LABEL = re.compile(
+    r"\bitem\s*(\d+)\s*[:.)-]?\s*(?:\d+x\s+)?(" + _FAMILY_SAID + r")\b", re.I
+)
+_ITEM_REF = re.compile(
+    r"\b(of|to|on|beside|from|behind|with)\s+item\s*(\d+)\b(?!\s*[:.)-]?\s*[a-z])", re.I
+)
+
+
+def _items_named(text: str) -> str:
+    """A work order's "ITEM 2 TOWER … ADJACENT TO LEFT END OF ITEM 1": the structure labelled
+    item 1 (the label was read as a reference number, and "of item 1" as nothing)."""
+    named = {m.group(1): m.group(2).lower() for m in _ITEM_LABEL.finditer(text)}
+    return _ITEM_REF.sub(
+        lambda m: f"{m.group(1)} the {named[m.group(2)]}" if m.group(2) in named else m.group(0),
+        text,
+    )
+
+
 def normalise(command: str, notes: list[str] | None = None) -> str:
     """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
     notes = notes if notes is not None else []
@@ -3075,6 +3112,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         text = text.replace(a, b)
     text = text.replace("@", " at ")
     text = re.sub(r"\bontop\b", "on top", text, flags=re.IGNORECASE)
+    text = _items_named(text)  # "… END OF ITEM 1": the structure item 1 is
     text = _ORDINAL_FIGURE.sub(lambda m: _ORDINAL_WORD[m.group(1)], text)  # "a 2nd row"
     text = _ALONE.sub(r"a single \1", text)  # "between them a cube alone": a cube, not a gap
 

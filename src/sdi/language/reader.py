@@ -162,6 +162,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     _vague_counts(command, st)
     text = _body_measures(text, st)
     text = _take_long_side(text, st)
+    text = _take_u_opening(text, st)
     text = outline_corners(text, st)  # before the gaps are taken: it says one
     text = _step_rise(text, st)
     text = spacing.take_centres(text, st)
@@ -177,7 +178,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     structures = fill_slots(phrases, rels, st, doc)
     structures = _asked_then_described(phrases, structures, st, doc)
     structures = _apply_shared(structures, st)
-    structures = _long_side(structures, st)
+    structures = _u_opening(_long_side(structures, st), st)
     if not structures and any(p.undone for p in phrases):
         raise SpecError(
             f"'{command.strip()[:60]}' takes back everything it names: nothing is left to "
@@ -942,6 +943,52 @@ def _take_long_side(text: str, st: ReadState) -> str:
     st.long_side = (m.group(1).lower().removesuffix("er"), "y" if across else "x",
                     m.group(0).strip(" ,;"))  # fmt: skip
     return text[: m.start()] + text[m.end() :]
+
+
+_U_NAMED = re.compile(r"\bu\b(?:[\s-]*shaped?)?", re.IGNORECASE)
+_U_OPENS = re.compile(
+    r"\s*,?\s*\b(?:with\s+)?(?:(?:its|the)\s+)?(?:open(?:ing|s)?|mouth)(?:\s+(?:end|side))?\s+"
+    r"(?:is\s+|should\s+be\s+)?(?:fac(?:es|ing)\s+|point(?:s|ing)\s+)?(?:(?:to(?:wards?)?|toward|at|on)\s+)?"
+    r"(?:the\s+)?(front|back|rear|left|right)\b(?:\s+(?:side|edge))?(?:\s+of\s+the\s+table)?",
+    re.IGNORECASE,
+)
+"""'a U, 4 wide, opening toward the back', 'with its open end facing the front': where its
+arms point (it was read as the U's place, its opening always at the front)."""
+
+
+def _take_u_opening(text: str, st: ReadState) -> str:
+    """The way a U is said to open, taken from the words (only when a U is named)."""
+    m = _U_OPENS.search(text)
+    if m is None or not _U_NAMED.search(text):
+        return text
+    side = m.group(1).lower().replace("rear", "back")
+    st.u_opening = (side, m.group(0).strip(" ,"))
+    return text[: m.start()] + text[m.end() :]
+
+
+def _u_opening(structures: list[StructureDraft], st: ReadState) -> list[StructureDraft]:
+    """The U named opens the way it was said: its base across that way, arms pointing there
+    (a U is built with its arms towards the front, along y)."""
+    if st.u_opening is None:
+        return structures
+    side, said = st.u_opening
+    k = next((i for i, s in enumerate(structures) if s.shape == "u_shape"), None)
+    if k is None:
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': no U to open that way")
+        return structures
+    axis, yaw = {"front": ("y", 0.0), "back": ("y", 180.0), "left": ("x", 0.0),
+                 "right": ("x", 180.0)}[side]  # fmt: skip
+    s = structures[k]
+    update: dict[str, object] = {"axis": axis, "yaw_deg": yaw}
+    if axis == "x" and re.search(r"\b(?:wide|deep|across)\b", st.command, re.I) and not re.search(
+        r"\b(?:base|arms?|legs?|sides?)\b", st.command, re.I
+    ):  # "4 wide, 3 deep, opening to the left": the base runs front to back, 3 long
+        update |= {"length": s.width, "width": s.length}
+    st.notes.append(f"read '{said}' as the U's arms pointing to the {side}")
+    out = list(structures)
+    out[k] = s.model_copy(update=update)
+    return out
 
 
 def _long_side(structures: list[StructureDraft], st: ReadState) -> list[StructureDraft]:

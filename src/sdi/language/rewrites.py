@@ -13,7 +13,7 @@ import re
 
 from sdi.language.handlers import COUNTED, HANDLERS
 from sdi.language.normalise import SPACES
-from sdi.language.nouns import shape_alternation
+from sdi.language.nouns import families_said, shape_alternation
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
@@ -2901,6 +2901,12 @@ _LIKE_THAT = re.compile(
 )
 """'And another like that, behind it', 'duplicate it 1 cube to the left': another of the
 one named before."""
+_SAME_AS_BEFORE = re.compile(
+    r"\b(?:an?|one)\s+([a-z]+)\s+(?:just\s+|exactly\s+)?(?:like|the\s+same\s+as|identical\s+to)\s+"
+    r"(?:that(?:\s+one)?|it|this(?:\s+one)?|the\s+(?:first|last|previous|other)(?:\s+one|\s+[a-z]+)?)\b",
+    re.IGNORECASE,
+)
+"""'a tower of 3 and a tower like the first one': another of the one named before."""
 _SAME_AGAIN = re.compile(
     r"\b(?:the\s+)?same\s+(?:again|once\s+more|one\s+again)\b(?:\s*,?\s*but\b)?"
     r"|\b(?:one|another(?:\s+one)?)\s+(?:just\s+)?the\s+same\s+as\s+(?:before|the\s+first(?:\s+one)?|that"
@@ -3210,7 +3216,42 @@ def _described_again(text: str, st: ReadState) -> str:
         st.notes.append(f"read '{said}' as a description, not a structure")
         return " "
 
-    return _LIKE_A.sub(likeness, text)
+    text = _LIKE_A.sub(likeness, text)
+
+    def likeness_named(m: re.Match[str]) -> str:
+        if families_said(m.group(0)) or re.search(r"\d", m.group(0)):
+            return m.group(0)  # "like the other tower", "like stairs": a family, read as said
+        return likeness(m)
+
+    text = _LIKE_THE.sub(likeness_named, text)
+
+    def leading(m: re.Match[str]) -> str:
+        rest = re.split(r"[.;!?](?:\s|$)", text[m.end() :])[0]
+        if not any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", rest.lower())):
+            return m.group(0)  # "Like a T formation: bar of 3, stem of 3": the likeness names it
+        st.notes.append(f"read '{m.group(0).strip(' :')}' as a description, not a structure")
+        return " "
+
+    return _LEADING_LIKE.sub(leading, text)
+
+
+_LIKE_THE = re.compile(
+    r"(?:,\s*|\s+)\b(?:just\s+|sort\s+of\s+|a\s+bit\s+)?like\s+(?:(?:the|those|these)\s+"
+    r"(?!(?:first|second|third|other|last|previous|same|one|ones|left|right|front|back|middle|"
+    r"tallest|biggest|smallest|shortest|longest)\b)[^,.;:!?]*|(?:[a-z]+\s+){0,2}[a-z]+s\b"
+    r"(?:\s+lined\s+up)?(?=\s*[,.;:!?]))",
+    re.IGNORECASE,
+)
+"""'a big L like the letter magnet on the fridge', 'two towers like twin teddy bears': a
+likeness with no size in it, after the structure it describes."""
+_LEADING_LIKE = re.compile(
+    r"(?:^|(?<=[.;!?]\s))\s*(?:(?:make|build)\s+(?:it|something)\s+(?:that\s+)?|it\s+should\s+)?"
+    r"(?:(?:looks?|looking|shaped|styled)\s+)?(?:just\s+|a\s+bit\s+|sort\s+of\s+|kind\s+of\s+)?"
+    r"like\s+[^:.;!?\d]{2,60}?\s*:\s*",
+    re.IGNORECASE,
+)
+"""'Like a city skyline: three towers …', 'Like a podium: a 3x3 block …': a likeness said
+first, the structure described after the colon."""
 
 
 _N = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
@@ -3673,6 +3714,14 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _LOOSE_CUBES.sub(r" \1 1-cube towers, ", text)
     text = _ONE_OF.sub(_one_of, text)
     text = _LIKE_THAT.sub(" another one ", text)
+
+    def copied(m: re.Match[str]) -> str:  # "a tower like the first one": another of it
+        named = families_said(m.group(1))
+        if not named or named[0] not in families_said(m.string[: m.start()]):
+            return m.group(0)
+        return f" another {m.group(1)} "
+
+    text = _SAME_AS_BEFORE.sub(copied, text)
     text = _SAME_AGAIN.sub(
         lambda m: " another one but " if m.group(0).rstrip().endswith("but") else " another one ",
         text,

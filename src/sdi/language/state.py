@@ -58,6 +58,7 @@ class ReadState:
     compared: list[tuple[str, int]] = field(default_factory=list)
     # "turn it so the long side runs left to right": (long|short, the axis it runs along, words)
     long_side: tuple[str, str, str] | None = None
+    u_opening: tuple[str, str] | None = None  # "a U opening to the back": (side, the words)
     span_m: float | None = None  # "pillars 10 cm apart": between a bridge's own supports
     line: str | None = None  # "three towers in a line front to back": the axis they stand along
     # "four towers in a square", "in two rows of three": (rows, columns), or 0 for each when
