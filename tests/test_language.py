@@ -8320,3 +8320,64 @@ def test_a_u_opens_the_way_it_is_said(command, side, across):
     assert _opening(r) == side
     ys = {round(o.position[1], 3) for o in r.layout}
     assert len(ys) == across  # "wide": left to right, whichever way it opens
+
+
+@pytest.mark.parametrize(
+    "command, shapes, heights",
+    [
+        # "two identical 2x2x2 blocks": one block, 2x2x1, silently
+        ("Batch size 2: two identical 2x2x2 blocks, one behind the other.", ["block", "block"],
+         [2] * 8),
+        # "two 2x2x2 blocks, one behind the other": the last "2 blocks" were the two (2 pads)
+        ("two 2x2x2 blocks, one behind the other", ["block", "block"], [2] * 8),
+        # "a single cube wide": a one-cube tower beside the staircase
+        ("Looks like a ramp built out of stairs, 6 steps, a single cube wide.", ["staircase"],
+         [1, 2, 3, 4, 5, 6]),
+        # "a piece across the top" was dropped: two pillars, silently
+        ("two pillars two high with a piece across the top", ["bridge"], [1, 2, 2]),
+        # "the second row … on top of the first" after two rows: a third row
+        ("- row of 4\n- row of 4\n- second row directly on top of the first", ["row", "row"],
+         [2] * 4),
+        # a likeness with a comma before the structure: a bridge (the doorway) and an arch
+        ("Make it look like a doorway, an arch.", ["arch"], None),
+    ],
+)
+def test_what_a_list_or_a_likeness_says_of_its_parts(command, shapes, heights):
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    if heights is not None:
+        assert sorted(_columns(r).values()) == heights
+
+
+def test_not_touching_an_edge_keeps_away_from_it_and_instead_of_takes_back():
+    # "NOT touching the front edge": the cubes a gap apart, the grid at the front edge
+    r = plan("- grid 2 x 5\n- one layer\n- NOT touching the front edge")
+    assert r.status == "success", r.notes
+    assert r.spec.structures[0].region == "back" and len(r.layout.objects) == 10
+    # "base of 5 this time instead of 4": 'instead' was left over (partial)
+    r = plan("Kaizen on yesterday's pyramid: base of 5 this time instead of 4.")
+    assert r.status == "success" and r.spec.structures[0].length == 5
+    assert any("'instead of 4' as the size it replaces" in n for n in r.notes)
+    # "a wall instead of a tower": both were built
+    r = plan("a wall instead of a tower")
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["wall"]
+
+
+def test_a_size_in_cubes_by_a_size_in_a_unit():
+    # "3 cubes by 20 cm": the unit said last was taken for both (a 1 by 4 grid), silently
+    r = plan("Grid 3 cubes by 20 cm, one layer.")
+    assert r.status == "success", r.notes
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (3, 4)
+    # a unit said last still counts for a number said bare before it
+    r = plan("a slab 20 by 30 cm")
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (4, 6)
+
+
+def test_two_sized_structures_one_each_place():
+    # "two 3 by 3 slabs: one on the left, one on the right": three slabs, silently
+    r = plan("two 3 by 3 slabs: one on the left, one on the right")
+    assert r.status == "success", r.notes
+    assert [(s.shape, s.region, s.length, s.width) for s in r.spec.structures] == [
+        ("grid", "left", 3, 3), ("grid", "right", 3, 3)
+    ]

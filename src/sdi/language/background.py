@@ -63,7 +63,8 @@ _SHAPES = shape_alternation(min_len=3)
 _TAKE_BACK = re.compile(
     r"(?:(?:\b(?:wait|actually|sorry|oh|hmm|no)\s*[,.!]?\s*)*)"
     r"(?:(?<![a-z]\s)(?<![a-z])\bno\s+(?=(?:" + _SHAPES + r")\b)|"
-    r"\b(?:forget(?:\s+about)?|scrap|cancel|ditch|disregard|ignore|skip)\s+)"
+    r"\b(?:forget(?:\s+about)?|scrap|cancel|ditch|disregard|ignore|skip|instead\s+of|rather\s+than|"
+    r"in\s+place\s+of)\s+)"
     r"(?P<words>(?:(?!and\b|then\b|but\b)[a-z']+\s+){0,6}?)"
     r"(?P<families>(?:" + _SHAPES + r")(?:\s*(?:,|or|nor|and)\s+(?:an?\s+|any\s+)?(?:"
     + _SHAPES + r"))*)\b(?!\s*\d)"

@@ -315,7 +315,25 @@ def correct(text: str, notes: list[str], material: list[str] | None = None) -> s
     return _restated(_corrected(text, notes, material), notes)
 
 
+_INSTEAD = re.compile(
+    rf"\s*,?\s*\b(?:instead\s+of|rather\s+than|in\s+place\s+of)\s+(?:the\s+)?(?:old\s+)?{_NUMBER}"
+    r"(?:\s+(?:cubes?|levels?|steps?|layers?|high|long|wide))?\b(?!\s*(?:x|by)\b)",
+    re.IGNORECASE,
+)
+"""'a base of 5 this time instead of 4': the size it replaces, not one of its own."""
+
+
+def _instead(m: re.Match[str], notes: list[str]) -> str:
+    clause = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+    if re.search(r"\b(?:make|change|set|turn|widen|narrow|extend|shorten|raise|lower)\b", clause,
+                 re.I):
+        return m.group(0)  # "then make it 3 wide instead of 2": which side changes, for modify
+    notes.append(f"read '{m.group(0).strip(' ,')}' as the size it replaces")
+    return " "
+
+
 def _corrected(text: str, notes: list[str], material: list[str] | None = None) -> str:
+    text = _INSTEAD.sub(lambda m: _instead(m, notes), text)
     if _MARKER.search(text):
         text = _WAS_WRONG.sub(" ", text)
     text = _CONFIRMED.sub(lambda m: _confirmed(m, notes), text)

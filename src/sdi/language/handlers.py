@@ -1006,9 +1006,18 @@ _ONE_THE_OTHER = re.compile(
 )
 
 
+_COUNTED_SIZE = re.compile(
+    r"\b(?:two|three|four|five|six|\d+)\s+(?:(?:identical|matching|equal|similar)\s+)?"
+    r"(?:\d+\s*(?:x|by|×)\s*)+$",
+    re.IGNORECASE,
+)
+
+
 def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
     """One item per copy ("two towers of 3, one at the far left, one at the far right"), each
     with the shared description; left as it is when the items do not match the count."""
+    if _COUNTED_SIZE.search(m.string[: m.start()]):
+        return m.group(0)  # "two 2 x 2 x 2 blocks, one behind the other": the last size, no count
     said, groups = _said(m)
     two = groups[0].lower() == "both" or groups[0].lower().startswith("a ")  # a couple of
     n_ = "2" if two else words_to_numbers([groups[0]])[0]

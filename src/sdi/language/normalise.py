@@ -891,7 +891,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"eight\b|nine\b|ten\b)", re.I),
      lambda m: m.group(0) if re.search(r"\b(?:wall|walls|bay|fence)\W+(?:\w+\W+){0,2}$",
                                        m.string[: m.start()], re.I)
-     else f"{m.group(1)} {m.group(2)} "),  # a wall's "A by B" is its length by height
+     or re.match(r"\d+(?:\.\d+)?\s*(?:mm|cm|m|millimet|centimet|met|inch)", m.string[m.end() :],
+                 re.I)
+     else f"{m.group(1)} {m.group(2)} "),  # a wall's "A by B" is its length by height; "3 cubes
+    # by 20 cm" says which is in parts
     # "place one cube at x=0.5, … and another at …": a cube, a structure of its own (it was
     # read as the part count of the one after it, and its place dropped)
     (re.compile(r"(^|\b(?:place|put|set|stand|add|and|then|with)\s+)one\s+"
@@ -1038,6 +1041,19 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:adjacent\s+to|next\s+to|beside|touching|against|right\s+by)\s+"
                 r"(?:(the|its)\s+)?(?=(?:left|right|front|back)\s+end\b)", re.I),
      lambda m: f"at {m.group(1) or 'the'} "),
+    # "two pillars with a piece across the top", "a crossbar over the top": a beam on them (the
+    # piece was dropped, silently)
+    (re.compile(r"\b(?:an?|one)\s+(?:(?:long|flat|single)\s+)?(?:piece|cross[\s-]?bar|"
+                r"cross[\s-]?piece|cross[\s-]?beam|bar|rod|stick|board|slat)\s+(?:(?:laid|placed|set|"
+                r"going|running|lying|resting)\s+)?(?:across|over)\s+(?=the\s+tops?\b|them\b|both\b|"
+                r"the\s+two\b)", re.I), "a beam across "),
+    # "a bridge over a river", "each step one cube higher than the last": a likeness, what a
+    # staircase is
+    (re.compile(r"\s+over\s+(?:a|the)\s+(?:river|stream|road|canal|ditch|valley|moat|creek|brook)\b"
+                r"(?!\s+(?:that\s+is\s+|which\s+is\s+|of\s+|about\s+)?(?:\d|one|two|three|four|five|six))",
+                re.I), " "),
+    (re.compile(r"\s*,?\s*\b(?:with\s+)?each\s+step\s+(?:one|1)\s+(?:cube|block)\s+(?:higher|taller)\s+"
+                r"than\s+the\s+(?:last|previous|one\s+before)(?:\s+one)?\b", re.I), " "),
     # "three cubes, one on top of another": a tower of three (three towers of one, two stacked)
     (re.compile(r"(?<!\bof\s)\b(" + _NUM + r")\s+(?:cubes|blocks)\s*,?\s*(?:stacked\s+|piled\s+)?"
                 r"(?:one\s+on\s+top\s+of|one\s+on|one\s+above)\s+(?:another|the\s+other|each\s+other|"
@@ -1381,8 +1397,26 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(\d+|two|three|four|five|six|seven|eight|nine|ten)\s+singles\b", re.I),
      r"\1 single cubes"),
     # "two 2 by 2 blocks": structures of that footprint (a "block" counted is a part)
-    (re.compile(r"\b(\d+|two|three|four|five|six)\s+(\d+\s*(?:x|by)\s*\d+(?:\s*(?:x|by)\s*\d+)?)\s+blocks\b",
-                re.I), r"\1 \2 pads"),
+    (re.compile(r"\b(\d+|two|three|four|five|six)\s+((?:identical|matching|equal|similar)\s+)?"
+                r"(\d+\s*(?:x|by)\s*\d+(?:\s*(?:x|by)\s*\d+)?)\s+blocks\b", re.I), r"\1 \2\3 pads"),
+    # "a row of 4, a row of 4, the second row on top of the first": the two named, one put on
+    # the other (a third row was built on the first)
+    (re.compile(r"(?:[,;]\s*|\band\s+|^\s*-\s*|\n\s*-?\s*)(?:the\s+)?second\s+(" + _FAMILY_SAID
+                + r")\s+(?:goes\s+|is\s+|sits\s+)?(?:(?:placed|set|stacked|laid|put)\s+)?"
+                r"(?:directly\s+|right\s+|straight\s+)?(on\s+top\s+of|on|atop|above|behind|"
+                r"in\s+front\s+of|next\s+to)"
+                r"\s+the\s+first\b", re.I | re.M),
+     lambda m: (f". then put the second {m.group(1)} {m.group(2)} the first"
+                if len(re.findall(rf"\b{m.group(1)}s?\b", m.string[: m.start()], re.I)) >= 2
+                else m.group(0))),
+    # "NOT touching the front edge": away from it (read as the cubes not touching each other,
+    # and the grid put at the front)
+    (re.compile(r"\b(?:not|never|(?:do|does|must|should)\s*n[o']?t)\s+(?:be\s+)?(?:touching|touch|against|at|on)"
+                r"\s+the\s+(front|back|left|right)\s+edge(?:\s+of\s+the\s+table)?\b", re.I),
+     r"not at the \1"),
+    # "6 steps, a single cube wide": one cube wide (a one-cube tower was built beside it)
+    (re.compile(r"\b(?:a\s+)?single\s+(cube|block)\s+(wide|deep|thick|high|tall|long)\b", re.I),
+     r"1 \1 \2"),
     # "2 stacks of 4, single cubes,": what they are made of, as every stack is
     (re.compile(r"(\b(?:stacks?|towers?|columns?|rows?|lines?)\s+of\s+(?:\d+|one|two|three|four|five|six|"
                 r"seven|eight|nine|ten))\s*,\s*(?:all\s+)?single\s+cubes\b", re.I), r"\1"),

@@ -2914,7 +2914,8 @@ _SAME_AGAIN = re.compile(
     re.I,
 )
 _DISTRIBUTE = re.compile(
-    r"\b(two|three|four|five|[2-5]|both|a\s+(?:couple|pair)\s+of)\s+((?:[\w-]+\s+)?)("
+    r"\b(two|three|four|five|[2-5]|both|a\s+(?:couple|pair)\s+of)\s+((?:[\w-]+\s+)?"
+    r"(?:\d+\s*(?:x|by|×)\s*\d+(?:\s*(?:x|by|×)\s*\d+)?\s+)?)("
     + _SHAPE_ALT + r")s\b"
     r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
     r"(?:high|tall|long|wide)(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
@@ -3247,7 +3248,7 @@ likeness with no size in it, after the structure it describes."""
 _LEADING_LIKE = re.compile(
     r"(?:^|(?<=[.;!?]\s))\s*(?:(?:make|build)\s+(?:it|something)\s+(?:that\s+)?|it\s+should\s+)?"
     r"(?:(?:looks?|looking|shaped|styled)\s+)?(?:just\s+|a\s+bit\s+|sort\s+of\s+|kind\s+of\s+)?"
-    r"like\s+[^:.;!?\d]{2,60}?\s*:\s*",
+    r"like\s+[^:,.;!?\d]{2,60}?\s*(?::|,(?=\s*(?:an?|one)\s+[a-z]+\s*(?:[.;!?]|$)))\s*",
     re.IGNORECASE,
 )
 """'Like a city skyline: three towers …', 'Like a podium: a 3x3 block …': a likeness said

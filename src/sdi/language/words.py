@@ -76,7 +76,7 @@ HARMLESS = _words(
     deliver fetch prepare approx approximate exact dimension dimensions better best
     proper plonk plonked plonking pop popped somewhere finished result resulting end product
     completely totally fully entirely rebuild rebuilding rebuilt redo remake replace replacing
-    replacement fallen collapsed segment shim shims
+    replacement fallen collapsed segment shim shims case plumb rests sits hold holds run
     """
 )
 

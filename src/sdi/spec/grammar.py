@@ -439,22 +439,27 @@ class _Parser:
         values: list[float] = []
         units: list[float | None] = []
         j = k
+        counted: list[bool] = []  # "3 cubes by 20 cm": said in parts, whatever comes last
         while self.is_num(j) and not self.toks[j].used:
             values.append(self.toks[j].value)
             unit = lx.UNITS_M.get(self.word(j + 1))
             units.append(unit)
-            j += 2 if unit is not None else 1
+            parts_said = unit is None and self.word(j + 1) in lx.PART_WORDS and self.word(
+                j + 2
+            ) in ("x", "by")
+            counted.append(parts_said)
+            j += 2 if unit is not None or parts_said else 1
             if len(values) < 3 and self.word(j) in ("x", "by", "times", "*") and self.is_num(j + 1):
                 j += 1
                 continue
             break
-        if len(values) < 2:
-            return None
+        if len(values) < 2 or (any(counted) and all(u is None for u in units)):
+            return None  # "a bay 5 cubes by 5": read by the family (a wall's length by height)
         trailing = units[-1]
         s = self.cell.cube[0]
         parts = []
-        for v, unit in zip(values, units, strict=True):
-            unit = unit if unit is not None else trailing
+        for v, unit, said in zip(values, units, counted, strict=True):
+            unit = unit if unit is not None or said else trailing
             parts.append(int(v) if unit is None else max(1, round(v * unit / s)))
         if any(u is not None for u in units):
             self.notes.append(f"{' by '.join(f'{v:g}' for v in values)} read as {parts} parts")
