@@ -8381,3 +8381,23 @@ def test_two_sized_structures_one_each_place():
     assert [(s.shape, s.region, s.length, s.width) for s in r.spec.structures] == [
         ("grid", "left", 3, 3), ("grid", "right", 3, 3)
     ]
+
+
+def test_a_margin_from_the_edges_is_reported_and_paths_lead_up_to():
+    # "10 cm away from every table edge": a table was built, and 10 cm the staircase's height
+    r = plan("Put a 3-step staircase somewhere, but stay at least 10 cm away from every table "
+             "edge.")
+    assert r.status == "partial" and [s.shape for s in r.spec.structures] == ["staircase"]
+    assert r.spec.structures[0].height_m is None
+    assert any("not a margin from its edges" in n for n in r.notes)
+    # "running up to a block", "climbed up to a tower": no relation, silently
+    for command in ("a row of four cubes running up to a block two by two by two",
+                    "A staircase of four steps climbed up to a tower of five cubes."):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", r.notes
+        assert [x.kind for x in r.spec.relations] == ["next_to"], command
+    # "climbing up to the back" stays the way it climbs
+    assert plan("a staircase climbing up to the back").spec.structures[0].axis == "x"
+    # "a square closed, four on four": a 4 by 4 slab, silently
+    r = plan("I need a square closed, four on four, height one cube.")
+    assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("enclosure", 4, 4)]

@@ -1448,6 +1448,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: f"{m.group(1)} of {m.group(3)} steps{m.group(2)}"),
     # "a closed square of cubes, 5 by 5": a ring
     (re.compile(r"\b(?:closed|fenced|walled)\s+(square|rectangle)\b", re.I), r"hollow \1"),
+    (re.compile(r"\b(square|rectangle)\s+closed\b", re.I), r"hollow \1"),  # "a square closed"
+    # "a row of four cubes running up to a block", "a staircase climbed up to a tower": leading
+    # up to it (no relation was read)
+    (re.compile(r"\b(?:running|runs|ran|going|goes|went|climbing|climbs|climbed|rising|rises|rose|"
+                r"stepping|steps|led|leads)\s+up\s+to\s+(?=(?:a|an|the)\s+(?!(?:back|front|left|right|"
+                r"top|middle|centre|center|far|rear|height|level|total|max|maximum|size|number|few|"
+                r"couple|dozen)\b))", re.I), "leading up to "),
     # "an L: one leg 4 cubes, the other 3 cubes": 4 by 3
     (re.compile(r"\bone\s+(?:leg|arm|side)\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|six|seven)\s*(?:cubes?\s*)?"
                 r"(?:long\s*)?,?\s*(?:and\s+)?the\s+other(?:\s+one)?\s+(?:is\s+|of\s+)?(\d+|two|three|four|five|"

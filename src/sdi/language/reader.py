@@ -3,7 +3,9 @@
 `read` ties the stages together, each in its own module:
 
 1. **Normalise** (`sdi.language.normalise`): symbols, ``3x3`` → ``3 x 3``, contractions,
-   number forms; numbers SDI cannot use are refused.
+   number forms; numbers SDI cannot use are refused. Before it, what is said about the
+   conversation rather than the structure (`sdi.language.background`): a sentence recounting
+   what happened before, a structure taken back by name ("no castle", "forget the pyramid").
 2. **Correct and rewrite**: unknown words close to a known word are corrected
    (`sdi.language.typos`); negations, hedges and idioms with one clear reading are rewritten
    by a table (`sdi.language.rewrites`, computed replacements in `sdi.language.handlers`)
@@ -160,7 +162,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = corrections.correct(text, st.notes, st.material)
     text = _opening(text, st)
     _vague_counts(command, st)
-    text = _body_measures(text, st)
+    text = _margins(_body_measures(text, st), st)
     text = _take_long_side(text, st)
     text = _take_u_opening(text, st)
     text = outline_corners(text, st)  # before the gaps are taken: it says one
@@ -1023,6 +1025,28 @@ _BODY_MEASURE = re.compile(
     re.IGNORECASE,
 )
 """'a hand's width high', 'knee-high': a size measured by the body, not one SDI can take."""
+
+
+_MARGIN = re.compile(
+    r"\s*,?\s*\b(?:but\s+|and\s+)?(?P<said>(?:(?:stay|keep(?:\s+it)?|staying|keeping\s+it|"
+    r"remaining|be)\s+)?(?:at\s+least\s+)?\d+(?:\.\d+)?\s*(?:mm|cm|m|millimet\w*|centimet\w*)\s+"
+    r"(?:away\s+)?(?:from|off|clear\s+of)\s+(?:every|each|all|any|the)\s+(?:of\s+the\s+)?"
+    r"(?:table\s+|workspace\s+)?edges?(?:\s+of\s+the\s+(?:table|workspace))?)\b",
+    re.IGNORECASE,
+)
+"""'stay at least 10 cm away from every table edge': a margin SDI does not keep (the table was
+built as a canopy, and the 10 cm read as the staircase's height)."""
+
+
+def _margins(text: str, st: ReadState) -> str:
+    """A margin from the table's edges is reported and left out: SDI places structures inside
+    the workspace, not a given distance from its edges."""
+    for m in _MARGIN.finditer(text):
+        said = m.group("said")
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': SDI keeps every part inside the workspace, not "
+                        "a margin from its edges; give a place or coordinates")  # fmt: skip
+    return _MARGIN.sub(" ", text)
 
 
 def _body_measures(text: str, st: ReadState) -> str:
