@@ -8401,3 +8401,10 @@ def test_a_margin_from_the_edges_is_reported_and_paths_lead_up_to():
     # "a square closed, four on four": a 4 by 4 slab, silently
     r = plan("I need a square closed, four on four, height one cube.")
     assert [(s.shape, s.length, s.width) for s in r.spec.structures] == [("enclosure", 4, 4)]
+
+
+def test_two_sizes_said_of_the_same_structure_are_reported():
+    # "(same tower)": two towers were built, silently (the note on 'case' was all there was)
+    r = plan("Case: tower height = 3 cubes AND tower height = 6 cubes (same tower).")
+    assert r.status == "partial"
+    assert any("'(same tower)'" in n and "say the one size meant" in n for n in r.notes)

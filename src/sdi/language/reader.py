@@ -162,7 +162,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = corrections.correct(text, st.notes, st.material)
     text = _opening(text, st)
     _vague_counts(command, st)
-    text = _margins(_body_measures(text, st), st)
+    text = _same_one(_margins(_body_measures(text, st), st), st)
     text = _take_long_side(text, st)
     text = _take_u_opening(text, st)
     text = outline_corners(text, st)  # before the gaps are taken: it says one
@@ -1036,6 +1036,26 @@ _MARGIN = re.compile(
 )
 """'stay at least 10 cm away from every table edge': a margin SDI does not keep (the table was
 built as a canopy, and the 10 cm read as the staircase's height)."""
+
+
+_SAME_ONE = re.compile(
+    r"\(\s*(?:it'?s\s+|it\s+is\s+)?(?:the\s+)?same\s+(?:one|structure|" + shape_alternation()
+    + r")\s*\)",
+    re.IGNORECASE,
+)
+"""'tower height = 3 AND tower height = 6 (same tower)': two sizes said of one structure."""
+
+
+def _same_one(text: str, st: ReadState) -> str:
+    """ "(same tower)" after sizes said twice: a contradiction SDI does not choose for (two
+    towers were built, silently)."""
+    for m in _SAME_ONE.finditer(st.command):  # the brackets are gone from `text`
+        said = m.group(0).strip("() ")
+        st.material.append(m.group(0))
+        st.notes.append(f"ignored '{m.group(0)}': each size said is built as its own structure; "
+                        "say the one size meant")  # fmt: skip
+        text = re.sub(rf"\(?\s*{re.escape(said)}\s*\)?", " ", text, count=1, flags=re.I)
+    return text
 
 
 def _margins(text: str, st: ReadState) -> str:
