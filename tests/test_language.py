@@ -8157,6 +8157,9 @@ def test_a_structure_taken_back_by_name_needs_the_name_of_a_structure():
     # a sentence in the past with no request after it is what to build (a story)
     r = plan("There was a great pyramid, four levels high.")
     assert [s.shape for s in r.spec.structures] == ["pyramid"]
+    # "ignore the wall's colour": the wall's, not the wall
+    r = plan("ignore the wall's colour, build it 4 long")
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("wall", 4)]
 
 
 @pytest.mark.parametrize(

@@ -48,13 +48,11 @@ def recounted(text: str, notes: list[str]) -> str:
             continue
         asked = sentences[later]
         noun = _FAMILY.search(said)
-        if set(families_said(asked)) & set(named):
-            pass
-        elif not families_said(asked) and noun is not None and _BUILD_IT.search(asked):
+        if not set(families_said(asked)) & set(named):
+            if families_said(asked) or noun is None or not _BUILD_IT.search(asked):
+                kept.append(said)  # the later request is for something else
+                continue
             sentences[later] = _BUILD_IT.sub(rf"\g<1>the {noun.group(1)}", asked, count=1)
-        else:
-            kept.append(said)
-            continue
         notes.append(f"read '{said.strip()}' as what happened before, not as something to build")
     return "".join(kept) if len(kept) < len(sentences) else text
 
@@ -67,7 +65,7 @@ _TAKE_BACK = re.compile(
     r"in\s+place\s+of)\s+)"
     r"(?P<words>(?:(?!and\b|then\b|but\b)[a-z']+\s+){0,6}?)"
     r"(?P<families>(?:" + _SHAPES + r")(?:\s*(?:,|or|nor|and)\s+(?:an?\s+|any\s+)?(?:"
-    + _SHAPES + r"))*)\b(?!\s*\d)"
+    + _SHAPES + r"))*)\b(?!\s*\d|['’]s\b)"
     r"(?:\s+(?:idea|request|message|one|thing|part|bit|for\s+now))?",
     re.IGNORECASE,
 )
