@@ -8411,3 +8411,11 @@ def test_two_sizes_said_of_the_same_structure_are_reported():
     r = plan("Case: tower height = 3 cubes AND tower height = 6 cubes (same tower).")
     assert r.status == "partial"
     assert any("'(same tower)'" in n and "say the one size meant" in n for n in r.notes)
+
+
+def test_each_side_of_it_said_without_on():
+    # "a tower of 2 each side of it": the 2 went to the tower's sides (partial), no relation
+    r = plan("arch pls. then a tower of 2 each side of it")
+    assert r.status == "success", r.notes
+    assert [x.kind for x in r.spec.relations] == ["next_to"]
+    assert len(r.layout.objects) == len(plan("an arch").layout.objects) + 4  # 2 on each side

@@ -1409,6 +1409,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: (f". then put the second {m.group(1)} {m.group(2)} the first"
                 if len(re.findall(rf"\b{m.group(1)}s?\b", m.string[: m.start()], re.I)) >= 2
                 else m.group(0))),
+    # "a tower of 2 each side of it": on each side (the sizes went to the tower: partial)
+    (re.compile(r"(?<![a-z])(?=(?:each|either)\s+side\s+of\s+(?:it|them|the\s+[a-z]+)\b)", re.I),
+     lambda m: "on " if re.search(r"\b(?:\d+|" + _FAMILY_SAID + r")s?\s+$", m.string[: m.start()],
+                                  re.I) else ""),
     # "NOT touching the front edge": away from it (read as the cubes not touching each other,
     # and the grid put at the front)
     (re.compile(r"\b(?:not|never|(?:do|does|must|should)\s*n[o']?t)\s+(?:be\s+)?(?:touching|touch|against|at|on)"
