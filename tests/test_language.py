@@ -2308,6 +2308,16 @@ def _columns(r):
     return cols
 
 
+def _built_as_said(command, shapes, heights):
+    """`plan(command)` succeeds with these families, and (unless None) columns this high."""
+    r = plan(command)
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == shapes
+    if heights is not None:
+        assert sorted(_columns(r).values()) == heights
+    return r
+
+
 def test_the_tallest_goes_where_it_is_said_along_the_line():
     r = plan("three towers of 2, 4 and 6 in a straight line front to back, tallest at the back, "
              "5 cm clear spacing")  # fmt: skip
@@ -8095,10 +8105,7 @@ def test_a_table_top_wider_than_its_beams_says_so():
     ],
 )
 def test_spoken_and_revised_commands_are_read_as_meant(command, shapes, heights):
-    r = plan(command)
-    assert r.status == "success", r.notes
-    assert [s.shape for s in r.spec.structures] == shapes
-    assert sorted(_columns(r).values()) == heights
+    _built_as_said(command, shapes, heights)
 
 
 def test_a_per_b_is_a_by_b_and_a_kind_field_qualifies_the_family():
@@ -8143,10 +8150,7 @@ def test_a_staircase_way_up_said_in_the_past_or_corrected():
     ],
 )
 def test_what_is_recounted_or_taken_back_by_name_is_not_built(command, shapes, heights):
-    r = plan(command)
-    assert r.status == "success", r.notes
-    assert [s.shape for s in r.spec.structures] == shapes
-    assert sorted(_columns(r).values()) == heights
+    r = _built_as_said(command, shapes, heights)
     assert any("happened before" in n or "taken back" in n or "not wanted" in n for n in r.notes)
 
 
@@ -8199,10 +8203,7 @@ def test_a_pyramid_said_to_end_in_one_cube_is_that_pyramid(command, levels):
     ],
 )
 def test_counts_and_sizes_said_in_other_words(command, shapes, heights):
-    r = plan(command)
-    assert r.status == "success", r.notes
-    assert [s.shape for s in r.spec.structures] == shapes
-    assert sorted(_columns(r).values()) == heights
+    _built_as_said(command, shapes, heights)
 
 
 def test_a_tower_over_a_block_stands_on_it_and_a_corner_said_with_a_hyphen():
@@ -8243,12 +8244,8 @@ def test_the_small_one_said_without_one():
     ],
 )
 def test_a_work_order_numbers_its_items_and_says_its_quantities(command, shapes, heights):
-    r = plan(command)
-    assert r.status == "success", r.notes
-    assert [s.shape for s in r.spec.structures] == shapes
-    if heights is not None:
-        assert sorted(_columns(r).values()) == heights
-    else:
+    r = _built_as_said(command, shapes, heights)
+    if heights is None:
         assert r.spec.structures[0].height is None  # the arch of its own size
 
 
@@ -8346,11 +8343,7 @@ def test_a_u_opens_the_way_it_is_said(command, side, across):
     ],
 )
 def test_what_a_list_or_a_likeness_says_of_its_parts(command, shapes, heights):
-    r = plan(command)
-    assert r.status == "success", r.notes
-    assert [s.shape for s in r.spec.structures] == shapes
-    if heights is not None:
-        assert sorted(_columns(r).values()) == heights
+    _built_as_said(command, shapes, heights)
 
 
 def test_not_touching_an_edge_keeps_away_from_it_and_instead_of_takes_back():

@@ -27,7 +27,8 @@ _NUMBER = re.compile(r"\d|\b(?:" + "|".join(sorted(set(UNITS) | set(TENS))) + r"
 _BUILD_IT = re.compile(
     r"\b((?:build|make|do|redo|rebuild|remake|put\s+up|set\s+up|try)\s+)(it)\b", re.IGNORECASE
 )
-_FAMILY = re.compile(r"\b(" + shape_alternation(min_len=3) + r")\b", re.IGNORECASE)
+_SHAPES = shape_alternation(min_len=3)
+_FAMILY = re.compile(r"\b(" + _SHAPES + r")\b", re.IGNORECASE)
 
 
 def recounted(text: str, notes: list[str]) -> str:
@@ -57,7 +58,6 @@ def recounted(text: str, notes: list[str]) -> str:
     return "".join(kept) if len(kept) < len(sentences) else text
 
 
-_SHAPES = shape_alternation(min_len=3)
 _TAKE_BACK = re.compile(
     r"(?:(?:\b(?:wait|actually|sorry|oh|hmm|no)\s*[,.!]?\s*)*)"
     r"(?:(?<![a-z]\s)(?<![a-z])\bno\s+(?=(?:" + _SHAPES + r")\b)|"
@@ -80,9 +80,9 @@ def taken_back(text: str, notes: list[str]) -> str:
         if not named or _NUMBER.search(words) or families_said(words):
             continue
         before = text[: m.start()]
-        said_before = families_said(before)
+        said_before = set(families_said(before))
         earlier = [w for w in re.findall(r"[a-z]+", m.group("families").lower())
-                   if families_said(w) and families_said(w)[0] in said_before]  # fmt: skip
+                   if said_before & set(families_said(w))]  # fmt: skip
         if earlier:
             removed = "".join(f". then remove the {w}" for w in earlier)
             after = text[m.end() :].lstrip(" .,;:—–-")

@@ -1027,15 +1027,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s*,?\s*(?:qty|quantity)\s*[:=]?\s*(\d+)\b",
                 re.I),
      lambda m: f"{m.group(2)} {m.group(1)}" + ("" if m.group(2) == "1" else "s")),
-    # "arms 3 including the corner cubes": as SDI counts them (read as the table's corner)
-    (re.compile(r"\s*,?\s*\b(?:including|incl\.?|counting)\s+the\s+corners?(?:\s+(?:cubes?|blocks?|"
-                r"ones?|pieces?))?\b", re.I), " "),
     (re.compile(r"\b(?:qty|quantity)\s*(?:of\s+)?(cubes|blocks|parts)\s*[:=]?\s*(\d+)\b", re.I),
      r"\2 \1"),
     (re.compile(r"\s*\bper\s+(?:the\s+)?(?:eng|engineering|engineer|customer|client|spec|drawing|"
                 r"request|qa|manager|management|supervisor|instructions?)\b\.?", re.I), " "),
     # a work order's "BETWEEN ITEMS 1 AND 2", "JOINING ITEMS 1 AND 2": the two named
     (re.compile(r"\b(?:items|parts|structures|nos?\.?)\s+\d+\s+(?:and|&)\s+\d+\b", re.I), "them"),
+    # "arms 3 including the corner cubes": as SDI counts them (read as the table's corner)
+    (re.compile(r"\s*,?\s*\b(?:including|incl\.?|counting)\s+the\s+corners?(?:\s+(?:cubes?|blocks?|"
+                r"ones?|pieces?))?\b", re.I), " "),
     # "a tower adjacent to the left end of the wall": at that end, beside it (the tower went
     # to the table's left)
     (re.compile(r"\b(?:adjacent\s+to|next\s+to|beside|touching|against|right\s+by)\s+"
