@@ -8412,3 +8412,82 @@ def test_each_side_of_it_said_without_on():
     assert r.status == "success", r.notes
     assert [x.kind for x in r.spec.relations] == ["next_to"]
     assert len(r.layout.objects) == len(plan("an arch").layout.objects) + 4  # 2 on each side
+
+
+def test_a_recounted_sentence_with_no_in_it_is_not_built():
+    # "no" is no count: the recounting sentence was kept and the bridge reported as excluded
+    r = plan("Last time there was no room for the bridge. Please build a bridge.")
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == ["bridge"]
+    assert any("what happened before" in n for n in r.notes)
+
+
+def test_a_correction_that_says_instead_of_the_structure_replaces_it():
+    # "Actually, a wall of 4 instead of the tower": the correction and the take-back both acted
+    r = plan("a tower of 3. Actually, a wall of 4 instead of the tower")
+    assert r.status == "success", r.notes
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("wall", 4)]
+
+
+def _extent_in_parts(r, axis):
+    lo = min(o.position[axis] - o.size[axis] / 2 for o in r.layout.objects)
+    hi = max(o.position[axis] + o.size[axis] / 2 for o in r.layout.objects)
+    return round((hi - lo) / 0.05)
+
+
+def test_a_bridge_said_long_has_its_pillars_that_far_apart():
+    # "a bridge whose deck is 4 cubes long": the 4 was ignored (no such parameter)
+    for command, long in (("a bridge whose deck is 4 cubes long", 4),
+                          ("a bridge 3 cubes long, pillars 4 high", 3),
+                          ("a bridge 7 long with 2 spans", 7)):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        assert max(_extent_in_parts(r, 0), _extent_in_parts(r, 1)) == long, command
+    # a length no beam can span is an error that says so, not a default bridge
+    r = plan("A bridge that is 25 cm long overall.")
+    assert r.status == "failure" and "span" in r.error
+
+
+def test_a_bridges_legs_said_after_a_dash_are_its_height():
+    # "Brdige – legs 3": legs read as an L's arms, a 3-wide bridge
+    for command in ("bridge – legs 3", "Job 5 – Brdige – legs 3 – beam acros top"):
+        r = plan(command)
+        assert r.status == "success", r.notes
+        assert [(s.shape, s.height, s.width) for s in r.spec.structures] == [("bridge", 3, None)]
+
+
+def test_the_middle_one_is_sized_like_the_left_and_right_ones():
+    # "the middle one 3 tall": three default towers and three walls were built
+    r = plan("three towers in a row: the middle one 3 tall, the left one 2 tall, the right one 1")
+    assert r.status == "success", r.notes
+    by_y = sorted(_columns(r).items(), key=lambda kv: kv[0][1])  # right (small y) to left
+    assert [h for _, h in by_y] == [1, 3, 2]
+
+
+def test_one_on_each_side_after_a_count_is_that_many_not_one_more():
+    # "a wall with two towers, one on each side": a third tower, one cube high, silently
+    r = _built_as_said("a wall with two towers of 3, one on each side", ["wall", "tower"], None)
+    assert sorted(_columns(r).values()) == [2, 2, 2, 2, 3, 3]
+    # "four towers around it (, one on each side)": a ring of 40 parts around the block, or
+    # seven towers
+    for command in ("a 2x2 block with four 2-cube towers around it, one on each side",
+                    "a 2x2 block with four 2-cube towers, one on each side",
+                    "four towers of 2 around a 2x2 block"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        cols = _columns(r)
+        assert sorted(cols.values()) == [1, 1, 1, 1, 2, 2, 2, 2], command
+        block = [xy for xy, h in cols.items() if h == 1]
+        cx = sum(x for x, _ in block) / 4
+        cy = sum(y for _, y in block) / 4
+        sides = {("x+" if x > cx else "x-") if abs(x - cx) > abs(y - cy) else
+                 ("y+" if y > cy else "y-") for (x, y), h in cols.items() if h == 2}  # fmt: skip
+        assert sides == {"x+", "x-", "y+", "y-"}, command
+
+
+def test_a_line_too_long_across_the_table_with_its_neighbours_is_turned():
+    # "a row of 5 with a tower on each side": 0.55 m along y, a failure
+    r = plan("a row of 5 with a tower on each side")
+    assert r.status == "success", r.notes
+    assert sorted(_columns(r).values()) == [1, 1, 1, 1, 1, 3, 3]
+    assert _extent_in_parts(r, 0) > _extent_in_parts(r, 1)  # along x

@@ -584,6 +584,19 @@ def _bend(xy: np.ndarray, step: float, shape: str) -> np.ndarray:
     return np.asarray(xy[bends[0]], dtype=float)
 
 
+def _related(spec: Spec, placed: list[_Placed], cell: CellConfig) -> list[_Placed]:
+    """The units `_relate` makes, each checked to fit the workspace."""
+    units = _relate(spec, list(placed), cell)
+    for p in units:
+        try:
+            _check_fits(p, cell)
+        except InfeasibleError as exc:
+            raise InfeasibleError(
+                f"{exc} — counting the structures related to it", parameter=exc.parameter
+            ) from None
+    return units
+
+
 def _relate(spec: Spec, placed: list[_Placed | None], cell: CellConfig) -> list[_Placed]:
     """Fold related structures into units: a subject joins its object's unit.
 
@@ -668,6 +681,7 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
     """
     cell = cell or CellConfig()
     placed: list[_Placed] = []
+    generated: list[tuple[list[Box], Sizes]] = []
     total = 0
     for s in spec.structures:
         sizes = part_sizes(cell, s.part)
@@ -698,15 +712,26 @@ def compose(spec: Spec, cell: CellConfig | None = None) -> Layout:
             except InfeasibleError:
                 raise exc from None
         placed.append(p)
+        generated.append((boxes, sizes))
     if spec.relations:
-        placed = _relate(spec, list(placed), cell)
-        for p in placed:
+        try:
+            placed = _related(spec, placed, cell)
+        except InfeasibleError as exc:
+            # "a row of 5 with a tower on each side": too long across the table with the ones
+            # beside it; turned along x if no structure's axis was said
+            if any(s.axis is not None for s in spec.structures) or exc.parameter not in (
+                "length",
+                "width",
+            ):
+                raise
+            along_x = [
+                _orient(s.model_copy(update={"axis": "x"}), boxes, sizes)
+                for s, (boxes, sizes) in zip(spec.structures, generated, strict=True)
+            ]
             try:
-                _check_fits(p, cell)
-            except InfeasibleError as exc:
-                raise InfeasibleError(
-                    f"{exc} — counting the structures related to it", parameter=exc.parameter
-                ) from None
+                placed = _related(spec, along_x, cell)
+            except InfeasibleError:
+                raise exc from None
     centres = _place_all(placed, cell, spec.gap_m, spec.line, spec.grid)
     parts: list[Part] = []
     counters: dict[str, int] = {}

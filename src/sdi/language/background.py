@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import re
 
+from sdi.language import corrections
 from sdi.language.nouns import families_said, shape_alternation
-from sdi.spec.numbers import TENS, UNITS
+from sdi.spec.numbers import COUNT_WORDS
 
 _SENTENCE = re.compile(r"[^.!?]+(?:[.!?]+\s*|$)")
 _PAST = re.compile(
@@ -23,7 +24,7 @@ _ASKS = re.compile(
     r"remake|try|go|i'd|we'd)\b",
     re.IGNORECASE,
 )
-_NUMBER = re.compile(r"\d|\b(?:" + "|".join(sorted(set(UNITS) | set(TENS))) + r")\b", re.I)
+_NUMBER = re.compile(r"\d|\b(?:" + "|".join(sorted(COUNT_WORDS)) + r")\b", re.I)
 _BUILD_IT = re.compile(
     r"\b((?:build|make|do|redo|rebuild|remake|put\s+up|set\s+up|try)\s+)(it)\b", re.IGNORECASE
 )
@@ -71,6 +72,15 @@ _TAKE_BACK = re.compile(
 )
 
 
+_INSTEAD = re.compile(r"\b(?:instead\s+of|rather\s+than|in\s+place\s+of)\b", re.IGNORECASE)
+
+
+def _corrected_since(before: str, families: list[str]) -> bool:
+    """Whether a correction ("actually", "no wait") comes after the last of `families` named."""
+    last = max(before.lower().rfind(w) for w in families)
+    return corrections.MARKER.search(before, last) is not None
+
+
 def taken_back(text: str, notes: list[str]) -> str:
     """`text` with a structure taken back by name ("no castle", "forget the pyramid") read as
     taking back the one named before it, or, when none was, as not to be built."""
@@ -83,6 +93,10 @@ def taken_back(text: str, notes: list[str]) -> str:
         said_before = set(families_said(before))
         earlier = [w for w in re.findall(r"[a-z]+", m.group("families").lower())
                    if said_before & set(families_said(w))]  # fmt: skip
+        if earlier and _INSTEAD.search(m.group(0)) and _corrected_since(before, earlier):
+            # "a tower of 3. Actually, a wall of 4 instead of the tower": the correction says it
+            text = before.rstrip(" ,;:—–-") + " " + text[m.end() :].lstrip(" ,;:—–-")
+            continue
         if earlier:
             removed = "".join(f". then remove the {w}" for w in earlier)
             after = text[m.end() :].lstrip(" .,;:—–-")

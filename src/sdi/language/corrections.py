@@ -10,9 +10,9 @@ from __future__ import annotations
 import re
 
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import TENS, UNITS, words_to_numbers
+from sdi.spec.numbers import COUNT_WORDS, words_to_numbers
 
-_MARKER = re.compile(
+MARKER = re.compile(
     r"\s*[,.!?;…—–-]+\s*(?:(?:ah|oh|uh|um|erm|er|hmm)\s*,?\s*)?no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
     r"ten)\b))|"  # "a stack of 3 to the left of it - no, to the right", "3 - no 6 -", ". No, 3"
     r"\s*[,.;:!?…—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
@@ -29,7 +29,7 @@ _MARKER = re.compile(
     re.IGNORECASE,
 )
 
-_WORDS = sorted((set(UNITS) | set(TENS)) - {"no", "zero", "single"}, key=len, reverse=True)
+_WORDS = sorted(COUNT_WORDS, key=len, reverse=True)
 _NUMBER = r"(?:\d+(?:\.\d+)?|" + "|".join(_WORDS) + r")"
 _UNIT = r"(?:" + "|".join(sorted(map(re.escape, lx.UNITS_M), key=len, reverse=True)) + r")"
 _REGION = r"(?:" + "|".join(sorted(map(re.escape, lx.REGION_WORDS), key=len, reverse=True)) + r")"
@@ -334,14 +334,14 @@ def _instead(m: re.Match[str], notes: list[str]) -> str:
 
 def _corrected(text: str, notes: list[str], material: list[str] | None = None) -> str:
     text = _INSTEAD.sub(lambda m: _instead(m, notes), text)
-    if _MARKER.search(text):
+    if MARKER.search(text):
         text = _WAS_WRONG.sub(" ", text)
     text = _CONFIRMED.sub(lambda m: _confirmed(m, notes), text)
     text = _names_again(text, notes)
     text = _not_a_but_b(text, notes)
     text = _SPOKEN_NO.sub(r"\1, no, ", text)
     for _ in range(4):  # a command rarely corrects itself more than once or twice
-        m = _MARKER.search(text)
+        m = MARKER.search(text)
         if m is None or m.start() == 0:
             return text
         before, after = text[: m.start()], text[m.end() :]

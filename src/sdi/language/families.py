@@ -115,7 +115,7 @@ def check_family(
         and spec.width == (spec.length or spec.width)
     ):
         spec = spec.model_copy(update={"width": None, "length": spec.length or spec.width})
-    spec = _derive(spec, notes, part_m)
+    spec = _derive(spec, notes, material, part_m)
     spec = _metres_and_parts(spec, notes, material, part_m)
     implied = {
         k: None
@@ -150,9 +150,12 @@ def check_family(
         ) from None
 
 
-def _derive(spec: StructureDraft, notes: list[str], part_m: float) -> StructureDraft:
+def _derive(
+    spec: StructureDraft, notes: list[str], material: list[str], part_m: float
+) -> StructureDraft:
     """Slots the words imply for a family: one side of a square family, a pyramid's base
-    given as its width, a grid's missing side from its count, a table top's size."""
+    given as its width, a grid's missing side from its count, a table top's size, a bridge's
+    length as the gap between its pillars."""
     square = ("grid", "block", "enclosure", "castle")
     one_side = spec.shape in square and spec.length is None and spec.width is None
     if one_side and spec.width_m is not None and spec.length_m is None:
@@ -163,6 +166,19 @@ def _derive(spec: StructureDraft, notes: list[str], part_m: float) -> StructureD
         # "a bridge over a gap of one cube": the gap between pillars is the span
         span = max(1, round(spec.gap_m / part_m))
         spec = spec.model_copy(update={"span": spec.span or span, "gap_m": None})
+    long = spec.length or (round(spec.length_m / part_m) if spec.length_m else None)
+    if spec.shape == "bridge" and long and spec.span is None:
+        # "a bridge 4 cubes long": over its pillars' outer faces, `spans` gaps of one size
+        spans = spec.spans or 1
+        span = max(1, (long - 1) // spans - 1)
+        if spans * (span + 1) + 1 != long:
+            built = spans * (span + 1) + 1
+            material.append(f"{long} long")
+            notes.append(f"a bridge {long} parts long cannot have {spans} equal gap(s) between "
+                         f"one-part pillars: gaps of {span}, {built} long")  # fmt: skip
+        else:
+            notes.append(f"a bridge {long} parts long: pillars {span} apart")
+        spec = spec.model_copy(update={"span": span, "length": None, "length_m": None})
     if spec.shape == "pyramid" and spec.width is not None and spec.length is None:
         spec = spec.model_copy(update={"length": spec.width, "width": None})
     if spec.shape == "grid" and spec.count is not None:

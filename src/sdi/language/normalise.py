@@ -165,7 +165,31 @@ _DIGITS = {w: n for w, n in UNITS.items() if n <= 12 and w not in ("no", "single
 }  # fmt: skip
 _DIGIT_WORD = "zero|one|two|three|four|five|six|seven|eight|nine|wun|fower|fife|niner|tree"
 _EACH_AT = {"at": "at", "in": "in"}  # "one per corner" stands on each; "one at each end" at it
-_PER_ANCHOR = {"corner": 4, "end": 2}
+_PER_ANCHOR = {"corner": 4, "end": 2, "side": 2}
+
+
+def _one_per_anchor(m: re.Match[str]) -> str:
+    """ "4 towers of 2, on each corner": a tower of 2 on each corner, when the count is the
+    number of corners or ends; "two towers, one on each side" of a structure named before it
+    or after it: one on either side, "four towers …, one on each side": one on all four."""
+    count = words_to_numbers([m.group(1).lower()])[0]
+    anchor = (m.group(5) or m.group(6)).lower()
+    if anchor == "side":
+        of = re.match(r"\s+of\s+(?:the\s+)?(\w+)", m.string[m.end() :], re.I)
+        if of and of.group(1).lower() in ("table", "workspace", "cell", "bench", "area"):
+            return m.group(0)
+        sentence = re.split(r"[.;!?]\s", m.string[: m.start()])[-1]
+        if not of and not re.search(rf"\b(?:{_FAMILY_SAID})\b", sentence, re.I):
+            return m.group(0)  # "Two towers at the front, one on each side": the table's
+        if count == "4":  # "four towers around the slab, one on each side": on all four
+            said, *around = re.split(r"\s*,?\s*\b(?:a?round|surrounding)\s+", m.group(3),
+                                     maxsplit=1, flags=re.I)  # fmt: skip
+            whose = " of " + around[0].strip(" ,") if around else ""
+            return f"a {m.group(2)}{said} on all four sides{whose}"
+    if count != str(_PER_ANCHOR[anchor]):
+        return m.group(0)
+    said = m.group(4) if m.group(5) else "on each side"
+    return f"a {m.group(2)}{m.group(3)} {said}"
 
 
 def _product(m: re.Match[str]) -> bool:
@@ -517,7 +541,9 @@ def _sentence_before(text: str, at: int) -> str:
 
 
 _SIDE_ONE = (
-    r"(?:the\s+)?(left|right|front|back)(?:[\s-]?(?:hand|most))?(?:\s+(?:one|tower|stack|column|"
+    r"(?:the\s+)?(left|right|front|back|(?:middle|centre|center)(?=\s+(?:one|tower|stack|column|"
+    r"wall|row)\b))(?:[\s-]?(?:hand|most))?"
+    r"(?:\s+(?:one|tower|stack|column|"
     r"wall|row))?\s+(?:(?:is|should\s+be|must\s+be|will\s+be|needs\s+to\s+be|has\s+to\s+be|"
     r"is\s+to\s+be)\s+)?"
 )
@@ -529,8 +555,11 @@ def _side_one(m: re.Match[str], size: str | None) -> str:
     """ "the left one 5 high": one 5 high on the left (a size with no unit: left as said)."""
     if size is None:
         return m.group(0)
-    where = "on the " if m.group(1).lower() in ("left", "right") else "at the "
-    return f"one {size} {where}{m.group(1).lower()}"
+    side = m.group(1).lower()
+    if side in ("middle", "centre", "center"):
+        return f"one {size} in the middle"
+    where = "on the " if side in ("left", "right") else "at the "
+    return f"one {size} {where}{side}"
 
 
 def _with_unit_before(m: re.Match[str]) -> str | None:
@@ -2128,13 +2157,23 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"on\s+every|in\s+each|on\s+each|on\s+(?:all\s+)?(?:four|4|two|2|both))\s+"
                 r"(corner|end)s?\b", re.I),
      lambda m: f"{_EACH_AT.get(m.group(1).split()[0].lower(), 'on')} each {m.group(2)}"),
-    # "4 towers of 2, on each corner of it": one tower on each of its four corners
+    # "4 towers of 2, on each corner of it": one tower on each of its four corners; "two
+    # towers, one on each side" (the "one" was a third tower, one high): one on either side,
+    # "four towers, one on each side": one on each of its four sides
     (re.compile(r"\b(four|4|two|2)\s+(?!(?:cube|block|brick|part|level|layer|course)s?\b)"
                 r"((?:\d+[- ]cubes?[- ]|\w+[- ])?[a-z]+?)s\b([^.;:]{0,40}?)"
-                r"\s*,?\s*\b((?:on|at|in)\s+each\s+(corner|end))\b", re.I),
-     lambda m: f"a {m.group(2)}{m.group(3)} {m.group(4)}"
-     if str(_PER_ANCHOR[m.group(5).lower()]) == words_to_numbers([m.group(1).lower()])[0]
-     else m.group(0)),
+                r"\s*,?\s*\b((?:on|at|in)\s+each\s+(corner|end)|(?:one|1)\s+(?:on|at|to)\s+"
+                r"(?:each|either)\s+(side))\b", re.I),
+     _one_per_anchor),
+    # "four towers of 2 around it (, one on each side)": one on each of its four sides (a ring
+    # was built around it); "four cubes around the tower": the same
+    (re.compile(r"\b(?:four|4)\s+((?:\d+[- ]cubes?[- ]|\w+[- ])?(?:tower|stack|column|pillar|post|"
+                r"cube|block))s((?:\s+of\s+(?:\d+|one|two|three|four|five|six)(?:\s+cubes?)?)?"
+                r"(?:\s+(?:\d+|one|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall))?)\s+"
+                r"(?:(?:placed|standing|set|arranged|spaced(?:\s+evenly)?)\s+)?(?:a?round|surrounding)\s+"
+                r"(?:(it|them|that|this)\b(?:\s*,?\s*(?:with\s+)?one\s+(?:on|at|to)\s+each\s+side\b)?)?",
+                re.I),
+     lambda m: f"a {m.group(1)}{m.group(2)} on all four sides of {m.group(3) or ''}"),
     # an architect's words: "a colonnade of five columns" is five columns, piers are pillars,
     # "between neighbouring columns" is between them, a "ground-floor slab" a slab
     (re.compile(r"\b(?:an?\s+)?colonnade\s+(?:of|with)\s+(?=\d|two|three|four|five|six|seven|eight)",

@@ -441,7 +441,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\b(one|a)\s+(\w+)(\s+of\s+\d+)?\s+on\s+each\s+side(?:\s*,?\s*(?:the\s+)?left\s+and\s+"
+            # "a tower on each side": the table's; "a wall with a tower on each side": the wall's
+            r"(?<!\bwith\s)\b(one|a)\s+(\w+)(\s+of\s+\d+)?\s+on\s+each\s+side(?:\s*,?\s*(?:the\s+)?left\s+and\s+"
             r"(?:the\s+)?right)?\b(?!\s+of\s+(?:it|them|the|that|this)\b)",
             re.IGNORECASE,
         ),

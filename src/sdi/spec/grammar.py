@@ -991,7 +991,10 @@ class _Parser:
                         role = "arms"
                     elif back in ("steps", "stairs") and h.shape == "staircase":
                         role = "steps"
-                    if role == "arms" and self._pillar_legs(h, back):
+                    if role == "arms" and (
+                        self._pillar_legs(h, back)
+                        or (h.shape in _ON_LEGS and back in ("leg", "legs"))  # "bridge legs 3"
+                    ):
                         role = "height"  # "bridge, legs 3": how high its legs are
                     if h.shape == "t_shape" and back in _T_PARTS:
                         role = _T_PARTS[back]  # "a T, bar 5, stem 3"

@@ -19,6 +19,8 @@ QUANTITY_WORDS = {
     "quad": 4, "quadruple": 4, "handful": 5, "few": 3, "several": 4, "some": 3, "many": 8,
     "lots": 8, "bunch": 6, "multiple": 3, "both": 2,
 }  # fmt: skip
+COUNT_WORDS = (frozenset(UNITS) | frozenset(TENS)) - {"no", "zero", "single"}
+"""Words that say how many ("one" included; "no" and "zero" say none, "single" is a size word)."""
 NUMBER_WORDS = (frozenset(UNITS) | frozenset(TENS)) - {"no", "zero", "single", "one"}
 """Words that say a number and nothing else ("one" is also a pronoun, "no" a negation)."""
 ORDINAL_STEPS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
