@@ -8491,3 +8491,109 @@ def test_a_line_too_long_across_the_table_with_its_neighbours_is_turned():
     assert r.status == "success", r.notes
     assert sorted(_columns(r).values()) == [1, 1, 1, 1, 1, 3, 3]
     assert _extent_in_parts(r, 0) > _extent_in_parts(r, 1)  # along x
+
+
+def test_a_flat_shape_said_to_stand_up_is_a_wall():
+    # "a 2 by 3 rectangle … standing up on its edge", "a vertical 3x2 slab": flat, silently
+    for command, long, high in (
+        ("a 2 by 3 rectangle, one cube thick, standing up on its edge", 3, 2),
+        ("a vertical 3x2 slab", 3, 2),
+        ("a 3 by 2 panel standing upright", 3, 2),
+        ("a 2x4 panel standing on its end", 2, 4),
+    ):
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("wall", long, high)]
+        assert sorted(set(_columns(r).values())) == [high], command
+    # an upright word of another structure stays its own
+    r = plan("a 3x3 slab with a vertical tower on it")
+    assert [s.shape for s in r.spec.structures] == ["grid", "tower"]
+
+
+def test_a_value_said_to_be_better_or_enough_corrects_the_one_before():
+    for command, shape, key, value in (
+        ("a staircase, 5 steps. 3 steps would be better", "staircase", "steps", 3),
+        ("a tower of 6. hmm, 4 is enough", "tower", "height", 4),
+        ("a tower of 5, 3 would be fine", "tower", "height", 3),
+    ):
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        assert [(s.shape, getattr(s, key)) for s in r.spec.structures] == [(shape, value)]
+    # the same value agreed to again is no correction
+    r = plan("a 4 by 4 slab. yes, 4 by 4 is fine")
+    assert [(s.length, s.width) for s in r.spec.structures] == [(4, 4)]
+
+
+def test_a_heading_that_names_the_thing_is_no_structure_of_its_own():
+    # "Goods shed: a 3 by 4 enclosure": the shed was a table beside the enclosure (partial)
+    r = plan("Goods shed: a 3 by 4 enclosure, two cubes high.")
+    assert r.status == "success", r.notes
+    assert [(s.shape, s.length, s.width, s.height) for s in r.spec.structures] == [
+        ("enclosure", 3, 4, 2)
+    ]
+    # "Signal box: …": its name is no material word left unused
+    r = plan("Signal box: a 2x2x2 block and, right next to it on its left, a tower of 3.")
+    assert r.status == "success", r.notes
+    assert [s.shape for s in r.spec.structures] == ["block", "tower"]
+    # a heading that is a request, or says something of the shape, stays read
+    r = plan("A hollow enclosure: outer footprint 6 by 4, walls one cube thick and two courses "
+             "high.")  # fmt: skip
+    assert [s.shape for s in r.spec.structures] == ["enclosure"]
+    r = plan("Build me a bridge: two towers with 3 floors, between them 5 cm, and on top a beam "
+             "of 15 cm.")  # fmt: skip
+    assert r.status == "success" and [s.shape for s in r.spec.structures] == ["bridge"]
+
+
+def test_numbered_steps_are_steps_and_their_labels_no_numbers():
+    # "2." was read as a count, "(2)" as a second size of the first tower, "Step" as a staircase
+    r = _built_as_said("1. a row of 3 cubes 2. a row of 2 cubes on top of it 3. one cube on "
+                       "top of that", ["row", "row", "tower"], None)  # fmt: skip
+    assert _level_sizes(r.layout) in ([(1, 3), (1, 2), (1, 1)], [(3, 1), (2, 1), (1, 1)])
+    r = _built_as_said("(1) tower of 4 at x 0.3 y 0.5 (2) tower of 2 at x 0.6 y 0.1",
+                       ["tower", "tower"], [2, 4])  # fmt: skip
+    assert [(s.at_x, s.at_y) for s in r.spec.structures] == [(0.3, 0.5), (0.6, 0.1)]
+    _built_as_said("1 - enclosure 5x4, one high. 2 - tower of 3 inside it.",
+                   ["enclosure", "tower"], None)  # fmt: skip
+    _built_as_said("Step one, build a 5-step staircase. Step two, put a tower of 2 on the right "
+                   "of it.", ["staircase", "tower"], None)  # fmt: skip
+    r = _built_as_said("Steps -- 1: tower 3 front left; 2: tower 3 front right; 3: tower 3 back "
+                       "left; 4: tower 3 back right.", ["tower"] * 4, [3, 3, 3, 3])  # fmt: skip
+    assert [s.region for s in r.spec.structures] == [
+        "front left", "front right", "back left", "back right"
+    ]
+    r = _built_as_said("Steps: a) 3x3 patch in the centre b) one cube on each of its four "
+                       "corners", ["grid", "tower"], None)  # fmt: skip
+    assert len(r.layout.objects) == 13
+    # a sentence that ends in a number is no label
+    _built_as_said("1. a tower of 2. then a wall of 4", ["tower", "wall"], None)
+
+
+def test_a_crosss_arms_said_apart_from_it_are_its_arms():
+    # "plus sign? Arms of one cube each": one cube; "arms 2 cubes out from the centre cube": a
+    # cross 2 long (partial)
+    for command, long in (("Can it do a plus sign? Arms of one cube each.", 3),
+                          ("cross shape, arms 2 cubes out from the centre cube", 5)):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        assert [(s.shape, s.length) for s in r.spec.structures] == [("cross", long)]
+
+
+def test_a_quarter_metre_and_a_total_said_together():
+    # "a quarter metre long": 6 cubes; "two equal towers that together use 10 cubes": 10 each
+    r = plan("A wall a quarter metre long, 2 high.")
+    assert r.status == "success" and r.spec.structures[0].length_m == 0.25
+    r = _built_as_said("Two equal towers that together use 10 cubes.", ["tower", "tower"], [5, 5])
+    _built_as_said("three towers which together have 12 cubes", ["tower"] * 3, [4, 4, 4])
+
+
+def test_slang_a_spelling_by_ear_and_arms_in_millimetres():
+    # "6 my bad" was no correction; "back rite corner" no place; "fr" a material word
+    r = plan("tower of 4 wait no 6 my bad")
+    assert r.status == "success" and r.spec.structures[0].height == 6
+    r = plan("put a 3 stack in the back rite corner")
+    assert r.status == "success" and r.spec.structures[0].region == "back right"
+    assert plan("block 2 by 2 by 3 fr fr").status == "success"
+    # "arms 100 mm each": a cross of 201 (an error)
+    r = plan("Cross: arms 100 mm each from the centre cube, single course.")
+    assert r.status == "success", r.notes
+    assert [(s.shape, s.length) for s in r.spec.structures] == [("cross", 5)]

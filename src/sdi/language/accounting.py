@@ -144,6 +144,21 @@ def _names_its_use(tok: Token, word: str) -> bool:
     )
 
 
+def _in_heading(tok: Token) -> bool:
+    """`tok` is in a short heading that names what the words after its colon describe ("Signal
+    box: a 2x2x2 block …", "Goods shed: a 3 by 4 enclosure …")."""
+    doc = tok.doc
+    colon = next((t.i for t in doc[:7] if t.text in (":", "—", "–", "--")), None)
+    return (
+        colon is not None
+        and 0 < colon <= 4
+        and tok.i < colon
+        and tok.pos_ in ("NOUN", "PROPN")
+        and not any(t.like_num for t in doc[:colon])
+        and any(t.lower_ in lx.SHAPE_WORDS for t in doc[colon + 1 :])
+    )
+
+
 def account(word: str, tok: Token | None, st: ReadState) -> None:
     if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
         return
@@ -175,6 +190,10 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
         return
     if tok is not None and word in words.NEGATIONS and not _attached(tok):
         st.ignored.append(word)
+        return
+    if tok is not None and not known and word.isalpha() and _in_heading(tok):
+        st.ignored.append(word)
+        st.notes.append(f"read '{word}' as part of the heading that names what follows it")
         return
     if tok is not None and not known and _names_its_use(tok, word):
         # "a fire ring", "three lookout towers", "a camp gateway": a noun naming the

@@ -68,7 +68,8 @@ _FILLER = re.compile(
 
 
 _HEDGE = re.compile(
-    r"\s*,?\s*\b(?:i\s+think|i\s+guess|i\s+reckon|i\s+suppose|i'?d\s+say|probably|maybe|perhaps|"
+    r"\s*,?\s*\b(?:i\s+think|i\s+guess|i\s+reckon|i\s+suppose|i'?d\s+say|probably|maybe|perhaps|my\s+bad|"
+    r"sorry|oops|lol|"
     r"or\s+so|instead|(?:is|will|would|should)\s+(?:be\s+)?(?:enough|plenty|fine|ok|okay|good|"
     r"better|sufficient|do))\s*$",
     re.IGNORECASE,
@@ -332,7 +333,23 @@ def _instead(m: re.Match[str], notes: list[str]) -> str:
     return " "
 
 
+_BETTER = re.compile(
+    rf"(?<=[.;,!?])\s*(?:(?:hmm+|um+|well|maybe|actually|i\s+think)\s*,?\s*)?({_NUMBER}(?:\s+[a-z]+)?)"
+    r"\s+(?:would\s+be|'d\s+be|is|are|will\s+be|might\s+be|sounds|looks)\s+(?:a\s+lot\s+|much\s+)?"
+    r"(?:better|enough|plenty|nicer|best|more\s+like\s+it|right|fine|ok|okay|good|perfect)\b",
+    re.IGNORECASE,
+)
+"""'a staircase, 5 steps. 3 steps would be better': the value said again, as its correction."""
+
+
+def _better(m: re.Match[str]) -> str:
+    if not re.search(rf"\b{_NUMBER}\b", m.string[: m.start()], re.IGNORECASE):
+        return m.group(0)  # "a staircase, 3 steps is enough": the only value said
+    return f" make that {m.group(1)}"
+
+
 def _corrected(text: str, notes: list[str], material: list[str] | None = None) -> str:
+    text = _BETTER.sub(_better, text)
     text = _INSTEAD.sub(lambda m: _instead(m, notes), text)
     if MARKER.search(text):
         text = _WAS_WRONG.sub(" ", text)

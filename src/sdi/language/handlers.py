@@ -1237,6 +1237,12 @@ def _cross_arms(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "a cross with arms 2 cubes long": arms from the middle cube, so each bar is 5."""
     said, groups = _said(m)
     arm = int(words_to_numbers([groups[0]])[0])
+    if groups[1]:  # "arms 100 mm each from the centre cube": in parts
+        metres = arm * {"mm": 0.001, "cm": 0.01, "m": 1.0}[groups[1]]
+        parts = metres / st.cell.cube[0]
+        if abs(parts - round(parts)) > 0.05 or round(parts) < 1:
+            return m.group(0)
+        arm = round(parts)
     st.notes.append(f"read '{said}' as arms of {arm} from the middle cube: bars of {2 * arm + 1}")
     return f"cross {2 * arm + 1} wide "
 

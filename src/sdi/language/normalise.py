@@ -13,6 +13,7 @@ from sdi.errors import SpecError
 from sdi.language.nouns import families_said, shape_alternation
 from sdi.language.spacing import MOVED
 from sdi.language.units import to_millimetres
+from sdi.language.words import CORRECTABLE, NEGATIONS, SIGNIFICANT
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import UNITS, words_to_numbers
 
@@ -582,6 +583,14 @@ _SERIES_BEFORE = re.compile(
 
 # "4 levels - actually 3 is enough": a correction's new value, not a size agreed
 _CORRECTING = re.compile(r"\b(?:actually|no|wait|sorry|rather|instead|or)\s*[,.…-]*\s*$", re.I)
+
+
+def _another_value(m: re.Match[str]) -> bool:
+    """The number agreed to ("4 is enough") is none said before it, which one was."""
+    said = re.findall(rf"\d+|\b(?:{_NUM})\b", m.group(0), re.I)
+    before = re.findall(rf"\d+|\b(?:{_NUM})\b", m.string[: m.start()], re.I)
+    values = set(words_to_numbers([w.lower() for w in before]))
+    return bool(values) and not set(words_to_numbers([w.lower() for w in said])) <= values
 
 
 _THE_N_PLACED = re.compile(
@@ -2191,7 +2200,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"placeholder|stand-?in|dummy)\b", re.I), ""),
     (re.compile(r"\b(?:(?:yes|yeah|ok|okay)\s*,?\s*)?(?:\d+\s*(?:x|by)\s*\d+|\d+|one|two|three|four|five|six)"
                 r"\s+(?:is|'s)\s+(?:fine|ok|okay|good|right|correct|perfect|enough)\b", re.I),
-     lambda m: m.group(0) if _CORRECTING.search(m.string[: m.start()]) else ""),  # "actually 3 is"
+     lambda m: m.group(0) if _CORRECTING.search(m.string[: m.start()]) or _another_value(m)
+     else ""),  # "actually 3 is"; "a tower of 6. hmm, 4 is enough": a correction
     # "table's clear", "the table is empty": the work table; "I packed the test pieces away":
     # what was done before; "a 2x2 tower of 3": a 2 by 2 block 3 high
     (re.compile(r"\b(?:the\s+)?(?:work\s*)?table(?:'s|\s+is)\s+(?:now\s+)?(?:clear|empty|free|ready|clean)"
@@ -2315,8 +2325,9 @@ def _from_last(m: re.Match[str]) -> str:
 
 
 _METRE_WORDS = [
-    (re.compile(r"\bhalf\s+a\s+(metre|meter)\b", re.I), "0.5 m"),
-    (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?a\s+(metre|meter)\b", re.I), "0.25 m"),
+    (re.compile(r"\b(?:half\s+a|a\s+half)\s+(metre|meter)\b", re.I), "0.5 m"),
+    # "a quarter of a metre", "a quarter metre"
+    (re.compile(r"\b(?:a\s+)?quarter\s+(?:of\s+)?(?:a\s+)?(metre|meter)\b", re.I), "0.25 m"),
     (re.compile(r"\ba\s+(metre|meter)\b", re.I), "1 m"),
 ]
 
@@ -2345,6 +2356,54 @@ _LIST_ITEM = re.compile(
 
 
 _BULLET = re.compile(r"(?:^|\n)\s*[-*•]\s+(?=[A-Za-z0-9])")
+_STEP_WORDS = ("one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
+_STEPS_HEAD = re.compile(
+    r"^\s*(?:(?:steps?|plan|sequence|order|instructions?)\s*(?::|--|-|—|–)\s*)?", re.IGNORECASE
+)
+_TAKES_NUMBER = re.compile(
+    r"(?:\b(?:of|by|x|at|is|are|be|to|with|about|height|width|length|and|or|than|from|=)|[\d=])\s*$",
+    re.IGNORECASE,
+)
+
+
+def _step_label(n: int) -> re.Pattern[str]:
+    """The n-th label of a numbered list: "1.", "(1)", "1)", "1:", "1 -", "Step 1:", "Step one,",
+    "a)", "(a)"."""
+    letter = "abcdefghi"[n - 1]
+    return re.compile(
+        rf"(?:(?<=^)|(?<=[\s.;,:(]))(?:\(\s*(?:{n}|{letter})\s*\)|{n}\s*[.):](?=\s)|{letter}\)|{n}\s+[-–—]"
+        rf"(?=\s)|(?:step|stage)\s+(?:{n}|{_STEP_WORDS[n - 1]})\b\s*[.,:)–—-]?)\s*",
+        re.IGNORECASE,
+    )
+
+
+def _numbered_steps(text: str, notes: list[str]) -> str:
+    """ "1. a row of 3 cubes 2. a row of 2 on top of it 3. …", "Step 1: … Step 2: …", "(1) …
+    (2) …", "a) … b) …": each step after the first is a step of its own, and its label no
+    number of the structure ("2." was read as a count, "Step" as a staircase)."""
+    start = _STEPS_HEAD.match(text)
+    head = start.end() if start else 0
+    first = _step_label(1).match(text, head)
+    if first is None:
+        return text
+    labels = [first]
+    pos = first.end()
+    for n in range(2, 10):
+        found = next((m for m in _step_label(n).finditer(text, pos)
+                      if m.group(0).startswith("(") or m.group(0)[:1].isalpha()
+                      or not _TAKES_NUMBER.search(text[: m.start()])), None)  # fmt: skip
+        if found is None:
+            break
+        labels.append(found)
+        pos = found.end()
+    if len(labels) < 2:
+        return text
+    notes.append(f"read the {len(labels)} numbered steps as steps in that order")
+    out = text[labels[0].end() : labels[1].start()]
+    for k, m in enumerate(labels[1:], start=1):
+        end = labels[k + 1].start() if k + 1 < len(labels) else len(text)
+        out = out.rstrip(" ,;") + ". then " + text[m.end() : end]
+    return out
 
 
 _ROBOT_NAME = re.compile(r"\b(?:the\s+)?(?:abb\s+)?irb\s*-?\s*(?:120|1600)\b", re.IGNORECASE)
@@ -2728,7 +2787,8 @@ _HOMOPHONES: list[tuple[re.Pattern[str], _Repl]] = [
         ),
         "some",
     ),
-    (re.compile(r"(?<=\bthe\s)rite\b|\brite\b(?=\s+(?:next|side|of|hand)\b)", re.I), "right"),
+    (re.compile(r"(?<=\bthe\s)rite\b|\brite\b(?=\s+(?:next|side|of|hand|corner|end|edge)\b)|"
+                r"(?<=\bback\s)rite\b|(?<=\bfront\s)rite\b", re.I), "right"),
     (re.compile(r"(?<=\bto\s)rite\b|(?<=\bon\s)rite\b", re.I), "right"),
     (
         re.compile(
@@ -3188,6 +3248,43 @@ def _items_named(text: str) -> str:
     )
 
 
+_NOT_A_NAME = frozenset({
+    "me", "us", "you", "i", "we", "it", "please", "pls", "build", "make", "put", "stack", "lay",
+    "set", "place", "create", "give", "want", "need", "do", "let's", "lets", "now", "next",
+    "then", "first", "here", "so", "ok", "okay", "can", "could", "would", "will", "is", "are",
+    "of", "for", "with", "on", "in", "at", "to", "my", "our", "your", "some", "new", "another",
+    "hollow", "solid", "flat", "open", "closed", "filled", "empty", "square", "round", "double",
+    "single", "triple", "stepped", "upright", "standing", "lying", "free", "freestanding",
+})  # fmt: skip
+"""Words that make a heading a request or a sentence, or say something of the structure's
+shape: not the name of a thing."""
+_HEADING = re.compile(r"^\s*((?:[a-z'-]+\s+){1,3}?)([a-z]+)\s*(?::|--|—|–|\s-\s)\s*(?=\S)", re.I)
+
+
+def _named_heading(text: str, notes: list[str]) -> str:
+    """ "Goods shed: a 3 by 4 enclosure, two high", "Tunnel portal -- an arch": a heading
+    that names the thing (a word of its own before a structure noun) and the structure the
+    words after it describe; the heading's noun is no second structure."""
+    m = _HEADING.match(text)
+    if m is None or not families_said(m.group(2)) or not families_said(text[m.end() :]):
+        return text
+    said = [w.lower() for w in m.group(1).split()]
+    listed = set(families_said(m.group(0))) <= set(families_said(text[m.end() :]))
+    if said[0] in ("a", "an", "the"):
+        said = said[1:]
+    if not said or any(
+        w in lx.SIZE_WORDS or w in SIGNIFICANT or w in CORRECTABLE or w in NEGATIONS
+        or w in _NOT_A_NAME or w in lx.REGION_WORDS or w in lx.DIMENSION_WORDS
+        or w in lx.LEVEL_WORDS or w in lx.STEP_WORDS or w in lx.PART_WORDS
+        or (w in ("and", "or") and not listed)
+        for w in said
+    ):  # fmt: skip
+        return text  # "Small tower: …", "A hollow enclosure: …", "Build me a bridge: …"
+    notes.append(f"read '{m.group(0).strip(' :-—–')}' as the name of what the words after it "
+                 "describe")  # fmt: skip
+    return text[m.end() :]
+
+
 def normalise(command: str, notes: list[str] | None = None) -> str:
     """Symbols, contractions, number forms. Numbers SDI cannot use are refused here."""
     notes = notes if notes is not None else []
@@ -3196,7 +3293,9 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         text = text.replace(a, b)
     text = text.replace("@", " at ")
     text = re.sub(r"\bontop\b", "on top", text, flags=re.IGNORECASE)
+    text = _numbered_steps(text, notes)  # "1. a row of 3 2. a row of 2 on top of it"
     text = _items_named(text)  # "… END OF ITEM 1": the structure item 1 is
+    text = _named_heading(text, notes)  # "Goods shed: a 3 by 4 enclosure": the enclosure
     text = _ORDINAL_FIGURE.sub(lambda m: _ORDINAL_WORD[m.group(1)], text)  # "a 2nd row"
     text = _ALONE.sub(r"a single \1", text)  # "between them a cube alone": a cube, not a gap
 

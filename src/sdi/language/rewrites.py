@@ -822,9 +822,11 @@ _REWRITES += [
     ),
     (  # "a cross with arms 2 cubes long": each arm from the middle, a bar of 5
         re.compile(
-            r"\b(?:cross|plus(?:\s+sign)?)(?:[\s-]*shaped\s+\w+)?(?:\s+(?:made|built)\s+(?:of|from|out\s+of)\s+"
-            r"(?:\w+\s+)?(?:cubes?|blocks?))?\s*,?\s+(?:with\s+)?(?:(?:its|the)\s+)?(?:arms?|each\s+arm)\s+"
-            r"(?:(?:are|is)\s+)?(?:of\s+)?(\d+|one|two|three|four)(?:\s*(?:cubes?|blocks?)\b)?(?:\s+long\b)?",
+            r"\b(?:cross|plus(?:\s+sign)?)(?:[\s-]*shape[ds]?(?:\s+\w+)?)?(?:\s+(?:made|built)\s+(?:of|"
+            r"from|out\s+of)\s+(?:\w+\s+)?(?:cubes?|blocks?))?\s*[,?.!:;]?\s+(?:with\s+)?(?:(?:its|the)\s+)?"
+            r"(?:arms?|each\s+arm)\s+(?:(?:are|is)\s+)?(?:of\s+)?(\d+|one|two|three|four)(?:\s*(?:cubes?|"
+            r"blocks?)\b|\s*(mm|cm|m)\b)?(?:\s+long\b)?(?:\s+each\b)?(?:\s+out(?:\s+from\s+the\s+(?:centre|center|middle)"
+            r"(?:\s+cube)?)?\b)?",
             re.IGNORECASE,
         ),
         "{cross_arms}",
@@ -1410,7 +1412,10 @@ _REWRITES += [
             r"(?:\s+(?:of\s+(?:equal|the\s+same)\s+(?:height|size|length)|(?:that\s+are\s+)?"
             r"(?:all\s+)?(?:the\s+same\s+height|equal(?:\s+in\s+height)?)),?)?"
             r"(?:\s+of(?=\s*,))?(?:\s*,)*"  # what a claim taken out ("of equal height") leaves
-            r"\s+(?:out\s+of|from|using|made\s+(?:out\s+)?of|built\s+(?:out\s+of|from|with))\s+"
+            r"\s+(?:out\s+of|from|using|made\s+(?:out\s+)?of|built\s+(?:out\s+of|from|with)|"
+            # "two equal towers that together use 10 cubes"
+            r"(?:(?:that|which)\s+)?(?:together|between\s+them|in\s+total|combined)\s+(?:use|take|"
+            r"need|have|contain|make\s+up|total|come\s+to)s?)\s+"
             r"(?P<total>\d+|[a-z]+)\s+(?:cubes?|parts?|blocks?)\b(?!\s+(?:each|apiece))",
             re.IGNORECASE,
         ),
@@ -3695,8 +3700,55 @@ def _square_pyramid(text: str, st: ReadState) -> str:
     return text[: p.start()] + square + text[p.start() : m.start()] + text[m.end() :]
 
 
+_FLAT_NOUN = r"(?:slab|layer|panel|rectangle|square|sheet|plate|tile|grid|patch|pad|board)"
+_UPRIGHT = re.compile(
+    r"\b(?:vertical(?:ly)?|upright|on\s+(?:its\s+|an?\s+|one\s+)?(?:long\s+|short\s+)?(?:edge|end)|"
+    r"(?:stand(?:s|ing)?|stood|set|placed|put)\s+(?:up(?:right)?|on\s+(?:its\s+|an?\s+|one\s+)?"
+    r"(?:long\s+|short\s+)?(?:edge|end|side))(?:\s+on\s+(?:its\s+|an?\s+|one\s+)?(?:long\s+|"
+    r"short\s+)?(?:edge|end|side))?|(?:standing|stood)\s+up\s+like\s+a\s+wall|like\s+a\s+wall)\b",
+    re.IGNORECASE,
+)
+_FLAT_SIZED = re.compile(
+    rf"\b(\d+)\s*(?:x|by)\s*(\d+)\s+(?:[a-z]+\s+)?{_FLAT_NOUN}s?\b|\b{_FLAT_NOUN}\s+(?:of\s+)?"
+    r"(\d+)\s*(?:x|by)\s*(\d+)\b(?!\s*(?:x|by)\s*\d)",
+    re.IGNORECASE,
+)
+
+
+def _upright(text: str, st: ReadState) -> str:
+    """ "a 2 by 3 rectangle standing up on its edge", "a vertical 3x2 slab": a wall, its long
+    side along the table unless it stands on its end (a flat slab was built, silently)."""
+    out: list[str] = []
+    for sentence in re.split(r"(?<=[.;!?])\s+", text):
+        up, flat = _UPRIGHT.search(sentence), _FLAT_SIZED.search(sentence)
+        if up is None or flat is None or len(_FLAT_SIZED.findall(sentence)) > 1:
+            out.append(sentence)
+            continue
+        between = (
+            sentence[up.end() : flat.start()] if up.end() <= flat.start()
+            else sentence[flat.end() : up.start()]
+        )  # fmt: skip
+        owner = re.match(r"\s*(\w+)", sentence[up.end() :])
+        if len(between) > 40 or families_said(between) or (
+            up.end() <= flat.start() and between.strip(" ,").lower() not in ("", "a", "an")
+        ) or bool(owner and families_said(owner.group(1))):
+            out.append(sentence)  # "a 3x3 slab with a vertical tower on it": the tower's
+            continue
+        a, b = (int(v) for v in (flat.group(1, 2) if flat.group(1) else flat.group(3, 4)))
+        on_end = re.search(r"\b(?:end|short)\b", up.group(0), re.IGNORECASE)
+        long, high = (min(a, b), max(a, b)) if on_end else (max(a, b), min(a, b))
+        st.notes.append(f"read '{up.group(0)}' of the {a} by {b} {flat.group(0).split()[-1]} as "
+                        f"a wall {long} long and {high} high")  # fmt: skip
+        sentence = sentence[: up.start()] + sentence[up.end() :]
+        sentence = _FLAT_SIZED.sub(f"wall {long} long and {high} high", sentence, count=1)
+        sentence = re.sub(r",?\s*\bone\s+(?:cube|part|block)\s+thick\b", "", sentence, flags=re.I)
+        out.append(sentence)
+    return " ".join(out)
+
+
 def rewrite(text: str, st: ReadState) -> str:
     text = _MORE_LEVELS.sub(r"\1 add \2", text)
+    text = _upright(text, st)
     text = _square_pyramid(text, st)
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)

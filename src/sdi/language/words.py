@@ -77,6 +77,7 @@ HARMLESS = _words(
     proper plonk plonked plonking pop popped somewhere finished result resulting end product
     completely totally fully entirely rebuild rebuilding rebuilt redo remake replace replacing
     replacement fallen collapsed segment shim shims case plumb rests sits hold holds run
+    fr ngl tbh lowkey highkey thingy thingie bc cuz coz lil bruh fam
     """
 )
 
