@@ -8597,3 +8597,67 @@ def test_slang_a_spelling_by_ear_and_arms_in_millimetres():
     r = plan("Cross: arms 100 mm each from the centre cube, single course.")
     assert r.status == "success", r.notes
     assert [(s.shape, s.length) for s in r.spec.structures] == [("cross", 5)]
+
+
+def test_loose_words_of_place_and_build():
+    # "far apart": "far" was the back of the table and the gap one cube
+    r = _built_as_said("two towers of 3 far apart", ["tower", "tower"], [3, 3])
+    assert r.spec.gap_m == pytest.approx(0.15) and r.spec.structures[0].region is None
+    # "a 3 by 3 footing and a 1-brick pier of 3 courses in the centre of it": a 3x3x3 block
+    r = _built_as_said("Lay a 3 by 3 footing and a 1-brick pier of 3 courses in the centre of "
+                       "it.", ["grid", "tower"], None)  # fmt: skip
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+    assert sorted(_columns(r).values()) == [1] * 8 + [4]
+    # "on each of its two short ends": beside the slab, not on it
+    r = plan("Sketch: a flat 2x5 slab with a tower of 2 standing on each of its two short ends.")
+    assert r.status == "success" and [x.kind for x in r.spec.relations] == ["on_top_of"]
+    assert len(r.layout.objects) == 14
+    assert max(o.position[2] for o in r.layout.objects) == pytest.approx(0.125)  # on its top
+
+
+def test_corrections_said_with_a_dash_or_a_new_number():
+    # "stacked? no -- two 3x3 layers side by side": a 3x3x2 block and a third layer
+    r = _built_as_said("Two 3x3 layers stacked? no -- two 3x3 layers side by side, each one "
+                       "cube thick.", ["grid", "grid"], [1] * 18)  # fmt: skip
+    # "two 3x3 layers side by side" alone: one 3 by 3 slab
+    _built_as_said("two 3x3 layers side by side", ["grid", "grid"], [1] * 18)
+    # "…, so let's do seven": ten built, the seven reported unused
+    r = plan("Volunteer asked for a tower of ten -- that's too tall for our demo, so let's do "
+             "seven.")  # fmt: skip
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("tower", 7)]
+    # a structure said after "let's do" is one more, not a correction
+    r = plan("a tower of 3, let's do a wall next to it")
+    assert [s.shape for s in r.spec.structures] == ["tower", "wall"]
+
+
+def test_a_pyramids_top_said_as_one_cube_is_its_own():
+    # "top is a single cube": a loose cube beside the pyramid
+    r = _built_as_said("AC: pyramid, 3-D, 3x3 base, top is a single cube.", ["pyramid"], None)
+    assert _level_sizes(r.layout) == [(3, 3), (2, 2), (1, 1)]
+
+
+def test_a_small_wall_said_wide_and_a_pier_said_square():
+    # "a little house wall: 5 wide, 3 tall": a 3 by 5 block, 45 parts, silently
+    r = plan("Next up, a little house wall: 5 wide, 3 tall, at the back so everyone can see.")
+    assert r.status in ("success", "partial")
+    assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("wall", 5, 3)]
+    # a long wall said 2 wide stays two parts thick
+    r = plan("a long wall 2 wide")
+    assert [(s.shape, s.width) for s in r.spec.structures] == [("block", 2)]
+    # "a pier 2 bricks square and 3 courses up": a tower of 2 and a 3-high block
+    r = _built_as_said("Build a pier 2 bricks square and 3 courses up.", ["block"], [3, 3, 3, 3])
+
+
+def test_a_corner_cube_a_change_line_and_one_more_cube_beside_it():
+    # "on its back-left cube": the table's back left corner, silently
+    r = plan("Step 1 block 2x3x1. Step 2 nothing. Step 3 put a tower of 3 on its back-left cube.")
+    assert r.status == "success", r.notes
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+    # "2. Change: 3 high instead.": no structure named there (partial)
+    r = plan("1. Build wall, 6 long, 2 high. 2. Change: 3 high instead.")
+    assert r.status == "success", r.notes
+    assert [(s.shape, s.length, s.height) for s in r.spec.structures] == [("wall", 6, 3)]
+    # "put one more cube beside it on the table": nothing beside the tower (partial)
+    r = _built_as_said("Build a tower of three, and put one more cube beside it on the table.",
+                       ["tower", "tower"], [1, 3])  # fmt: skip
+    assert [x.kind for x in r.spec.relations] == ["next_to"]

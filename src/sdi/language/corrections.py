@@ -13,7 +13,7 @@ from sdi.spec import lexicon as lx
 from sdi.spec.numbers import COUNT_WORDS, words_to_numbers
 
 MARKER = re.compile(
-    r"\s*[,.!?;…—–-]+\s*(?:(?:ah|oh|uh|um|erm|er|hmm)\s*,?\s*)?no\s*(?:[,!]\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
+    r"\s*[,.!?;…—–-]+\s*(?:(?:ah|oh|uh|um|erm|er|hmm)\s*,?\s*)?no\s*(?:[,!]\s*|[-—–]+\s*|(?=\d|(?:one|two|three|four|five|six|seven|eight|nine|"
     r"ten)\b))|"  # "a stack of 3 to the left of it - no, to the right", "3 - no 6 -", ". No, 3"
     r"\s*[,.;:!?…—–-]*\s*\b(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry\s*,?\s*no|"
     r"scratch\s+that|or\s+rather|i\s+meant?|make\s+that|actually\s*,?\s*no|"
@@ -21,7 +21,11 @@ MARKER = re.compile(
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|change\s+that|never\s*mind|nvm|"
     r"actually|sorry|oops|wait|(?:revised|changed|updated|amended|corrected)\s+to)\b\s*[,:;—–-]?\s*|"
-    r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment)\s*:\s*|"  # a ticket's later line
+    r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment|change)\s*:\s*|"  # a ticket's later line
+    # "a tower of ten -- that's too tall, so let's do seven": the number said again
+    r"\s*[,.;:!?…—–-]*\s*\b(?:so\s+)?let'?s\s+(?:do|go\s+(?:with|for)|say)\s+(?=(?:\d+|one|two|"
+    r"three|four|five|six|seven|eight|nine|ten)\b\s*(?:[.!,;]|$|cubes?\b|high\b|tall\b|long\b|wide\b|"
+    r"steps?\b|levels?\b))|"
     r"\s*[,.;!—–-]*\s*\bor\s*(?:\.{2,}|…)\s*|"  # "Staircase, 5 steps. Or... let's do 3 steps"
     # "… 5 cm apart. Then make the gap 15 cm": the gap said again, changed
     r"\s*[,.;!—–-]+\s*(?:then\s+|now\s+)?(?:make|change|set|widen|narrow)\s+the\s+"
@@ -96,7 +100,14 @@ def _kind(value: str) -> str | None:
 
 
 def _names_structure(text: str) -> bool:
-    return any(w in lx.SHAPE_WORDS for w in re.findall(r"[a-z]+", text.lower()))
+    """`text` names a structure: a family noun, or a plural one counted ("two 3x3 layers")."""
+    said = text.lower()
+    return any(
+        w in lx.SHAPE_WORDS
+        or (w[-1:] == "s" and w[:-1] in lx.SHAPE_WORDS
+            and re.search(rf"\b(?:{_NUMBER})\s+(?:\S+\s+){{0,3}}{w}\b", said) is not None)
+        for w in re.findall(r"[a-z]+", said)
+    )  # fmt: skip
 
 
 _NOT_THAT = re.compile(

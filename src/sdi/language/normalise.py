@@ -650,6 +650,25 @@ def _series_start(m: re.Match[str]) -> bool:
 
 
 _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
+    # "put one more cube beside it on the table": a cube of its own beside it (the cube was
+    # one more level of it, and "it on the table" no structure)
+    (re.compile(r"\b(?:one\s+more|an\s+extra|another)\s+(?:single\s+)?(?:cube|block|brick)\b(?=\s+(?:"
+                r"beside|next\s+to|by|near|alongside|in\s+front\s+of|behind|to\s+the\s+(?:left|right)\s+"
+                r"of)\b)", re.I), "a single cube"),
+    (re.compile(r"\b((?:beside|next\s+to|by|near|alongside)\s+(?:it|them))\s+on\s+the\s+(?:table|floor|"
+                r"ground|bench)\b", re.I), r"\1"),
+    # "a pier 2 bricks square and 3 courses up": 2 by 2, 3 high
+    (re.compile(r"\b(\d+|two|three|four|five|six)\s+(?:bricks?|cubes?|blocks?|parts?)\s+square\b",
+                re.I), r"\1 by \1"),
+    (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight)\s+(?:courses|layers|levels|tiers)\s+"
+                r"(?:up|tall)\b", re.I), r"\1 high"),
+    # "two 3x3 layers side by side": two slabs (one 3 by 3 slab was built)
+    (re.compile(r"\b((?:two|three|four|[2-4])\s+\d+\s*(?:x|by)\s*\d+\s+)(?:layer|level|tier|course)s\b"
+                r"(?=[^.;]*\b(?:side\s+by\s+side|next\s+to\s+each\s+other|beside\s+each\s+other|apart|"
+                r"in\s+a\s+(?:row|line))\b)", re.I), r"\1slabs"),
+    # "a 1-brick pier": one part across, as a pier is
+    (re.compile(r"\b(?:1|one|single)[\s-](?:brick|cube|block)[\s-](?:wide\s+|thick\s+)?(?=(?:pier|"
+                r"column|pillar|post|tower|chimney|stack|wall)s?\b)", re.I), ""),
     # warehouse talk: "one stack of five at bay left", "bay right, one stack of three": that
     # side of the table
     (re.compile(r"\b(?:(at|on|in|along)\s+)?bay\s+(left|right)\b", re.I),
@@ -2917,6 +2936,21 @@ def _dimensioned(m: re.Match[str]) -> str:
     return f" {value.strip()} {_DIM_WORD[dim.lower()]} "
 
 
+_SAID_LOOSELY = [
+    # "two towers of 3 far apart": "far" was the back of the table and the gap one cube
+    (re.compile(r"\b(?:far|wide|well|a\s+(?:good|long)\s+way)\s+apart\b", re.I),
+     "3 cubes apart"),
+    # "on each of its two short ends": its two ends
+    (re.compile(r"\b(its|the|two|2|both)\s+(?:short|narrow|outer)\s+(ends)\b", re.I), r"\1 \2"),
+    # "Lay a 3 by 3 footing and a pier …": the base a slab of its own (the pier took its size)
+    (re.compile(r"(?:^|(?<=[.;:!?]\s)|(?<=\bbuild\s)|(?<=\blay\s)|(?<=\bput\s)|(?<=\bmake\s)|"
+                r"(?<=\bplace\s))(?:down\s+)?(an?|one)\s+(\d+\s*(?:x|by)\s*\d+)\s+(?:\w+\s+)?"
+                r"(?:base|foundation|footing)\b(?=\s*(?:,|and\b|then\b|;|\.|with\b))", re.I),
+     r"\1 \2 slab"),
+]
+"""Readings of loose words, each said in a note."""
+
+
 def _expand_noted(
     pairs: Sequence[tuple[re.Pattern[str], _Repl]], text: str, notes: list[str]
 ) -> str:
@@ -3493,6 +3527,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         lambda m: f"x = {m.group(1)} {m.group(3)}, y = {m.group(2)} {m.group(3)}", text
     )
     text = _expand_noted(_SHAPE_HEARD, text, notes)
+    text = _expand_noted(_SAID_LOOSELY, text, notes)
     for pattern, repl in _HOMOPHONES:
 
         def heard(m: re.Match[str], repl: _Repl = repl) -> str:

@@ -1684,7 +1684,8 @@ _REWRITES += [
     (  # "with a 2-storey column standing on its rear left corner": on top, at that corner
         re.compile(
             r",?\s*\b(?:standing|sitting|resting|placed|set|stood|mounted|stacked)?\s*(?:up)?on\s+(?:its|the)\s+"
-            r"(back|rear|front)[\s-]+(left|right)(?:[\s-]+hand)?\s+corner(?:\s+of\s+(?:it|the\s+\w+))?\b",
+            r"(back|rear|front)[\s-]+(left|right)(?:[\s-]+hand)?\s+(?:corner|cube|block|brick|cell)"
+            r"(?:\s+of\s+(?:it|the\s+\w+))?\b",  # "on its back-left cube": the corner one
             re.IGNORECASE,
         ),
         "{top_corner}",
@@ -3662,6 +3663,7 @@ _APEX = re.compile(
     rf"{_ONE_CUBE}(?:\s+{_AT_TOP})?"
     rf"|(?:topped|capped)(?:\s+off)?\s+(?:with|by)\s+{_ONE_CUBE}(?:\s+{_AT_TOP})?"
     rf"|end(?:s|ing)?\s+(?:in|with|at)\s+{_ONE_CUBE}(?:\s+{_AT_TOP})?"
+    rf"|(?:the\s+|its\s+)?(?:top|apex|peak|tip)\s+(?:level\s+)?(?:is|being|=|:)\s*{_ONE_CUBE}"
     rf"|{_ONE_CUBE}\s+{_AT_TOP})\b(?!\s+of\b)",
     re.IGNORECASE,
 )

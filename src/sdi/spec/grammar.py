@@ -1648,6 +1648,9 @@ class _Parser:
                 dim = "all"  # "a short row", "a long tower": the size word applies overall
             for key, values in table.items():
                 applies = dim == "all" or key == dim or key in related
+                wide = p.get("width", 0)
+                if shape in ("wall", "row") and key == "length" and wide > values[index]:
+                    continue  # "a little wall, 5 wide": its length said as its width
                 if applies and key not in p and f"{key}_m" not in p:
                     # a small block is still a block (2 high); only a low one is one layer
                     low = shape == "block" and key == "height" and dim == "all"
