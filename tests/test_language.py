@@ -8437,7 +8437,7 @@ def _extent_in_parts(r, axis):
 
 def test_a_bridge_said_long_has_its_pillars_that_far_apart():
     # "a bridge whose deck is 4 cubes long": the 4 was ignored (no such parameter)
-    for command, long in (("a bridge whose deck is 4 cubes long", 4),
+    for command, long in (("a bridge 4 cubes long", 4),
                           ("a bridge 3 cubes long, pillars 4 high", 3),
                           ("a bridge 7 long with 2 spans", 7)):  # fmt: skip
         r = plan(command)
@@ -8446,6 +8446,10 @@ def test_a_bridge_said_long_has_its_pillars_that_far_apart():
     # a length no beam can span is an error that says so, not a default bridge
     r = plan("A bridge that is 25 cm long overall.")
     assert r.status == "failure" and "span" in r.error
+    # the deck said long is its beams, one length: reported unless it is theirs
+    r = plan("a bridge whose deck is 4 cubes long")
+    assert r.status == "partial" and any("deck is its beams" in n for n in r.notes)
+    assert plan("a bridge with a top 3 long and legs 2 high").status == "success"
 
 
 def test_a_bridges_legs_said_after_a_dash_are_its_height():

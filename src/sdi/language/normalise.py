@@ -169,6 +169,14 @@ _EACH_AT = {"at": "at", "in": "in"}  # "one per corner" stands on each; "one at 
 _PER_ANCHOR = {"corner": 4, "end": 2, "side": 2}
 
 
+_EACH_SIDE_NAMED = re.compile(
+    r"[\s,]*(?:it\b|them\b|that\b|this\b)?[\s,]*one\s+(?:in\s+front|behind|on\s+the|to\s+the|at\s+the|"
+    r"left|right|front|back)\b",
+    re.IGNORECASE,
+)
+"""'…, one in front, one behind, one left, one right': each of the four named after it."""
+
+
 def _one_per_anchor(m: re.Match[str]) -> str:
     """ "4 towers of 2, on each corner": a tower of 2 on each corner, when the count is the
     number of corners or ends; "two towers, one on each side" of a structure named before it
@@ -558,6 +566,9 @@ def _side_one(m: re.Match[str], size: str | None) -> str:
         return m.group(0)
     side = m.group(1).lower()
     if side in ("middle", "centre", "center"):
+        if re.search(r"\b(?:next\s+to\s+each\s+other|side\s+by\s+side|touching|together)\b",
+                     m.string, re.IGNORECASE):
+            return m.group(0)  # the table's middle is not the middle of a group set together
         return f"one {size} in the middle"
     where = "on the " if side in ("left", "right") else "at the "
     return f"one {size} {where}{side}"
@@ -2201,7 +2212,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:(?:placed|standing|set|arranged|spaced(?:\s+evenly)?)\s+)?(?:a?round|surrounding)\s+"
                 r"(?:(it|them|that|this)\b(?:\s*,?\s*(?:with\s+)?one\s+(?:on|at|to)\s+each\s+side\b)?)?",
                 re.I),
-     lambda m: f"a {m.group(1)}{m.group(2)} on all four sides of {m.group(3) or ''}"),
+     lambda m: m.group(0) if _EACH_SIDE_NAMED.match(m.string, m.end())  # read as said
+     else f"a {m.group(1)}{m.group(2)} on all four sides of {m.group(3) or ''}"),
     # an architect's words: "a colonnade of five columns" is five columns, piers are pillars,
     # "between neighbouring columns" is between them, a "ground-floor slab" a slab
     (re.compile(r"\b(?:an?\s+)?colonnade\s+(?:of|with)\s+(?=\d|two|three|four|five|six|seven|eight)",
@@ -3287,12 +3299,15 @@ _NOT_A_NAME = frozenset({
     "set", "place", "create", "give", "want", "need", "do", "let's", "lets", "now", "next",
     "then", "first", "here", "so", "ok", "okay", "can", "could", "would", "will", "is", "are",
     "of", "for", "with", "on", "in", "at", "to", "my", "our", "your", "some", "new", "another",
+    "a", "an", "the", "up", "instantiate", "generate", "produce", "construct", "assemble",
     "hollow", "solid", "flat", "open", "closed", "filled", "empty", "square", "round", "double",
     "single", "triple", "stepped", "upright", "standing", "lying", "free", "freestanding",
 })  # fmt: skip
 """Words that make a heading a request or a sentence, or say something of the structure's
 shape: not the name of a thing."""
-_HEADING = re.compile(r"^\s*((?:[a-z'-]+\s+){1,3}?)([a-z]+)\s*(?::|--|—|–|\s-\s)\s*(?=\S)", re.I)
+_HEADING = re.compile(
+    r"^[ \t]*((?:[a-z'-]+[ \t]+){1,3}?)([a-z]+)[ \t]*(?::|--|—|–|[ \t]-[ \t])[ \t]*(?=\S)", re.I
+)
 
 
 def _named_heading(text: str, notes: list[str]) -> str:

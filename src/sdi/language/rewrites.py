@@ -3705,9 +3705,9 @@ def _square_pyramid(text: str, st: ReadState) -> str:
 _FLAT_NOUN = r"(?:slab|layer|panel|rectangle|square|sheet|plate|tile|grid|patch|pad|board)"
 _UPRIGHT = re.compile(
     r"\b(?:vertical(?:ly)?|upright|on\s+(?:its\s+|an?\s+|one\s+)?(?:long\s+|short\s+)?(?:edge|end)|"
-    r"(?:stand(?:s|ing)?|stood|set|placed|put)\s+(?:up(?:right)?|on\s+(?:its\s+|an?\s+|one\s+)?"
-    r"(?:long\s+|short\s+)?(?:edge|end|side))(?:\s+on\s+(?:its\s+|an?\s+|one\s+)?(?:long\s+|"
-    r"short\s+)?(?:edge|end|side))?|(?:standing|stood)\s+up\s+like\s+a\s+wall|like\s+a\s+wall)\b",
+    r"(?:(?:stand(?:s|ing)?|stood)\s+up(?:right)?|(?:set|placed|put)\s+upright|(?:stand(?:s|ing)?|stood|"
+    r"set|placed|put)\s+on\s+(?:its\s+|an?\s+|one\s+)?(?:long\s+|short\s+)?(?:edge|end|side))(?:\s+on\s+"
+    r"(?:its\s+|an?\s+|one\s+)?(?:long\s+|short\s+)?(?:edge|end|side))?|like\s+a\s+wall)\b",
     re.IGNORECASE,
 )
 _FLAT_SIZED = re.compile(
@@ -3748,9 +3748,36 @@ def _upright(text: str, st: ReadState) -> str:
     return " ".join(out)
 
 
+_DECK_LONG = re.compile(
+    r"\b(?:deck|top|beam|lintel|roadway|walkway)\s+(?:(?:is|being|of)\s+)?(?:about\s+)?(\d+|two|three|"
+    r"four|five|six|seven|eight)\s+(?:cubes?\s+|parts?\s+|blocks?\s+)?long\b",
+    re.IGNORECASE,
+)
+
+
+def _deck_length(text: str, st: ReadState) -> str:
+    """ "a bridge whose deck is 4 cubes long": a bridge's deck is its beams, one length; the
+    length said is reported, not read as the bridge's (its pillars' span)."""
+    if "bridge" not in families_said(text):
+        return text
+    beam = round(st.cell.part_types["beam"][0] / st.cell.cube[0])
+    for m in reversed(list(_DECK_LONG.finditer(text))):
+        said = m.group(0)
+        if words_to_numbers([m.group(1).lower()])[0] == str(beam):
+            st.notes.append(f"'{said}': a beam {beam} parts long, as built")
+        else:
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': a bridge's deck is its beams, {beam} parts "
+                            "long; say how far apart its pillars stand, or how long the bridge "
+                            "is overall")  # fmt: skip
+        text = text[: m.start()] + text[m.end() :]
+    return text
+
+
 def rewrite(text: str, st: ReadState) -> str:
     text = _MORE_LEVELS.sub(r"\1 add \2", text)
     text = _upright(text, st)
+    text = _deck_length(text, st)
     text = _square_pyramid(text, st)
     if st.gap_m is not None or st.span_m is not None:  # "150 mm apart, not touching": said
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
