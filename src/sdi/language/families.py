@@ -171,8 +171,8 @@ def _derive(
         # "a bridge 4 cubes long": over its pillars' outer faces, `spans` gaps of one size
         spans = spec.spans or 1
         span = max(1, (long - 1) // spans - 1)
-        if spans * (span + 1) + 1 != long:
-            built = spans * (span + 1) + 1
+        built = spans * (span + 1) + 1
+        if built != long:
             material.append(f"{long} long")
             notes.append(f"a bridge {long} parts long cannot have {spans} equal gap(s) between "
                          f"one-part pillars: gaps of {span}, {built} long")  # fmt: skip

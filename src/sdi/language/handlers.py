@@ -1238,7 +1238,7 @@ def _cross_arms(m: re.Match[str], st: ReadState, note: str) -> str:
     said, groups = _said(m)
     arm = int(words_to_numbers([groups[0]])[0])
     if groups[1]:  # "arms 100 mm each from the centre cube": in parts
-        metres = arm * {"mm": 0.001, "cm": 0.01, "m": 1.0}[groups[1]]
+        metres = arm * lx.UNITS_M[groups[1]]
         parts = metres / st.cell.cube[0]
         if abs(parts - round(parts)) > 0.05 or round(parts) < 1:
             return m.group(0)

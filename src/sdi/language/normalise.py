@@ -2408,19 +2408,23 @@ def _step_label(n: int) -> re.Pattern[str]:
     )
 
 
+_STEP_LABELS = tuple(_step_label(n) for n in range(1, 10))
+"""The labels of the first nine steps, in order (compiled once: every command is tried)."""
+
+
 def _numbered_steps(text: str, notes: list[str]) -> str:
     """ "1. a row of 3 cubes 2. a row of 2 on top of it 3. …", "Step 1: … Step 2: …", "(1) …
     (2) …", "a) … b) …": each step after the first is a step of its own, and its label no
     number of the structure ("2." was read as a count, "Step" as a staircase)."""
     start = _STEPS_HEAD.match(text)
     head = start.end() if start else 0
-    first = _step_label(1).match(text, head)
+    first = _STEP_LABELS[0].match(text, head)
     if first is None:
         return text
     labels = [first]
     pos = first.end()
-    for n in range(2, 10):
-        found = next((m for m in _step_label(n).finditer(text, pos)
+    for label in _STEP_LABELS[1:]:
+        found = next((m for m in label.finditer(text, pos)
                       if m.group(0).startswith("(") or m.group(0)[:1].isalpha()
                       or not _TAKES_NUMBER.search(text[: m.start()])), None)  # fmt: skip
         if found is None:
@@ -3315,10 +3319,11 @@ def _named_heading(text: str, notes: list[str]) -> str:
     that names the thing (a word of its own before a structure noun) and the structure the
     words after it describe; the heading's noun is no second structure."""
     m = _HEADING.match(text)
-    if m is None or not families_said(m.group(2)) or not families_said(text[m.end() :]):
+    described = families_said(text[m.end() :]) if m else []
+    if m is None or not families_said(m.group(2)) or not described:
         return text
     said = [w.lower() for w in m.group(1).split()]
-    listed = set(families_said(m.group(0))) <= set(families_said(text[m.end() :]))
+    listed = set(families_said(m.group(0))) <= set(described)
     if said[0] in ("a", "an", "the"):
         said = said[1:]
     if not said or any(

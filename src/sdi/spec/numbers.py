@@ -21,7 +21,7 @@ QUANTITY_WORDS = {
 }  # fmt: skip
 COUNT_WORDS = (frozenset(UNITS) | frozenset(TENS)) - {"no", "zero", "single"}
 """Words that say how many ("one" included; "no" and "zero" say none, "single" is a size word)."""
-NUMBER_WORDS = (frozenset(UNITS) | frozenset(TENS)) - {"no", "zero", "single", "one"}
+NUMBER_WORDS = COUNT_WORDS - {"one"}
 """Words that say a number and nothing else ("one" is also a pronoun, "no" a negation)."""
 ORDINAL_STEPS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
 MULTIPLIERS = {"once": 1, "twice": 2, "thrice": 3}
