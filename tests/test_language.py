@@ -8665,3 +8665,191 @@ def test_a_corner_cube_a_change_line_and_one_more_cube_beside_it():
     r = _built_as_said("Build a tower of three, and put one more cube beside it on the table.",
                        ["tower", "tower"], [1, 3])  # fmt: skip
     assert [x.kind for x in r.spec.relations] == ["next_to"]
+
+
+def test_a_side_named_by_its_size_runs_the_way_said():
+    # "with the 3 running left-right": the block turned so its 2 ran left to right, silently
+    r = plan("On the drawing there's a block 3 wide, 2 deep, 2 high, with the 3 running "
+             "left-right.")
+    assert r.status == "success", r.notes
+    assert (_extent_in_parts(r, 0), _extent_in_parts(r, 1), _extent_in_parts(r, 2)) == (2, 3, 2)
+    r = plan("a 4 by 2 slab with the 4 running front to back")
+    assert r.status == "success", r.notes
+    assert (_extent_in_parts(r, 0), _extent_in_parts(r, 1)) == (4, 2)
+    # a size the structure has no side of is reported, not taken
+    assert plan("a row of 5 with the 3 running left to right").status == "partial"
+
+
+def test_a_structure_from_a_run_before_moved_or_its_sides_swapped():
+    centre_y = plan("a tower of 3").layout.objects[0].position[1]
+    # "this time put the same tower at the back": a second tower of 4 there, silently
+    r = _built_as_said("Last run you built the tower of 4 at the front; this time put the same "
+                       "tower at the back.", ["tower"], [4])  # fmt: skip
+    assert r.spec.structures[0].region == "back"
+    # "Redo it but on the right": the right was reported, the tower left on the left
+    r = _built_as_said("Run 12 log: 'tower 3 @ left'. Redo it but on the right.", ["tower"], [3])
+    assert r.layout.objects[0].position[1] < centre_y
+    # "Swap sides this time": refused
+    r = _built_as_said("Like the last job: a tower of 3 to the left of a wall of 4 by 2. Swap "
+                       "sides this time.", ["tower", "wall"], None)  # fmt: skip
+    cols = _columns(r)
+    tower_y = [y for (_, y), n in cols.items() if n == 3]
+    wall_y = [y for (_, y), n in cols.items() if n == 2]
+    assert len(tower_y) == 1 and tower_y[0] < min(wall_y)  # the tower on the wall's right now
+    r = _built_as_said("a tower at the front and a wall at the back - switch places please",
+                       ["tower", "wall"], None)  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["back", "front"]
+    # "Same as before, …": "before" was reported unused
+    r = _built_as_said("Same as before, a 3x3 grid, but move it to the back left.", ["grid"], None)
+    assert r.spec.structures[0].region == "back left"
+
+
+def test_a_recounted_structure_changed_is_that_structure():
+    # "Previous bridge had 2-high legs; raise the legs to 3": a bridge and a tower of 2
+    r = _built_as_said("Previous bridge had 2-high legs; raise the legs to 3.", ["bridge"], None)
+    assert r.spec.structures[0].height == 3
+    # "change it to base 3": the base 5 kept, 'change' ignored as no content, silently
+    r = _built_as_said("a pyramid with base 5, change it to base 3, 3-D", ["pyramid"], None)
+    assert len(r.layout.objects) == 9 + 4 + 1
+    r = _built_as_said("The last pyramid had base 5; rebuild it with base 3, 3-D this time.",
+                       ["pyramid"], None)  # fmt: skip
+    assert len(r.layout.objects) == 9 + 4 + 1
+
+
+def test_a_bricklayers_course_skin_and_runs_at_right_angles():
+    # "Stretcher course of seven": no structure recognised
+    r = _built_as_said("Stretcher course of seven, single skin, along the front.", ["row"], None)
+    assert len(r.layout.objects) == 7
+    r = plan("Lay a course of 4 and then another course of 4 on top, straight up -- no offset.")
+    assert r.status == "success", r.notes
+    assert _level_sizes(r.layout) in ([(1, 4), (1, 4)], [(4, 1), (4, 1)])
+    # "double skin": two bricks thick
+    r = _built_as_said("a double skin wall 4 long 3 high", ["block"], None)
+    assert sorted(_level_sizes(r.layout)[0]) == [2, 4]
+    # "two runs meeting at right angles, 5 and 4 bricks": a row of 2
+    r = _built_as_said("Corner: two runs meeting at right angles, 5 and 4 bricks, one course.",
+                       ["l_shape"], None)  # fmt: skip
+    assert len(r.layout.objects) == 5 + 4 - 1
+    r = _built_as_said("two walls at right angles, 4 and 3 long, 2 high", ["l_shape"], None)
+    assert len(r.layout.objects) == 2 * (4 + 3 - 1)
+
+
+def test_a_tickets_key_and_lettered_sizes_are_no_counts():
+    # "SDI-101": a tower of 101 levels (failure); "110 Block." a row of 110
+    r = _built_as_said("SDI-101 [Story] Build tower. AC: single column, height = 6 cubes.",
+                       ["tower"], [6])  # fmt: skip
+    r = _built_as_said("SDI-110 Block. Dimensions (cubes): L3 x W2 x H2.", ["block"], None)
+    assert sorted(_level_sizes(r.layout)[0]) == [2, 3] and len(_level_sizes(r.layout)) == 2
+    # "U-shape: …": the heading's "shape:" was read as "a", and nothing recognised
+    r = _built_as_said("SDI-112 U-shape: width 4, arm depth 3, opening faces right.",
+                       ["u_shape"], None)  # fmt: skip
+    # "4 (x) by 2 (y) by 1 (z)": each value along its axis (a count of 4 was built)
+    r = _built_as_said("Assemble a solid cuboid 4 (x) by 2 (y) by 1 (z).", ["grid"], None)
+    assert (_extent_in_parts(r, 0), _extent_in_parts(r, 1)) == (4, 2)
+    # a structure's name with a number stays the structure
+    _built_as_said("TOWER-3 please", ["tower"], [3])
+
+
+def test_radio_procedure_words_are_no_structure():
+    # "Robot, this is Base.": a 3 by 3 platform beside the tower
+    _built_as_said("Robot, this is Base. Build tower, height four. Over.", ["tower"], [4])
+    # "Negative, height two": a correction; "I say again, …": a repeat (a second tower)
+    _built_as_said("Robot, Base. Tower, height six. Negative, height two. Over.", ["tower"], [2])
+    r = _built_as_said("Robot from Base: bridge, pillars two high, over. I say again, pillars two "
+                       "high. Out.", ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 2
+    # "x zero-point-three": x = 0 (failure)
+    r = _built_as_said("Robot, Base. Tower height five at position x zero-point-three, y "
+                       "zero-point-four-five. Over.", ["tower"], [5])  # fmt: skip
+    assert r.layout.objects[0].position[:2] == pytest.approx([0.3, 0.45])
+    # "spread out", "take it back out": no radio "out"
+    _built_as_said("rows: 3 of them, 5 cubes each, spaced out", ["row", "row", "row"], None)
+
+
+def test_what_a_carpenter_or_a_palletiser_says_is_read():
+    # "a header across the tops of them": one tower 8 high, silently
+    r = _built_as_said("Put up two posts four high and lay a header across the tops of them.",
+                       ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 4
+    # "a panel, flat on the bench": built standing up, silently
+    r = _built_as_said("A panel, flat on the bench: two blocks by five.", ["grid"], None)
+    assert len(_level_sizes(r.layout)) == 1 and len(r.layout.objects) == 10
+    # "flat on the floor": a grid of the floor beside the L, silently
+    _built_as_said("Make the letter L with your blocks: 3 down and 3 across, flat on the floor!",
+                   ["l_shape"], None)  # fmt: skip
+    # "cases": the palletiser's parts (partial); "scratch that, 3 cases": an error
+    _built_as_said("Put one row of 5 cases along the front edge of the table.", ["grid"], None)
+    _built_as_said("Single stack of 4 cases — scratch that, 3 cases.", ["tower"], [3])
+    # "stack a solid lump …": a default tower beside the block
+    _built_as_said("Stack a solid lump three by three by two, reckon that'll do.", ["block"],
+                   [2] * 9)  # fmt: skip
+    # "a couple high": a count of two parts, dropped (height 1)
+    _built_as_said("Could you knock up a wee wall, five long and a couple high?", ["wall"],
+                   [2] * 5)  # fmt: skip
+
+
+def test_likenesses_questions_and_apposition_name_one_structure():
+    # "one of those Egyptian pyramids, a proper square one, five wide at the base": a slab
+    r = _built_as_said("Imagine one of those Egyptian pyramids, a proper square one, five wide at "
+                       "the base.", ["pyramid"], None)  # fmt: skip
+    assert _level_sizes(r.layout)[0] == (5, 5)
+    # "like soldiers standing in a line": a second row, silently
+    _built_as_said("A row of five blocks, like soldiers standing in a line across the front.",
+                   ["row"], None)  # fmt: skip
+    # "Should the wall be 2 high? Yes, …": the question's wall built as well, silently
+    _built_as_said("Should the wall be 2 high? Yes, let's do a wall 6 long and 2 high.", ["wall"],
+                   [2] * 6)  # fmt: skip
+    # "a tall tower … and a short one … — say five and two": 6 and 5, silently
+    _built_as_said("A tall tower in the back left corner and a short one in the front right — "
+                   "say five and two.", ["tower", "tower"], [2, 5])  # fmt: skip
+    # "Fancy a pyramid? Square base of three": a pyramid and a grid
+    r = _built_as_said("Fancy a pyramid? Square base of three, properly 3D, none of that flat "
+                       "nonsense.", ["pyramid"], None)  # fmt: skip
+    assert len(r.layout.objects) == 9 + 4 + 1
+    # "Make a small one": a castle one part long (failure)
+    _built_as_said("What's a castle look like with these cubes? Make a small one.", ["castle"],
+                   None)  # fmt: skip
+    # "a plus sign — a cross — 1 block in the middle and 1 on each side": two crosses
+    r = _built_as_said("Now a plus sign — a cross — 1 block in the middle and 1 on each side!",
+                       ["cross"], None)  # fmt: skip
+    assert len(r.layout.objects) == 5
+    # a list of the same family stays a list
+    _built_as_said("a tower, a tower, and a wall", ["tower", "tower", "wall"], None)
+    # "each arm two blocks out from the middle": read as a gap, arms of 1
+    r = _built_as_said("A plus sign, like on a Swiss flag, laid flat, each arm two blocks out "
+                       "from the middle.", ["cross"], None)  # fmt: skip
+    assert len(r.layout.objects) == 9
+
+
+def test_a_ring_round_a_space_an_empty_middle_and_a_cad_extrusion():
+    # "around an empty 3x3 centre": a 3 by 3 ring
+    r = _built_as_said("Wrap a ring of cases around an empty 3x3 centre, one tier.",
+                       ["enclosure"], None)  # fmt: skip
+    assert _level_sizes(r.layout) == [(5, 5)] and len(r.layout.objects) == 16
+    # a patch said inside a wall is a patch of its own
+    assert [s.shape for s in plan("a cube wall enclosing a 2x2 patch").spec.structures].count(
+        "grid"
+    ) == 1
+    # "hollow in the middle", "empty in the middle": a solid box or slab
+    _built_as_said("Frame me a box — four by four outside, one course high, hollow in the "
+                   "middle.", ["enclosure"], None)  # fmt: skip
+    _built_as_said("a 4x4 square, empty in the middle", ["enclosure"], None)
+    # "Materials: 5 cm cubes.": a stray cube; "ring / fence thing": a wall 5 high
+    _built_as_said("Materials: 5 cm cubes. Procedure: build a hollow square perimeter, 5 x 5 "
+                   "cubes external, height 2.", ["enclosure"], None)  # fmt: skip
+    r = _built_as_said("ring / fence thing ⭕ 5x5, 1 high", ["enclosure"], None)
+    assert len(r.layout.objects) == 16
+    # CAD: "extrude 1", "depth 2 units", "T profile: flange 5, web 3"
+    r = _built_as_said("Boss-extrude a solid 2x3 footprint, depth 2 units.", ["block"], None)
+    assert len(r.layout.objects) == 12
+    r = _built_as_said("T profile: flange 5 cubes, web 3 cubes, extrude 1 unit.", ["t_shape"],
+                       None)  # fmt: skip
+    assert len(r.layout.objects) in (7, 8)  # a bar of 5 and a stem of 3 (with or without the joint)
+    # "on top of its middle cube, a tower of 2": beside the row
+    r = _built_as_said("Can you build a row of 5 and, on top of its middle cube, a tower of 2?",
+                       ["row", "tower"], None)  # fmt: skip
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+    # "3 stacks in a line going front to back": left to right, silently
+    r = _built_as_said("Put 3 stacks in a line going front to back, heights 1, 2 and 3 going "
+                       "back.", ["tower"] * 3, [1, 2, 3])  # fmt: skip
+    assert len({round(o.position[1], 3) for o in r.layout.objects}) == 1

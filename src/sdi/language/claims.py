@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 
 from sdi.errors import SDIError, SpecError
-from sdi.language.nouns import shape_alternation
+from sdi.language.nouns import families_said, shape_alternation
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -120,6 +120,13 @@ def take(text: str, st: ReadState) -> str:
                 return m.group(0)  # "a tower, 6 cubes in total": the tower's only size
             if kind == "parallel" and st.line is None and not _RUNS_X.search(m.string):
                 st.line = "x"  # walls running left to right stand parallel one behind the other
+            if (
+                kind == "empty"
+                and re.search(r"\bempty\s+(?:inside|in\s+the)", m.group(0), re.I)
+                and not _HOLLOW & set(families_said(m.string))
+            ):
+                # "a square, 3 by 3, empty in the middle": a ring, not a slab
+                return " , hollow in the middle , "
             if kind == "same" and re.search(
                 r"\b(?:none|not|no|never|nor)\b[^,.;]*$", m.string[: m.start()], re.I
             ):

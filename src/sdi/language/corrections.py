@@ -22,11 +22,20 @@ MARKER = re.compile(
     r"on\s+second\s+thoughts?|change\s+of\s+plan|change\s+that|never\s*mind|nvm|"
     r"actually|sorry|oops|wait|(?:revised|changed|updated|amended|corrected)\s+to)\b\s*[,:;—–-]?\s*|"
     r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment|change)\s*:\s*|"  # a ticket's later line
+    r"\s*[,.;!—–-]+\s*negative\s*[,:;]\s*|"  # on the radio: "Tower, height six. Negative, height"
+                                                             " two."
+    # "no wait 4, no wait 6 final answer 6": the number said last
+    r"\s*[,.;:!?…—–-]*\s*\b(?:so\s+)?final\s+(?:answer|call|decision|number|offer)\s*(?:is\s*)?[,:;=—–-]*\s*"
+    r"(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)|"
     # "a tower of ten -- that's too tall, so let's do seven": the number said again
     r"\s*[,.;:!?…—–-]*\s*\b(?:so\s+)?let'?s\s+(?:do|go\s+(?:with|for)|say)\s+(?=(?:\d+|one|two|"
     r"three|four|five|six|seven|eight|nine|ten)\b\s*(?:[.!,;]|$|cubes?\b|high\b|tall\b|long\b|wide\b|"
     r"steps?\b|levels?\b))|"
     r"\s*[,.;!—–-]*\s*\bor\s*(?:\.{2,}|…)\s*|"  # "Staircase, 5 steps. Or... let's do 3 steps"
+    # "a pyramid with base 5, change it to base 3": its value said again
+    r"\s*[,.;!—–-]+\s*(?:then\s+|now\s+|but\s+|so\s+|please\s+)?(?:change|rebuild|redo|remake)\s+(?:it|that)"
+    r"\s+(?:to|with)\s+(?=(?:an?\s+)?(?:base|height|length|width)\b|(?:\d+|one|two|three|four|five|six|"
+    r"seven|eight|nine|ten)\b)|"
     # "… 5 cm apart. Then make the gap 15 cm": the gap said again, changed
     r"\s*[,.;!—–-]+\s*(?:then\s+|now\s+)?(?:make|change|set|widen|narrow)\s+the\s+"
     r"(?:gap|spacing|space|distance)(?:\s+between\s+them)?(?:\s+to)?\s+(?=\d)",
@@ -359,7 +368,16 @@ def _better(m: re.Match[str]) -> str:
     return f" make that {m.group(1)}"
 
 
+_FINAL_AGAIN = re.compile(
+    rf"\b({_NUMBER})\s*[,.;:!?…—–-]*\s*(?:so\s+)?final\s+(?:answer|call|decision|number|offer)\s*(?:is\s*)?"
+    r"[,:;=—–-]*\s*\1\b",
+    re.IGNORECASE,
+)
+"""'no wait 6, final answer 6': the number said last, confirmed."""
+
+
 def _corrected(text: str, notes: list[str], material: list[str] | None = None) -> str:
+    text = _FINAL_AGAIN.sub(r"\1", text)
     text = _BETTER.sub(_better, text)
     text = _INSTEAD.sub(lambda m: _instead(m, notes), text)
     if MARKER.search(text):
@@ -373,6 +391,14 @@ def _corrected(text: str, notes: list[str], material: list[str] | None = None) -
         if m is None or m.start() == 0:
             return text
         before, after = text[: m.start()], text[m.end() :]
+        value_next = re.match(r"\s*[.;]\s*([^.;!?]+)", after)
+        if (
+            re.search(r"scratch|forget|cancel", m.group(0), re.I)
+            and value_next
+            and re.match(rf"\s*{_NUMBER}\b", value_next.group(1), re.I)
+            and not _names_structure(value_next.group(1))
+        ):
+            after = " " + after[value_next.start(1) :]  # "… 4 cases. scratch that. 3 cases."
         head = re.split(r"(?<=[.;!?])\s|,\s*(?=and\b|then\b)", after, maxsplit=1)
         said, rest = head[0], after[len(head[0]) :]
         stop = re.search(r"[.;!?]+\s*$", said)

@@ -201,6 +201,11 @@ MODIFY = [
         r"(left|right|front|back|middle|centre|center)(?:\s+(left|right))?\b",
         "region",
     ),
+    _op(  # "redo it but on the right", "do it again on the left"
+        r"\b(?:redo|rebuild|repeat|do)\s+(?:it|that|them)(?:\s+again)?\s*,?\s*(?:but\s+|only\s+)?"
+        r"(?:to|towards|at|on|in)\s+(?:the\s+)?(left|right|front|back|middle|centre|center)(?:\s+(left|right))?\b",
+        "region",
+    ),
     _op(  # "relocate it 200 mm in +x", "shift it 2 cubes to the left"
         r"\b(?:move|shift|slide|relocate|push|nudge)\s+(?:it|them)\s+(?:by\s+)?(\d+(?:\.\d+)?|one|two|three|"
         r"four|five|a)\s*(mm|cm|m|cubes?)\s+(?:(?:in|along|towards?|to(?:\s+the)?)\s+(?:the\s+)?|further\s+)?"
@@ -340,8 +345,9 @@ MODIFY = [
     ),
     # "actually make the pillars 4 instead": a bridge's or a table's own height
     _op(
-        r"\bmake\s+(?:the|its|both)\s+(?:pillars|legs|posts|supports|columns)\s+(?:(?:taller|higher)\s*"
-        r"[,(]?\s*)?" + _N
+        r"\b(?:make\s+(?:the|its|both)\s+(?:pillars|legs|posts|supports|columns)\s+(?:(?:taller|higher)\s*"
+        r"[,(]?\s*)?|(?:raise|lower|bring|set|change)\s+(?:the|its|both)\s+(?:pillars|legs|posts|supports|"
+        r"columns)\s+(?:(?:up|down)\s+)?to\s+)" + _N
         + r"(?:\s+(?:cubes?\s+)?(?:high|tall|each))?\)?(?:\s+(?:each|instead))?\s*$",
         "=pillars",
     ),

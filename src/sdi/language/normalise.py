@@ -56,6 +56,7 @@ _REFERENCE_NO = re.compile(
     r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
     r"exercise|lesson|experiment|sample|bench|rig|line\s+no|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
     r"(?:[:#]|-(?=\d))?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
+    r"|(?-i:\b[A-Z][A-Z0-9]{1,9}-\d+\b)"  # a ticket's key: "SDI-101", "WO-3321"
     r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
     re.IGNORECASE,
 )
@@ -921,8 +922,142 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:mm|cm|m|cubes?))\s+(?:in\s+)?between(?:\s+(?:each(?:\s+(?:one|"
                 r"other|of\s+them))?|them(?:\s+all)?|the\s+two|both))?(?=\s*(?:$|[,.;!]))", re.I),
      r"\1 apart"),
+    # a bricklayer's words: "a stretcher course of seven" is a row of 7, "single skin" one
+    # brick thick ("course" alone stays a level: "3 courses high")
+    (re.compile(r"\b(?:(?:stretcher|header|brick|soldier)\s+)?course\s+of\s+(?=(?:\d+|one|two|three|four|"
+                r"five|six|seven|eight|nine|ten|eleven|twelve)\b)", re.I), "row of "),
+    (re.compile(r"\b(?:double|two)[- ]skin\b(?![^.;]*\b(?:\d+|one|two|three)\s+(?:thick|deep|wide"
+                r")\b)",
+                re.I), "two thick"),
+    (re.compile(r"\b(?:single|double|two)[- ]skin\b", re.I), " "),  # one brick thick, as built
+    # "… on top, straight up -- no offset": stacked square, as SDI stacks
+    (re.compile(r"\s*[,;]?\s*(?:[-\u2013\u2014]+\s*)?(?:with\s+)?(?:no|zero|without(?:\s+any)?)\s+"
+                r"(?:offset|overhang|stagger)\b", re.I), " "),
+    # "a lintel across the tops of them": across them
+    (re.compile(r"\b(across|over|spanning)\s+(?:the\s+tops(?:\s+of\s+(?:them|both|the\s+two(?:\s+\w+)?|"
+                r"the\s+(?:posts|towers|pillars|columns|legs|stacks)))?|the\s+top\s+of\s+(?:them|both|"
+                r"the\s+two(?:\s+\w+)?)|their\s+tops|both\s+tops)\b", re.I), r"\1 them"),
+    # "a panel, flat on the bench: two by five": a panel said flat lies on the table (it stood up)
+    (re.compile(r"\b(?:panel|board|sheet)(s?)\b(?=[^.;:]*?(?::[^.;]*)?\b(?:flat|lying\s+down|"
+                r"laid\s+down)\b(?!\s+(?:roof|top)))|\b(?<=flat\s)(?:panel|board|sheet)(s?)\b",
+                re.I),
+     r"slab\1\2"),
+    # "flat on the floor", "on the ground", "on the bench": on the table (the floor was a grid)
+    (re.compile(r"\b(on|onto)\s+the\s+(?:floor|ground|bench|workbench|mat|carpet|work\s+surface)\b"
+                r"(?!\s+(?:of|plan))", re.I), r"\1 the table"),
+    # "one of those Egyptian pyramids": one pyramid (a pyramid of 1 was built, and a grid)
+    (re.compile(r"\bone\s+of\s+(?:those|these)\s+((?:[a-z-]+\s+){0,2}?)([a-z]+s)\b", re.I),
+     lambda m: next((f"a {m.group(1)}{w}" for w in (m.group(2)[:-1], m.group(2)[:-2])
+                     if w.lower() in lx.SHAPE_WORDS), m.group(0))),
+    # "a pyramid, a proper square one, five wide": the same pyramid, square (a grid was built)
+    (re.compile(r"\b(an?\s+)((?:[a-z-]+\s+){0,2}?)([a-z]+)\s*,\s*an?\s+(?:(?:proper|real|nice|good|"
+                r"classic|true|properly)\s+)?(square|solid|hollow|3-?d|2-?d|flat)\s+one\s*(?=,)",
+                re.I),
+     lambda m: f"{m.group(1)}{m.group(2)}{m.group(4)} {m.group(3)}"
+     if m.group(3).lower() in lx.SHAPE_WORDS else m.group(0)),
+    # "a row of five, like soldiers standing in a line": a likeness of the row, not a second one
+    (re.compile(r"\s*,?\s*\b(?:just\s+)?like\s+(?:\w+\s+){0,2}?\w+s\s+(?:standing|lined\s+up|waiting|"
+                r"marching|sitting|all)\s+in\s+an?\s+(?:straight\s+)?(?:line|row|queue)\b", re.I),
+     " "),
+    # "3 stacks in a line going front to back": the line's way
+    (re.compile(r"\b(in\s+an?\s+(?:straight\s+)?(?:line|row))\s+(?:going|running|heading|laid\s+out)\s+"
+                r"(?=(?:from\s+)?(?:the\s+)?(?:front|back|left|right)\s+to\b)", re.I), r"\1 "),
+    # "five long and a couple high": two high (read as a count of two parts, dropped)
+    (re.compile(r"\ba\s+couple\s+(?:of\s+)?(?=(?:cubes?\s+|blocks?\s+|bricks?\s+)?(?:high|tall|long|wide|"
+                r"deep)\b)", re.I), "2 "),
+    # "a square, 3 blocks on each side": 3 by 3 (walls were put on its sides)
+    (re.compile(r"\b(square|ring|enclosure|fence|pen|frame|border)\s*,?\s*(?:with\s+)?("
+                + _NUM + r")\s+"
+                r"(?:cubes?\s+|blocks?\s+|bricks?\s+|parts?\s+)?(?:on|along|per|to|for)\s+(?:each|every|a)\s+"
+                r"side\b", re.I), r"\1 \2 by \2"),
+    # "a ring around an empty 3x3 centre": the ring round that space, 5 by 5 (a space not said
+    # empty may be the ring's own size: left as it was)
+    (re.compile(r"\b(ring|fence|wall|border|barrier|enclosure)\b((?:\s+of\s+\w+)?)\s+(?:(?:all\s+)?"
+                r"(?:a)?round|surrounding|enclosing)\s+an?\s+(?:empty|open|clear|free)\s+(\d+)\s*(?:x|by)\s*"
+                r"(\d+)\s+(?:(?:floor|empty|open)\s+)?(?:centre|center|space|area|hole|middle|gap|"
+                r"courtyard)\b", re.I),
+     lambda m: f"{m.group(1)}{m.group(2)} {int(m.group(3)) + 2} by {int(m.group(4)) + 2}"),
+    # "Materials: 5 cm cubes.": the parts SDI has
+    (re.compile(r"(^|[.;!?\n]\s*)(?:materials?|parts?|using|stock)\s*:\s*(?:5\s*cm|50\s*mm)\s+"
+                r"(?:cubes?|blocks?)\s*(?:[.;!?]|$)\s*", re.I), r"\1"),
+    # "ring / fence thing": two words for one structure, the first named
+    (re.compile(r"\b([a-z]+)\s*/\s*([a-z]+)\b(?:\s+(?:thing|thingy|type|kind|sort))?", re.I),
+     lambda m: m.group(1) if (m.group(1).lower() in lx.SHAPE_WORDS
+                              and m.group(2).lower() in lx.SHAPE_WORDS
+                              and m.group(1).lower() not in lx.AMBIGUOUS_SHAPES) else m.group(0)),
+    # "each arm two blocks out from the middle", "arm length 2 from the centre cube": arms of 2
+    # (the 2 was read as a gap)
+    (re.compile(r"\b(?:(?:each|every)\s+arm\s+(?:is\s+)?|arms?\s+length\s+(?:of\s+)?)("
+                + _NUM + r")"
+                r"(?:\s+(?:cubes?|blocks?|bricks?))?(?:\s+long)?(?:\s+out)?\s+(?:from|off)\s+the\s+"
+                r"(?:centre|center|middle)(?:\s+(?:cube|block|one))?\b", re.I), r"arms of \1"),
+    # "a plus sign — a cross — 1 block in the middle and 1 on each side": arms of 1
+    (re.compile(r"\b(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?in\s+the\s+(?:middle|centre|center"
+                                r")\s*,?\s*"
+                r"(?:and|with|plus)\s+(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?(?:on|to|off)\s+"
+                r"(?:each|every|all\s+four|all)\s+sides?\b", re.I),
+     lambda m: f"arms of {m.group(2)}"
+     if re.search(r"\b(?:cross|plus)\b", m.string[: m.start()], re.I)
+     and m.group(1).lower() in ("1", "one") else m.group(0)),
+    # a CAD user's height: "extrude 1", "4 units in +Z", "boss-extrude a 2x3 footprint, depth 2"
+    (re.compile(r"\bextrude[sd]?\s+(?:it\s+|by\s+)?(" + _NUM + r")(?:\s+(?:units?|cubes?|blocks?|"
+                r"layers?))?(?:\s+(?:in|along)\s+\+?z)?\b", re.I), r"\1 high"),
+    (re.compile(r"\b(" + _NUM + r")\s+(?:units?|cubes?|blocks?|levels?)\s+(?:in|along|up\s+in)\s+"
+                r"(?:the\s+)?\+?z(?:[\s-]+(?:axis|direction))?\b", re.I), r"\1 high"),
+    (re.compile(r"(\bextrude[^.;]*?)\b(?:depth|distance)\s+(?:of\s+)?(" + _NUM + r")(?:\s+units?)"
+                                                                                 r"?\b",
+                re.I), r"\1 \2 high"),
+    # "T profile: flange 5 cubes, web 3 cubes": a T, its bar and its stem
+    (re.compile(r"\b([ltu])[\s-]+(?:profile|section|beam)\b", re.I), r"\1 shape"),
+    (re.compile(r"\b(t[\s-]+shape\b[^.;]*?)\bflange\s+(?:of\s+)?(?=" + _NUM + r"\b)", re.I),
+     r"\1bar of "),
+    (re.compile(r"\b(t[\s-]+shape\b[^.;]*?)\bweb\s+(?:of\s+)?(?=" + _NUM + r"\b)", re.I),
+     r"\1stem of "),
+    # "Fancy a pyramid? Square base of three": an offer, then what it is (two were built)
+    (re.compile(r"\b((?:fancy|how\s+about|what\s+about|ready\s+for|up\s+for|shall\s+we\s+(?:do|build|"
+                r"make|try))\s+(?:a|an|some|one)\s+(?:[a-z-]+\s+){0,2}?[a-z]+)\s*\?\s*(?=[A-Za-z0-9])",
+                re.I), r"\1, "),
+    # "I want a castle. Make a small one.": that one, small (the "one" was its size)
+    (re.compile(r"\s*[.!?]\s*(?:now\s+|please\s+|just\s+)?(?:make|build|do|give\s+me|let'?s\s+(?:make|"
+                r"build|do)|i'?d\s+like)\s+(?:me\s+|us\s+)?an?\s+((?:small|little|big|large|tall|short|low|"
+                r"wide|long|tiny|huge|bigger|smaller|taller|shorter)\s+)one\b", re.I),
+     r", a \1one"),
+    # "a pyramid — 3 at the bottom, then 2, then 1, in a single line": a flat pyramid
+    (re.compile(r"(\bpyramid\b[^.;?]*?)\s*,?\s*\bin\s+an?\s+(?:single|flat|straight)\s+(?:line|row)\b",
+                re.I), r"\1, flat"),
+    # "a table — four legs, each 2 high, and a top": the table's own legs
+    (re.compile(r"\b(table|canopy|pavilion|shelter|gazebo)\s*(?:[\u2014\u2013]|\s-+)\s*(?=(?:four|4|"
+                r"three|3|two|2|six|6)\s+legs\b)", re.I), r"\1 with "),
+    # "Frame me a box", "knock me up a wall": a way to say build
+    (re.compile(r"\b(?:frame|knock|rustle|whip|throw|fix)\s+(?:me|us)\s+(?:up\s+)?(?=an?\s)", re.I),
+     "build me "),
+    # a carpenter's "header" laid across posts is a lintel
+    (re.compile(r"\bheader(s?)(?=\s+(?:beam\s+|board\s+)?(?:across|over|on\s+top|atop|spanning|between|"
+                r"from)\b)", re.I), r"lintel\1"),
+    # radio procedure: "Robot, this is Base.", "Base to Robot.", "… Over.", "Break.", "I say
+    # again": who calls whom and when the message ends ("Base" was a platform)
+    (re.compile(r"(^|[.;!?\n]\s*)(?:(?:robot|sdi|cell)\s*,\s*(?:this\s+is\s+)?base|base\s+(?:to|calling)\s+"
+                r"(?:robot|sdi|cell)|(?:robot|sdi|cell)\s+(?:from|this\s+is)\s+base|this\s+is\s+base)\s*"
+                r"[.,:;!]+\s*", re.I), r"\1"),
+    (re.compile(r"(?:[.;!]|(?<=[a-z]),)\s*(?:over(?:\s+and\s+out)?|out|roger)\s*[.!]?\s*$", re.I),
+     "."),
+    (re.compile(r"(^|[.;!?]\s*)break\s*[.,:;!]+\s*", re.I), r"\1"),
+    (re.compile(r"(^|[.;!?]\s*)i\s+say\s+again\s*[.,:;!]+[^.;!?]*[.;!?]?\s*", re.I),
+     r"\1"),  # a repeat
+    (re.compile(r"\s*,\s*over\s*[.,]\s*(?=\w)", re.I), ". "),
     # "Goal: a wall …", "Exercise 15 — …", "this time": a label or a framing, not the build
     (re.compile(r"(^|[.;!?\n]\s*)(?:goal|objective|aim|task|deliverable)\s*:\s*", re.I), r"\1"),
+    (re.compile(r"(^|[.;!?\n]\s*)(?:(?:the\s+)?same\s+as\s+(?:before|last\s+time|yesterday|the\s+last\s+"
+                r"(?:one|run|job|time))|as\s+before)\s*[,:;\-\u2013\u2014]+\s*", re.I), r"\1"),
+    # "Previous bridge had 2-high legs; raise the legs to 3": that bridge, then changed
+    (re.compile(r"(^|[.;!?\n]\s*)(?:the\s+)?(?:previous|last|earlier|old)\s+(tower|stack|column|row|wall|block|"
+                r"slab|grid|layer|pyramid|staircase|bridge|arch|ring|enclosure|table|castle|cross)\s+(?:had|has|"
+                r"used)\s+(?=\w)", re.I), r"\1a \2 with "),
+    # "last run … at the front; this time put the same tower at the back": that one, moved
+    (re.compile(r"\bthis\s+time\s*,?\s*((?:just\s+)?(?:move|put|place|build|set|make)\s+)the\s+same\s+"
+                r"(?:one|tower|stack|column|pillar|row|wall|block|slab|grid|layer|pyramid|staircase|bridge|"
+                r"arch|ring|enclosure|table|castle|cross)\b(?=\s*,?\s*(?:but\s+)?(?:to|towards|at|on|in)\s)",
+                re.I), r"\1it"),
     (re.compile(r"\bthis\s+time\b", re.I), " "),
     (re.compile(r"(\d\s*(?:mm|cm|m)?)\s+in\s+plan\b", re.I), r"\1"),
     # "a gate made of two 4-cube posts and a lintel": the posts are its own
@@ -1798,6 +1933,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?![^.;,]*\b(?:ends?|sides?|corners?|edges?)\b)", re.I),
      lambda m: "add one more layer" if _named_last(m.string[: m.start()]) in ("row", "grid", "wall")
      else m.group(0)),
+    # "a row of 5 and, on top of its middle cube, a tower of 2": the tower, then where it stands
+    (re.compile(r"\b(and|then)\s*,?\s*((?:up)?on\s+(?:(?:the\s+)?top\s+of\s+)?(?:it|its\s+(?:\w+[\s-]+)?"
+                r"(?:cube|block|end|middle|centre|center|corner))|on\s+top)\s*,\s*(an?\s+[^.;?,]+)",
+                re.I),
+     r"\1 \3 \2"),
     # "a tower of 3 on top of the middle cube of the row": on the middle of the row
     (re.compile(r"\bon\s+(?:top\s+of\s+)?the\s+(?:middle|centre|center)\s+(?:cube|one|block|brick|part)\s+"
                 r"of\s+(?:the|that|this)\s+(row|wall|line|slab|platform)\b", re.I),
@@ -2163,9 +2303,21 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\ba\s+(?:third|fourth|fifth|sixth)\s+(?:one\s+)?(?=(?:of|with)\s+(?:\d|one|two|three|four|"
                 r"five|six|seven|eight|nine|ten)\b)", re.I), "another "),
     # "two walls forming a corner", "two rows making an L": one L shape
-    (re.compile(r"\btwo\s+(walls|rows)\s+(?:forming|making|that\s+form|that\s+make|meeting\s+(?:at|in))\s+"
-                r"(?:a\s+)?(?:corner|an?\s+l(?:[\s-]shape)?|right\s+angle)\b", re.I),
-     lambda m: "an L shape 2 high" if m.group(1).lower() == "walls" else "an L shape"),
+    # "two runs meeting at right angles, 5 and 4 bricks": its arms
+    (re.compile(r"\btwo\s+(walls|rows|runs|lines|lengths|courses)\s+(?:(?:forming|making|that\s+form|that\s+"
+                r"make|meeting\s+(?:at|in)|that\s+meet\s+(?:at|in)|joined\s+at|joining\s+at|at)\s+"
+                r"(?:a\s+)?(?:corner|an?\s+l(?:[\s-]shape)?|right\s+angles?|90(?:\s*degrees|\s*°)?)"
+                r"(?:\s+to\s+each\s+other)?)\b", re.I),
+     lambda m: "an L shape 2 high" if m.group(1).lower() == "walls" and not re.search(
+         r"\b(?:high|tall|courses|layers|levels)\b", m.string[m.end():].split(".")[0], re.I)
+     else "an L shape"),
+    # "an L shape, 4 and 3 long, 2 high": its arms, then its height
+    (re.compile(r"(\b(?:l[\s-]shape[d]?|an\s+l)\b[^.;\d]{0,30}?)\b(" + _NUM + r"\s+and\s+" + _NUM
+                + r")\s+"
+                r"(?:cubes?\s+|bricks?\s+|parts?\s+)?long\s*,\s*(?=" + _NUM + r"\s+(?:cubes?\s+)?"
+                                                                              r"(?:high|tall)\b)",
+                re.I),
+     lambda m: m.group(1).rstrip(" ,") + " " + re.sub(r"(?i)\s+and\s+", " by ", m.group(2)) + ", "),
     # "Then 1 on top of that": one cube on top
     (re.compile(r"\b(then|and|plus)\s+(?:1|one)\s+(?=(?:on\s+top|on\s+it|up\s+top|atop)\b)", re.I),
      r"\1 a cube "),
@@ -2783,14 +2935,14 @@ _SAID_DIGIT = {w: str(n) for w, n in _DIGITS.items() if n <= 9} | dict.fromkeys(
 _DIGITS_SAID = r"(?:zero|nought|oh|o|one|two|three|four|five|six|seven|eight|nine|\d)"
 _SPOKEN_DECIMAL = re.compile(
     rf"(?:(?<=\bx\s)|(?<=\by\s)|(?<=\bat\s)|(?<=[=:]\s)|(?<=\bis\s)|\b(?=zero\b|nought\b))"
-    rf"(?:(zero|nought|oh|\d)\s+)?point\s+({_DIGITS_SAID}(?:\s+{_DIGITS_SAID})?)\b",
+    rf"(?:(zero|nought|oh|\d)[\s-]+)?point[\s-]+({_DIGITS_SAID}(?:[\s-]+{_DIGITS_SAID})?)\b",
     re.I,
 )
 """A decimal said as a speech recogniser writes it: "x zero point three five", "y point two"."""
 
 
 def _spoken_decimal(m: re.Match[str]) -> str:
-    digits = "".join(_SAID_DIGIT.get(w.lower(), w) for w in m.group(2).split())
+    digits = "".join(_SAID_DIGIT.get(w.lower(), w) for w in re.split(r"[\s-]+", m.group(2)))
     whole = _SAID_DIGIT.get((m.group(1) or "0").lower(), m.group(1) or "0")
     return f"{whole}.{digits}"
 
@@ -3034,8 +3186,23 @@ _LABELLED = re.compile(
     rf"(?P<labels>{_LABEL}(?:\s*[x×*]\s*{_LABEL}){{1,2}})\s*\)?(?!\w)",
     re.IGNORECASE,
 )
+_LETTERED_ONE = r"([LWHD])\s*[=:]?\s*(\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?)"
+_LETTERED = re.compile(
+    rf"(?-i:\b{_LETTERED_ONE}(?:\s*[x×*,]\s*|\s+){_LETTERED_ONE}(?:(?:\s*[x×*,]\s*|\s+){_LETTERED_ONE})?)"
+    r"(?!\w)"
+)
+"""'L3 x W2 x H2': each value after the letter of its dimension (the 110 of a ticket key was
+taken as the row's length, the sizes lost)."""
+_AXIS_EACH_ONE = r"(\d+(?:\.\d+)?(?:\s*(?:mm|cm|m)\b)?)\s*\(\s*([xyz])\s*\)"
+_AXIS_EACH = re.compile(
+    rf"\b{_AXIS_EACH_ONE}\s*(?:by|x|×|\*)\s*{_AXIS_EACH_ONE}(?:\s*(?:by|x|×|\*)\s*{_AXIS_EACH_ONE})?",
+    re.IGNORECASE,
+)
+"""'4 (x) by 2 (y) by 1 (z)': each value the size along the cell's axis after it (x away from the
+robot, y across, z up); it was read as a count of 4."""
 _XYZ_LABEL = re.compile(r"\(\s*x\s*[x×*]\s*y(\s*[x×*]\s*z)?\s*\)", re.IGNORECASE)
 _DIMENSION_OF = {"l": "long", "w": "wide", "h": "high", "d": "deep"}
+_AXIS_LABEL = {"x": "d", "y": "w", "z": "h"}  # x away from the robot, y across, z up
 
 
 _SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
@@ -3314,6 +3481,123 @@ _HEADING = re.compile(
 )
 
 
+_ANSWERED = re.compile(
+    r"(?:^|(?<=[.!?])\s)(?P<question>[^.!?]*\?)\s*(?P<yes>(?:yes|yeah|yep|yup|ok(?:ay)?|sure|right)\b\s*[,.!:;-]*\s*)",
+    re.IGNORECASE,
+)
+"""'Should the wall be 2 high? Yes, let's do a wall 6 long and 2 high.': a question the command
+answers itself (the question's wall was built as well)."""
+
+
+def _answered(text: str, notes: list[str]) -> str:
+    """A question answered "yes, …" by a sentence that names a structure itself: the answer is
+    the build, the question goes (an answer that only refers back keeps it)."""
+    m = _ANSWERED.search(text)
+    if m is None:
+        return text
+    answer = re.split(r"[.!?](?:\s|$)", text[m.end() :])[0]
+    asked = families_said(m.group("question"))
+    if not asked or not families_said(answer):
+        return text
+    notes.append(f"read '{m.group('question').strip()}' as a question the words after it answer")
+    return text[: m.start()] + " " + text[m.end("yes") :]
+
+
+_VAGUE_THEN_SAID = re.compile(
+    rf"\s*(?:[—–-]+|,|;|\.)\s*(?:say|let'?s\s+say|call\s+it|so)\s+({_NUM})\s+and\s+({_NUM})"
+    r"(?:\s+(?:cubes?|blocks?|high|tall))?\s*(?=[.!]|$)",
+    re.IGNORECASE,
+)
+"""'a tall tower … and a short one … — say five and two': the numbers for the vague sizes, in
+order (the tall one was 6, the short one 5)."""
+
+
+def _vague_then_said(text: str, notes: list[str]) -> str:
+    """Two sizes said vaguely ("a tall tower … a short one"), then two numbers for them."""
+    m = _VAGUE_THEN_SAID.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    vague = list(re.finditer(r"\b(tall|short|high|low|taller|shorter|big|small|little)\s+(?=(?:to"
+                             r"wer|stack|"
+                             r"column|pillar|post|one)\b)", before, re.I))  # fmt: skip
+    if len(vague) != 2:
+        return text
+    values = words_to_numbers([m.group(1).lower(), m.group(2).lower()])
+    out, at = [], 0
+    for v, value in zip(vague, values, strict=True):
+        out += [before[at : v.start()], f"{value}-high "]
+        at = v.end()
+    first, second = (v.group(1).lower() for v in vague)
+    notes.append(f"read '{m.group(0).strip(' ,;.—–-')}' as the sizes of the {first} and the "
+                 f"{second} one")  # fmt: skip
+    return "".join(out) + before[at:] + text[m.end() :]
+
+
+_TWICE_NAMED = re.compile(
+    r"\b(?:an?|the)\s+((?:[a-z]+[\s-]){0,2}?[a-z]+)\s*(?:,|\u2014|\u2013|\s-+\s)\s*(?:an?|the)\s+"
+    r"((?:[a-z]+[\s-]){0,2}?[a-z]+)\s*(?=,|\u2014|\u2013|\s-+\s)",
+    re.IGNORECASE,
+)
+"""'a plus sign — a cross — …', 'a cross-lap shape, a plus sign, …': one structure named twice."""
+
+
+def _named_twice(text: str, notes: list[str]) -> str:
+    """One structure named again in apposition: the second name goes (two were built)."""
+
+    def family(words: str) -> list[str]:
+        return families_said(re.sub(r"\bplus(?:\s+sign)?\b", "cross", words, flags=re.I))
+
+    def once(m: re.Match[str]) -> str:
+        first, second = family(m.group(1)), family(m.group(2))
+        listed = re.match(r"\s*,\s*(?:and|or|plus|then)\b", m.string[m.end() :], re.I)
+        if len(first) != 1 or first != second or listed:
+            return m.group(0)  # "a tower, a stack, and a wall": a list
+        if m.group(1).lower().split()[-1] == m.group(2).lower().split()[-1]:
+            return m.group(0)  # "a tower, a tower, …": two of them
+        dashed = not re.search(r",", m.group(0)) and not re.match(r"\s*,", m.string[m.end() :])
+        named_as = re.search(r"\b(?:sign|shape|shaped|thing|profile|form)\b", m.group(0), re.I)
+        if not (dashed or named_as):
+            return m.group(0)  # "a wall, a low one, …" may be a list: only a dash or a name
+        notes.append(f"read '{m.group(0).strip()}' as one {first[0]} named twice")
+        return m.group(0)[: m.end(1) - m.start()]
+
+    return _TWICE_NAMED.sub(once, text)
+
+
+_SWAP = re.compile(
+    r"(?:^|(?<=[.;!?,:\-\u2013\u2014])|\b(?:and|but|then)\b)\s*(?:(?:but|and|then|just|please|now)\s+)*"
+    r"(?P<said>(?:swap|switch|flip|reverse|mirror)\s+(?:(?:the\s+)?sides|them(?:\s+round|\s+around|\s+over)?|"
+    r"(?:the\s+)?(?:left\s+and\s+right|places|positions)|it(?:\s+round|\s+around)))"
+    r"(?:\s+(?:this\s+time|round|around|over))?(?:\s*,?\s*please)?\s*(?=$|[.;!?,])",
+    re.IGNORECASE,
+)
+"""'a tower of 3 to the left of a wall. Swap sides this time.': the sides said before, the other
+way round (it was refused: SDI cannot move what it built)."""
+
+
+def _swapped(text: str, notes: list[str]) -> str:
+    """The sides said before "swap sides", the other way round: left and right when a side was
+    said that way, else front and back. Only when sides were said, and only once."""
+    m = _SWAP.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    said = re.findall(r"\b(left|right)\b", before, re.I) or re.findall(r"\b(front|back)\b",
+                                                                        before, re.I)  # fmt: skip
+    if not said:
+        return text
+    pair = ("left", "right") if said[0].lower() in ("left", "right") else ("front", "back")
+
+    def other(w: re.Match[str]) -> str:
+        flipped = _OTHER_SIDE[w.group(0).lower()]
+        return flipped.capitalize() if w.group(0)[0].isupper() else flipped
+
+    swapped = re.sub(rf"\b(?:{pair[0]}|{pair[1]})\b", other, before, flags=re.IGNORECASE)
+    notes.append(f"read '{m.group('said')}' as {pair[0]} and {pair[1]} the other way round")
+    return swapped + text[m.end() :]
+
+
 def _named_heading(text: str, notes: list[str]) -> str:
     """ "Goods shed: a 3 by 4 enclosure, two high", "Tunnel portal -- an arch": a heading
     that names the thing (a word of its own before a structure noun) and the structure the
@@ -3350,6 +3634,10 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _numbered_steps(text, notes)  # "1. a row of 3 2. a row of 2 on top of it"
     text = _items_named(text)  # "… END OF ITEM 1": the structure item 1 is
     text = _named_heading(text, notes)  # "Goods shed: a 3 by 4 enclosure": the enclosure
+    text = _swapped(text, notes)  # "a tower left of a wall. Swap sides.": right of it
+    text = _answered(text, notes)  # "Should the wall be 2 high? Yes, a wall 6 long …"
+    text = _named_twice(text, notes)  # "a plus sign — a cross — 1 in the middle …"
+    text = _vague_then_said(text, notes)  # "a tall tower and a short one — say five and two"
     text = _ORDINAL_FIGURE.sub(lambda m: _ORDINAL_WORD[m.group(1)], text)  # "a 2nd row"
     text = _ALONE.sub(r"a single \1", text)  # "between them a cube alone": a cube, not a gap
 
@@ -3385,6 +3673,26 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     # "(X x Y x Z)": the cell's axes, x away from the robot (depth), y across, z up
     text = _XYZ_LABEL.sub(lambda m: "(D x W x H)" if m.group(1) else "(D x W)", text)
     text = _LABELLED.sub(labelled, text)  # "250mm x 100mm (L x H)": the label says which
+
+    def lettered(m: re.Match[str]) -> str:
+        pairs = [(m.group(i).lower(), m.group(i + 1)) for i in (1, 3, 5) if m.group(i)]
+        if len({lb for lb, _ in pairs}) != len(pairs):
+            return m.group(0)
+        said = " and ".join(f"{v} {_DIMENSION_OF[lb]}" for lb, v in pairs)
+        notes.append(f"read '{m.group(0).strip()}' as {said}")
+        return f" {said} "
+
+    text = _LETTERED.sub(lettered, text)  # "L3 x W2 x H2"
+
+    def along_axes(m: re.Match[str]) -> str:
+        pairs = [(m.group(i + 1).lower(), m.group(i)) for i in (1, 3, 5) if m.group(i)]
+        if len({axis for axis, _ in pairs}) != len(pairs):
+            return m.group(0)
+        said = " and ".join(f"{v} {_DIMENSION_OF[_AXIS_LABEL[axis]]}" for axis, v in pairs)
+        notes.append(f"read '{m.group(0).strip()}' as {said}")
+        return f" {said} "
+
+    text = _AXIS_EACH.sub(along_axes, text)  # "4 (x) by 2 (y) by 1 (z)"
 
     def glossed(m: re.Match[str]) -> str:
         notes.append(f"read '{m.group(0).strip()}' as {m.group(1)}")
@@ -3482,6 +3790,13 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _DECIMAL_COMMA_UNIT.sub(unit_comma, text)
 
     def reference(m: re.Match[str]) -> str:
+        if re.fullmatch(r"[A-Za-z]+-\d+", m.group(0)) and m.group(0).split("-")[0].lower() in (
+            lx.SHAPE_WORDS
+        ):
+            return m.group(0)  # "TOWER-3": a structure, sized
+        if re.fullmatch(r"[A-Z][A-Z0-9]{1,9}-\d+", m.group(0)):  # "SDI-110 Block.": a ticket
+            notes.append(f"ignored '{m.group(0)}': a reference number, not a size")
+            return " "
         sized = re.search(  # "Next job: 4-high tower"
             r"\d-(?:high|tall|long|wide|deep|cubes?|blocks?|levels?|layers?|steps?|tier)$",
             m.group(0),

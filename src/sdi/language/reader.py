@@ -935,10 +935,21 @@ _LONG_SIDE = re.compile(
 )
 """'Turn it so the long side runs left to right': which way a slab's long side runs."""
 
+_SIDE_BY_SIZE = re.compile(
+    r"\s*,?\s*(?:with\s+)?the\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)(?:[- ](?:cubes"
+    r"?|parts?|"
+    r"blocks?|bricks?))?(?:\s+(?:sides?|edges?|way|dimension|direction))?\s+(?:runs?|running|goes|going|"
+    r"lies|lying|pointing)\s+(?:from\s+)?"
+    r"(left\s+to\s+right|right\s+to\s+left|side\s+to\s+side|front\s+to\s+back|back\s+to\s+front)\b",
+    re.IGNORECASE,
+)
+"""'a block 3 wide, 2 deep, with the 3 running left to right': the side of that size runs that way
+(the block was turned the other way, silently)."""
+
 
 def _take_long_side(text: str, st: ReadState) -> str:
     """The way a structure's long (or short) side is said to run, taken from the words."""
-    m = _LONG_SIDE.search(text)
+    m = _LONG_SIDE.search(text) or _SIDE_BY_SIZE.search(text)
     if m is None:
         return text
     across = m.group(2).lower() in ("left to right", "right to left", "side to side")
@@ -1007,9 +1018,19 @@ def _long_side(structures: list[StructureDraft], st: ReadState) -> list[Structur
         st.notes.append(f"ignored '{said}': no slab, block or wall to turn")
         return structures
     s = structures[k]
+    sides = [v for v in (s.length, s.width) if v is not None]
+    if which not in ("long", "short"):  # "the 3 running left to right": the side that long
+        size = int(words_to_numbers([which])[0])
+        if len(sides) == 2 and sides == [size, size]:
+            st.notes.append(f"'{said}': both sides of the {s.shape} are {size}, as built")
+            return structures
+        if size not in sides:
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': the {s.shape} has no side of {size} to turn")
+            return structures
+        which = "long" if size == max(sides) else "short"
     if which == "short":
         along = "x" if along == "y" else "y"
-    sides = [v for v in (s.length, s.width) if v is not None]
     update: dict[str, object] = {"axis": along}
     if s.shape in ("grid", "block") and len(sides) == 2:
         update |= {"length": max(sides), "width": min(sides)}

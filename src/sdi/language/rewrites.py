@@ -588,8 +588,8 @@ _REWRITES += [
         "read '{0}' as a column on its middle",
     ),
     (
-        re.compile(r"\bon\s+(?:its|the)\s+(?:centre|center|middle|top)\b(?!\s+(?:of|one|tower|stack|column|"
-                   r"block|slab|pillar|wall|row)\b)", re.I),
+        re.compile(r"\bon\s+(?:its|the)\s+(?:centre|center|middle|top)\b(?:\s+(?:cube|part|brick)\b(?!\s+of\b))?"
+                   r"(?!\s+(?:of|one|tower|stack|column|block|slab|pillar|wall|row)\b)", re.I),
         " on top ",
         "",
     ),
@@ -822,11 +822,12 @@ _REWRITES += [
     ),
     (  # "a cross with arms 2 cubes long": each arm from the middle, a bar of 5
         re.compile(
-            r"\b(?:cross|plus(?:\s+sign)?)(?:[\s-]*shape[ds]?(?:\s+\w+)?)?(?:\s+(?:made|built)\s+(?:of|"
-            r"from|out\s+of)\s+(?:\w+\s+)?(?:cubes?|blocks?))?\s*[,?.!:;]?\s+(?:with\s+)?(?:(?:its|the)\s+)?"
-            r"(?:arms?|each\s+arm)\s+(?:(?:are|is)\s+)?(?:of\s+)?(\d+|one|two|three|four)(?:\s*(?:cubes?|"
-            r"blocks?)\b|\s*(mm|cm|m)\b)?(?:\s+long\b)?(?:\s+each\b)?(?:\s+out(?:\s+from\s+the\s+(?:centre|center|middle)"
-            r"(?:\s+cube)?)?\b)?",
+            r"\b(?:cross|plus(?:\s+sign)?)(?:[\s-]*(?:lap[\s-]+)?shape[ds]?(?:\s+\w+)?)?(?:\s+(?:made|built)\s+(?:of|"
+            r"from|out\s+of)\s+(?:\w+\s+)?(?:cubes?|blocks?))?(?:\s*,[^.;:,]{0,30},(?:[^.;:,]{0,20},)?)?"
+            r"\s*[,?.!:;\u2014\u2013-]?\s+(?:with\s+)?(?:(?:its|the)\s+)?"
+            r"(?:arms?(?:\s+length)?|each\s+arm)\s+(?:(?:are|is)\s+)?(?:of\s+)?(\d+|one|two|three|four)(?:\s*(?:cubes?|"
+            r"blocks?)\b|\s*(mm|cm|m)\b)?(?:\s+long\b)?(?:\s+each\b)?(?:(?:\s+out)?(?:\s+from\s+the\s+(?:centre|"
+            r"center|middle)(?:\s+(?:cube|block))?)|\s+out\b)?",
             re.IGNORECASE,
         ),
         "{cross_arms}",
@@ -1663,8 +1664,8 @@ _REWRITES += [
     ),
     (  # "and erect upon its central cube a column of three": on top of it, centred
         re.compile(
-            r"\b(?:up)?on\s+its\s+(?:central|centre|center|middle)\s+(?:cube|part|block|cell|position|"
-            r"square|brick)\b",
+            r"\b(?:up)?on\s+(?:(?:the\s+)?top\s+of\s+)?its\s+(?:central|centre|center|middle)\s+(?:cube|part|block|"
+            r"cell|position|square|brick)\b",
             re.IGNORECASE,
         ),
         " on top of it ",
@@ -2298,7 +2299,7 @@ _REWRITES += [
     ),
     (  # "two towers of 3 and a beam across": the beam lies across the towers
         re.compile(
-            r"\b(towers?|pillars?|columns?|stacks?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
+            r"\b(towers?|pillars?|columns?|stacks?|posts?|uprights?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
             r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar)\s+(?:across|over|on\s+top)"
             r"(?:\s+(?:them|the\s+top|of\s+them|both))?\b",
             re.IGNORECASE,
@@ -2418,7 +2419,8 @@ _REWRITES += [
         "",
     ),
     (
-        re.compile(r"\b(?:shape|structure|type|kind|item|object)\s*[:=]\s*", re.IGNORECASE),
+        re.compile(r"(?<!\b[ltu][\s-])\b(?:shape|structure|type|kind|item|object)\s*[:=]\s*",
+                   re.IGNORECASE),  # not "U-shape:", a heading of its own
         " a ",
         "",
     ),
@@ -3739,8 +3741,10 @@ def _upright(text: str, st: ReadState) -> str:
         a, b = (int(v) for v in (flat.group(1, 2) if flat.group(1) else flat.group(3, 4)))
         on_end = re.search(r"\b(?:end|short)\b", up.group(0), re.IGNORECASE)
         long, high = (min(a, b), max(a, b)) if on_end else (max(a, b), min(a, b))
-        st.notes.append(f"read '{up.group(0)}' of the {a} by {b} {flat.group(0).split()[-1]} as "
-                        f"a wall {long} long and {high} high")  # fmt: skip
+        noun = flat.group(0).split()[-1]
+        noun = f" {noun}" if noun.isalpha() else ""  # "2 by 5" said with no noun
+        st.notes.append(f"read '{up.group(0)}' of the {a} by {b}{noun} as a wall {long} long and "
+                        f"{high} high")  # fmt: skip
         sentence = sentence[: up.start()] + sentence[up.end() :]
         sentence = _FLAT_SIZED.sub(f"wall {long} long and {high} high", sentence, count=1)
         sentence = re.sub(r",?\s*\bone\s+(?:cube|part|block)\s+thick\b", "", sentence, flags=re.I)

@@ -29,7 +29,8 @@ CONSULTED = _words(
     tightly together height around empty hollow space inside rectangular square per corner
     corners rising fill area densely joined next it separate table lay out into dense
     possible than as cube cubes block blocks part parts piece pieces brick bricks unit units
-    box boxes one ones single total overall level levels layer layers row rows shape shaped
+    box boxes cases carton cartons one ones single total overall level levels layer layers row rows
+    shape shaped
     form formed forming pattern arrangement configuration setup style sort kind type version
     copy edge edges end ends leg legs roof pillars pillar support supports foot feet apart
     spaced spacing gap gaps above over solid filled full compact tight close open centre
@@ -77,7 +78,8 @@ HARMLESS = _words(
     proper plonk plonked plonking pop popped somewhere finished result resulting end product
     completely totally fully entirely rebuild rebuilding rebuilt redo remake replace replacing
     replacement fallen collapsed segment shim shims case plumb rests sits hold holds run
-    fr ngl tbh lowkey highkey thingy thingie bc cuz coz lil bruh fam
+    fr ngl tbh lowkey highkey thingy thingie bc cuz coz lil bruh fam reckon reckons lovely ta cheers
+    properly proper
     """
 )
 

@@ -642,8 +642,11 @@ class _Parser:
                 or (len(self.hits) == 1 and self._said_hollow())
             ):
                 h.shape = "enclosure"  # "a 4x4 pad, hollow": the one structure named
-            if h.shape == "block" and self.word(h.index - 1) in ("hollow", "empty"):
-                h.shape = "enclosure"
+            if h.shape == "block" and (
+                self.word(h.index - 1) in ("hollow", "empty")
+                or (len(self.hits) == 1 and self._said_hollow() and self._said_hollow_middle())
+            ):
+                h.shape = "enclosure"  # "a box, four by four, hollow in the middle"
         # the word "cube" as a shape is one part ("a single cube") unless sized: see `build`
         for h in self.hits:
             if self.word(h.index) == "cube" and h.shape == "block":
@@ -1328,7 +1331,11 @@ class _Parser:
                 continue
             # "pack 8 cubes into a compact cube", "stack 6 cubes as a pyramid": the verb's
             # shape gives way to the target named after it
-            if nxt and h.verb and between & {"into", "as", "forming", "form", "to"}:
+            if nxt and h.verb and (
+                between & {"into", "as", "forming", "form", "to"}
+                or (not nxt.verb and between <= {"a", "an", "the", "one", "single", "some",
+                                                  "solid"})
+            ):  # "stack a solid lump three by three by two": the lump, stacked
                 for key, value in h.params.items():
                     nxt.params.setdefault(key, value)
                 nxt.start = h.start
@@ -1790,9 +1797,24 @@ class _Parser:
 
     def _said_hollow(self) -> bool:
         return any(
-            t.text == "hollow" and self.word(j - 1) not in ("not", "no")
+            (t.text == "hollow" and self.word(j - 1) not in ("not", "no"))
+            or (t.text == "empty" and self.word(j - 1) not in ("not", "no") and (
+                self.word(j + 1) == "inside"
+                or (self.word(j + 1) == "in" and self.word(j + 3) in ("middle", "centre", "center"))
+            ))  # "a square, 3 by 3, empty in the middle"
             for j, t in enumerate(self.toks)
         )
+
+    def _said_hollow_middle(self) -> bool:
+        """ "hollow in the middle", "hollow inside": its middle left out (not a hollow block's
+        own inside, which SDI cannot build)."""
+        return any(
+            t.text == "hollow"
+            and (self.word(j + 1) in ("inside", "within")
+                 or (self.word(j + 1) in ("in", "at") and self.word(j + 3) in ("middle", "centre",
+                                                                           "center")))
+            for j, t in enumerate(self.toks)
+        )  # fmt: skip
 
     def parse(self) -> SpecDraft:
         if not self.toks:

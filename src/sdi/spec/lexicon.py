@@ -378,6 +378,9 @@ PART_WORDS = {
     "elements",
     "box",
     "boxes",
+    "cases",  # a palletiser's: "a stack of 6 cases"
+    "carton",
+    "cartons",
     "item",
     "items",
     "object",
