@@ -8853,3 +8853,34 @@ def test_a_ring_round_a_space_an_empty_middle_and_a_cad_extrusion():
     r = _built_as_said("Put 3 stacks in a line going front to back, heights 1, 2 and 3 going "
                        "back.", ["tower"] * 3, [1, 2, 3])  # fmt: skip
     assert len({round(o.position[1], 3) for o in r.layout.objects}) == 1
+
+
+def test_one_of_a_line_picked_by_its_place_or_sized_by_another():
+    # "except the third from the left which should be 4": four towers of 2
+    r = plan("Four display towers in a line left to right, all 2 high, except the third from the "
+             "left which should be 4.")  # fmt: skip
+    assert r.status == "success", r.notes
+    by_y = [n for _, n in sorted((y, n) for (_, y), n in _columns(r).items())]  # right to left
+    assert by_y == [2, 4, 2, 2]  # the third from the left is the second from the right
+    # "make the second from the front height four": ignored
+    r = plan("Robot, Base. Three towers in a line front to back, all height two. Then make the "
+             "second from the front height four. Over.")  # fmt: skip
+    assert r.status == "success", r.notes
+    assert [n for _, n in sorted((x, n) for (x, _), n in _columns(r).items())] == [2, 4, 2]
+    # "the second one should be 4 high": all three 4 high
+    _built_as_said("three towers of 2 in a row; the second one should be 4 high",
+                   ["tower"] * 3, [2, 2, 4])  # fmt: skip
+    # "twice as long as it is high, and 3 high": 4 long (the default)
+    _built_as_said("Can you make a wall twice as long as it is high, and 3 high?", ["wall"],
+                   [3] * 6)  # fmt: skip
+    # "the one on the left twice as tall as the one on the right, which is 3 storeys": two of 3
+    r = _built_as_said("Picture two skyscrapers, the one on the left twice as tall as the one on "
+                       "the right, which is 3 storeys.", ["tower", "tower"], [3, 6])  # fmt: skip
+    left = max(_columns(r).items(), key=lambda kv: kv[0][1])
+    assert left[1] == 6
+    _built_as_said("Two towers: the second is twice as tall as the first, and the first is 3.",
+                   ["tower", "tower"], [3, 6])  # fmt: skip
+    # "Graphic wall: 5 long, 4 high, and a plinth …": the heading's wall was dropped
+    r = plan("Graphic wall: 5 long, 4 high, and a 2-high plinth 1x1 in front of it.")
+    assert [s.shape for s in r.spec.structures] == ["wall", "block"]
+    assert sorted(_columns(r).values()) == [2, 4, 4, 4, 4, 4]

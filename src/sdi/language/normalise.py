@@ -3565,6 +3565,137 @@ def _named_twice(text: str, notes: list[str]) -> str:
     return _TWICE_NAMED.sub(once, text)
 
 
+_AS_IT_IS = re.compile(
+    r"\b(twice|double|three\s+times|thrice|half|just|exactly)\s+as\s+(long|wide)\s+as\s+it\s+is\s+"
+    r"(?:high|tall)\b",
+    re.IGNORECASE,
+)
+_HEIGHT_SAID = re.compile(
+    rf"\b({_NUM})\s+(?:cubes?\s+|blocks?\s+|bricks?\s+|levels?\s+)?(?:high|tall)\b", re.I
+)
+_TIMES = {"twice": 2.0, "double": 2.0, "three": 3.0, "thrice": 3.0, "half": 0.5, "just": 1.0,
+          "exactly": 1.0}  # fmt: skip
+
+
+def _as_it_is_high(text: str, notes: list[str]) -> str:
+    """ "a wall twice as long as it is high, and 3 high": 6 long (the length was the default)."""
+    m = _AS_IT_IS.search(text)
+    if m is None:
+        return text
+    start = max(text.rfind(".", 0, m.start()), text.rfind(";", 0, m.start())) + 1
+    ends = [i for i in (text.find(".", m.end()), text.find(";", m.end())) if i >= 0]
+    heights = [h for h in _HEIGHT_SAID.finditer(text, start, min(ends, default=len(text)))
+               if not m.start() <= h.start() < m.end()]  # fmt: skip
+    if len(heights) != 1:
+        return text
+    high = int(words_to_numbers([heights[0].group(1).lower()])[0])
+    value = high * _TIMES[m.group(1).lower().split()[0]]
+    if value < 1 or value % 1:
+        return text
+    notes.append(f"read '{m.group(0)}' as {int(value)} {m.group(2).lower()} (it is {high} high)")
+    return text[: m.start()] + f"{int(value)} {m.group(2).lower()}" + text[m.end() :]
+
+
+_WHICH_ONE = (
+    r"(?:the\s+)?(?:one\s+on\s+the\s+(?:left|right)|(?:left|right)(?:\s+one)?|first(?:\s+one)?|"
+    r"second(?:\s+one)?|other(?:\s+one)?)"
+)
+_TIMES_THE_OTHER = re.compile(
+    r"\b(two|2)\s+(towers|stacks|columns|pillars|posts|skyscrapers|piles)\s*[:,;-]*\s*"
+    r"(?P<a>" + _WHICH_ONE + r")\s+(?:is\s+|being\s+)?(?P<times>twice|double|three\s+times|half)\s+"
+    r"as\s+(?:tall|high)\s+as\s+(?P<b>" + _WHICH_ONE + r")\s*,?\s*(?:which|and\s+(?:the\s+\w+"
+    r"(?:\s+one)?|that\s+one|it)|that)\s+(?:is|being|has)\s+(?P<n>" + _NUM + r")(?:\s+(?:cubes?|"
+    r"blocks?|storeys?|stories|levels?|floors?))?(?:\s+(?:high|tall))?",
+    re.IGNORECASE,
+)
+"""'two skyscrapers, the one on the left twice as tall as the one on the right, which is 3
+storeys', 'two towers: the second is twice as tall as the first, and the first is 3'."""
+
+
+def _times_the_other(text: str, notes: list[str]) -> str:
+    """Two towers, one a multiple of the other, the other's size said after: both sized."""
+    m = _TIMES_THE_OTHER.search(text)
+    if m is None:
+        return text
+
+    def which(said: str) -> str:  # "the one on the left": left; "the first one": first
+        return re.sub(r"^(?:the\s+)?(?:one\s+on\s+the\s+)?|\s+one$", "", said.lower())
+
+    a, b = which(m.group("a")), which(m.group("b"))
+    n = int(words_to_numbers([m.group("n").lower()])[0])
+    factor = _TIMES[m.group("times").lower().split()[0]]
+    if (n * factor) % 1 or a == b:
+        return text
+    sizes = {b: n, a: int(n * factor)}
+    noun = "tower" if m.group(2).lower() == "skyscrapers" else m.group(2).lower().rstrip("s")
+    if set(sizes) == {"left", "right"}:
+        said = (f"a {noun} of {sizes['left']} on the left and a {noun} of {sizes['right']} on "
+                "the right")  # fmt: skip
+    elif set(sizes) <= {"first", "second", "other"}:
+        first = sizes.get("first", sizes.get("other"))
+        second = sizes.get("second", sizes.get("other"))
+        said = f"a {noun} of {first} and a {noun} of {second}"
+    else:
+        return text
+    notes.append(f"read '{m.group(0)}' as {said}")
+    return text[: m.start()] + said + text[m.end() :]
+
+
+_ORDINAL_AT = {w: int(n) for n, w in _ORDINAL_WORD.items()}
+_FROM_SIDE = re.compile(
+    r"\bthe\s+(first|second|third|fourth|fifth|last)(?:\s+(?:one|tower|stack|column|pillar|post))?\s+"
+    r"from\s+the\s+(left|right|front|back)\b",
+    re.IGNORECASE,
+)
+_SAID_CHANGED = (
+    # "…, all 2 high, except the third which should be 4": a change of that one
+    (re.compile(r"\s*,?\s*\bexcept\s+(?:for\s+)?the\s+(first|second|third|fourth|fifth|last)(?:\s+one)?\s*,?\s*"
+                r"(?:which|that|who)\s+(?:should\s+be|is|must\s+be|will\s+be|has\s+to\s+be)\s+(?:height\s+)?(?="
+                + _NUM + r"\b)", re.I), r". make the \1 one "),
+    # "the second one should be 4 high", "make the second height four"
+    (re.compile(r"(?:^|(?<=[.;,]\s)|(?<=[.;,]))\s*(?:and\s+|but\s+|then\s+)?the\s+(first|second|third|fourth|fifth|last)"
+                r"\s+(?:one|tower|stack|column|pillar)\s+(?:should|must|has\s+to|needs\s+to)\s+be\s+(?:height\s+)?(?="
+                + _NUM + r"\b)", re.I), r" make the \1 one "),
+    (re.compile(r"\bmake\s+the\s+(first|second|third|fourth|fifth|last)(?:\s+one)?\s+(?:height|high)\s+(?:of\s+)?(?="
+                + _NUM + r"\b)", re.I), r"make the \1 one "),
+)
+
+
+def _ordinal_from_side(text: str, notes: list[str]) -> str:
+    """ "four towers in a line left to right, … the third from the left": the third in the
+    order they were said (from the other end, counted back); only when the line's way was
+    said (which one stands where is otherwise the composer's)."""
+    text = _from_side(text, notes)
+    for pattern, repl in _SAID_CHANGED:
+        text = pattern.sub(repl, text)
+    return text
+
+
+def _from_side(text: str, notes: list[str]) -> str:
+    m = _FROM_SIDE.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    way = re.search(r"\b(left|right|front|back)\s+to\s+(?:the\s+)?(left|right|front|back)\b",
+                    before, re.I)  # fmt: skip
+    count = re.search(rf"\b({_NUM})\s+(?:[a-z]+\s+)?(?:towers|stacks|columns|pillars|posts)\b",
+                      before, re.I)  # fmt: skip
+    if way is None or count is None:
+        return text
+    n = int(words_to_numbers([count.group(1).lower()])[0])
+    which, side = m.group(1).lower(), m.group(2).lower()
+    at = n if which == "last" else _ORDINAL_AT[which]
+    if side == way.group(2).lower():
+        at = n + 1 - at
+    elif side != way.group(1).lower():
+        return text
+    if not 1 <= at <= min(n, 10):
+        return text
+    notes.append(f"read '{m.group(0)}' as the {_ORDINAL_WORD[str(at)]} of the {n} said "
+                 f"{way.group(0)}")
+    return text[: m.start()] + f"the {_ORDINAL_WORD[str(at)]} one" + text[m.end() :]
+
+
 _SWAP = re.compile(
     r"(?:^|(?<=[.;!?,:\-\u2013\u2014])|\b(?:and|but|then)\b)\s*(?:(?:but|and|then|just|please|now)\s+)*"
     r"(?P<said>(?:swap|switch|flip|reverse|mirror)\s+(?:(?:the\s+)?sides|them(?:\s+round|\s+around|\s+over)?|"
@@ -3606,6 +3737,10 @@ def _named_heading(text: str, notes: list[str]) -> str:
     described = families_said(text[m.end() :]) if m else []
     if m is None or not families_said(m.group(2)) or not described:
         return text
+    first = re.split(r"\band\b|[.;]|,\s*(?:an?|one|two|three|four)\s", text[m.end() :],
+                     maxsplit=1)[0]  # fmt: skip
+    if not families_said(first):
+        return text  # "Graphic wall: 5 long, 4 high, and a plinth …": the wall's own sizes first
     said = [w.lower() for w in m.group(1).split()]
     listed = set(families_said(m.group(0))) <= set(described)
     if said[0] in ("a", "an", "the"):
@@ -3637,7 +3772,10 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _swapped(text, notes)  # "a tower left of a wall. Swap sides.": right of it
     text = _answered(text, notes)  # "Should the wall be 2 high? Yes, a wall 6 long …"
     text = _named_twice(text, notes)  # "a plus sign — a cross — 1 in the middle …"
+    text = _ordinal_from_side(text, notes)  # "… left to right, the third from the left …"
     text = _vague_then_said(text, notes)  # "a tall tower and a short one — say five and two"
+    text = _as_it_is_high(text, notes)  # "a wall twice as long as it is high, and 3 high"
+    text = _times_the_other(text, notes)  # "… the second twice as tall as the first, … 3"
     text = _ORDINAL_FIGURE.sub(lambda m: _ORDINAL_WORD[m.group(1)], text)  # "a 2nd row"
     text = _ALONE.sub(r"a single \1", text)  # "between them a cube alone": a cube, not a gap
 
