@@ -8884,3 +8884,58 @@ def test_one_of_a_line_picked_by_its_place_or_sized_by_another():
     r = plan("Graphic wall: 5 long, 4 high, and a 2-high plinth 1x1 in front of it.")
     assert [s.shape for s in r.spec.structures] == ["wall", "block"]
     assert sorted(_columns(r).values()) == [2, 4, 4, 4, 4, 4]
+
+
+def test_a_structure_said_again_is_one_structure():
+    # a restatement in a sentence of its own built a second one, silently
+    _built_as_said("Make a row of 5. Five cubes side by side in a line, left to right, I mean.",
+                   ["row"], None)  # fmt: skip
+    r = _built_as_said("Put a tower on the left. On the left side, 3 cubes, a tower of 3 on the "
+                       "left.", ["tower"], [3])  # fmt: skip
+    assert r.spec.structures[0].region == "left"
+    _built_as_said("Make a flat square, 3 by 3. A 3x3 layer, one cube thick, flat on the table.",
+                   ["grid"], None)  # fmt: skip
+    _built_as_said("A tower of 6. No wait, 5. Five. A tower of five cubes.", ["tower"], [5])
+    # two said differently stay two
+    _built_as_said("A tower of 3. A tower of 4.", ["tower", "tower"], [3, 4])
+    _built_as_said("a tower of 3 at the front. a tower of 3 at the back.", ["tower", "tower"],
+                   [3, 3])  # fmt: skip
+    # "The tower shall stand on the left side.": the place of the tower said before (dropped)
+    r = _built_as_said("Please build me a tower from 5 cubes. The tower shall stand on the left "
+                       "side.", ["tower"], [5])  # fmt: skip
+    assert r.spec.structures[0].region == "left"
+    # "make tower A 5 high instead": a second tower
+    _built_as_said("Build tower A, 3 high. Now make tower A 5 high instead.", ["tower"], [5])
+
+
+def test_each_leg_sized_and_a_stacked_footprint():
+    # "a table with 4 legs, each 2 cubes tall": a default table, silently
+    for command in ("a table with 4 legs, each 2 cubes tall.",
+                    "Task 14: Build a table with 4 legs. Each leg is 2 cubes tall."):  # fmt: skip
+        r = _built_as_said(command, ["canopy"], None)
+        assert r.spec.structures[0].height == 2
+    # a size said for each that no structure named can take is reported
+    assert plan("a pyramid with base 3, each 2 high").status == "partial"
+    # "Stack a 3x3 footprint two high, solid, …": a second block
+    r = _built_as_said("Stack a 3x3 footprint two high, solid, in the back right corner.",
+                       ["block"], [2] * 9)  # fmt: skip
+    # "stack a 2 by 2 tower, 4 levels high": a slab and a tower
+    _built_as_said("Can the robot stack a 2 by 2 tower, 4 levels high?", ["block"], [4] * 4)
+
+
+def test_compass_words_with_north_at_the_back_unless_said():
+    # "north-west corner", "the southern edge", "to the north of": ignored (partial)
+    r = _built_as_said("Compass convention: north is the far side of the table. Place a 4-cube "
+                       "tower in the north-west corner.", ["tower"], [4])  # fmt: skip
+    assert r.spec.structures[0].region == "back left"
+    r = _built_as_said("With north at the back: build a wall 6 long running east-west, 2 high, on "
+                       "the southern edge.", ["wall"], [2] * 6)  # fmt: skip
+    assert _extent_in_parts(r, 1) == 6 and r.spec.structures[0].region == "front"
+    r = _built_as_said("Far side is north. Tower of 5 to the north of a tower of 2.",
+                       ["tower", "tower"], [2, 5])  # fmt: skip
+    cols = _columns(r)
+    assert max(cols, key=lambda xy: xy[0]) == max(cols, key=lambda xy: cols[xy])  # 5 behind
+    # with no convention said, north is the back; said otherwise, the convention goes
+    assert plan("a tower in the north east corner").spec.structures[0].region == "back right"
+    r = plan("North is the near side. A tower in the north-east corner.")
+    assert r.spec.structures[0].region == "front left"

@@ -1028,6 +1028,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a table — four legs, each 2 high, and a top": the table's own legs
     (re.compile(r"\b(table|canopy|pavilion|shelter|gazebo)\s*(?:[\u2014\u2013]|\s-+)\s*(?=(?:four|4|"
                 r"three|3|two|2|six|6)\s+legs\b)", re.I), r"\1 with "),
+    # "a 3x3 footprint two high, solid, in the corner": solid, as built (a second block)
+    (re.compile(r"(\b(?:footprint|block|slab|layer|lump|cuboid|box|grid|square)\b[^.;!?]*?)\s*,\s*(?:and\s+)?"
+                r"(?:completely\s+|fully\s+|all\s+)?solid\s*(?=[,.;!?]|$)", re.I), r"\1 "),
+    # "stack a 2 by 2 tower, 4 levels high": the tower, stacked (a slab and a tower were built)
+    (re.compile(r"\bstack\s+(?=(?:a|an|one)\s+\d+\s*(?:x|by)\s*\d+(?:\s*(?:x|by)\s*\d+)?\s+(?:tower|column|stack|"
+                r"pillar|block)\b)", re.I), "build "),
     # "Frame me a box", "knock me up a wall": a way to say build
     (re.compile(r"\b(?:frame|knock|rustle|whip|throw|fix)\s+(?:me|us)\s+(?:up\s+)?(?=an?\s)", re.I),
      "build me "),
@@ -3565,6 +3571,79 @@ def _named_twice(text: str, notes: list[str]) -> str:
     return _TWICE_NAMED.sub(once, text)
 
 
+_LABELLED_ONE = re.compile(
+    r"\b(wall|tower|row|block|slab|stack|column|pyramid|staircase|bridge|arch|ring|grid)\s+(?-i:([A-Z]))\b"
+    r"(?!\s*(?:x|by|cm|mm|m|cubes?|blocks?|high|tall|long|wide|levels?|steps?)\b)",
+    re.IGNORECASE,
+)
+
+
+def _labelled_again(text: str, notes: list[str]) -> str:
+    """ "Build tower A, 3 high. Now make tower A 5 high instead.": a structure named by its
+    label again is the one named before ("the tower"), not a second one."""
+    seen: set[tuple[str, str]] = set()
+
+    def again(m: re.Match[str]) -> str:
+        key = (m.group(1).lower(), m.group(2))
+        if key not in seen:
+            seen.add(key)
+            return m.group(0)
+        if len({label for family, label in seen if family == key[0]}) > 1:
+            return m.group(0)  # "tower A … tower B … tower A": which one stays the label's
+        notes.append(f"read '{m.group(0)}' as the {m.group(1).lower()} named before")
+        article = "" if re.search(r"\b(?:the|a|an)\s*$", m.string[: m.start()], re.I) else "the "
+        return f"{article}{m.group(1)}"
+
+    return _LABELLED_ONE.sub(again, text)
+
+
+_COMPASS_SAID = re.compile(
+    r"(?:^|(?<=[.;:!?])\s*)\s*(?:compass\s+convention\s*:\s*|grid\s+reference\s+style\s*,?\s*)?(?:with\s+|taking\s+|"
+    r"treat(?:ing)?\s+|assume\s+|assuming\s+)?(?:(?P<north>north)\s+(?:is|=|at|as|being)\s+(?:the\s+)?(?P<side>"
+    r"far\s+(?:side|edge|end)|back(?:\s+(?:edge|side))?|rear|away\s+from\s+the\s+robot|top|front|near\s+"
+    r"(?:side|edge)|robot'?s?\s+side)(?:\s+of\s+the\s+(?:table|bench))?|(?:the\s+)?(?:far|back)\s+"
+    r"(?:side|edge)\s+is\s+north)\s*[.:,;]?\s*",
+    re.IGNORECASE,
+)
+_COMPASS = (
+    (r"(?:to\s+the\s+|due\s+)?north\s+of", "behind"),
+    (r"(?:to\s+the\s+|due\s+)?south\s+of", "in front of"),
+    (r"(?:to\s+the\s+|due\s+)?east\s+of", "to the right of"),
+    (r"(?:to\s+the\s+|due\s+)?west\s+of", "to the left of"),
+    (r"north[\s-]*west(?:ern)?", "back left"), (r"north[\s-]*east(?:ern)?", "back right"),
+    (r"south[\s-]*west(?:ern)?", "front left"), (r"south[\s-]*east(?:ern)?", "front right"),
+    (r"north[\s-]+(?:to[\s-]+)?south", "back to front"),
+    (r"south[\s-]+(?:to[\s-]+)?north", "front to back"),
+    (r"east[\s-]+(?:to[\s-]+)?west", "right to left"),
+    (r"west[\s-]+(?:to[\s-]+)?east", "left to right"),
+    (r"northwards?|northward", "towards the back"), (r"southwards?|southward", "towards the front"),
+    (r"eastwards?|eastward", "to the right"), (r"westwards?|westward", "to the left"),
+    (r"north(?:ern)?", "back"), (r"south(?:ern)?", "front"), (r"east(?:ern)?", "right"),
+    (r"west(?:ern)?", "left"),
+)  # fmt: skip
+_FLIPPED = {"back": "front", "front": "back", "left": "right", "right": "left"}
+
+
+def _compass(text: str, notes: list[str]) -> str:
+    """North, south, east and west: north is the back (away from the robot) unless the command
+    says otherwise ("North is the near side"); the convention said goes."""
+    if not re.search(r"\b(?:north|south|east|west)", text, re.I):
+        return text
+    said = _COMPASS_SAID.search(text)
+    side = said.group("side") if said else None
+    near = bool(side and re.match(r"front|near|robot", side, re.I))
+    if said:
+        text = text[: said.start()] + " " + text[said.end() :]
+    notes.append("read north as the front (the robot's side), east as the robot's left" if near
+                 else "read north as the back (away from the robot), east as the robot's right")
+    for pattern, place in _COMPASS:
+        if near:
+            place = {"behind": "in front of", "in front of": "behind"}.get(place, " ".join(
+                _FLIPPED.get(w, w) for w in place.split()))  # fmt: skip
+        text = re.sub(rf"\b{pattern}\b", place, text, flags=re.IGNORECASE)
+    return text
+
+
 _AS_IT_IS = re.compile(
     r"\b(twice|double|three\s+times|thrice|half|just|exactly)\s+as\s+(long|wide)\s+as\s+it\s+is\s+"
     r"(?:high|tall)\b",
@@ -3769,12 +3848,14 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _numbered_steps(text, notes)  # "1. a row of 3 2. a row of 2 on top of it"
     text = _items_named(text)  # "… END OF ITEM 1": the structure item 1 is
     text = _named_heading(text, notes)  # "Goods shed: a 3 by 4 enclosure": the enclosure
+    text = _compass(text, notes)  # "North = back. A tower in the north-west corner."
     text = _swapped(text, notes)  # "a tower left of a wall. Swap sides.": right of it
     text = _answered(text, notes)  # "Should the wall be 2 high? Yes, a wall 6 long …"
     text = _named_twice(text, notes)  # "a plus sign — a cross — 1 in the middle …"
     text = _ordinal_from_side(text, notes)  # "… left to right, the third from the left …"
     text = _vague_then_said(text, notes)  # "a tall tower and a short one — say five and two"
     text = _as_it_is_high(text, notes)  # "a wall twice as long as it is high, and 3 high"
+    text = _labelled_again(text, notes)  # "Build tower A, 3 high. Now make tower A 5 high."
     text = _times_the_other(text, notes)  # "… the second twice as tall as the first, … 3"
     text = _ORDINAL_FIGURE.sub(lambda m: _ORDINAL_WORD[m.group(1)], text)  # "a 2nd row"
     text = _ALONE.sub(r"a single \1", text)  # "between them a cube alone": a cube, not a gap

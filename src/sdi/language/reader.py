@@ -585,20 +585,27 @@ def _apply_one(
     structures: list[StructureDraft], shared: tuple[str, int, str], st: ReadState
 ) -> list[StructureDraft]:
     key, value, said = shared
-    fits = {"height": ("tower", "wall", "block", "grid", "row", "castle", "enclosure"),
+    fits = {"height": ("tower", "wall", "block", "grid", "row", "castle", "enclosure", "canopy",
+                       "bridge"),  # a table's or a bridge's height is its legs'
             "length": ("wall", "row", "grid", "block"), "cubes": ("tower",)}[key]  # fmt: skip
     key = "height" if key == "cubes" else key  # "…, 4 cubes each": towers' height
-    out, other = [], []
+    out, other, taken = [], [], False
     for s in structures:
         own = getattr(s, key)
         if s.shape in fits and own is None and getattr(s, f"{key}_m") is None:
             s = s.model_copy(update={key: value})
+            taken = True
         elif own is not None and own != value:
             other.append(f"{s.shape} {key} {own}")
+        elif own == value:
+            taken = True
         out.append(s)
     if other:  # "two towers of 3, both 4 high": which is meant is not said
         st.material.append(said)
         st.notes.append(f"ignored '{said}' for the {', '.join(other)} said before")
+    elif not taken:  # "a pyramid, each 2 high": no structure it can size
+        st.material.append(said)
+        st.notes.append(f"ignored '{said}': no structure named has that size")
     else:
         st.notes.append(f"read '{said}' as every structure's {key}: {value}")
     return out

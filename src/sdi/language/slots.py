@@ -54,6 +54,45 @@ _DROPS = re.compile(
 )
 
 
+_SIZES = ("length", "width", "height", "count", "steps", "spans", "dims", "length_m", "width_m",
+          "height_m")  # fmt: skip
+
+
+def _said_again(p: Phrase, spec: SpecDraft, before: list[Phrase],
+                structures: list[StructureDraft], doc: Doc) -> int | None:  # fmt: skip
+    """The structure named in the sentence before, said again in a sentence of its own with
+    nothing that contradicts it and no word of another ("Put a tower on the left. On the left
+    side, a tower of 3."): its index; two were built, silently."""
+    if len(spec.structures) != 1 or not p.tokens:
+        return None
+    built = [q for q in before if q.spec is not None and q.count]
+    if not built or built[-1].count != 1 or not built[-1].tokens:
+        return None
+    sentence, earlier = doc[p.tokens[0]].sent, doc[built[-1].tokens[0]].sent
+    if sentence.start == earlier.start or _ANOTHER.search(sentence.text):
+        return None
+    if any(q.spec is None and q.tokens and doc[q.tokens[0]].sent.start == sentence.start
+           and q is not p for q in before):  # fmt: skip
+        return None  # a sentence with more in it than the structure
+    index = built[-1].first
+    prev, new = structures[index], spec.structures[0]
+    if prev.shape != new.shape:
+        return None
+    said_as = [re.sub(r"\W+", " ", q.text.lower()).strip() for q in (p, built[-1])]
+    if said_as[0] == said_as[1]:
+        return None  # "ITEM 1: TOWER 4. ITEM 2: TOWER 4.": a list of two alike
+    for key in _SIZES:
+        a, b = getattr(prev, key), getattr(new, key)
+        if a is not None and b is not None and a != b:
+            return None  # "a tower of 3. A tower of 4.": two
+    if any(getattr(prev, key) != getattr(new, key) for key in ("region", "at_x", "at_y")):
+        return None  # "a tower on the left. a tower of 5": a place makes the first its own
+    said = [k for k in _SIZES if getattr(new, k) is not None]
+    if not said and not [k for k in _SIZES if getattr(prev, k) is not None]:
+        return None  # nothing sized: `same_as_before`
+    return index
+
+
 def _more_about(
     index: int,
     shape: str,
@@ -241,7 +280,27 @@ def fill_slots(
             st.notes.append(f"'{p.text}' is about the {shape} described before, not another")
             _account(p, spec, unused, doc, st)
             continue
+        related = any(k in (r.subject, r.object) for r in rels)
+        again = None if related else _said_again(p, spec, phrases[:k], structures, doc)
+        if again is not None:
+            # "Make a row of 5. Five cubes side by side in a line, I mean.": one row, said twice
+            _more_about(again, structures[again].shape, p, spec, structures, st)
+            st.notes[-1] = f"'{p.text}': the {structures[again].shape} named before, said again"
+            _account(p, spec, unused, doc, st)
+            at = _holding(phrases[:k], again)
+            if at is not None and phrases[at].count == 1:  # read on with what it said
+                phrases[at].text = f"{phrases[at].text} , {p.text}"
+                p.ref = at
+            continue
         same = same_as_before(p, spec, phrases[:k])
+        placed = spec.structures[0].model_dump(exclude_defaults=True).keys() & {"region", "at_x",
+                                                                                "at_y", "axis"}
+        if same is not None and placed:
+            # "… a tower from 5 cubes. The tower shall stand on the left side.": its place
+            last = [q for q in phrases[:k] if q.spec is not None and q.count][-1]
+            _more_about(last.first + last.count - 1, same, p, spec, structures, st)
+            _account(p, spec, unused, doc, st)
+            continue
         if same is not None:
             st.notes.append(f"'{p.text}' names the {same} described before")
             _account(p, spec, unused, doc, st)

@@ -79,6 +79,7 @@ HARMLESS = _words(
     completely totally fully entirely rebuild rebuilding rebuilt redo remake replace replacing
     replacement fallen collapsed segment shim shims case plumb rests sits hold holds run
     fr ngl tbh lowkey highkey thingy thingie bc cuz coz lil bruh fam reckon reckons lovely ta cheers
+    footprint
     properly proper
     """
 )
