@@ -12,7 +12,7 @@ from sdi.errors import InfeasibleError, SpecError
 from sdi.language.nouns import STRUCTURE_PLURALS, families_said
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
+from sdi.spec.numbers import FACTORS, NUMBER_WORDS, words_to_numbers
 
 
 def _split(m: re.Match[str], st: ReadState) -> str:
@@ -368,9 +368,6 @@ def _grid_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
-_FACTORS = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5, "just": 1.0, "exactly": 1.0,
-            "equally": 1.0}  # fmt: skip
-"""What "… as tall" multiplies by ("twice as tall", "just as long")."""
 
 
 def _measure_named(before: str, family: str | None, measure: str, st: ReadState) -> int | None:
@@ -412,7 +409,7 @@ def _as_big_as(m: re.Match[str], st: ReadState, note: str) -> str:
     not read as a vague "tall"."""
     said, (factor, *groups) = _said(m)
     word, family = groups[0], lx.SHAPE_WORDS.get(groups[1])
-    times = _FACTORS.get(factor, 1.0)
+    times = FACTORS.get(factor, 1.0)
     # "as long as the tower is tall": the wall's length, the tower's height
     measure = (groups[2] if len(groups) > 2 and groups[2] else word).lower()
     n = _measure_named(m.string[: m.start()], family, measure, st)
@@ -827,7 +824,7 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     if len(groups) == 4 and groups[3]:  # the second form: "a cube taller"
         groups = groups[2:]
     word = groups[0] or "1"  # "a cube taller"
-    factor = _FACTORS.get(word)
+    factor = FACTORS.get(word)
     times = re.fullmatch(r"(\w+)\s+times", word)
     if times and words_to_numbers([times.group(1)])[0].isdigit():
         factor = float(words_to_numbers([times.group(1)])[0])

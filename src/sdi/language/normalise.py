@@ -15,7 +15,7 @@ from sdi.language.spacing import MOVED
 from sdi.language.units import to_millimetres
 from sdi.language.words import CORRECTABLE, NEGATIONS, SIGNIFICANT
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import UNITS, words_to_numbers
+from sdi.spec.numbers import FACTORS, UNITS, words_to_numbers
 
 _SYMBOLS = {"×": " x ", "–": "-", "—": "-", "’": "'", "″": '"', "\u00a0": " "}
 
@@ -3621,6 +3621,7 @@ _COMPASS = (
     (r"north(?:ern)?", "back"), (r"south(?:ern)?", "front"), (r"east(?:ern)?", "right"),
     (r"west(?:ern)?", "left"),
 )  # fmt: skip
+_COMPASS_WORDS = tuple((re.compile(rf"\b{said}\b", re.I), place) for said, place in _COMPASS)
 _FLIPPED = {"back": "front", "front": "back", "left": "right", "right": "left"}
 
 
@@ -3636,11 +3637,11 @@ def _compass(text: str, notes: list[str]) -> str:
         text = text[: said.start()] + " " + text[said.end() :]
     notes.append("read north as the front (the robot's side), east as the robot's left" if near
                  else "read north as the back (away from the robot), east as the robot's right")
-    for pattern, place in _COMPASS:
+    for pattern, place in _COMPASS_WORDS:
         if near:
             place = {"behind": "in front of", "in front of": "behind"}.get(place, " ".join(
                 _FLIPPED.get(w, w) for w in place.split()))  # fmt: skip
-        text = re.sub(rf"\b{pattern}\b", place, text, flags=re.IGNORECASE)
+        text = pattern.sub(place, text)
     return text
 
 
@@ -3652,8 +3653,7 @@ _AS_IT_IS = re.compile(
 _HEIGHT_SAID = re.compile(
     rf"\b({_NUM})\s+(?:cubes?\s+|blocks?\s+|bricks?\s+|levels?\s+)?(?:high|tall)\b", re.I
 )
-_TIMES = {"twice": 2.0, "double": 2.0, "three": 3.0, "thrice": 3.0, "half": 0.5, "just": 1.0,
-          "exactly": 1.0}  # fmt: skip
+_TIMES = FACTORS | {"three": 3.0}  # "three times as long"
 
 
 def _as_it_is_high(text: str, notes: list[str]) -> str:
