@@ -8939,3 +8939,21 @@ def test_compass_words_with_north_at_the_back_unless_said():
     assert plan("a tower in the north east corner").spec.structures[0].region == "back right"
     r = plan("North is the near side. A tower in the north-east corner.")
     assert r.spec.structures[0].region == "front left"
+
+
+def test_a_beam_said_another_way_and_arms_said_as_legs():
+    # "joined at their tops by a beam": the beam left unused (two bare towers)
+    r = _built_as_said("two towers of three cubes each, joined at their tops by a beam",
+                       ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 3
+    r = _built_as_said("The Structure shall comprise two (2) towers of three (3) cubes each, "
+                       "connected at their tops by a spanning member.", ["bridge"], None)  # fmt: skip
+    _built_as_said("two posts 2 high and a crossbar on top", ["bridge"], None)
+    # "one leg 5 cubes, the other leg 3 cubes": an L and two towers
+    r = _built_as_said("Please build an L-form: one leg 5 cubes, the other leg 3 cubes.",
+                       ["l_shape"], None)  # fmt: skip
+    assert len(r.layout.objects) == 5 + 3 - 1
+    # "5 across and 3 down": a T with a stem of 1
+    r = _built_as_said("Could it make a T, like the letter, 5 across and 3 down?", ["t_shape"],
+                       None)  # fmt: skip
+    assert len(r.layout.objects) in (7, 8)

@@ -1037,6 +1037,25 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "Frame me a box", "knock me up a wall": a way to say build
     (re.compile(r"\b(?:frame|knock|rustle|whip|throw|fix)\s+(?:me|us)\s+(?:up\s+)?(?=an?\s)", re.I),
      "build me "),
+    # "joined at their tops by a beam": joined by it (the beam was left unused)
+    (re.compile(r"\b(joined|connected|linked|bridged|spanned)\s+(?:at|across)\s+(?:their|the)\s+tops?\s+"
+                r"(by|with)\b", re.I), r"\1 \2"),
+    # "a crossbar on top", "a spanning member", "one long piece across the top": a beam
+    (re.compile(r"\b(?:cross[\s-]?bar|(?:long|horizontal|spanning|flat)\s+(?:piece|member|part|bar)|spanning\s+"
+                r"(?:beam|element))(s?)\b(?=[^.;]*\b(?:across|over|on\s+top|atop|between|connect|join|from))",
+                re.I), r"beam\1"),
+    (re.compile(r"\b((?:by|with)\s+(?:a|one|an)\s+)(?:cross[\s-]?bar|(?:long|horizontal|spanning|flat)\s+(?:piece|"
+                r"member|part|bar)|spanning\s+(?:beam|element))\b", re.I), r"\1beam"),
+    # "an L-form: one leg 5 cubes, the other leg 3 cubes": arms of 5 and 3 (two towers)
+    (re.compile(r"\bone\s+(?:leg|arm|side)\s+(?:of\s+|is\s+)?(" + _NUM
+                + r")(?:\s+(?:cubes?|blocks?))?"
+                r"(?:\s+long)?\s*,?\s*(?:and\s+)?the\s+other\s+(?:leg|arm|side)?\s*(?:of\s+|is\s+)?("
+                + _NUM + r")(?:\s+(?:cubes?|blocks?))?(?:\s+long)?", re.I),
+     lambda m: f"arms of {m.group(1)} and {m.group(2)}"
+     if re.search(r"\bl\b|l[\s-]shape|l[\s-]form", m.string[: m.start()], re.I) else m.group(0)),
+    # "a T, like the letter, 5 across and 3 down": its bar and its stem
+    (re.compile(r"(\bt\b[^.;]*?)\b(" + _NUM + r")\s+(?:cubes?\s+)?across\s*,?\s*(?:and\s+)?("
+                + _NUM + r")\s+(?:cubes?\s+)?down\b", re.I), r"\1bar of \2 and a stem of \3"),
     # a carpenter's "header" laid across posts is a lintel
     (re.compile(r"\bheader(s?)(?=\s+(?:beam\s+|board\s+)?(?:across|over|on\s+top|atop|spanning|between|"
                 r"from)\b)", re.I), r"lintel\1"),
