@@ -8946,8 +8946,8 @@ def test_a_beam_said_another_way_and_arms_said_as_legs():
     r = _built_as_said("two towers of three cubes each, joined at their tops by a beam",
                        ["bridge"], None)  # fmt: skip
     assert r.spec.structures[0].height == 3
-    r = _built_as_said("The Structure shall comprise two (2) towers of three (3) cubes each, "
-                       "connected at their tops by a spanning member.", ["bridge"], None)  # fmt: skip
+    _built_as_said("The Structure shall comprise two (2) towers of three (3) cubes each, "
+                   "connected at their tops by a spanning member.", ["bridge"], None)  # fmt: skip
     _built_as_said("two posts 2 high and a crossbar on top", ["bridge"], None)
     # "one leg 5 cubes, the other leg 3 cubes": an L and two towers
     r = _built_as_said("Please build an L-form: one leg 5 cubes, the other leg 3 cubes.",
