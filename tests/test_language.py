@@ -8762,6 +8762,8 @@ def test_radio_procedure_words_are_no_structure():
     r = _built_as_said("Robot, Base. Tower height five at position x zero-point-three, y "
                        "zero-point-four-five. Over.", ["tower"], [5])  # fmt: skip
     assert r.layout.objects[0].position[:2] == pytest.approx([0.3, 0.45])
+    # "final answer: 5" after a size: that size (the marker's pattern once lost it)
+    _built_as_said("a tower 3 high. final answer: 5", ["tower"], [5])
     # "spread out", "take it back out": no radio "out"
     _built_as_said("rows: 3 of them, 5 cubes each, spaced out", ["row", "row", "row"], None)
 

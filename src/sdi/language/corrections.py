@@ -22,8 +22,8 @@ MARKER = re.compile(
     r"on\s+second\s+thoughts?|change\s+of\s+plan|change\s+that|never\s*mind|nvm|"
     r"actually|sorry|oops|wait|(?:revised|changed|updated|amended|corrected)\s+to)\b\s*[,:;—–-]?\s*|"
     r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment|change)\s*:\s*|"  # a ticket's later line
-    r"\s*[,.;!—–-]+\s*negative\s*[,:;]\s*|"  # on the radio: "Tower, height six. Negative, height"
-                                                             " two."
+    # on the radio: "Tower, height six. Negative, height two."
+    r"\s*[,.;!—–-]+\s*negative\s*[,:;]\s*|"
     # "no wait 4, no wait 6 final answer 6": the number said last
     r"\s*[,.;:!?…—–-]*\s*\b(?:so\s+)?final\s+(?:answer|call|decision|number|offer)\s*(?:is\s*)?[,:;=—–-]*\s*"
     r"(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)|"
