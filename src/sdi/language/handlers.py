@@ -368,8 +368,6 @@ def _grid_of(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
-
-
 def _measure_named(before: str, family: str | None, measure: str, st: ReadState) -> int | None:
     """The size (in parts, as built) of the `family` structure named last in `before`: its
     height for "tall"/"high", else its length; None when none can be measured. The phrase the

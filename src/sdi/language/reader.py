@@ -943,10 +943,9 @@ _LONG_SIDE = re.compile(
 """'Turn it so the long side runs left to right': which way a slab's long side runs."""
 
 _SIDE_BY_SIZE = re.compile(
-    r"\s*,?\s*(?:with\s+)?the\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)(?:[- ](?:cubes"
-    r"?|parts?|"
-    r"blocks?|bricks?))?(?:\s+(?:sides?|edges?|way|dimension|direction))?\s+(?:runs?|running|goes|going|"
-    r"lies|lying|pointing)\s+(?:from\s+)?"
+    r"\s*,?\s*(?:with\s+)?the\s+(\d+|two|three|four|five|six|seven|eight|nine|ten)"
+    r"(?:[- ](?:cubes?|parts?|blocks?|bricks?))?(?:\s+(?:sides?|edges?|way|dimension|direction))?"
+    r"\s+(?:runs?|running|goes|going|lies|lying|pointing)\s+(?:from\s+)?"
     r"(left\s+to\s+right|right\s+to\s+left|side\s+to\s+side|front\s+to\s+back|back\s+to\s+front)\b",
     re.IGNORECASE,
 )

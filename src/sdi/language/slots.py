@@ -100,12 +100,13 @@ def _more_about(
     spec: SpecDraft,
     structures: list[StructureDraft],
     st: ReadState,
+    how: str = "more about the {shape} named before",
 ) -> None:
     """The sizes a phrase says, given to the structure named before that it describes; the
     phrase builds none of its own."""
     said = spec.structures[0].model_dump(exclude_defaults=True, exclude={"shape"})
     structures[index] = structures[index].model_copy(update=said)
-    st.notes.append(f"'{p.text}': more about the {shape} named before")
+    st.notes.append(f"'{p.text}': " + how.format(shape=shape))
     p.count = 0
 
 
@@ -284,8 +285,8 @@ def fill_slots(
         again = None if related else _said_again(p, spec, phrases[:k], structures, doc)
         if again is not None:
             # "Make a row of 5. Five cubes side by side in a line, I mean.": one row, said twice
-            _more_about(again, structures[again].shape, p, spec, structures, st)
-            st.notes[-1] = f"'{p.text}': the {structures[again].shape} named before, said again"
+            _more_about(again, structures[again].shape, p, spec, structures, st,
+                        how="the {shape} named before, said again")  # fmt: skip
             _account(p, spec, unused, doc, st)
             at = _holding(phrases[:k], again)
             if at is not None and phrases[at].count == 1:  # read on with what it said
@@ -293,9 +294,8 @@ def fill_slots(
                 p.ref = at
             continue
         same = same_as_before(p, spec, phrases[:k])
-        placed = spec.structures[0].model_dump(exclude_defaults=True).keys() & {"region", "at_x",
-                                                                                "at_y", "axis"}
-        if same is not None and placed:
+        if same is not None and any(getattr(spec.structures[0], key) is not None
+                                    for key in ("region", "at_x", "at_y", "axis")):  # fmt: skip
             # "… a tower from 5 cubes. The tower shall stand on the left side.": its place
             last = [q for q in phrases[:k] if q.spec is not None and q.count][-1]
             _more_about(last.first + last.count - 1, same, p, spec, structures, st)

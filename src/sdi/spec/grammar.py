@@ -1797,11 +1797,7 @@ class _Parser:
 
     def _said_hollow(self) -> bool:
         return any(
-            (t.text == "hollow" and self.word(j - 1) not in ("not", "no"))
-            or (t.text == "empty" and self.word(j - 1) not in ("not", "no") and (
-                self.word(j + 1) == "inside"
-                or (self.word(j + 1) == "in" and self.word(j + 3) in ("middle", "centre", "center"))
-            ))  # "a square, 3 by 3, empty in the middle"
+            t.text == "hollow" and self.word(j - 1) not in ("not", "no")
             for j, t in enumerate(self.toks)
         )
 

@@ -22,10 +22,10 @@ QUANTITY_WORDS = {
 COUNT_WORDS = (frozenset(UNITS) | frozenset(TENS)) - {"no", "zero", "single"}
 """Words that say how many ("one" included; "no" and "zero" say none, "single" is a size word)."""
 NUMBER_WORDS = COUNT_WORDS - {"one"}
+"""Words that say a number and nothing else ("one" is also a pronoun, "no" a negation)."""
 FACTORS = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5, "just": 1.0, "exactly": 1.0,
            "equally": 1.0}  # fmt: skip
 """What "… as tall" multiplies by ("twice as tall", "just as long")."""
-"""Words that say a number and nothing else ("one" is also a pronoun, "no" a negation)."""
 ORDINAL_STEPS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
 MULTIPLIERS = {"once": 1, "twice": 2, "thrice": 3}
 
