@@ -8959,3 +8959,76 @@ def test_a_beam_said_another_way_and_arms_said_as_legs():
     r = _built_as_said("Could it make a T, like the letter, 5 across and 3 down?", ["t_shape"],
                        None)  # fmt: skip
     assert len(r.layout.objects) in (7, 8)
+
+
+def test_an_hmi_line_of_keyed_fields_is_read_by_its_keys():
+    # "BUILD: BRIDGE PILLAR_H=3 SPAN=2": a bridge 4 high with 3 spans, silently
+    r = _built_as_said("BUILD: BRIDGE PILLAR_H=3 SPAN=2", ["bridge"], None)
+    assert r.spec.structures[0].height == 3
+    assert _extent_in_parts(r, 2) == 4  # pillars of 3 and the beam
+    # "BUILD: TABLE LEGS=4 LEG_H=2": a default table and a tower of 2
+    r = _built_as_said("BUILD: TABLE LEGS=4 LEG_H=2", ["canopy"], None)
+    assert r.spec.structures[0].height == 2
+    # "T=1" a wall's thickness (a T of one part, a failure); "POS=BACK_LEFT" its place
+    r = _built_as_said("BUILD: WALL L=6 H=3 T=1", ["wall"], [3] * 6)
+    r = _built_as_said("BUILD: TOWER H=4 POS=BACK_LEFT", ["tower"], [4])
+    assert r.spec.structures[0].region == "back left"
+    r = _built_as_said("BUILD: ROW N=5 DIR=LEFT_RIGHT", ["row"], [1] * 5)
+    assert _extent_in_parts(r, 1) == 5
+    # a ticket's title and notes are words to read, not words left over
+    _built_as_said("SDI-103 | Type: Task | Title: Flat grid 2x6 | Notes: one layer only",
+                   ["grid"], [1] * 12)  # fmt: skip
+
+
+def test_three_side_by_side_sized_by_their_places_or_listed_each_with_its_unit():
+    # "the middle one 3 high" beside "side by side" was read as every tower 2 high
+    for command in ("three towers side by side, the left one 2 high, the middle one 3 high, "
+                    "the right one 1 high",
+                    "three towers side by side from left to right, 2 high, 3 high and 1 high",
+                    "middle block 3 high, left block 2 high, right block 1 high"):  # fmt: skip
+        r = _built_as_said(command, ["tower"] * 3, [1, 2, 3])
+        by_y = [h for (_, _), h in sorted(_columns(r).items(), key=lambda kv: -kv[0][1])]
+        assert by_y == [2, 3, 1], command  # left (+y) to right
+    # a podium of blocks: no longer three blocks and a default staircase, silently
+    r = plan("Make a podium for the winners: middle block 3 high, left block 2 high, right "
+             "block 1 high.")  # fmt: skip
+    assert r.status != "success" or len(r.spec.structures) == 3, r.notes
+
+
+def test_a_post_rising_from_a_corner_a_deck_on_supports_and_a_renamed_structure():
+    # "a 3-cube post rising from one corner of it": set beside the base, silently
+    r = _built_as_said("Build a stand for a phone: a 2x2 base, 1 high, with a 3-cube post "
+                       "rising from one corner of it.", ["grid", "tower"], None)  # fmt: skip
+    assert sorted(_columns(r).values()) == [1, 1, 1, 4]
+    # "two supports, three high, and a deck on top": a 3-high block; "walkway": not read
+    r = _built_as_said("two supports, three high, and a deck on top", ["bridge"], None)
+    assert r.spec.structures[0].height == 3
+    r = _built_as_said("Like a footbridge over a stream — two supports, three high, and a "
+                       "walkway on top.", ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 3
+    # "— basically a wall": a slab and a second wall; "— a square ring": a wall and a floor
+    _built_as_said("Extrude a rectangle 4 long x 1 thick to a height of 3 — basically a wall.",
+                   ["wall"], [3] * 4)  # fmt: skip
+    r = _built_as_said("Low barrier around a 3x3 floor area — a square ring, 1 high.",
+                       ["enclosure"], [1] * 16)  # fmt: skip
+    # a list of structures after a dash stays a list
+    _built_as_said("a slab of 3x3 — a tower, 4 high", ["grid", "tower"], None)
+
+
+def test_a_plus_said_cube_by_cube_stairs_to_the_rear_and_a_wall_along_an_edge():
+    # "Put one cube in the middle and 1 cube on each side of it." built one cube, silently
+    r = _built_as_said("Make a plus sign. Put one cube in the middle and 1 cube on each side "
+                       "of it.", ["cross"], [1] * 5)  # fmt: skip
+    # "ascend toward the rear": the back (it climbed to the left, silently)
+    r = _built_as_said("the staircase shall have four (4) steps and shall ascend toward the "
+                       "rear.", ["staircase"], None)  # fmt: skip
+    cols = sorted(_columns(r).items())  # front (small x) to back
+    assert [h for _, h in cols] == [1, 2, 3, 4]
+    # "along left edge" with no article: it ran left to right, silently
+    r = _built_as_said("Add wall along left edge. length 5. height 2.", ["wall"], [2] * 5)
+    assert _extent_in_parts(r, 0) == 5
+    # palletiser's and lab words: "tier" is a layer, "contiguous" touching, "Protocol 2" a name
+    _built_as_said("Put a 2-high stack on top of a 2x2 base tier.", ["tower", "grid"], None)
+    _built_as_said("Protocol 2. Arrange 8 cubes in a single straight line along the y-axis, "
+                   "contiguous.", ["row"], [1] * 8)  # fmt: skip
+    _built_as_said("Construct an arch spanning a clear gap of 150 mm.", ["arch"], None)

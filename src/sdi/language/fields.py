@@ -11,12 +11,21 @@ from __future__ import annotations
 
 import re
 
+from sdi.language.nouns import families_said
 from sdi.language.structured import family_word
 from sdi.spec import lexicon as lx
 
-_SEPARATORS = (re.compile(r"\s*\|\s*"), re.compile(r"\s+[–—]\s+|\s+-\s+"), re.compile(r"\s+/\s+"))
+_SEPARATORS = (
+    re.compile(r"\s*\|\s*"),
+    re.compile(r"\s+[–—]\s+|\s+-\s+"),
+    re.compile(r"\s+/\s+"),
+    re.compile(r"\s+(?=[A-Za-z][A-Za-z_]*=\S)"),  # an HMI's "BUILD: TABLE LEGS=4 LEG_H=2"
+)
+_HMI_LINE = re.compile(
+    r"\s*[A-Za-z_]+\s*:\s*[A-Za-z_]+(?:\s+[A-Za-z][A-Za-z_]*=[\w.+-]+)+\s*\.?\s*"
+)
 _FIELD = re.compile(
-    r"^(?P<key>[A-Za-z][A-Za-z .]{0,20}?)\s*(?:\((?P<unit>mm|cm|m|cubes?)\))?\s*[:=]\s*"
+    r"^(?P<key>[A-Za-z][A-Za-z ._]{0,20}?)\s*(?:\((?P<unit>mm|cm|m|cubes?)\))?\s*[:=]\s*"
     r"(?P<value>.+)$"
 )
 _BARE_QTY = re.compile(r"^(?:qty|qyt|quantity|pcs|count)\s*[:=]?\s*(?P<value>\d+)$", re.IGNORECASE)
@@ -33,7 +42,7 @@ _QTY = frozenset({"qty", "quantity", "count", "number", "no", "pcs", "copies"})
 _SIZE = {
     "h": "high", "ht": "high", "height": "high", "l": "long", "len": "long", "length": "long",
     "w": "wide", "width": "wide", "d": "deep", "depth": "deep", "levels": "levels",
-    "tiers": "levels", "layers": "layers", "steps": "steps",
+    "tiers": "levels", "layers": "layers", "steps": "steps", "t": "thick", "thickness": "thick",
 }  # fmt: skip
 _LEG_HEIGHT = frozenset({"post h", "leg h", "legs h", "pillar h", "post height", "leg height",
                          "pillar height", "posts h", "pillars h"})  # fmt: skip
@@ -41,12 +50,16 @@ _LEGS = frozenset({"legs", "posts", "pillars", "supports"})
 _PLACE = frozenset({"loc", "location", "position", "place", "where", "region", "area"})
 _DIMS = frozenset({"size", "dims", "dimensions", "footprint"})
 _CONTENTS = frozenset({"contents", "inside", "content"})
+_PROSE = frozenset({"title", "summary", "description", "notes", "note", "comment", "comments",
+                    "remarks", "details"})  # fmt: skip
 _NO = frozenset({"no", "none", "n", "false", "0", "not allowed", "no beam", "no beams"})
 
 
 def as_words(text: str, notes: list[str]) -> str:
     """`text` in words when it is a form of keyed fields; unchanged otherwise."""
     for sep in _SEPARATORS:
+        if sep is _SEPARATORS[-1] and not _HMI_LINE.fullmatch(text):
+            continue  # "KEY=VALUE" fields only on a line of nothing else
         fields = [f.strip(" .;,") for f in sep.split(text.strip()) if f.strip(" .;,")]
         keyed = [f for f in fields if _FIELD.match(f) or _BARE_QTY.match(f) or _BARE_SIZE.match(f)]
         if len(fields) < 2 or not keyed or any(len(f) > 60 for f in fields):
@@ -83,9 +96,10 @@ def _read(fields: list[str]) -> str | None:
             elif not any(word.startswith(f) for f in _FILING) and not _STAMP.search(field):
                 rest.append(field)
             continue
-        key = " ".join(m.group("key").lower().split())
+        key = " ".join(m.group("key").lower().replace("_", " ").split())
         unit = m.group("unit")
         value = re.sub(r"\s+(?:cubes?|blocks?|parts?)$", "", m.group("value").strip(), flags=re.I)
+        value = value.replace("_", " ")  # "POS=BACK_LEFT"
         unit_said = f" {unit}" if unit and not unit.startswith("cube") else ""
         if key in _FILING or any(key.startswith(f + " ") for f in _FILING):
             continue
@@ -102,6 +116,10 @@ def _read(fields: list[str]) -> str | None:
             rest.append(f"legs {value}{unit_said} high")
         elif key in _LEGS:
             rest.append(f"{value} legs")
+        elif key in ("dir", "direction", "orientation") and re.fullmatch(
+            r"(left|right|front|back)\s+(left|right|front|back)", value, re.I
+        ):  # "DIR=LEFT_RIGHT"
+            rest.append(re.sub(r"(\w+)\s+(\w+)", r"from \1 to \2", value.lower()))
         elif key in ("x", "y"):
             rest.append(f"at {key} = {value}{unit_said or ' m'}")
         elif key in _PLACE:
@@ -114,6 +132,8 @@ def _read(fields: list[str]) -> str | None:
             rest.append(f"with {value} on top")
         elif key in ("beam", "beams"):
             rest.append("with no beams" if value.lower() in _NO else "with a beam")
+        elif key in _PROSE:  # "Title: Flat grid 2x6", "Notes: one layer only": words to read
+            rest.append(value)
         elif key in _CONTENTS:
             cubes = re.match(r"(\d+|one|a|two|three)\s+cubes?\b", value, re.I)
             if cubes:  # "Contents: 1 cube, centred inside": a column of them in its middle
@@ -122,10 +142,12 @@ def _read(fields: list[str]) -> str | None:
                 rest.append(f"and {value} inside it")
         else:
             rest.append(f"{key} {value}")
+    if family is None and len([r for r in rest if families_said(r)]) == 1:
+        return ", ".join(rest)  # "Type: Task | Title: Flat grid 2x6": the title names it
     if family is None:
         return None
     n = count if count and count.isdigit() and int(count) > 1 else None
-    head = f"{n} {family}s" if n else f"a {family}"
+    head = f"{n} {family}s" if n else f"{'an' if family[0] in 'aeiou' else 'a'} {family}"
     return ", ".join([head, *rest])
 
 

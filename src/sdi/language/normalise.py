@@ -54,7 +54,7 @@ _REFERENCE_NO = re.compile(
     r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|stn|"
     r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
     r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
-    r"exercise|lesson|experiment|sample|bench|rig|line\s+no|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
+    r"exercise|lesson|experiment|protocol|procedure|sample|bench|rig|line\s+no|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
     r"(?:[:#]|-(?=\d))?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
     r"|(?-i:\b[A-Z][A-Z0-9]{1,9}-\d+\b)"  # a ticket's key: "SDI-101", "WO-3321"
     r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
@@ -561,6 +561,27 @@ _SIDE_ONE = (
 _SIDE_SIZE = rf"{_NUM}\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?)"
 
 
+_SIDE_ITEM = (
+    r"(?:the\s+)?(left|middle|centre|center|right)(?:[\s-]?(?:hand|most))?\s+(one|tower|stack|column|"
+    r"block|pillar|post)\s+(?:(?:is|should\s+be|must\s+be)\s+)?(" + _SIDE_SIZE + ")"
+)
+_THREE_SIDES = re.compile(_SIDE_ITEM + r"(?:\s*[,;]?\s*(?:and\s+)?" + _SIDE_ITEM + "){2}", re.I)
+
+
+def _three_sides(m: re.Match[str]) -> str:
+    """ "three towers side by side: the left one 2 high, the middle one 3 high, the right one 1
+    high", "middle block 3 high, left block 2 high, right block 1 high": the three from left to
+    right (the middle one was the table's middle, or left as said)."""
+    items = re.findall(_SIDE_ITEM, m.group(0), re.I)
+    side = {w.lower().replace("centre", "middle").replace("center", "middle"): size
+            for w, _, size in items}  # fmt: skip
+    if sorted(side) != ["left", "middle", "right"]:
+        return m.group(0)
+    named = {noun.lower() for _, noun, _ in items} - {"one"}
+    counted = "three towers " if named else ""  # "middle block 3 high, …": three of them
+    return f"{counted}from left to right, {side['left']}, {side['middle']} and {side['right']}"
+
+
 def _side_one(m: re.Match[str], size: str | None) -> str:
     """ "the left one 5 high": one 5 high on the left (a size with no unit: left as said)."""
     if size is None:
@@ -573,6 +594,18 @@ def _side_one(m: re.Match[str], size: str | None) -> str:
         return f"one {size} in the middle"
     where = "on the " if side in ("left", "right") else "at the "
     return f"one {size} {where}{side}"
+
+
+def _sizes_listed(m: re.Match[str]) -> str:
+    """ "three towers side by side, 2 high, 3 high and 1 high": one list of sizes, "2, 3 and 1
+    high", when structures were counted before it in the sentence (the first size was read as
+    every tower's, the others dropped)."""
+    counted = re.search(r"\b(?:two|three|four|five|six|[2-9])\s+(?:[a-z-]+\s+){0,2}?(?:"
+                        + _FAMILY_SAID + r")s\b", _sentence_before(m.string, m.start()), re.I)
+    if counted is None:
+        return m.group(0)
+    said = re.findall(_NUM, m.group(0), re.I)
+    return f"{', '.join(said[:-1])} and {said[-1]} {m.group(2)}"
 
 
 def _with_unit_before(m: re.Match[str]) -> str | None:
@@ -764,9 +797,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a block, nowhere near the robot": far from it (it stood at the front, silently)
     (re.compile(r"\b(?:nowhere\s+near)\s+"
                 r"(?=(?:the\s+)?robot\b)", re.I), "far from "),
-    # "climbing toward the far end": the back (it climbed to the left, silently)
+    # "climbing toward the far end": the back (it climbed to the left, silently); "ascend
+    # toward the rear": the back (read as the table's back region, silently)
     (re.compile(r"\b((?:climb|ris|ascend)\w*|going\s+up|goes\s+up|up)\s+(?:to(?:wards?)?|toward)\s+the\s+"
-                r"far\s+(?:end|side|edge)\b", re.I), r"\1 towards the back"),
+                r"(?:far\s+(?:end|side|edge)|rear)\b", re.I), r"\1 towards the back"),
     # "a staircase of 4, the high end on the right": it climbs towards the right (it climbed
     # to the left, silently); "the low end on the left": the same way
     (re.compile(r"\b(?:with\s+)?(?:the|its)\s+(high|higher|highest|tall|taller|tallest|top|low|lower|"
@@ -782,6 +816,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"toward)\s+)?(?:the\s+)?(left|right|back|front)\b", re.I),
      lambda m: m.group(0) if not re.search(r"\b(?:stair|step)", m.string, re.I)
      else f"going up to the {m.group(1)}"),
+    # "a 2x2 base with a 3-cube post rising from one corner of it": standing on that corner
+    # (set beside the base, silently)
+    (re.compile(r"\b(?:ris(?:es|ing)|grow(?:s|ing)|com(?:es|ing)\s+up|stick(?:s|ing)\s+up|going\s+up)"
+                r"\s+(?:from|out\s+of|off)\s+(?=(?:one|a|each|every|all)\s+(?:of\s+(?:its|the)\s+)?"
+                r"(?:four\s+)?corners?\b(?!\s+of\s+the\s+(?:table|bench|floor)))", re.I), "on "),
     # "one in each corner of the floor": the table's corners, when no floor was named
     (re.compile(r"\b(each|every|all\s+four|the\s+four)\s+(corners?)\s+of\s+the\s+(?:floor|cell|workspace|"
                 r"work\s+area|area)\b", re.I),
@@ -991,11 +1030,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 + _NUM + r")"
                 r"(?:\s+(?:cubes?|blocks?|bricks?))?(?:\s+long)?(?:\s+out)?\s+(?:from|off)\s+the\s+"
                 r"(?:centre|center|middle)(?:\s+(?:cube|block|one))?\b", re.I), r"arms of \1"),
-    # "a plus sign — a cross — 1 block in the middle and 1 on each side": arms of 1
-    (re.compile(r"\b(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?in\s+the\s+(?:middle|centre|center"
-                                r")\s*,?\s*"
+    # "a plus sign — a cross — 1 block in the middle and 1 on each side": arms of 1; "Put one
+    # cube in the middle and 1 cube on each side of it." (a cross one cube long, silently)
+    (re.compile(r"\b(?:(?:put|place|add|lay|set)\s+)?(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?"
+                r"in\s+the\s+(?:middle|centre|center)\s*,?\s*"
                 r"(?:and|with|plus)\s+(" + _NUM + r")\s+(?:cubes?\s+|blocks?\s+)?(?:on|to|off)\s+"
-                r"(?:each|every|all\s+four|all)\s+sides?\b", re.I),
+                r"(?:each|every|all\s+four|all)\s+sides?\b(?:\s+of\s+(?:it|that|the\s+middle(?:\s+"
+                r"(?:one|cube|block))?))?", re.I),
      lambda m: f"arms of {m.group(2)}"
      if re.search(r"\b(?:cross|plus)\b", m.string[: m.start()], re.I)
      and m.group(1).lower() in ("1", "one") else m.group(0)),
@@ -1393,6 +1434,24 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: " "
      if re.search(r"\b(?:cross|plus|arms?)\b", _sentence_before(m.string, m.start()), re.I)
      else m.group(0)),
+    # "a ring around a 3x3 floor area": the area (a floor was built beside it)
+    (re.compile(r"\b((?:around|round|enclosing|surrounding)\s+(?:an?\s+)?(?:empty\s+)?\d+\s*(?:x|by)\s*\d+"
+                r")\s+floor\s+(?:area|space|patch)\b", re.I), r"\1 space"),
+    # "8 cubes in a line, contiguous": touching (reported as not used)
+    (re.compile(r"\bcontiguous(?:ly)?\b", re.I), "touching"),
+    # "an arch spanning a clear gap of 150 mm": its span ("spanning" reported as not used)
+    (re.compile(r"\b(arch|bridge)\s+spanning\s+(?:an?\s+)?(?:clear\s+|free\s+)?(?:gap|opening|span|"
+                r"distance)\s+of\b", re.I), r"\1 with a span of"),
+    # "a 2x2 base tier", "1 tier": a layer (a palletiser's word; "tier" was not used)
+    (re.compile(r"\btier\b", re.I), "layer"),
+    # a bridge's "walkway", "footway", "roadway": its deck
+    (re.compile(r"\b(?:walk|foot|road)[\s-]?way\b", re.I), "deck"),
+    # "two supports, three high, and a walkway on top": pillars (nothing was built, or a block)
+    (re.compile(r"\b(two|2|both|pair\s+of)\s+supports\b(?=[^.;]*\b(?:beam|plank|lintel|girder|"
+                r"deck)\b)", re.I),
+     lambda m: m.group(0)
+     if re.search(r"\b(?:foot)?bridge", _sentence_before(m.string, m.start()), re.I)
+     else f"{m.group(1)} pillars"),
     # "two columns of three cubes carrying a lintel", "supporting a flat roof slab": the beam
     # on top of them (the columns stood bare, the lintel a default bridge beside them)
     (re.compile(r"\b(?:carrying|supporting|holding\s+up|bearing|that\s+carry|that\s+support|which\s+carry|"
@@ -1549,6 +1608,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "two towers, the left one 5 high and the right one 2 high": one each, in those places;
     # "Make two towers. The left one should be 5 high, the right one 2.", "two towers: left 5
     # high, right 2 high" (a bare number after the first takes its unit)
+    (_THREE_SIDES, _three_sides),
+    (re.compile(rf"\b({_NUM})\s+(high|tall|levels|storeys|stories)(?:\s*,\s*{_NUM}\s+\2)*\s*,?\s*"
+                rf"(?:and\s+)?{_NUM}\s+\2\b", re.I), _sizes_listed),
     (re.compile(rf"(?<=[,:;.]\s){_SIDE_ONE}({_SIDE_SIZE})(?=\s*(?:,|;|\.|\band\b|$))", re.I),
      lambda m: _side_one(m, m.group(2))),
     (re.compile(rf"(?:(?<=[,;]\s)|(?<=\band\s)){_SIDE_ONE}(?:(?P<sized>{_SIDE_SIZE})|(?P<bare>{_NUM}))"
@@ -3827,6 +3889,46 @@ def _swapped(text: str, notes: list[str]) -> str:
     return swapped + text[m.end() :]
 
 
+_SIZE_SAID = rf"{_NUM}\s+(?:cubes?\s+|blocks?\s+)?(?:high|tall|long|wide|deep|layers?|levels?)"
+_BASICALLY = re.compile(
+    r"\s*(?P<sep>—|–|\s-+|,|;)\s*(?:(?:so|which\s+is|it'?s|that'?s|it\s+is|that\s+is)\s+)?(?P<said>"
+    r"basically|essentially|effectively|in\s+effect|in\s+other\s+words|i\.\s?e\.)?\s*,?\s*(?:just\s+)?"
+    r"an?\s+(?:(?:square|low|small|little|simple|flat|plain)\s+)?(?P<named>[a-z]+)"
+    rf"(?P<rest>(?:\s*(?:,|and)\s*{_SIZE_SAID})*)\s*[.!]?\s*$",
+    re.IGNORECASE,
+)
+# A family another name of which may be said after a dash: a barrier around a space is a ring
+_KIN = {("wall", "enclosure"), ("bridge", "arch"), ("arch", "bridge"), ("row", "wall"),
+        ("grid", "block")}  # fmt: skip
+
+
+def _basically(text: str, notes: list[str]) -> str:
+    """ "Extrude a rectangle 4 long x 1 thick to a height of 3 — basically a wall": the one
+    structure said is the family named last (a slab and a second structure were built); after
+    a bare dash only a kindred family ("Low barrier around a 3x3 floor area — a square ring,
+    1 high")."""
+    m = _BASICALLY.search(text)
+    family = lx.SHAPE_WORDS.get(m.group("named").lower()) if m else None
+    enclosing = r"\b(?:around|round|enclosing|surrounding)\b.*"  # what it encloses is not it
+    named = families_said(re.sub(enclosing, "", text[: m.start()], flags=re.I)) if m else []
+    if m is None or family is None or len(named) != 1:
+        return text
+    if not m.group("said") and (m.group("sep") in (",", ";") or (named[0], family) not in _KIN):
+        return text  # "a slab of 3x3 — a tower, 4 high": a second structure
+    said = [w for w in re.finditer(r"[a-z]+", text[: m.start()], re.I)
+            if lx.SHAPE_WORDS.get(w.group(0).lower()) == named[0]]  # fmt: skip
+    one = r"(?:^|\b(?:an?|one|the)\s)\s*(?:[\w-]+\s+){0,3}$"
+    w = said[-1] if said else None
+    if w is None or not re.search(one, text[: w.start()], re.I) or (
+        w.group(0).lower().endswith("s") and w.group(0).lower()[:-1] in lx.SHAPE_WORDS
+    ):
+        return text  # "two rows of 3, basically a grid": which one is not a renaming
+    notes.append(f"read '{m.group(0).strip(' —–-,;.!')}' as what the {w.group(0)} is: "
+                 f"a {m.group('named')}")  # fmt: skip
+    return (text[: w.start()] + m.group("named") + text[w.end() : m.start()] + m.group("rest")
+            + text[m.end() :])
+
+
 def _named_heading(text: str, notes: list[str]) -> str:
     """ "Goods shed: a 3 by 4 enclosure, two high", "Tunnel portal -- an arch": a heading
     that names the thing (a word of its own before a structure noun) and the structure the
@@ -3871,6 +3973,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _swapped(text, notes)  # "a tower left of a wall. Swap sides.": right of it
     text = _answered(text, notes)  # "Should the wall be 2 high? Yes, a wall 6 long …"
     text = _named_twice(text, notes)  # "a plus sign — a cross — 1 in the middle …"
+    text = _basically(text, notes)  # "a rectangle 4 long, 1 thick, 3 high — basically a wall"
     text = _ordinal_from_side(text, notes)  # "… left to right, the third from the left …"
     text = _vague_then_said(text, notes)  # "a tall tower and a short one — say five and two"
     text = _as_it_is_high(text, notes)  # "a wall twice as long as it is high, and 3 high"

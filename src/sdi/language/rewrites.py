@@ -2222,22 +2222,22 @@ _REWRITES += [
     ),
     (re.compile(r",?\s*\bnear\s+the\s+edge\b", re.IGNORECASE), " ", ""),
     (  # "along the left edge": running front to back, against it ("side": on that side)
-        re.compile(r"\balong\s+the\s+(left|right)\s+(?:edge|boundary|border)\b", re.IGNORECASE),
+        re.compile(r"\balong\s+(?:the\s+)?(left|right)\s+(?:edge|boundary|border)\b", re.I),
         " along x at the {0} edge ",
         "read '{0}' as running front to back against that edge of the workspace",
     ),
     (
-        re.compile(r"\balong\s+the\s+(front|back)\s+(?:edge|boundary|border)\b", re.IGNORECASE),
+        re.compile(r"\balong\s+(?:the\s+)?(front|back)\s+(?:edge|boundary|border)\b", re.I),
         " along y at the {0} edge ",
         "read '{0}' as running left to right against that edge of the workspace",
     ),
     (
-        re.compile(r"\balong\s+the\s+(left|right)\s+side\b", re.IGNORECASE),
+        re.compile(r"\balong\s+(?:the\s+)?(left|right)\s+side\b", re.IGNORECASE),
         " along x on the {0} ",
         "",
     ),
     (
-        re.compile(r"\balong\s+the\s+(front|back)\s+side\b", re.IGNORECASE),
+        re.compile(r"\balong\s+(?:the\s+)?(front|back)\s+side\b", re.IGNORECASE),
         " along y at the {0} ",
         "",
     ),
@@ -2300,7 +2300,8 @@ _REWRITES += [
     (  # "two towers of 3 and a beam across": the beam lies across the towers
         re.compile(
             r"\b(towers?|pillars?|columns?|stacks?|posts?|uprights?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
-            r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar)\s+(?:across|over|on\s+top)"
+            r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar|deck)\s+(?:across|over|"
+            r"on\s+top)"
             r"(?:\s+(?:them|the\s+top|of\s+them|both))?\b",
             re.IGNORECASE,
         ),
@@ -2891,7 +2892,8 @@ _BEAMED = "|".join(
 )
 # "gate with two posts 4 high and a beam over them": the beam is the gate's own
 _OWN_BEAM = re.compile(
-    r"\b(" + _BEAMED + r")\b([^.;]*?)\s*,?\s*\band\s+(?:a|one|the)\s+(?:beam|lintel|slab)\s+"
+    r"\b(" + _BEAMED + r")\b([^.;]*?)\s*,?\s*\band\s+(?:a|one|the)\s+(?:beam|lintel|slab|deck|top)"
+    r"\s+"
     r"(?:on\s+top(?:\s+of\s+(?:them|the\s+\w+))?|over\s+(?:them|the\s+top)|across\s+"
     r"(?:them|the\s+top)|spanning\s+them|resting\s+on\s+them)",
     re.IGNORECASE,
