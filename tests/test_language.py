@@ -9032,3 +9032,62 @@ def test_a_plus_said_cube_by_cube_stairs_to_the_rear_and_a_wall_along_an_edge():
     _built_as_said("Protocol 2. Arrange 8 cubes in a single straight line along the y-axis, "
                    "contiguous.", ["row"], [1] * 8)  # fmt: skip
     _built_as_said("Construct an arch spanning a clear gap of 150 mm.", ["arch"], None)
+
+
+def test_posts_apart_by_their_centres_when_no_beam_spans_it_clear_and_a_bridge_said_as_a_beam():
+    # "about 15 cm apart with a header beam": a 15 cm clear span no beam bridges (a failure)
+    r = _built_as_said("Need two posts 3 high about 15 cm apart with a header beam across the "
+                       "top of 'em.", ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].span == 2
+    assert any("centres" in n for n in r.notes)
+    # "two towers 10 cm apart with a beam across": no structure was read at all
+    r = _built_as_said("two towers 10 cm apart with a beam across", ["bridge"], None)
+    assert r.spec.structures[0].span == 2
+    # "one bridge on top connecting both": a beam on the two towers (a bridge on one of them)
+    for command in ("Make two towers, each of 3 cubes, and kindly put one bridge on top "
+                    "connecting both.",
+                    "two towers of 3 and a beam on top connecting them"):  # fmt: skip
+        r = _built_as_said(command, ["bridge"], None)
+        assert r.spec.structures[0].height == 3, command
+
+
+def test_a_worksheets_first_and_second_a_cube_sized_three_ways_and_a_table_plate():
+    # "Build two towers. The first has 2 cubes, the second has 4 cubes.": a row of 2 beside
+    # two default towers
+    r = _built_as_said("Build two towers. The first has 2 cubes, the second has 4 cubes. Put "
+                       "the taller one on the right.", ["tower", "tower"], [2, 4])  # fmt: skip
+    by_y = sorted(_columns(r).items(), key=lambda kv: kv[0][1])
+    assert by_y[0][1] == 4  # the taller on the right (smaller y)
+    # "a cube that is 2 cubes long, 2 cubes wide and 2 cubes tall": a tower of 2
+    r = _built_as_said("Build a cube that is 2 cubes long, 2 cubes wide and 2 cubes tall.",
+                       ["block"], [2, 2, 2, 2])  # fmt: skip
+    # "which goes from the front to the back": 'goes' was reported as not used
+    r = _built_as_said("Please build me a row with 7 cubes, which goes from the front to the "
+                       "back.", ["row"], [1] * 7)  # fmt: skip
+    assert _extent_in_parts(r, 0) == 7
+    # "four legs … and a plate on top": the table's own top, not a relation left unused
+    r = _built_as_said("Please build me a table: four legs with height 3 cubes and a plate on "
+                       "top.", ["canopy"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 3
+
+
+def test_the_arms_of_a_letter_said_as_ways_and_a_metric_slab_one_cube_thick():
+    # "4 going up and 2 going across": the 2 was dropped, silently
+    r = _built_as_said("an L: 4 going up and 2 going across", ["l_shape"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (4, 2)
+    # "2 more going across": beside the corner cube
+    r = _built_as_said("Make the letter L: 4 cubes going up the page and 2 more going across.",
+                       ["l_shape"], [1] * 6)  # fmt: skip
+    r = _built_as_said("I see a letter L lying on the table, five along the long side and "
+                       "three along the short.", ["l_shape"], [1] * 7)  # fmt: skip
+    # a T's "3 across and 2 going down": the stem of 2 was dropped
+    r = _built_as_said("Make the letter T with cubes: 3 across the top and 2 going down.",
+                       ["t_shape"], None)  # fmt: skip
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (3, 2)
+    # "30 cm long, 15 cm deep, one cube thick": read as one part long and wide (partial)
+    _built_as_said("a slab 30 cm long, 15 cm deep, one cube thick", ["grid"], [1] * 18)
+    # a form's fields: a thickness is a wall's only; a title names the structure
+    _built_as_said("Slab requirements:\n- length: 30 cm (left to right)\n- depth: 15 cm\n"
+                   "- thickness: one cube", ["grid"], [1] * 18)  # fmt: skip
+    r = _built_as_said("REQ: slab 2x2x1 LOC: X 0.6 / Y 0.2", ["block"], [1] * 4)
+    assert r.spec.structures[0].at_y == pytest.approx(0.2)

@@ -334,7 +334,8 @@ def relate(
     return relations, structures
 
 
-_OWN_TOPS = frozenset({"top", "roof", "beam", "beams", "lintel", "deck", "tabletop", "slab"})
+_OWN_TOPS = frozenset({"top", "roof", "beam", "beams", "lintel", "deck", "tabletop", "slab",
+                       "plate", "board", "plank", "walkway"})
 _TOPPED = ("grid", "block", "pack", "cross")
 """Families whose middle is a top face another structure stands on."""
 

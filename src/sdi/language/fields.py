@@ -42,7 +42,7 @@ _QTY = frozenset({"qty", "quantity", "count", "number", "no", "pcs", "copies"})
 _SIZE = {
     "h": "high", "ht": "high", "height": "high", "l": "long", "len": "long", "length": "long",
     "w": "wide", "width": "wide", "d": "deep", "depth": "deep", "levels": "levels",
-    "tiers": "levels", "layers": "layers", "steps": "steps", "t": "thick", "thickness": "thick",
+    "tiers": "levels", "layers": "layers", "steps": "steps",
 }  # fmt: skip
 _LEG_HEIGHT = frozenset({"post h", "leg h", "legs h", "pillar h", "post height", "leg height",
                          "pillar height", "posts h", "pillars h"})  # fmt: skip
@@ -74,6 +74,7 @@ def as_words(text: str, notes: list[str]) -> str:
 
 def _read(fields: list[str]) -> str | None:
     family: str | None = None
+    titled = False  # a title field names the structure
     count: str | None = None
     rest: list[str] = []
     for field in fields:
@@ -112,6 +113,8 @@ def _read(fields: list[str]) -> str | None:
                 count = value
         elif key in _SIZE:
             rest.append(f"{value}{unit_said} {_SIZE[key]}")
+        elif key in ("t", "thickness") and family == "wall":  # "WALL L=6 H=3 T=1"
+            rest.append(f"{value}{unit_said} thick")
         elif key in _LEG_HEIGHT:
             rest.append(f"legs {value}{unit_said} high")
         elif key in _LEGS:
@@ -134,6 +137,7 @@ def _read(fields: list[str]) -> str | None:
             rest.append("with no beams" if value.lower() in _NO else "with a beam")
         elif key in _PROSE:  # "Title: Flat grid 2x6", "Notes: one layer only": words to read
             rest.append(value)
+            titled = titled or (key in ("title", "summary") and bool(families_said(value)))
         elif key in _CONTENTS:
             cubes = re.match(r"(\d+|one|a|two|three)\s+cubes?\b", value, re.I)
             if cubes:  # "Contents: 1 cube, centred inside": a column of them in its middle
@@ -142,7 +146,7 @@ def _read(fields: list[str]) -> str | None:
                 rest.append(f"and {value} inside it")
         else:
             rest.append(f"{key} {value}")
-    if family is None and len([r for r in rest if families_said(r)]) == 1:
+    if family is None and titled and len([r for r in rest if families_said(r)]) == 1:
         return ", ".join(rest)  # "Type: Task | Title: Flat grid 2x6": the title names it
     if family is None:
         return None

@@ -545,6 +545,36 @@ _LETTER_BEFORE = re.compile(
 letter-shaped wall, whose "4 by 3" would be its length and height."""
 
 
+_WAY = (
+    r"(?:(?:going|running|that\s+go(?:es)?|goes|runs|heading)\s+)?(?:along\s+the\s+(?:long|short)(?:\s+"
+    r"(?:side|arm|leg|edge))?|the\s+(?:long|short)\s+(?:side|arm|leg)|up(?:wards?)?|down(?:wards?)?|"
+    r"across|along|back(?:wards)?|forwards?|north|south|east|west|sideways|to\s+the\s+(?:left|right))"
+)
+_ARMS_SAID = re.compile(
+    rf"\b(?P<a>{_NUM})\s+(?:cubes?\s+|blocks?\s+)?(?P<wa>{_WAY})\b(?:\s+(?:the|a|this)\s+"
+    r"(?:page|sheet|table|top))?\s*,?\s*(?:and|then|,)\s+(?:then\s+)?(?:another\s+)?"
+    rf"(?P<b>{_NUM})\s+(?P<more>more\s+)?(?:cubes?\s+|blocks?\s+)?(?P<wb>{_WAY})\b"
+    r"(?:\s+(?:the|a|this)\s+(?:page|sheet|table|top))?(?:\s+(?:one|ones|side|arm|leg|edge))?",
+    re.I,
+)
+
+
+def _arms_said(m: re.Match[str]) -> str:
+    """ "the letter L: 4 cubes going up the page and 2 more going across": an L of arms 4
+    and 3 (the 2 was dropped, silently); "a T … 3 across and 2 going down": its bar and stem."""
+    before = _sentence_before(m.string, m.start())
+    letter = re.search(r"\b(?:(?-i:[LT])|l[\s-]?shaped?|t[\s-]?shaped?)\b", before, re.I)
+    ways = r"going|running|goes|runs|heading|go|more|long|short|page|sheet|north|south|east|west"
+    plain = not re.search(rf"\b(?:{ways}|back\w*|forwards?|sideways|to)\b", m.group(0), re.I)
+    if letter is None or plain or m.group("wa").lower().strip() == m.group("wb").lower().strip():
+        return m.group(0)  # "five down and three across": read as it is
+    a, b = words_to_numbers([m.group("a").lower(), m.group("b").lower()])
+    if letter.group(0).lower().startswith("t"):
+        return f"the top bar {a} long and the stem {b}"
+    more = 1 if m.group("more") else 0  # "2 more going across": beside the corner cube
+    return f"arms of {a} and {int(b) + more}"
+
+
 def _sentence_before(text: str, at: int) -> str:
     """The words of the sentence `text` is in at `at`, up to there."""
     return re.split(r"[.;]", text[:at])[-1]
@@ -1437,6 +1467,17 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a ring around a 3x3 floor area": the area (a floor was built beside it)
     (re.compile(r"\b((?:around|round|enclosing|surrounding)\s+(?:an?\s+)?(?:empty\s+)?\d+\s*(?:x|by)\s*\d+"
                 r")\s+floor\s+(?:area|space|patch)\b", re.I), r"\1 space"),
+    # "a cube that is 2 cubes long, 2 cubes wide and 2 cubes tall": a block that size (a tower
+    # of 2)
+    (re.compile(r"\b((?:a|one)\s+(?:(?:big|large|solid|small|single)\s+)?)cube\b(?=(?:\s*,|\s+(?:that|"
+                r"which)\s+(?:is|measures))?\s+(?:\d|one|two|three|four|five)[^.;]*?\blong\b[^.;]*?\bwide\b[^.;]*?"
+                r"\b(?:tall|high|deep)\b)",
+                re.I), r"\1block"),
+    # "a row with 7 cubes, which goes from the front to the back": the way it runs ("goes" was
+    # reported as not used)
+    (re.compile(r"\b(?:(?:which|that)\s+)?(?:goes|runs|extends|stretches|reaches|going|running|"
+                r"extending|stretching)\s+(?=from\s+(?:the\s+)?(?:front|back|left|right|near|far)\b[^.;]{0,25}"
+                r"\bto\b)", re.I), ""),
     # "8 cubes in a line, contiguous": touching (reported as not used)
     (re.compile(r"\bcontiguous(?:ly)?\b", re.I), "touching"),
     # "an arch spanning a clear gap of 150 mm": its span ("spanning" reported as not used)
@@ -1444,6 +1485,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"distance)\s+of\b", re.I), r"\1 with a span of"),
     # "a 2x2 base tier", "1 tier": a layer (a palletiser's word; "tier" was not used)
     (re.compile(r"\btier\b", re.I), "layer"),
+    # "two towers … and put one bridge on top connecting both": a beam joining them (a bridge
+    # beside the towers, on one of them)
+    (re.compile(r"\b(a|one|the)\s+bridge\s+(?=(?:on\s+top|across(?:\s+the\s+tops?)?|over)\b[^.;]{0,30}?"
+                r"\b(?:connecting|joining|linking|between|spanning)\b)", re.I),
+     lambda m: f"{m.group(1)} beam "
+     if re.search(r"\b(?:towers|pillars|columns|stacks|posts)\b",
+                  _sentence_before(m.string, m.start()), re.I)
+     else m.group(0)),
     # a bridge's "walkway", "footway", "roadway": its deck
     (re.compile(r"\b(?:walk|foot|road)[\s-]?way\b", re.I), "deck"),
     # "two supports, three high, and a walkway on top": pillars (nothing was built, or a block)
@@ -1620,6 +1669,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|"
                 r"blocks))\s*\.\s+(?=one\s[^.;]*?\b(?:on|at)\s+the\s+(?:left|right|front|back)\b[^.;]*?,?"
                 r"\s*(?:and\s+)?(?:one|the\s+other)\s)", re.I), r"\1, "),
+    # "Build two towers. The first has 2 cubes, the second has 4 cubes.": one sentence (the
+    # sizes were read as a row of their own)
+    (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|"
+                r"blocks))\s*\.\s+(?=the\s+first\s+(?:one\s+)?(?:has|is|of|should|with|will|gets|"
+                r"needs|\d|one|two|three|four|five|six)\b[^.;]*?\bthe\s+(?:second|other|last)\b)",
+                re.I),
+     r"\1, "),
     # "four cubes in the four corners of the table": one in each corner
     (re.compile(r"\b(in|on|at|into)\s+(?:all\s+)?the\s+(?:four|4)\s+corners\b", re.I),
      r"\1 each corner"),
@@ -2830,6 +2886,7 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     # "make letter T with cubes", "build the letter U 5 wide": that shape
     (re.compile(r"\b(?:(?:an?|the)\s+)?(?:big\s+|capital\s+)?letter\s+([TLUtlu])\b(?![-'])(?!\s+shape)"),
      r"a \1 shape"),
+    (_ARMS_SAID, _arms_said),
     # a foreman's codes: "T4 back left", "2x T3", "W 5x2 front" (capital letter, a number)
     (re.compile(r"\b([2-9])\s*x\s*T(\d{1,2})(?![\w.-])(?!\s*(?:x|by|shape)\b)"),
      r"\1 towers of \2"),
@@ -3214,7 +3271,8 @@ def _expand_noted(
 
         def expand(m: re.Match[str], repl: _Repl = repl) -> str:
             out = repl(m) if callable(repl) else m.expand(repl)
-            notes.append(f"read '{m.group(0).strip()}' as '{out.strip()}'")
+            if out != m.group(0):  # a function may leave what it matched as it was
+                notes.append(f"read '{m.group(0).strip()}' as '{out.strip()}'")
             return out
 
         text = pattern.sub(expand, text)

@@ -2302,7 +2302,8 @@ _REWRITES += [
             r"\b(towers?|pillars?|columns?|stacks?|posts?|uprights?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
             r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar|deck)\s+(?:across|over|"
             r"on\s+top)"
-            r"(?:\s+(?:them|the\s+top|of\s+them|both))?\b",
+            r"(?:\s+(?:them|the\s+top|of\s+them|both))?"
+            r"(?:,?\s+(?:connecting|joining|linking)\s+(?:them|both|the\s+two)(?:\s+of\s+them)?)?\b",
             re.IGNORECASE,
         ),
         " {0}{1} joined at the top by a {2} ",

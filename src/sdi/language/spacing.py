@@ -186,11 +186,22 @@ def take_span(text: str, st: ReadState) -> str:
     span = _measured(m, st.cell.cube[0]) if m is not None else None
     if m is None or span is None:
         return text
+    beam = st.cell.part_types.get("beam")
+    reach = beam[0] - 2 * st.cell.tolerances.support_overlap if beam else None
+    part = st.cell.cube[0]
+    if reach and re.search(r"\bapart\b", m.group(0), re.I) and span > reach >= span - part:
+        # "two posts 15 cm apart with a beam across": no beam spans 15 cm clear, so the 15 cm
+        # is between their centres (the bridge failed)
+        st.notes.append(f"read '{m.group(0).strip(' ,')}' as between the supports' centres: "
+                        f"{span - part:g} m clear (a beam spans at most {reach:g} m)")  # fmt: skip
+        span = round(span - part, 6)
+    else:
+        st.notes.append(f"read '{m.group(0).strip(' ,')}' as {span:g} m between the supports")
     st.span_m = span
-    st.notes.append(f"read '{m.group(0).strip(' ,')}' as {span:g} m between the supports")
     # "two 3 high towers 10 cm apart": the supports' noun names them, and stays
     named = re.match(r"\s*(" + _SUPPORTS + r")\b", m.group(0), re.IGNORECASE)
-    if not re.search(r"\b(?:high|tall|cubes?|levels?)\s*$", text[: m.start()], re.IGNORECASE):
+    counted = r"\b(?:high|tall|cubes?|levels?|(?<!the\s)(?:two|three|four|five|six|\d+))\s*$"
+    if not re.search(counted, text[: m.start()], re.I):  # "two towers 10 cm apart": counted
         named = None  # "leave the two stacks a cube apart": the stacks named before
     return text[: m.start()] + " " + (named.group(1) + " " if named else "") + text[m.end() :]
 

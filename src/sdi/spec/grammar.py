@@ -844,8 +844,10 @@ class _Parser:
                     if h.shape == "t_shape" and part:  # "the top bar 5 long and the stem 3"
                         key = _T_PARTS[part]
                         take(k - 1 if part == prev else k - 2)
-                    if wj == "thick" and "length" in p and "width" in p:
-                        key = "height"  # "five across and three deep, one cube thick"
+                    if wj == "thick" and p.keys() & {"length", "length_m"} and p.keys() & {
+                        "width", "width_m"
+                    }:  # "five across and three deep, one cube thick", "30 cm long, 15 cm deep"
+                        key = "height"
                     elif key in p and p[key] != v and p.get("_word_" + key) != wj:
                         other = {"width": "length", "length": "width"}.get(key)
                         if (
