@@ -9091,3 +9091,34 @@ def test_the_arms_of_a_letter_said_as_ways_and_a_metric_slab_one_cube_thick():
                    "- thickness: one cube", ["grid"], [1] * 18)  # fmt: skip
     r = _built_as_said("REQ: slab 2x2x1 LOC: X 0.6 / Y 0.2", ["block"], [1] * 4)
     assert r.spec.structures[0].at_y == pytest.approx(0.2)
+
+
+def test_layers_said_in_turn_a_tower_on_the_middle_of_a_row_and_towers_of_one_cube():
+    # the issue's own example: "then one cube as the third level" was a relation cycle (error)
+    r = _built_as_said("first a 3x3 layer, then a 2x2 layer on it, then one cube as the third "
+                       "level", ["grid", "grid", "tower"], None)  # fmt: skip
+    assert _level_sizes(r.layout) == [(3, 3), (2, 2), (1, 1)]
+    # "then a 2 by 2 layer, finish with a single cube on top": the 2x2 beside the 3x3
+    r = _built_as_said("Start with a 3 by 3 layer, then a 2 by 2 layer, finish with a single "
+                       "cube on top. Centre each layer.", ["grid", "grid", "tower"],
+                       None)  # fmt: skip
+    assert _level_sizes(r.layout) == [(3, 3), (2, 2), (1, 1)]
+    # "on top of the middle of a row of three": set at the table's centre, beside the row
+    r = _built_as_said("Tower of two on top of the middle of a row of three.", ["tower", "row"],
+                       [1, 1, 3])  # fmt: skip
+    # "a 1-cube tower", "four single-cube towers": built 3 high, silently
+    _built_as_said("a 1-cube tower", ["tower"], [1])
+    _built_as_said("Sentinel posts: four single-cube towers, one at each corner of the table.",
+                   ["tower"] * 4, [1] * 4)  # fmt: skip
+    # a pier one brick wide is still one part across
+    _built_as_said("a 1-brick pier 3 high", ["tower"], [3])
+
+
+def test_one_in_each_corner_of_a_side_and_both_towers_said_again():
+    # "two columns of five, one in each back corner": the second was a single cube
+    r = _built_as_said("Two specimen columns of five, one in each back corner.",
+                       ["tower", "tower"], [5, 5])  # fmt: skip
+    assert {s.region for s in r.spec.structures} == {"back left", "back right"}
+    # "Build both towers side by side": two more default towers were built
+    _built_as_said("A tower has 3 cubes. A second tower is twice as tall. Build both towers "
+                   "side by side.", ["tower", "tower"], [3, 6])  # fmt: skip

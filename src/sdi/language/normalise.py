@@ -92,6 +92,8 @@ _ONE_OF_EACH = re.compile(r"\bone\s+(?:of|with|tower|stack|wall|row)\b(?![^.;]*[
 _CORNERS_OF = {
     "back": ("back left", "back right"), "front": ("front left", "front right"),
     "left": ("front left", "back left"), "right": ("front right", "back right"),
+    "rear": ("back left", "back right"), "far": ("back left", "back right"),
+    "near": ("front left", "front right"),
 }  # fmt: skip
 """The two corners on one side of the table: "in each back corner"."""
 _SHAPE_NOUNS = frozenset(w for w in lx.SHAPE_WORDS if w not in lx.AMBIGUOUS_SHAPES and len(w) > 2)
@@ -741,9 +743,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b((?:two|three|four|[2-4])\s+\d+\s*(?:x|by)\s*\d+\s+)(?:layer|level|tier|course)s\b"
                 r"(?=[^.;]*\b(?:side\s+by\s+side|next\s+to\s+each\s+other|beside\s+each\s+other|apart|"
                 r"in\s+a\s+(?:row|line))\b)", re.I), r"\1slabs"),
-    # "a 1-brick pier": one part across, as a pier is
-    (re.compile(r"\b(?:1|one|single)[\s-](?:brick|cube|block)[\s-](?:wide\s+|thick\s+)?(?=(?:pier|"
-                r"column|pillar|post|tower|chimney|stack|wall)s?\b)", re.I), ""),
+    # "a 1-brick pier": one part across, as a pier is; "four single-cube towers": towers of one
+    # cube (built 3 high, silently)
+    (re.compile(r"\b(?:1|one|single)[\s-](?:brick|cube|block)[\s-](?:(?:wide|thick)\s+(?=(?:pier|"
+                r"column|pillar|post|tower|chimney|stack|wall)s?\b)|(?=(?:pier|chimney|wall)s?\b))",
+                re.I), ""),
+    (re.compile(r"\b(?:1|one|single)[\s-](?:brick|cube|block)[\s-]((?:column|pillar|post|tower|"
+                r"stack)s?)\b", re.I), r"\1 of 1"),
     # warehouse talk: "one stack of five at bay left", "bay right, one stack of three": that
     # side of the table
     (re.compile(r"\b(?:(at|on|in|along)\s+)?bay\s+(left|right)\b", re.I),
@@ -1478,6 +1484,28 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:(?:which|that)\s+)?(?:goes|runs|extends|stretches|reaches|going|running|"
                 r"extending|stretching)\s+(?=from\s+(?:the\s+)?(?:front|back|left|right|near|far)\b[^.;]{0,25}"
                 r"\bto\b)", re.I), ""),
+    # "a tower of two on top of the middle of a row of three": on its middle (set at the
+    # table's centre, beside the row, silently)
+    (re.compile(r"\bon\s+top\s+of\s+the\s+(middle|centre|center)\s+of\b", re.I), r"on the \1 of"),
+    # "A tower has 3 cubes. A second tower is twice as tall. Build both towers side by side.":
+    # the two said (two more towers were built)
+    (re.compile(r"\bboth\s+(?:of\s+)?(?:the\s+|these\s+|those\s+)?(" + _FAMILY_SAID + r")s\b",
+                re.I),
+     lambda m: f"the two {m.group(1)}s"
+     if families_said(m.string[: m.start()]).count(lx.SHAPE_WORDS.get(m.group(1).lower(), "")) >= 2
+     else m.group(0)),
+    # "…, finish with a single cube on top", "and end with": then (the cube's relation was lost)
+    (re.compile(r",\s*(?:and\s+)?(?:finish(?:ing)?|end(?:ing)?|round(?:ing)?\s+it\s+off|top(?:ping)?\s+it\s+"
+                r"off)\s+(?:off\s+|up\s+)?with\s+(?=(?:an?|one|a\s+single)\s)", re.I), ", then "),
+    # "Start with a 3 by 3 layer, then a 2 by 2 layer, finish with a single cube on top": a
+    # layer after a layer is laid on it (it was set beside it, silently)
+    (re.compile(r"\b((?:layer|level|course)\b\s*,?\s*(?:and\s+)?then\s+(?:an?|one)\s+(?:\d+\s*(?:x|by)\s*\d+"
+                r"\s+)?(?:layer|level|course))\b(?!\s*(?:on|onto|beside|next|to|at|in|behind|under|below|"
+                r"above|over|of|,\s*(?:on|beside|next|to|at|in|behind)\b))", re.I), r"\1 on it"),
+    # "first a 3x3 layer, then a 2x2 layer on it, then one cube as the third level": a cube on
+    # top (a relation cycle, an error)
+    (re.compile(r"\b(then|and\s+then|finally|lastly)\s+one\s+(?:single\s+)?(cube|block|brick)\b(?=\s+(?:on|as|at|"
+                r"to\s+top|for)\b)", re.I), r"\1 a \2"),
     # "8 cubes in a line, contiguous": touching (reported as not used)
     (re.compile(r"\bcontiguous(?:ly)?\b", re.I), "touching"),
     # "an arch spanning a clear gap of 150 mm": its span ("spanning" reported as not used)
@@ -2293,6 +2321,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"cubes?))?)?\s*,?\s*(?:with\s+)?one\s+(?:in|at|on)\s+each\s+corner\s+of\s+the\s+"
                 r"(table|workspace|cell)\b", re.I),
      lambda m: f"a {m.group(1)[:-1]}{m.group(2) or ''} in each corner of the {m.group(3)}"),
+    # "two columns of five, one in each back corner": one in the back left and one in the back
+    # right corner (the second was a single cube, silently)
+    (re.compile(r"\b(?:two|2|both)\s+(?P<adj>[a-z]+\s+)??(towers|stacks|columns|pillars|posts|cubes|blocks|"
+                r"pyramids)(\s+(?:of\s+)?"
+                r"[\w-]+(?:\s+(?:high|tall|cubes?))?)?\s*,?\s*(?:with\s+)?one\s+(?:in|at|on)\s+(?:each|either|"
+                r"both)\s+(?:of\s+the\s+)?(back|front|rear|far|near|left|right)(?:[\s-]+hand)?\s+corners?\b"
+                r"(?:\s+of\s+the\s+(?:table|workspace|cell))?", re.I),
+     lambda m: " and ".join(
+         f"a {m.group('adj') or ''}{m.group(2)[:-1]}{m.group(3) or ''} in the {corner} corner"
+         for corner in _CORNERS_OF[m.group(4).lower()])),
     # "two walls facing each other": parallel, one behind the other
     (re.compile(r"\b(walls|rows|lines)((?:\s+(?:of\s+)?(?:\d+|two|three|four|five|six|seven|eight)"
                 r"(?:\s+(?:cubes?|long|high))?)?)\s+facing\s+each\s+other\b", re.I),
@@ -2487,7 +2525,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 re.I),
      lambda m: f"{m.group(1)} {m.group(4)} by {m.group(3)}" if _product(m) else m.group(0)),
     # "one per corner of a slab", "one at each end of the wall": one on (at) each of them
-    (re.compile(r"\b(?:one|1|a\s+single\s+one)\s+(per|for\s+each|at\s+each|at\s+every|"
+    (re.compile(r"(?<!\bof\s)\b(?:one|1|a\s+single\s+one)\s+(per|for\s+each|at\s+each|at\s+every|"
                 r"on\s+every|in\s+each|on\s+each|on\s+(?:all\s+)?(?:four|4|two|2|both))\s+"
                 r"(corner|end)s?\b", re.I),
      lambda m: f"{_EACH_AT.get(m.group(1).split()[0].lower(), 'on')} each {m.group(2)}"),
