@@ -9122,3 +9122,33 @@ def test_one_in_each_corner_of_a_side_and_both_towers_said_again():
     # "Build both towers side by side": two more default towers were built
     _built_as_said("A tower has 3 cubes. A second tower is twice as tall. Build both towers "
                    "side by side.", ["tower", "tower"], [3, 6])  # fmt: skip
+
+
+def test_a_complaint_about_the_last_run_and_a_texters_abbreviations():
+    # "You put the tower on the left again. … Tower of three, right side.": two towers
+    r = _built_as_said("You put the tower on the left again. I wanted it on the right. Tower of "
+                       "three, right side.", ["tower"], [3])  # fmt: skip
+    assert r.spec.structures[0].region == "right"
+    # "The ring had a cube in the middle. A 4x4 square ring, …": a 3x3 ring, a cube and the ring
+    _built_as_said("The ring had a cube in the middle. A 4x4 square ring, 1 high, EMPTY in the "
+                   "middle this time.", ["enclosure"], [1] * 12)  # fmt: skip
+    # "up twd back" climbed to the left; "bk R" was dropped; "4+3" an L of 7
+    r = _built_as_said("stairs x4, up twd back", ["staircase"], None)
+    assert [h for _, h in sorted(_columns(r).items())] == [1, 2, 3, 4]
+    r = _built_as_said("twr 3 no 4, bk R", ["tower"], [4])
+    assert r.spec.structures[0].region == "back right"
+    _built_as_said("L shp 4+3 flat", ["l_shape"], [1] * 6)
+
+
+def test_a_fence_said_as_a_line_a_border_along_an_edge_and_circling_back():
+    # "little fence, eight cubes in a line": a default wall beside a row of 8
+    r = _built_as_said("Fair dinkum little fence, eight cubes in a line, running front to back "
+                       "on the right side.", ["wall"], [1] * 8)  # fmt: skip
+    assert _extent_in_parts(r, 0) == 8
+    # "a low border … along the right-hand edge": a ring of 16 parts
+    r = _built_as_said("I'd like a low border, one cube high, running all along the right-hand "
+                       "edge, seven cubes long.", ["wall"], [1] * 7)  # fmt: skip
+    assert _extent_in_parts(r, 0) == 7
+    # "Circle back to the wall: …": a ring as well as the wall
+    _built_as_said("Circle back to the wall: three cubes long, four high, built along the left "
+                   "edge.", ["wall"], [4] * 3)  # fmt: skip

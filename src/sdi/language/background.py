@@ -14,8 +14,9 @@ from sdi.spec.numbers import COUNT_WORDS
 
 _SENTENCE = re.compile(r"[^.!?]+(?:[.!?]+\s*|$)")
 _PAST = re.compile(
-    r"\b(?:last\s+time|yesterday|earlier|previously|before|left\s+off|was|were|had|fell|"
-    r"collapsed|broke|came\s+out|ended\s+up|did\s+not|didn't)\b",
+    r"\b(?:last\s+time|yesterday|earlier|previously|before|left\s+off|was|were|had|fell|went|"
+    r"collapsed|broke|came\s+out|ended\s+up|did\s+not|didn't|you\s+(?:put|built|made|placed|set|"
+    r"stacked|did|gave))\b",
     re.IGNORECASE,
 )
 _ASKS = re.compile(
@@ -41,10 +42,13 @@ def recounted(text: str, notes: list[str]) -> str:
     kept: list[str] = []
     for k, said in enumerate(sentences):
         named = families_said(said)
-        if not named or not _PAST.search(said) or _ASKS.search(said) or _NUMBER.search(said):
+        asks = _ASKS.search(re.sub(r"\byou\s+\w+", "", said, flags=re.I))  # "You put …": told
+        if not named or not _PAST.search(said) or asks or _NUMBER.search(said):
             kept.append(said)
             continue
-        later = next((j for j in range(k + 1, len(sentences)) if _ASKS.search(sentences[j])), None)
+        later = next((j for j in range(k + 1, len(sentences)) if _ASKS.search(sentences[j])
+                      or (families_said(sentences[j]) and _NUMBER.search(sentences[j]))),
+                     None)  # fmt: skip
         if later is None:
             kept.append(said)
             continue

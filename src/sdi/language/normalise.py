@@ -1506,6 +1506,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # top (a relation cycle, an error)
     (re.compile(r"\b(then|and\s+then|finally|lastly)\s+one\s+(?:single\s+)?(cube|block|brick)\b(?=\s+(?:on|as|at|"
                 r"to\s+top|for)\b)", re.I), r"\1 a \2"),
+    # "little fence, eight cubes in a line": the fence is the line (a default wall and a row)
+    (re.compile(r"\b(fence|wall|border|barrier|kerb|curb|edging|hedge|row|line)\s*,\s*(" + _NUM
+                + r")\s+(?:cubes?|blocks?|bricks?)\s+(?:long\s+)?in\s+an?\s+(?:straight\s+)?"
+                r"(?:line|row)\b", re.I), r"\1, \2 cubes long"),
+    # "a low border … running all along the right-hand edge": a wall along it (a ring)
+    (re.compile(r"\bborder\b(?=[^.;]*\b(?:along|down)\s+(?:the\s+)?(?:\w+[\s-]+){0,2}(?:edge|side)\b)"
+                r"(?![^.;]*\b(?:around|round|enclos\w*|surround\w*)\b)", re.I), "wall"),
+    # "Circle back to the wall: …": return to it (a ring was built)
+    (re.compile(r"\bcircl(?:e|ing)\s+back\s+(?:to|round\s+to|around\s+to)\b", re.I), ""),
     # "8 cubes in a line, contiguous": touching (reported as not used)
     (re.compile(r"\bcontiguous(?:ly)?\b", re.I), "touching"),
     # "an arch spanning a clear gap of 150 mm": its span ("spanning" reported as not used)
@@ -2966,6 +2975,14 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bpyr\b\.?", re.I), "pyramid"),
     (re.compile(r"\blvls?\b\.?", re.I), "levels"),
     (re.compile(r"\b(?:twd|twds|twrds)\b\.?", re.I), "towards"),
+    # "stairs x4, up twd back": climbing towards the back (read as the table's back region)
+    (re.compile(r"\b(up|climb\w*|ris(?:e|es|ing)|going\s+up)\s+(towards?|toward)\s+(back|front|left|right)\b",
+                re.I), r"\1 \2 the \3"),
+    # "bk R", "bk rt": a texter's back right
+    (re.compile(r"\b(?:bk|bck)\b\.?(?=\s*(?:R|L|rt|lt|right|left|corner|side|edge|$|[,.;]))", re.I),
+     "back"),
+    (re.compile(r"(?<=\bback\s)(?-i:R)\b|(?<=\bfront\s)(?-i:R)\b"), "right"),
+    (re.compile(r"(?<=\bback\s)(?-i:L)\b|(?<=\bfront\s)(?-i:L)\b"), "left"),
     (re.compile(r"\b(back|front|rear)\s+rt\b\.?|\brt\b(?=\s+(?:side|corner|of)\b)", re.I),
      lambda m: f"{m.group(1) or ''} right".strip()),
     (re.compile(r"\b(back|front|rear)\s+lt\b\.?|\blt\b(?=\s+(?:side|corner|of)\b)", re.I),
@@ -4348,6 +4365,10 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
 
     def plus(m: re.Match[str]) -> str:
+        before = _sentence_before(m.string, m.start())
+        if re.search(r"\b(?-i:L)\b|\bl[\s-]?shaped?\b", before, re.I):
+            notes.append(f"read '{m.group(0)}' as the L's two arms")
+            return f" {m.group(1)} by {m.group(2)} "  # "L shp 4+3": arms, not an L of 7
         total = int(m.group(1)) + int(m.group(2))
         notes.append(f"read '{m.group(0)}' as {total}")
         return str(total)

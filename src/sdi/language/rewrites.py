@@ -2222,7 +2222,9 @@ _REWRITES += [
     ),
     (re.compile(r",?\s*\bnear\s+the\s+edge\b", re.IGNORECASE), " ", ""),
     (  # "along the left edge": running front to back, against it ("side": on that side)
-        re.compile(r"\balong\s+(?:the\s+)?(left|right)\s+(?:edge|boundary|border)\b", re.I),
+        re.compile(
+            r"\balong\s+(?:the\s+)?(left|right)(?:[\s-]hand)?\s+(?:edge|boundary|border)\b", re.I
+        ),
         " along x at the {0} edge ",
         "read '{0}' as running front to back against that edge of the workspace",
     ),
