@@ -9152,3 +9152,21 @@ def test_a_fence_said_as_a_line_a_border_along_an_edge_and_circling_back():
     # "Circle back to the wall: …": a ring as well as the wall
     _built_as_said("Circle back to the wall: three cubes long, four high, built along the left "
                    "edge.", ["wall"], [4] * 3)  # fmt: skip
+
+
+def test_a_board_square_a_centre_left_empty_and_a_programmers_calls():
+    # "on the back-left square" (of a board): a slab was built under the rook
+    r = _built_as_said("Think of the table as a board. Put a rook - a tower of three cubes - on "
+                       "the back-left square.", ["tower"], [3])  # fmt: skip
+    assert r.spec.structures[0].region == "back left"
+    # "with the centre square empty, one rank high": a full 3x3 and a row of 8
+    _built_as_said("Set up a 3 by 3 square with the centre square empty, one rank high.",
+                   ["enclosure"], [1] * 8)  # fmt: skip
+    # a call: "tower(4)" at "back_left" (21 parts); "for level in range(3): …" (one layer)
+    r = _built_as_said("if table.empty(): build tower(4) at back_left", ["tower"], [4])
+    assert r.spec.structures[0].region == "back left"
+    _built_as_said("for level in range(3): lay 2x2 square", ["block"], [3] * 4)
+    r = _built_as_said("T(bar=5, stem=2), flat", ["t_shape"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (5, 2)
+    r = _built_as_said("pyramid(base=4, square=True)", ["pyramid"], None)
+    assert _level_sizes(r.layout)[0] == (4, 4)

@@ -577,6 +577,26 @@ def _arms_said(m: re.Match[str]) -> str:
     return f"arms of {a} and {int(b) + more}"
 
 
+def _called(m: re.Match[str]) -> str:
+    """ "tower(4)": a tower of 4; "T(bar=5, stem=2)": a T shape, bar 5, stem 2;
+    "pyramid(base=4, square=True)": a pyramid, base 4, square (a flag set is its word)."""
+    name = f"{m.group(1)} shape" if m.group(1) in ("T", "L", "U") else m.group(1)
+    args = [a.strip() for a in m.group(2).split(",") if a.strip()]
+    if len(args) == 1 and args[0].isdigit():
+        return f"{name} of {args[0]}"
+    flags, said = [], []
+    keyed = {"base": "base {} wide", "height": "{} high", "h": "{} high", "width": "{} wide",
+             "w": "{} wide", "length": "{} long", "l": "{} long",
+             "levels": "{} levels"}  # fmt: skip
+    for arg in args:
+        key, _, value = (w.strip() for w in arg.partition("="))
+        if value.lower() in ("true", "yes"):
+            flags.append(key)  # "square=True": a square one
+        elif value.lower() not in ("false", "no", "none"):
+            said.append(keyed.get(key.lower(), key + " {}").format(value) if value else key)
+    return ", ".join([" ".join([*flags, name]), *said])
+
+
 def _sentence_before(text: str, at: int) -> str:
     """The words of the sentence `text` is in at `at`, up to there."""
     return re.split(r"[.;]", text[:at])[-1]
@@ -1515,6 +1535,25 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?![^.;]*\b(?:around|round|enclos\w*|surround\w*)\b)", re.I), "wall"),
     # "Circle back to the wall: …": return to it (a ring was built)
     (re.compile(r"\bcircl(?:e|ing)\s+back\s+(?:to|round\s+to|around\s+to)\b", re.I), ""),
+    # "a 3 by 3 square with the centre square empty": its middle empty (a second, a row of 8)
+    (re.compile(r"\bwith\s+(?:the\s+)?(centre|center|middle)\s+(?:square|cube|spot|cell|block|one|"
+                r"position)\s+(?:left\s+)?(empty|open|free|missing|out|removed)\b", re.I),
+     " hollow"),
+    # "a rook on the back-left square" (of a board): that corner of the table (a slab was
+    # built under it)
+    (re.compile(r"\b(?:on|at|in)\s+the\s+((?:back|front|far|near)[\s-]+(?:left|right))\s+(?:square|cell)\b"
+                r"(?!\s+of\s+(?!the\s+(?:table|board)\b))(?:\s+of\s+the\s+(?:table|board))?", re.I),
+     r"in the \1 corner"),
+    # a programmer's call: "tower(4)", "T(bar=5, stem=2)", "pyramid(base=4, square=True)":
+    # the structure and its sizes; "if table.empty():" a condition; "back_left" a place;
+    # "for level in range(3): lay 2x2 square" that many levels
+    (re.compile(r"\bif\s+[\w.]+\(\)\s*:\s*", re.I), ""),
+    (re.compile(r"\b(back|front)_(left|right)\b", re.I), r"\1 \2"),
+    (re.compile(r"\bfor\s+(?:level|layer|tier|course|z)\s+in\s+range\(\s*(\d+)\s*\)\s*:\s*([^.;\n]+)",
+                re.I), r"\2, \1 layers"),
+    (re.compile(r"\b(" + _FAMILY_SAID + r"|(?-i:[TLU]))\(([^()]*)\)", re.I), _called),
+    # "one rank high" (a chess player's row): one high (a row of 8 was built)
+    (re.compile(r"\b(" + _NUM + r")\s+ranks?\s+(high|tall)\b", re.I), r"\1 \2"),
     # "8 cubes in a line, contiguous": touching (reported as not used)
     (re.compile(r"\bcontiguous(?:ly)?\b", re.I), "touching"),
     # "an arch spanning a clear gap of 150 mm": its span ("spanning" reported as not used)
