@@ -9170,3 +9170,13 @@ def test_a_board_square_a_centre_left_empty_and_a_programmers_calls():
     assert (r.spec.structures[0].length, r.spec.structures[0].width) == (5, 2)
     r = _built_as_said("pyramid(base=4, square=True)", ["pyramid"], None)
     assert _level_sizes(r.layout)[0] == (4, 4)
+
+
+def test_the_left_tower_has_two_cubes_the_right_has_four():
+    # the sizes in a sentence of their own, said with "has": a row of 2 beside default towers
+    r = _built_as_said("Two towers stand 15 cm apart (gap between them). The left tower has 2 "
+                       "cubes, the right has 4. Build them.", ["tower", "tower"],
+                       [2, 4])  # fmt: skip
+    by_y = sorted(_columns(r).items(), key=lambda kv: kv[0][1])
+    assert [h for _, h in by_y] == [4, 2]  # right (smaller y) 4, left 2
+    assert by_y[1][0][1] - by_y[0][0][1] == pytest.approx(0.15 + 0.05)  # 15 cm clear

@@ -607,7 +607,7 @@ _SIDE_ONE = (
     r"wall|row)\b))(?:[\s-]?(?:hand|most))?"
     r"(?:\s+(?:one|tower|stack|column|"
     r"wall|row))?\s+(?:(?:is|should\s+be|must\s+be|will\s+be|needs\s+to\s+be|has\s+to\s+be|"
-    r"is\s+to\s+be)\s+)?"
+    r"is\s+to\s+be|has|gets|should\s+have|with)\s+)?"
 )
 """'the left one should be', 'right': one of several, named by its side."""
 _SIDE_SIZE = rf"{_NUM}\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?)"
@@ -645,7 +645,8 @@ def _side_one(m: re.Match[str], size: str | None) -> str:
             return m.group(0)  # the table's middle is not the middle of a group set together
         return f"one {size} in the middle"
     where = "on the " if side in ("left", "right") else "at the "
-    return f"one {size} {where}{side}"
+    of = "of " if re.search(r"\bcubes?$", size, re.I) else ""  # "has 2 cubes": one of 2 cubes
+    return f"one {of}{size} {where}{side}"
 
 
 def _sizes_listed(m: re.Match[str]) -> str:
@@ -663,7 +664,7 @@ def _sizes_listed(m: re.Match[str]) -> str:
 def _with_unit_before(m: re.Match[str]) -> str | None:
     """ "the left one 5 high, the right one 2": the bare 2 in the unit of the one before."""
     said = re.findall(
-        rf"\b{_NUM}\s+((?:cubes?\s+)?(?:high|tall|long|wide|levels?))\b",
+        rf"\b{_NUM}\s+((?:cubes?\s+)?(?:high|tall|long|wide|levels?)|cubes?)\b",
         _sentence_before(m.string, m.start()),
         re.I,
     )
@@ -1554,6 +1555,19 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(" + _FAMILY_SAID + r"|(?-i:[TLU]))\(([^()]*)\)", re.I), _called),
     # "one rank high" (a chess player's row): one high (a row of 8 was built)
     (re.compile(r"\b(" + _NUM + r")\s+ranks?\s+(high|tall)\b", re.I), r"\1 \2"),
+    # "three towers … of two, of three and of four": a list of their sizes
+    (re.compile(r"\bof\s+(" + _NUM + r")\s*,\s*of\s+(" + _NUM + r")\s*,?\s*(?:and\s+)?of\s+(" + _NUM
+                + r")\b", re.I), r"of \1, \2 and \3"),
+    # "Two towers stand 15 cm apart": the towers, 15 cm apart ("stand" split them from their
+    # sizes said after)
+    (re.compile(r"\b((?:two|three|four|[2-9])\s+(?:" + _FAMILY_SAID + r")s)\s+(?:stand|standing|"
+                r"sit|sitting)\s+(?=\d|one|two|three|four|five|six)", re.I), r"\1 "),
+    # "15 cm apart (gap between them)": a clear gap, as "apart" is read
+    (re.compile(r"\bapart\s*\(\s*(?:a\s+|the\s+)?(?:clear\s+)?(?:gap|space|distance)\s+between\s+(?:them|the\s+"
+                r"\w+)\s*\)", re.I), "apart"),
+    # "3 & 5, 5 on R": the one of 5 on the right
+    (re.compile(r"(?<=\bon\s)(?-i:R)\b"), "the right"),
+    (re.compile(r"(?<=\bon\s)(?-i:L)\b"), "the left"),
     # "8 cubes in a line, contiguous": touching (reported as not used)
     (re.compile(r"\bcontiguous(?:ly)?\b", re.I), "touching"),
     # "an arch spanning a clear gap of 150 mm": its span ("spanning" reported as not used)
@@ -1743,13 +1757,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: _side_one(m, m.group("sized") or _with_unit_before(m))),
     # "Make two towers. One 5 high on the left, one 2 high on the right.": one sentence
     (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|"
-                r"blocks))\s*\.\s+(?=one\s[^.;]*?\b(?:on|at)\s+the\s+(?:left|right|front|back)\b[^.;]*?,?"
+                r"blocks)\b[^.;]*?)\s*\.\s+(?=one\s[^.;]*?\b(?:on|at)\s+the\s+(?:left|right|front|back)\b"
+                r"[^.;]*?,?"
                 r"\s*(?:and\s+)?(?:one|the\s+other)\s)", re.I), r"\1, "),
     # "Build two towers. The first has 2 cubes, the second has 4 cubes.": one sentence (the
     # sizes were read as a row of their own)
     (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|"
-                r"blocks))\s*\.\s+(?=the\s+first\s+(?:one\s+)?(?:has|is|of|should|with|will|gets|"
-                r"needs|\d|one|two|three|four|five|six)\b[^.;]*?\bthe\s+(?:second|other|last)\b)",
+                r"blocks)\b[^.;]*?)\s*\.\s+(?=the\s+(?:first|left|right|front|back)\s+(?:one\s+|tower\s+|"
+                r"stack\s+|column\s+)?(?:has|is|of|should|with|will|gets|"
+                r"needs|\d)\b[^.;]*?\bthe\s+(?:second|other|last)\b)",
                 re.I),
      r"\1, "),
     # "four cubes in the four corners of the table": one in each corner
