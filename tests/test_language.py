@@ -9180,3 +9180,11 @@ def test_the_left_tower_has_two_cubes_the_right_has_four():
     by_y = sorted(_columns(r).items(), key=lambda kv: kv[0][1])
     assert [h for _, h in by_y] == [4, 2]  # right (smaller y) 4, left 2
     assert by_y[1][0][1] - by_y[0][0][1] == pytest.approx(0.15 + 0.05)  # 15 cm clear
+
+
+def test_stick_the_tall_one_on_the_left():
+    # "stick the tall one on the left": the order was left to chance ('stick' not used)
+    r = _built_as_said("Two towers, one three high and one five high, stick the tall one on the "
+                       "left, reckon that'll do.", ["tower", "tower"], [3, 5])  # fmt: skip
+    by_y = sorted(_columns(r).items(), key=lambda kv: kv[0][1])
+    assert [h for _, h in by_y] == [3, 5]  # the 5 on the left (+y)

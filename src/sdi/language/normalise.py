@@ -548,7 +548,8 @@ letter-shaped wall, whose "4 by 3" would be its length and height."""
 
 
 _WAY = (
-    r"(?:(?:going|running|that\s+go(?:es)?|goes|runs|heading)\s+)?(?:along\s+the\s+(?:long|short)(?:\s+"
+    r"(?:(?:going|running|that\s+go(?:es)?|goes|runs|heading)\s+)?(?:along\s+the\s+(?:front|back|left|"
+    r"right)(?:\s+(?:side|edge))?|along\s+the\s+(?:long|short)(?:\s+"
     r"(?:side|arm|leg|edge))?|the\s+(?:long|short)\s+(?:side|arm|leg)|up(?:wards?)?|down(?:wards?)?|"
     r"across|along|back(?:wards)?|forwards?|north|south|east|west|sideways|to\s+the\s+(?:left|right))"
 )
@@ -1565,6 +1566,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "15 cm apart (gap between them)": a clear gap, as "apart" is read
     (re.compile(r"\bapart\s*\(\s*(?:a\s+|the\s+)?(?:clear\s+)?(?:gap|space|distance)\s+between\s+(?:them|the\s+"
                 r"\w+)\s*\)", re.I), "apart"),
+    # "stick the tall one on the left", "bung it at the back": put
+    (re.compile(r"\b(?:stick|bung|chuck)\b(?=\s+(?:the|it|them|a|an|one|that|those|this)\b)", re.I),
+     "put"),
     # "3 & 5, 5 on R": the one of 5 on the right
     (re.compile(r"(?<=\bon\s)(?-i:R)\b"), "the right"),
     (re.compile(r"(?<=\bon\s)(?-i:L)\b"), "the left"),
