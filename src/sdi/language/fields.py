@@ -15,15 +15,12 @@ from sdi.language.nouns import families_said
 from sdi.language.structured import family_word
 from sdi.spec import lexicon as lx
 
-_SEPARATORS = (
-    re.compile(r"\s*\|\s*"),
-    re.compile(r"\s+[–—]\s+|\s+-\s+"),
-    re.compile(r"\s+/\s+"),
-    re.compile(r"\s+(?=[A-Za-z][A-Za-z_]*=\S)"),  # an HMI's "BUILD: TABLE LEGS=4 LEG_H=2"
-)
+_SEPARATORS = (re.compile(r"\s*\|\s*"), re.compile(r"\s+[–—]\s+|\s+-\s+"), re.compile(r"\s+/\s+"))
 _HMI_LINE = re.compile(
     r"\s*[A-Za-z_]+\s*:\s*[A-Za-z_]+(?:\s+[A-Za-z][A-Za-z_]*=[\w.+-]+)+\s*\.?\s*"
 )
+"""An HMI's line, "BUILD: TABLE LEGS=4 LEG_H=2": a heading and KEY=VALUE fields, nothing else."""
+_KEY_VALUE = re.compile(r"\s+(?=[A-Za-z][A-Za-z_]*=\S)")
 _FIELD = re.compile(
     r"^(?P<key>[A-Za-z][A-Za-z ._]{0,20}?)\s*(?:\((?P<unit>mm|cm|m|cubes?)\))?\s*[:=]\s*"
     r"(?P<value>.+)$"
@@ -57,9 +54,7 @@ _NO = frozenset({"no", "none", "n", "false", "0", "not allowed", "no beam", "no 
 
 def as_words(text: str, notes: list[str]) -> str:
     """`text` in words when it is a form of keyed fields; unchanged otherwise."""
-    for sep in _SEPARATORS:
-        if sep is _SEPARATORS[-1] and not _HMI_LINE.fullmatch(text):
-            continue  # "KEY=VALUE" fields only on a line of nothing else
+    for sep in _SEPARATORS + ((_KEY_VALUE,) if _HMI_LINE.fullmatch(text) else ()):
         fields = [f.strip(" .;,") for f in sep.split(text.strip()) if f.strip(" .;,")]
         keyed = [f for f in fields if _FIELD.match(f) or _BARE_QTY.match(f) or _BARE_SIZE.match(f)]
         if len(fields) < 2 or not keyed or any(len(f) > 60 for f in fields):
