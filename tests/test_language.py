@@ -9188,3 +9188,13 @@ def test_stick_the_tall_one_on_the_left():
                        "left, reckon that'll do.", ["tower", "tower"], [3, 5])  # fmt: skip
     by_y = sorted(_columns(r).items(), key=lambda kv: kv[0][1])
     assert [h for _, h in by_y] == [3, 5]  # the 5 on the left (+y)
+
+
+def test_columns_at_centres_listed_without_and():
+    # "2, 4, 2 high, at 10 cm centres": the 4 and the centres were left unused
+    r = _built_as_said("Three columns in line, 2, 4, 2 high, at 10 cm centres, front to back.",
+                       ["tower"] * 3, [2, 2, 4])  # fmt: skip
+    xs = sorted(x for (x, _) in _columns(r))
+    assert [round(b - a, 3) for a, b in itertools.pairwise(xs)] == [0.1, 0.1]  # centre to centre
+    by_x = [h for _, h in sorted(_columns(r).items())]
+    assert by_x == [2, 4, 2]

@@ -1754,6 +1754,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (_THREE_SIDES, _three_sides),
     (re.compile(rf"\b({_NUM})\s+(high|tall|levels|storeys|stories)(?:\s*,\s*{_NUM}\s+\2)*\s*,?\s*"
                 rf"(?:and\s+)?{_NUM}\s+\2\b", re.I), _sizes_listed),
+    # "Three columns in line, 2, 4, 2 high": a list of their heights with no "and"
+    (re.compile(rf"\b({_NUM})\s*,\s*{_NUM}\s*,\s*{_NUM}\s+(high|tall)\b", re.I), _sizes_listed),
     (re.compile(rf"(?<=[,:;.]\s){_SIDE_ONE}({_SIDE_SIZE})(?=\s*(?:,|;|\.|\band\b|$))", re.I),
      lambda m: _side_one(m, m.group(2))),
     (re.compile(rf"(?:(?<=[,;]\s)|(?<=\band\s)){_SIDE_ONE}(?:(?P<sized>{_SIDE_SIZE})|(?P<bare>{_NUM}))"

@@ -216,17 +216,20 @@ _CENTRES = re.compile(
 _PITCH = re.compile(
     r"\b(?:(?:on|at)\s+(?:an?\s+)?)?(?P<a>\d+(?:\.\d+)?\s*(?:mm|cm|m)\b)\s+pitch\b|\bpitch(?:ed)?\s+(?:of\s+"
     r"|at\s+)?(?P<b>\d+(?:\.\d+)?\s*(?:mm|cm|m)\b)|\b(?:with\s+)?(?:their\s+)?(?:centres|centers)\s+"
-    r"(?P<c>\d+(?:\.\d+)?\s*(?:mm|cm|m|cubes?)\b)\s+apart\b",
+    r"(?P<c>\d+(?:\.\d+)?\s*(?:mm|cm|m|cubes?)\b)\s+apart\b|\b(?:at|on)\s+(?P<d>\d+(?:\.\d+)?\s*(?:mm|cm|m)\b)"
+    r"\s+(?:centres|centers)\b",
     re.IGNORECASE,
 )
-"""A pitch ("on 100 mm pitch", "pitch 150 mm", "centres 150 mm apart"): centre to centre."""
+"""A pitch ("on 100 mm pitch", "pitch 150 mm", "centres 150 mm apart", "at 10 cm centres"):
+centre to centre."""
 
 
 def take_centres(text: str, st: ReadState) -> str:
     """`text` without "centre to centre": the distances said are between centres, not clear
     gaps (`pitches` turns them into gaps once the structures are known)."""
     text = _PITCH.sub(
-        lambda m: f"{m.group('a') or m.group('b') or m.group('c')} apart, centre to centre", text
+        lambda m: f"{next(g for g in m.groups() if g)} apart, centre to centre",
+        text,
     )
     m = _CENTRES.search(text)
     if m is None:
