@@ -9198,3 +9198,20 @@ def test_columns_at_centres_listed_without_and():
     assert [round(b - a, 3) for a, b in itertools.pairwise(xs)] == [0.1, 0.1]  # centre to centre
     by_x = [h for _, h in sorted(_columns(r).items())]
     assert by_x == [2, 4, 2]
+
+
+def test_a_complaint_that_tells_the_old_numbers_and_a_gap_of_at_least_one():
+    # "I asked for a tower ON TOP of the slab, not next to it.": a relation cycle (error)
+    r = _built_as_said("I asked for a tower ON TOP of the slab, not next to it. 3x3 slab, tower "
+                       "of 2 on top.", ["grid", "tower"], [1] * 8 + [3])  # fmt: skip
+    # "… you made had no beam on top … WITH a beam resting on both": one tower on the other
+    r = _built_as_said("The bridge you made had no beam on top, just two towers. I want two "
+                       "three-high towers WITH a beam resting on both.", ["bridge"],
+                       None)  # fmt: skip
+    assert r.spec.structures[0].height == 3
+    # "a gap of at least one cube": read as 'a gap of a', and 'least' left unused
+    r = _built_as_said("Two towers were touching last time, I wanted a gap. Two towers of four, "
+                       "with a gap of at least one cube between them.", ["tower", "tower"],
+                       [4, 4])  # fmt: skip
+    ys = sorted(y for (_, y) in _columns(r))
+    assert ys[1] - ys[0] == pytest.approx(0.05 + 0.05)

@@ -1569,6 +1569,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "stick the tall one on the left", "bung it at the back": put
     (re.compile(r"\b(?:stick|bung|chuck)\b(?=\s+(?:the|it|them|a|an|one|that|those|this)\b)", re.I),
      "put"),
+    # "a gap of at least one cube": one cube, the least asked (the "a" of "at" was read)
+    (re.compile(r"\b(?:at\s+least|no\s+less\s+than|a\s+minimum\s+of|minimum)\s+(?=(?:\d|one|two|three|"
+                r"four|five)\b[^.;,]{0,12}?\b(?:cubes?|blocks?|cm|mm|m)\b)", re.I), ""),
     # "3 & 5, 5 on R": the one of 5 on the right
     (re.compile(r"(?<=\bon\s)(?-i:R)\b"), "the right"),
     (re.compile(r"(?<=\bon\s)(?-i:L)\b"), "the left"),

@@ -2303,7 +2303,7 @@ _REWRITES += [
         re.compile(
             r"\b(towers?|pillars?|columns?|stacks?|posts?|uprights?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
             r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar|deck)\s+(?:across|over|"
-            r"on\s+top)"
+            r"on\s+top|(?:resting|sitting|lying|laid)\s+(?:on|across)\s+(?:both|them|the\s+two|top))"
             r"(?:\s+(?:them|the\s+top|of\s+them|both))?"
             r"(?:,?\s+(?:connecting|joining|linking)\s+(?:them|both|the\s+two)(?:\s+of\s+them)?)?\b",
             re.IGNORECASE,
