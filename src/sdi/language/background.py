@@ -13,17 +13,17 @@ from sdi.language.nouns import families_said, shape_alternation
 from sdi.spec.numbers import COUNT_WORDS
 
 _SENTENCE = re.compile(r"[^.!?]+(?:[.!?]+\s*|$)")
+_TOLD_SAID = (
+    r"you\s+(?:put|built|made|placed|stacked|gave|forgot)|i\s+(?:asked\s+for|wanted|ordered)|"
+    r"(?:and|but)\s+got"
+)
 _PAST = re.compile(
     r"\b(?:last\s+time|yesterday|earlier|previously|before|left\s+off|was|were|had|fell|went|"
-    r"collapsed|broke|came\s+out|ended\s+up|did\s+not|didn't|you\s+(?:put|built|made|placed|set|"
-    r"stacked|did|gave|forgot)|i\s+(?:asked\s+for|wanted|ordered)|got)\b",
+    r"collapsed|broke|came\s+out|ended\s+up|did\s+not|didn't|you\s+(?:set|did)|got|" + _TOLD_SAID
+    + r")\b",
     re.IGNORECASE,
 )
-_TOLD = re.compile(
-    r"\b(?:you\s+(?:put|built|made|placed|stacked|gave|forgot)|i\s+(?:asked\s+for|wanted|ordered)|"
-    r"(?:and|but)\s+got)\b",
-    re.IGNORECASE,
-)
+_TOLD = re.compile(r"\b(?:" + _TOLD_SAID + r")\b", re.IGNORECASE)
 """A sentence that tells what was asked or done before: its numbers are the old run's (not
 "Yesterday's tower was 10 high. Build it three cubes shorter.", which a later one builds on)."""
 _ASKS = re.compile(

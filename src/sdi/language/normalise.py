@@ -547,6 +547,9 @@ _LETTER_BEFORE = re.compile(
 letter-shaped wall, whose "4 by 3" would be its length and height."""
 
 
+_LETTER_SAID = re.compile(r"\b(?:(?-i:[LT])|[lt][\s-]?shaped?)\b", re.I)
+"""An L or a T named earlier in the sentence ("the letter L", "T-shaped"): its arms said as ways
+or as "4+3" belong to it."""
 _WAY = (
     r"(?:(?:going|running|that\s+go(?:es)?|goes|runs|heading)\s+)?(?:along\s+the\s+(?:front|back|left|"
     r"right)(?:\s+(?:side|edge))?|along\s+the\s+(?:long|short)(?:\s+"
@@ -565,8 +568,7 @@ _ARMS_SAID = re.compile(
 def _arms_said(m: re.Match[str]) -> str:
     """ "the letter L: 4 cubes going up the page and 2 more going across": an L of arms 4
     and 3 (the 2 was dropped, silently); "a T … 3 across and 2 going down": its bar and stem."""
-    before = _sentence_before(m.string, m.start())
-    letter = re.search(r"\b(?:(?-i:[LT])|l[\s-]?shaped?|t[\s-]?shaped?)\b", before, re.I)
+    letter = _LETTER_SAID.search(_sentence_before(m.string, m.start()))
     ways = r"going|running|goes|runs|heading|go|more|long|short|page|sheet|north|south|east|west"
     plain = not re.search(rf"\b(?:{ways}|back\w*|forwards?|sideways|to)\b", m.group(0), re.I)
     if letter is None or plain or m.group("wa").lower().strip() == m.group("wb").lower().strip():
@@ -614,6 +616,12 @@ _SIDE_ONE = (
 _SIDE_SIZE = rf"{_NUM}\s+(?:cubes?\s+)?(?:high|tall|long|wide|levels?|cubes?)"
 
 
+_COUNTED_THEN = (
+    r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|blocks)\b"
+    r"[^.;]*?)\s*\.\s+"
+)
+"""Structures counted, then the end of their sentence: "Make two towers." before one that sizes
+them one by one (the two sentences are read as one)."""
 _SIDE_ITEM = (
     r"(?:the\s+)?(left|middle|centre|center|right)(?:[\s-]?(?:hand|most))?\s+(one|tower|stack|column|"
     r"block|pillar|post)\s+(?:(?:is|should\s+be|must\s+be)\s+)?(" + _SIDE_SIZE + ")"
@@ -1751,32 +1759,28 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a wall of 6 cubes, 2 rows high": rows counted upwards are courses (its height)
     (re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:rows|courses|tiers)"
                 r"\s+(high|tall)\b", re.I), r"\1 \2"),
-    # "two towers, the left one 5 high and the right one 2 high": one each, in those places;
-    # "Make two towers. The left one should be 5 high, the right one 2.", "two towers: left 5
-    # high, right 2 high" (a bare number after the first takes its unit)
+    # "three towers side by side: the left one 2 high, the middle one 3 high, …" (`_three_sides`);
+    # "2 high, 3 high and 1 high", "2, 4, 2 high": one list of sizes (`_sizes_listed`)
     (_THREE_SIDES, _three_sides),
     (re.compile(rf"\b({_NUM})\s+(high|tall|levels|storeys|stories)(?:\s*,\s*{_NUM}\s+\2)*\s*,?\s*"
                 rf"(?:and\s+)?{_NUM}\s+\2\b", re.I), _sizes_listed),
-    # "Three columns in line, 2, 4, 2 high": a list of their heights with no "and"
     (re.compile(rf"\b({_NUM})\s*,\s*{_NUM}\s*,\s*{_NUM}\s+(high|tall)\b", re.I), _sizes_listed),
+    # "two towers, the left one 5 high and the right one 2 high": one each, in those places;
+    # "Make two towers. The left one should be 5 high, the right one 2.", "two towers: left 5
+    # high, right 2 high" (a bare number after the first takes its unit)
     (re.compile(rf"(?<=[,:;.]\s){_SIDE_ONE}({_SIDE_SIZE})(?=\s*(?:,|;|\.|\band\b|$))", re.I),
      lambda m: _side_one(m, m.group(2))),
     (re.compile(rf"(?:(?<=[,;]\s)|(?<=\band\s)){_SIDE_ONE}(?:(?P<sized>{_SIDE_SIZE})|(?P<bare>{_NUM}))"
                 r"(?=\s*(?:,|;|\.|$))", re.I),
      lambda m: _side_one(m, m.group("sized") or _with_unit_before(m))),
     # "Make two towers. One 5 high on the left, one 2 high on the right.": one sentence
-    (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|"
-                r"blocks)\b[^.;]*?)\s*\.\s+(?=one\s[^.;]*?\b(?:on|at)\s+the\s+(?:left|right|front|back)\b"
-                r"[^.;]*?,?"
-                r"\s*(?:and\s+)?(?:one|the\s+other)\s)", re.I), r"\1, "),
+    (re.compile(_COUNTED_THEN + r"(?=one\s[^.;]*?\b(?:on|at)\s+the\s+(?:left|right|front|back)\b"
+                r"[^.;]*?,?\s*(?:and\s+)?(?:one|the\s+other)\s)", re.I), r"\1, "),
     # "Build two towers. The first has 2 cubes, the second has 4 cubes.": one sentence (the
     # sizes were read as a row of their own)
-    (re.compile(r"\b((?:two|three|four|[2-4])\s+(?:towers|stacks|columns|pillars|walls|rows|pyramids|"
-                r"blocks)\b[^.;]*?)\s*\.\s+(?=the\s+(?:first|left|right|front|back)\s+(?:one\s+|tower\s+|"
-                r"stack\s+|column\s+)?(?:has|is|of|should|with|will|gets|"
-                r"needs|\d)\b[^.;]*?\bthe\s+(?:second|other|last)\b)",
-                re.I),
-     r"\1, "),
+    (re.compile(_COUNTED_THEN + r"(?=the\s+(?:first|left|right|front|back)\s+(?:one\s+|tower\s+|"
+                r"stack\s+|column\s+)?(?:has|is|of|should|with|will|gets|needs|\d)\b[^.;]*?\bthe\s+"
+                r"(?:second|other|last)\b)", re.I), r"\1, "),
     # "four cubes in the four corners of the table": one in each corner
     (re.compile(r"\b(in|on|at|into)\s+(?:all\s+)?the\s+(?:four|4)\s+corners\b", re.I),
      r"\1 each corner"),
@@ -4429,8 +4433,8 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _AXES_LABEL.sub(" ", text)  # "W×D×H = 3×2×2", "(length x height)"
 
     def plus(m: re.Match[str]) -> str:
-        before = _sentence_before(m.string, m.start())
-        if re.search(r"\b(?-i:L)\b|\bl[\s-]?shaped?\b", before, re.I):
+        said = _LETTER_SAID.finditer(_sentence_before(m.string, m.start()))
+        if any(letter.group(0)[0] in "Ll" for letter in said):
             notes.append(f"read '{m.group(0)}' as the L's two arms")
             return f" {m.group(1)} by {m.group(2)} "  # "L shp 4+3": arms, not an L of 7
         total = int(m.group(1)) + int(m.group(2))
