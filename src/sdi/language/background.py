@@ -79,7 +79,9 @@ _TAKE_BACK = re.compile(
     r"(?P<words>(?:(?!and\b|then\b|but\b)[a-z']+\s+){0,6}?)"
     r"(?P<families>(?:" + _SHAPES + r")(?:\s*(?:,|or|nor|and)\s+(?:an?\s+|any\s+)?(?:"
     + _SHAPES + r"))*)\b(?!\s*\d|['’]s\b)"
-    r"(?:\s+(?:idea|request|message|one|thing|part|bit|for\s+now))?",
+    r"(?:\s+(?:idea|request|message|one|thing|part|bit|for\s+now))?"
+    # "no lintel or roof on them": what is not wanted on them (not a relation of its own)
+    r"(?:\s+(?:(?:on|across|over|above)\s+(?:top\s+of\s+)?(?:them|it|both)\b|on\s+top\b))?",
     re.IGNORECASE,
 )
 

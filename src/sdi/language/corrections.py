@@ -458,8 +458,11 @@ def _corrected(text: str, notes: list[str], material: list[str] | None = None) -
             return text
         old = olds[-1]
         counted = _COUNTED.search(before) if kind == "count" else None
-        if counted and counted.end() >= len(before.rstrip(" ,;:—–-")):
-            # "four towers of 2, make that five": the count of the structures is what was counted
+        fewer = re.match(r"\s*(?:just|only)\b", said) or re.search(r"\b(?:just|only)\s*$",
+                                                                   m.group(0))
+        if counted and (counted.end() >= len(before.rstrip(" ,;:—–-")) or fewer):
+            # "four towers of 2, make that five": the count of the structures is what was counted;
+            # "5 towers of 1 in a row. actually just 4.": the structures, fewer
             old = next((o for o in olds if o.start() == counted.start(1)), old)
         negated = re.match(r"(?:no\s*,?\s*)?not\s+(\w+)\s*[,;]", said.strip(), re.IGNORECASE)
         if negated and kind == "count":

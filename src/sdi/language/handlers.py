@@ -238,6 +238,18 @@ def _extreme_at(m: re.Match[str], st: ReadState, note: str) -> str:
     return " "
 
 
+def _named_in_middle(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "…, a tower of six, and another 2 by 2 block, the tower in the middle": the one structure
+    of that family, named once among three or more, stands in the middle of their line."""
+    said = m.string[: m.start()]
+    before = families_said(said) + ["block"] * len(re.findall(r"\bblocks?\b", said, re.I))
+    shape = lx.SHAPE_WORDS.get((m.group("a") or m.group("b")).lower())
+    if shape is None or before.count(shape) != 1 or len(before) < 3 or st.order is not None:
+        return m.group(0)
+    st.order = (m.group(0).strip(" ,"), f"shape:{shape}", "middle")
+    return " "
+
+
 def _halfway(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "halfway between front and back": centred front to back (or left to right)."""
     said, groups = _said(m)
@@ -1326,6 +1338,7 @@ HANDLERS: dict[str, Handler] = {
     "{pyramid_base}": _pyramid_base,
     "{base_of}": _base_of,
     "{extreme_at}": _extreme_at,
+    "{named_in_middle}": _named_in_middle,
     "{compared}": _compared,
     "{more_of}": _more_of,
     "{halfway}": _halfway,

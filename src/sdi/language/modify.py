@@ -458,6 +458,8 @@ def modify(
             r"^\s*(?:(?:more|extra)\s+)?(?:cubes?\s+)?(?:to|on|onto|at)\s+(?:the\s+(?:other\s+)?end\s+of\s+)?"
             r"(?:the|its|that)\s+\w+\b", "", p.text[m.end() :], flags=re.IGNORECASE,
         )  # fmt: skip
+        if m.group(0).lower().endswith(("middle", "centre", "center")):
+            rest = re.sub(r"^\s*(?:tower|column|stack|pillar|post)\b", "", rest, flags=re.I)
         if _NAMES_MORE.search(rest):
             return False  # "pull the top 3 off and set them down as a tower": more than a change
         change = _CHANGES.get(op)
@@ -467,7 +469,8 @@ def modify(
             note = change(m, op, p, before, built, structures)
         else:
             note = _resize(m, op, p, before, built, structures, st.cell.cube[2])
-        if note is None and re.search(r"\bthe\s+(?:middle|centre|center)\s+one\b", p.text, re.I):
+        middle = r"\bthe\s+(?:middle|centre|center)\s+(?:one|tower|column|stack|pillar|post)\b"
+        if note is None and re.search(middle, p.text, re.I):
             # "three towers, then make the middle one 5": the middle one is not picked out
             st.material.append(m.group(0).strip())
             st.notes.append(f"ignored '{m.group(0).strip()}': SDI cannot tell which structure "

@@ -53,7 +53,7 @@ _REFERENCE_NO = re.compile(
     r"(?:#|\bno\.\s*|\bnumber\s+)\d+\b|\b(?:order|ticket|job|ref|request|id|station|cell|booth|"
     r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|stn|"
     r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
-    r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|"
+    r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|label|exhibit|plot|model|drawing|dwg|kit|display|"
     r"exercise|lesson|experiment|protocol|procedure|sample|bench|rig|line\s+no|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
     r"(?:[:#]|-(?=\d))?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
     r"|(?-i:\b[A-Z][A-Z0-9]{1,9}-\d+\b)"  # a ticket's key: "SDI-101", "WO-3321"
@@ -201,7 +201,8 @@ def _one_per_anchor(m: re.Match[str]) -> str:
     if count != str(_PER_ANCHOR[anchor]):
         return m.group(0)
     said = m.group(4) if m.group(5) else "on each side"
-    return f"a {m.group(2)}{m.group(3)} {said}"
+    sized = re.sub(r"\s*,\s*", " ", m.group(3)).rstrip()  # "four towers, two high, one in each …"
+    return f"a {m.group(2)}{sized} {said}"
 
 
 def _product(m: re.Match[str]) -> bool:
@@ -658,6 +659,21 @@ def _side_one(m: re.Match[str], size: str | None) -> str:
     return f"one {of}{size} {where}{side}"
 
 
+def _rows_apart(m: re.Match[str]) -> str:
+    """ "two rows of six, parallel, …", "two rows of three 10 cm apart": the rows one by one;
+    two rows (not walls) said apart stand one behind the other, as rows do."""
+    noun = m.group(2)[:-1].lower().replace("line", "row")
+    rest = m.string[m.end() :].split(".")[0]
+    if noun == "wall" and not re.search(r"\b(?:parallel|between\s+them)\b", rest, re.I):
+        return m.group(0)  # "two walls of 4 cubes, 3 high, with a gap of 2": both 3 high
+    more = 2 if m.group(1).lower() in ("three", "3") else 1
+    said = ", ".join([f"a {noun} of {m.group(3)}"] + [f"another {noun} of {m.group(3)}"] * more)
+    in_line = re.search(r"\b(?:parallel|in\s+(?:a\s+)?line|end\s+to\s+end)\b", rest, re.I)
+    if more == 1 and noun == "row" and not in_line:
+        said += " one behind the other"
+    return said
+
+
 def _sizes_listed(m: re.Match[str]) -> str:
     """ "three towers side by side, 2 high, 3 high and 1 high": one list of sizes, "2, 3 and 1
     high", when structures were counted before it in the sentence (the first size was read as
@@ -1048,7 +1064,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 re.I),
      r"slab\1\2"),
     # "flat on the floor", "on the ground", "on the bench": on the table (the floor was a grid)
-    (re.compile(r"\b(on|onto)\s+the\s+(?:floor|ground|bench|workbench|mat|carpet|work\s+surface)\b"
+    (re.compile(r"\b(on|onto)\s+the\s+(?:floor|ground|bench|workbench|mat|carpet|work\s+surface|counter|worktop|countertop)\b"
                 r"(?!\s+(?:of|plan))", re.I), r"\1 the table"),
     # "one of those Egyptian pyramids": one pyramid (a pyramid of 1 was built, and a grid)
     (re.compile(r"\bone\s+of\s+(?:those|these)\s+((?:[a-z-]+\s+){0,2}?)([a-z]+s)\b", re.I),
@@ -2334,13 +2350,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(between\s+)(?:two|2)\s+(?:row|line)s\s+of\s+(\d+|two|three|four|five|six|seven|"
                 r"eight|nine|ten)(?:\s+(?:cubes|blocks|bricks))?(?:\s+each)?\b", re.I),
      r"\1a row of \2 and another row of \2"),
-    # "two rows of six, parallel, with one cube between them": separate rows, not one floor
-    (re.compile(r"\b(two|three|2|3)\s+(rows|lines|walls)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|"
-                r"ten)(?:\s+(?:cubes|blocks|bricks))?(?:\s+each)?(?=[^.;]*\b(?:parallel|between\s+them)\b)"
-                r"(?![^.;]*\b(?:one\s+behind|in\s+front|side\s+by\s+side|end\s+to\s+end)\b)", re.I),
-     lambda m: ", ".join([f"a {m.group(2)[:-1]} of {m.group(3)}"]
-                         + [f"another {m.group(2)[:-1]} of {m.group(3)}"]
-                         * (2 if m.group(1).lower() in ("three", "3") else 1))),
+    # "two rows of six, parallel, with one cube between them", "two rows of three side by side
+    # one cube apart": separate rows, not one floor
+    (re.compile(r"(?<!\bin\s)(?<!\binto\s)(?<!\bas\s)"  # not "six towers in two rows of three"
+                r"\b(two|three|2|3)\s+(rows|lines|walls)\s+of\s+(\d+|two|three|four|five|six|seven|eight|nine|"
+                r"ten)(?:\s+(?:cubes|blocks|bricks))?(?:\s+each)?(?=(?:(?!\b(?:and|then|tower|stack|column|pyramid|stair|bridge|arch|slab|ring|block|"
+                r"castle)\b)[^.;])*\b(?:apart|gap|spaced|separated)\b|"
+                r"(?![^.;]*\bside\s+by\s+side\b)[^.;]*\b(?:parallel|between\s+them)\b)"
+                r"(?![^.;]*\b(?:one\s+behind|in\s+front|end\s+to\s+end)\b)", re.I),
+     _rows_apart),
     # "two towers of three and one tower of five", "two of 3 and one of 5": one more structure
     # (not "two towers, one of 3 and one of 5", which names each of them)
     (re.compile(r"(?<=\d|[a-z])(\s*,?\s+and\s+)one\s+(?=(?:tower|stack|column|pillar|wall|row|pyramid|"
@@ -2350,6 +2368,78 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"seven|eight|nine|ten)\b)", re.I),
      lambda m: m.group(0) if _ONE_OF_EACH.search(m.string[: m.start()])
      else f"{m.group(1)}another "),
+    # "a pyramid, 3 levels, top level a single cube": the pyramid's own top, said again (not a
+    # cube of its own beside it)
+    (re.compile(r"(\bpyramid\b[^.;?!]*?)\s*,?\s*(?:with\s+|and\s+)?(?:the\s+|its\s+|a\s+)?(?:top|peak|apex|"
+                r"summit)(?:\s+(?:level|layer|row|tier|course))?\s*(?:is\s+|of\s+|being\s+|=\s*|:\s*)?"
+                r"(?:just\s+|only\s+)?(?:a\s+single|one\s+single|a|one|1)\s+(?:single\s+)?(?:cube|block|brick)\b"
+                r"(?!\s+(?:on|above|high|tall|tower|stack|column))", re.I), r"\1"),
+    # "Row of 4 cubes. Add 4 more to the same row.": that row (not a second one the same)
+    (re.compile(r"\b((?:add|put|stack|place|pile)\b[^.;]*?\b(?:to|onto|on|into)\s+the)\s+same\s+"
+                r"(?=(?:row|tower|stack|column|pile|wall|line)\b)", re.I), r"\1 "),
+    # "a 1-cube, a 2-cube and a 3-cube column": the noun said last is every one's
+    (re.compile(r"\b(an?\s+[\w]+-(?:cubes?|high|tall|levels?|storeys?))\s*,\s*(?:(an?\s+[\w]+-(?:cubes?|high|tall|"
+                r"levels?|storeys?))\s*,?\s+)?(?:and\s+)?(an?\s+[\w]+-(?:cubes?|high|tall|levels?|storeys?))\s+"
+                r"(tower|column|stack|pillar|post|plinth)s?\b", re.I),
+     lambda m: ", ".join(f"{a} {m.group(4)}" for a in m.group(1, 2) if a)
+     + f" and {m.group(3)} {m.group(4)}"),
+    # "a block against the back of the room": the room the cell stands in, its back the table's
+    # (not a room built around it), unless a room was built before ("a 5 by 5 room, then a
+    # tower at the back of the room")
+    (re.compile(r"\b((?:at|in|on|to|against|toward|towards)\s+the\s+(?:back|front|rear|far|near|left|right|"
+                r"middle|centre|center)(?:[\s-](?:left|right))?(?:\s+(?:side|end|corner|edge))?)\s+of\s+the\s+"
+                r"(room|chamber|hall|lab|workshop|shop|studio|gallery)\b", re.I),
+     lambda m: m.group(0) if re.search(rf"\b{m.group(2)}\b", m.string[: m.start()], re.I)
+     else m.group(1)),
+    # "Kids love a pyramid - make one with four layers": the one named, sized (not a pyramid
+    # one cube wide)
+    (re.compile(r"\b((?:make|build|do|give\s+me|stack|put\s+up)\s+)one(?=\s+with\b)", re.I),
+     lambda m: f"{m.group(1)}it" if families_said(m.string[: m.start()]) else m.group(0)),
+    # "a row of seven, straight across from left to right": along the way said (across from was
+    # read as facing: front to back)
+    (re.compile(r"\b(?:straight\s+)?across\s+(?=from\s+(?:the\s+)?(?:left|right)\b)", re.I), ""),
+    # "Amendment: height shall be 2": the size as a requirement states it
+    (re.compile(r"\b((?:the\s+|its\s+)?(?:height|length|width|depth)\s+)(?:shall|should|must|will|needs\s+to|"
+                r"has\s+to)\s+be\s+(?=(?:\d|one|two|three|four|five|six|seven|eight|nine|ten)\b)",
+                re.I),
+     r"\1is "),
+    # "Two walls - four long, two high - one behind the other": the sizes set off by dashes
+    # are the structures' own (as with commas)
+    (re.compile(r"\b([a-z]+s(?:\s+in\s+a\s+(?:row|line))?)\s+[-—–]+\s+((?:[^-—–.;?!]{0,40}?\b)?(?:\d+|one|two|"
+                r"three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|wide|deep)\b"
+                r"[^-—–.;?!]{0,30}?)\s+[-—–]+\s+", re.I), r"\1, \2, "),
+    # "sorry, my notes say two high actually": what the speaker reads out is the size
+    (re.compile(r"\b(?:my|the|our)\s+(?:notes|sheet|drawing|spec|plan|list|paper)\s+(?:says?|said)\s+",
+                re.I),
+     ""),
+    # "separated by a clear gap of exactly 3 cubes": the gap, exactly as said
+    (re.compile(r"\b((?:gap|space|distance|spacing|clearance)\s+of\s+)(?:exactly|precisely|just)\s+",
+                re.I),
+     r"\1"),
+    # "The leftmost one gets 3 more cubes.": more added to the one on the left
+    (re.compile(r"\b(left|right|front|back)[\s-]?most\b", re.I), r"\1"),
+    (re.compile(r"\b(the\s+[a-z]+\s+(?:one|tower|stack|column|pillar|post))\s+(?:gets|receives)\s+((?:\d+|one|two|"
+                r"three|four|five|six|a|an)\s+(?:more|extra|additional)\s+(?:cubes?|blocks?|levels?|layers?))\b",
+                re.I), r"add \2 to \1"),
+    # "wherever there's room on the bench": anywhere (no room to build)
+    (re.compile(r",?\s*\b(?:wherever|anywhere|where(?:ver)?\s+you\s+like)\s+there(?:'s|\s+is)\s+(?:enough\s+|some\s+)?"
+                r"(?:room|space)(?:\s+(?:on|at)\s+the\s+\w+)?", re.I), " "),
+    # "a castle for the medieval room": what it is for (no room built beside it)
+    (re.compile(r"\s+for\s+(?:the|a|our|my)\s+(?:[a-z]+\s+)?(?:room|hall|gallery|display)\b", re.I),
+     " "),
+    # "at the heart of a 6 by 6 enclosure": in its middle
+    (re.compile(r"\b(?:at|in)\s+the\s+(?:heart|very\s+centre|very\s+center|dead\s+centre|dead\s+center)\s+of\b",
+                re.I), "in the middle of"),
+    # "one at each of the four corners of the table": one in each corner
+    (re.compile(r"\b(?:at|in|on)\s+each\s+of\s+the\s+(?:four\s+|4\s+)?corners\s+of\s+the\s+(table|workspace|cell)\b",
+                re.I), r"in each corner of the \1"),
+    # "a column in the middle of a 6 by 6 enclosure - the enclosure frames it": said again
+    (re.compile(r"\s*[-—–,;]\s*the\s+([a-z]+)\s+(?:frames|surrounds|encloses|encircles|rings|holds|contains)\s+"
+                r"(?:it|them)\b", re.I),
+     lambda m: " " if re.search(rf"\b{m.group(1)}\b", m.string[: m.start()], re.I)
+     and re.search(r"\b(?:inside|middle|centre|center|around|surround(?:ed|ing)?)\b",
+                   m.string[: m.start()], re.I)
+     else m.group(0)),
     # "one of those long beams laid across the top": a beam across the top
     (re.compile(r"\bone\s+of\s+(?:those|these|the|your|them)\s+(?:(?:long|big|heavy|large)\s+)?"
                 r"(beam|plank|bar)s\b", re.I), r"a \1"),
@@ -2359,6 +2449,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a little bridge — two towers of two with a beam across the top": the bridge, described
     (re.compile(r"\b(?:an?\s+)?(?:(?:little|small|simple|basic|nice|big)\s+)?(?:bridge|gate|gateway|arch)\s*"
                 r"(?:[—–(]|\s-)\s*(?=(?:two|2)\s+(?:towers|stacks)\b[^.?!]*\b(?:beams?|bar|lintel)\s+"
+                r"(?:\w+\s+)?(?:across|over)\b)", re.I), ""),
+    # "An arch for the entrance: two posts two cubes high, … with a beam across": posts and a
+    # beam on them, as said (an arch's corbels made the posts a level higher, silently)
+    (re.compile(r"^\s*(?:an?\s+)?(?:(?:little|small|simple|basic|nice|big)\s+)?(?:gate|gateway|arch)"
+                r"(?:\s+for\s+(?:the\s+|an?\s+)?[a-z]+)?\s*(?:[—–(:]|\s-)\s*(?=(?:two|2)\s+(?:towers|stacks|"
+                r"posts|pillars|columns|uprights)\b[^.?!]*\bwith\s+(?:an?\s+|one\s+)?(?:beams?|bar|lintel)\s+"
                 r"(?:\w+\s+)?(?:across|over)\b)", re.I), ""),
     # "a flat rectangle, two rows of six": the rectangle's own size, said after it
     (re.compile(r"\b(rectangle|square|slab|grid|floor|pad|platform|plate|mat|patch|block)\s*[,:—–-]\s*"
@@ -2435,6 +2531,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?!\s+of\s+the\s+(?:table|workspace|bench|cell|row\s+of\s+(?:towers|stacks)))"
                 r"(?:\s+of\s+(?:it|the\s+(?:wall|row|line|fence|slab)))?", re.I),
      lambda m: m.group(0) if _TABLE_ENDS.search(m.string)
+     # "… against the right end of a wall five long": of the wall named next
+     else f"right against the {m.group(1).lower()}"
+     if re.match(r"\s+of\s+(?:an?|one)\b", m.string[m.end() :], re.I)
      else f"to the {m.group(1).lower()} of it, touching"),
     # "stack 4 cubes on the left and 2 on the right": a stack on each side
     (re.compile(r"\b(?:stack|pile|put)\s+(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes|blocks|bricks)\s+"
@@ -2945,8 +3044,10 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:[\s-]+(?:left|right|corner))?)\b", re.I), r"at the \1"),
     (re.compile(r"\b(?:qty|qnty)\.?\s*[:=]?\s*(\d+)\s+(?=[a-z])", re.I), r"\1 "),
     # "wall A …, wall B same size": a label, not a size or a letter shape
+    # (kept where a later word points at one by its label: "on A's right")
     (re.compile(r"\b(wall|tower|row|block|slab|stack|column|pyramid)\s+[A-D](?=\s*(?:[,:]|\d|$|same\b|"
-                r"\d+\s|len\b|ht\b|is\b))"), r"\1"),
+                r"\d+\s|len\b|ht\b|is\b))"),
+     lambda m: m.group(0) if re.search(r"\b[A-D]['’]s\s|\bof\s+[A-D]\b", m.string) else m.group(1)),
     # Scots on the shop floor: "a tower o' five", "wi' a gap", "tae the right", "twa high"
     (re.compile(r"\bo['’](?=\s)(?!\s*clock)", re.I), "of"),
     (re.compile(r"\bwi['’](?=\s)", re.I), "with"),
@@ -4110,22 +4211,36 @@ def _basically(text: str, notes: list[str]) -> str:
             + text[m.end() :])
 
 
+def _described(text: str) -> list[str]:
+    """The families `text` names, a block ("a 2 by 3 block") among them."""
+    block = ["block"] if re.search(r"\bblocks?\b", text, re.I) else []
+    return [*families_said(text), *block]
+
+
 def _named_heading(text: str, notes: list[str]) -> str:
     """ "Goods shed: a 3 by 4 enclosure, two high", "Tunnel portal -- an arch": a heading
     that names the thing (a word of its own before a structure noun) and the structure the
     words after it describe; the heading's noun is no second structure."""
     m = _HEADING.match(text)
-    described = families_said(text[m.end() :]) if m else []
+    described = _described(text[m.end() :]) if m else []
     if m is None or not families_said(m.group(2)) or not described:
         return text
     first = re.split(r"\band\b|[.;]|,\s*(?:an?|one|two|three|four)\s", text[m.end() :],
                      maxsplit=1)[0]  # fmt: skip
-    if not families_said(first):
+    if not _described(first):
         return text  # "Graphic wall: 5 long, 4 high, and a plinth …": the wall's own sizes first
     said = [w.lower() for w in m.group(1).split()]
     listed = set(families_said(m.group(0))) <= set(described)
     if said[0] in ("a", "an", "the"):
         said = said[1:]
+    told = set(_described(first))
+    if not said and len(told) == 1 and not told & {"tower", *families_said(m.group(2))}:
+        # "The altar: a 2 by 3 block, two high": the heading's noun names what the words after
+        # it describe as another structure (an altar is also a table; not "a bridge: 2 pillars
+        # of 3, a beam across", which names its parts)
+        notes.append(f"read '{m.group(0).strip(' :-—–')}' as the name of the {told.pop()} the "
+                     "words after it describe")  # fmt: skip
+        return text[m.end() :]
     if not said or any(
         w in lx.SIZE_WORDS or w in SIGNIFICANT or w in CORRECTABLE or w in NEGATIONS
         or w in _NOT_A_NAME or w in lx.REGION_WORDS or w in lx.DIMENSION_WORDS

@@ -673,6 +673,15 @@ def _ordered(
     if st.order is None:
         return specs
     said, most, where = st.order
+    if most.startswith("shape:"):  # "…, the tower in the middle": the one of that family
+        named = [k for k, s in enumerate(specs) if s.shape == most[6:]]
+        if len(specs) < 3 or relations or len(named) != 1:
+            st.material.append(said)
+            st.notes.append(f"ignored '{said}': no line of structures to put it in the middle of")
+            return specs
+        rest = [s for k, s in enumerate(specs) if k != named[0]]
+        st.notes.append(f"'{said}': the {most[6:]} stands in the middle of the line")
+        return [*rest[: len(specs) // 2], specs[named[0]], *rest[len(specs) // 2 :]]
     sizes = [getattr(s, "height", None) or getattr(s, "length", None) or 0 for s in specs]
     if len(specs) < 2 or relations or len({s.shape for s in specs}) > 1 or len(set(sizes)) < 2:
         st.material.append(said)
@@ -697,6 +706,9 @@ def _ordered(
           "back": len(specs) - 1}[where]  # fmt: skip
     place = "in the middle" if where == "middle" else _AT.get(where, "on the ") + where
     st.notes.append(f"'{said}': the {'biggest' if most == 'max' else 'smallest'} one {place}")
+    if where != "middle" and pick in (0, len(specs) - 1):
+        # "heights 2, 4 and 6, the shortest on the left": the list read from that end
+        return specs if pick == at else specs[::-1]
     return [*rest[:at], specs[pick], *rest[at:]]
 
 

@@ -18,6 +18,9 @@ from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import NUMBER_WORDS, words_to_numbers
 
+_MIDDLE_ONES = r"tower|stack|column|pillar|pyramid|block|wall|row|staircase"
+"""The families "the tower in the middle" may name of a line (`_named_in_middle`)."""
+
 _NOT_TOUCHING = re.compile(
     r",?\s*\b(?:but\s+)?(?:(?:not|no|never|without)\s+touch(?:ing)?(?:\s+each\s+other|"
     r"\s+one\s+another|\s+it|\s+them|\s+the\s+(?:ring|wall|row|tower|base|slab|enclosure))?|"
@@ -1756,6 +1759,18 @@ _REWRITES += [
         "{extreme_at}",
         "",
     ),
+    (  # "a 2 by 2 block, a tower of six and another block, the tower in the middle": the one
+        # named once stands in the middle of the line (not a second tower at the table's centre)
+        re.compile(
+            r"(?:,\s*(?:and\s+|with\s+)?|\s+(?:and|with)\s+)the\s+"
+            r"(?:(?P<a>" + _MIDDLE_ONES + r")\s+"
+            r"(?:(?:goes|is|stands|sits)\s+)?in\s+the\s+(?:middle|centre|center)\b(?!\s+of\b)|"
+            r"(?:middle|centre|center)\s+(?P<b>" + _MIDDLE_ONES + r")\b(?=\s*(?:[.;!?]|$)))",
+            re.IGNORECASE,
+        ),
+        "{named_in_middle}",
+        "",
+    ),
     (  # "with 9 cubes on the bottom", "16 blocks in the bottom layer": the bottom level's count
         re.compile(
             r"\b(?:with\s+|having\s+)?(\d+|[a-z]+)\s+(?:cubes?|blocks?|bricks?|parts?)\s+(?:on|in|at|"
@@ -2456,7 +2471,7 @@ _ANOTHER = re.compile(
     r"in\s+front\s+of)\s+(?:it|them)\b))|"
     # "and another with double the height", "another 6 high", "and another, a bit lower"
     r"\banother(?=\s*(?:$|[,.;]|\s(?:with|of|that|which|having|at|on|in|next|behind|beside|\d+|"
-    r"two|three|four|five|six|seven|eight|nine|ten)\b)))",
+    r"two|three|four|five|six|seven|eight|nine|ten)\b(?!\s+by\s))))",  # not "another two by two"
     re.IGNORECASE,
 )
 
@@ -3468,6 +3483,11 @@ _PIECE = re.compile(
     r"vertical(?:ly)?))?",
     re.IGNORECASE,
 )
+_LIKE_PIECE = re.compile(
+    r"\s*[-—–,]?\s*\blike\s+(?:the|a|an)\s+(?:tetris\s+|tetromino\s+)?(?:[LTIOJ][- ]?(?:pieces?|"
+    r"tetrominos?|blocks?)|(?:tetris|tetromino)\s+(?:pieces?|shapes?|blocks?))\b",
+    re.IGNORECASE,
+)
 _PIECES = {
     "I": ("row of 4", "rows of 4"), "O": ("2 by 2 slab", "2 by 2 slabs"),
     "L": ("L shape 3 by 2", "L shapes 3 by 2"), "J": ("L shape 3 by 2", "L shapes 3 by 2"),
@@ -3478,6 +3498,16 @@ _PIECES = {
 def _tetris(text: str, st: ReadState) -> str:
     """ "a Tetris L-piece", "an O-piece", "two I-pieces on end": the four-cube pieces as the
     families that build them (S and Z have none: left for the reading to report)."""
+
+    def likeness(m: re.Match[str]) -> str:
+        if not families_said(m.string[: m.start()]):
+            return m.group(0)
+        st.notes.append(f"read '{m.group(0).strip(' ,-—–')}' as what the structure named before "
+                        "looks like")  # fmt: skip
+        return " "
+
+    # "an L shape, one arm four and the other three - like the tetris piece": no second one
+    text = _LIKE_PIECE.sub(likeness, text)
 
     def piece(m: re.Match[str]) -> str:
         count = (m.group(1) or "a").lower()

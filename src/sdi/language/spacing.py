@@ -29,7 +29,9 @@ _GAP = re.compile(
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:of\s+)?width\s+between(?:\s+(?:them|the\s+two|each))?"
-    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between\s+(?:them|the\s+two|each\s+other)\b"
+    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between\s+(?:them|the\s+two|each\s+other|"
+    r"(?:each|every)\s+(?:pair|two)|each(?!\s+(?:cube|part|block|brick)s?\b)|"
+    r"(?:the\s+|its\s+)?neighbou?rs)\b"
     + r"|(?:at\s+)?(?:a\s+)?distance\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT + r")?"
     + r"|(?:separated|spaced|parted)\s+by\s+" + _N + r"[- ]?" + _UNIT
     + r"|(?:at\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+of\s+(?:distance|separation|space))"

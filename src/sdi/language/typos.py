@@ -301,6 +301,8 @@ def correct(text: str, *, aggressive: bool = False) -> tuple[str, list[str]]:
                 notes.append(f"corrected '{raw}' to '{heard}' (it sounds like it)")
                 return heard
             return raw
+        if any(c == w for c, _, _ in found):
+            return raw  # "tetris": a word SDI knows, spelt right
         if any(w.startswith(c) and w[len(c) :] in _SUFFIXES for c, _, _ in found):
             return raw  # "chunky", "stacked": a derived form of a word, not a typo
         if aggressive and _vocab_has(w):
