@@ -9423,3 +9423,114 @@ def test_an_exhibit_labels_number_is_no_size():
     # "Exhibit label 12: a stepped pyramid of four tiers.": 12 read as a size (failure)
     r = _built_as_said("Exhibit label 12: a stepped pyramid of four tiers.", ["pyramid"], None)
     assert r.spec.structures[0].height == 4
+
+
+def test_a_long_wall_counted_in_cubes_takes_its_length_from_them():
+    # "a long wall, 10 cubes, two high": 6 long (the vague size of 'long'), silently; 'long'
+    # with a count says the count runs its length
+    _built_as_said("a long wall, 10 cubes, two high, across the back", ["wall"], [2] * 10)
+
+
+def test_a_family_said_bare_before_a_place_is_the_one_named():
+    # "…, wall on the left": a second wall there, silently
+    _built_as_said("make a tower of 4 and a wall 3 long 2 high that don't touch, wall on the left",
+                   ["tower", "wall"], [2, 2, 2, 4])  # fmt: skip
+    # "The staircase on the left, the tower on the right." said in a sentence of its own, of a
+    # "2x2 tower of 3." (a block one high, and a second staircase and block)
+    _built_as_said("a 4-step staircase and a 2x2 tower of 3. The staircase on the left, the tower "
+                   "on the right.", ["staircase", "block"], None)  # fmt: skip
+    _built_as_said("we had a 4-step staircase and a 2x2 tower of 3 side by side all day. Rebuild "
+                   "those two, stairs on the left, tower on the right, a couple of cubes between.",
+                   ["staircase", "block"], None)  # fmt: skip
+
+
+def test_one_of_four_in_the_middle_of_the_table_and_one_of_six():
+    # "… in the middle of the table and one of 6 at the back": a table 6 high, silently
+    _built_as_said("a tower of 2 at the front, one of 4 in the middle of the table and one of 6 at "
+                   "the back", ["tower"] * 3, [2, 4, 6])  # fmt: skip
+
+
+def test_a_question_that_asks_for_nothing_is_refused():
+    # "how many cubes are left in the feeder?": a row of 8 ('many'), silently
+    with pytest.raises(SpecError, match="a question"):
+        read("how many cubes are left in the feeder?")
+
+
+def test_blocks_of_one_footprint_with_their_heights_listed():
+    # "three 2x2 blocks, 1, 2 and 3 high": slabs 3, 2 and 1 long, silently
+    r = _built_as_said("three 2x2 blocks, 1, 2 and 3 high, left to right, with gaps between",
+                       ["block"] * 3, [1] * 4 + [2] * 4 + [3] * 4)  # fmt: skip
+    at_y = {y: h for (_, y), h in _columns(r).items()}
+    assert [at_y[y] for y in sorted(at_y, reverse=True)] == [1, 1, 2, 2, 3, 3]  # left (+y) first
+
+
+def test_three_walls_one_behind_the_other_stand_in_one_line():
+    # "three walls …, one behind the other": the second beside them, silently
+    r = _built_as_said("three walls 4 long 2 high, one behind the other, 2 cubes apart",
+                       ["wall"] * 3, [2] * 12)  # fmt: skip
+    xs = sorted({x for (x, _) in _columns(r)})
+    assert len({y for (_, y) in _columns(r)}) == 4
+    assert [round(b - a, 3) for a, b in itertools.pairwise(xs)] == [0.15, 0.15]
+
+
+def test_one_tower_of_several_as_tall_as_another():
+    # "make the short one as tall as the middle one": nothing changed (and all at the centre)
+    r = _built_as_said("towers of 3, 5 and 7 in a row, a cube apart; make the short one as tall as "
+                       "the middle one", ["tower"] * 3, [5, 5, 7])  # fmt: skip
+    assert all(getattr(s, "region", None) is None for s in r.spec.structures)
+    # which one is short is not said when two are: honest
+    assert plan("three towers of 2, 2 and 6. make the short one as tall as the tall one").status \
+        != "success"  # fmt: skip
+
+
+def test_cubes_removed_from_a_tower_come_off_its_top():
+    # "Step 3: remove 1 cube.": refused ('cannot take parts out')
+    _built_as_said("Step 1: build a column of 3. Step 2: add 4 cubes to the column. Step 3: remove "
+                   "1 cube.", ["tower"], [6])  # fmt: skip
+    _built_as_said("build a tower of 8 and then remove half of it", ["tower"], [4])
+    # of a wall, where they come from is not said: honest
+    assert plan("a wall 4 long 3 high, then remove 2 cubes").status != "success"
+
+
+def test_sizes_each_with_its_own_of_and_a_gap_said_between():
+    # "Three towers, of two, of three and of four, … with two cubes between": all 4 high
+    r = _built_as_said("Three towers, of two, of three and of four, in a line with two cubes "
+                       "between, from left to right.", ["tower"] * 3, [2, 3, 4])  # fmt: skip
+    by_y = sorted(_columns(r).items(), key=lambda kv: -kv[0][1])
+    assert [h for _, h in by_y] == [2, 3, 4]
+    assert by_y[0][0][1] - by_y[1][0][1] == pytest.approx(0.1 + 0.05)
+
+
+def test_plain_ways_to_say_touching_parallel_and_too_tall():
+    _built_as_said("two towers of 4 that touch", ["tower", "tower"], [4, 4])
+    _built_as_said("tower of 7 please. hmm thats too tall, do 5", ["tower"], [5])
+    _built_as_said("two parallel walls 4 long 3 tall with 10 cm between them", ["wall", "wall"],
+                   [3] * 8)  # fmt: skip
+
+
+def test_estate_agents_words_for_a_wall_a_neighbour_and_a_terrace():
+    # "Boundary wall, …, running along the left side": a ring 9 on a side
+    r = _built_as_said("Boundary wall, nine long and two high, running along the left side of the "
+                       "lot.", ["wall"], [2] * 9)  # fmt: skip
+    assert r.spec.structures[0].region == "left"
+    r = _built_as_said("A pyramid of three levels with a tower of four as its next-door neighbour.",
+                       ["pyramid", "tower"], None)  # fmt: skip
+    assert [rel.kind for rel in r.spec.relations] == ["next_to"]
+    # "A terrace of four towers": a staircase beside them
+    _built_as_said("A terrace of four towers of three in a row, one cube between neighbours.",
+                   ["tower"] * 4, [3] * 4)  # fmt: skip
+
+
+def test_an_arch_lower_than_any_arch_is_no_silent_success():
+    # "an arch 3 cubes tall": built 6 high with a note, as a success
+    r = plan("an arch 3 cubes tall")
+    assert r.status != "success" and any("6 high overall" in n for n in r.notes)
+
+
+def test_another_a_little_to_its_right():
+    # "a tower of 3 a little to its left and another a little to its right": the second tower
+    # was not built ('another a little' no structure)
+    r = _built_as_said("a pyramid of 3 levels in the middle with a tower of 3 a little to its left "
+                       "and another a little to its right", ["pyramid", "tower", "tower"],
+                       None)  # fmt: skip
+    assert sorted(rel.side for rel in r.spec.relations) == ["left", "right"]

@@ -87,6 +87,8 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
         # long structures running the same way
         ("parallel", _N + r"(?:(?:both|all|that\s+are|which\s+are|they\s+are)\s+)?parallel"
                            r"(?:\s+to\s+(?:each\s+other|one\s+another))?\b(?!\s+to\s+the\b)"),
+        # "three walls …, one behind the other" (read so in `normalise`): parallel in one line
+        ("parallel", _N + r"one\s+behind\s+another\b"),
         # every structure as high as the others
         ("same", _N + r"(?:all\s+|both\s+)?(?:(?:of\s+)?the\s+)?same\s+height\b"
                       r"(?:\s+as\s+(?:each\s+other|one\s+another))?(?!\s+as\b)"),

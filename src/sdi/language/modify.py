@@ -32,6 +32,13 @@ _REF = (  # not a place: "stack 5 on the right" is a stack of its own there
 )
 
 
+_WHICH = (
+    r"short|shorter|shortest|small|smaller|smallest|low|lower|lowest|tall|taller|tallest|big|bigger|"
+    r"biggest|high|higher|highest|middle|first|second|third|last"
+)
+"""The words that pick one of several towers (`_which_tower`)."""
+
+
 # a change said on its own ("too much, half of that", "no, double it"), not a comparison that
 # sizes another structure ("and the other one twice that", "one double that height")
 _CHANGE_LEAD = (
@@ -235,6 +242,13 @@ MODIFY = [
         r"\bmake\s+the\s+(smaller|shorter|lower|taller|bigger|higher|larger)\s+(?:one|tower|stack|"
         r"column)\s+(?:as\s+(?:tall|high)\s+as|the\s+same\s+height\s+as)\s+the\s+other(?:\s+one)?\b",
         "=other",
+    ),
+    # "towers of 3, 5 and 7 …; make the short one as tall as the middle one": one of several
+    _op(
+        r"\bmake\s+the\s+(" + _WHICH + r")\s+(?:one|tower|stack|column)\s+"
+        r"(?:as\s+(?:tall|high)\s+as|the\s+same\s+height\s+as)\s+the\s+(" + _WHICH
+        + r")(?:\s+(?:one|tower|stack|column))?\b",
+        "=as",
     ),
     # "make the first one twice as tall", "make it twice as long": that size, doubled
     _op(r"\bmake\s+" + _REF + r"\s+(twice|double|triple)\s+as\s+(?:tall|high)\b", "*"),
@@ -853,6 +867,34 @@ def _as_the_other(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
     return f"the {m.group(1).lower()} tower now has height {now} (was {was}), as the other"
 
 
+def _as_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
+            built: list[Phrase], structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "towers of 3, 5 and 7; make the short one as tall as the middle one": one tower of
+    several (picked by its size, or by the order they were named in) as high as another."""
+    towers = _tower_heights(built, structures)
+    pick, like = (_which_tower(m.group(k).lower(), towers) for k in (1, 2))
+    if pick is None or like is None or pick == like:
+        return None
+    was, now = structures[pick].height, structures[like].height
+    structures[pick] = structures[pick].model_copy(update={"height": now})
+    return f"the {m.group(1).lower()} tower now has height {now} (was {was})"
+
+
+def _which_tower(word: str, towers: Mapping[int, int | None]) -> int | None:
+    """The one tower of several `word` picks: by size ("the short one"), by the order named
+    ("the first one", "the last one"), or the middle one of an odd number named together."""
+    stem = re.sub(r"(?:er|est)$", "", word)
+    if stem in ("short", "small", "low"):
+        return _extreme_tower(towers, low=True)
+    if stem in ("tall", "big", "bigg", "high"):
+        return _extreme_tower(towers, low=False)
+    order = sorted(towers)
+    if word == "middle":
+        return order[len(order) // 2] if len(order) % 2 and len(order) > 1 else None
+    at = {"first": 0, "second": 1, "third": 2, "last": -1}[word]
+    return order[at] if -len(order) <= at < len(order) else None
+
+
 def _undo(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: list[Phrase],
           structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "Then a wall behind them. Undo the last one.": the structures of the step before are
@@ -1124,6 +1166,7 @@ _CHANGES: dict[str, Change] = {
     "fill": _fill, "region": _region, "dims": _dims, "=pillars": _pillars, "=turrets": _turrets,
     "hollow": _hollow, "drop": _drop, "drop_one": _drop_one, "drop_family": _drop_family,
     "=other": _as_the_other,
+    "=as": _as_one,
     "undo": _undo,
     "undo_all": _undo_all,
 }  # fmt: skip

@@ -659,6 +659,15 @@ def _side_one(m: re.Match[str], size: str | None) -> str:
     return f"one {of}{size} {where}{side}"
 
 
+def _blocks_listed(m: re.Match[str]) -> str:
+    """ "three 2x2 blocks, 1, 2 and 3 high": a block of each height, as many as counted."""
+    heights = [h for h in m.group(4, 5, 6, 7) if h]
+    if words_to_numbers([m.group(1).lower()])[0] != str(len(heights)):
+        return m.group(0)
+    blocks = [f"a {m.group(2)} by {m.group(3)} block {h} high" for h in heights]
+    return ", ".join(blocks[:-1]) + " and " + blocks[-1]
+
+
 def _rows_apart(m: re.Match[str]) -> str:
     """ "two rows of six, parallel, …", "two rows of three 10 cm apart": the rows one by one;
     two rows (not walls) said apart stand one behind the other, as rows do."""
@@ -958,7 +967,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: f"the {m.group(1)} one {m.group(2)}"
      + (" the other" if m.group(2).lower() == "behind" else " of the other")),
     # "a tower in line with the wall": beside it (the line was a row of its own, silently)
-    (re.compile(r"\bin\s+(?:a\s+)?line\s+with\b", re.I), "next to"),
+    # (not "in a line with two cubes between")
+    (re.compile(r"\bin\s+(?:a\s+)?line\s+with\b(?!\s+(?:an?\s+|" + _NUM + r"[\s-]+)(?:cubes?|cm|mm|"
+                r"gaps?|spaces?)\b)", re.I), "next to"),
     # a contract's "four (4)": the figure repeats the word (first, so every
     # rule sees one number); one that disagrees is kept
     (re.compile(r"\b([a-z]+)\s*\(\s*(\d+)\s*\)", re.I),
@@ -1581,8 +1592,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "one rank high" (a chess player's row): one high (a row of 8 was built)
     (re.compile(r"\b(" + _NUM + r")\s+ranks?\s+(high|tall)\b", re.I), r"\1 \2"),
     # "three towers … of two, of three and of four": a list of their sizes
-    (re.compile(r"\bof\s+(" + _NUM + r")\s*,\s*of\s+(" + _NUM + r")\s*,?\s*(?:and\s+)?of\s+(" + _NUM
-                + r")\b", re.I), r"of \1, \2 and \3"),
+    # (a comma before the first "of" too: "Three towers, of two, of three and of four")
+    (re.compile(r"(?:\s*,)?\s*\bof\s+(" + _NUM + r")\s*,\s*of\s+(" + _NUM + r")\s*,?\s*(?:and\s+)?"
+                r"of\s+(" + _NUM + r")\b", re.I),
+     lambda m: " of {}, {} and {}".format(*words_to_numbers([n.lower() for n in m.groups()]))),
     # "Two towers stand 15 cm apart": the towers, 15 cm apart ("stand" split them from their
     # sizes said after)
     (re.compile(r"\b((?:two|three|four|[2-9])\s+(?:" + _FAMILY_SAID + r")s)\s+(?:stand|standing|"
@@ -1615,7 +1628,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                   _sentence_before(m.string, m.start()), re.I)
      else m.group(0)),
     # a bridge's "walkway", "footway", "roadway": its deck
-    (re.compile(r"\b(?:walk|foot|road)[\s-]?way\b", re.I), "deck"),
+    (re.compile(r"\b(?:walk|foot|road)[\s-]?way\b(?!\s+between\b)", re.I), "deck"),  # not a gap
     # "two supports, three high, and a walkway on top": pillars (nothing was built, or a block)
     (re.compile(r"\b(two|2|both|pair\s+of)\s+supports\b(?=[^.;]*\b(?:beam|plank|lintel|girder|"
                 r"deck)\b)", re.I),
@@ -2386,9 +2399,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a block against the back of the room": the room the cell stands in, its back the table's
     # (not a room built around it), unless a room was built before ("a 5 by 5 room, then a
     # tower at the back of the room")
-    (re.compile(r"\b((?:at|in|on|to|against|toward|towards)\s+the\s+(?:back|front|rear|far|near|left|right|"
-                r"middle|centre|center)(?:[\s-](?:left|right))?(?:\s+(?:side|end|corner|edge))?)\s+of\s+the\s+"
-                r"(room|chamber|hall|lab|workshop|shop|studio|gallery)\b", re.I),
+    (re.compile(r"\b((?:at|in|on|to|against|toward|towards|along)\s+the\s+(?:back|front|rear|far|near|left|"
+                r"right|middle|centre|center)(?:[\s-](?:left|right))?(?:\s+(?:side|end|corner|edge))?)\s+of\s+"
+                r"the\s+(room|chamber|hall|lab|workshop|shop|studio|gallery|lot|plot|site|yard)\b",
+                re.I),
      lambda m: m.group(0) if re.search(rf"\b{m.group(2)}\b", m.string[: m.start()], re.I)
      else m.group(1)),
     # "Kids love a pyramid - make one with four layers": the one named, sized (not a pyramid
@@ -2440,6 +2454,77 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      and re.search(r"\b(?:inside|middle|centre|center|around|surround(?:ed|ing)?)\b",
                    m.string[: m.start()], re.I)
      else m.group(0)),
+    # "a tower of four as its next-door neighbour": next to it
+    (re.compile(r"\b(?:as\s+)?(?:its|their|the)\s+next[\s-]door\s+neighbou?r\b", re.I),
+     "next to it"),
+    # "A terrace of four towers": four towers in a row (not a staircase)
+    (re.compile(r"\b(?:an?\s+)?terrace\s+of\s+(?=(?:\d+|two|three|four|five|six)\s+(?:towers|stacks|columns|"
+                r"blocks|houses)\b)", re.I), ""),
+    # "Boundary wall, nine long …, running along the left side": a wall along that side
+    (re.compile(r"\b(?:boundary|perimeter)\s+(?=(?:wall|fence)\b[^.;]*\b(?:along|running|runs)\b)",
+                re.I), ""),
+    # "a wall … parked straight behind it": set there
+    (re.compile(r"\bparked\b(?=\s+(?:straight\s+|right\s+|just\s+)?(?:behind|in\s+front|next|beside|on|at|to)\b)",
+                re.I), "placed"),
+    # "a tower of 4 and a wall 3 long …, wall on the left": the wall named (a second wall was
+    # built there)
+    (re.compile(r"(?<=[,;]\s)(tower|wall|row|slab|block|pyramid|staircase|stairs|column|bridge|ring|"
+                r"arch)\s+(?=(?:on|at|to|in)\s+the\s+(?:left|right|front|back|middle|centre|center)\b)",
+                re.I),
+     lambda m: f"the {m.group(1)} " if set(families_said(m.group(1)))
+     <= set(families_said(m.string[: m.start()])) else m.group(0)),
+    # "three 2x2 blocks, 1, 2 and 3 high": one block of each height (the heights were read
+    # as their lengths, silently)
+    (re.compile(r"\b(two|three|four|[2-4])\s+(\d+)\s*(?:x|by)\s*(\d+)\s+(?:blocks|slabs|squares|pads)\s*,?\s+"
+                r"(?:(?:of\s+|with\s+)?heights?\s+)?(\d+)(?:\s*,\s*(\d+))?(?:\s*,\s*(\d+))?\s*,?\s+and\s+(\d+)"
+                r"(?:\s+(?:cubes?\s+)?(?:high|tall|layers?|levels?))?\b", re.I),
+     _blocks_listed),
+    # "three walls 4 long 2 high, one behind the other": all in one line front to back (only the
+    # third was set behind the first)
+    # (walls and rows parallel, one behind another: claimed and kept as `parallel`)
+    (re.compile(r"(?<!\bx\s)(?<!\bby\s)(?<![x×*])(\b(?:three|four|five|six|[3-6])\s+(?:[a-z]+\s+)?("
+                + _FAMILY_SAID
+                + r")s\b[^.;]*?)\s*,?\s*\bone\s+behind\s+(?:the\s+other|another)\b", re.I),
+     lambda m: m.group(1) + (", one behind another" if m.group(2).lower() in ("wall", "row", "line")
+                             else ", in a line front to back")),
+    # "two towers of 4 that touch": touching
+    (re.compile(r"\b(?:that|which)\s+(?:touch|are\s+touching|touch\s+each\s+other)\b", re.I),
+     "touching"),
+    # "a 5 high tower with a 2 high one touching it": a second one of that family, that high
+    (re.compile(r"\b(with|and)\s+an?\s+((?:\d+|two|three|four|five|six|seven|eight|nine|ten)[\s-](?:high|tall))"
+                r"\s+one\b", re.I),
+     lambda m: f"{m.group(1)} a {fams[-1]} {m.group(2)}"
+     if (fams := [f for f in families_said(m.string[: m.start()])
+                  if f in ("tower", "wall", "pyramid")])
+     else m.group(0)),
+    # "tower of 7 please. hmm thats too tall, do 5": make it 5
+    (re.compile(r"\bthats\b", re.I), "that's"),
+    (re.compile(r"(\btoo\s+(?:tall|high|big|long|short|small|low|much|many)\s*[,.!]?\s*)do\s+(?=\d|one\b|two\b|"
+                r"three\b|four\b|five\b|six\b|seven\b|eight\b|nine\b|ten\b)", re.I), r"\1make it "),
+    # "two parallel walls 4 long": two walls, parallel (one wall was built)
+    (re.compile(r"\b(two|three|2|3)\s+parallel\s+(walls|rows|lines)\b", re.I), r"\1 \2, parallel,"),
+    # "then remove half of it": halve it
+    (re.compile(r"\b(?:remove|take\s+(?:away|off))\s+half\s+of\s+(it|them)\b|\btake\s+half\s+of\s+(it|them)\s+"
+                r"(?:away|off)\b", re.I), lambda m: f"halve {m.group(1) or m.group(2)}"),
+    # "with a 2 high one touching it on the right": on its right, against it
+    (re.compile(r"\btouching\s+(it|them)\s+(?:on|at|to)\s+(?:the|its|their)\s+(left|right|front|back)"
+                r"(?:[\s-]hand)?(?:\s+side)?\b", re.I),
+     lambda m: {"front": f"in front of {m.group(1)}", "back": f"behind {m.group(1)}"}.get(
+         m.group(2).lower(), f"to the {m.group(2).lower()} of {m.group(1)}") + ", touching"),
+    # "a 4-step staircase and a tower of 3. The staircase on the left, the tower on the right.":
+    # the places of the ones named, said in a sentence of their own (two more were built)
+    # ("Rebuild those two, stairs on the left, tower on the right, …" likewise)
+    (re.compile(r"[.;]\s+(?:(?:re)?(?:build|make|do)\s+(?:those|these|them|both)(?:\s+(?:two|three))?"
+                r"\s*,\s*)?(?=(?:the\s+)?(?:" + _FAMILY_SAID + r")s?\s+(?:on|at|to|in)\s+the\s+\w+"
+                r"(?:[\s-]\w+)?"
+                r"(?:\s*,\s*(?:and\s+)?(?:the\s+)?(?:" + _FAMILY_SAID + r")s?\s+(?:on|at|to|in)\s+"
+                r"the\s+\w+"
+                r"(?:[\s-]\w+)?)+\s*(?:[.!,]|$))", re.I), ", "),
+    # "and a little way from the slab a wall", "a tower a little to its left": near it, on
+    # that side (a failure; "another a little" read as a structure)
+    (re.compile(r"\ba\s+(?:little|short|small)\s+way\s+(?:away\s+)?from\s+", re.I), "near "),
+    (re.compile(r"\ba\s+(?:little|bit|tad)\s+(?=to\s+(?:its|the)\s+(?:left|right)\b|in\s+front\b|behind\b)",
+                re.I), ""),
     # "one of those long beams laid across the top": a beam across the top
     (re.compile(r"\bone\s+of\s+(?:those|these|the|your|them)\s+(?:(?:long|big|heavy|large)\s+)?"
                 r"(beam|plank|bar)s\b", re.I), r"a \1"),
@@ -2748,10 +2833,17 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:ed)?\b", re.I), ""),
     (re.compile(r"\b(?:i|we)\s+(?:packed|put|cleared|tidied|took)\s+(?:the\s+)?(?:\w+\s+)?(?:pieces|cubes|parts|"
                 r"blocks|bricks)\s+away\b", re.I), ""),
-    (re.compile(r"\b(\d+)\s*(?:x|by)\s*(\d+)\s+(?:towers?|columns?|stacks?|pillars?)\s+(?:of\s+)?(\d+)(?![/.\d])"
+    (re.compile(r"\b(\d+)\s*(?:x|by)\s*(\d+)\s+(?:towers?|columns?|stacks?|pillars?)\s+(?:of\s+)?(\d+)(?![/\d]|\.\d)"
                 r"(?:\s+(?:cubes?|high|tall|levels?|layers?))?\b", re.I),
      lambda m: f"tower of {m.group(3)}" if m.group(1) == m.group(2) == "1"
      else f"{m.group(1)} by {m.group(2)} block {m.group(3)} high"),
+    # "… a 2x2 tower of 3, the staircase on the left, the tower on the right": that block (a
+    # second tower was built)
+    (re.compile(r"\bthe\s+(?:tower|column|stack|pillar)\b", re.I),
+     lambda m: "the block"
+     if re.search(r"\d\s+by\s+\d+\s+block\s+\d+\s+high\b", m.string[: m.start()])
+     and not re.search(r"\b(?:towers?|columns?|stacks?|pillars?)\b", m.string[: m.start()], re.I)
+     else m.group(0)),
     # "a single-cube marker", "a one-cube spacer": one cube standing alone
     (re.compile(r"\b(an?|one|each|two|three|four)\s+(?:single|one)[- ]cube\s+(?:markers?|posts?|"
                 r"pieces?|spacers?|stops?|pins?|pegs?|cones?|targets?|blocks?)\b", re.I),

@@ -126,6 +126,15 @@ _NEGATIVE_SIZE = re.compile(
 )
 
 
+_ONLY_A_QUESTION = re.compile(
+    r"^\s*(?:how\s+(?:many|much|long|tall|high)|what(?:'s|\s+is)|where(?:'s|\s+is|\s+are)|why|when)\b"
+    r"(?![^?]*\b(?:build|make|stack|put|place|lay|give\s+me)\b)[^.!?]*\?\s*$",
+    re.IGNORECASE,
+)
+"""A command that is one question and asks for nothing ("how many cubes are left in the
+feeder?"): an 8-cube row was built for its 'many'."""
+
+
 def read(command: str, cell: CellConfig | None = None) -> Reading:
     """Read `command`; `SpecError` (with `understood`) when it names nothing buildable."""
     cell = cell or CellConfig()
@@ -146,6 +155,12 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         raise SpecError(
             f"'{negative.group(0).strip()}': a size below zero cannot be built; sizes count parts "
             "(whole numbers ≥ 1) or measure lengths",
+            understood={},
+        )
+    if _ONLY_A_QUESTION.match(command):
+        raise SpecError(
+            f"'{command.strip()}' is a question, not something to build; SDI builds what a "
+            "command names (e.g. 'a tower of 4 cubes')",
             understood={},
         )
     st = ReadState(command, cell)
@@ -877,8 +892,9 @@ def _arch_overall(s: StructureSpec, command: str, level_m: float, st: ReadState)
         st.notes.append(f"an arch is at least {above + 1} high (1-cube legs, {above - 1} corbel "
                         f"levels and the beam): read {words} as its legs, {said + above} "
                         "high overall")  # fmt: skip
-        if re.search(r"\b(?:in\s+total|overall|altogether|all\s+together|total)\b", command, re.I):
-            st.material.append(f"{words} overall")  # said of the whole arch: not what is built
+        # an arch that high cannot be built: what is built is higher than said, never a
+        # silent success
+        st.material.append(f"{words} overall")
         return s
     st.notes.append(f"read the arch's {words} as its overall height: legs {said - above} "
                     f"high, {above - 1} corbel levels and the beam")  # fmt: skip

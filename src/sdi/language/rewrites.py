@@ -1920,8 +1920,9 @@ _REWRITES += [
         " {0} by {0} base ",
         "read '{0}' as a square base",
     ),
-    (  # "a perimeter fence", "a boundary wall": a ring
-        re.compile(r"\b(?:perimeter|boundary)\s+(?:fence|wall)\b", re.IGNORECASE),
+    (  # "a perimeter fence", "a boundary wall": a ring (not one "running along the left side")
+        re.compile(r"\b(?:perimeter|boundary)\s+(?:fence|wall)\b(?![^.;]*\b(?:along|running|runs)\b)",
+                   re.IGNORECASE),
         " enclosure ",
         "read '{0}' as a ring",
     ),
@@ -2471,6 +2472,7 @@ _ANOTHER = re.compile(
     r"in\s+front\s+of)\s+(?:it|them)\b))|"
     # "and another with double the height", "another 6 high", "and another, a bit lower"
     r"\banother(?=\s*(?:$|[,.;]|\s(?:with|of|that|which|having|at|on|in|next|behind|beside|\d+|"
+    r"to(?=\s+(?:its|the|their)\s+(?:left|right)\b)|"  # "and another to its right"
     r"two|three|four|five|six|seven|eight|nine|ten)\b(?!\s+by\s))))",  # not "another two by two"
     re.IGNORECASE,
 )
@@ -2735,6 +2737,8 @@ def _another(text: str) -> str:
             for k, w in enumerate(said)
             if w in lx.SHAPE_WORDS
             and w not in lx.AMBIGUOUS_SHAPES
+            # "one of 4 in the middle of the table and one of 6": the table is a place
+            and not (w == "table" and said[k - 2 : k] in (["of", "the"], ["on", "the"]))
             # "now stack a second one": the verb is not the noun it repeats
             and not (w in lx.VERB_SHAPES and (k == len(said) - 1 or said[k + 1] in _ARTICLES))
         ]

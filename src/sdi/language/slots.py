@@ -217,6 +217,15 @@ def fill_slots(
         moved = any(  # "move it to the left": a change MODIFY makes
             op in _CHANGE_OPS and pattern.search(p.text) for pattern, op in MODIFY
         )
+        counted = _REMOVED_COUNT.match(p.text)
+        prior = [q for q in phrases[:k] if q.spec is not None and q.count]
+        if counted and prior and structures[prior[-1].first + prior[-1].count - 1].shape == "tower":
+            # "Step 3: remove 1 cube." of a tower: a cube can only come off its top
+            said, p.text = p.text, f"take {counted.group(1)} off"
+            if modify(p, phrases[:k], structures, st):
+                st.notes[-1] = st.notes[-1].replace(f"'{p.text}'", f"'{said.strip(' .')}'")
+                continue
+            p.text = said
         if REMOVAL.match(p.text) and not moved and [q for q in phrases[:k] if q.spec is not None]:
             # "then pull out the middle cube", "push them together": a change SDI cannot
             # make to a structure it built; never a new structure read from those words
@@ -490,6 +499,11 @@ def _account(p: Phrase, spec: SpecDraft, unused: list[str], doc: Doc, st: ReadSt
 
 
 _CHANGE_OPS = frozenset({"region", "offset"})
+_REMOVED_COUNT = re.compile(
+    r"^\W*(?:(?:and|then|now)\s+)*(?:please\s+)?(?:remove|take\s+away|lose|drop)\s+(\d+|one|two|three|"
+    r"four|five|six|a|an)\s+(?:cubes?|blocks?)\W*$",
+    re.IGNORECASE,
+)
 _TAKE_DOWN = re.compile(
     r"^\W*(?:please\s+)?(?:take|tear|knock|pull)\s+down\b|^\W*(?:please\s+)?(?:demolish|dismantle|"
     r"clear\s+away|remove|destroy)\s+the\b",

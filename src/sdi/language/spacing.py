@@ -27,13 +27,16 @@ _GAP = re.compile(
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:away|off|out|clear)(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
-    + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance)(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
+    + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance|aisle|walkway|path|corridor)"
+    r"(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:of\s+)?width\s+between(?:\s+(?:them|the\s+two|each))?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between\s+(?:them|the\s+two|each\s+other|"
     r"(?:each|every)\s+(?:pair|two)|each(?!\s+(?:cube|part|block|brick)s?\b)|"
     r"(?:the\s+|its\s+)?neighbou?rs)\b"
     + r"|(?:at\s+)?(?:a\s+)?distance\s+(?:of\s+)?" + _N + r"(?:[- ]?" + _UNIT + r")?"
     + r"|(?:separated|spaced|parted)\s+by\s+" + _N + r"[- ]?" + _UNIT
+    # "in a line with two cubes between, from left to right": between them
+    + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between(?=\s*(?:[,.;!?]|$|from\b|and\b|then\b))"
     + r"|(?:at\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+of\s+(?:distance|separation|space))"
     r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
     re.IGNORECASE,

@@ -1660,6 +1660,11 @@ class _Parser:
                 wide = p.get("width", 0)
                 if shape in ("wall", "row") and key == "length" and wide > values[index]:
                     continue  # "a little wall, 5 wide": its length said as its width
+                if shape in ("wall", "row") and key == "length" and "count" in p:
+                    # "a long wall, 10 cubes, two high", "a long one of 6 cubes": the cubes
+                    # counted run its length (it was 6 long, the vague size, silently)
+                    p["length"] = p.pop("count")
+                    continue
                 if applies and key not in p and f"{key}_m" not in p:
                     # a small block is still a block (2 high); only a low one is one layer
                     low = shape == "block" and key == "height" and dim == "all"
