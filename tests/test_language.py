@@ -5047,10 +5047,12 @@ def test_probe_misreadings_of_plain_commands():
 
 
 def test_the_middle_one_changed_is_reported_and_members_placed_by_coordinates():
-    # "make the middle one taller by 2" changed the last tower, silently; where each of three
-    # stands is not known when the change is read, so it is reported
-    for command in ("three towers of 3. make the middle one taller by 2",
-                    "a tower of 2, a tower of 3 and a tower of 4, then make the middle one 6",
+    # "make the middle one taller by 2" changed the last tower, silently; of an odd number of
+    # towers named together the middle one is the middle of the order they stand in; with two
+    # there is none, and a value set ("make the middle one 6") is reported
+    r = plan("three towers of 3. make the middle one taller by 2")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 5, 3]
+    for command in ("a tower of 2, a tower of 3 and a tower of 4, then make the middle one 6",
                     "two towers of 3, then make the middle one 5"):  # fmt: skip
         r = plan(command)
         assert r.status == "partial", command
@@ -7120,7 +7122,8 @@ def test_the_one_in_the_middle_is_not_read_as_a_place():
     # change read as a tower of 3 ("from the 1 said before"), silently
     r = plan("Make three towers of 2, 4 and 3 cubes in a row. Make the one in the middle 2 cubes "
              "taller.")  # fmt: skip
-    assert r.status != "success"
+    assert [s.height for s in r.spec.structures] == [2, 6, 3]  # the middle of the row
+    assert all(getattr(s, "region", None) is None for s in r.spec.structures)
     assert any("Make the middle one 2 cubes taller" in n for n in r.notes)
 
 
@@ -9288,9 +9291,13 @@ def test_a_post_against_the_end_of_a_wall_named_after_it():
 
 def test_more_added_to_the_middle_column_of_a_line_is_no_new_column():
     # "then add 2 cubes to the middle column only": a fourth column of 2, silently
-    r = plan("three towers of 3 in a line, then add 2 cubes to the middle column only")
-    assert r.status != "success"
-    assert len(r.spec.structures) == 3
+    r = _built_as_said("three towers of 3 in a line, then add 2 cubes to the middle column only",
+                       ["tower"] * 3, [3, 3, 5])  # fmt: skip
+    assert [s.height for s in r.spec.structures] == [3, 5, 3]
+    # of a tower in the middle of the table and another, which one is meant is not said
+    r = plan("a tower of 3 in the middle and a tower of 2 on the left, then add 2 cubes to the "
+             "middle tower")  # fmt: skip
+    assert r.status != "success" and len(r.spec.structures) == 2
 
 
 def test_the_back_of_the_room_is_the_back_of_the_table():
@@ -9534,3 +9541,44 @@ def test_another_a_little_to_its_right():
                        "and another a little to its right", ["pyramid", "tower", "tower"],
                        None)  # fmt: skip
     assert sorted(rel.side for rel in r.spec.relations) == ["left", "right"]
+
+
+def test_a_copy_of_it_and_the_same_done_elsewhere():
+    # "then put a copy of it at the back": ignored; "another one" of a 2x2 block: one cube
+    _built_as_said("build a 2x2 block 3 high at the front. then put a copy of it at the back",
+                   ["block", "block"], [3] * 8)  # fmt: skip
+    _built_as_said("build a 2x2 block 3 high at the front. then put another one at the back",
+                   ["block", "block"], [3] * 8)  # fmt: skip
+    r = _built_as_said("a tower of 4 in the front left. do the same at the back left and back "
+                       "right", ["tower"] * 3, [4] * 3)  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["front left", "back left", "back right"]
+
+
+def test_the_middle_one_of_a_square_of_cubes_is_its_middle_cube():
+    # "a 3 by 3 square of cubes, then take out the middle one": refused (which structure?)
+    _built_as_said("make a 3 by 3 square of cubes, then take out the middle one", ["enclosure"],
+                   [1] * 8)  # fmt: skip
+
+
+def test_levels_said_with_next_and_finished_with_one_cube():
+    # "first a 4x4 slab, next a 3x3 on it, next a 2x2, and finish with one cube": the 2x2 and
+    # the cube beside the rest
+    r = _built_as_said("first a 4x4 slab, next a 3x3 on it, next a 2x2, and finish with one cube",
+                       ["grid", "grid", "grid", "tower"], None)  # fmt: skip
+    assert max(o.position[2] + o.size[2] / 2 for o in r.layout.objects) == pytest.approx(0.2)
+
+
+def test_cubes_taken_off_the_tall_one_of_several():
+    # "then take 3 off the tall one": refused ('cannot take parts out')
+    _built_as_said("three towers of 2, 4 and 6 in a row, a cube apart, then take 3 off the tall "
+                   "one", ["tower"] * 3, [2, 3, 4])  # fmt: skip
+
+
+def test_a_change_is_kept_when_a_later_sentence_places_the_structure():
+    # "a tower of 3, then add 2 more cubes to it. At the back.": the note said 5, the tower
+    # was built 3 high (the place read the tower again from its first words)
+    r = _built_as_said("a tower of 3, then add 2 more cubes to it. At the back.", ["tower"], [5])
+    assert r.spec.structures[0].region == "back"
+    r = _built_as_said("three towers of 3 in a row, a cube apart, then add two cubes to the middle "
+                       "one. In the middle of the table.", ["tower"] * 3, [3, 3, 5])  # fmt: skip
+    assert [s.height for s in r.spec.structures] == [3, 5, 3]

@@ -250,6 +250,18 @@ MODIFY = [
         + r")(?:\s+(?:one|tower|stack|column))?\b",
         "=as",
     ),
+    # "three towers of 2, 4 and 6, then take 3 off the tall one", "add 2 to the first one"
+    _op(
+        r"\b(?:take|knock|lift|remove)\s+" + _N + r"\s+(?:cubes?\s+|levels?\s+)?(?:off|from)\s+"
+        r"(?:the\s+top\s+of\s+)?the\s+(" + _WHICH + r")\s+(?:one|tower|stack|column)\b",
+        "-one",
+    ),
+    _op(
+        r"\b(?:add|put|stack|place)\s+" + _N + r"\s+(?:more\s+)?(?:cubes?\s+|levels?\s+)?"
+        r"(?:to|on|onto)\s+"
+        r"(?:the\s+top\s+of\s+)?the\s+(" + _WHICH + r")\s+(?:one|tower|stack|column)\b",
+        "+one",
+    ),
     # "make the first one twice as tall", "make it twice as long": that size, doubled
     _op(r"\bmake\s+" + _REF + r"\s+(twice|double|triple)\s+as\s+(?:tall|high)\b", "*"),
     _op(r"\bmake\s+" + _REF + r"\s+(twice|double|triple)\s+as\s+long\b", "*length"),
@@ -484,6 +496,15 @@ def modify(
         else:
             note = _resize(m, op, p, before, built, structures, st.cell.cube[2])
         middle = r"\bthe\s+(?:middle|centre|center)\s+(?:one|tower|column|stack|pillar|post)\b"
+        alone = [structures[i] for i in _built_indices(built)]
+        if note is None and len(alone) == 1 and alone[0].shape == "grid" and re.search(
+            r"\bmiddle\s+one\b", p.text, re.I
+        ):
+            # "a 3 by 3 square of cubes, then take out the middle one": its middle cube
+            p.text = re.sub(r"\bmiddle\s+one\b", "middle cube", p.text, flags=re.I)
+            return modify(p, before, structures, st)
+        if note is None and re.search(middle, p.text, re.I):
+            note = _middle_of_line(m, op, built, structures)
         if note is None and re.search(middle, p.text, re.I):
             # "three towers, then make the middle one 5": the middle one is not picked out
             st.material.append(m.group(0).strip())
@@ -880,6 +901,47 @@ def _as_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
     return f"the {m.group(1).lower()} tower now has height {now} (was {was})"
 
 
+def _on_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
+            built: list[Phrase], structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "three towers of 2, 4 and 6, then take 3 off the tall one": that one tower changed."""
+    towers = _tower_heights(built, structures)
+    pick = _which_tower(m.group(2).lower(), towers)
+    n = words_to_numbers([m.group(1).lower()])[0]
+    if pick is None or not n.isdigit() or structures[pick].height is None:
+        return None
+    was = structures[pick].height or 0
+    now = was - int(n) if op == "-one" else was + int(n)
+    if now < 1:
+        return None
+    structures[pick] = structures[pick].model_copy(update={"height": now})
+    return f"the {m.group(2).lower()} tower now has height {now} (was {was})"
+
+
+def _middle_of_line(m: re.Match[str], op: str, built: list[Phrase],
+                    structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "3 columns of height 3 in a line, then add 2 cubes to the middle column": of an odd
+    number of towers (and nothing else) named in one line with no place of their own, the one
+    in the middle of the order they stand in (the order named) grows or shrinks."""
+    every = _built_indices(built)
+    towers = _tower_heights(built, structures)
+    if len(towers) != len(every) or any(structures[i].region for i in towers):
+        return None
+    pick = _which_tower("middle", towers)
+    said = m.group(1) if m.groups() and m.group(1) else "1"
+    said = "1" if said.lower() in ("a", "an", "another", "one more") else said
+    n = 1 if op in ("+1", "-1") else words_to_numbers([said.lower()])[0]
+    if pick is None or op not in ("+", "-", "+1", "-1", "=") or not str(n).isdigit():
+        return None
+    was = structures[pick].height
+    if was is None:
+        return None
+    now = {"=": int(n), "-": was - int(n), "-1": was - 1}.get(op, was + int(n))
+    if now < 1:
+        return None
+    structures[pick] = structures[pick].model_copy(update={"height": now})
+    return f"the middle tower of the line now has height {now} (was {was})"
+
+
 def _which_tower(word: str, towers: Mapping[int, int | None]) -> int | None:
     """The one tower of several `word` picks: by size ("the short one"), by the order named
     ("the first one", "the last one"), or the middle one of an odd number named together."""
@@ -1167,6 +1229,8 @@ _CHANGES: dict[str, Change] = {
     "hollow": _hollow, "drop": _drop, "drop_one": _drop_one, "drop_family": _drop_family,
     "=other": _as_the_other,
     "=as": _as_one,
+    "-one": _on_one,
+    "+one": _on_one,
     "undo": _undo,
     "undo_all": _undo_all,
 }  # fmt: skip

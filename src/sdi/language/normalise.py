@@ -377,6 +377,7 @@ def _height_run(m: re.Match[str]) -> str:
 
 
 _NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+_A_PLACE = r"(?:(?:back|front|rear)(?:[\s-](?:left|right))?|left|right|middle|centre|center)"
 _PROGRESSION = re.compile(
     r"\b(" + _NUM + r")\s+(towers|stacks|columns|pillars|posts)\b([^.;:]*?)\s*,?\s*(?:with\s+)?each"
     r"(?:\s+one)?\s+(?:(" + _NUM + r"|a)\s+)?(?:(?:cubes?|blocks?|levels?)\s+)?"
@@ -2525,6 +2526,28 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\ba\s+(?:little|short|small)\s+way\s+(?:away\s+)?from\s+", re.I), "near "),
     (re.compile(r"\ba\s+(?:little|bit|tad)\s+(?=to\s+(?:its|the)\s+(?:left|right)\b|in\s+front\b|behind\b)",
                 re.I), ""),
+    # "then put a copy of it at the back", "do the same at the back left and back right":
+    # another one there (ignored: no structure named)
+    (re.compile(r"\b(put|place|make|build|add)\s+(?:a|an)\s+(?:copy|duplicate|replica|twin)\s+of\s+(?:it|that)\b",
+                re.I), r"\1 another one"),
+    (re.compile(r"\bdo\s+(?:the\s+)?same(?:\s+thing)?\s+((?:at|on|in)\s+the\s+" + _A_PLACE + r")"
+                r"(?:\s*,?\s+and\s+(?:(?:at|on|in)\s+)?(?:the\s+)?(" + _A_PLACE + r"))?", re.I),
+     lambda m: f"another one {m.group(1)}"
+     + (f" and another one at the {m.group(2)}" if m.group(2) else "")),
+    # "first a 4x4 slab, next a 3x3 on it, next a 2x2": then (said in turn)
+    (re.compile(r"(?<=[,;]\s)next\s+(?=(?:an?|one|\d+)\s)", re.I), "then "),
+    # "first a 4x4 slab, next a 3x3 on it, next a 2x2, and finish with one cube": the last of
+    # the levels stacked in turn goes on top too (the cube was left out)
+    (re.compile(r"\b(then\s+(?:an?|one)\s+(?:single\s+)?(?:cube|block|brick))\b(?=\s*(?:[.;!]|$))",
+                re.I),
+     lambda m: f"{m.group(1)} on top"
+     if re.search(r"\bon\s+(?:it|top)\b", m.string[: m.start()], re.I) else m.group(0)),
+    # "take 2 off the tall one and put them on the short one": two changes (the second was
+    # dropped, silently)
+    (re.compile(r"\b((?:take|knock|lift|remove)\s+(\d+|one|two|three|four|five)\s+(?:cubes?\s+)?(?:off|from)\s+"
+                r"the\s+\w+\s+(?:one|tower|stack|column))\s*,?\s+and\s+(?:then\s+)?(?:put|stack|place|add|set)\s+"
+                r"(?:them|those)\s+(?:on(?:to)?|to)\s+(?:the\s+top\s+of\s+)?(the\s+\w+\s+(?:one|tower|stack|"
+                r"column))\b", re.I), r"\1. then add \2 cubes to \3"),
     # "one of those long beams laid across the top": a beam across the top
     (re.compile(r"\bone\s+of\s+(?:those|these|the|your|them)\s+(?:(?:long|big|heavy|large)\s+)?"
                 r"(beam|plank|bar)s\b", re.I), r"a \1"),

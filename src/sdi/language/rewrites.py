@@ -2748,6 +2748,9 @@ def _another(text: str) -> str:
                 for w in said
                 if w in lx.PART_WORDS or (w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES)
             ]
+            if re.search(r"\d\s*(?:x|by)\s*\d+\s+blocks?\b|\bblocks?\s+\d+\s+(?:high|tall)\b",
+                         text[: m.start()], re.I):  # fmt: skip
+                return "another block"  # "a 2x2 block 3 high …, then put another one"
             if parts and parts[-1] in ("cube", "cubes", "block", "blocks", "brick", "bricks"):
                 return "another 1-cube tower"  # "a cube in each corner and 1 in the middle"
             return m.group(0)

@@ -110,6 +110,38 @@ def _more_about(
     p.count = 0
 
 
+def _continued(
+    p: Phrase, before: list[Phrase], structures: list[StructureDraft], st: ReadState,
+    joiner: str = " , ",
+) -> SpecDraft | None:
+    """The phrase read as more of the structure before it (`continues`): its structures read
+    again, keeping a size a change made to them since ("… then add two cubes to the middle one
+    … in the middle of the table": the change was lost)."""
+    said = {id(q): list(q.spec.structures) for q in before if q.spec is not None}
+    grown = continues(p, before, st.cell, joiner)
+    if grown is None:
+        return None
+    count, prev = grown
+    assert prev.spec is not None
+    now = list(prev.spec.structures)
+    held = structures[prev.first : prev.first + count]
+    restated = set(words_to_numbers(re.findall(r"\d+|[a-z]+", p.text.lower())))
+    for i, (was, built, again) in enumerate(zip(said[id(prev)], held, now, strict=False)):
+        # ("… Then revert back, I want the 6 only.": a size said again is the size)
+        changed = {key: getattr(built, key) for key in _CHANGEABLE
+                   if getattr(built, key, None) != getattr(was, key, None)
+                   and str(getattr(again, key, None)) not in restated}  # fmt: skip
+        if changed and again.shape == built.shape:
+            now[i] = again.model_copy(update=changed)
+    structures[prev.first : prev.first + count] = now
+    _carry_notes(prev.spec.notes, st)
+    return prev.spec
+
+
+_CHANGEABLE = ("height", "length", "width", "steps")
+"""The sizes a later change sets on a structure already read (`modify`)."""
+
+
 def _holding(phrases: list[Phrase], i: int) -> int | None:
     """The phrase that built structure `i`."""
     return next((j for j, q in enumerate(phrases) if q.count and q.first <= i < q.first + q.count),
@@ -183,21 +215,14 @@ def fill_slots(
                             "size it should have in the first place")  # fmt: skip
             continue
         if _COUNT_ONLY.match(p.text) and [q for q in phrases[:k] if q.spec is not None]:
-            grown = continues(p, phrases[:k], st.cell)  # "make a tower? 4 cubes?"
+            grown = _continued(p, phrases[:k], structures, st)  # "make a tower? 4 cubes?"
             if grown is not None:
-                before_count, prev = grown
-                assert prev.spec is not None
-                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
-                _carry_notes(prev.spec.notes, st)
                 continue
         if _COMPONENT.search(p.text) and _pillared(phrases[:k]):
-            grown = continues(p, phrases[:k], st.cell, " with ")  # "A bridge. Pillars of 3."
+            # "A bridge. Pillars of 3."
+            grown = _continued(p, phrases[:k], structures, st, " with ")
             if grown is not None:
-                before_count, prev = grown
-                assert prev.spec is not None
-                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
-                _carry_notes(prev.spec.notes, st)
-                st.notes.append(f"read '{p.text}' as the {prev.spec.structures[0].shape}'s own")
+                st.notes.append(f"read '{p.text}' as the {grown.structures[0].shape}'s own")
                 continue
         said_shapes = [w for w in re.findall(r"[a-z]+", p.text.lower()) if w in lx.SHAPE_WORDS]
         alone = not [q for q in phrases[:k] if q.spec is not None] and len(said_shapes) == 1
@@ -248,12 +273,8 @@ def fill_slots(
             spec, unused = _parse_or_base(p, st)
             spec = copies(spec, p.text, st, structures)
         except SpecError:
-            grown = continues(p, phrases[:k], st.cell)
+            grown = _continued(p, phrases[:k], structures, st)
             if grown is not None:
-                before_count, prev = grown
-                assert prev.spec is not None
-                structures[prev.first : prev.first + before_count] = list(prev.spec.structures)
-                _carry_notes(prev.spec.notes, st)
                 continue
             if not [q for q in phrases[:k] if q.spec is not None] and not is_chatter(p.text):
                 pending.append(p.text)
