@@ -9582,3 +9582,65 @@ def test_a_change_is_kept_when_a_later_sentence_places_the_structure():
     r = _built_as_said("three towers of 3 in a row, a cube apart, then add two cubes to the middle "
                        "one. In the middle of the table.", ["tower"] * 3, [3, 3, 5])  # fmt: skip
     assert [s.height for s in r.spec.structures] == [3, 5, 3]
+
+
+def test_structures_in_a_row_not_touching_build_no_row():
+    # "3 pyramids, in a row, not touching": a fourth structure, a default row, silently
+    for said in ("3 pyramids, in a row, not touching", "3 pyramids of 2 levels in a row, not "
+                 "touching"):  # fmt: skip
+        r = _built_as_said(said, ["pyramid"] * 3, None)
+        assert r.spec.gap_m == pytest.approx(0.05)
+
+
+def test_a_total_said_before_the_rows_that_make_it():
+    # "six cubes, two rows of 3": a row of 6 and a row of 3 (partial)
+    r = _built_as_said("six cubes, two rows of 3, a cube apart", ["row", "row"], [1] * 6)
+    assert "'6 cubes in total': holds, 6 parts" in r.notes
+
+
+def test_a_wall_between_them_sized_after_and_all_touching():
+    # "with a wall between them, 4 long 2 high, all touching": the sizes read as the towers',
+    # and 'all touching' dropped (gaps between), silently
+    r = _built_as_said("two towers of 6 with a wall between them, 4 long 2 high, all touching",
+                       ["tower", "tower", "wall"], [2] * 4 + [6, 6])  # fmt: skip
+    ys = sorted({y for (_, y) in _columns(r)})
+    assert [round(b - a, 3) for a, b in itertools.pairwise(ys)] == [0.05] * 5
+
+
+def test_line_up_and_a_lone_column():
+    # "Line up five towers of two": 'line' unused (partial); "a lone column": 'lone' unused
+    _built_as_said("Line up five towers of two, a cube apart, like toy soldiers.", ["tower"] * 5,
+                   [2] * 5)  # fmt: skip
+    _built_as_said("a lone column, seven cubes tall, toward the back", ["tower"], [7])
+
+
+def test_a_size_below_zero_said_with_its_dimension_is_refused():
+    # "a bridge with pillars -2 high": built 2 high, silently
+    for said in ("a bridge with pillars -2 high", "a tower -3 high"):
+        with pytest.raises(SpecError, match="below zero"):
+            read(said)
+    # a dash before a size is no minus
+    _built_as_said("The wall - 6 long, 2 high - build it at the front.", ["wall"], [2] * 6)
+
+
+def test_plain_words_for_an_l_a_bound_a_place_and_pens():
+    # "right, er, could I get an L shape, arms four long": on the right, 4 by 2, silently
+    r = _built_as_said("right, er, could I get an L shape, arms four long, flat on the table, "
+                       "thanks", ["l_shape"], None)  # fmt: skip
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (4, 4)
+    assert r.spec.structures[0].region is None
+    # "keep it under 10 cubes": a row of 10, silently
+    assert len(plan("surprise me, but keep it under 10 cubes").layout.objects) < 10
+    # "on the far side of the table from the robot": read as where the speaker stands
+    r = _built_as_said("a 3-step staircase on the far side of the table from the robot",
+                       ["staircase"], None)  # fmt: skip
+    assert r.spec.structures[0].region == "back"
+    # "three pens, one high: 3 by 3, 4 by 4 and 3 by 4": three pens 3 by 4
+    r = _built_as_said("three pens, one high: 3 by 3, 4 by 4 and 3 by 4", ["enclosure"] * 3, None)
+    assert [(s.length, s.width) for s in r.spec.structures] == [(3, 3), (4, 4), (3, 4)]
+
+
+def test_another_cube_on_it_and_another():
+    # "Put another cube on it. And another.": the third cube beside the first two, silently
+    r = plan("put a cube in the centre. Put another cube on it. And another.")
+    assert r.status == "success" and sorted(_columns(r).values()) == [3]

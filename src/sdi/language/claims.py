@@ -84,6 +84,11 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
                        r"(\d+)\b"),
         ("parts", _N + r"(?:expected\s*:\s*)?(\d+)\s+(?:parts|cubes|blocks)\s+(?:in\s+)?(?:total|"
                        r"in\s+all|altogether|overall)\b"),
+        # fewer parts than a bound: "keep it under 10 cubes"
+        ("under", _N + r"(?:but\s+)?(?:keep(?:ing)?\s+(?:it|them|everything)\s+|"
+                       r"(?:in|with|using)\s+)?(?:under|below|fewer\s+than|less\s+than)\s+" + _COUNT
+                       + r"\s+(?:cubes|blocks|parts|bricks)\b"
+                       r"(?!\s*(?:tall|high|long|wide|deep|in\s+height))"),
         # long structures running the same way
         ("parallel", _N + r"(?:(?:both|all|that\s+are|which\s+are|they\s+are)\s+)?parallel"
                            r"(?:\s+to\s+(?:each\s+other|one\s+another))?\b(?!\s+to\s+the\b)"),
@@ -212,7 +217,7 @@ def check(spec: Spec, st: ReadState) -> None:
         if kind == "result":
             _result(said, spec, st)
             continue
-        if kind == "parts":
+        if kind in ("parts", "under"):
             _total(said, spec, st)
             continue
         if _counted(said, spec) if kind == "count" else _holds(kind, spec):
@@ -293,14 +298,16 @@ def _parts(s: StructureSpec, st: ReadState) -> int | None:
 
 
 def _total(said: str, spec: Spec, st: ReadState) -> None:
-    """ "total part count 25": as many parts as the reading builds, where the families say."""
-    want = int(re.findall(r"\d+", said)[-1])
+    """ "total part count 25": as many parts as the reading builds, where the families say;
+    "keep it under 10 cubes": fewer than that."""
+    numbers = [w for w in words_to_numbers(re.findall(r"\d+|[a-z]+", said.lower())) if w.isdigit()]
+    want = int(numbers[-1])
     counts = [_parts(s, st) for s in spec.structures]
     if any(c is None for c in counts):
         st.notes.append(f"'{said}': not checked, a structure cannot be built as read")
         return
     got = sum(c for c in counts if c is not None)
-    if got == want:
+    if got == want or (re.search(r"\b(?:under|below|fewer|less)\b", said, re.I) and got < want):
         st.notes.append(f"'{said}': holds, {got} parts")
         return
     st.material.append(said)

@@ -572,6 +572,8 @@ def _not_touching(m: re.Match[str], st: ReadState, note: str) -> str:
         st.notes.append(f"'{said}': holds, the gap said keeps them apart")
         return " "
     st.notes.append(note.format(said))
+    if re.search(r"\bin\s+a\s+(?:row|line)\s*,?\s*$", m.string[: m.start()], re.I):
+        return " , spaced 5 cm apart "  # "3 pyramids, in a row, not touching": no row of its own
     return " spaced 5 cm apart "
 
 

@@ -669,6 +669,15 @@ def _blocks_listed(m: re.Match[str]) -> str:
     return ", ".join(blocks[:-1]) + " and " + blocks[-1]
 
 
+def _total_first(m: re.Match[str]) -> str:
+    """ "six cubes, two rows of 3": the rows, and the total said after them as a claim (when
+    the rows times their length make it); otherwise as it was."""
+    total, groups, each = words_to_numbers([m.group(k).lower() for k in (1, 3, 4)])
+    if not (total + groups + each).isdigit() or int(total) != int(groups) * int(each):
+        return m.group(0)
+    return f"{m.group(2)}, {total} cubes in total"
+
+
 def _rows_apart(m: re.Match[str]) -> str:
     """ "two rows of six, parallel, …", "two rows of three 10 cm apart": the rows one by one;
     two rows (not walls) said apart stand one behind the other, as rows do."""
@@ -2364,6 +2373,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(between\s+)(?:two|2)\s+(?:row|line)s\s+of\s+(\d+|two|three|four|five|six|seven|"
                 r"eight|nine|ten)(?:\s+(?:cubes|blocks|bricks))?(?:\s+each)?\b", re.I),
      r"\1a row of \2 and another row of \2"),
+    # "six cubes, two rows of 3, a cube apart": the total said first, then how (the 6 went to a
+    # row)
+    (re.compile(r"\b(\d+|four|six|eight|nine|ten|twelve)\s+(?:cubes|blocks|bricks)\s*[,:]\s*((two|three|four|"
+                r"[2-4])\s+(?:rows|lines|towers|stacks|columns|piles)\s+of\s+(\d+|two|three|four|five|six))\b",
+                re.I), _total_first),
     # "two rows of six, parallel, with one cube between them", "two rows of three side by side
     # one cube apart": separate rows, not one floor
     (re.compile(r"(?<!\bin\s)(?<!\binto\s)(?<!\bas\s)"  # not "six towers in two rows of three"
@@ -2548,6 +2562,48 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"the\s+\w+\s+(?:one|tower|stack|column))\s*,?\s+and\s+(?:then\s+)?(?:put|stack|place|add|set)\s+"
                 r"(?:them|those)\s+(?:on(?:to)?|to)\s+(?:the\s+top\s+of\s+)?(the\s+\w+\s+(?:one|tower|stack|"
                 r"column))\b", re.I), r"\1. then add \2 cubes to \3"),
+    # "3 pyramids of 2 levels in a row": the levels theirs, the row how they stand (a default
+    # row was built)
+    (re.compile(r"\b(\d+|one|two|three|four|five|six)\s+(levels?|layers?|steps?|tiers?|storeys?)\s+(?=in\s+a\s+"
+                r"(?:row|line)\b)", re.I), r"\1 \2, "),
+    # "a lone column, seven cubes tall": one column ('lone' was left unused)
+    (re.compile(r"\b(an?|one)\s+(?:lone|solitary|lonely)\s+(?=(?:column|tower|pillar|post|stack|wall|pyramid)\b)",
+                re.I), r"\1 "),
+    # "Line up five towers of two, a cube apart": five towers in a line
+    (re.compile(r"\bline\s+up\s+((?:\d+|two|three|four|five|six|seven|eight)\s+[a-z]+s\b[^,.;]*?)(?=\s*(?:[,.;]|$))",
+                re.I), r"\1 in a line"),
+    # "two towers of 6 with a wall between them, 4 long 2 high": the sizes the wall's (they
+    # were read as the towers')
+    (re.compile(r"\b(an?\s+(?:wall|row|block|slab|pyramid|staircase))\s+(between\s+them)\s*,\s*((?:\d+|two|three|"
+                r"four|five|six)\s+(?:long|high|tall|wide|deep)(?:\s*,?\s*(?:and\s+)?(?:\d+|two|three|four|five|"
+                r"six)\s+(?:long|high|tall|wide|deep)){0,2})", re.I), r"\1 \3 \2"),
+    # "and an identical bridge 2 cubes to the right of it": another bridge the same
+    (re.compile(r"\b(?:an?\s+)(?:identical|matching)\s+(?=(?:bridge|tower|wall|row|block|slab|pyramid|staircase|"
+                r"arch|ring|castle)\b)", re.I), "another "),
+    # "…, all touching": touching (it was dropped, silently)
+    # (not "4 rows of 4 cubes, all touching": one floor)
+    (re.compile(r"\b(?:all|both|each)\s+(?:of\s+them\s+)?(?=touching\b)", re.I),
+     lambda m: m.group(0)
+     if re.search(r"\b(?:rows|lines)\s+of\b|\bcubes\b", m.string[: m.start()], re.I) else ""),
+    # "an L shape, arms four long": both arms that long (the other was 2)
+    (re.compile(r"(?<!\bboth\s)(?<!\beach\s)(?<!\btwo\s)\barms\s+(?=(?:\d+|one|two|three|four|five|six|seven|"
+                r"eight)\s+(?:cubes?\s+)?long\b)", re.I),
+     lambda m: "both arms " if re.search(r"(?-i:\bL\b)|\bl[\s-]shape", m.string[: m.start()], re.I)
+     else m.group(0)),
+    # "right, er, could I get an L shape …": a word to start with, not the right-hand side
+    (re.compile(r"^\s*right\s*[,!]\s*(?:(?:er|erm|um|uh|so|then)\s*,?\s*)?(?=\S)", re.I), ""),
+    # "three pens, one high: 3 by 3, 4 by 4 and 3 by 4": the shared size after the list (all
+    # three were built 3 by 4)
+    (re.compile(r"\b((?:two|three|four|[2-4])\s+[a-z]+s)\s*,\s*((?:\d+|one|two|three|four|five)\s+(?:cubes?\s+)?"
+                r"(?:high|tall))\s*:\s*([^.;:]+?)(?=\s*(?:[.;]|$))", re.I), r"\1: \3, all \2"),
+    # "on the far side of the table from the robot": at the back (read as where the speaker
+    # stands, across from the robot)
+    (re.compile(r"\b(?:on|at|to)\s+the\s+(far|near)\s+side\s+of\s+the\s+(?:table|workspace|cell|bench)\s+from\s+"
+                r"the\s+robot\b", re.I),
+     lambda m: m.group(0)  # "I'm on the far side of the table from the robot": the speaker
+     if re.search(r"\b(?:i'?m|i\s+am|we'?re|we\s+are|stand(?:s|ing)?|sit(?:s|ting)?|am|is|are)\s*$",
+                  m.string[: m.start()], re.I)
+     else "at the back" if m.group(1).lower() == "far" else "at the front"),
     # "one of those long beams laid across the top": a beam across the top
     (re.compile(r"\bone\s+of\s+(?:those|these|the|your|them)\s+(?:(?:long|big|heavy|large)\s+)?"
                 r"(beam|plank|bar)s\b", re.I), r"a \1"),

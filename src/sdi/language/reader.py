@@ -119,6 +119,9 @@ def _placed_by_face(specs: list[StructureSpec], st: ReadState) -> list[Structure
 # "a wall of length −3", "height: -2 cubes": a size below zero (read as 3, silently); not a
 # coordinate ("y = -0.1"), a range ("3-4") or a dash ("tower - 3 high")
 _NEGATIVE_SIZE = re.compile(
+    # "a bridge with pillars -2 high": a size below zero said with its dimension
+    # (not a dash before a size: "The wall - 6 long", "- 2 high" in a list)
+    r"(?<![\w.])[−-]\d+(?:\.\d+)?\s*(?:cubes?\s+)?(?:high|tall|long|wide|deep|levels?|layers?|steps?)\b|"
     r"\b(?:(?:length|height|width|depth|size|levels?|steps?|count)\s*(?:of|is|=|:)?|of|"
     r"(?:high|long|wide|tall)\s*[:=])\s*[−-]\s?\d+(?:\.\d+)?(?=\s*(?:cubes?|blocks?|parts?|mm|cm|m|"
     r"high|long|wide|tall|levels?|steps?)?\s*(?:[.,;!?]|$))",
@@ -728,7 +731,7 @@ def _ordered(
 
 
 _ONE_MORE = re.compile(
-    r"^[\s,]*(?:and\s+)*(?:then\s+)?(?:one\s+more|another|a\s+third|one\s+again)(?:\s+[a-z]+)?"
+    r"^[\s,]*(?:and\s+)*(?:then\s+)?(?:one\s+more|another|a\s+third|one\s+again)(?:\s+1-cube)?(?:\s+[a-z]+)?"
     r"(?:\s+(?:time|too|again))?[\s.!,]*$",
     re.IGNORECASE,
 )
@@ -746,7 +749,10 @@ def _stacking_on(
         if p.count != 1 or k in subject_of or k < 2 or not _ONE_MORE.match(p.text.strip()):
             continue
         below = subject_of.get(k - 1)
-        same = drafts[k].shape == drafts[k - 1].shape
+        same = drafts[k].shape == drafts[k - 1].shape or all(
+            (d.shape == "tower" and d.height == 1) or (d.shape == "row" and d.length == 1)
+            for d in drafts[k - 1 : k + 1]
+        )  # "Put another cube on it. And another.": a cube like the one before
         if below is None or below.kind != "on_top_of" or below.at is not None or not same:
             continue
         rel = Relation(kind="on_top_of", subject=k, object=k - 1)
