@@ -5049,14 +5049,14 @@ def test_probe_misreadings_of_plain_commands():
 def test_the_middle_one_changed_is_reported_and_members_placed_by_coordinates():
     # "make the middle one taller by 2" changed the last tower, silently; of an odd number of
     # towers named together the middle one is the middle of the order they stand in; with two
-    # there is none, and a value set ("make the middle one 6") is reported
+    # there is none
     r = plan("three towers of 3. make the middle one taller by 2")
     assert r.status == "success" and [s.height for s in r.spec.structures] == [3, 5, 3]
-    for command in ("a tower of 2, a tower of 3 and a tower of 4, then make the middle one 6",
-                    "two towers of 3, then make the middle one 5"):  # fmt: skip
-        r = plan(command)
-        assert r.status == "partial", command
-        assert all(s.region is None for s in r.spec.structures)  # "middle" was a place
+    r = plan("a tower of 2, a tower of 3 and a tower of 4, then make the middle one 6")
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 6, 4]
+    r = plan("two towers of 3, then make the middle one 5")
+    assert r.status == "partial"
+    assert all(s.region is None for s in r.spec.structures)  # "middle" was a place
     # "one at y = 0.15 and the other at y = 0.45": the decimal point ended the list
     r = plan("two towers of 3, one at y = 0.15 and the other at y = 0.45")
     assert r.status == "success"
@@ -5611,9 +5611,10 @@ def test_a_side_and_the_gap_said_again():
 
 
 def test_changes_that_cannot_be_made_are_reported_not_built_beside():
-    # "make the middle tower 5": a fourth tower in the middle, silently
+    # "make the middle tower 5": a fourth tower in the middle, silently (now the middle one of
+    # the three as they stand, in the order named)
     r = plan("make 3 towers of 2. make the middle tower 5")
-    assert r.status == "partial" and [s.height for s in r.spec.structures] == [2, 2, 2]
+    assert r.status == "success" and [s.height for s in r.spec.structures] == [2, 5, 2]
     # "a tower of 3, then make it 4x4": a 4 by 4 slab beside the tower, silently
     r = plan("a tower of 3, then make it 4x4")
     assert r.status == "partial" and [s.shape for s in r.spec.structures] == ["tower"]
@@ -9644,3 +9645,26 @@ def test_another_cube_on_it_and_another():
     # "Put another cube on it. And another.": the third cube beside the first two, silently
     r = plan("put a cube in the centre. Put another cube on it. And another.")
     assert r.status == "success" and sorted(_columns(r).values()) == [3]
+
+
+def test_a_cube_underneath_a_table_a_pillar_in_a_courtyard_and_one_more_than_that():
+    # "and, underneath it, a single cube": set on top of the table, silently
+    assert plan("a table with legs 2 high and, underneath it, a single cube").status != "success"
+    # "a pillar right in the middle of its courtyard": the pillar dropped, silently
+    r = _built_as_said("a castle with a 3-high pillar right in the middle of its courtyard",
+                       ["castle", "tower"], None)  # fmt: skip
+    assert [rel.kind for rel in r.spec.relations] == ["around"]
+    # "one tower of one more than that": a third tower, all 2 high
+    _built_as_said("one tower of 2, and one tower of one more than that, not touching",
+                   ["tower", "tower"], [2, 3])  # fmt: skip
+
+
+def test_a_bridge_high_overall_and_a_bench_on_two_legs():
+    # "a bridge 4 high overall": posts 4 high, the bridge 5, silently
+    r = _built_as_said("a gate 4 high overall with a beam on top", ["bridge"], None)
+    top = max(o.position[2] + o.size[2] / 2 for o in r.layout.objects)
+    assert top == pytest.approx(0.2)
+    # "a bench with legs of two and a beam": a table on four legs with a roof of beams
+    r = _built_as_said("Build a bench with legs of two and a beam. Then make the legs 3 tall",
+                       ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 3 and "read 'bench' as 'bridge'" in r.notes

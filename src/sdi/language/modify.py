@@ -930,12 +930,12 @@ def _middle_of_line(m: re.Match[str], op: str, built: list[Phrase],
     said = m.group(1) if m.groups() and m.group(1) else "1"
     said = "1" if said.lower() in ("a", "an", "another", "one more") else said
     n = 1 if op in ("+1", "-1") else words_to_numbers([said.lower()])[0]
-    if pick is None or op not in ("+", "-", "+1", "-1", "=") or not str(n).isdigit():
+    if pick is None or op not in ("+", "-", "+1", "-1", "=", "=main") or not str(n).isdigit():
         return None
     was = structures[pick].height
     if was is None:
         return None
-    now = {"=": int(n), "-": was - int(n), "-1": was - 1}.get(op, was + int(n))
+    now = {"=": int(n), "=main": int(n), "-": was - int(n), "-1": was - 1}.get(op, was + int(n))
     if now < 1:
         return None
     structures[pick] = structures[pick].model_copy(update={"height": now})

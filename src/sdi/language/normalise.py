@@ -678,6 +678,21 @@ def _total_first(m: re.Match[str]) -> str:
     return f"{m.group(2)}, {total} cubes in total"
 
 
+def _more_than_that(m: re.Match[str]) -> str:
+    """ "one tower of 2, and one tower of one more than that": the size said before, plus (or
+    less) that many; as it was when no size was said before."""
+    said = re.findall(r"\bof\s+(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b",
+                      m.string[: m.start()], re.I)  # fmt: skip
+    if not said:
+        return m.group(0)
+    values = words_to_numbers([said[-1].lower(), m.group(1).lower()])
+    if not all(v.isdigit() for v in values):
+        return m.group(0)
+    was, by = (int(v) for v in values)
+    now = was + by if m.group(2).lower() == "more" else was - by
+    return f"of {now}" if now >= 1 else m.group(0)
+
+
 def _rows_apart(m: re.Match[str]) -> str:
     """ "two rows of six, parallel, …", "two rows of three 10 cm apart": the rows one by one;
     two rows (not walls) said apart stand one behind the other, as rows do."""
@@ -2604,6 +2619,20 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      if re.search(r"\b(?:i'?m|i\s+am|we'?re|we\s+are|stand(?:s|ing)?|sit(?:s|ting)?|am|is|are)\s*$",
                   m.string[: m.start()], re.I)
      else "at the back" if m.group(1).lower() == "far" else "at the front"),
+    # "a table with legs 2 high and, underneath it, a single cube": the cube under it (it was
+    # set on top, silently)
+    (re.compile(r"\b(and\s*,?\s*)(underneath|beneath|under|below)\s+(it|them|the\s+\w+)\s*,?\s*((?:an?|one)\s+"
+                r"(?:single\s+)?[\w-]+(?:\s+[\w-]+)?)(?=\s*(?:[.;,]|$))", re.I), r"\1\4 \2 \3"),
+    # "a castle with a pillar right in the middle of its courtyard": in its middle (the pillar
+    # was dropped, silently)
+    (re.compile(r"\b(?:right\s+)?in\s+the\s+(?:middle|centre|center)\s+of\s+(?:its|the)\s+(?:courtyard|yard|court|"
+                r"inside|interior|inner\s+space)\b", re.I), "in the middle"),
+    # "one tower of 2, and one tower of one more than that": of 3 (a third tower was built)
+    (re.compile(r"\bof\s+(one|two|three|four|\d+)\s+(more|fewer|less)\s+than\s+(?:that|the\s+first(?:\s+one)?)\b",
+                re.I), _more_than_that),
+    # "make the middle one 6 and the two outside ones 2": two changes, each its own
+    (re.compile(r"\b(make\s+the\s+[a-z]+\s+(?:one|ones|tower|towers)\s+(?:\d+|[a-z]+)(?:\s+(?:high|tall))?)\s*,?\s+"
+                r"and\s+(?=the\s+)", re.I), r"\1. then make "),
     # "one of those long beams laid across the top": a beam across the top
     (re.compile(r"\bone\s+of\s+(?:those|these|the|your|them)\s+(?:(?:long|big|heavy|large)\s+)?"
                 r"(beam|plank|bar)s\b", re.I), r"a \1"),
@@ -3644,6 +3673,10 @@ def _dimensioned(m: re.Match[str]) -> str:
 
 
 _SAID_LOOSELY = [
+    # "a bench with legs of two and a beam": two legs and a beam across them, a bridge (a table
+    # has four legs and a roof of beams)
+    (re.compile(r"\b(bench|seat)\b(?=[^.;]*\blegs?\b[^.;]*\b(?:a|one|the)\s+(?:single\s+)?(?:beam|plank)\b)"
+                r"(?![^.;]*\b(?:four|4)\s+legs\b)", re.I), "bridge"),
     # "two towers of 3 far apart": "far" was the back of the table and the gap one cube
     (re.compile(r"\b(?:far|wide|well|a\s+(?:good|long)\s+way)\s+apart\b", re.I),
      "3 cubes apart"),

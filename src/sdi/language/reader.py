@@ -252,6 +252,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     specs = [_arch_overall(s, command, cell.cube[2], st) for s in specs]
+    specs = [_bridge_overall(s, command, st) for s in specs]
     specs = _placed_by_face(specs, st)
     for s in specs:
         if s.shape in ("t_shape", "cross") and s.length and s.length % 2 == 0:
@@ -878,6 +879,30 @@ _LEG_WORDS = re.compile(
     r"\b(?:legs?|pillars?|posts?|columns?|feet|foot|supports?|piers?|sides?|uprights?|jambs?)\b",
     re.IGNORECASE,
 )
+
+
+_OVERALL = re.compile(
+    r"\b(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?(?:high|tall)\s+(?:overall|in\s+total|"
+    r"altogether|all\s+told|including\s+the\s+(?:beam|top))\b",
+    re.IGNORECASE,
+)
+
+
+def _bridge_overall(s: StructureSpec, command: str, st: ReadState) -> StructureSpec:
+    """A bridge "4 high overall" is 4 high with its beam: posts one lower (they were 4 high,
+    the bridge 5, silently)."""
+    m = _OVERALL.search(command)
+    if s.shape != "bridge" or m is None or _LEG_WORDS.search(command[: m.start()][-40:]):
+        return s
+    said = int(words_to_numbers([m.group(1).lower()])[0])
+    if s.height != said:
+        return s
+    if said < 2:
+        st.material.append(m.group(0))
+        st.notes.append(f"ignored '{m.group(0)}': a bridge is at least 2 high (posts and a beam)")
+        return s
+    st.notes.append(f"read '{m.group(0)}' as the whole bridge: posts {said - 1} high and the beam")
+    return s.model_copy(update={"height": said - 1})
 
 
 def _arch_overall(s: StructureSpec, command: str, level_m: float, st: ReadState) -> StructureSpec:

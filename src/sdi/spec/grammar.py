@@ -1513,7 +1513,9 @@ class _Parser:
         ):
             p["height"] = 1  # "stack another cube on it": one cube, not a default tower
         legs = p.pop("_legs", None)
-        if legs is not None and not (shape == "canopy" and legs == 4):
+        if legs is not None and not (shape == "canopy" and legs == 4) and not (
+            shape in ("bridge", "arch") and legs == 2  # "a bench: two legs and a beam on top"
+        ):
             self.notes.append(
                 f"ignored '{legs} legs': a {shape} has "
                 + ("four legs" if shape == "canopy" else "no legs to count")
