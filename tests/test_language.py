@@ -9668,3 +9668,17 @@ def test_a_bridge_high_overall_and_a_bench_on_two_legs():
     r = _built_as_said("Build a bench with legs of two and a beam. Then make the legs 3 tall",
                        ["bridge"], None)  # fmt: skip
     assert r.spec.structures[0].height == 3 and "read 'bench' as 'bridge'" in r.notes
+
+
+def test_one_more_on_top_the_same_on_the_right_a_wide_pillar_and_hang_on():
+    # "a stack of five, and then one more on top": 'on' related nothing (partial)
+    _built_as_said("a stack of five, and then one more on top", ["tower"], [6])
+    # "… on the left. and the same on the right.": nothing on the right (partial)
+    r = _built_as_said("a tower of 5 on the left. and the same on the right.", ["tower", "tower"],
+                       [5, 5])  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["left", "right"]
+    # "a pillar 2 cubes wide and 2 deep, 3 high": a tower, its width ignored
+    _built_as_said("a pillar 2 cubes wide and 2 deep, 3 high", ["block"], [3] * 4)
+    # "hang on, make it 6 by 4": 'hang' unused (partial)
+    r = _built_as_said("a pen 5 by 4 one cube high - hang on, make it 6 by 4", ["enclosure"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (6, 4)

@@ -2633,6 +2633,23 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "make the middle one 6 and the two outside ones 2": two changes, each its own
     (re.compile(r"\b(make\s+the\s+[a-z]+\s+(?:one|ones|tower|towers)\s+(?:\d+|[a-z]+)(?:\s+(?:high|tall))?)\s*,?\s+"
                 r"and\s+(?=the\s+)", re.I), r"\1. then make "),
+    # "a stack of five, and then one more on top": one more cube on it
+    (re.compile(r",?\s*\b(?:and\s+)?then\s+one\s+more\s+on\s+top\b(?!\s+of\b)", re.I),
+     lambda m: ", then add one more cube on top"
+     if (families_said(m.string[: m.start()]) or ["row"])[-1] == "tower" else m.group(0)),
+    # "a tower of 5 on the left. and the same on the right.": another one there
+    (re.compile(r"(?<!\bone\s)\b(?:and\s+)?the\s+same\s+(?:one\s+|again\s+)?((?:on|at|in)\s+the\s+"
+                + _A_PLACE + r")\b", re.I),
+     lambda m: f"another one {m.group(1)}" if families_said(m.string[: m.start()])
+     else m.group(0)),
+    # "a pillar 2 cubes wide and 2 deep, 3 high": a block that wide and deep (a tower one
+    # cube across, the width ignored)
+    (re.compile(r"\b(?:an?\s+)?(?:pillar|column|tower|post|stack)\s+(\d+|two|three|four)\s+"
+                r"(?:cubes?\s+)?wide\s*(?:,|and|by|x)?\s*(\d+|two|three|four)\s+(?:cubes?\s+)?deep\b",
+                re.I),
+     r"a \1 by \2 block"),
+    # "hang on, make it 6 by 4": a correction said as a pause
+    (re.compile(r"\bhang\s+on\b", re.I), "wait"),
     # "one of those long beams laid across the top": a beam across the top
     (re.compile(r"\bone\s+of\s+(?:those|these|the|your|them)\s+(?:(?:long|big|heavy|large)\s+)?"
                 r"(beam|plank|bar)s\b", re.I), r"a \1"),
