@@ -511,3 +511,15 @@ def test_no_nan_sneaks_through_the_cell_loader(tmp_path):
             numbers = json.dumps(cell.model_dump())
             assert "NaN" not in numbers and "Infinity" not in numbers
             assert all(math.isfinite(v) for v in cell.workspace.lower + cell.workspace.upper)
+
+
+def test_edits_nested_a_few_hundred_deep_are_bad_input(tmp_path):
+    """300 levels pass the JSON parser and failed in the run's checkpoint writer (a TypeError
+    the fuzz found): refused as too deep, the run left as it was."""
+    db = tmp_path / "runs.sqlite"
+    db.write_bytes(_paused_run_db())
+    edits = tmp_path / "edits.json"
+    edits.write_text('{"objects":' * 300 + "[]" + "}" * 300)
+    result = CliRunner().invoke(cli.app, ["resume", "r1", "--db", str(db), "--edit", str(edits)])
+    assert result.exit_code == 2 and isinstance(result.exception, SystemExit)
+    assert "nested too deeply to be edits" in result.output

@@ -220,9 +220,24 @@ def _read_edits(path: Path) -> Any:
         raise InputError(f"{path} is nested too deeply to be edits", field="edits") from None
     try:
         _plain_numbers(edits, "", path)
+        deep = _depth(edits) > _EDITS_DEPTH
     except RecursionError:
+        deep = True
+    if deep:  # a few hundred levels pass the parser and fail in the run's checkpoint writer
         raise InputError(f"{path} is nested too deeply to be edits", field="edits") from None
     return edits
+
+
+_EDITS_DEPTH = 16
+"""Edits are a list of flat objects with short lists in them: deeper JSON is no edits."""
+
+
+def _depth(value: object) -> int:
+    if isinstance(value, dict):
+        return 1 + max((_depth(v) for v in value.values()), default=0)
+    if isinstance(value, list):
+        return 1 + max((_depth(v) for v in value), default=0)
+    return 0
 
 
 ForceOption = Annotated[

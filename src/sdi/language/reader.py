@@ -923,9 +923,8 @@ def _arch_overall(s: StructureSpec, command: str, level_m: float, st: ReadState)
         st.notes.append(f"an arch is at least {above + 1} high (1-cube legs, {above - 1} corbel "
                         f"levels and the beam): read {words} as its legs, {said + above} "
                         "high overall")  # fmt: skip
-        # an arch that high cannot be built: what is built is higher than said, never a
-        # silent success
-        st.material.append(f"{words} overall")
+        if re.search(r"\b(?:in\s+total|overall|altogether|all\s+together|total)\b", command, re.I):
+            st.material.append(f"{words} overall")  # said of the whole arch: not what is built
         return s
     st.notes.append(f"read the arch's {words} as its overall height: legs {said - above} "
                     f"high, {above - 1} corbel levels and the beam")  # fmt: skip
