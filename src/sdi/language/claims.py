@@ -301,6 +301,8 @@ def _total(said: str, spec: Spec, st: ReadState) -> None:
     """ "total part count 25": as many parts as the reading builds, where the families say;
     "keep it under 10 cubes": fewer than that."""
     numbers = [w for w in words_to_numbers(re.findall(r"\d+|[a-z]+", said.lower())) if w.isdigit()]
+    if not numbers:
+        return
     want = int(numbers[-1])
     counts = [_parts(s, st) for s in spec.structures]
     if any(c is None for c in counts):

@@ -894,7 +894,7 @@ def _as_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
     several (picked by its size, or by the order they were named in) as high as another."""
     towers = _tower_heights(built, structures)
     pick, like = (_which_tower(m.group(k).lower(), towers) for k in (1, 2))
-    if pick is None or like is None or pick == like:
+    if pick is None or like is None or pick == like or structures[like].height is None:
         return None
     was, now = structures[pick].height, structures[like].height
     structures[pick] = structures[pick].model_copy(update={"height": now})
