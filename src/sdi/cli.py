@@ -173,9 +173,17 @@ def _arms(arms: str | None, cell: CellConfig, as_json: bool) -> list[str] | None
     return names
 
 
-def _plain_numbers(value: Any, where: str, path: Path) -> None:
+_EDITS_DEPTH = 16
+"""Edits are a list of flat objects with short lists in them: deeper JSON is no edits."""
+
+
+def _plain_numbers(value: Any, where: str, path: Path, depth: int = 0) -> None:
     """Every number in an edits file is finite and fits 64 bits (a run's state is stored as
-    MessagePack, which has no larger integers): else bad input naming where it is."""
+    MessagePack, which has no larger integers), and the file is no deeper than edits are (a few
+    hundred levels pass the parser and fail in the run's checkpoint writer): else bad input
+    naming where it is."""
+    if isinstance(value, dict | list) and depth >= _EDITS_DEPTH:
+        raise InputError(f"{path} is nested too deeply to be edits", field="edits")
     if isinstance(value, bool):
         return
     if isinstance(value, int) and not -(2**63) <= value < 2**64:
@@ -190,10 +198,10 @@ def _plain_numbers(value: Any, where: str, path: Path) -> None:
         )
     if isinstance(value, dict):
         for key, item in value.items():
-            _plain_numbers(item, f"{where}.{key}" if where else str(key), path)
+            _plain_numbers(item, f"{where}.{key}" if where else str(key), path, depth + 1)
     elif isinstance(value, list):
         for k, item in enumerate(value):
-            _plain_numbers(item, f"{where}[{k}]" if where else f"edits[{k}]", path)
+            _plain_numbers(item, f"{where}[{k}]" if where else f"edits[{k}]", path, depth + 1)
 
 
 def _read_edits(path: Path) -> Any:
@@ -218,26 +226,8 @@ def _read_edits(path: Path) -> Any:
         ) from None
     except RecursionError:
         raise InputError(f"{path} is nested too deeply to be edits", field="edits") from None
-    try:
-        _plain_numbers(edits, "", path)
-        deep = _depth(edits) > _EDITS_DEPTH
-    except RecursionError:
-        deep = True
-    if deep:  # a few hundred levels pass the parser and fail in the run's checkpoint writer
-        raise InputError(f"{path} is nested too deeply to be edits", field="edits") from None
+    _plain_numbers(edits, "", path)
     return edits
-
-
-_EDITS_DEPTH = 16
-"""Edits are a list of flat objects with short lists in them: deeper JSON is no edits."""
-
-
-def _depth(value: object) -> int:
-    if isinstance(value, dict):
-        return 1 + max((_depth(v) for v in value.values()), default=0)
-    if isinstance(value, list):
-        return 1 + max((_depth(v) for v in value), default=0)
-    return 0
 
 
 ForceOption = Annotated[

@@ -901,6 +901,13 @@ def _as_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
     return f"the {m.group(1).lower()} tower now has height {now} (was {was})"
 
 
+_APPLY: dict[str, Callable[[int, int], int]] = {
+    "+": lambda v, n: v + n, "-": lambda v, n: v - n, "=": lambda v, n: n,
+    "*": lambda v, n: v * n, "/": lambda v, n: v // n,
+}  # fmt: skip
+"""A size `v` changed by a number `n`: more, fewer, set to it, times, divided."""
+
+
 def _on_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
             built: list[Phrase], structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "three towers of 2, 4 and 6, then take 3 off the tall one": that one tower changed."""
@@ -910,7 +917,7 @@ def _on_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
     if pick is None or not n.isdigit() or structures[pick].height is None:
         return None
     was = structures[pick].height or 0
-    now = was - int(n) if op == "-one" else was + int(n)
+    now = _APPLY["-" if op == "-one" else "+"](was, int(n))
     if now < 1:
         return None
     structures[pick] = structures[pick].model_copy(update={"height": now})
@@ -935,7 +942,7 @@ def _middle_of_line(m: re.Match[str], op: str, built: list[Phrase],
     was = structures[pick].height
     if was is None:
         return None
-    now = {"=": int(n), "=main": int(n), "-": was - int(n), "-1": was - 1}.get(op, was + int(n))
+    now = _APPLY[{"+1": "+", "-1": "-", "=main": "="}.get(op, op)](was, int(n))
     if now < 1:
         return None
     structures[pick] = structures[pick].model_copy(update={"height": now})
@@ -1168,11 +1175,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     now = said or unsaid.get(last.shape, 3)
     if op == "/" and now % n:
         return None
-    ops: dict[str, Callable[[int], int]] = {
-        "+": lambda v: v + n, "-": lambda v: v - n, "=": lambda v: n,
-        "*": lambda v: v * n, "/": lambda v: v // n,
-    }  # fmt: skip
-    new = ops[op](now)
+    new = _APPLY[op](now, n)
     if new < 1:
         return None
     shape = last.shape
@@ -1192,7 +1195,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             (getattr(structures[i], key) if i != index else now) or unsaid.get(last.shape, 3)
             for i in alike
         ]
-        got = [ops[op](v) for v in were]
+        got = [_APPLY[op](v, n) for v in were]
         if min(got) < 1 or (op == "/" and any(v % n for v in were)):
             structures[index] = last
             return None

@@ -62,6 +62,7 @@ from sdi.language.markers import find_phrases
 from sdi.language.normalise import courtesy, normalise
 from sdi.language.nouns import STRUCTURE_PLURALS, shape_alternation
 from sdi.language.reading import Reading
+from sdi.language.references import one_cube
 from sdi.language.rewrites import outline_corners, rewrite
 from sdi.language.slots import fill_slots
 from sdi.language.state import Phrase, ReadState
@@ -751,8 +752,7 @@ def _stacking_on(
             continue
         below = subject_of.get(k - 1)
         same = drafts[k].shape == drafts[k - 1].shape or all(
-            (d.shape == "tower" and d.height == 1) or (d.shape == "row" and d.length == 1)
-            for d in drafts[k - 1 : k + 1]
+            one_cube(d) for d in drafts[k - 1 : k + 1]
         )  # "Put another cube on it. And another.": a cube like the one before
         if below is None or below.kind != "on_top_of" or below.at is not None or not same:
             continue

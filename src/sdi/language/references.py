@@ -296,10 +296,7 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
             # "the cube": the structure of one part named before
             for j in reversed(built):
                 spec = before[resolve(before, j)].spec
-                if spec is not None and any(
-                    (s.shape == "tower" and s.height == 1) or (s.shape == "row" and s.length == 1)
-                    for s in spec.structures
-                ):
+                if spec is not None and any(one_cube(s) for s in spec.structures):
                     return resolve(before, j)
             return None
         family = lx.SHAPE_WORDS.get(noun)
@@ -321,6 +318,11 @@ _PICK = re.compile(
     + r"))?$",
     re.IGNORECASE,
 )
+
+
+def one_cube(s: StructureDraft) -> bool:
+    """A structure of one part: a tower one high or a row one long."""
+    return (s.shape == "tower" and s.height == 1) or (s.shape == "row" and s.length == 1)
 
 
 def pick_structure(text: str, structures: list[StructureDraft], among: list[int]) -> int | None:
