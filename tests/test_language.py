@@ -9676,3 +9676,198 @@ def test_one_more_on_top_the_same_on_the_right_a_wide_pillar_and_hang_on():
     # "hang on, make it 6 by 4": 'hang' unused (partial)
     r = _built_as_said("a pen 5 by 4 one cube high - hang on, make it 6 by 4", ["enclosure"], None)
     assert (r.spec.structures[0].length, r.spec.structures[0].width) == (6, 4)
+
+
+def _inside_ring(r):
+    """The column heights standing strictly inside the layout's outline, and the parts on it."""
+    pos = [(round(o.position[0], 3), round(o.position[1], 3)) for o in r.layout.objects]
+    x0, x1 = min(x for x, _ in pos), max(x for x, _ in pos)
+    y0, y1 = min(y for _, y in pos), max(y for _, y in pos)
+    outline = [(x, y) for x, y in pos if x in (x0, x1) or y in (y0, y1)]
+    inner: dict[tuple[float, float], int] = {}
+    for x, y in pos:
+        if x0 < x < x1 and y0 < y < y1:
+            inner[(x, y)] = inner.get((x, y), 0) + 1
+    return sorted(inner.values()), len(outline)
+
+
+def test_several_structures_inside_one_ring():
+    # "a ring 6 by 6 with two towers of 2 inside it": one inside, the other outside, silently
+    for command, heights, ring in (
+        ("a ring 6 by 6 with two towers of 2 inside it", [2, 2], 20),
+        ("Could you surround a tower of 6 and a tower of 2 with one ring?", [2, 6], None),
+        ("Make one ring 7 by 7 and inside put four towers: heights 1, 2, 3 and 4.", [1, 2, 3, 4],
+         24),
+        ("Ring 7 by 7, one high, and two towers of 3 inside it, not touching anything.", [3, 3],
+         24),
+    ):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        assert [s.shape for s in r.spec.structures].count("enclosure") == 1
+        inner, outline = _inside_ring(r)
+        assert inner == heights, command
+        assert outline == (ring or len(r.layout.objects) - sum(heights)), command
+    # the ring 7 by 7 is 7 by 7 (its inside was read as 7 by 7: a ring 9 by 9)
+    r = plan("Make one ring 7 by 7 and inside put four towers: heights 1, 2, 3 and 4.")
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (7, 7)
+    # three cubes in a row inside it: a row of 3 (the row after 'inside it' was one of 5)
+    r = _built_as_said("Build an enclosure 9 cubes by 5 cubes and put three single cubes inside "
+                       "it in a row.", ["enclosure", "row"], None)  # fmt: skip
+    assert r.spec.structures[1].length == 3
+    r = _built_as_said("enclosure 8x6, one high. inside: row of 4, centred.", ["enclosure", "row"],
+                       None)  # fmt: skip
+    assert [rel.kind for rel in r.spec.relations] == ["around"]
+
+
+def test_walls_with_heights_listed_and_walls_forming_a_corner():
+    # "three walls 4 long, heights 1, 2 and 3": walls 1, 2 and 3 long, 2 high, silently
+    for command in ("three walls 4 long, heights 1, 2 and 3, one behind another, 1 cube apart, "
+                    "the tallest at the back",
+                    "three walls, each 4 long, with heights of 1, 2 and 3",
+                    "three walls 4 long, 1, 2 and 3 high"):  # fmt: skip
+        r = _built_as_said(command, ["wall"] * 3, None)
+        assert [(s.length, s.height) for s in r.spec.structures] == [(4, 1), (4, 2), (4, 3)]
+    # "two walls forming a corner, each 4 long, 2 high": an L whose arms are 4 long
+    r = _built_as_said("two walls forming a corner, each 4 long, 2 high", ["l_shape"], None)
+    s = r.spec.structures[0]
+    assert (s.length, s.width, s.height) == (4, 4, 2)
+
+
+def test_a_row_of_cubes_counted_after_and_a_podium_given_a_footprint():
+    # "a row of cubes, not a tower, five of them": five rows of 5, silently
+    r = _built_as_said("a row of cubes, not a tower, five of them", ["row"], [1] * 5)
+    # "a podium 2 by 2, 2 high": a staircase 2 wide
+    r = _built_as_said("a podium 2 by 2, 2 high, with a cube on top in the middle",
+                       ["block", "tower"], None)  # fmt: skip
+    assert (r.spec.structures[0].length, r.spec.structures[0].height) == (2, 2)
+    assert max(o.position[2] + o.size[2] / 2 for o in r.layout.objects) == pytest.approx(0.15)
+    # a podium with nothing said of its footprint stays a stepped one
+    assert plan("something like a podium").spec.structures[0].shape == "staircase"
+
+
+def test_a_relation_said_first_with_its_object_described_or_a_verb():
+    # "In front of a 3x3 slab, put a tower of 2": ', put' began a step of its own (partial)
+    r = _built_as_said("In front of a 3x3 slab, put a tower of 2.", ["tower", "grid"], None)
+    assert [(rel.kind, rel.side) for rel in r.spec.relations] == [("next_to", "front")]
+    # "Behind the throne - a 2 by 2 block one high - looms a pillar of seven": the block at the
+    # back and the pillar anywhere, silently
+    r = _built_as_said("Behind the throne - a 2 by 2 block one high - looms a pillar of seven.",
+                       ["tower", "block"], None)  # fmt: skip
+    assert [(rel.kind, rel.side) for rel in r.spec.relations] == [("next_to", "back")]
+    assert r.spec.structures[0].height == 7
+    r = _built_as_said("Behind the wall - four long, two high - a tower of three.",
+                       ["tower", "wall"], None)  # fmt: skip
+    assert (r.spec.structures[1].length, r.spec.structures[0].height) == (4, 3)
+
+
+def test_a_second_structure_sized_before_its_noun_in_a_with_phrase():
+    # "a 5 high tower with a 2 high one touching it on the right": one tower of 5 (partial)
+    for command in ("a 5 high tower with a 2 high one touching it on the right",
+                    "a 5 high tower with a 2 high tower on its right"):  # fmt: skip
+        r = _built_as_said(command, ["tower", "tower"], [2, 5])
+        assert [(rel.kind, rel.side) for rel in r.spec.relations] == [("next_to", "right")]
+    # "a pyramid with a 5x5 base and a tower of 3 next to it": a 5x5 block of its own (partial)
+    r = _built_as_said("a pyramid with a 5x5 base and a tower of 3 next to it",
+                       ["pyramid", "tower"], None)  # fmt: skip
+    assert r.spec.structures[0].length == 5 and r.spec.structures[0].dims == 3
+    # "a tower of 4 with a smaller one next to it, 2 high": 'smaller' unused (partial); a
+    # comparison the sizes contradict stays unread
+    r = _built_as_said("a tower of 4 with a smaller one next to it, 2 high", ["tower", "tower"],
+                       [2, 4])  # fmt: skip
+    assert plan("a tower of 4 with a smaller one next to it, 6 high").status == "partial"
+
+
+def test_a_layer_sized_after_it_and_a_slab_at_one_end_of_another():
+    # "then a second tier, 2 by 2, set right in the centre of it": a second 4x4 layer and the
+    # 2x2 on top of that, silently
+    r = _built_as_said("first the slab, 4 by 4; then a second tier, 2 by 2, set right in the "
+                       "centre of it", ["grid", "grid"], None)  # fmt: skip
+    assert sorted(_columns(r).values()) == [1] * 12 + [2] * 4
+    # "2 x 4 slab, and on it a 2 x 2 slab at one end": centred (partial)
+    r = _built_as_said("2 x 4 slab, and on it a 2 x 2 slab at one end", ["grid", "grid"], None)
+    cols = _columns(r)
+    high = [k for k, v in cols.items() if v == 2]
+    low = [k for k, v in cols.items() if v == 1]
+    axis = 0 if len({k[0] for k in cols}) == 4 else 1
+    assert max(k[axis] for k in high) < min(k[axis] for k in low) or min(
+        k[axis] for k in high
+    ) > max(k[axis] for k in low)
+
+
+def test_a_structure_said_again_and_words_that_strengthen_a_place():
+    # "A castle! Nothing fancy, just a castle please": two castles, silently
+    _built_as_said("A castle! Nothing fancy, just a castle please :)", ["castle"], None)
+    # "right in the very centre": on the right, silently
+    r = plan("Just a simple single cube, right in the very centre, nothing else!")
+    assert r.status == "success" and r.spec.structures[0].region == "centre"
+    # "bar 5 stem 3": 'stem' corrected to 'item' and dropped, silently
+    r = _built_as_said("T shape flat, bar 5 stem 3. tower 3 behind it, 1 gap.",
+                       ["t_shape", "tower"], None)  # fmt: skip
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (5, 3)
+    # "line front→back": left to right at the front, silently
+    r = _built_as_said("5 single cubes, line front→back, gap 1 each.", ["row"], None)
+    assert r.spec.structures[0].axis == "x"
+
+
+def test_one_tower_of_a_line_picked_by_its_side_size_or_the_robot():
+    # "the one nearest the robot, make it 6" of a line front to back: the back one grew
+    for command in ("Three towers of 3 in a line front to back, two-cube gaps. The one nearest "
+                    "the robot, make it 6.",
+                    "Three towers of 3 in a line front to back, two-cube gaps. Make the front "
+                    "one 6."):  # fmt: skip
+        r = _built_as_said(command, ["tower"] * 3, [3, 3, 6])
+        cols = sorted(_columns(r).items())  # front (small x) first
+        assert cols[0][1] == 6
+    # of two towers side by side, "the front one" is none of them: said so (the 6 was lost
+    # and both stood at the front, silently)
+    r = plan("two towers of 3. make the front one 6")
+    assert r.status == "partial" and all(s.region is None for s in r.spec.structures)
+    # "Take the tallest one down to 3": the tallest taken away, silently
+    r = _built_as_said("Three towers in a row, 2, 4 and 6 high, gap of one. Take the tallest one "
+                       "down to 3.", ["tower"] * 3, [2, 3, 4])  # fmt: skip
+    _built_as_said("three towers of 2, 4 and 6. make the tallest one 3.", ["tower"] * 3, [2, 3, 4])
+    # "remove the smaller one": read as a reference to it, nothing removed, silently
+    _built_as_said("two towers, of 3 and 5. remove the smaller one.", ["tower"], [5])
+    r = plan("stair 3 + stair 5, side by side, gap 1. remove the smaller.")
+    assert r.status == "partial" and len(r.spec.structures) == 2
+
+
+def test_copies_of_a_bridge_said_with_its_posts_and_copies_placed_each_side():
+    # "Bridge with posts 2 and a beam, then another one …": another post (a tower), silently
+    r = _built_as_said("Bridge with posts 2 and a beam, then another one the same right next to "
+                       "it on its right.", ["bridge", "bridge"], None)  # fmt: skip
+    assert [s.height for s in r.spec.structures] == [2, 2]
+    # "two more exactly like it, one to its left and one to its right": the first 2 taller
+    # ('put two more'), or two towers of 1 beside two of 3
+    _built_as_said("Make a tower of 3, then put two more exactly like it, one to its left and "
+                   "one to its right, with one-cube gaps.", ["tower"] * 3, [3, 3, 3])  # fmt: skip
+    r = _built_as_said("a wall of 4 and two more like it, one in front of it and one behind it",
+                       ["wall"] * 3, None)  # fmt: skip
+    assert [s.length for s in r.spec.structures] == [4, 4, 4]
+    # "the exact same arch again in front of it with a little gap": the copy an arch 1 high
+    r = _built_as_said("Can I have an arch? And then, just for fun, the exact same arch again in "
+                       "front of it with a little gap, like a double tunnel entrance.",
+                       ["arch", "arch"], None)  # fmt: skip
+    assert r.spec.structures[0] == r.spec.structures[1]
+
+
+def test_terse_changes_copies_into_corners_and_a_tower_on_every_side_of_a_ring():
+    # "2 towers h3, gap 2. right one +3.": both moved to the right, the +3 lost, silently
+    _built_as_said("2 towers h3, gap 2. right one +3.", ["tower", "tower"], [3, 6])
+    # "The wall on right side, make 4 high.": a fourth wall, 4 high, at the right
+    r = _built_as_said("I build three walls in line left to right, each 3 long and 2 high, gap "
+                       "one. The wall on right side, make 4 high.", ["wall"] * 3, None)  # fmt: skip
+    assert sorted(s.height for s in r.spec.structures) == [2, 2, 4]
+    # "… in the back right corner and copy it into the other three corners": one copy, a tower
+    # of 3 in the middle, silently
+    r = _built_as_said("Put a tower of 5 in the back right corner and copy it into the other "
+                       "three corners.", ["tower"] * 4, [5, 5, 5, 5])  # fmt: skip
+    assert {s.region for s in r.spec.structures} == {
+        "back left", "back right", "front left", "front right"
+    }  # fmt: skip
+    # "ring 5x5x1. tower 4 outside each side": one tower; a ring has four sides
+    for command in ("ring 5x5x1. tower 4 outside each side, gap 1.",
+                    "a ring 5x5 with a tower of 4 on each side"):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", r.notes
+        assert sorted(_columns(r).values()).count(4) == 4

@@ -56,7 +56,11 @@ def split_clauses(doc: Doc) -> list[tuple[list[int], bool]]:
                 clauses.append(current)
                 current = []
             continue
-        if _verb_after_comma(doc, tok) and any(doc[i].lower_ in lx.SHAPE_WORDS for i in current):
+        if (
+            _verb_after_comma(doc, tok)
+            and any(doc[i].lower_ in lx.SHAPE_WORDS for i in current)
+            and not _fronted(doc, current)
+        ):
             # "a tower of 3, add one more cube on top": a step of its own
             clauses.append(current)
             current = []
@@ -90,6 +94,21 @@ def _verb_after_comma(doc: Doc, tok: Token) -> bool:
     """`tok` is a comma that a step's verb follows ("…, add one more cube on top")."""
     nxt = doc[tok.i + 1] if tok.i + 1 < len(doc) else None
     return tok.lower_ == "," and nxt is not None and nxt.lower_ in _STEP_VERBS
+
+
+_RELATION_LEADS = {"behind", "beside", "next", "in", "to", "left", "right", "on", "above",
+                   "opposite", "near", "around", "inside", "alongside", "atop"}  # fmt: skip
+
+
+def _fronted(doc: Doc, current: list[int]) -> bool:
+    """The clause so far is a relation said first, with no comma yet ("In front of a 3x3 slab,
+    put a tower of 2": the verb after the comma places the subject, no new step)."""
+    said = [i for i in current if doc[i].lower_ not in _LEADS]
+    return (
+        bool(said)
+        and doc[said[0]].lower_ in _RELATION_LEADS
+        and not any(doc[i].lower_ in (",", "and") for i in current)
+    )
 
 
 def _next_to(doc: Doc, i: int) -> bool:

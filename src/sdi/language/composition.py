@@ -5,9 +5,10 @@ enclosure, towers "joined by" a beam become a bridge standing on them, and a str
 
 from __future__ import annotations
 
+import math
 import re
 
-from sdi.language.nouns import COPY_WORDS, beam_only
+from sdi.language.nouns import COPY_WORDS, beam_only, families_said
 from sdi.language.references import resolve
 from sdi.language.state import Phrase, PhraseRelation, ReadState
 from sdi.spec import lexicon as lx
@@ -289,6 +290,28 @@ def relate(
             st.anchors.remove(at)
             side = None
         group = _group(phrases, r.object, obj, s_idx, relations) if kind == "next_to" else []
+        inside = _inside(phrases, r.object, obj, (s_idx, o_idx, subj), structures, relations) if (
+            kind == "around"
+        ) else []
+        if inside:
+            # "a ring 6 by 6 with two towers of 2 inside it", "two towers with a ring around
+            # them": all inside, side by side (the ring enclosed one and the others stood
+            # outside, silently)
+            o_idx = inside[0]
+            along = "back" if st.line == "x" else "left"
+            gap = st.gap_m if st.gap_m is not None else st.cell.cube[0]
+            across = math.ceil(math.sqrt(len(inside))) if len(inside) > 3 else len(inside)
+            for k, m in enumerate(inside[1:], start=1):
+                # in rows of `across`: four in a square, each row behind the one before
+                first = k % across == 0
+                side = ("left" if along == "back" else "back") if first else along
+                beside = inside[k - across if first else k - 1]
+                relations.append(
+                    Relation(kind="next_to", subject=m, object=beside, side=side, gap_m=gap)
+                )
+            laid = "side by side" if across == len(inside) else f"in rows of {across}"
+            apart = ", a part apart" if st.gap_m is None else ""
+            st.notes.append(f"placed the {len(inside)} structures {laid} inside the ring{apart}")
         if group and at is None:
             # "a row in front of them both": the group side by side as one unit, and the
             # subject beside the whole of it
@@ -300,9 +323,13 @@ def relate(
             )
             said = phrases[r.object].text if r.object is not None else "them"
             st.notes.append(f"read '{said}' as the {len(group)} together")
+        # a copy on every side of a ring stands a part away (the gap between structures made
+        # "a ring 5x5 with a tower on each side" wider than the table)
+        near = st.cell.cube[0] if at and at[1] == "sides" and st.gap_m is None else None
         relations.append(
-            Relation(kind=kind, subject=s_idx, object=o_idx, side=side, at=at[1] if at else None)
-        )
+            Relation(kind=kind, subject=s_idx, object=o_idx, side=side, at=at[1] if at else None,
+                     gap_m=near)
+        )  # fmt: skip
         if members:
             along = "back" if side in ("left", "right") else "left"
             relations.extend(
@@ -377,6 +404,43 @@ def _enclosing(host: StructureDraft, st: ReadState) -> StructureDraft:
                               part=host.part, region=host.region, at_x=host.at_x,
                               at_y=host.at_y)  # fmt: skip
     return host
+
+
+def _inside(
+    phrases: list[Phrase],
+    ref: int | None,
+    obj: int | None,
+    pair: tuple[int, int, int],
+    structures: list[StructureDraft],
+    relations: list[Relation],
+) -> list[int]:
+    """The structures a ring encloses together: the counted copies its object is one of ("with
+    two towers inside it"), or all a plural reference names ("a ring around them"), when they
+    stand free; else []."""
+    if obj is None:
+        return []
+    p = phrases[obj]
+    named = range(p.first, p.first + p.count)
+    plural = ref is not None and bool(_GROUP_WORDS.match(phrases[ref].text.strip(" ,.")))
+    ring, o_idx, subj = pair
+    # "surround a tower of 6 and a tower of 2 with a ring": every one the other phrase names,
+    # each by its own noun
+    listed = len(families_said(p.text)) == p.count and not re.search(r"\bthe\b", p.text, re.I)
+    plural = plural or (obj != subj and listed and (ref is None or phrases[ref].ref is None))
+    group = [k for k in named if k != ring] if plural else _counted_copies(p, structures)
+    family = structures[o_idx].shape
+    if not group and any(lx.SHAPE_WORDS.get(w[:-1]) == family
+                         for w in re.findall(r"[a-z]+s\b", p.text.lower())):  # fmt: skip
+        # "a ring with towers of 1, 2, 3 and 4 inside it": every one of the family listed
+        group = [o_idx]
+        while group[0] - 1 in named and group[0] - 1 != ring and (
+            structures[group[0] - 1].shape == family
+        ):
+            group.insert(0, group[0] - 1)
+    related = {r.subject for r in relations} | {r.object for r in relations}
+    if len(group) < 2 or o_idx not in group or ring in group or related & set(group):
+        return []
+    return group
 
 
 _GROUP_WORDS = re.compile(

@@ -76,7 +76,10 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
         # "a block between two towers, one cube gap on each side": the two gaps of "between"
         st.notes.append(f"read '{said}' as the gaps on both sides of the one between")
         return " "
-    if flanking and all_four:  # "a tower on each of its 4 sides": one on every side
+    named = families_said(m.string[: m.start()])  # the object: the one before the subject
+    square = len(named) > 1 and named[-2] == "enclosure" and bool(sided)
+    if flanking and (all_four or square):
+        # "a tower on each of its 4 sides", "a ring 5x5, a tower on each side": every side
         at = "sides"
     elif flanking:  # "a tower on each side of it", "on either side": one at each of its ends
         at = "ends"
@@ -89,11 +92,13 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     kind = "on_top_of" if (on or on_top or at == "corners") and not flanking else "next_to"
     st.anchors.append((kind, at))
     st.flanking = st.flanking or bool(flanking and kind == "next_to")
-    st.notes.append(
-        f"read '{said}' as "
-        + (f"one at each of its {at}" if at.endswith("s") else f"on one {at}")
-        + (" (one on each side, along its length)" if flanking and at == "ends" else "")
-    )
+    if at.endswith("s"):
+        st.notes.append(
+            f"read '{said}' as one at each of its {at}"
+            + (" (one on each side, along its length)" if flanking and at == "ends" else "")
+        )
+    else:  # "on one end": which end is not said
+        st.notes.append(f"'{said}': which {at} was not said; SDI took one")
     if on_top and not m.group(1):
         return " "  # "a wall with a cube on top at each end"
     obj = m.group(1)
@@ -222,6 +227,23 @@ def _pyramid_base(m: re.Match[str], st: ReadState, note: str) -> str:
     if "." in m.group(1):
         return m.group(0)
     return _bottom_count(m, st, note)
+
+
+def _compared_one(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a tower of 4 with a smaller one next to it, 2 high": a comparison the heights said make
+    true is said by them (the word was left unused); one they contradict stays unread."""
+    before = re.findall(r"\b(?:of|tower|stack|column|pillar)\s+(\d+)\b|\b(\d+)\s+(?:cubes?\s+)?"
+                        r"(?:high|tall)\b", m.string[: m.start()], re.IGNORECASE)  # fmt: skip
+    if not before:
+        return m.group(0)
+    other = int(next(a or b for a, b in reversed(before)))
+    own = int(m.group(3))
+    lower = m.group(1).lower() in ("smaller", "shorter", "lower", "littler", "little", "small")
+    if (own < other) != lower or own == other:
+        return m.group(0)
+    st.notes.append(f"'{m.group(1)}': {own} high, {'below' if lower else 'above'} the {other} "
+                    "said before")  # fmt: skip
+    return f"another {m.group(2)}"
 
 
 def _extreme_at(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -1094,7 +1116,10 @@ def _more_of(m: re.Match[str], st: ReadState, note: str) -> str:
     family = family or shapes[-1]
     if family != shapes[-1]:
         return m.group(0)  # "a wall and 2 more towers": towers of their own
-    st.notes.append(f"read '{said}' as {n} more {family}s like the one before")
+    st.notes.append(f"read '{said.split(',')[0]}' as {n} more {family}s like the one before")
+    places = [g for g in m.groups()[2:4] if g] if len(m.groups()) >= 4 else []
+    if len(places) == 2 and n == "2":  # "two more like it, one to its left and one to its right"
+        return f" and another {family} {places[0]} and another {family} {places[1]} "
     return "".join(f" and another {family}" for _ in range(int(n))) + " "
 
 
@@ -1121,8 +1146,9 @@ def _layer_on_top(m: re.Match[str], st: ReadState, note: str) -> str:
         said = "another layer"
     else:
         return m.group(0)
-    st.notes.append(f"read '{m.group(0).strip()}' as a layer on top of the one before")
-    return f"{said} on top"
+    st.notes.append(f"read '{m.group(0).strip(' ,')}' as a layer on top of the one before")
+    size = m.group(2) if m.lastindex and m.lastindex >= 2 and m.group(2) else None
+    return f"{said} {size} on top" if size else f"{said} on top"  # "a second tier, 2 by 2, …"
 
 
 def _across_them(m: re.Match[str], st: ReadState, note: str) -> str:
@@ -1310,6 +1336,7 @@ def _part_size(m: re.Match[str], st: ReadState, note: str) -> str:
 
 # Rewrites whose replacement is computed: the `_REWRITES` entry names one of these.
 HANDLERS: dict[str, Handler] = {
+    "{compared_one}": _compared_one,
     "{split}": lambda m, st, note: _split(m, st),
     "{no_stack}": _no_stack,
     "{no_beams}": _no_beams,

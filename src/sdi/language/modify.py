@@ -190,8 +190,9 @@ MODIFY = [
     ),
     # "Build a tower of 5, then another one of 5 to the right of it. Make the second one 3."
     _op(
-        r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last|middle|left|right|front|back)"
-        r"(?:[\s-]hand)?\s+"
+        r"\b(?:make|change)\s+the\s+(?:first|second|third|fourth|last|middle|left|right|front|back|"
+        r"taller|tallest|higher|highest|bigger|biggest|larger|largest|shorter|shortest|lower|lowest|"
+        r"smaller|smallest|tall|short|big|small)(?:[\s-]hand)?\s+"
         r"(?:one|tower|stack|column|pillar|row|wall)\s+(?:to\s+|into\s+)?" + _N
         + r"(?:\s+(?:cubes?|high|tall|long|levels?))?"
         r"\s*(?:instead)?\s*$",
@@ -397,6 +398,10 @@ MODIFY = [
         r"shortest|lowest|smallest|left|right|front|back)"
         r"(?:[\s-]*hand)?\s+"
         r"(?:one|tower|stack|column|pillar|row|wall)\b"
+        # "stair 3 + stair 5. remove the smaller.": of two, the one that size
+        r"|\b" + DROP_VERBS + r"\s+the\s+(tallest|highest|biggest|largest|shortest|lowest|smallest|"
+        r"taller|higher|bigger|larger|shorter|lower|smaller)(?:\s+(?:one|tower|stack|column|pillar|"
+        r"staircase|stairs|pyramid|wall|row|block)\b|(?=\s*(?:[.,;!?]|$)))"
         r"|\b(?:take|knock|pull)\s+the\s+(middle|first|last|second|tallest|highest|biggest|shortest|"
         r"lowest|smallest|left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|column|pillar|"
         r"row|wall)\s+(?:down)\b"
@@ -510,6 +515,26 @@ def modify(
             st.material.append(m.group(0).strip())
             st.notes.append(f"ignored '{m.group(0).strip()}': SDI cannot tell which structure "
                             "will stand in the middle; say it by its size or side")  # fmt: skip
+            p.count = 0
+            p.modified = True
+            return True
+        sided = re.search(r"\bthe\s+(left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|"
+                          r"column|pillar|post|row|wall)\b", p.text, re.I)  # fmt: skip
+        if note is None and op == "drop" and len(alone) > 1:
+            # "a staircase of 3 and one of 5. remove the smaller one": which one is not known
+            # here (the words were dropped, silently)
+            st.material.append(m.group(0).strip())
+            st.notes.append(f"ignored '{m.group(0).strip()}': SDI cannot tell which structure "
+                            "that is; say it by its side or the order named")  # fmt: skip
+            p.count = 0
+            p.modified = True
+            return True
+        if note is None and sided and len(alone) > 1:
+            # "two towers of 3. make the front one 6": none of them is picked out by that side
+            # (the side placed them all, and the 6 was lost, silently)
+            st.material.append(m.group(0).strip())
+            st.notes.append(f"ignored '{m.group(0).strip()}': no single structure stands on "
+                            f"the {sided.group(1).lower()}; say which one by its size or order")
             p.count = 0
             p.modified = True
             return True
@@ -767,9 +792,10 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
         index = found_at
     else:
         towers = _tower_heights(built, structures)
-        if None in towers.values():
-            return None
-        found_at = _extreme_tower(towers, low=which not in ("tallest", "highest", "biggest"))
+        if None in towers.values() or (which.endswith("er") and len(towers) != 2):
+            return None  # "the smaller" of more than two: which is not said
+        big = ("tallest", "highest", "biggest", "largest", "taller", "higher", "bigger", "larger")
+        found_at = _extreme_tower(towers, low=which not in big)
         if found_at is None:
             return None  # no single one: the command does not say which
         index = found_at
@@ -832,9 +858,18 @@ def _by_side(
         structures[i].region is None and structures[i].at_x is None and structures[i].at_y is None
         for i in every
     )
-    if placed or not free or len(every) < 2 or side not in ("left", "right"):
+    if placed or not free or len(every) < 2:
         return None
     said = " ".join(q.text for q in before)
+    if side in ("front", "back"):
+        # "three towers in a line front to back": the first named stands in front (the last, of
+        # a line said back to front)
+        if not re.search(r"\b(?:front\s+to\s+(?:the\s+)?back|back\s+to\s+(?:the\s+)?front|one\s+"
+                         r"behind\s+(?:the\s+other|another)|behind\s+each\s+other)\b", said, re.I):
+            return None
+        if re.search(r"\bback\s+to\s+(?:the\s+)?front\b", said, re.I):
+            every = every[::-1]
+        return every[0] if side == "front" else every[-1]
     if re.search(r"\bleft\s+to\s+(?:the\s+)?right\b", said, re.I):
         every = every[::-1]  # "three towers, left to right": the first named is the left one
     return every[0] if side == "right" else every[-1]
@@ -1062,7 +1097,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         return None  # "take 2 off the left one" with no single one on the left: said, unused
     extreme = re.search(
         r"\bthe\s+(taller|tallest|higher|highest|bigger|biggest|larger|largest|shorter|shortest|lower|"
-        r"lowest|smaller|smallest)\s+(?:one|tower|stack|column|pillar)\b",
+        r"lowest|smaller|smallest|tall|short|big|small)\s+(?:one|tower|stack|column|pillar)\b",
         p.text,
         re.I,
     )
@@ -1208,7 +1243,8 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
             return f"each {last.shape} now has {key} {new}{was}"
         return (f"the {last.shape}s now have {key} {', '.join(map(str, got))} (were "
                 f"{', '.join(map(str, were))})")  # fmt: skip
-    which = f" on the {side}" if on_side is not None else ""
+    prep = "at" if side in ("front", "back") else "on"
+    which = f" {prep} the {side}" if on_side is not None else ""
     return f"the {last.shape}{which} now has {key} {new}{was}"
 
 

@@ -669,6 +669,54 @@ def _blocks_listed(m: re.Match[str]) -> str:
     return ", ".join(blocks[:-1]) + " and " + blocks[-1]
 
 
+def _walls_listed(m: re.Match[str]) -> str:
+    """ "three walls 4 long, heights 1, 2 and 3": a wall of each height, as many as counted, each
+    as long as said; as it was when neither 'heights' nor 'high' says what the numbers are."""
+    heights = _listed_figures(m.group(5)).replace(" and ", ", ").split(", ")
+    if not (m.group(4) or m.group(6)) or words_to_numbers([m.group(1).lower()])[0] != str(
+        len(heights)
+    ):
+        return m.group(0)
+    length = re.sub(r"^[\s,]*(?:each\s+)?", " ", m.group(3)) if m.group(3).strip() else ""
+    walls = [f"a {m.group(2).lower()[:-1]}{length} {h} high" for h in heights]
+    return ", ".join(walls[:-1]) + " and " + walls[-1]
+
+
+def _pyramid_base(m: re.Match[str]) -> str:
+    """ "a pyramid with a 5x5 base": a pyramid 5 x 5; "with a base of 5" stays as said unless
+    another structure follows ("… and a tower of 3 next to it"): then "a pyramid 5 wide"."""
+    if m.group(2):
+        return f"{m.group(1)} {m.group(2)} x {m.group(3)}"
+    if m.group(5):
+        return f"{m.group(1)} {m.group(4)} x {m.group(5)}"
+    if re.match(r"\s*,?\s*and\s+(?:an?|one|two|three|four|\d+)\s", m.string[m.end() :], re.I):
+        return f"{m.group(1)} {m.group(4)} wide"
+    return m.group(0)
+
+
+def _with_sized_one(m: re.Match[str]) -> str:
+    """ "… with a 2 high one": another of the family said before, its height after it ("one"
+    with no family before stays as it was)."""
+    family = m.group(3).lower()
+    if family == "one":
+        said = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+                if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+        if not said:
+            return m.group(0)
+        family = said[-1]
+    return f"with a {family} {m.group(1)} {m.group(2)}"
+
+
+def _object_between_dashes(m: re.Match[str]) -> str:
+    """ "Behind the wall - four long, two high - …": the relation, its object described (the
+    sizes one list), and a comma before the subject."""
+    said = m.group(3)
+    if re.match(r"(?:an?|one)\s", said, re.I):
+        return f"{m.group(1)}{said}, "
+    sizes = re.sub(r"\s*,\s*", " and ", said)
+    return f"{m.group(1)}a {m.group(2)} {sizes}, "
+
+
 def _total_first(m: re.Match[str]) -> str:
     """ "six cubes, two rows of 3": the rows, and the total said after them as a claim (when
     the rows times their length make it); otherwise as it was."""
@@ -807,6 +855,88 @@ def _series_start(m: re.Match[str]) -> bool:
 
 
 _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
+    # "right in the very centre": the centre ("very" kept "right" from reading as an intensifier)
+    (re.compile(r"\bthe\s+very\s+(?=(?:centre|center|middle|front|back|top|bottom|end|edge|corner|"
+                r"left|right)\b)", re.I), "the "),
+    # "surround a tower of 6 and a tower of 2 with one ring": a ring ("one ring" was read as a
+    # reference to the towers: a tower was made the ring)
+    (re.compile(r"\b((?:surround|enclose|encircle|fence\s+in|box\s+in)\b[^.;?!]*?\bwith\s+)"
+                r"(?:just\s+)?(?:one|a\s+single)\s+(?=(?:ring|enclosure|fence|wall|border|frame|"
+                r"square)\b)", re.I),
+     r"\1a "),
+    # "Take the tallest one down to 3", "knock it down to 2 high": that height (the tallest was
+    # taken away, silently)
+    (re.compile(r"\b(?:take|bring|knock|cut|chop|lower)\s+(the\s+(?:[\w-]+\s+){0,2}?(?:one|tower|"
+                r"stack|column|pillar|post|wall)|it|that(?:\s+one)?|them)\s+down\s+to\s+(" + _NUM
+                + r")\b", re.I),
+     r"make \1 \2"),
+    # "one ring 7 by 7 and inside put four towers": what stands inside it (read as the ring's
+    # inside, 7 by 7, and the towers stood outside, silently)
+    (re.compile(r"(\b(?:ring|enclosure|fence|pen|frame|border|courtyard)\b[^.;]*?\d+\s*(?:x|by)\s*\d+"
+                r"[^.;]*?)\s*,?\s*\band\s+inside(?:\s+(?:it|of\s+it))?\s*,?\s*(?=(?:put|place|build|"
+                r"stand|set|add|make)\b|(?:an?|one|two|three|four|five|six|\d+)\s)", re.I),
+     r"\1. inside it, "),
+    # "three single cubes inside it in a row": the row's words together, before the relation
+    # (the row after "inside it" was one of its own, 5 long)
+    (re.compile(r"\b(inside|within)\s+(it|them|the\s+(?:ring|enclosure|pen|fence|frame|square))\s*,?\s+"
+                r"(in\s+an?\s+(?:row|line|straight\s+line))\b", re.I), r"\3 \1 \2"),
+    # "two towers of 3 inside it, not touching anything": apart, said before the relation (the
+    # words after "inside it" were read as a structure of their own)
+    (re.compile(r"\b(inside|within)\s+(it|them|the\s+(?:ring|enclosure|pen|fence|frame|square))\s*,\s*"
+                r"(not\s+touching|(?:with\s+)?(?:gaps|space)\s+between\s+them)(?:\s+(?:each\s+other|one\s+"
+                r"another|anything|the\s+(?:ring|walls?|sides?)|(?:each\s+other\s+)?or\s+the\s+(?:ring|"
+                r"walls?|sides?)))?(?=\s*(?:[.;!?]|$))", re.I), r"\3 \1 \2"),
+    # "enclosure 8x6, one high. inside: row of 4": inside it
+    (re.compile(r"(?:^|(?<=[.;]\s))\s*(inside|within)\s*:\s*", re.I), r"\1 it, "),
+    # "tower 4 outside each side": beside each side
+    (re.compile(r"\b(?:(tower|stack|column|pillar)s?\s+(\d+)\s+)?outside\s+(each|every|all\s+four|"
+                r"all)\s+(?:of\s+its\s+)?sides?\b(?:\s+of\s+(?:it|the\s+\w+))?", re.I),
+     lambda m: (f"{m.group(1)} of {m.group(2)} " if m.group(1) else "")
+     + f"on {m.group(3)} side of it"),
+    # "The wall on right side, make 4 high": that one changed (the wall was a fourth, at the right)
+    (re.compile(r"(?:^|(?<=[.;!?]\s))\s*the\s+(" + _FAMILY_SAID + r"|one)\s+(?:on|at)\s+(?:the\s+)?"
+                r"(left|right|front|back)(?:[\s-]+(?:hand\s+)?(?:side|end))?\s*,\s*(make|raise|lower)\s+"
+                r"(?:it\s+)?", re.I),
+     r"\3 the \2 \1 "),
+    # "right one +3", "the tall one -2": that one, cubes added or taken off
+    (re.compile(r"\b(?:the\s+)?(left|right|front|back|first|second|last|middle|tall|short|taller|shorter|"
+                r"tallest|shortest)\s+(one|tower|stack|column|wall)\s*([+-])\s*(\d+)\b", re.I),
+     lambda m: f"add {m.group(4)} to the {m.group(1)} {m.group(2)}" if m.group(3) == "+"
+     else f"take {m.group(4)} off the {m.group(1)} {m.group(2)}"),
+    # "a tower of 5 in the back right corner and copy it into the other three corners": one in
+    # each corner (one copy in the middle, silently)
+    (re.compile(r"\s+in\s+the\s+(?:back|front)\s+(?:left|right)\s+corner\s*,?\s*(?:and\s+)?"
+                r"(?:then\s+)?(?:copy|repeat|duplicate|put\s+(?:the\s+same|one|copies))\s+(?:it\s+|that\s+)?"
+                r"(?:in|into|at|to)\s+(?:the\s+|all\s+the\s+)?(?:other|remaining)\s+(?:three|3)"
+                r"(?:\s+corners)?\b", re.I),
+     " in each corner"),
+    # "T shape flat, bar 5 stem 3": terse parts and sizes, one after another without commas
+    (re.compile(r"\b(bar|stem|arms?|base|legs?|posts?|pillars?|beam|top)\s+(\d+)\s+(?=(?:bar|stem|arms?|"
+                r"legs?|posts?|pillars?|beam|height|length|width|gap)\s+\d)", re.I), r"\1 \2, "),
+    # "A castle! Nothing fancy, just a castle please": the one named, said again (two were built)
+    (re.compile(r"(?<=[.!?,;]\s)\s*(?:(?:nothing\s+(?:fancy|special|else)|keep\s+it\s+simple)\s*,?"
+                r"\s*)?just\s+(?:an?|one)\s+(" + _FAMILY_SAID
+                + r")\s*(?:,?\s*please)?\s*(?=[.!?;:)(]|$)", re.I),
+     lambda m: " " if m.group(1).lower() in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+     else m.group(0)),
+    # "a 5 high tower with a 2 high one touching it on the right": a second structure (the two
+    # were read as one, its height twice)
+    (re.compile(r"\bwith\s+(?:an?|one)\s+(" + _NUM + r")[\s-]+(?:cubes?[\s-]+)?(high|tall)\s+("
+                + _FAMILY_SAID + r"|one)\b", re.I),
+     _with_sized_one),
+    # "2 x 4 slab, and on it a 2 x 2 slab at one end": the one on it, at that end of its top (two
+    # relations in one clause left the end unplaced)
+    (re.compile(r"\s*,?\s*\band\s+on\s+(?:it|that|this|top)\s*,?\s+(an?\s+[^,.;]+?)\s+(?:at|on)\s+"
+                r"(one|either|the\s+(?:left|right|front|back|far|near))\s+end\b", re.I),
+     r", with \1 on \2 end"),
+    # "a pyramid with a 5x5 base and a tower of 3 next to it": the pyramid's size (the base was
+    # read as a block of its own when a relation followed)
+    (re.compile(r"\b(pyramids?)\s+(?:with|having|on)\s+(?:an?\s+|its\s+)?(?:(\d+)\s*(?:x|by)\s*(\d+)"
+                r"\s+(?:square\s+)?(?:base|bottom(?:\s+layer)?|footprint)|(?:square\s+)?(?:base|bottom"
+                r"(?:\s+layer)?|footprint)\s+(?:of\s+)?(\d+)(?:\s*(?:x|by|on|times)\s*(\d+))?)"
+                r"(?:\s+cubes?)?(?:\s+(?:wide|across|(?:on\s+)?(?:a|each)\s+side))?\b"
+                r"(?!\s*(?:x|by|on|cm|mm|m)\b)", re.I),
+     _pyramid_base),
     # "put one more cube beside it on the table": a cube of its own beside it (the cube was
     # one more level of it, and "it on the table" no structure)
     (re.compile(r"\b(?:one\s+more|an\s+extra|another)\s+(?:single\s+)?(?:cube|block|brick)\b(?=\s+(?:"
@@ -862,6 +992,11 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "the small one at left": on the left (every structure stood at the left, silently)
     (re.compile(r"\b(at|on)\s+(left|right)(?=\s*(?:[,.;!?]|$|side\b))", re.I),
      lambda m: f"on the {m.group(2)}"),
+    # "the one nearest the robot, make it 6": the front one (the robot works from the front)
+    (re.compile(r"\bthe\s+(one|tower|stack|column|pillar|wall|row)\s+(?:that'?s\s+|which\s+is\s+)?"
+                r"(?:(nearest|closest)\s+(?:to\s+)?|(?:furthest|farthest)\s+(?:away\s+)?from\s+)"
+                r"(?:the\s+)?robot\b", re.I),
+     lambda m: f"the {'front' if m.group(2) else 'back'} {m.group(1)}"),
     # "the bigger one further from the robot": behind the other (it was dropped, silently);
     # "the taller one closer to the robot": in front
     (re.compile(r"\b(the\s+\w+\s+one)\s+(?:(?:is|should\s+be|stands?|goes)\s+)?(?:(further|farther)"
@@ -900,6 +1035,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "negative on the stack of six, make it four": the change, on the structure said before
     (re.compile(r"^\W*negative\s+on\s+(?:the\s+)?([^,.;]+?)\s*,\s*(?=make\s+it\b)", re.I),
      r"a \1. no, "),
+    # "three walls 4 long, heights 1, 2 and 3", "… 4 long, 1, 2 and 3 high": a wall of each
+    # height, all that long (the heights were read as their lengths, the length dropped, silently)
+    (re.compile(r"\b(two|three|four|[2-4])\s+(walls|fences|barriers)\b((?:\s*,?\s*(?:each\s+)?"
+                + _NUM + r"\s+(?:cubes?\s+)?long)?)\s*[,:]?\s*(?:(?:with\s+|of\s+)?(heights?)\s*"
+                r"(?:of\s+|:\s*)?)?("
+                + _NUM + r"(?:\s*,\s*" + _NUM + r")*\s*(?:,\s*|,?\s*and\s+)" + _NUM
+                + r")\b(\s+(?:cubes?\s+)?(?:high|tall))?(?!\s*(?:x|by|cm|mm|m|long|wide)\b)", re.I),
+     _walls_listed),
     # "three stacks, heights two, three, two": one of each height (3 was read as x = 3 m)
     (re.compile(r"(?<=[a-z]s)\s*,?\s*(?:with\s+)?heights?\s*:?\s+(" + _NUM + r"(?:\s*,\s*" + _NUM
                 + r")*\s*(?:,\s*|,?\s*and\s+)" + _NUM + r")\b(?!\s*(?:x|by|cm|mm|m)\b)", re.I),
@@ -1465,6 +1608,13 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\bas\s+far\s+(?:away\s+)?from\s+the\s+robot\s+as\s+(?:the\s+(?:table|cell|"
                 r"workspace)\s+(?:goes|allows|lets\s+it)|it\s+(?:can|will)\s+go|possible|you\s+can)\b",
                 re.I), " as far back as it can go "),
+    # "Behind the throne - a 2 by 2 block one high - looms a pillar of seven", "Behind the wall
+    # - four long, two high - a tower of three": the fronted relation's object described between
+    # dashes (the dash ended the clause: the block stood at the back, the pillar free, silently)
+    (re.compile(r"(?:^|(?<=[.;!?]\s))(\s*(?:behind|in\s+front\s+of|next\s+to|beside|(?:to\s+the\s+)?"
+                r"(?:left|right)\s+of|on\s+top\s+of|on|around)\s+)the\s+([a-z]+)\s+[-–(]\s*"
+                r"([^-–()]+?)\s*[-–)]\s*,?\s*", re.I),
+     _object_between_dashes),
     # "On top of that a 2 by 2 square, and on top of that a cube": each fronted relation a
     # sentence of its own (two in one clause related the pronouns to the wrong phrases)
     (re.compile(r"(\bon\s+top\s+of\s+(?:that|it|this)\b[^.;]*?)\s*,?\s+and\s+(?:then\s+)?"
@@ -3248,9 +3398,12 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     # "approx." (its full stop ended the sentence)
     (re.compile(r"\b(?:approx\.?|approximately|ca\.|circa)(?=\s)", re.I), "about"),
     # "in line L-R", "both run F-B": left to right, front to back
-    (re.compile(r"\b(?:L\s*[-–/>]+\s*R|R\s*[-–/>]+\s*L|F\s*[-–/>]+\s*B|B\s*[-–/>]+\s*F)\b"),
+    (re.compile(r"\b(?:L\s*[-–/>→]+\s*R|R\s*[-–/>→]+\s*L|F\s*[-–/>→]+\s*B|B\s*[-–/>→]+\s*F)\b"),
      lambda m: {"L": "left to right", "R": "right to left", "F": "front to back",
                 "B": "back to front"}[m.group(0)[0]]),
+    # "line front→back", "left -> right": from one side to the other
+    (re.compile(r"\b(front|back|left|right)\s*(?:→|->|-->|=>|⇒)\s*(front|back|left|right)\b", re.I),
+     r"from \1 to \2"),
     # "pos: x 300 mm y 450 mm": at that place; "parallel to the y axis": along y
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*(?=x\s*[:=]?\s*\d|\(\s*\d)", re.I), "at "),
     # "parallel to X", "long axis parallel to Y" (a drawing's axes)

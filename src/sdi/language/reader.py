@@ -612,6 +612,11 @@ def _apply_one(
     out, other, taken = [], [], False
     for s in structures:
         own = getattr(s, key)
+        if key == "length" and s.shape == "l_shape" and own is None and s.width is None:
+            # "two walls forming a corner, each 4 long": each wall an arm of the L
+            out.append(s.model_copy(update={"length": value, "width": value}))
+            st.notes.append(f"read '{said}' as each arm of the L: {value} long")
+            return out + structures[len(out) :]
         if s.shape in fits and own is None and getattr(s, f"{key}_m") is None:
             s = s.model_copy(update={key: value})
             taken = True

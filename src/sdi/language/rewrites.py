@@ -53,6 +53,12 @@ _SERIES_LEAD = (
 )
 """'three towers, starting at 2 …': the series' count, family and first height."""
 
+_ITS_SIDE = (
+    r"(?:to|on|at)\s+(?:its|the)\s+(?:left|right|front|back)(?:\s+side)?|in\s+front\s+of\s+it|"
+    r"behind\s+it"
+)
+"""Where a copy stands by the one before: "to its left", "in front of it"."""
+
 _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
     (  # "two towers joined by a row of 3 cubes on top": cubes alone would not hold across a gap
         re.compile(
@@ -1897,10 +1903,44 @@ _REWRITES += [
         re.compile(
             r"\s*,?\s*\b(?:and\s+|plus\s+|then\s+)?(\d+|two|three|four|five|six)\s+more\s+(?:("
             + _STRUCTURE_ALT
-            + r")|(?:of\s+(?:them|those|these)|like\s+(?:it|that|this|the\s+first)))\b",
+            + r")|(?:of\s+(?:them|those|these)|(?:just\s+|exactly\s+)?like\s+(?:it|that|this|the\s+"
+            r"first)))\b"
+            # "…, one to its left and one to its right": where the two copies stand
+            r"(?:\s*,?\s*one\s+(" + _ITS_SIDE + r")\s*,?\s*and\s+(?:one|the\s+other|another\s+"
+            r"[a-z]+)\s+(" + _ITS_SIDE + r"))?",
             re.IGNORECASE,
         ),
         "{more_of}",
+        "",
+    ),
+    (  # "a podium 2 by 2, 2 high", "a 3x3 podium": a podium given a footprint is a raised block
+        re.compile(
+            r"\bpodium(\s*,?\s*(?:\d+|one|two|three|four|five|six)\s*(?:x|by)\s*"
+            r"(?:\d+|one|two|three|four|five|six)\b)"
+            r"|(\b(?:\d+|one|two|three|four|five|six)\s*(?:x|by)\s*(?:\d+|one|two|three|four|five|"
+            r"six)\s+)podium\b",
+            re.IGNORECASE,
+        ),
+        "{1}block{0}",
+        "read '{0}' as a raised block (a podium of that footprint)",
+    ),
+    (  # "a row of cubes, not a tower, five of them": the row's count, not five rows
+        re.compile(
+            r"\b(rows?|lines?|stacks?|towers?|columns?|piles?)\s+of\s+(?:cubes|blocks)\b"
+            r"([^.;:!?\d]*?),?\s*\b(two|three|four|five|six|seven|eight|nine|ten|\d+)\s+of\s+"
+            r"(?:them|those|these)\b\s*(?=$|[,.;!])",
+            re.IGNORECASE,
+        ),
+        "{0} of {2}{1} ",
+        "read '{0}' as the count of cubes in it",
+    ),
+    (  # "a tower of 4 with a smaller one next to it, 2 high": the comparison the sizes make
+        re.compile(
+            r"\b(?:an?|one)\s+(smaller|shorter|lower|littler|little|small|taller|higher|bigger|larger)"
+            r"\s+(one|tower|stack|column|pillar)\b(?=[^.;]*?\b(\d+)\s+(?:cubes?\s+)?(?:high|tall)\b)",
+            re.IGNORECASE,
+        ),
+        "{compared_one}",
         "",
     ),
     (  # "ring 4x4, 2 of them": that many of the one described
@@ -1940,6 +1980,7 @@ _REWRITES += [
         re.compile(
             r"\b((?:a\s+(?:second|third|fourth|fifth|new|next)|another)\s+(?:layer|level|tier|course))"
             r"\b(?![^.;]*\b(?:on|onto|atop|above|over|beside|next|behind|left|right|front|under)\b)"
+            r"(?:\s*,\s*(\d+\s*(?:x|by)\s*\d+)\s*(?=,))?"
             r"|(?<=\bthen\s)(a\s+(?:third|fourth|fifth))(?=\s*(?:[.;!]|$))",
             re.IGNORECASE,
         ),
@@ -2714,6 +2755,15 @@ def _sized_base(text: str, st: ReadState) -> str:
     return _SIZED_BASE.sub(sub, text)
 
 
+_OWN_PARTS = re.compile(
+    r"(\b(?:bridge|table|arch|gate|canopy|bench|gateway|doorway|portal|shelter)s?\s+(?:with|"
+    r"having)\s+(?:[\w-]+\s+){0,3}?)(?:posts?|legs?|pillars?|supports?|columns?|uprights?)\b",
+    re.IGNORECASE,
+)
+"""A roofed structure said with its parts ("a bridge with posts of 2"): the parts are its own,
+no family a later "another one" repeats."""
+
+
 def _another(text: str) -> str:
     """ "a tower on the left and another one on the right": another tower."""
     text = _ONE_MORE.sub(lambda m: _one_more(m, text), text)
@@ -2731,7 +2781,8 @@ def _another(text: str) -> str:
     text = _ADJECTIVE_ONE.sub(adjective_one, text)
 
     def sub(m: re.Match[str]) -> str:
-        said = re.findall(r"[a-z]+", text[: m.start()].lower())
+        # "a bridge with posts 2 …, then another one": the posts are the bridge's own
+        said = re.findall(r"[a-z]+", _OWN_PARTS.sub(r"\1", text[: m.start()]).lower())
         before = [
             w
             for k, w in enumerate(said)

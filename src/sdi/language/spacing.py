@@ -117,9 +117,13 @@ def _several(text: str) -> bool:
     """The command names more than one structure (two shape nouns, a counted plural, a copy)
     and none that spans a gap of its own (a bridge's gap is its span)."""
     said = re.findall(r"[a-z]+", text.lower())
-    if _spanning_named(said) and not _spanning_plural(said):
+    # "an arch, and another one in front of it with a little gap": a copy, the gap between
+    copy = bool({"another", "second", "again", "identical", "copy"} & set(said)) and any(
+        w in lx.SHAPE_WORDS for w in said
+    )
+    if _spanning_named(said) and not _spanning_plural(said) and not copy:
         return False  # a bridge's gap is its span; "two bridges 10 cm apart" is between them
-    return _named_apart(said) or bool(_PLURAL_SHAPES.search(text))
+    return _named_apart(said) or copy or bool(_PLURAL_SHAPES.search(text))
 
 
 def _named_apart(said: list[str]) -> bool:

@@ -25,7 +25,8 @@ NEGATIONS = frozenset({"not", "n't", "no", "never", "without", "nor", "neither",
 # compounds, words that select a reading).
 CONSULTED = _words(
     """
-    top each other along base across both arms something like sized side sides by packed
+    top each other along base bases stem stems bar bars across both arms something like sized
+    side sides by packed
     tightly together height around empty hollow space inside rectangular square per corner
     corners rising fill area densely joined next it separate table lay out into dense
     possible than as cube cubes block blocks part parts piece pieces brick bricks unit units
