@@ -9871,3 +9871,114 @@ def test_terse_changes_copies_into_corners_and_a_tower_on_every_side_of_a_ring()
         r = plan(command)
         assert r.status == "success", r.notes
         assert sorted(_columns(r).values()).count(4) == 4
+
+
+def test_structures_in_a_triangle_or_a_square_of_four():
+    # "Three towers of 4 in a triangle.": in a line (partial)
+    r = _built_as_said("Three towers of 4 in a triangle.", ["tower"] * 3, [4, 4, 4])
+    xs = sorted(x for x, _ in _columns(r))
+    assert xs[0] == xs[1] < xs[2]  # two side by side, the third behind them
+    front = sorted(y for (x, y) in _columns(r) if x == xs[0])
+    back = [y for (x, y) in _columns(r) if x == xs[2]]
+    assert back[0] == pytest.approx(sum(front) / 2)  # centred on the pair
+    assert plan("four towers in a triangle").status == "partial"
+    # "a square of four 2x2 blocks, each 2 high": two blocks of their own, silently
+    r = _built_as_said("Make a square of four 2x2 blocks, each 2 high, with a gap of one between "
+                       "them.", ["block"] * 4, [2] * 16)  # fmt: skip
+    assert len({x for x, _ in _columns(r)}) == 4 and len({y for _, y in _columns(r)}) == 4
+    # "6 towers h2, 2 rows of 3": two rows of cubes built besides, silently
+    r = _built_as_said("6 towers h2, 2 rows of 3, gap 1.", ["tower"] * 6, [2] * 6)
+    assert r.spec.grid == (2, 3)
+
+
+def test_the_two_in_the_middle_of_a_line_and_one_taken_from_between_others():
+    # "make the two in the middle 5 high" of four: a fifth structure or nothing (partial)
+    for command in ("four towers of 2 in a row, a cube apart; make the two in the middle 5 high",
+                    "Line up four 3-high towers with two-cube gaps and bump the middle pair up "
+                    "to 5."):  # fmt: skip
+        r = _built_as_said(command, ["tower"] * 4, None)
+        heights = [h for _, h in sorted(_columns(r).items(), key=lambda kv: kv[0][1])]
+        assert heights[1:3] == [5, 5] and heights[0] == heights[3] != 5
+    r = _built_as_said("Line up four walls, each 3 long and 2 high, one behind the other, a cube "
+                       "apart. The two in the middle go up to 4 high.",
+                       ["wall"] * 4, None)  # fmt: skip
+    assert [s.height for s in r.spec.structures] == [2, 4, 4, 2]
+    # "remove the middle two": the two left keep their places
+    r = _built_as_said("4 towers of 2 in a row, gap 1. remove middle two.", ["tower"] * 2, [2, 2])
+    ys = sorted(y for _, y in _columns(r))
+    assert ys[1] - ys[0] == pytest.approx(0.3)  # three gaps and two towers, centre to centre
+    # "take away the tallest" standing in the middle of three: the others keep their places
+    r = _built_as_said("three towers of 2, 5 and 3 in a row, a cube apart. take away the tallest",
+                       ["tower"] * 2, [2, 3])  # fmt: skip
+    ys = sorted(y for _, y in _columns(r))
+    assert ys[1] - ys[0] == pytest.approx(0.2)
+
+
+def test_one_of_a_line_counted_from_its_side_and_made_taller():
+    # "the second from the right" of a line said no way: every tower 4 high (partial)
+    r = _built_as_said("four towers of 2 in a row. make the second from the right 4 high",
+                       ["tower"] * 4, None)  # fmt: skip
+    heights = [h for _, h in sorted(_columns(r).items(), key=lambda kv: kv[0][1])]  # from right
+    assert heights == [2, 4, 2, 2]
+    # "make the second from the left a bit taller": not read (partial)
+    r = _built_as_said("Three towers of 2 in a row from left to right. Make the second from the "
+                       "left a bit taller.", ["tower"] * 3, [2, 2, 3])  # fmt: skip
+    # "a tower of 3, make it taller": nothing changed, silently
+    _built_as_said("a tower of 3, make it taller", ["tower"], [4])
+    # "the tallest you can manage": 6 high, silently
+    _built_as_said("Could I get a really tall tower — the tallest you can manage?", ["tower"],
+                   [10])  # fmt: skip
+
+
+def test_gaps_and_words_said_around_the_structures():
+    # "leave a gap of one between a 3-cube tower and a 4-cube tower": the gap unused (partial)
+    r = _built_as_said("Can you leave a gap of one between a 3-cube tower and a 4-cube tower?",
+                       ["tower", "tower"], [3, 4])  # fmt: skip
+    assert r.spec.gap_m == pytest.approx(0.05)
+    # "the distance between is 15 cm": unused (partial)
+    r = _built_as_said("Tower of 4, and tower of 4, the distance between is 15 cm.",
+                       ["tower", "tower"], [4, 4])  # fmt: skip
+    assert r.spec.gap_m == pytest.approx(0.15)
+    # "a U form, width 5, arm 4": the arm's length dropped (partial)
+    r = _built_as_said("a U shape, width 5, arm 4.", ["u_shape"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (5, 4)
+    # "a fat little tower — 3 by 3 across and only 2 tall. Doable?": 'fat', 'Doable' unused
+    _built_as_said("I'm thinking a fat little tower — 3 by 3 across and only 2 tall. Doable?",
+                   ["block"], [2] * 9)  # fmt: skip
+    # "tucked into the front-left corner": 'tucked' unused (partial)
+    r = _built_as_said("Could you build a little stair case — three steps — tucked into the "
+                       "front-left corner?", ["staircase"], None)  # fmt: skip
+    assert r.spec.structures[0].region == "front left"
+
+
+def test_the_middle_one_of_a_line_said_with_its_height():
+    # "three towers of 2 in a line, the middle one 5 high": a fourth tower of 5 in the centre
+    # (or all three 5 high), silently
+    for command in ("three towers of 2 in a line, 2 apart, the middle one 5 high",
+                    "Line up three towers of 2 with two-cube gaps, and the one in the middle "
+                    "should be 5 tall",
+                    "Line up three towers of 2, two cubes apart; the centre one gets 5",
+                    ):  # fmt: skip
+        r = _built_as_said(command, ["tower"] * 3, [2, 2, 5])
+        heights = [h for _, h in sorted(_columns(r).items(), key=lambda kv: kv[0][1])]
+        assert heights == [2, 5, 2]
+
+
+def test_heights_said_as_articles_copies_mirrored_and_sizes_after_on_it():
+    # "Two towers, a 4 and a 7, the 7 behind the 4": two towers of 4 at the back (partial)
+    r = _built_as_said("Two towers, a 4 and a 7, the 7 behind the 4.", ["tower", "tower"], [4, 7])
+    cols = sorted(_columns(r).items())  # front (small x) first
+    assert [h for _, h in cols] == [4, 7]
+    # "then make it two times higher": not read (partial)
+    _built_as_said("First make tower of 4. Then make it two times higher. Then take away three "
+                   "cubes.", ["tower"], [5])  # fmt: skip
+    # "then mirror it on the right side": not read (partial)
+    r = _built_as_said("Build a staircase of 3 steps on the left side of the table, then mirror "
+                       "it on the right side.", ["staircase", "staircase"], None)  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["left", "right"]
+    # "a 2x2 block on it, 1 high, in the middle": 'on' related nothing (partial)
+    r = _built_as_said("First a 4x4 slab. Then a 2x2 block on it, 1 high, in the middle. Finally "
+                       "a single cube on top of that.", ["grid", "block", "tower"],
+                       None)  # fmt: skip
+    assert max(o.position[2] + o.size[2] / 2 for o in r.layout.objects) == pytest.approx(0.15)
+    assert sorted(_columns(r).values()).count(2) == 4  # the block on the slab, not beside it

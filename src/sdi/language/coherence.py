@@ -468,6 +468,7 @@ _SEVERAL = frozenset({
     # "another one", "a little one", "one in the back right": more, said without the noun
     "one", "ones", "another", "other", "others", "second", "third", "fourth", "fifth", "trio",
     "quartet", "qty", "count", "array", "set", "sets", "x2", "x3", "x4", "shape", "them",
+    "mirror", "duplicate",
 })  # fmt: skip
 
 

@@ -378,6 +378,9 @@ def _arrangement(m: re.Match[str], st: ReadState, note: str) -> str:
     if groups[0] in ("square", "grid", "block", "array", "pattern", "matrix"):
         st.grid = (0, 1 if groups[0] == "square" else 0, said)
         return " "
+    if groups[0] == "triangle":  # two side by side, the third behind them, centred (`reader`)
+        st.triangle = said
+        return " "
     st.material.append(said)
     st.notes.append(f"ignored '{said}': separate structures are placed side by side in a line")
     return " "
@@ -550,6 +553,8 @@ def _structures_before(m: re.Match[str]) -> bool:
     """The clause before `m` names separate structures in the plural ("four towers of 2"),
     not parts ("nine cubes")."""
     clause = re.split(r"[.;]|\bthen\b", m.string[: m.start()])[-1]
+    if re.search(r"\b\d+\s*(?:x|by)\s*\d+\s+(?:blocks|slabs|pads)\b", clause, re.I):
+        return True  # "four 2x2 blocks in a square": blocks of their own, not cubes
     clause = _PARTS_SIZE.sub(" ", clause)  # "six towers, three cubes tall, in 3 rows of 2"
     nouns = _PLURAL_STRUCTURE.findall(clause)
     return bool(nouns) and nouns[-1].lower() not in ("cubes", "blocks", "things", "ones", "rows")

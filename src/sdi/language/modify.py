@@ -59,7 +59,26 @@ DROP_VERBS = (
 """The verbs that take one of several structures named away ("forget the second one")."""
 
 # (pattern, operation on the height of the structure referred to)
+_MIDDLE_TWO = (
+    r"the\s+(?:two\s+(?:in\s+the\s+(?:middle|centre|center)|middle\s+ones?|inner\s+ones?)|middle\s+(?:two|"
+    r"pair)(?:\s+of\s+them)?|two\s+(?:middle|inner)\s+(?:ones|towers|stacks|columns|pillars))"
+)
+"""The two in the middle of a line of four (or six)."""
+
 MODIFY = [
+    # "4 towers of 2 in a row. remove the middle two": those two taken away
+    _op(r"\b" + DROP_VERBS + r"\s+" + _MIDDLE_TWO.replace("the\\s+", "(?:the\\s+)?", 1) + r"\b",
+        "drop2"),
+    # "four towers of 2 in a row; make the two in the middle 5 high", "bump the middle pair up
+    # to 6", "the two in the middle go up to 4 high": those two, that high
+    _op(
+        r"\b(?:(?:make|raise|bump|bring|take|lower|set|put)\s+" + _MIDDLE_TWO
+        + r"\s+(?:up\s+|down\s+)?(?:to\s+)?|" + _MIDDLE_TWO
+        + r"\s+(?:should\s+)?(?:go|goes|come|be|are)\s+(?:up\s+|down\s+)?"
+        r"(?:to\s+)?)(\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:cubes?\s+)?"
+        r"(?:high|tall))?\b(?!\s*(?:more|less|fewer)\b)",
+        "middle2",
+    ),
     # "build a castle, then make the towers taller (4 high)": its corner towers
     _op(
         r"\bmake\s+(?:the|its|all\s+the)\s+(?:corner\s+)?(?:towers|turrets)\s+(?:(?:taller|higher)\s*"
@@ -94,6 +113,9 @@ MODIFY = [
         r"(?:taller|higher)\b",
         "+",
     ),
+    # "a tower of 3, make it taller": one more (nothing changed, silently)
+    _op(r"\bmake\s+(?:it|that|this)\s+(?:one\s+)?(?:taller|higher)\s*(?:please\s*)?[.!]?\s*$",
+        "+1"),
     # "then make it one layer thicker": one layer more; "make the row 2 longer": its length
     _op(
         r"\bmake\s+" + _REF + r"\s+" + _N + r"\s+(?:more\s+)?(?:levels?\s+|layers?\s+|courses?\s+)"
@@ -799,11 +821,21 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
         if found_at is None:
             return None  # no single one: the command does not say which
         index = found_at
+    every = _built_indices(built)
+    inner = which not in ("middle", "second") and 0 < every.index(index) < len(every) - 1
     gone = _take_out(index, before, built, structures)
     left = sum(q.count for q in built)
-    size = f" (the {gone.shape} {gone.height} high taken away)" if gone.height else ""
+    # "take away the tallest" of three, standing in the middle: the others keep their places
+    # (`spacing`)
+    size = f" (the {gone.shape} {gone.height} high taken away{_INNER if inner else ''})" if (
+        gone.height
+    ) else ""
     side = f", the one on the {which}" if which in ("left", "right", "front", "back") else ""
     return f"{left} left of the {left + 1}{size}{side}"
+
+
+_INNER = ", from the middle of the line"
+"""Said of a structure taken away from between others (`spacing` keeps their places)."""
 
 
 def _take_out(index: int, before: list[Phrase], built: list[Phrase],
@@ -957,6 +989,37 @@ def _on_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
         return None
     structures[pick] = structures[pick].model_copy(update={"height": now})
     return f"the {m.group(2).lower()} tower now has height {now} (was {was})"
+
+
+def _middle_two(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
+                built: list[Phrase], structures: list[StructureDraft]) -> str | None:  # fmt: skip
+    """ "four towers of 2 in a row, then make the two in the middle 5 high" (or "remove the
+    middle two"): of an even number (four or more) of towers or walls named in one line with no
+    place of their own, the two in the middle of the order they stand in, that high (or gone)."""
+    every = _built_indices(built)
+    shapes = {structures[i].shape for i in every}
+    n = words_to_numbers([m.group(1).lower()])[0] if op == "middle2" else "1"
+    if (
+        len(every) < 4
+        or len(every) % 2
+        or len(shapes) != 1
+        or not shapes <= {"tower", "wall"}
+        or any(structures[i].region for i in every)
+        or not n.isdigit()
+        or int(n) < 1
+    ):
+        return None
+    unsaid = 3 if shapes == {"tower"} else 2  # the generators' own heights
+    pair = every[len(every) // 2 - 1 : len(every) // 2 + 1]
+    if op == "drop2":  # "remove the middle two"
+        for i in reversed(pair):
+            _take_out(i, before, built, structures)
+        return f"{len(every) - 2} left of the {len(every)} (the two in the middle taken away)"
+    were = [structures[i].height or unsaid for i in pair]
+    for i in pair:
+        structures[i] = structures[i].model_copy(update={"height": int(n)})
+    return (f"the two middle {structures[pair[0]].shape}s of the line now have height {n} (were "
+            f"{', '.join(str(h) for h in were)})")  # fmt: skip
 
 
 def _middle_of_line(m: re.Match[str], op: str, built: list[Phrase],
@@ -1272,6 +1335,8 @@ _CHANGES: dict[str, Change] = {
     "+one": _on_one,
     "undo": _undo,
     "undo_all": _undo_all,
+    "middle2": _middle_two,
+    "drop2": _middle_two,
 }  # fmt: skip
 """The changes that are not a size of the last structure (`_resize` does those)."""
 

@@ -707,6 +707,38 @@ def _with_sized_one(m: re.Match[str]) -> str:
     return f"with a {family} {m.group(1)} {m.group(2)}"
 
 
+def _middle_one_said(m: re.Match[str]) -> str:
+    """ "three towers of 2 in a line, the middle one 5 high": a change of the middle one of an odd
+    number of towers counted before; as it was when the others are sized by their places too
+    ("the middle one 3 tall, the left one 2 tall, …")."""
+    sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1] + m.string[m.end() :].split(".")[0]
+    counted = re.search(r"\b(?:three|five|seven|[357])\s+(?:[\w-]+\s+)?(?:towers|stacks|columns|"
+                        r"pillars)\b", m.string[: m.start()], re.I)  # fmt: skip
+    if not counted or re.search(r"\b(?:left|right|front|back|outer|outside|end)\s+(?:one|ones|"
+                                r"tower|towers|block)\b", sentence, re.I):  # fmt: skip
+        return m.group(0)
+    return f". make the middle one {m.group(1)} high"
+
+
+def _named_by_height(m: re.Match[str]) -> str:
+    """ "…, the 7 behind the 4": the one of 7 behind the one of 4, when a structure of 7 was
+    named before; as it was otherwise."""
+    if not re.search(rf"\bof\s+{m.group(1)}\b|\ban?\s+{m.group(1)}\b", m.string[: m.start()]):
+        return m.group(0)
+    other = f" the {m.group(3)} one" if m.group(3) else ""
+    return f"the {m.group(1)} one {m.group(2)}{other}"
+
+
+def _heights_as_articles(m: re.Match[str]) -> str:
+    """ "two towers, a 4 and a 7, the 7 behind the 4": a tower of each height (as many as
+    counted), and "the 7" after it the one of 7; as it was when the count differs."""
+    heights = [*re.findall(r"\d+", m.group(3)), m.group(4)]
+    if words_to_numbers([m.group(1).lower()])[0] != str(len(heights)):
+        return m.group(0)
+    noun = m.group(2).lower()[:-1]
+    return " and ".join(f"a {noun} of {h}" for h in heights)
+
+
 def _object_between_dashes(m: re.Match[str]) -> str:
     """ "Behind the wall - four long, two high - …": the relation, its object described (the
     sizes one list), and a comma before the subject."""
@@ -910,6 +942,75 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:in|into|at|to)\s+(?:the\s+|all\s+the\s+)?(?:other|remaining)\s+(?:three|3)"
                 r"(?:\s+corners)?\b", re.I),
      " in each corner"),
+    # "6 towers h2, 2 rows of 3": in those rows (two rows of cubes were built besides)
+    (re.compile(r"(\b(?:\d+|four|six|eight|nine)\s+(?:towers|stacks|columns|pillars|pyramids|blocks|"
+                r"piles)\b[^.;]*?),\s*(?=(?:two|three|four|[2-4])\s+rows\s+of\s+(?:two|three|four|[2-4])\b)",
+                re.I),
+     r"\1, in "),
+    # "a square of four 2x2 blocks, each 2 high": the four in a square (two blocks were built)
+    (re.compile(r"\ba\s+(square|grid)\s+of\s+(four|nine|six|[469])\s+([^,.;]+?)(?=\s*(?:[,.;]|$|\bwith\b))",
+                re.I), r"\2 \3 in a \1"),
+    # "a tower of 2 a bit off to each side of it": to each side ("bit" and "off" were unused)
+    (re.compile(r"\b(?:a\s+(?:little\s+)?bit|slightly)\s+(?:off|out|away)\s+(?=to\b|from\b)", re.I),
+     ""),
+    # "tucked into the front-left corner", "squeezed into the corner": in it
+    (re.compile(r"\b(?:tucked|squeezed|nestled|pushed|snug)\s+(?:up\s+)?(?:into|in)\s+(?=the\b)",
+                re.I),
+     "in "),
+    # "leave a gap of one between a 3-cube tower and a 4-cube tower": the two, that gap apart
+    (re.compile(r"\b(?:leave|put|keep|make)\s+(a\s+gap\s+of\s+(?:\d+|one|two|three)(?:\s+cubes?)?)\s+"
+                r"between\s+(an?\s+[^,.;?!]+?\s+and\s+an?\s+[^,.;?!]+?)(?=\s*(?:[,.;?!]|$))", re.I),
+     r"\2, with \1"),
+    # "the distance between is 15 cm", "the gap between them should be 2 cubes": that far apart
+    (re.compile(r"\bthe\s+(?:distance|gap|space|spacing)\s+between(?:\s+(?:them|the\s+two|each))?\s+"
+                r"(?:is|should\s+be|must\s+be|will\s+be|of)\s+((?:\d+(?:\.\d+)?|one|two|three|four)\s*"
+                r"(?:cm|mm|m|cubes?)\b)", re.I), r"\1 apart"),
+    # "a U form, width 5, arm 4": its arms 4 long
+    (re.compile(r"\b(arms?)\s+(\d+)\b(?!\.\d|\d)(?!\s*(?:(?:cubes?|blocks?|parts?|bricks?)\s+)?(?:long|high|"
+                r"tall|wide|x|by|and|n|&|cm|mm|m)\b)", re.I),
+     r"arms \2 long"),
+    # "Doable?", "Is that possible?", "I'm thinking a …": no content
+    (re.compile(r"(?:^|(?<=[.!?;,]\s)|(?<=[\u2014\u2013-]\s))\s*(?:is\s+(?:that|this|it)\s+)?"
+                r"(?:doable|possible|feasible|ok(?:ay)?|alright)\s*\?", re.I), " "),
+    (re.compile(r"\bi'?m\s+thinking(?:\s+of)?\s+(?=an?\s)", re.I), ""),
+    # "a fat little tower — 3 by 3 across": its footprint said ("fat" was unused)
+    (re.compile(r"\b(?:fat|chunky|stout|thick)\s+(?=(?:little\s+|short\s+|low\s+)?(?:tower|column|pillar|"
+                r"stack|block)\b[^.;]*?\b\d+\s*(?:x|by)\s*\d+)", re.I), ""),
+    # "the tallest you can manage": the tallest that fits
+    (re.compile(r"\bthe\s+tallest(?:\s+one)?\s+(?:you|it|the\s+robot)\s+can\s+(?:manage|make|build|do|"
+                r"go|get)\b", re.I), "as tall as possible"),
+    # "a really tall tower, as tall as possible": the tallest ("tall" made it 6)
+    (re.compile(r"\b(?:really\s+|very\s+|super\s+)?tall\s+(?=(?:tower|column|stack|pillar)\b[^.;?]*\bas\s+"
+                r"(?:tall|high)\s+as\s+(?:possible|you\s+can|it\s+can))", re.I), ""),
+    # "make the second one a bit taller": taller (the change was not read)
+    (re.compile(r"\b(?:a\s+(?:little\s+)?bit|a\s+little|slightly|somewhat|a\s+touch)\s+(?=(?:taller|higher|"
+                r"shorter|lower|longer|wider|bigger|smaller)\b)", re.I), ""),
+    # "three towers of 2 in a line, the middle one 5 high", "… and the one in the middle should be
+    # 5 tall": a change of the middle one (a fourth tower, or all three 5 high)
+    (re.compile(r"\s*,?\s*(?:and\s+|with\s+|but\s+)?the\s+(?:one\s+(?:smack\s+|right\s+)?in\s+the\s+"
+                r"(?:middle|centre|center)|(?:middle|centre|center)\s+one)\s+(?:(?:is|should\s+be|must\s+"
+                r"be|being|needs\s+to\s+be|gets)\s+)?(" + _NUM
+                + r")(?:\s+(?:cubes?\s+)?(?:high|tall)\b|"
+                r"\s*(?=[.;,!?]|$|\s+and\b))", re.I),
+     _middle_one_said),
+    # "…, the 7 behind the 4": the one of 7 behind the one of 4
+    (re.compile(r"\bthe\s+(\d+)\s+(behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of|next\s+"
+                r"to|beside|on\s+the\s+(?:left|right))(?:\s+(?:the\s+)?(\d+))?\b(?!\s*(?:cubes?|cm|mm|m|"
+                r"high|tall|long)\b)", re.I),
+     _named_by_height),
+    # "Two towers, a 4 and a 7, the 7 behind the 4": a tower of each height, and each named by
+    # its height after (the 7 was lost, both stood at the back)
+    (re.compile(r"\b(two|three)\s+(towers|stacks|columns|pillars)\s*[,:]\s*((?:(?:an?|one)\s+\d+\s*,?"
+                r"\s*)+)(?:and|&)\s+(?:an?|one)\s+(\d+)\b(?!\s*(?:cubes?\s+)?(?:high|tall|long|wide|x|by)\b)",
+                re.I),
+     _heights_as_articles),
+    # "then make it two times higher": twice as tall
+    (re.compile(r"\b(two|three|four|2|3|4)\s+times\s+(?:higher|taller|as\s+(?:high|tall))\b", re.I),
+     lambda m: "twice as tall" if m.group(1).lower() in ("two", "2")
+     else f"{m.group(1)} times as tall"),
+    # "then mirror it on the right side": another one there
+    (re.compile(r"\b(?:mirror|copy|repeat|duplicate)\s+(?:it|that|this)\s+(?=(?:on|to|at)\s+the\s+(?:left|"
+                r"right|front|back|other)\b)", re.I), "another one "),
     # "T shape flat, bar 5 stem 3": terse parts and sizes, one after another without commas
     (re.compile(r"\b(bar|stem|arms?|base|legs?|posts?|pillars?|beam|top)\s+(\d+)\s+(?=(?:bar|stem|arms?|"
                 r"legs?|posts?|pillars?|beam|height|length|width|gap)\s+\d)", re.I), r"\1 \2, "),
@@ -2735,8 +2836,9 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(an?|one)\s+(?:lone|solitary|lonely)\s+(?=(?:column|tower|pillar|post|stack|wall|pyramid)\b)",
                 re.I), r"\1 "),
     # "Line up five towers of two, a cube apart": five towers in a line
-    (re.compile(r"\bline\s+up\s+((?:\d+|two|three|four|five|six|seven|eight)\s+[a-z]+s\b[^,.;]*?)(?=\s*(?:[,.;]|$))",
-                re.I), r"\1 in a line"),
+    # "Line up four 3-high towers with two-cube gaps and bump …": the towers' words, then the line
+    (re.compile(r"\bline\s+up\s+((?:\d+|two|three|four|five|six|seven|eight)\s+(?:[\w-]+\s+){0,2}?[a-z]+s\b"
+                r"[^,.;]*?)(?=\s*(?:[,.;]|$|\s(?:and|then)\s+(?!a\b)))", re.I), r"\1 in a line"),
     # "two towers of 6 with a wall between them, 4 long 2 high": the sizes the wall's (they
     # were read as the towers')
     (re.compile(r"\b(an?\s+(?:wall|row|block|slab|pyramid|staircase))\s+(between\s+them)\s*,\s*((?:\d+|two|three|"
@@ -4496,19 +4598,24 @@ def _from_side(text: str, notes: list[str]) -> str:
                     before, re.I)  # fmt: skip
     count = re.search(rf"\b({_NUM})\s+(?:[a-z]+\s+)?(?:towers|stacks|columns|pillars|posts)\b",
                       before, re.I)  # fmt: skip
-    if way is None or count is None:
+    if count is None or (way is None and re.search(
+        r"\b(?:front|back|behind|on\s+the\s+(?:left|right)|at\s+the|corner|centre|center|middle)\b",
+        before, re.I,
+    )):  # fmt: skip
         return text
+    # a line said no way: SDI stands them from right to left, in the order said
+    first, last = (way.group(1).lower(), way.group(2).lower()) if way else ("right", "left")
+    said = way.group(0) if way else "right to left, as SDI places a line said no way"
     n = int(words_to_numbers([count.group(1).lower()])[0])
     which, side = m.group(1).lower(), m.group(2).lower()
     at = n if which == "last" else _ORDINAL_AT[which]
-    if side == way.group(2).lower():
+    if side == last:
         at = n + 1 - at
-    elif side != way.group(1).lower():
+    elif side != first:
         return text
     if not 1 <= at <= min(n, 10):
         return text
-    notes.append(f"read '{m.group(0)}' as the {_ORDINAL_WORD[str(at)]} of the {n} said "
-                 f"{way.group(0)}")
+    notes.append(f"read '{m.group(0)}' as the {_ORDINAL_WORD[str(at)]} of the {n} said {said}")
     return text[: m.start()] + f"the {_ORDINAL_WORD[str(at)]} one" + text[m.end() :]
 
 

@@ -311,6 +311,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
             f"{len(specs)} structures is more than 50", understood=understood_summary(doc)
         )
     relations = _one_each(relations, st)
+    relations = _triangle(relations, len(specs), st)
     relations, specs = _sides_apart(relations, specs, st)
     specs, relations = _listed(specs, relations, st)  # named left to right: placed right to left
     specs = _different(_ordered(specs, relations, st), st)
@@ -468,6 +469,25 @@ def _sides_apart(
     st.notes.append(f"read the {first} and the {second} one, {st.gap_m:g} m apart, as side by side")
     beside = Relation(kind="next_to", subject=1, object=0, side=second)
     return [beside], [s.model_copy(update={"region": None}) for s in specs]
+
+
+def _triangle(relations: list[Relation], n: int, st: ReadState) -> list[Relation]:
+    """ "three towers in a triangle": two side by side, the third behind them, centred on the
+    pair; of any other count, or structures already related, the words are reported (they
+    stood in a line)."""
+    if st.triangle is None:
+        return relations
+    if n != 3 or relations:
+        st.material.append(st.triangle)
+        st.notes.append(f"ignored '{st.triangle}': only three separate structures make a "
+                        "triangle; they are placed side by side in a line")  # fmt: skip
+        return relations
+    st.notes.append(f"read '{st.triangle}' as two side by side and the third behind them, "
+                    "centred")  # fmt: skip
+    return [
+        Relation(kind="next_to", subject=1, object=0, side="left", whole=True),
+        Relation(kind="next_to", subject=2, object=0, side="back"),
+    ]
 
 
 def _one_each(relations: list[Relation], st: ReadState) -> list[Relation]:

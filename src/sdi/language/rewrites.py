@@ -3353,7 +3353,8 @@ _A_SIZE = (
     r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long)\b"
 )
 _SIZE_AFTER_IT = re.compile(
-    r"\b(next\s+to|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of)\s+(it|them)\s*,?\s+"
+    r"\b(next\s+to|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|on\s+top\s+of|on)\s+"
+    r"(it|them)\s*,?\s+"
     r"(" + _A_SIZE + r"(?:\s*,?\s*(?:and\s+)?" + _A_SIZE + r")*)"
     r"(?=\s*(?:[.;,]|$))",
     re.IGNORECASE,

@@ -349,16 +349,20 @@ def take_gap(text: str, st: ReadState) -> str:
     return text
 
 
-_INNER_TAKEN = re.compile(r"^'[^']*\b(?:middle|second|centre|center)\b[^']*': \d+ left of the \d+")
+_INNER_TAKEN = re.compile(
+    r"^'[^']*\b(?:middle|second|centre|center)\b[^']*': \d+ left of the \d+|, from the middle of "
+    r"the line\)$|\(the two in the middle taken away\)$"
+)
 
 
 def _space_kept(spec: Spec, st: ReadState, gap_m: float) -> Spec | None:
-    """The middle one of three one-part-wide structures `gap_m` apart taken away: the two left
-    keep their places, its space between them (None when the two left are not one part wide)."""
+    """The middle one (or two) of one-part-wide structures `gap_m` apart taken away: the two
+    left keep their places, the space between them (None when they are not one part wide)."""
     widths = {getattr(s, "length", None) or 1 for s in spec.structures}
     if len(spec.structures) != 2 or widths != {1}:
         return None
-    gap = round(2 * gap_m + st.cell.cube[1], 6)
+    k = 2 if any(n.endswith("(the two in the middle taken away)") for n in st.notes) else 1
+    gap = round((k + 1) * gap_m + k * st.cell.cube[1], 6)
     st.notes.append(f"the two left keep their places: {gap:g} m between them")
     return spec.model_copy(update={"gap_m": gap})
 

@@ -64,6 +64,7 @@ class ReadState:
     # "four towers in a square", "in two rows of three": (rows, columns), or 0 for each when
     # only the shape was said, with the words said
     grid: tuple[int, int, str] | None = None
+    triangle: str | None = None  # "three towers in a triangle": the words said
     # "with the tallest one in the middle": (what was said, "max" | "min", middle|left|right)
     order: tuple[str, str, str] | None = None
     # "a tower at its low end", "at its foot", "at its high end": beside that end of a staircase
