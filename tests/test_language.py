@@ -9982,3 +9982,130 @@ def test_heights_said_as_articles_copies_mirrored_and_sizes_after_on_it():
                        None)  # fmt: skip
     assert max(o.position[2] + o.size[2] / 2 for o in r.layout.objects) == pytest.approx(0.15)
     assert sorted(_columns(r).values()).count(2) == 4  # the block on the slab, not beside it
+
+
+def test_a_pyramid_counted_by_its_levels_and_cubes_said_in_it():
+    # "one cube at the top, four under that and nine at the bottom": a flat pyramid 9 long
+    for command in ("make me a pyramid that has one cube at the top, four under that and nine at "
+                    "the bottom", "a pyramid with layers of 9, 4 and 1"):  # fmt: skip
+        r = _built_as_said(command, ["pyramid"], None)
+        top = max(o.position[2] + o.size[2] / 2 for o in r.layout.objects)
+        assert len(r.layout.objects) == 14 and top == pytest.approx(0.15)
+    # a pyramid with four layers is no count of cubes
+    assert plan("Kids love a pyramid - make one with four layers.").spec.structures[0].length != 2
+    # "a wall with 10 cubes in it, 5 along the bottom": 'in it' related nothing (partial)
+    _built_as_said("a wall with 10 cubes in it, 5 along the bottom", ["wall"], [2] * 5)
+    # "a 3 by 3 platform with a little pyramid on it, 2 levels": beside it (partial)
+    r = _built_as_said("a 3 by 3 platform with a little pyramid on it, 2 levels",
+                       ["grid", "pyramid"], None)  # fmt: skip
+    assert [rel.kind for rel in r.spec.relations] == ["on_top_of"]
+
+
+def test_walls_facing_each_other_one_more_on_it_and_a_tall_one_and_the_other():
+    # "two walls … facing each other across a 3-cube gap": end to end, 'facing' unused (partial)
+    r = _built_as_said("two walls, 3 long and 2 high, facing each other across a 3-cube gap",
+                       ["wall", "wall"], [2] * 6)  # fmt: skip
+    xs = sorted({x for x, _ in _columns(r)})
+    assert len(xs) == 2 and xs[1] - xs[0] == pytest.approx(0.2)  # parallel, 3 cubes between
+    # "Put two more on it. Then one more.": a second tower (partial)
+    _built_as_said("Make a tower of 3. Put two more on it. Then one more.", ["tower"], [6])
+    # "two towers, a tall one of 6 and the other one 2": two towers of 1 (partial)
+    r = _built_as_said("two towers, a tall one of 6 and the other one 2; put the tall one on the "
+                       "left", ["tower", "tower"], [2, 6])  # fmt: skip
+    left = max(_columns(r).items(), key=lambda kv: kv[0][1])  # left is +y
+    assert left[1] == 6
+
+
+def test_places_said_by_the_robot_and_edges_and_a_change_with_nothing_before_it():
+    # "in the corner closest to the robot on its right": the front left corner, silently
+    r = _built_as_said("Put a tower of 3 at the centre, and a tower of 5 in the corner closest "
+                       "to the robot on its right.", ["tower", "tower"], [3, 5])  # fmt: skip
+    assert r.spec.structures[1].region == "front right"
+    # "the high part is at the back": climbing to the left
+    r = _built_as_said("Staircase with 3 step, the high part is at the back.", ["staircase"], None)
+    cols = sorted(_columns(r).items())  # front (small x) first
+    assert [h for _, h in cols] == [1, 2, 3]
+    # "long side along the back edge": the long side ran front to back
+    r = _built_as_said("Make a slab 2 by 4 in the back, long side along the back edge.", ["grid"],
+                       [1] * 8)  # fmt: skip
+    assert len({x for x, _ in _columns(r)}) == 2 and len({y for _, y in _columns(r)}) == 4
+    # "as far from the robot as it goes": 7.5 cm short of the back edge
+    r = _built_as_said("Slab 3 by 3 as far from the robot as it goes.", ["grid"], [1] * 9)
+    assert r.spec.structures[0].edge == ("back",)
+    # "make the wall longer um by two" with nothing before: a wall 2 long, silently
+    with pytest.raises(SpecError, match="none is named before it"):
+        read("make the wall longer um by two")
+    # "a wall of 4, then make the wall longer by two": its 6 parts, 3 long, silently
+    r = _built_as_said("a wall of 4, then make the wall longer by two", ["wall"], [2] * 6)
+    assert r.spec.structures[0].length == 6
+
+
+def test_everyday_words_around_sizes_places_and_pairs():
+    # each was 'partial' for a word left unused, or built something else, silently
+    for command, shapes, heights in (
+        ("A ring of cubes, one layer, outside size 3 by 3.", ["enclosure"], [1] * 8),
+        ("build a staircase that goes up 25 cm", ["staircase"], [1, 2, 3, 4, 5]),
+        ("Build three towers in a row - 2, 4 and 6 cubes high - with one cube of space between "
+         "neighbours", ["tower"] * 3, [2, 4, 6]),
+        ("Tower of 3, not in the front and not in the back, in the middle line", ["tower"], [3]),
+        ("Build pyramid with 3 level and in the front of it one tower of 2", ["pyramid", "tower"],
+         None),
+        ("small tower (2) on the left, tall tower (8) on the right", ["tower", "tower"], [2, 8]),
+        ("tower 5 cubes and next it a tower 3 cubes, they must touch", ["tower", "tower"], [3, 5]),
+    ):  # fmt: skip
+        _built_as_said(command, shapes, heights)
+    # "a 2x2 block in each of the 4 corners of the table": one block in the middle, silently
+    r = _built_as_said("stick a 2x2 block in each of the 4 corners of the table", ["block"] * 4,
+                       [1] * 16)  # fmt: skip
+    assert {s.region for s in r.spec.structures} == {
+        "back left", "back right", "front left", "front right"
+    }  # fmt: skip
+    # "circling back on the demo layout": the staircase at the back, silently
+    r = _built_as_said("Hi all, circling back on the demo layout. Could we get a staircase of 5 "
+                       "steps in the centre?", ["staircase"], None)  # fmt: skip
+    assert r.spec.structures[0].region == "centre"
+    # "Two walls 4 long and 2 high, one at the front and one at the back": four walls, silently
+    r = _built_as_said("Two walls 4 long and 2 high, one at the front and one at the back, both "
+                       "running left to right.", ["wall", "wall"], None)  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["front", "back"]
+    # "that does not climb towards the left or the right": to the right, silently
+    r = _built_as_said("Make a staircase of 4 steps that does not climb towards the left or the "
+                       "right.", ["staircase"], None)  # fmt: skip
+    assert r.spec.structures[0].axis == "x"
+    # "an L shpae with amrs of 5": 'amrs' unused, an L 3 by 3
+    r = _built_as_said("an L shpae with amrs of 5", ["l_shape"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].width) == (5, 5)
+
+
+def test_a_tower_for_each_of_three_walls_in_a_square_and_the_floor_beside_the_table():
+    # "a tower for each of my 3 kids": one tower, silently
+    _built_as_said("a tower for each of my 3 kids please, all different heights, in a line",
+                   ["tower"] * 3, [2, 3, 4])  # fmt: skip
+    # "put tower of 4 on the corner of it": at the table's back left corner, silently
+    r = _built_as_said("First you build slab 3x3. After, you put tower of 4 on the corner of it.",
+                       ["grid", "tower"], None)  # fmt: skip
+    assert [rel.kind for rel in r.spec.relations] == ["on_top_of"]
+    # "Four walls, 4 long, 2 high, in a square so they box in an empty space": six structures
+    r = _built_as_said("Four walls, 4 long, 2 high, in a square so they box in an empty space.",
+                       ["enclosure"], [2] * 12)  # fmt: skip
+    # "on the floor next to the table": built on the table, silently
+    assert plan("put a 3-high tower on the floor next to the table").status == "partial"
+    # "the three to stand in one line": a row of 3 besides, silently
+    r = plan("A tower of four cubes shall stand between two towers of two cubes each, the three "
+             "to stand in one line.")  # fmt: skip
+    assert [s.shape for s in r.spec.structures] == ["tower"] * 3
+
+
+def test_two_changes_in_one_step_a_cube_count_and_a_place_pointed_at():
+    # "Take 3 off and move it to the front left": still 6 high, silently
+    r = _built_as_said("Tower of 6 at the back right. Take 3 off and move it to the front left.",
+                       ["tower"], [3])  # fmt: skip
+    assert r.spec.structures[0].region == "front left"
+    # "Staircase. Cube count: exactly 10.": 10 steps, silently
+    _built_as_said("Staircase. Cube count: exactly 10.", ["staircase"], [1, 2, 3, 4])
+    # "Let's raise the middle one to 4": nothing raised, silently
+    _built_as_said("Three towers in a row, left to right: 4, 2, 4. Let's raise the middle one to "
+                   "4.", ["tower"] * 3, [4, 4, 4])  # fmt: skip
+    # "put a tower um over there": a tower in the middle, silently
+    r = plan("put a tower um over there")
+    assert r.status == "partial" and any("cannot see" in n for n in r.notes)

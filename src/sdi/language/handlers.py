@@ -723,6 +723,16 @@ def _unsupported(m: re.Match[str], st: ReadState, note: str) -> str:
     )  # fmt: skip
 
 
+def _pointed(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "put a tower um over there": a place pointed at, which SDI cannot see."""
+    if re.search(r"\b(?:left|right|front|back|centre|center|middle|corner|x\s*=?\s*\d)", st.command,
+                 re.IGNORECASE):  # fmt: skip
+        st.notes.append(f"read '{_said(m)[0]}' as the place said")  # "… on the right, over there"
+        return " "
+    why = "a place pointed at, which SDI cannot see; say where (e.g. 'on the left', 'at x 40 cm')"
+    return _cannot(m, st, why)
+
+
 def _impossible(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "two towers in the same spot", "on top of itself", "a tall short tower": what no
     layout can be, material with why."""
@@ -1341,6 +1351,7 @@ def _part_size(m: re.Match[str], st: ReadState, note: str) -> str:
 
 # Rewrites whose replacement is computed: the `_REWRITES` entry names one of these.
 HANDLERS: dict[str, Handler] = {
+    "{pointed}": _pointed,
     "{compared_one}": _compared_one,
     "{split}": lambda m, st, note: _split(m, st),
     "{no_stack}": _no_stack,

@@ -142,7 +142,8 @@ MODIFY = [
     # "a staircase of 3 steps, then extend it to 5 steps", "then raise it to 6"
     _op(
         r"\b(?:extend|raise|grow|increase|lengthen|heighten|bring|take|top\s+up)\s+"
-        r"(?:it|them|the\s+(?:tower|stack|row|wall|staircase|stairs|pyramid|column))\s+(?:up\s+)?"
+        r"(?:it|them|the\s+(?:tower|stack|row|wall|staircase|stairs|pyramid|column)|the\s+(?:middle|centre|"
+        r"center|first|second|third|last|left|right|front|back)\s+(?:one|tower|stack|column))\s+(?:up\s+)?"
         r"to\s+" + _N + r"(?:\s+(?:steps|cubes?|levels?|layers?|storeys?))?"
         r"(?:\s+(?:high|tall|long))?(?!\s*(?:cm|mm|m|x|by)\b)",
         "=main",
@@ -1160,9 +1161,11 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         return None  # "take 2 off the left one" with no single one on the left: said, unused
     extreme = re.search(
         r"\bthe\s+(taller|tallest|higher|highest|bigger|biggest|larger|largest|shorter|shortest|lower|"
-        r"lowest|smaller|smallest|tall|short|big|small)\s+(?:one|tower|stack|column|pillar)\b",
+        r"lowest|smaller|smallest)\s+(?:one|tower|stack|column|pillar)\b",
         p.text,
         re.I,
+    ) or re.search(  # "make the tall one 3": said in the change itself
+        r"\bthe\s+(tall|short|big|small)\s+(?:one|tower|stack|column|pillar)\b", m.group(0), re.I
     )
     named = re.search(
         r"\b(?:off|from|to|on)\s+the\s+(\w+)\s+(?:one|tower|stack|column|pillar)\b", p.text, re.I
@@ -1214,6 +1217,19 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         key = key or _main_slot(last) or _slot_said(m.group(0), last)
         if key is None:
             return None
+    lengthwise = re.search(r"\b(?:longer|lengthen|extend|shorter|shorten)\b", m.group(0), re.I)
+    if (
+        lengthwise
+        and last.shape in ("wall", "row")
+        and last.count
+        and last.length is None
+        and (last.shape == "row" or (last.count <= 4 and last.height is None))
+    ):
+        # "a wall of 4, then make the wall longer by two": 4 long, 6 long now (its 4 were read as
+        # all its parts: 3 long, 2 high)
+        last = last.model_copy(update={"length": last.count, "count": None})
+        structures[index] = last
+        key = "length"
     if op in ("-", "-1") and last.shape == "pyramid" and re.search(r"\btop\b", p.text, re.I):
         # its top taken off a pyramid is a cut-off pyramid on the same base, not a smaller one
         base = last.length or last.width or last.height

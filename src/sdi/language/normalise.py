@@ -720,6 +720,29 @@ def _middle_one_said(m: re.Match[str]) -> str:
     return f". make the middle one {m.group(1)} high"
 
 
+def _pyramid_counted(m: re.Match[str]) -> str:
+    """ "a pyramid …, one cube at the top, four under that and nine at the bottom": levels of 1,
+    4 and 9 cubes (three levels or more) make a square pyramid 3 x 3, the places said kept; any
+    other numbers stay."""
+    said = [int(n) for n in words_to_numbers(re.findall(r"[a-z]+|\d+", m.group(2).lower()))
+            if n.isdigit()]  # fmt: skip
+    side = round(max(said) ** 0.5) if said else 0
+    if side < 3 or sorted(said) != [k * k for k in range(1, side + 1)]:
+        return m.group(0)
+    places = re.findall(r"\b(?:on|at|in)\s+the\s+(?:back|front|left|right|middle|centre|center)"
+                        r"(?:\s+(?:left|right))?(?:\s+corner)?\b", m.group(2), re.I)  # fmt: skip
+    return f"{m.group(1)} {side} x {side}" + "".join(f" {p}" for p in places)
+
+
+def _walls_in_square(m: re.Match[str]) -> str:
+    """ "four walls, 4 long, 2 high, in a square": a ring 4 by 4, 2 high."""
+    long = re.search(r"(\d+|two|three|four|five|six)\s+(?:cubes?\s+)?long", m.group(1), re.I)
+    high = re.search(r"(\d+|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall)", m.group(1),
+                     re.I)
+    side = f" {long.group(1)} by {long.group(1)}" if long else ""
+    return f"a ring{side}" + (f", {high.group(1)} high" if high else "")
+
+
 def _named_by_height(m: re.Match[str]) -> str:
     """ "…, the 7 behind the 4": the one of 7 behind the one of 4, when a structure of 7 was
     named before; as it was otherwise."""
@@ -1011,6 +1034,103 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "then mirror it on the right side": another one there
     (re.compile(r"\b(?:mirror|copy|repeat|duplicate)\s+(?:it|that|this)\s+(?=(?:on|to|at)\s+the\s+(?:left|"
                 r"right|front|back|other)\b)", re.I), "another one "),
+    # "a pyramid with one cube at the top, four under that and nine at the bottom": its levels
+    # counted, a square pyramid 3 x 3 (read as a flat one 9 long)
+    (re.compile(r"\b(pyramid)\b([^.;]*)", re.I), _pyramid_counted),
+    # "a wall with 10 cubes in it, 5 along the bottom": of 10 cubes ("in it" related nothing)
+    (re.compile(r"\bwith\s+(\d+|" + _NUM + r")\s+(cubes|blocks|bricks)\s+in\s+(?:it|total|all)\b",
+                re.I), r"of \1 \2"),
+    # "two walls, 3 long and 2 high, facing each other across a 3-cube gap": one behind the
+    # other, that gap between ('facing' was unused)
+    (re.compile(r"\b((?:two|2)\s+(?:walls|fences|rows|barriers)\b[^.;]*?)\s*,?\s*\bfacing\s+(?:each\s+"
+                r"other|one\s+another)\s+across\s+(?=an?\s|\d|one|two|three)", re.I),
+     r"\1, one behind the other, with "),
+    # "Put two more on it. Then one more.": one more on it (another tower was built)
+    (re.compile(r"(\b(?:put|add|stack|place)\s+(?:\d+|two|three|four|five|another|one)\s+more(?:\s+"
+                r"cubes?)?\s+on\s+(?:it|top)\b[^.;]*[.;]\s*(?:and\s+)?then\s+)(one|two|three|\d+)\s+more\s*"
+                r"(?=[.;!]|$)", re.I),
+     r"\1put \2 more on it"),
+    # "two towers, a tall one of 6 and the other one 2": a tower of each
+    (re.compile(r"\b(?:two|2)\s+(towers|stacks|columns|pillars)\s*,\s*(?:an?|one)\s+(?:tall|high|big|short|"
+                r"small|low)\s+one\s+(?:of\s+)?(\d+)\s+and\s+(?:the\s+other(?:\s+one)?|a\s+(?:short|small|low|"
+                r"tall|big)\s+one)\s+(?:of\s+)?(\d+)\b", re.I),
+     lambda m: f"a {m.group(1)[:-1]} of {m.group(2)} and a {m.group(1)[:-1]} of {m.group(3)}"),
+    # "a tower of 5 in the corner closest to the robot on its right": the front right corner
+    (re.compile(r"\bthe\s+corner\s+(?:that'?s\s+|which\s+is\s+)?(?:(closest|nearest)\s+(?:to\s+)?|(?:furthest|"
+                r"farthest)\s+(?:away\s+)?from\s+)(?:the\s+)?robot\s*,?\s*(?:on\s+(?:its|the)\s+|to\s+the\s+)"
+                r"(left|right)\b", re.I),
+     lambda m: f"the {'front' if m.group(1) else 'back'} {m.group(2).lower()} corner"),
+    # "Staircase with 3 step, the high part is at the back": climbing to the back
+    (re.compile(r"\s*,?\s*(?:with\s+)?the\s+(?:high|higher|tall|taller|top)\s+(?:part|end|side|step)\s+(?:is\s+|"
+                r"being\s+|should\s+be\s+|goes\s+)?(?:at|on|to|towards)\s+the\s+(back|front|left|right)\b",
+                re.I), r" going up to the \1"),
+    # "long side along the back edge": running left to right, against it
+    (re.compile(r"\blong(?:er)?\s+side\s+(?:along|against|on|at)\s+the\s+(back|front)(\s+edge)?\b",
+                re.I), r"long side running left to right, along the \1 edge"),
+    # "outside size 3 by 3", "size 4 by 4": the size ('size' was unused)
+    (re.compile(r"\b(?:(outside|outer|inside|inner)\s+)?size\s*(?:of\s+|is\s+|:\s*)?"
+                r"(?=\d+\s*(?:x|by)\s*\d)", re.I),
+     lambda m: f"{m.group(1)} " if m.group(1) else ""),
+    # "a staircase that goes up 25 cm": that high
+    (re.compile(r"\b(?:that|which)\s+(?:goes|rises|climbs|reaches)\s+(?:up\s+)?(?:to\s+)?(?=(?:\d+(?:\.\d+)?\s*"
+                r"(?:cm|mm|m)|\d+\s+cubes?)\b)", re.I), ""),
+    # "one cube of space between neighbours": between them
+    (re.compile(r"\bbetween\s+(?:the\s+)?(?:neighbou?rs|each\s+neighbou?r|neighbou?ring\s+ones)\b",
+                re.I),
+     "between them"),
+    # "in the middle line": in the middle
+    (re.compile(r"\bin\s+the\s+(?:middle|centre|center)\s+line\b", re.I), "in the middle"),
+    # "a ring 5 x 5 of one height": one high
+    (re.compile(r"\bof\s+(one|two|three|\d)\s+height\b", re.I), r"\1 high"),
+    # "in the front of it": in front of it
+    (re.compile(r"\bin\s+the\s+front\s+of\s+(?=it\b|them\b|the\b)", re.I), "in front of "),
+    # "small tower (2) on the left": a tower of 2
+    (re.compile(r"\b(tower|stack|column|pillar|wall|row)\s*\(\s*(\d+)\s*\)", re.I), r"\1 of \2"),
+    # "stick a 2x2 block in each of the 4 corners of the table": in each corner
+    (re.compile(r"\bin\s+each\s+of\s+the\s+(?:4|four)\s+corners\b", re.I), "in each corner"),
+    # "they must touch", "they should be touching": touching
+    (re.compile(r"\s*,?\s*(?:and\s+)?they\s+(?:must|should|have\s+to|need\s+to)\s+(?:be\s+)?touch(?:ing)?"
+                r"(?:\s+each\s+other)?\b", re.I), ", touching"),
+    # "Hi all, circling back on the demo layout": no place ('back' was read as the back)
+    (re.compile(r"\bcircling\s+back(?:\s+(?:on|to)\b[^.,;!?]*)?", re.I), " "),
+    # "small tower of 2 on the left, tall tower of 8 on the right": each its article (the
+    # second was read as the first's relation)
+    (re.compile(r"(?:^|(?<=[,;.]\s)|(?<=\band\s))\s*(?=(?:small|tall|big|little|short|low|wide|long|high)\s+"
+                r"(?:tower|stack|column|pillar|wall|row|slab|block|pyramid|staircase)\b)", re.I),
+     " a "),
+    # "a staircase that does not climb towards the left or the right": to the back (read as
+    # climbing to the right)
+    (re.compile(r"\b(?:that\s+|which\s+)?(?:does\s+not|doesn'?t|should\s+not|shouldn'?t|not|never)\s+(?:climb|go|"
+                r"rise|run)(?:s|ing)?\s+(?:up\s+)?(?:towards|to)\s+(?:the\s+)?(?:left\s+or\s+(?:the\s+)?right|right\s+"
+                r"or\s+(?:the\s+)?left|front\s+or\s+(?:the\s+)?back|back\s+or\s+(?:the\s+)?front)\b",
+                re.I),
+     lambda m: "going up to the back" if re.search(r"left|right", m.group(0), re.I)
+     else "going up to the left"),
+    # "…, the three to stand in one line": in a line (a row of 3 was built besides, silently)
+    (re.compile(r"\bthe\s+(?:two|three|four|five|both|lot)\s+(?:of\s+them\s+)?(?:(?:to\s+|should\s+|must\s+|shall\s+)?"
+                r"(?:stand|be|sit|go)\s+|standing\s+|are\s+|being\s+)?(?=in\s+(?:one|a)\s+(?:straight\s+)?(?:line|row)"
+                r"\b)", re.I), ""),
+    # "a tower for each of my 3 kids": three towers
+    (re.compile(r"\ban?\s+(tower|stack|column|pillar|pyramid|wall|row|staircase)\s+for\s+each\s+of\s+(?:my|the|our|"
+                r"his|her|their)\s+(\d+|two|three|four|five|six)\s+[a-z]+\b", re.I), r"\2 \1s"),
+    # "put tower of 4 on the corner of it": on one corner of its top (the table's corner)
+    (re.compile(r"\bon\s+the\s+corner\s+of\s+(it|that|the\s+(?:slab|block|platform|square|base|pad))\b",
+                re.I),
+     r"on one corner of \1"),
+    # "4 walls in a square and a tower in the middle", "Four walls, 4 long, 2 high, in a square":
+    # a ring (walls apart, or one square slab)
+    (re.compile(r"\b(?:four|4)\s+walls\b((?:\s*,?\s*(?:each\s+)?(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
+                r"(?:long|high|tall))*)\s*,?\s*(?:in|forming|making|as)\s+a\s+square\b", re.I),
+     _walls_in_square),
+    # "in a square so they box in an empty space": what for (a box was built of 'box')
+    (re.compile(r"\s*,?\s*\bso\s+(?:that\s+)?(?:they|it)\s+(?:box|fence|close|wall|shut|enclose)s?\s+(?:in\s+)?"
+                r"(?:an?\s+)?(?:empty\s+|open\s+)?(?:space|area|yard|square|court)\b", re.I), ""),
+    # "Take 3 off and move it to the front left": two changes (the first was dropped, silently)
+    (re.compile(r"\b((?:take|knock|remove)\s+\w+\s+(?:cubes?\s+)?off(?:\s+(?:it|the\s+top))?)\s+and\s+(?:then\s+)?"
+                r"(?=(?:move|shift|slide|put|place)\s+it\b)", re.I), r"\1. then "),
+    # "Staircase. Cube count: exactly 10.": built of 10 cubes (10 steps were built)
+    (re.compile(r"\s*[.;,]?\s*(?<!total\s)\b(?:cube|block)\s+count\s*(?::|is|of)?\s*(?:exactly\s+|precisely\s+|"
+                r"just\s+)?(\d+)\b", re.I), r" using \1 cubes"),
     # "T shape flat, bar 5 stem 3": terse parts and sizes, one after another without commas
     (re.compile(r"\b(bar|stem|arms?|base|legs?|posts?|pillars?|beam|top)\s+(\d+)\s+(?=(?:bar|stem|arms?|"
                 r"legs?|posts?|pillars?|beam|height|length|width|gap)\s+\d)", re.I), r"\1 \2, "),
@@ -1345,7 +1465,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      r"slab\1\2"),
     # "flat on the floor", "on the ground", "on the bench": on the table (the floor was a grid)
     (re.compile(r"\b(on|onto)\s+the\s+(?:floor|ground|bench|workbench|mat|carpet|work\s+surface|counter|worktop|countertop)\b"
-                r"(?!\s+(?:of|plan))", re.I), r"\1 the table"),
+                r"(?!\s+(?:of|plan|(?:next\s+to|beside|by|near|in\s+front\s+of|behind)\s+the\s+(?:table|bench)))",
+                re.I), r"\1 the table"),
     # "one of those Egyptian pyramids": one pyramid (a pyramid of 1 was built, and a grid)
     (re.compile(r"\bone\s+of\s+(?:those|these)\s+((?:[a-z-]+\s+){0,2}?)([a-z]+s)\b", re.I),
      lambda m: next((f"a {m.group(1)}{w}" for w in (m.group(2)[:-1], m.group(2)[:-2])
@@ -1707,7 +1828,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      else f"to the {m.group(2)} of {m.group(1)}" if m.group(2) else f"next to {m.group(1)}"),
     # "as far from the robot as the table goes": flush with the back edge
     (re.compile(r"\bas\s+far\s+(?:away\s+)?from\s+the\s+robot\s+as\s+(?:the\s+(?:table|cell|"
-                r"workspace)\s+(?:goes|allows|lets\s+it)|it\s+(?:can|will)\s+go|possible|you\s+can)\b",
+                r"workspace)\s+(?:goes|allows|lets\s+it)|it\s+(?:can|will)\s+go|it\s+goes|possible|you\s+"
+                r"can)\b",
                 re.I), " as far back as it can go "),
     # "Behind the throne - a 2 by 2 block one high - looms a pillar of seven", "Behind the wall
     # - four long, two high - a tower of three": the fronted relation's object described between

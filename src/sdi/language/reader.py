@@ -139,6 +139,17 @@ _ONLY_A_QUESTION = re.compile(
 feeder?"): an 8-cube row was built for its 'many'."""
 
 
+_ONLY_A_CHANGE = re.compile(
+    r"^\W*(?:(?:um+|uh+|er+|ok(?:ay)?|so|now|and|then|please|just|right)\W+)*(?:(?:can|could|would)\s+"
+    r"you\s+)?(?:please\s+)?(?:make|extend|lengthen|shorten|raise|lower|widen|grow)\s+(?:the\s+\w+|it|"
+    r"that|this|them)\s+(?:(?:um+|uh+|er+)\s+)?(?:a\s+(?:bit|little)\s+)?(?:longer|taller|shorter|"
+    r"higher|wider|bigger|smaller|lower)\b[^.;!?]*[.!?]?\s*$",
+    re.IGNORECASE,
+)
+"""A command that only changes a structure, none named before ("make the wall longer by two"):
+a wall 2 long was built."""
+
+
 def read(command: str, cell: CellConfig | None = None) -> Reading:
     """Read `command`; `SpecError` (with `understood`) when it names nothing buildable."""
     cell = cell or CellConfig()
@@ -165,6 +176,12 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         raise SpecError(
             f"'{command.strip()}' is a question, not something to build; SDI builds what a "
             "command names (e.g. 'a tower of 4 cubes')",
+            understood={},
+        )
+    if _ONLY_A_CHANGE.match(command):
+        raise SpecError(
+            f"'{command.strip()}' changes a structure, but none is named before it; say what to "
+            "build first (e.g. 'a wall of 4, then make it longer by two')",
             understood={},
         )
     st = ReadState(command, cell)

@@ -1874,11 +1874,23 @@ _REWRITES += [
         "{impossible}",
         "",
     ),
+    (  # "put a tower um over there", "right here": a place pointed at
+        re.compile(
+            r"\b(?:(?:somewhere\s+)?over\s+(?:there|here|yonder)|right\s+(?:there|here)|just\s+(?:there|here)|"
+            r"(?:put|place|set|build)\s+(?:it|that|one)\s+(?:there|here))\b(?!\s*(?:is|are|was|were)\b)",
+            re.IGNORECASE,
+        ),
+        "{pointed}",
+        "",
+    ),
     (  # "a staircase going down into the table", "floating above the table": not buildable
         re.compile(
             r"\b(?:going\s+|sunk\s+|dug\s+|reaching\s+)?(?:down\s+)?(?:into|under|below|beneath|through)\s+"
             r"the\s+(?:table|floor|surface|ground)(?:\s+surface)?\b|"
             r"\b(?:outside|off|beyond|past)\s+(?:of\s+)?the\s+(?:table|workspace|cell|bench)(?:'s\s+edge)?\b|"
+            # "on the floor next to the table": off the table
+            r"\bon\s+the\s+(?:floor|ground)\s+(?:next\s+to|beside|by|near|in\s+front\s+of|behind)\s+"
+            r"the\s+(?:table|bench|cell)\b|"
             r"\b(?:floating|hovering|hanging|"
             r"suspended)\b(?:\s+(?:\d+(?:\.\d+)?\s*(?:cm|mm|m)\s+)?(?:above|over|off)\s+the\s+"
             r"(?:table|floor|surface|ground))?|\bin\s+(?:mid-?\s*air|the\s+air)\b",
@@ -3004,8 +3016,8 @@ _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5]|both|a\s+(?:couple|pair)\s+of)\s+((?:[\w-]+\s+)?"
     r"(?:\d+\s*(?:x|by|×)\s*\d+(?:\s*(?:x|by|×)\s*\d+)?\s+)?)("
     + _SHAPE_ALT + r")s\b"
-    r"((?:\s+(?:of|with)\s+[\w\s-]+?|\s*,?\s*(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
-    r"(?:high|tall|long|wide)(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
+    r"((?:\s+(?:of|with)\s+[\w\s-]+?|(?:\s*,?\s*(?:and\s+)?(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
+    r"(?:high|tall|long|wide))+(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
     r"(?P<together>\s+(?:side\s+by\s+side|next\s+to\s+each\s+other|in\s+a\s+row))?"
     r"(?:\s*,?\s*please)?\s*[:,;]\s*(?P<items>(?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
@@ -3041,7 +3053,8 @@ def _other_side(m: re.Match[str]) -> str:
 
 # "a single cube in each of the four corners of the table": one in each corner region
 _CORNERS = re.compile(
-    r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*((?:(?:an?|one|a\s+single|single)\s+)?"
+    r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*(?:(?:please\s+)?(?:put|place|stick|set|build|"
+    r"make|stand|pop|add)\s+)?((?:(?:an?|one|a\s+single|single)\s+)?"
     r"(?:\S+\s+){0,3}?(?:cube|block|brick|tower|stack|column|pyramid|pad|slab)s?"
     r"(?:\s+(?:of\s+)?(?:\d+|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:cubes?|high|tall|"
     r"levels?))?)?)\s+"
@@ -3350,7 +3363,8 @@ _LIKENESS_SIZE = re.compile(rf"\b{_N}\s*(?:x|by)\s*{_N}(?:\s*(?:x|by)\s*{_N})?\b
 """A size said inside a likeness ("like a floor six by six")."""
 
 _A_SIZE = (
-    r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long)\b"
+    r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+(?:cubes?\s+)?(?:high|tall|long|"
+    r"levels|layers|steps|tiers)\b"
 )
 _SIZE_AFTER_IT = re.compile(
     r"\b(next\s+to|beside|behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|on\s+top\s+of|on)\s+"

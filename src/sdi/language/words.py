@@ -103,7 +103,7 @@ CORRECTABLE = frozenset(
         "millimetres", "millimeters", "corner", "pyramid", "staircase", "enclosure",
         "column", "bridge", "tower", "castle", "canopy", "please", "build", "place", "the",
         "shape", "shaped", "with", "make", "put", "and", "high", "long", "wide", "cubes",
-        "next", "behind", "front", "stack", "apart", "away",
+        "next", "behind", "front", "stack", "apart", "away", "arms", "base", "legs", "steps",
     }
 )  # fmt: skip
 
