@@ -10109,3 +10109,57 @@ def test_two_changes_in_one_step_a_cube_count_and_a_place_pointed_at():
     # "put a tower um over there": a tower in the middle, silently
     r = plan("put a tower um over there")
     assert r.status == "partial" and any("cannot see" in n for n in r.notes)
+
+
+def test_towers_on_top_at_each_end_and_cubes_removed_from_one_named_by_side():
+    # "put a tower of 2 at each end on top": refused, the relations read as a cycle
+    r = _built_as_said("wall 4 long 2 high then put a tower of 2 at each end on top",
+                       ["wall", "tower"], None)  # fmt: skip
+    assert sorted(_columns(r).values()) == [2, 2, 4, 4]
+    # "remove two cubes from the one on the right": refused as taking parts out (partial)
+    r = _built_as_said("First make two towers of 4 side by side, one cube apart. Then remove two "
+                       "cubes from the one on the right.", ["tower", "tower"], [2, 4])  # fmt: skip
+    right = min(_columns(r).items(), key=lambda kv: kv[0][1])  # right is -y
+    assert right[1] == 2
+    # "Keep everything on the right-hand side — a 3 by 3 slab over there": the place said
+    r = _built_as_said("Keep everything on the right-hand side — a 3 by 3 slab over there, one "
+                       "layer.", ["grid"], [1] * 9)  # fmt: skip
+
+
+def test_a_beam_across_two_towers_named_in_sentences_of_their_own():
+    # "Make a tower of 3. … one more tower of 3 at right of it … put a beam across them": the
+    # beam was dropped ('them' named only the first tower)
+    for last in ("put a beam across them.", "put beam on both."):
+        r = _built_as_said("Make a tower of 3. After this, make one more tower of 3 at right of "
+                           f"it, with gap 1 cube. After this, {last}", ["bridge"],
+                           None)  # fmt: skip
+        assert r.spec.structures[0].height == 3
+
+
+def test_moves_said_with_a_pronoun_or_a_distance_and_places_swapped():
+    # "Then you move him to the right side": refused as moving what was built (partial)
+    r = _built_as_said("Make a tower of 3 cube on the left side. Then you move him to the right "
+                       "side.", ["tower"], [3])  # fmt: skip
+    assert r.spec.structures[0].region == "right"
+    # "shift the whole thing to the back": likewise
+    r = _built_as_said("A 2 by 2 block, 2 high, at the front. Add another layer, then shift the "
+                       "whole thing to the back.", ["block"], [3] * 4)  # fmt: skip
+    assert r.spec.structures[0].region == "back"
+    # "slide it left by 2 cubes": likewise
+    r = plan("Place a tower, 3 high, at x 50 cm, y 30 cm. Then slide it left by 2 cubes.")
+    assert r.spec.structures[0].at_y == pytest.approx(0.4)
+    # "Swap their places", "change the place of them": likewise
+    r = _built_as_said("Tower of 2 at the back and tower of 6 at the front. Swap their places.",
+                       ["tower", "tower"], [2, 6])  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["front", "back"]
+
+
+def test_a_count_removed_in_a_sentence_of_its_own():
+    # "Remove 1." between other changes: refused as taking parts out (partial)
+    _built_as_said("a tower of 4. remove 1.", ["tower"], [3])
+    r = _built_as_said("row 6. remove 2.", ["row"], [1] * 4)
+    # the count of a staircase said on its own: its steps were 10
+    _built_as_said("Staircase. Cube count: exactly 10.", ["staircase"], [1, 2, 3, 4])
+    # a count said after sized structures stays a claim, checked
+    r = plan("a tower of 5 and a wall 4 long, cube count 13")
+    assert r.status == "success" and any("holds" in n for n in r.notes)

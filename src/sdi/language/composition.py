@@ -654,7 +654,16 @@ def _join(
             if q.count == 1 and q.spec is not None and q.first not in drop
             and replace.get(q.first, structures[q.first]).shape == "tower"
         ]  # fmt: skip
-        if before:
+        singles = [  # "a tower of 3. then one more … . then put a beam across them": the last two
+            q.first for q in phrases[: joiner if joiner is not None else len(phrases)]
+            if q.count == 1 and q.spec is not None and q.first not in drop
+            and replace.get(q.first, structures[q.first]).shape == "tower"
+        ]  # fmt: skip
+        if not before and len(singles) >= 2 and singles[-2] == idx[0]:
+            idx = singles[-2:]
+            towers = [replace.get(k, structures[k]) for k in idx]
+            st.notes.append("read the beam's towers as the last two named")
+        elif before:
             idx = [before[-1], *idx]
             towers = [replace.get(k, structures[k]) for k in idx]
             st.notes.append("read the beam's towers as the last two named")

@@ -1130,7 +1130,32 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?=(?:move|shift|slide|put|place)\s+it\b)", re.I), r"\1. then "),
     # "Staircase. Cube count: exactly 10.": built of 10 cubes (10 steps were built)
     (re.compile(r"\s*[.;,]?\s*(?<!total\s)\b(?:cube|block)\s+count\s*(?::|is|of)?\s*(?:exactly\s+|precisely\s+|"
-                r"just\s+)?(\d+)\b", re.I), r" using \1 cubes"),
+                r"just\s+)?(\d+)\b", re.I),
+     lambda m: m.group(0) if re.search(r"\d|\b(?:one|two|three|four|five|six)\b",
+                                       m.string[: m.start()], re.I)
+     else f" using {m.group(1)} cubes"),  # sized before: the count is a claim (`claims`)
+    # "put a tower of 2 at each end on top": on top at each end (read as relations in a cycle)
+    (re.compile(r"\b(?:at|on)\s+(each|both|either)\s+(ends?)\s+on\s+top\b(?!\s+of)", re.I),
+     r"on top at \1 \2"),
+    # "remove two cubes from the one on the right": that one, two cubes lower
+    (re.compile(r"\b(?:remove|take\s+away)\s+(\d+|one|two|three|four|five)\s+(?:cubes?|blocks?)\s+(?:from|off)\s+(the\s+"
+                r"(?:(?:left|right|front|back|first|second|last|middle|tall|taller|tallest|short|shorter|shortest)\s+"
+                r"(?:one|tower|stack|column)|(?:one|tower|stack|column)\s+on\s+the\s+(?:left|right|front|back)))\b",
+                re.I), r"take \1 off \2"),
+    # "Then you move him to the right side", "shift the whole thing to the back": move it
+    (re.compile(r"\b(?:(?:you|we|i'?ll|i\s+will|then)\s+)?(?:move|shift|slide|push|put)\s+(?:him|her|the\s+whole\s+"
+                r"(?:thing|lot|structure)|everything|all\s+of\s+it)\s+(?=to\s+(?:the\s+)?(?:left|right|front|back|"
+                r"middle|centre|center)\b)", re.I), "move it "),
+    # "slide it left by 2 cubes": 2 cubes to the left
+    (re.compile(r"\b(move|shift|slide|push)\s+(it|them)\s+(left|right|back|forward|backward|forwards|backwards)\s+"
+                r"by\s+((?:\d+|one|two|three|four|five)\s+(?:cubes?|cm|mm|parts?))\b", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)} {m.group(4)} to the "
+     + {"forward": "front", "forwards": "front", "backward": "back", "backwards": "back"}.get(
+         m.group(3).lower(), m.group(3).lower())),
+    # "Build tower height 4. Add 3. Remove 1.": one cube off (refused as taking parts out)
+    (re.compile(r"(?:^|(?<=[.;!?]\s))\s*(?:then\s+|now\s+)?(?:remove|take\s+away|subtract)\s+(\d+|one|two|three|"
+                r"four|five)(?:\s+(?:cubes?|blocks?))?\s*(?=[.;!?]|$)", re.I),
+     r"then take \1 off it"),
     # "T shape flat, bar 5 stem 3": terse parts and sizes, one after another without commas
     (re.compile(r"\b(bar|stem|arms?|base|legs?|posts?|pillars?|beam|top)\s+(\d+)\s+(?=(?:bar|stem|arms?|"
                 r"legs?|posts?|pillars?|beam|height|length|width|gap)\s+\d)", re.I), r"\1 \2, "),
@@ -4743,8 +4768,9 @@ def _from_side(text: str, notes: list[str]) -> str:
 
 _SWAP = re.compile(
     r"(?:^|(?<=[.;!?,:\-\u2013\u2014])|\b(?:and|but|then)\b)\s*(?:(?:but|and|then|just|please|now)\s+)*"
-    r"(?P<said>(?:swap|switch|flip|reverse|mirror)\s+(?:(?:the\s+)?sides|them(?:\s+round|\s+around|\s+over)?|"
-    r"(?:the\s+)?(?:left\s+and\s+right|places|positions)|it(?:\s+round|\s+around)))"
+    r"(?P<said>(?:swap|switch|flip|reverse|mirror|exchange|change)\s+(?:(?:the\s+)?sides|them(?:\s+round|\s+"
+    r"around|\s+over)?|(?:the\s+|their\s+)?(?:left\s+and\s+right|places|positions)|the\s+places?\s+of\s+them|"
+    r"it(?:\s+round|\s+around)))"
     r"(?:\s+(?:this\s+time|round|around|over))?(?:\s*,?\s*please)?\s*(?=$|[.;!?,])",
     re.IGNORECASE,
 )
