@@ -10163,3 +10163,32 @@ def test_a_count_removed_in_a_sentence_of_its_own():
     # a count said after sized structures stays a claim, checked
     r = plan("a tower of 5 and a wall 4 long, cube count 13")
     assert r.status == "success" and any("holds" in n for n in r.notes)
+
+
+def test_edges_without_the_a_coordinate_pair_and_revisions_of_a_size():
+    # "20 cm from right edge": read as the tower's height (partial)
+    r = _built_as_said("Make a tower of 3, 15 cm from the back edge and 20 cm from right edge.",
+                       ["tower"], [3])  # fmt: skip
+    s = r.spec.structures[0]
+    assert (s.at_x, s.at_y) == (pytest.approx(0.65), pytest.approx(0.25))
+    # "(x, y) = (45 cm, 30 cm)": the 30 cm read as the height (partial)
+    r = _built_as_said("Tower H=5 at (x, y) = (45 cm, 30 cm).", ["tower"], [5])
+    assert (r.spec.structures[0].at_x, r.spec.structures[0].at_y) == (0.45, 0.3)
+    # "Revision B: length 7", "Is too tall, make 1 layer less": not read (partial)
+    r = _built_as_said("Wall length 5, height 2, left-right. Revision B: length 7.", ["wall"], None)
+    assert r.spec.structures[0].length == 7
+    for command in ("I want wall 5 long, 3 tall. Is too tall, make 1 layer less.",
+                    "I want wall 5 long, 3 tall. make it one layer lower"):  # fmt: skip
+        # (the second was made 1 high, silently)
+        r = _built_as_said(command, ["wall"], [2] * 5)
+
+
+def test_a_cube_on_each_pillar_and_a_position_said_before_the_item():
+    # "Raise the whole thing by adding one cube to each pillar": a loose cube besides, silently
+    r = _built_as_said("Bridge: two pillars of 3 with a beam across. Raise the whole thing by "
+                       "adding one cube to each pillar.", ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 4
+    # "Position: 5 cm from the front edge, … Item: row of 6": the row in the middle, silently
+    r = _built_as_said("Position: 5 cm from the front edge, centred left-right. Item: row of 6, "
+                       "left-right.", ["row"], [1] * 6)  # fmt: skip
+    assert r.spec.structures[0].at_x == pytest.approx(0.25)

@@ -312,8 +312,9 @@ MODIFY = [
     ),
     # "row of 7. no make it 3 less", "make it two shorter": that many fewer
     _op(
-        r"\bmake\s+" + _REF + r"\s+" + _N + r"\s+(?:cubes?\s+|levels?\s+)?(?:less|fewer|shorter|"
-        r"lower|smaller)\b",
+        r"\bmake\s+" + _REF + r"\s+" + _N
+        + r"\s+(?:cubes?\s+|levels?\s+|layers?\s+|courses?\s+|rows?\s+)?"
+        r"(?:less|fewer|shorter|lower|smaller)\b",
         "-main",
     ),
     _op(
@@ -331,7 +332,8 @@ MODIFY = [
     _op(
         r"\bmake\s+(?:it|them|the\s+\w+|all\s+of\s+them|them\s+all|each(?:\s+of\s+them)?|both)\s+"
         + _N
-        + r"\s+(?:steps|cubes?\s+(?:high|tall)|levels?|layers?|high|tall|storeys?)\b",
+        + r"\s+(?:steps|cubes?\s+(?:high|tall)|levels?|layers?|high|tall|storeys?)\b"
+        r"(?!\s+(?:less|fewer|shorter|lower|smaller|more|taller|higher|thicker|deeper)\b)",
         "=",
     ),
     _op(

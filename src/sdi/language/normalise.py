@@ -1156,6 +1156,32 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"(?:^|(?<=[.;!?]\s))\s*(?:then\s+|now\s+)?(?:remove|take\s+away|subtract)\s+(\d+|one|two|three|"
                 r"four|five)(?:\s+(?:cubes?|blocks?))?\s*(?=[.;!?]|$)", re.I),
      r"then take \1 off it"),
+    # "15 cm from the back edge and 20 cm from right edge": from the right edge (the 20 cm was
+    # read as the tower's height)
+    (re.compile(r"\bfrom\s+(left|right|front|back)\s+(edge|side)\b", re.I), r"from the \1 \2"),
+    # "at (x, y) = (45 cm, 30 cm)": x 45 cm, y 30 cm (the 30 cm was read as the height)
+    (re.compile(r"\(\s*x\s*,\s*y\s*\)\s*=?\s*\(\s*(\d+(?:\.\d+)?)\s*(cm|mm|m)?\s*,\s*(\d+(?:\.\d+)?)\s*"
+                r"(cm|mm|m)?\s*\)", re.I),
+     lambda m: f"x = {m.group(1)} {m.group(2) or m.group(4) or ''}, y = {m.group(3)} "
+     f"{m.group(4) or m.group(2) or ''}"),
+    # "Revision B: length 7", "Change: height 3": that size now
+    (re.compile(r"\b(?:revision|rev\.?|change|update|amendment|amend|correction|edit)\s*[A-Z0-9]?\s*:\s*"
+                r"(length|height|width|steps)\s*(?:=|:|is|of)?\s*(\d+)\b(?!\s*(?:mm|cm|m|in|inch)\b)",
+                re.I),
+     lambda m: f"make it {m.group(2)} " + {"length": "long", "height": "high", "width": "wide",
+                                            "steps": "steps"}[m.group(1).lower()]),
+    # "Is too tall, make 1 layer less": one layer lower
+    (re.compile(r"\b(?:it\s+)?is\s+too\s+(?:tall|high|big),?\s*(?:so\s+)?(?:make|do)\s+(?:it\s+)?(\d+|one|two|"
+                r"three)\s+(?:layers?|levels?|rows?|courses?|cubes?)\s+less\b", re.I),
+     r"make it \1 lower"),
+    # "add one cube to each pillar": to each of them (a 1-cube tower was built besides, silently)
+    (re.compile(r"\b(?:(?:raise|lift|heighten)\s+(?:the\s+whole\s+thing|it|the\s+\w+)\s+)?(?:by\s+)?(?:add(?:ing)?|"
+                r"put(?:ting)?|stack(?:ing)?|plac(?:e|ing))\s+(a|one|an\s+extra|1|two|2)\s+(?:more\s+)?(cubes?|blocks?)\s+"
+                r"(?:to|on(?:to)?)\s+(?:the\s+top\s+of\s+)?each\s+(?:pillar|post|leg|column|support|tower|stack)\b",
+                re.I), r"add \1 \2 to each of them"),
+    # "Position: 5 cm from the front edge. Item: row of 6": the item, then where it goes
+    (re.compile(r"\b(?:position|place|location|where)\s*:\s*([^.;]+)[.;]\s*(?:item|build|part|structure|what)\s*:\s*"
+                r"([^.;]+)", re.I), r"\2, \1"),
     # "T shape flat, bar 5 stem 3": terse parts and sizes, one after another without commas
     (re.compile(r"\b(bar|stem|arms?|base|legs?|posts?|pillars?|beam|top)\s+(\d+)\s+(?=(?:bar|stem|arms?|"
                 r"legs?|posts?|pillars?|beam|height|length|width|gap)\s+\d)", re.I), r"\1 \2, "),
