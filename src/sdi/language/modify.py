@@ -535,31 +535,25 @@ def modify(
             return modify(p, before, structures, st)
         if note is None and re.search(middle, p.text, re.I):
             note = _middle_of_line(m, op, built, structures)
-        if note is None and re.search(middle, p.text, re.I):
-            # "three towers, then make the middle one 5": the middle one is not picked out
-            st.material.append(m.group(0).strip())
-            st.notes.append(f"ignored '{m.group(0).strip()}': SDI cannot tell which structure "
-                            "will stand in the middle; say it by its size or side")  # fmt: skip
-            p.count = 0
-            p.modified = True
-            return True
         sided = re.search(r"\bthe\s+(left|right|front|back)(?:[\s-]*hand)?\s+(?:one|tower|stack|"
                           r"column|pillar|post|row|wall)\b", p.text, re.I)  # fmt: skip
-        if note is None and op == "drop" and len(alone) > 1:
+        unpicked = None
+        if note is None and re.search(middle, p.text, re.I):
+            # "three towers, then make the middle one 5": the middle one is not picked out
+            unpicked = ("SDI cannot tell which structure will stand in the middle; say it by its "
+                        "size or side")
+        elif note is None and op == "drop" and len(alone) > 1:
             # "a staircase of 3 and one of 5. remove the smaller one": which one is not known
             # here (the words were dropped, silently)
-            st.material.append(m.group(0).strip())
-            st.notes.append(f"ignored '{m.group(0).strip()}': SDI cannot tell which structure "
-                            "that is; say it by its side or the order named")  # fmt: skip
-            p.count = 0
-            p.modified = True
-            return True
-        if note is None and sided and len(alone) > 1:
+            unpicked = "SDI cannot tell which structure that is; say it by its side or order"
+        elif note is None and sided and len(alone) > 1:
             # "two towers of 3. make the front one 6": none of them is picked out by that side
             # (the side placed them all, and the 6 was lost, silently)
+            unpicked = (f"no single structure stands on the {sided.group(1).lower()}; say which "
+                        "one by its size or order")  # fmt: skip
+        if unpicked is not None:
             st.material.append(m.group(0).strip())
-            st.notes.append(f"ignored '{m.group(0).strip()}': no single structure stands on "
-                            f"the {sided.group(1).lower()}; say which one by its size or order")
+            st.notes.append(f"ignored '{m.group(0).strip()}': {unpicked}")
             p.count = 0
             p.modified = True
             return True

@@ -1,0 +1,405 @@
+"""Everyday phrasings: how operators say sizes, places, picks and changes in their own words.
+
+Read first in the phrasing table (`sdi.language.normalise`), each a rewrite into the words the
+later stages read, with the misreading it replaced: *"two walls forming a corner, each 4 long"*,
+*"the one nearest the robot, make it 6"*, *"a tower for each of my 3 kids"*, *"Take 3 off and move
+it to the front left"*, *"Position: … Item: …"*. Written from commands no set holds (the
+language probes); each has a test in `tests/test_language.py`.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from sdi.language.nouns import shape_alternation
+from sdi.spec import lexicon as lx
+from sdi.spec.numbers import words_to_numbers
+
+_Repl = str | Callable[[re.Match[str]], str]
+_NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+_FAMILY_SAID = shape_alternation(min_len=3)
+
+
+def _with_sized_one(m: re.Match[str]) -> str:
+    """ "… with a 2 high one": another of the family said before, its height after it ("one"
+    with no family before stays as it was)."""
+    family = m.group(3).lower()
+    if family == "one":
+        said = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+                if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+        if not said:
+            return m.group(0)
+        family = said[-1]
+    return f"with a {family} {m.group(1)} {m.group(2)}"
+
+
+def _pyramid_base(m: re.Match[str]) -> str:
+    """ "a pyramid with a 5x5 base": a pyramid 5 x 5; "with a base of 5" stays as said unless
+    another structure follows ("… and a tower of 3 next to it"): then "a pyramid 5 wide"."""
+    if m.group(2):
+        return f"{m.group(1)} {m.group(2)} x {m.group(3)}"
+    if m.group(5):
+        return f"{m.group(1)} {m.group(4)} x {m.group(5)}"
+    if re.match(r"\s*,?\s*and\s+(?:an?|one|two|three|four|\d+)\s", m.string[m.end() :], re.I):
+        return f"{m.group(1)} {m.group(4)} wide"
+    return m.group(0)
+
+
+def _heights_as_articles(m: re.Match[str]) -> str:
+    """ "two towers, a 4 and a 7, the 7 behind the 4": a tower of each height (as many as
+    counted), and "the 7" after it the one of 7; as it was when the count differs."""
+    heights = [*re.findall(r"\d+", m.group(3)), m.group(4)]
+    if words_to_numbers([m.group(1).lower()])[0] != str(len(heights)):
+        return m.group(0)
+    noun = m.group(2).lower()[:-1]
+    return " and ".join(f"a {noun} of {h}" for h in heights)
+
+
+def _named_by_height(m: re.Match[str]) -> str:
+    """ "…, the 7 behind the 4": the one of 7 behind the one of 4, when a structure of 7 was
+    named before; as it was otherwise."""
+    if not re.search(rf"\bof\s+{m.group(1)}\b|\ban?\s+{m.group(1)}\b", m.string[: m.start()]):
+        return m.group(0)
+    other = f" the {m.group(3)} one" if m.group(3) else ""
+    return f"the {m.group(1)} one {m.group(2)}{other}"
+
+
+def _middle_one_said(m: re.Match[str]) -> str:
+    """ "three towers of 2 in a line, the middle one 5 high": a change of the middle one of an odd
+    number of towers counted before; as it was when the others are sized by their places too
+    ("the middle one 3 tall, the left one 2 tall, …")."""
+    sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1] + m.string[m.end() :].split(".")[0]
+    counted = re.search(r"\b(?:three|five|seven|[357])\s+(?:[\w-]+\s+)?(?:towers|stacks|columns|"
+                        r"pillars)\b", m.string[: m.start()], re.I)  # fmt: skip
+    if not counted or re.search(r"\b(?:left|right|front|back|outer|outside|end)\s+(?:one|ones|"
+                                r"tower|towers|block)\b", sentence, re.I):  # fmt: skip
+        return m.group(0)
+    return f". make the middle one {m.group(1)} high"
+
+
+def _pyramid_counted(m: re.Match[str]) -> str:
+    """ "a pyramid …, one cube at the top, four under that and nine at the bottom": levels of 1,
+    4 and 9 cubes (three levels or more) make a square pyramid 3 x 3, the places said kept; any
+    other numbers stay."""
+    said = [int(n) for n in words_to_numbers(re.findall(r"[a-z]+|\d+", m.group(2).lower()))
+            if n.isdigit()]  # fmt: skip
+    side = round(max(said) ** 0.5) if said else 0
+    if side < 3 or sorted(said) != [k * k for k in range(1, side + 1)]:
+        return m.group(0)
+    places = re.findall(r"\b(?:on|at|in)\s+the\s+(?:back|front|left|right|middle|centre|center)"
+                        r"(?:\s+(?:left|right))?(?:\s+corner)?\b", m.group(2), re.I)  # fmt: skip
+    return f"{m.group(1)} {side} x {side}" + "".join(f" {p}" for p in places)
+
+
+def _walls_in_square(m: re.Match[str]) -> str:
+    """ "four walls, 4 long, 2 high, in a square": a ring 4 by 4, 2 high."""
+    long = re.search(r"(\d+|two|three|four|five|six)\s+(?:cubes?\s+)?long", m.group(1), re.I)
+    high = re.search(r"(\d+|two|three|four|five|six)\s+(?:cubes?\s+)?(?:high|tall)", m.group(1),
+                     re.I)
+    side = f" {long.group(1)} by {long.group(1)}" if long else ""
+    return f"a ring{side}" + (f", {high.group(1)} high" if high else "")
+
+
+EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
+    # "right in the very centre": the centre ("very" kept "right" from reading as an intensifier)
+    (re.compile(r"\bthe\s+very\s+(?=(?:centre|center|middle|front|back|top|bottom|end|edge|corner|"
+                r"left|right)\b)", re.I), "the "),
+    # "surround a tower of 6 and a tower of 2 with one ring": a ring ("one ring" was read as a
+    # reference to the towers: a tower was made the ring)
+    (re.compile(r"\b((?:surround|enclose|encircle|fence\s+in|box\s+in)\b[^.;?!]*?\bwith\s+)"
+                r"(?:just\s+)?(?:one|a\s+single)\s+(?=(?:ring|enclosure|fence|wall|border|frame|"
+                r"square)\b)", re.I),
+     r"\1a "),
+    # "Take the tallest one down to 3", "knock it down to 2 high": that height (the tallest was
+    # taken away, silently)
+    (re.compile(r"\b(?:take|bring|knock|cut|chop|lower)\s+(the\s+(?:[\w-]+\s+){0,2}?(?:one|tower|"
+                r"stack|column|pillar|post|wall)|it|that(?:\s+one)?|them)\s+down\s+to\s+(" + _NUM
+                + r")\b", re.I),
+     r"make \1 \2"),
+    # "one ring 7 by 7 and inside put four towers": what stands inside it (read as the ring's
+    # inside, 7 by 7, and the towers stood outside, silently)
+    (re.compile(r"(\b(?:ring|enclosure|fence|pen|frame|border|courtyard)\b[^.;]*?\d+\s*(?:x|by)\s*\d+"
+                r"[^.;]*?)\s*,?\s*\band\s+inside(?:\s+(?:it|of\s+it))?\s*,?\s*(?=(?:put|place|build|"
+                r"stand|set|add|make)\b|(?:an?|one|two|three|four|five|six|\d+)\s)", re.I),
+     r"\1. inside it, "),
+    # "three single cubes inside it in a row": the row's words together, before the relation
+    # (the row after "inside it" was one of its own, 5 long)
+    (re.compile(r"\b(inside|within)\s+(it|them|the\s+(?:ring|enclosure|pen|fence|frame|square))\s*,?\s+"
+                r"(in\s+an?\s+(?:row|line|straight\s+line))\b", re.I), r"\3 \1 \2"),
+    # "two towers of 3 inside it, not touching anything": apart, said before the relation (the
+    # words after "inside it" were read as a structure of their own)
+    (re.compile(r"\b(inside|within)\s+(it|them|the\s+(?:ring|enclosure|pen|fence|frame|square))\s*,\s*"
+                r"(not\s+touching|(?:with\s+)?(?:gaps|space)\s+between\s+them)(?:\s+(?:each\s+other|one\s+"
+                r"another|anything|the\s+(?:ring|walls?|sides?)|(?:each\s+other\s+)?or\s+the\s+(?:ring|"
+                r"walls?|sides?)))?(?=\s*(?:[.;!?]|$))", re.I), r"\3 \1 \2"),
+    # "enclosure 8x6, one high. inside: row of 4": inside it
+    (re.compile(r"(?:^|(?<=[.;]\s))\s*(inside|within)\s*:\s*", re.I), r"\1 it, "),
+    # "tower 4 outside each side": beside each side
+    (re.compile(r"\b(?:(tower|stack|column|pillar)s?\s+(\d+)\s+)?outside\s+(each|every|all\s+four|"
+                r"all)\s+(?:of\s+its\s+)?sides?\b(?:\s+of\s+(?:it|the\s+\w+))?", re.I),
+     lambda m: (f"{m.group(1)} of {m.group(2)} " if m.group(1) else "")
+     + f"on {m.group(3)} side of it"),
+    # "The wall on right side, make 4 high": that one changed (the wall was a fourth, at the right)
+    (re.compile(r"(?:^|(?<=[.;!?]\s))\s*the\s+(" + _FAMILY_SAID + r"|one)\s+(?:on|at)\s+(?:the\s+)?"
+                r"(left|right|front|back)(?:[\s-]+(?:hand\s+)?(?:side|end))?\s*,\s*(make|raise|lower)\s+"
+                r"(?:it\s+)?", re.I),
+     r"\3 the \2 \1 "),
+    # "right one +3", "the tall one -2": that one, cubes added or taken off
+    (re.compile(r"\b(?:the\s+)?(left|right|front|back|first|second|last|middle|tall|short|taller|shorter|"
+                r"tallest|shortest)\s+(one|tower|stack|column|wall)\s*([+-])\s*(\d+)\b", re.I),
+     lambda m: f"add {m.group(4)} to the {m.group(1)} {m.group(2)}" if m.group(3) == "+"
+     else f"take {m.group(4)} off the {m.group(1)} {m.group(2)}"),
+    # "a tower of 5 in the back right corner and copy it into the other three corners": one in
+    # each corner (one copy in the middle, silently)
+    (re.compile(r"\s+in\s+the\s+(?:back|front)\s+(?:left|right)\s+corner\s*,?\s*(?:and\s+)?"
+                r"(?:then\s+)?(?:copy|repeat|duplicate|put\s+(?:the\s+same|one|copies))\s+(?:it\s+|that\s+)?"
+                r"(?:in|into|at|to)\s+(?:the\s+|all\s+the\s+)?(?:other|remaining)\s+(?:three|3)"
+                r"(?:\s+corners)?\b", re.I),
+     " in each corner"),
+    # "6 towers h2, 2 rows of 3": in those rows (two rows of cubes were built besides)
+    (re.compile(r"(\b(?:\d+|four|six|eight|nine)\s+(?:towers|stacks|columns|pillars|pyramids|blocks|"
+                r"piles)\b[^.;]*?),\s*(?=(?:two|three|four|[2-4])\s+rows\s+of\s+(?:two|three|four|[2-4])\b)",
+                re.I),
+     r"\1, in "),
+    # "a square of four 2x2 blocks, each 2 high": the four in a square (two blocks were built)
+    (re.compile(r"\ba\s+(square|grid)\s+of\s+(four|nine|six|[469])\s+([^,.;]+?)(?=\s*(?:[,.;]|$|\bwith\b))",
+                re.I), r"\2 \3 in a \1"),
+    # "a tower of 2 a bit off to each side of it": to each side ("bit" and "off" were unused)
+    (re.compile(r"\b(?:a\s+(?:little\s+)?bit|slightly)\s+(?:off|out|away)\s+(?=to\b|from\b)", re.I),
+     ""),
+    # "tucked into the front-left corner", "squeezed into the corner": in it
+    (re.compile(r"\b(?:tucked|squeezed|nestled|pushed|snug)\s+(?:up\s+)?(?:into|in)\s+(?=the\b)",
+                re.I),
+     "in "),
+    # "leave a gap of one between a 3-cube tower and a 4-cube tower": the two, that gap apart
+    (re.compile(r"\b(?:leave|put|keep|make)\s+(a\s+gap\s+of\s+(?:\d+|one|two|three)(?:\s+cubes?)?)\s+"
+                r"between\s+(an?\s+[^,.;?!]+?\s+and\s+an?\s+[^,.;?!]+?)(?=\s*(?:[,.;?!]|$))", re.I),
+     r"\2, with \1"),
+    # "the distance between is 15 cm", "the gap between them should be 2 cubes": that far apart
+    (re.compile(r"\bthe\s+(?:distance|gap|space|spacing)\s+between(?:\s+(?:them|the\s+two|each))?\s+"
+                r"(?:is|should\s+be|must\s+be|will\s+be|of)\s+((?:\d+(?:\.\d+)?|one|two|three|four)\s*"
+                r"(?:cm|mm|m|cubes?)\b)", re.I), r"\1 apart"),
+    # "a U form, width 5, arm 4": its arms 4 long
+    (re.compile(r"\b(arms?)\s+(\d+)\b(?!\.\d|\d)(?!\s*(?:(?:cubes?|blocks?|parts?|bricks?)\s+)?(?:long|high|"
+                r"tall|wide|x|by|and|n|&|cm|mm|m)\b)", re.I),
+     r"arms \2 long"),
+    # "Doable?", "Is that possible?", "I'm thinking a …": no content
+    (re.compile(r"(?:^|(?<=[.!?;,]\s)|(?<=[\u2014\u2013-]\s))\s*(?:is\s+(?:that|this|it)\s+)?"
+                r"(?:doable|possible|feasible|ok(?:ay)?|alright)\s*\?", re.I), " "),
+    (re.compile(r"\bi'?m\s+thinking(?:\s+of)?\s+(?=an?\s)", re.I), ""),
+    # "a fat little tower — 3 by 3 across": its footprint said ("fat" was unused)
+    (re.compile(r"\b(?:fat|chunky|stout|thick)\s+(?=(?:little\s+|short\s+|low\s+)?(?:tower|column|pillar|"
+                r"stack|block)\b[^.;]*?\b\d+\s*(?:x|by)\s*\d+)", re.I), ""),
+    # "the tallest you can manage": the tallest that fits
+    (re.compile(r"\bthe\s+tallest(?:\s+one)?\s+(?:you|it|the\s+robot)\s+can\s+(?:manage|make|build|do|"
+                r"go|get)\b", re.I), "as tall as possible"),
+    # "a really tall tower, as tall as possible": the tallest ("tall" made it 6)
+    (re.compile(r"\b(?:really\s+|very\s+|super\s+)?tall\s+(?=(?:tower|column|stack|pillar)\b[^.;?]*\bas\s+"
+                r"(?:tall|high)\s+as\s+(?:possible|you\s+can|it\s+can))", re.I), ""),
+    # "make the second one a bit taller": taller (the change was not read)
+    (re.compile(r"\b(?:a\s+(?:little\s+)?bit|a\s+little|slightly|somewhat|a\s+touch)\s+(?=(?:taller|higher|"
+                r"shorter|lower|longer|wider|bigger|smaller)\b)", re.I), ""),
+    # "three towers of 2 in a line, the middle one 5 high", "… and the one in the middle should be
+    # 5 tall": a change of the middle one (a fourth tower, or all three 5 high)
+    (re.compile(r"\s*,?\s*(?:and\s+|with\s+|but\s+)?the\s+(?:one\s+(?:smack\s+|right\s+)?in\s+the\s+"
+                r"(?:middle|centre|center)|(?:middle|centre|center)\s+one)\s+(?:(?:is|should\s+be|must\s+"
+                r"be|being|needs\s+to\s+be|gets)\s+)?(" + _NUM
+                + r")(?:\s+(?:cubes?\s+)?(?:high|tall)\b|"
+                r"\s*(?=[.;,!?]|$|\s+and\b))", re.I),
+     _middle_one_said),
+    # "…, the 7 behind the 4": the one of 7 behind the one of 4
+    (re.compile(r"\bthe\s+(\d+)\s+(behind|in\s+front\s+of|(?:to\s+the\s+)?(?:left|right)\s+of|next\s+"
+                r"to|beside|on\s+the\s+(?:left|right))(?:\s+(?:the\s+)?(\d+))?\b(?!\s*(?:cubes?|cm|mm|m|"
+                r"high|tall|long)\b)", re.I),
+     _named_by_height),
+    # "Two towers, a 4 and a 7, the 7 behind the 4": a tower of each height, and each named by
+    # its height after (the 7 was lost, both stood at the back)
+    (re.compile(r"\b(two|three)\s+(towers|stacks|columns|pillars)\s*[,:]\s*((?:(?:an?|one)\s+\d+\s*,?"
+                r"\s*)+)(?:and|&)\s+(?:an?|one)\s+(\d+)\b(?!\s*(?:cubes?\s+)?(?:high|tall|long|wide|x|by)\b)",
+                re.I),
+     _heights_as_articles),
+    # "then make it two times higher": twice as tall
+    (re.compile(r"\b(two|three|four|2|3|4)\s+times\s+(?:higher|taller|as\s+(?:high|tall))\b", re.I),
+     lambda m: "twice as tall" if m.group(1).lower() in ("two", "2")
+     else f"{m.group(1)} times as tall"),
+    # "then mirror it on the right side": another one there
+    (re.compile(r"\b(?:mirror|copy|repeat|duplicate)\s+(?:it|that|this)\s+(?=(?:on|to|at)\s+the\s+(?:left|"
+                r"right|front|back|other)\b)", re.I), "another one "),
+    # "a pyramid with one cube at the top, four under that and nine at the bottom": its levels
+    # counted, a square pyramid 3 x 3 (read as a flat one 9 long)
+    (re.compile(r"\b(pyramid)\b([^.;]*)", re.I), _pyramid_counted),
+    # "a wall with 10 cubes in it, 5 along the bottom": of 10 cubes ("in it" related nothing)
+    (re.compile(r"\bwith\s+(\d+|" + _NUM + r")\s+(cubes|blocks|bricks)\s+in\s+(?:it|total|all)\b",
+                re.I), r"of \1 \2"),
+    # "two walls, 3 long and 2 high, facing each other across a 3-cube gap": one behind the
+    # other, that gap between ('facing' was unused)
+    (re.compile(r"\b((?:two|2)\s+(?:walls|fences|rows|barriers)\b[^.;]*?)\s*,?\s*\bfacing\s+(?:each\s+"
+                r"other|one\s+another)\s+across\s+(?=an?\s|\d|one|two|three)", re.I),
+     r"\1, one behind the other, with "),
+    # "Put two more on it. Then one more.": one more on it (another tower was built)
+    (re.compile(r"(\b(?:put|add|stack|place)\s+(?:\d+|two|three|four|five|another|one)\s+more(?:\s+"
+                r"cubes?)?\s+on\s+(?:it|top)\b[^.;]*[.;]\s*(?:and\s+)?then\s+)(one|two|three|\d+)\s+more\s*"
+                r"(?=[.;!]|$)", re.I),
+     r"\1put \2 more on it"),
+    # "two towers, a tall one of 6 and the other one 2": a tower of each
+    (re.compile(r"\b(?:two|2)\s+(towers|stacks|columns|pillars)\s*,\s*(?:an?|one)\s+(?:tall|high|big|short|"
+                r"small|low)\s+one\s+(?:of\s+)?(\d+)\s+and\s+(?:the\s+other(?:\s+one)?|a\s+(?:short|small|low|"
+                r"tall|big)\s+one)\s+(?:of\s+)?(\d+)\b", re.I),
+     lambda m: f"a {m.group(1)[:-1]} of {m.group(2)} and a {m.group(1)[:-1]} of {m.group(3)}"),
+    # "a tower of 5 in the corner closest to the robot on its right": the front right corner
+    (re.compile(r"\bthe\s+corner\s+(?:that'?s\s+|which\s+is\s+)?(?:(closest|nearest)\s+(?:to\s+)?|(?:furthest|"
+                r"farthest)\s+(?:away\s+)?from\s+)(?:the\s+)?robot\s*,?\s*(?:on\s+(?:its|the)\s+|to\s+the\s+)"
+                r"(left|right)\b", re.I),
+     lambda m: f"the {'front' if m.group(1) else 'back'} {m.group(2).lower()} corner"),
+    # "Staircase with 3 step, the high part is at the back": climbing to the back
+    (re.compile(r"\s*,?\s*(?:with\s+)?the\s+(?:high|higher|tall|taller|top)\s+(?:part|end|side|step)\s+(?:is\s+|"
+                r"being\s+|should\s+be\s+|goes\s+)?(?:at|on|to|towards)\s+the\s+(back|front|left|right)\b",
+                re.I), r" going up to the \1"),
+    # "long side along the back edge": running left to right, against it
+    (re.compile(r"\blong(?:er)?\s+side\s+(?:along|against|on|at)\s+the\s+(back|front)(\s+edge)?\b",
+                re.I), r"long side running left to right, along the \1 edge"),
+    # "outside size 3 by 3", "size 4 by 4": the size ('size' was unused)
+    (re.compile(r"\b(?:(outside|outer|inside|inner)\s+)?size\s*(?:of\s+|is\s+|:\s*)?"
+                r"(?=\d+\s*(?:x|by)\s*\d)", re.I),
+     lambda m: f"{m.group(1)} " if m.group(1) else ""),
+    # "a staircase that goes up 25 cm": that high
+    (re.compile(r"\b(?:that|which)\s+(?:goes|rises|climbs|reaches)\s+(?:up\s+)?(?:to\s+)?(?=(?:\d+(?:\.\d+)?\s*"
+                r"(?:cm|mm|m)|\d+\s+cubes?)\b)", re.I), ""),
+    # "one cube of space between neighbours": between them
+    (re.compile(r"\bbetween\s+(?:the\s+)?(?:neighbou?rs|each\s+neighbou?r|neighbou?ring\s+ones)\b",
+                re.I),
+     "between them"),
+    # "in the middle line": in the middle
+    (re.compile(r"\bin\s+the\s+(?:middle|centre|center)\s+line\b", re.I), "in the middle"),
+    # "a ring 5 x 5 of one height": one high
+    (re.compile(r"\bof\s+(one|two|three|\d)\s+height\b", re.I), r"\1 high"),
+    # "in the front of it": in front of it
+    (re.compile(r"\bin\s+the\s+front\s+of\s+(?=it\b|them\b|the\b)", re.I), "in front of "),
+    # "small tower (2) on the left": a tower of 2
+    (re.compile(r"\b(tower|stack|column|pillar|wall|row)\s*\(\s*(\d+)\s*\)", re.I), r"\1 of \2"),
+    # "stick a 2x2 block in each of the 4 corners of the table": in each corner
+    (re.compile(r"\bin\s+each\s+of\s+the\s+(?:4|four)\s+corners\b", re.I), "in each corner"),
+    # "they must touch", "they should be touching": touching
+    (re.compile(r"\s*,?\s*(?:and\s+)?they\s+(?:must|should|have\s+to|need\s+to)\s+(?:be\s+)?touch(?:ing)?"
+                r"(?:\s+each\s+other)?\b", re.I), ", touching"),
+    # "Hi all, circling back on the demo layout": no place ('back' was read as the back)
+    (re.compile(r"\bcircling\s+back(?:\s+(?:on|to)\b[^.,;!?]*)?", re.I), " "),
+    # "small tower of 2 on the left, tall tower of 8 on the right": each its article (the
+    # second was read as the first's relation)
+    (re.compile(r"(?:^|(?<=[,;.]\s)|(?<=\band\s))\s*(?=(?:small|tall|big|little|short|low|wide|long|high)\s+"
+                r"(?:tower|stack|column|pillar|wall|row|slab|block|pyramid|staircase)\b)", re.I),
+     " a "),
+    # "a staircase that does not climb towards the left or the right": to the back (read as
+    # climbing to the right)
+    (re.compile(r"\b(?:that\s+|which\s+)?(?:does\s+not|doesn'?t|should\s+not|shouldn'?t|not|never)\s+(?:climb|go|"
+                r"rise|run)(?:s|ing)?\s+(?:up\s+)?(?:towards|to)\s+(?:the\s+)?(?:left\s+or\s+(?:the\s+)?right|right\s+"
+                r"or\s+(?:the\s+)?left|front\s+or\s+(?:the\s+)?back|back\s+or\s+(?:the\s+)?front)\b",
+                re.I),
+     lambda m: "going up to the back" if re.search(r"left|right", m.group(0), re.I)
+     else "going up to the left"),
+    # "…, the three to stand in one line": in a line (a row of 3 was built besides, silently)
+    (re.compile(r"\bthe\s+(?:two|three|four|five|both|lot)\s+(?:of\s+them\s+)?(?:(?:to\s+|should\s+|must\s+|shall\s+)?"
+                r"(?:stand|be|sit|go)\s+|standing\s+|are\s+|being\s+)?(?=in\s+(?:one|a)\s+(?:straight\s+)?(?:line|row)"
+                r"\b)", re.I), ""),
+    # "a tower for each of my 3 kids": three towers
+    (re.compile(r"\ban?\s+(tower|stack|column|pillar|pyramid|wall|row|staircase)\s+for\s+each\s+of\s+(?:my|the|our|"
+                r"his|her|their)\s+(\d+|two|three|four|five|six)\s+[a-z]+\b", re.I), r"\2 \1s"),
+    # "put tower of 4 on the corner of it": on one corner of its top (the table's corner)
+    (re.compile(r"\bon\s+the\s+corner\s+of\s+(it|that|the\s+(?:slab|block|platform|square|base|pad))\b",
+                re.I),
+     r"on one corner of \1"),
+    # "4 walls in a square and a tower in the middle", "Four walls, 4 long, 2 high, in a square":
+    # a ring (walls apart, or one square slab)
+    (re.compile(r"\b(?:four|4)\s+walls\b((?:\s*,?\s*(?:each\s+)?(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
+                r"(?:long|high|tall))*)\s*,?\s*(?:in|forming|making|as)\s+a\s+square\b", re.I),
+     _walls_in_square),
+    # "in a square so they box in an empty space": what for (a box was built of 'box')
+    (re.compile(r"\s*,?\s*\bso\s+(?:that\s+)?(?:they|it)\s+(?:box|fence|close|wall|shut|enclose)s?\s+(?:in\s+)?"
+                r"(?:an?\s+)?(?:empty\s+|open\s+)?(?:space|area|yard|square|court)\b", re.I), ""),
+    # "Take 3 off and move it to the front left": two changes (the first was dropped, silently)
+    (re.compile(r"\b((?:take|knock|remove)\s+\w+\s+(?:cubes?\s+)?off(?:\s+(?:it|the\s+top))?)\s+and\s+(?:then\s+)?"
+                r"(?=(?:move|shift|slide|put|place)\s+it\b)", re.I), r"\1. then "),
+    # "Staircase. Cube count: exactly 10.": built of 10 cubes (10 steps were built)
+    (re.compile(r"\s*[.;,]?\s*(?<!total\s)\b(?:cube|block)\s+count\s*(?::|is|of)?\s*(?:exactly\s+|precisely\s+|"
+                r"just\s+)?(\d+)\b", re.I),
+     lambda m: m.group(0) if re.search(r"\d|\b(?:one|two|three|four|five|six)\b",
+                                       m.string[: m.start()], re.I)
+     else f" using {m.group(1)} cubes"),  # sized before: the count is a claim (`claims`)
+    # "put a tower of 2 at each end on top": on top at each end (read as relations in a cycle)
+    (re.compile(r"\b(?:at|on)\s+(each|both|either)\s+(ends?)\s+on\s+top\b(?!\s+of)", re.I),
+     r"on top at \1 \2"),
+    # "remove two cubes from the one on the right": that one, two cubes lower
+    (re.compile(r"\b(?:remove|take\s+away)\s+(\d+|one|two|three|four|five)\s+(?:cubes?|blocks?)\s+(?:from|off)\s+(the\s+"
+                r"(?:(?:left|right|front|back|first|second|last|middle|tall|taller|tallest|short|shorter|shortest)\s+"
+                r"(?:one|tower|stack|column)|(?:one|tower|stack|column)\s+on\s+the\s+(?:left|right|front|back)))\b",
+                re.I), r"take \1 off \2"),
+    # "Then you move him to the right side", "shift the whole thing to the back": move it
+    (re.compile(r"\b(?:(?:you|we|i'?ll|i\s+will|then)\s+)?(?:move|shift|slide|push|put)\s+(?:him|her|the\s+whole\s+"
+                r"(?:thing|lot|structure)|everything|all\s+of\s+it)\s+(?=to\s+(?:the\s+)?(?:left|right|front|back|"
+                r"middle|centre|center)\b)", re.I), "move it "),
+    # "slide it left by 2 cubes": 2 cubes to the left
+    (re.compile(r"\b(move|shift|slide|push)\s+(it|them)\s+(left|right|back|forward|backward|forwards|backwards)\s+"
+                r"by\s+((?:\d+|one|two|three|four|five)\s+(?:cubes?|cm|mm|parts?))\b", re.I),
+     lambda m: f"{m.group(1)} {m.group(2)} {m.group(4)} to the "
+     + {"forward": "front", "forwards": "front", "backward": "back", "backwards": "back"}.get(
+         m.group(3).lower(), m.group(3).lower())),
+    # "Build tower height 4. Add 3. Remove 1.": one cube off (refused as taking parts out)
+    (re.compile(r"(?:^|(?<=[.;!?]\s))\s*(?:then\s+|now\s+)?(?:remove|take\s+away|subtract)\s+(\d+|one|two|three|"
+                r"four|five)(?:\s+(?:cubes?|blocks?))?\s*(?=[.;!?]|$)", re.I),
+     r"then take \1 off it"),
+    # "15 cm from the back edge and 20 cm from right edge": from the right edge (the 20 cm was
+    # read as the tower's height)
+    (re.compile(r"\bfrom\s+(left|right|front|back)\s+(edge|side)\b", re.I), r"from the \1 \2"),
+    # "at (x, y) = (45 cm, 30 cm)": x 45 cm, y 30 cm (the 30 cm was read as the height)
+    (re.compile(r"\(\s*x\s*,\s*y\s*\)\s*=?\s*\(\s*(\d+(?:\.\d+)?)\s*(cm|mm|m)?\s*,\s*(\d+(?:\.\d+)?)\s*"
+                r"(cm|mm|m)?\s*\)", re.I),
+     lambda m: f"x = {m.group(1)} {m.group(2) or m.group(4) or ''}, y = {m.group(3)} "
+     f"{m.group(4) or m.group(2) or ''}"),
+    # "Revision B: length 7", "Change: height 3": that size now
+    (re.compile(r"\b(?:revision|rev\.?|change|update|amendment|amend|correction|edit)\s*[A-Z0-9]?\s*:\s*"
+                r"(length|height|width|steps)\s*(?:=|:|is|of)?\s*(\d+)\b(?!\s*(?:mm|cm|m|in|inch)\b)",
+                re.I),
+     lambda m: f"make it {m.group(2)} " + {"length": "long", "height": "high", "width": "wide",
+                                            "steps": "steps"}[m.group(1).lower()]),
+    # "Is too tall, make 1 layer less": one layer lower
+    (re.compile(r"\b(?:it\s+)?is\s+too\s+(?:tall|high|big),?\s*(?:so\s+)?(?:make|do)\s+(?:it\s+)?(\d+|one|two|"
+                r"three)\s+(?:layers?|levels?|rows?|courses?|cubes?)\s+less\b", re.I),
+     r"make it \1 lower"),
+    # "add one cube to each pillar": to each of them (a 1-cube tower was built besides, silently)
+    (re.compile(r"\b(?:(?:raise|lift|heighten)\s+(?:the\s+whole\s+thing|it|the\s+\w+)\s+)?(?:by\s+)?(?:add(?:ing)?|"
+                r"put(?:ting)?|stack(?:ing)?|plac(?:e|ing))\s+(a|one|an\s+extra|1|two|2)\s+(?:more\s+)?(cubes?|blocks?)\s+"
+                r"(?:to|on(?:to)?)\s+(?:the\s+top\s+of\s+)?each\s+(?:pillar|post|leg|column|support|tower|stack)\b",
+                re.I), r"add \1 \2 to each of them"),
+    # "Position: 5 cm from the front edge. Item: row of 6": the item, then where it goes
+    (re.compile(r"\b(?:position|place|location|where)\s*:\s*([^.;]+)[.;]\s*(?:item|build|part|structure|what)\s*:\s*"
+                r"([^.;]+)", re.I), r"\2, \1"),
+    # "T shape flat, bar 5 stem 3": terse parts and sizes, one after another without commas
+    (re.compile(r"\b(bar|stem|arms?|base|legs?|posts?|pillars?|beam|top)\s+(\d+)\s+(?=(?:bar|stem|arms?|"
+                r"legs?|posts?|pillars?|beam|height|length|width|gap)\s+\d)", re.I), r"\1 \2, "),
+    # "A castle! Nothing fancy, just a castle please": the one named, said again (two were built)
+    (re.compile(r"(?<=[.!?,;]\s)\s*(?:(?:nothing\s+(?:fancy|special|else)|keep\s+it\s+simple)\s*,?"
+                r"\s*)?just\s+(?:an?|one)\s+(" + _FAMILY_SAID
+                + r")\s*(?:,?\s*please)?\s*(?=[.!?;:)(]|$)", re.I),
+     lambda m: " " if m.group(1).lower() in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+     else m.group(0)),
+    # "a 5 high tower with a 2 high one touching it on the right": a second structure (the two
+    # were read as one, its height twice)
+    (re.compile(r"\bwith\s+(?:an?|one)\s+(" + _NUM + r")[\s-]+(?:cubes?[\s-]+)?(high|tall)\s+("
+                + _FAMILY_SAID + r"|one)\b", re.I),
+     _with_sized_one),
+    # "2 x 4 slab, and on it a 2 x 2 slab at one end": the one on it, at that end of its top (two
+    # relations in one clause left the end unplaced)
+    (re.compile(r"\s*,?\s*\band\s+on\s+(?:it|that|this|top)\s*,?\s+(an?\s+[^,.;]+?)\s+(?:at|on)\s+"
+                r"(one|either|the\s+(?:left|right|front|back|far|near))\s+end\b", re.I),
+     r", with \1 on \2 end"),
+    # "a pyramid with a 5x5 base and a tower of 3 next to it": the pyramid's size (the base was
+    # read as a block of its own when a relation followed)
+    (re.compile(r"\b(pyramids?)\s+(?:with|having|on)\s+(?:an?\s+|its\s+)?(?:(\d+)\s*(?:x|by)\s*(\d+)"
+                r"\s+(?:square\s+)?(?:base|bottom(?:\s+layer)?|footprint)|(?:square\s+)?(?:base|bottom"
+                r"(?:\s+layer)?|footprint)\s+(?:of\s+)?(\d+)(?:\s*(?:x|by|on|times)\s*(\d+))?)"
+                r"(?:\s+cubes?)?(?:\s+(?:wide|across|(?:on\s+)?(?:a|each)\s+side))?\b"
+                r"(?!\s*(?:x|by|on|cm|mm|m)\b)", re.I),
+     _pyramid_base),
+]
+"""The everyday phrasings, in the order they are tried (earlier rewrites feed later ones)."""
