@@ -649,16 +649,14 @@ def _join(
     if len(towers) == 1 and towers[0].shape == "tower":
         # "stack 3 high, then a second stack of 3, then lay a beam across the two": the tower
         # named just before it is the other pillar
-        before = [
-            q.first for q in phrases[:pillars]
-            if q.count == 1 and q.spec is not None and q.first not in drop
-            and replace.get(q.first, structures[q.first]).shape == "tower"
-        ]  # fmt: skip
-        singles = [  # "a tower of 3. then one more … . then put a beam across them": the last two
-            q.first for q in phrases[: joiner if joiner is not None else len(phrases)]
-            if q.count == 1 and q.spec is not None and q.first not in drop
-            and replace.get(q.first, structures[q.first]).shape == "tower"
-        ]  # fmt: skip
+        def single_towers(said: list[Phrase]) -> list[int]:
+            return [q.first for q in said if q.count == 1 and q.spec is not None
+                    and q.first not in drop
+                    and replace.get(q.first, structures[q.first]).shape == "tower"]  # fmt: skip
+
+        before = single_towers(phrases[:pillars])
+        # "a tower of 3. then one more … . then put a beam across them": the last two
+        singles = single_towers(phrases[: joiner if joiner is not None else len(phrases)])
         if not before and len(singles) >= 2 and singles[-2] == idx[0]:
             idx = singles[-2:]
             towers = [replace.get(k, structures[k]) for k in idx]

@@ -283,8 +283,6 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     # "they must touch", "they should be touching": touching
     (re.compile(r"\s*,?\s*(?:and\s+)?they\s+(?:must|should|have\s+to|need\s+to)\s+(?:be\s+)?touch(?:ing)?"
                 r"(?:\s+each\s+other)?\b", re.I), ", touching"),
-    # "Hi all, circling back on the demo layout": no place ('back' was read as the back)
-    (re.compile(r"\bcircling\s+back(?:\s+(?:on|to)\b[^.,;!?]*)?", re.I), " "),
     # "small tower of 2 on the left, tall tower of 8 on the right": each its article (the
     # second was read as the first's relation)
     (re.compile(r"(?:^|(?<=[,;.]\s)|(?<=\band\s))\s*(?=(?:small|tall|big|little|short|low|wide|long|high)\s+"

@@ -58,17 +58,17 @@ DROP_VERBS = (
 )
 """The verbs that take one of several structures named away ("forget the second one")."""
 
-# (pattern, operation on the height of the structure referred to)
-_MIDDLE_TWO = (
-    r"the\s+(?:two\s+(?:in\s+the\s+(?:middle|centre|center)|middle\s+ones?|inner\s+ones?)|middle\s+(?:two|"
+_TWO_MIDDLE = (
+    r"(?:two\s+(?:in\s+the\s+(?:middle|centre|center)|middle\s+ones?|inner\s+ones?)|middle\s+(?:two|"
     r"pair)(?:\s+of\s+them)?|two\s+(?:middle|inner)\s+(?:ones|towers|stacks|columns|pillars))"
 )
-"""The two in the middle of a line of four (or six)."""
+"""The two in the middle of a line of four (or six), after "the"."""
+_MIDDLE_TWO = r"the\s+" + _TWO_MIDDLE
 
+# (pattern, operation on the height of the structure referred to)
 MODIFY = [
     # "4 towers of 2 in a row. remove the middle two": those two taken away
-    _op(r"\b" + DROP_VERBS + r"\s+" + _MIDDLE_TWO.replace("the\\s+", "(?:the\\s+)?", 1) + r"\b",
-        "drop2"),
+    _op(r"\b" + DROP_VERBS + r"\s+(?:the\s+)?" + _TWO_MIDDLE + r"\b", "drop2"),
     # "four towers of 2 in a row; make the two in the middle 5 high", "bump the middle pair up
     # to 6", "the two in the middle go up to 4 high": those two, that high
     _op(
@@ -813,8 +813,7 @@ def _drop(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: lis
         towers = _tower_heights(built, structures)
         if None in towers.values() or (which.endswith("er") and len(towers) != 2):
             return None  # "the smaller" of more than two: which is not said
-        big = ("tallest", "highest", "biggest", "largest", "taller", "higher", "bigger", "larger")
-        found_at = _extreme_tower(towers, low=which not in big)
+        found_at = _which_tower(which, towers)
         if found_at is None:
             return None  # no single one: the command does not say which
         index = found_at
@@ -988,6 +987,12 @@ def _on_one(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
     return f"the {m.group(2).lower()} tower now has height {now} (was {was})"
 
 
+def _unsaid(shape: str, key: str) -> int:
+    """A size the command did not say: the generators' own (`sdi.design.shapes`), a wall 2 high
+    and 4 long, a slab 1 high, anything else 3."""
+    return {"grid": 1, "row": 1, "enclosure": 1, "wall": 2 if key == "height" else 4}.get(shape, 3)
+
+
 def _middle_two(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
                 built: list[Phrase], structures: list[StructureDraft]) -> str | None:  # fmt: skip
     """ "four towers of 2 in a row, then make the two in the middle 5 high" (or "remove the
@@ -1006,13 +1011,12 @@ def _middle_two(m: re.Match[str], op: str, p: Phrase, before: list[Phrase],
         or int(n) < 1
     ):
         return None
-    unsaid = 3 if shapes == {"tower"} else 2  # the generators' own heights
     pair = every[len(every) // 2 - 1 : len(every) // 2 + 1]
     if op == "drop2":  # "remove the middle two"
         for i in reversed(pair):
             _take_out(i, before, built, structures)
         return f"{len(every) - 2} left of the {len(every)} (the two in the middle taken away)"
-    were = [structures[i].height or unsaid for i in pair]
+    were = [structures[i].height or _unsaid(structures[i].shape, "height") for i in pair]
     for i in pair:
         structures[i] = structures[i].model_copy(update={"height": int(n)})
     return (f"the two middle {structures[pair[0]].shape}s of the line now have height {n} (were "
@@ -1050,7 +1054,7 @@ def _which_tower(word: str, towers: Mapping[int, int | None]) -> int | None:
     stem = re.sub(r"(?:er|est)$", "", word)
     if stem in ("short", "small", "low"):
         return _extreme_tower(towers, low=True)
-    if stem in ("tall", "big", "bigg", "high"):
+    if stem in ("tall", "big", "bigg", "high", "larg"):
         return _extreme_tower(towers, low=False)
     order = sorted(towers)
     if word == "middle":
@@ -1280,9 +1284,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     key = key or ("steps" if last.shape == "staircase" else "height")
     metres = getattr(last, f"{key}_m", None)  # "stack it up to 10 inches": in whole parts
     said = getattr(last, key) or (round(metres / part_m) if metres else None)
-    # unsaid, the generators' own sizes (`sdi.design.shapes`): a wall 2 high, a slab 1
-    unsaid = {"grid": 1, "row": 1, "enclosure": 1, "wall": 2 if key == "height" else 4}
-    now = said or unsaid.get(last.shape, 3)
+    now = said or _unsaid(last.shape, key)
     if op == "/" and now % n:
         return None
     new = _APPLY[op](now, n)
@@ -1302,7 +1304,7 @@ def _resize(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
         # "three towers of 2, then add one more cube to each": all of them, each from its own
         # size ("a tower of 2 and a tower of 4, … to each of them": 3 and 5)
         were: list[int] = [
-            (getattr(structures[i], key) if i != index else now) or unsaid.get(last.shape, 3)
+            (getattr(structures[i], key) if i != index else now) or _unsaid(last.shape, key)
             for i in alike
         ]
         got = [_APPLY[op](v, n) for v in were]

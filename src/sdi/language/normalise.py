@@ -1642,8 +1642,10 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "a low border … running all along the right-hand edge": a wall along it (a ring)
     (re.compile(r"\bborder\b(?=[^.;]*\b(?:along|down)\s+(?:the\s+)?(?:\w+[\s-]+){0,2}(?:edge|side)\b)"
                 r"(?![^.;]*\b(?:around|round|enclos\w*|surround\w*)\b)", re.I), "wall"),
-    # "Circle back to the wall: …": return to it (a ring was built)
-    (re.compile(r"\bcircl(?:e|ing)\s+back\s+(?:to|round\s+to|around\s+to)\b", re.I), ""),
+    # "Circle back to the wall: …": return to it (a ring was built); "Hi all, circling back on
+    # the demo layout": the whole aside (read as the back)
+    (re.compile(r"\bcircl(?:e|ing)\s+back\s+(?:(?:to|round\s+to|around\s+to)\b|on\b[^.,;!?]*|"
+                r"(?=[.,;!?]))", re.I), ""),
     # "a 3 by 3 square with the centre square empty": its middle empty (a second, a row of 8)
     (re.compile(r"\bwith\s+(?:the\s+)?(centre|center|middle)\s+(?:square|cube|spot|cell|block|one|"
                 r"position)\s+(?:left\s+)?(empty|open|free|missing|out|removed)\b", re.I),

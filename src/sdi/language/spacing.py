@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 
+from sdi.language.nouns import COPY_WORDS
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -118,7 +119,7 @@ def _several(text: str) -> bool:
     and none that spans a gap of its own (a bridge's gap is its span)."""
     said = re.findall(r"[a-z]+", text.lower())
     # "an arch, and another one in front of it with a little gap": a copy, the gap between
-    copy = bool({"another", "second", "again", "identical", "copy"} & set(said)) and any(
+    copy = bool((COPY_WORDS | {"again"}) & set(said)) and any(
         w in lx.SHAPE_WORDS for w in said
     )
     if _spanning_named(said) and not _spanning_plural(said) and not copy:
