@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import re
 
-from sdi.language.nouns import COPY_WORDS
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
@@ -114,12 +113,17 @@ _RELATED = re.compile(
 )
 
 
+_COPY_SAID = frozenset({"another", "second", "again", "identical", "copy"})
+"""The words of a copy that put a gap between it and the one before, not in it (narrower than
+`nouns.COPY_WORDS`: "the same" says nothing of a second structure)."""
+
+
 def _several(text: str) -> bool:
     """The command names more than one structure (two shape nouns, a counted plural, a copy)
     and none that spans a gap of its own (a bridge's gap is its span)."""
     said = re.findall(r"[a-z]+", text.lower())
     # "an arch, and another one in front of it with a little gap": a copy, the gap between
-    copy = bool((COPY_WORDS | {"again"}) & set(said)) and any(
+    copy = bool(_COPY_SAID & set(said)) and any(
         w in lx.SHAPE_WORDS for w in said
     )
     if _spanning_named(said) and not _spanning_plural(said) and not copy:
