@@ -10192,3 +10192,130 @@ def test_a_cube_on_each_pillar_and_a_position_said_before_the_item():
     r = _built_as_said("Position: 5 cm from the front edge, centred left-right. Item: row of 6, "
                        "left-right.", ["row"], [1] * 6)  # fmt: skip
     assert r.spec.structures[0].at_x == pytest.approx(0.25)
+
+
+def _cube_on_the_beam(r):
+    """The beam's part and the cube standing on it, centred over it."""
+    beam = next(o for o in r.layout.objects if max(o.size) > 0.06)
+    top = max(r.layout.objects, key=lambda o: o.position[2])
+    assert top is not beam and top.position[2] > beam.position[2]
+    assert top.position[:2] == pytest.approx(beam.position[:2])
+    return beam
+
+
+def test_a_beam_said_across_the_top_of_towers_said_before_it():
+    # "then a beam across the top": the beam named nothing and was dropped (partial)
+    for command in ("two towers of five with one cube of space between them, then a beam across "
+                    "the top", "two towers of 5, beam across", "two columns of 3, beam across "
+                    "the top", "2 twrs ht 3, 1 clr, beam across top",
+                    "two towers of 4, a beam on top"):  # fmt: skip
+        r = _built_as_said(command, ["bridge"], None)
+        heights = sorted(_columns(r).values())
+        assert heights[-2:] == [heights[-1]] * 2 and heights[-1] in (3, 4, 5)
+    # a beam held up by towers, a bridge's own lintel, pillars said in the plural only
+    _built_as_said("a beam supported by two 3-cube towers", ["bridge"], [1, 3, 3])
+    _built_as_said("a gate made of two 4-cube posts and a lintel", ["bridge"], [1, 4, 4])
+    _built_as_said("pillars of 2, beam on top, bridge", ["bridge"], [1, 2, 2])
+    _built_as_said("posts 3 high, beam on top", ["bridge"], [1, 3, 3])
+    # a slab on a slab is not a beam on it
+    r = plan("He'd like a slab 2 by 3 and, on top of it, a smaller slab 1 by 2, like a cake.")
+    assert [s.shape for s in r.spec.structures] == ["grid", "grid"]
+    assert r.spec.relations and r.spec.relations[0].kind == "on_top_of"
+
+
+def test_a_cube_on_the_beam_that_joins_two_towers():
+    # "… put a beam across them. Finally, put a single cube on the middle of the beam": the
+    # cube was read as a third tower joining them (partial) or stood beside them
+    for command in ("First build two towers of four a cube apart. After that, put a beam across "
+                    "them. Finally, put a single cube on the middle of the beam.",
+                    "a beam laid across two towers of 4 with a cube on the middle of the beam",
+                    "two towers of 4 with a beam across them and a cube on the middle of the beam",
+                    "two towers of 3, a beam across them, a cube on the beam, centred",
+                    "two towers of 3 one cube apart with a beam on top, then a cube on the beam",
+                    "a beam supported by two 3-cube towers, with one cube sitting on the middle "
+                    "of the beam"):  # fmt: skip
+        r = _built_as_said(command, ["bridge", "tower"], None)
+        _cube_on_the_beam(r)
+    # what follows the beam is a structure of its own
+    r = _built_as_said("two towers of 4 joined by a beam, a pyramid to the left",
+                       ["bridge", "pyramid"], None)  # fmt: skip
+    # a trailing word about the beam SDI does not use is reported
+    r = plan("two towers of 3, a beam across the top, then a cube on the beam, over the middle "
+             "AC: it's all one piece")  # fmt: skip
+    assert r.status == "partial" and [s.shape for s in r.spec.structures] == ["bridge", "tower"]
+
+
+def test_one_structure_named_twice_in_a_phrase_is_one():
+    # "Tower, 250 mm tall, single column": two towers were built (partial)
+    r = _built_as_said("Tower, 250 mm tall, single column, for the vision calibration rig.",
+                       ["tower"], [5])  # fmt: skip
+    r = _built_as_said("My daughter is asking for a big wall in the back, 8 long and 4 high, "
+                       "it's her castle wall she says.", ["wall"], [4] * 8)  # fmt: skip
+    assert any("named twice" in n for n in r.notes)
+    # the group counted before, sized again by name: its size (a third wall was built)
+    for command in ("A tower of 6 between two walls, each wall 3 long and 3 high.",
+                    "a tower of 6 between two walls, the walls 3 long and 3 high"):  # fmt: skip
+        r = _built_as_said(command, ["tower", "wall", "wall"], None)
+        assert [(s.length, s.height) for s in r.spec.structures[1:]] == [(3, 3), (3, 3)]
+    # two said as two stay two
+    r = plan("a tower of 5 and a tower")
+    assert len(r.spec.structures) == 2
+    assert len(plan("tower 3, tower 5").spec.structures) == 2
+
+
+def test_a_count_before_a_size_word_counts_the_structures():
+    # "one tall tower" was a tower 1 high, silently; "two tall towers" one tower 2 high
+    for command, n in (("one tall tower", 1), ("one really tall tower", 1), ("one big tower", 1),
+                       ("two tall towers", 2), ("2 tall towers", 2),
+                       ("My kid just wants one really tall tower, as tall as the robot can do.",
+                        1)):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        heights = [s.height for s in r.spec.structures]
+        assert len(heights) == n and all(h is not None and h >= 5 for h in heights), command
+    # "as tall as the robot can do" after "really tall": the tallest that fits (6 high was built)
+    _built_as_said("My kid just wants one really tall tower, as tall as the robot can do.",
+                   ["tower"], [10])  # fmt: skip
+    r = _built_as_said("one tall tower and one short tower", ["tower", "tower"], None)
+    assert r.spec.structures[0].height > r.spec.structures[1].height
+    # a number with an article before it is the size: "a 5 tall tower"
+    _built_as_said("a 5 tall tower", ["tower"], [5])
+    _built_as_said("two tall towers of 5", ["tower", "tower"], [5, 5])
+
+
+def test_places_one_each_after_a_shared_layer_count_and_sizes_said_with_on_and_and():
+    # "Two 3x3 slabs, 1 layer each, one at front-left, one at back-right": both front left
+    r = _built_as_said("Two 3x3 slabs, 1 layer each, one at front-left, one at back-right.",
+                       ["grid", "grid"], [1] * 18)  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["front left", "back right"]
+    # "block 2 on 2 on 2": the third side was dropped (one layer, silently)
+    r = _built_as_said("Put block 2 on 2 on 2 in middle of table.", ["block"], [2] * 4)
+    # "base is four and four": a pyramid with a 4 by 4 base (a one-wide stepped shape)
+    r = _built_as_said("Make for me one pyramid, base is four and four.", ["pyramid"], None)
+    assert r.spec.structures[0].length == 4
+    xs = {round(o.position[0], 3) for o in r.layout.objects if o.position[2] < 0.05}
+    ys = {round(o.position[1], 3) for o in r.layout.objects if o.position[2] < 0.05}
+    assert (len(xs), len(ys)) == (4, 4)
+
+
+def test_the_rise_of_each_step_is_not_the_staircase_height():
+    # "4 risers of 5 cm each": read as the whole staircase 5 cm high (one cube, silently)
+    r = _built_as_said("Staircase: 4 risers of 5 cm each, ascending toward the left.",
+                       ["staircase"], [1, 2, 3, 4])  # fmt: skip
+    assert r.spec.structures[0].steps == 4
+    # a rise SDI's parts cannot make is reported, the steps kept
+    r = plan("a staircase, 5 steps of 10 cm each")
+    assert r.status == "partial" and r.spec.structures[0].steps == 5
+
+
+def test_a_structure_then_one_here_and_one_there_is_two():
+    # "each want a tower, one on the left and one on the right": a third tower, silently
+    r = _built_as_said("Our twins each want a tower, one on the left and one on the right, both "
+                       "5 high.", ["tower", "tower"], [5, 5])  # fmt: skip
+    assert [s.region for s in r.spec.structures] == ["left", "right"]
+    # "just a cube, one single cube": the cube said again (two were built)
+    _built_as_said("ok so nothing fancy just a cube, one single cube, front left, and then "
+                   "that's it", ["tower"], [1])  # fmt: skip
+    # "in a line 1 gap": the gap's size (a row 1 long was built beside the towers)
+    r = _built_as_said("3 twrs of 4 in a line 1 gap", ["tower"] * 3, [4, 4, 4])
+    assert r.spec.gap_m == pytest.approx(0.05)

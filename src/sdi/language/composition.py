@@ -215,7 +215,10 @@ def relate(
             for rel in relations
         ):
             picked = True  # "a 3x3 layer and a 2x2 layer on that, then a cube on top": the stack's
-        if r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1 and not picked:
+        joined = replace.get(first) is not None and replace[first].shape == "bridge"
+        if joined and o_idx in drop:
+            o_idx = first  # "two towers joined by a beam, then a cube on top": on the bridge
+        elif r.kind == "on" and phrases[obj].count > 1 and phrases[subj].count == 1 and not picked:
             _join(phrases, obj, subj, structures, replace, drop, st, relations)
             continue
         subject = replace.get(s_idx, structures[s_idx])
@@ -646,6 +649,10 @@ def _join(
         n = towers[0].length or 2
         towers = [towers[0].model_copy(update={"shape": "tower", "height": 1, "length": None,
                                                "gap_m": None})] * n  # fmt: skip
+    if len(towers) == 1 and towers[0].shape == "tower" and _PAIR.match(p.text):
+        # "pillars of 2, beam on top": the plural names the beam's two pillars (one was built)
+        towers = [towers[0]] * 2
+        st.notes.append(f"read '{p.text.strip(' ,')}' under one beam as two")
     if len(towers) == 1 and towers[0].shape == "tower":
         # "stack 3 high, then a second stack of 3, then lay a beam across the two": the tower
         # named just before it is the other pillar
@@ -719,6 +726,11 @@ def _join(
         if q.count == 1 and q.spec is not None and q.first not in drop and q.ref is None
         and replace.get(q.first, structures[q.first]).shape in ("bridge", "arch")
         and not _NUMBER.search(q.text)  # nothing sized: a name of what follows
+    ] + [  # "pillars of 2, beam on top, bridge": the name said last
+        q for q in phrases[max(p for p in (pillars, joiner) if p is not None) + 1 :][-1:]
+        if q.count == 1 and q.spec is not None and q.ref is None and _NAME_LAST.match(q.text)
+        and re.search(r"\b" + re.escape(q.text.split()[-1]) + r"\W*$", st.command)
+        and replace.get(q.first, structures[q.first]).shape in ("bridge", "arch")
     ]  # fmt: skip
     if named and not _MORE_WORDS.search(st.command):
         # "I want a bridge. Two towers of 3 with a beam across them.": the bridge described
@@ -727,6 +739,19 @@ def _join(
                         "(their pillars and beam)")  # fmt: skip
 
 
+_NAME_LAST = re.compile(
+    r"\W*(?:(?:that|this|it)\s*(?:is|'s|makes?|=)\s*)?(?:(?:the|a|an|one|my|our)\s+)?"
+    r"(?:bridge|gate|arch|archway|doorway|goal|goalpost|portal|gateway)(?:\s+(?:make|please|done))?"
+    r"\W*$",
+    re.IGNORECASE,
+)
+"""', bridge', 'that is the gate': a name said after the towers and beam it names."""
+_PAIR = re.compile(
+    r"\W*(?:(?:the|its|their|with)\s+)?(?:towers|pillars|posts|columns|stacks|legs|piers|supports|"
+    r"uprights)\b(?![^,;.]*\b(?:each|all)\b)",
+    re.IGNORECASE,
+)
+"""'pillars of 2', 'the posts 3 high': towers said in the plural, with no count of them."""
 _NUMBER = re.compile(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b", re.I)
 _MORE_WORDS = re.compile(r"\b(?:another|second|more|two\s+bridges|both)\b", re.IGNORECASE)
 

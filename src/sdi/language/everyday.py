@@ -399,5 +399,19 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:\s+cubes?)?(?:\s+(?:wide|across|(?:on\s+)?(?:a|each)\s+side))?\b"
                 r"(?!\s*(?:x|by|on|cm|mm|m)\b)", re.I),
      _pyramid_base),
+    # "just a cube, one single cube, front left": the cube said again, one (two were built)
+    (re.compile(r"\b(an?\s+(?:single\s+)?([a-z]+))\s*,\s*(?:just\s+|only\s+)?(?:one|a)\s+(?:single|"
+                r"lone|solitary|only)\s+\2\b", re.I), r"\1"),
+    # "each want a tower, one on the left and one on the right": two of them, one each (a third
+    # tower was built)
+    (re.compile(r"\b(?:an?|one)\s+(" + _FAMILY_SAID + r")\s*,\s*(?=one\s+(?:on|at|in|to)\b"
+                r"[^.;]*?\band\s+(?:one|the\s+other)\s+(?:on|at|in|to)\b)", re.I),
+     lambda m: (f"two {m.group(1)}s, " if f"{m.group(1).lower()}s" in lx.SHAPE_WORDS
+                else m.group(0))),
+    # "3 towers of 4, 1 gap", "in a line 1 gap": the gap's size (read as a height in a list, or
+    # as a row 1 long beside the towers, silently)
+    (re.compile(r"(?<!by\s)(?<![x×]\s)(?<![x×])\b(\d+|one|two|three)\s+(gap|space)\b"
+                r"(?!\s*(?:of|between|to|from|inside|within|in\s+the)\b)", re.I),
+     r"\2 \1"),
 ]
 """The everyday phrasings, in the order they are tried (earlier rewrites feed later ones)."""

@@ -3789,14 +3789,21 @@ _LARGE = {"large": "wide", "broad": "wide"}  # "a block large 3": as wide
 
 _NUM_WORD = r"(?:\d+|two|three|four|five|six|seven|eight|nine|ten)"
 _N_ON_M = re.compile(
-    rf"\b({_NUM_WORD})\s+on\s+({_NUM_WORD})\b(?!\s*(?:cubes?|blocks?|parts?|towers?|levels?|"
-    r"layers?|of\b|the\b))",
+    rf"\b({_NUM_WORD})\s+on\s+({_NUM_WORD})(?:\s+on\s+({_NUM_WORD}))?\b(?!\s*(?:cubes?|blocks?|"
+    r"parts?|towers?|levels?|layers?|of\b|the\b))",
     re.IGNORECASE,
 )
+_BASE_AND = re.compile(
+    rf"\b(base|footprint|bottom|size)(\s+(?:is|of|=|:)\s*|\s+)({_NUM_WORD})\s+and\s+({_NUM_WORD})\b"
+    r"(?!\s*(?:high|tall|levels?|layers?|cubes?\s+high))",
+    re.IGNORECASE,
+)
+"""'base is four and four': its two sides (the base was read as 4, the second 4 dropped)."""
 
 
 def _n_by_m(m: re.Match[str]) -> str:
-    return f"{m.group(1)} by {m.group(2)}"
+    third = f" by {m.group(3)}" if m.group(3) else ""  # "block 2 on 2 on 2"
+    return f"{m.group(1)} by {m.group(2)}{third}"
 
 
 # a drawing's words for a gap between faces (SDI's gaps are between faces): "clear gap 300 mm",
@@ -4807,6 +4814,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _expand_noted(_SHORTHAND, text, notes)
     text = _bare_millimetres(text, notes)
     text = _N_ON_M.sub(_n_by_m, text)  # "a block two on two", "base three on three"
+    text = _BASE_AND.sub(r"\1\2\3 by \4", text)
     for pattern, repl in _CLEAR:
         text = pattern.sub(repl, text)
     text = _IN_THE_DIM.sub(_dimensioned, text)

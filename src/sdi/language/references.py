@@ -218,6 +218,61 @@ def named_again(
     return same[0]
 
 
+_SECOND = re.compile(
+    r"\b(?:and|plus|also|then|with|&)\s+(?:then\s+)?(?:a|an|one|some)\b|\b(?:another|second|"
+    r"both|each|pair|couple|several|more|twins?|others?|extra|again|too|as\s+well)\b",
+    re.IGNORECASE,
+)
+"""Words that make a second noun of one family a second structure ("a wall and a wall")."""
+_PLACES = ("region", "at_x", "at_y", "axis")
+_THE_GROUP = re.compile(
+    r",\s*(?:and\s+)?(?:(?:the|each|both|all|every)(?:\s+of\s+the)?\s+)+(?:two\s+|three\s+)?"
+    r"([a-z]+)\b",
+    re.IGNORECASE,
+)
+"""', the walls …', ', each wall …': the structures counted before, named again."""
+
+
+def named_twice(spec: SpecDraft, text: str, st: ReadState) -> SpecDraft:
+    """ "Tower, 250 mm tall, single column", "a big wall at the back, 8 long and 4 high, it's
+    her castle wall": one structure sized and named again in the same phrase, with no word that
+    makes it a second one (two towers and two walls were built)."""
+    if len({s.shape for s in spec.structures}) != 1:
+        return spec
+    *group, last = spec.structures
+    again = _THE_GROUP.search(text)
+    if (
+        len(group) >= 2
+        and again
+        and lx.SHAPE_WORDS.get(again.group(1).lower()) == last.shape
+        and _sized(last)
+        and not any(_sized(s) for s in group)
+    ):
+        # "two walls, the walls 3 long and 3 high", "…, each wall 3 long": the group's size
+        sizes = last.model_dump(include={*_SIZES, *_PLACES}, exclude_defaults=True)
+        st.notes.append(f"read '{text[again.start():].strip(' ,')}' as the size of each "
+                        f"{last.shape} named before it")  # fmt: skip
+        return spec.model_copy(
+            update={"structures": tuple(s.model_copy(update=sizes) for s in group)}
+        )
+    if len(spec.structures) != 2:
+        return spec
+    said = re.findall(r"[a-z]+", text.lower())
+    plural = [w for w in said if w.endswith("s") and lx.SHAPE_WORDS.get(w[:-1])]
+    if plural or _SECOND.search(text) or set(said) & COPY_WORDS or said.count("a") > 1:
+        return spec  # "a tower, a tower of 5": listed, two
+    a, b = spec.structures
+    if not (_sized(a) or _sized(b)) or set(_sized(a)) & set(_sized(b)):
+        return spec  # "tower 3, tower 5": a size each, two
+    if a.model_dump(include=set(_PLACES), exclude_defaults=True) and b.model_dump(
+        include=set(_PLACES), exclude_defaults=True
+    ):
+        return spec  # each placed: two, somewhere each
+    more = b.model_dump(include={*_SIZES, *_PLACES}, exclude_defaults=True)
+    st.notes.append(f"read the {a.shape} named twice in '{text.strip()}' as one")
+    return spec.model_copy(update={"structures": (a.model_copy(update=more),)})
+
+
 def same_as_before(p: Phrase, spec: SpecDraft, before: list[Phrase]) -> str | None:
     """ "Steps: 5. Shape: staircase.": a bare family name in a later clause names the one
     structure described before, not a second one."""

@@ -1120,7 +1120,29 @@ _REWRITES += [
         "{0}{1} joined at the top by a beam ",
         "read '{0}' as the towers joined by a beam across the top",
     ),
+    (  # "two towers of 5, then a beam across the top", "… beam across.": the beam lies on top
+        # of what was said before it (read as a beam 'across' a structure named "the top")
+        re.compile(
+            r"\b(beams?|lintels?|planks?|girders?|crossbars?)\s+(?:(?:laid|lying|running|placed|"
+            r"set|going|resting)\s+)?(?:across|over|spanning)(?:\s+(?:the|their|both)(?:\s+two)?"
+            r"\s+tops?|\s+(?:the\s+)?top)?(?=\s*(?:[.;,)]|$|\b(?:then|and|like|as)\b))",
+            re.IGNORECASE,
+        ),
+        "{0} on top ",
+        "",
+    ),
     (re.compile(r"\b(?:on|at)\s+the\s+(?:very\s+)?top\b(?!\s+of)", re.IGNORECASE), " on top ", ""),
+    (  # "two towers of 3, beam on top": a part of its own after the comma (read as the towers'
+        # own word, one tower stood on the other)
+        re.compile(
+            r"\s*,\s*(?:and\s+)?(?:(?:a|the|one)\s+)?(?:(?:long|single|flat)\s+)?(beam|lintel|"
+            r"plank|girder|crossbar)\s+on\s+top\b(?!\s+of|\s+(?:joining|connecting|linking|"
+            r"spanning|bridging)\b)",
+            re.IGNORECASE,
+        ),
+        ". a {0} on top",
+        "",
+    ),
     (re.compile(r"\b(?:thanks|thank\s+you)(?:\s+a\s+lot|\s+so\s+much)?\b", re.I), " ", ""),
     (re.compile(r"\bnothing\s+(?:fancy|else|special|more)\b", re.IGNORECASE), " ", ""),
     (
@@ -2380,6 +2402,18 @@ _REWRITES += [
         " {0}{1} joined at the top by a {2} ",
         "read '{0}' as the towers joined by the beam",
     ),
+    (  # "two towers joined by a beam and a cube on top", "…, a cube on the beam": what follows
+        # is a structure of its own (read with the beam as what joins the towers; the cube stood
+        # between them)
+        re.compile(
+            r"\b(joined\s+(?:at\s+the\s+top\s+)?by\s+(?:a|one|the)\s+(?:beam|lintel|plank|girder|"
+            r"crossbar))\s*(?:,\s*(?:and\s+)?|\s+and\s+)(?=(?:then\s+)?(?:(?:put|place|add|set|"
+            r"stand)\s+)?(?:an?\b|one\s+(?:single\s+)?(?:cube|block|tower)\s+on\b))",
+            re.IGNORECASE,
+        ),
+        "{0}, then ",
+        "",
+    ),
     (
         re.compile(r"\bon\s+top\s+off\b", re.IGNORECASE),
         " on top of ",
@@ -2722,6 +2756,61 @@ def _beam_size(text: str, st: ReadState) -> str:
     return _BEAM_SIZE.sub(sub, text)
 
 
+_SPANNED = "|".join(sorted(
+    (w for w, f in lx.SHAPE_WORDS.items()
+     if f in ("bridge", "arch") and w not in ("lintel", "roof")),
+    key=len, reverse=True))  # fmt: skip
+_OWN_LINTEL = re.compile(
+    r"\b((?:" + _SPANNED + r")\b[^.;]*?\b(?:posts?|pillars?|legs?|columns?|towers?|sides?|"
+    r"supports?|piers?|uprights?|jambs?)\b[^.;]*?)\b(lintel|crossbar)\b",
+    re.IGNORECASE,
+)
+"""'a doorway with sides four cubes tall and a lintel across': the doorway's own beam (its
+lintel was read as a second bridge, silently)."""
+
+_BEAM_HELD = re.compile(
+    r"\b(beams?|lintels?|planks?|girders?|crossbars?)\s+(?:supported|held(?:\s+up)?|carried|"
+    r"borne|propped(?:\s+up)?)\s+by\s+",
+    re.IGNORECASE,
+)
+"""'a beam supported by two towers of 3': the beam rests on them (it was dropped)."""
+
+
+_ONE_SIZED = re.compile(
+    r"\b(?:one|1)\s+(?=(?:(?:really|very|quite|pretty|super|extra|nice|single|"
+    + "|".join(sorted(lx.SIZE_WORDS, key=len, reverse=True))
+    + r")[\s,]+)+(?:" + shape_alternation(exclude=lx.AMBIGUOUS_SHAPES) + r")\b(?![\s-]*shaped))",
+    re.IGNORECASE,
+)
+"""'one tall tower', 'one big tower': one of them, of that size (read as 1 high, silently)."""
+
+
+_RISE_EACH = re.compile(
+    r"\b(\d+|two|three|four|five|six|seven|eight)\s+(risers?|steps?|stairs?)\s+(?:of\s+|at\s+)?"
+    r"(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:high\s+|tall\s+)?(?:each|apiece|per\s+step)\b",
+    re.IGNORECASE,
+)
+
+
+def _rise_each(text: str, st: ReadState) -> str:
+    """ "Staircase: 4 risers of 5 cm each": how much each step rises (read as the whole
+    staircase 5 cm high: one part, silently). A part's height is SDI's rise; another is said."""
+    part = st.cell.cube[2]
+
+    def sub(m: re.Match[str]) -> str:
+        rise = float(m.group(3)) * lx.UNITS_M[m.group(4).lower()]
+        said = m.group(0).strip()
+        if abs(rise - part) < 1e-6:
+            st.notes.append(f"read '{said}' as steps one part ({part:g} m) high each")
+        else:
+            st.material.append(said)
+            st.notes.append(f"ignored the rise in '{said}': SDI's steps rise one part "
+                            f"({part:g} m) each")  # fmt: skip
+        return f" {m.group(1)} steps "
+
+    return _RISE_EACH.sub(sub, text)
+
+
 _SINGLE_LAYER = re.compile(
     r"\b(?:a|one)\s+(?:single|flat|one[- ]cube[- ]thick)\s+layer\s+of\s+(?:cubes|blocks|parts)\b",
     re.I,
@@ -3016,8 +3105,9 @@ _DISTRIBUTE = re.compile(
     r"\b(two|three|four|five|[2-5]|both|a\s+(?:couple|pair)\s+of)\s+((?:[\w-]+\s+)?"
     r"(?:\d+\s*(?:x|by|×)\s*\d+(?:\s*(?:x|by|×)\s*\d+)?\s+)?)("
     + _SHAPE_ALT + r")s\b"
-    r"((?:\s+(?:of|with)\s+[\w\s-]+?|(?:\s*,?\s*(?:and\s+)?(?:\d+|two|three|four|five|six)\s+(?:cubes?\s+)?"
-    r"(?:high|tall|long|wide))+(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
+    r"((?:\s+(?:of|with)\s+[\w\s-]+?|(?:\s*,?\s*(?:and\s+)?(?:\d+|one|two|three|four|five|six)\s+"
+    r"(?:cubes?\s+)?(?:high|tall|long|wide|thick|deep|layers?|levels?|courses?|tiers?))+"
+    r"(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
     r"(?P<together>\s+(?:side\s+by\s+side|next\s+to\s+each\s+other|in\s+a\s+row))?"
     r"(?:\s*,?\s*please)?\s*[:,;]\s*(?P<items>(?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
@@ -3895,6 +3985,9 @@ def rewrite(text: str, st: ReadState) -> str:
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
     text = _apex(_level_labels(_level_list(text, st), st), st)
     text = _attributive(_sized_base(_beam_size(_single_layer(text), st), st), st)
+    text = _ONE_SIZED.sub("a ", text)
+    text = _rise_each(text, st)
+    text = _BEAM_HELD.sub(r"\1 resting on ", _OWN_LINTEL.sub(r"\1beam", text))
     text = _tetris(text, st)
 
     def on_end(m: re.Match[str]) -> str:

@@ -227,6 +227,22 @@ class _Parser:
     def word(self, k: int) -> str:
         return self.toks[k].text if 0 <= k < len(self.toks) else ""
 
+    def _count_of_sized(self, k: int) -> bool:
+        """The number at `k` counts structures a vague size word describes ("two tall towers",
+        "one tall tower"), not their size ("a 5 tall tower", "3 high tower")."""
+        adjective, noun = self.word(k + 1), self.word(k + 2)
+        if (
+            adjective not in ("tall", "short", "low")
+            or self.word(k - 1) in ("a", "an", "the")
+            or re.search(rf"\d\s*-\s*{adjective}\b", self.command, re.IGNORECASE)  # "3-tall"
+        ):
+            return False
+        family = lx.SHAPE_WORDS.get(noun)
+        if family is None or noun in lx.AMBIGUOUS_SHAPES:
+            return False
+        plural = noun.endswith("s") and lx.SHAPE_WORDS.get(noun[:-1]) == family
+        return plural or self.toks[k].value == 1
+
     def is_num(self, k: int) -> bool:
         return 0 <= k < len(self.toks) and self.toks[k].kind == "num"
 
@@ -833,7 +849,9 @@ class _Parser:
                 if self.word(j) in lx.PART_WORDS:
                     j += 1
                 wj = self.word(j)
-                if wj in lx.DIMENSION_WORDS and (wj not in ("up", "height", "width", "length")):
+                if j == k + 1 and self._count_of_sized(k):
+                    pass  # "two tall towers", "one tall tower": how many, each tall
+                elif wj in lx.DIMENSION_WORDS and (wj not in ("up", "height", "width", "length")):
                     key = lx.DIMENSION_WORDS[wj]
                     if h.shape in ("u_shape", "t_shape"):  # "a U 4 wide and 3 deep"
                         key = "length" if key == "width" and wj != "deep" else key
@@ -1119,7 +1137,11 @@ class _Parser:
                 continue
             if w in lx.SIZE_WORDS:
                 dim, size = lx.SIZE_WORDS[w]
-                if w in ("high", "tall", "long", "wide", "deep") and self.is_num(k - 1):
+                if (
+                    w in ("high", "tall", "long", "wide", "deep")
+                    and self.is_num(k - 1)
+                    and not self._count_of_sized(k - 1)
+                ):
                     continue
                 p.setdefault("_sizes", []).append((dim, size))
                 take(k)
@@ -1483,7 +1505,8 @@ class _Parser:
             )
         p = dict(h.params)
         shape = h.shape
-        sizes = p.pop("_sizes", [])
+        # "a really tall tower, the tallest you can": the utmost wins over a vague size
+        sizes = sorted(p.pop("_sizes", []), key=lambda said: said[1] != "X")
         regions = p.pop("_regions", [])
         edges = p.pop("_edges", [])
         count = p.pop("_count", None)
