@@ -1982,7 +1982,8 @@ def test_a_beam_put_across_towers_joins_them():
 
 @pytest.mark.parametrize(
     "command, word",
-    [("two towers of 2 and a girder", "girder"), ("a 2x2 block, hollow", "hollow")],
+    # ("two towers of 2 and a girder" is a bridge: the girder lies across them)
+    [("two towers of 2 and a girder beside them", "girder"), ("a 2x2 block, hollow", "hollow")],
 )
 def test_a_consulted_word_the_reading_builds_nothing_for_is_reported(command, word):
     r = plan(command)
@@ -10319,3 +10320,142 @@ def test_a_structure_then_one_here_and_one_there_is_two():
     # "in a line 1 gap": the gap's size (a row 1 long was built beside the towers)
     r = _built_as_said("3 twrs of 4 in a line 1 gap", ["tower"] * 3, [4, 4, 4])
     assert r.spec.gap_m == pytest.approx(0.05)
+
+
+def test_on_the_corner_of_the_structure_before_and_what_the_parts_make():
+    # "… and a tower of 3 on its corner": stood apart from the L, silently; "Then add a tower of
+    # 3 on the corner" was read as a corner of the table
+    for command in ("an L shape 4 by 4, and a tower of 3 on its corner",
+                    "L shape 4x4 flat, 1 high. Then add a tower of 3 on the corner"):  # fmt: skip
+        r = _built_as_said(command, ["l_shape", "tower"], None)
+        assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+    r = _built_as_said("put a tower on the corner", ["tower"], None)
+    assert r.spec.structures[0].region is not None and not r.spec.relations
+    # "… to make a gate": what the towers and beam make, not a second bridge
+    r = _built_as_said("two stacks of five cubes one at the front one at the back and then put a "
+                       "beam across the tops to make a gate", ["bridge"], None)  # fmt: skip
+    assert r.spec.structures[0].axis == "x"
+    assert any(n.startswith("'to make a gate': holds") for n in r.notes)
+    _built_as_said("a tower of 3, then I want to make a wall next to it", ["tower", "wall"], None)
+
+
+def test_on_the_beam_said_after_it_and_changes_of_the_towers_said_by_name():
+    # "…, and on the beam a stack of three": the stack stood apart, silently
+    r = _built_as_said("Two stacks of two, a beam across their tops, and on the beam a stack of "
+                       "three.", ["bridge", "tower"], None)  # fmt: skip
+    _cube_on_the_beam(r)
+    _built_as_said("two columns of two and one beam", ["bridge"], [1, 2, 2])
+    # "make the towers 4 high": a third tower was built, silently
+    _built_as_said("two towers of 2. make the towers 4 high", ["tower", "tower"], [4, 4])
+    _built_as_said("Two posts of two and a beam on them. Now make the posts four high.",
+                   ["bridge"], [1, 4, 4])  # fmt: skip
+
+
+def test_layers_said_by_their_size_in_turn():
+    # "A row of 5, then 3 on it, then 1": read as five towers joined by a beam (failure)
+    for command, levels in (("A row of 5, then 3 on it, then 1.", [5, 3, 1]),
+                            ("a row of four, then three on top, then two, then one", [4, 3, 2, 1]),
+                            ("4x4, then 3x3, then 2x2, then one cube", [16, 9, 4, 1])):  # fmt: skip
+        r = plan(command)
+        assert r.status == "success", (command, r.notes)
+        by_level: dict[float, int] = {}
+        for o in r.layout.objects:
+            by_level[round(o.position[2], 3)] = by_level.get(round(o.position[2], 3), 0) + 1
+        assert [n for _, n in sorted(by_level.items())] == levels, command
+
+
+def test_sizes_said_as_one_and_a_count_heading_its_list():
+    # "three towers: a little one, a middle one and a big one": three towers 1 high, silently
+    for command in ("My daughter wants three towers: a little one, a middle one and a big one.",
+                    "three towers: a small tower, a medium tower and a big tower"):  # fmt: skip
+        r = _built_as_said(command, ["tower"] * 3, None)
+        heights = [s.height for s in r.spec.structures]
+        assert heights == sorted(heights) and heights[0] < heights[-1] and heights[0] >= 2
+    r = _built_as_said("a tower of 5 and a small one next to it", ["tower", "tower"], None)
+    assert r.spec.structures[1].height < 5
+    # a correction of the base: "Correction, base three by three" (a 3x3 slab was added)
+    r = _built_as_said("Pyramid, base four by four. Correction, base three by three. Over.",
+                       ["pyramid"], None)  # fmt: skip
+    assert r.spec.structures[0].length == 3
+    # what the structures are said to become is checked, never dropped: a ring that "becomes a
+    # solid plate" is not what was built
+    r = plan("a square ring, four by four, one cube tall, and then it fills in the middle so it "
+             "becomes a solid plate")  # fmt: skip
+    assert r.status == "partial" and any("becomes a solid plate" in n for n in r.notes)
+
+
+def test_an_opening_a_height_after_taller_what_it_is_for_and_an_empty_inside():
+    # "Gate, opening two cubes wide": the gap between the posts was dropped, silently
+    r = _built_as_said("Gate, opening two cubes wide, posts four high. Over.", ["bridge"], None)
+    assert r.spec.structures[0].span == 2
+    # "Make the left one taller, five": made 4 high, silently
+    r = _built_as_said("Two towers of three, a cube apart. Make the left one taller, five.",
+                       ["tower", "tower"], [3, 5])  # fmt: skip
+    # "with the taller one standing behind": it stood in front, silently
+    r = _built_as_said("Two little towers, one of five and one of two, with the taller one "
+                       "standing behind.", ["tower", "tower"], [2, 5])  # fmt: skip
+    tall = max(r.layout.objects, key=lambda o: o.position[2])
+    short = min(r.layout.objects, key=lambda o: o.position[2] if o.position[:2] != tall.position[:2]
+                else 9)  # fmt: skip
+    assert tall.position[0] > short.position[0]  # back is +x
+    # "for my garden scene": a garden enclosure was built with the wall's sizes, silently
+    r = _built_as_said("I'd love a little wall for my garden scene, seven long and two high.",
+                       ["wall"], [2] * 7)  # fmt: skip
+    # "inside empty": a solid slab was built
+    _built_as_said("Square of cubes, inside empty, side is five, one layer.", ["enclosure"],
+                   [1] * 16)  # fmt: skip
+
+
+def test_the_side_of_one_said_beside_the_one_before_picks_it():
+    # "a tower of five one cube to its right. Make the right one shorter, three": the left one
+    # was changed, silently
+    r = _built_as_said("Tower of two, and a tower of five one cube to its right. Make the right "
+                       "one shorter, three.", ["tower", "tower"], [2, 3])  # fmt: skip
+    by_y = [h for _, h in sorted(_columns(r).items(), key=lambda kv: kv[0][1])]
+    assert by_y == [3, 2]  # right (small y) first: the right one changed
+    r = _built_as_said("a tower of 2 and a tower of 5 to its left. make the left one 3",
+                       ["tower", "tower"], [2, 3])  # fmt: skip
+    by_y = [h for _, h in sorted(_columns(r).items(), key=lambda kv: kv[0][1])]
+    assert by_y == [2, 3]
+    # not said: the first named is the one on the right, as SDI lines them up
+    _built_as_said("two towers of 2 and 5. make the right one 3", ["tower", "tower"], [3, 5])
+
+
+def test_counts_before_a_singular_noun_and_sizes_by_ordinal():
+    # "Two wall, each six long and two high": one wall 2 high, silently
+    r = _built_as_said("Two wall, each six long and two high", ["wall", "wall"], None)
+    assert [(s.length, s.height) for s in r.spec.structures] == [(6, 2), (6, 2)]
+    _built_as_said("two tower, each 3 high", ["tower", "tower"], [3, 3])
+    # "two towers, first 3, second 6": both 3 high; "the first one 3 and the second one 6":
+    # the second 1 high — silently
+    for command in ("two towers, first 3, second 6",
+                    "two towers, the first one 3 and the second one 6"):  # fmt: skip
+        _built_as_said(command, ["tower", "tower"], [3, 6])
+    # "put second behind of first": the relation was dropped
+    r = _built_as_said("I want two tower, first is 3, second is 6, put second behind of first.",
+                       ["tower", "tower"], [3, 6])  # fmt: skip
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "back")]
+
+
+def test_touching_denied_in_its_clause_keeps_the_gap():
+    # "I don't want them touching": read as no gap between them, silently
+    r = _built_as_said("two pyramids of 3 levels, I don't want them touching.",
+                       ["pyramid", "pyramid"], None)  # fmt: skip
+    assert r.spec.gap_m != 0.0
+    xs = sorted({round(o.position[1], 3) for o in r.layout.objects})
+    gaps = [b - a for a, b in itertools.pairwise(xs)]
+    assert max(gaps) > 0.05 + 1e-6  # an empty column between them
+    r = _built_as_said("two towers of 3 side by side, touching", ["tower", "tower"], [3, 3])
+    assert r.spec.gap_m == 0.0
+
+
+def test_a_slab_on_four_legs_is_a_table_and_a_height_after_taller():
+    # "A flat three by four slab on four legs of three cubes": a slab and a tower (failure)
+    r = _built_as_said("A flat three by four slab on four legs of three cubes.", ["canopy"], None)
+    assert r.spec.structures[0].height == 3
+    # "make it taller, 5": the height, not the wall's length
+    r = _built_as_said("a wall 4 long 3 high, make it taller, 5", ["wall"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].height) == (4, 5)
+    # "Table for the packing station mock-up: …": what it is for built nothing of its own
+    _built_as_said("Table for the packing station mock-up: four legs two high, top on them. Over.",
+                   ["canopy"], None)  # fmt: skip

@@ -509,6 +509,11 @@ _TWO_PLACES = re.compile(
 )
 
 
+_THEN_COUNT = re.compile(
+    r"\bthen\s+(?:\d+|one|two|three|four|five|six|seven|eight)\b(?!\s*(?:x|by)\b)", re.IGNORECASE
+)
+
+
 def _more_than_named(spec: Spec, command: str) -> list[str]:
     """ "Put the tower next to the wall. The tower is 4 high." read as four structures: more of
     a family than the words name — the reading added structures nobody asked for."""
@@ -523,6 +528,8 @@ def _more_than_named(spec: Spec, command: str) -> list[str]:
     for family, most in _named_at_most(command).items():
         if family in ("grid", "block", "pack", "enclosure"):
             continue  # "then 2x2 on top": a slab said by its size alone
+        if family == "row" and _THEN_COUNT.search(command):
+            continue  # "a row of 5, then 3 on it, then 1": rows said by their length alone
         got = sum(s.shape == family for s in spec.structures)
         if got > most >= 1:
             out.append(f"{got} {family.replace('_', ' ')}s where the command names {most}")

@@ -692,6 +692,13 @@ def _join(
         axis = "x"
     elif sides and sides <= {"left", "right"}:
         axis = "y"
+    region = first.region
+    ends = {t.region or "" for t in towers}
+    if len(towers) == 2 and ends in ({"front", "back"}, {"left", "right"}):
+        # "two stacks, one at the front, one at the back, and a beam across the tops": its ends
+        axis, region = ("x" if "front" in ends else "y"), None
+        st.notes.append(f"read the towers at the {' and '.join(sorted(ends))} as the pillars at "
+                        "the bridge's two ends")  # fmt: skip
     bridge = StructureDraft(
         shape="bridge",
         height=first.height,
@@ -699,7 +706,7 @@ def _join(
         spans=len(towers) - 1,
         at_x=first.at_x,
         at_y=first.at_y,
-        region=first.region,
+        region=region,
         axis=axis,
     )
     if joiner is not None and phrases[joiner].spec is not None:

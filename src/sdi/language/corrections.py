@@ -74,7 +74,7 @@ _FILLER = re.compile(
     r"^(?:(?:it\s+should\s+be|it'?s|i\s+meant|i\s+want|we\s+need|make\s+it|make\s+that|"
     r"(?:make|set)\s+the\s+(?:gap|space|spacing|distance)(?:\s+(?:to|of))?|"
     r"(?:could|can|would)\s+(?:it|that|we|you)\s+(?:be|make\s+it|do|have)|how\s+about|let'?s\s+(?:do|make)|"
-    r"the|a|just|only|"
+    r"the|a|just|only|(?:base|footprint|size)(?:\s+(?:is|of))?\s*[:=]?|"  # "no wait, base 3 by 3"
     r"an|to|on|at|in|of|with)\s+)+",
     re.I,
 )

@@ -12,13 +12,73 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from sdi.language.nouns import shape_alternation
+from sdi.language.nouns import families_said, shape_alternation
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
 
 _Repl = str | Callable[[re.Match[str]], str]
 _NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
 _FAMILY_SAID = shape_alternation(min_len=3)
+_CHANGE_LED = re.compile(r"\b(?:make|set|raise|lower|change|turn|bring)\s+$", re.IGNORECASE)
+_COUNTED_PLURAL = re.compile(
+    r"\b(?:two|three|four|2|3|4)\s+(?:\w+\s+)?(?:" + _FAMILY_SAID + r")s\b", re.IGNORECASE
+)
+
+
+_THEN_SIZE = re.compile(
+    r"\s*[,;.]?\s*(?:and\s+)?then\s+(?:put\s+|add\s+|lay\s+)?(?:an?\s+)?(" + _NUM
+    + r")(?:\s*(?:x|by)\s*(" + _NUM + r"))?(?:\s+(?:cubes?|blocks?|layer|course|row))?"
+    r"(?:\s+(?:on\s+(?:it|top(?:\s+of\s+(?:it|that))?|that)|above(?:\s+it)?|over\s+it))?"
+    r"(?=\s*(?:[,;.]|$|and\b|then\b))",
+    re.IGNORECASE,
+)
+
+
+def _layers_in_turn(m: re.Match[str]) -> str:
+    """ "A row of 5, then 3 on it, then 1", "4x4, then 3x3, then 2x2, then one cube": each
+    number a layer of the first one's kind on top of the one before (the numbers named nothing,
+    or the rows were read as the pillars of a bridge)."""
+    row = m.group("n") is not None
+    sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+    if not row and families_said(sentence):
+        return m.group(0)  # "a stepped pyramid: 5 by 5, then 3 by 3, …": its own levels
+    out = [m.group("head")]
+    for later in _THEN_SIZE.finditer(m.group("rest")):
+        a, b = later.group(1), later.group(2)
+        one = words_to_numbers([a.lower()])[0] == "1" and (b is None or b in ("1", "one"))
+        if one:
+            out.append("then a cube on top")
+        elif row:
+            out.append(f"then a row of {a} on top")
+        else:
+            out.append(f"then a {a} by {b or a} layer on top")
+    return ", ".join(out) + " "
+
+
+def _sized_one(m: re.Match[str]) -> str:
+    """ "three towers: a small one, a medium one and a big one": one of the family said before,
+    that size ("one" was read as 1 high, silently); "middle" is the medium size."""
+    said = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    if not said:
+        return m.group(0)
+    plural = lx.SHAPE_WORDS.get(said[-1][:-1]) is not None
+    if not plural and re.search(r"[a-z]\s*[,—–-]\s*$", m.string[: m.start()]):
+        return m.group(0)  # "a stack, a tall one": the stack described again (`rewrites`)
+    size = re.sub(r"\b(?:middle|mid)(?:[\s-]*sized)?\b", "medium", m.group(2), flags=re.I)
+    if plural:  # "three towers: a small one, …": one of those counted
+        return f"one {size}"
+    return f"{m.group(1)} {size} {said[-1]}"
+
+
+def _listed_after_count(m: re.Match[str]) -> str:
+    """ "three towers: a small tower, a medium tower and a big tower": the count heads the list
+    of the ones it counts (five towers were built, silently)."""
+    n = words_to_numbers([m.group(1).lower()])[0]
+    family = m.group(3)
+    rest = re.split(r"[.;!?]", m.string[m.end() :])[0]
+    items = re.findall(rf"\b(?:an?|one)\s+(?:[\w-]+\s+){{0,3}}?{family}\b", rest, re.I)
+    return "" if n.isdigit() and int(n) == len(items) else m.group(0)
 
 
 def _with_sized_one(m: re.Match[str]) -> str:
@@ -408,6 +468,82 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
                 r"[^.;]*?\band\s+(?:one|the\s+other)\s+(?:on|at|in|to)\b)", re.I),
      lambda m: (f"two {m.group(1)}s, " if f"{m.group(1).lower()}s" in lx.SHAPE_WORDS
                 else m.group(0))),
+    # "an L shape 4 by 4, then a tower of 3 on the corner", "… on its corner": on a corner of the
+    # structure before (stood apart from it, silently, or in a corner of the table)
+    (re.compile(r"\bon\s+(?:its|the)\s+corner\b(?!\s*(?:of|closest|nearest|next|by|cubes?|blocks?|"
+                r"parts?|ones?|pieces?)\b)", re.I),
+     lambda m: ("on one corner of it" if m.group(0).lower().split()[1] == "its"
+                or len(families_said(m.string[: m.start()])) >= 2 else m.group(0))),
+    # "two towers of 2. make the towers 4 high", "… now make the posts four high": all of them
+    # (a third tower was built, or one of them changed)
+    (re.compile(r"\b(make|set|raise|lower|build|bring|take|turn)\s+(?:all\s+|both\s+)?(?:of\s+)?"
+                r"the\s+(?:two\s+|three\s+|four\s+)?(" + _FAMILY_SAID
+                + r")s\b(?=\s+(?:to\s+|up\s+to\s+|down\s+to\s+)?(?:\d|one|two|three|four|five|"
+                r"six|seven|eight|nine|ten|taller|higher|shorter|lower|longer)\b)", re.I),
+     lambda m: (f"{m.group(1)} them" if {lx.SHAPE_WORDS.get(m.group(2).lower())}
+                == set(families_said(m.string[: m.start()])) else m.group(0))),
+    # "A row of 5, then 3 on it, then 1.", "4x4, then 3x3, then 2x2, then one cube": layers in turn
+    (re.compile(r"\b(?P<head>(?:an?\s+)?(?:row|line|course)\s+of\s+(?P<n>" + _NUM
+                + r")(?:\s+cubes?)?|(?:an?\s+)?" + _NUM + r"\s*(?:x|by)\s*" + _NUM
+                + r"(?:\s+(?:layer|slab|square|base|floor))?)(?P<rest>(?:" + _THEN_SIZE.pattern
+                + r"){2,})", re.I),
+     _layers_in_turn),
+    # "three towers: a small tower, a medium tower and a big tower": the count heads its list
+    (re.compile(r"\b(two|three|four|five|six|[2-6])\s+((" + _FAMILY_SAID + r")s)\s*:\s*", re.I),
+     _listed_after_count),
+    # "three towers: a small one, a medium one and a big one"
+    (re.compile(r"(?<!not\s)(?<!no\s)\b(an?)\s+((?:(?:really|very|bit)\s+)?(?:middle|mid|"
+                + "|".join(sorted(lx.SIZE_WORDS))
+                + r")(?:[\s-]*sized)?)\s+one\b(?![\s-]*(?:cubes?|blocks?|parts?|high|tall|long|"
+                r"wide|deep|layers?|levels?|of)\b)", re.I),
+     _sized_one),
+    # "Gate, opening two cubes wide, posts four high": the gap between its posts (dropped)
+    (re.compile(r"\b(?:an?\s+|the\s+)?(?:clear\s+)?opening\s+(?:of\s+|is\s+)?(" + _NUM
+                + r")\s+(?:cubes?\s+|blocks?\s+)?(?:wide|across)\b|\b(?:an?\s+)?(" + _NUM
+                + r")[\s-]+(?:cubes?[\s-]+|blocks?[\s-]+)?(?:wide\s+)?opening\b", re.I),
+     lambda m: f"span {m.group(1) or m.group(2)}"),
+    # "Make the left one taller, five": the height said after the comparison (made 1 taller)
+    (re.compile(r"\b(taller|higher|shorter|lower|longer)\s*[,:—–-]\s*(?:to\s+|say\s+)?(" + _NUM
+                + r")\b(?!\s*(?:cubes?\s+|blocks?\s+)?(?:more|less|fewer|extra|taller|higher|"
+                r"shorter|lower|longer|high|tall|long)\b)", re.I),
+     lambda m: f"{m.group(2)} {'long' if m.group(1).lower() == 'longer' else 'high'}"),
+    # "with the taller one standing behind": the taller one behind (it stood in front, silently)
+    (re.compile(r"\b(?:with\s+)?(the\s+(?:taller|shorter|bigger|smaller|higher|lower|tallest|"
+                r"shortest|biggest|smallest|longer|shorter)(?:\s+one)?)\s+(?:is\s+)?(?:standing|placed|"
+                r"set|sitting|going|positioned|located)\s+(?=behind|in\s+front|at\s+the|on\s+the|"
+                r"to\s+the)", re.I), r"\1 "),
+    # "Square of cubes, inside empty": empty inside, a ring (a solid slab was built)
+    (re.compile(r"\b(?:the\s+)?inside\s+(?:is\s+|left\s+)?(empty|hollow|open)\b", re.I),
+     r"\1 inside"),
+    # "Two wall, each six long": a count before a singular noun, as non-native speakers say it
+    # (read as one wall 2 high, silently)
+    (re.compile(r"(?<!\ba\s)(?<!\ban\s)(?<!\bthe\s)(?<!\bof\s)\b(two|three|four|five|six|seven|eight|"
+                r"nine|ten)\s+(" + _FAMILY_SAID + r")\b(?=\s*(?:[,:;]|each|every|and\b|with\b|$))",
+                re.I),
+     lambda m: (f"{m.group(1)} {m.group(2)}s" if f"{m.group(2).lower()}s" in lx.SHAPE_WORDS
+                else m.group(0))),
+    # "two towers, first is 3, second is 6", "the first one 3 and the second one 6": each one's
+    # size in turn (both were built 3 high, or the second 1 high, silently)
+    (re.compile(r"\b(?:the\s+)?(first|second|third|fourth|last)(?:\s+one\b)?+\s*(?:is\s+|=\s*|"
+                r":\s*)?(" + _NUM + r")\b(?!\s*(?:x|by|cm|mm|m|cubes?\s+(?:apart|away|gap|from)|"
+                r"apart|away|gap|from|of|high|tall|long|wide|deep|levels?|layers?|steps?)\b)",
+                re.I),
+     lambda m: (f"the {m.group(1)} one of {m.group(2)}"
+                if _COUNTED_PLURAL.search(m.string[: m.start()])
+                and not _CHANGE_LED.search(m.string[: m.start()]) else m.group(0))),
+    # "put second behind of first": the ordinals as the ones named (the relation was dropped)
+    (re.compile(r"\b(put|place|set|stand)\s+(?:the\s+)?(first|second|third|last)(?:\s+one)?\s+(behind|"
+                r"in\s+front\s+of|next\s+to|beside|on\s+top\s+of|on|(?:to\s+the\s+)?(?:left|right)\s+"
+                r"of)(?:\s+of)?\s+(?:the\s+)?(first|second|third|last)(?:\s+one)?\b", re.I),
+     r"\1 the \2 one \3 the \4 one"),
+    # "A flat three by four slab on four legs of three cubes": a table, that top (a slab with a
+    # tower beside it was built)
+    (re.compile(r"\b(?:an?\s+)?(?:flat\s+)?(" + _NUM + r"\s*(?:x|by)\s*" + _NUM
+                + r")\s+(?:flat\s+)?(?:slab|top|platform|plate|board|deck|tabletop)\s+(?:on|"
+                r"resting\s+on|supported\s+by|"
+                r"standing\s+on|sitting\s+on|set\s+on|on\s+top\s+of)\s+(four|4)\s+(legs|posts|pillars|"
+                r"columns|supports)\b", re.I),
+     r"a table \1 with \2 \3"),
     # "3 towers of 4, 1 gap", "in a line 1 gap": the gap's size (read as a height in a list, or
     # as a row 1 long beside the towers, silently)
     (re.compile(r"(?<!by\s)(?<![x×]\s)(?<![x×])\b(\d+|one|two|three)\s+(gap|space)\b"

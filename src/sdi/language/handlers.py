@@ -1025,7 +1025,10 @@ def _every_side(m: re.Match[str], st: ReadState, note: str) -> str:
 
 _NEXT_ONE = re.compile(
     r"(?:\s*,\s*(?:and\s+)?|\s+and\s+)(?:one|(?:the\s+other|another|the\s+(?:second|third|"
-    r"fourth|last))(?:\s+one(?=\s+(?:at|on|in|to|behind|beside|next|near|by)\b))?)\b",
+    r"fourth|last))(?:\s+one(?=\s+(?:at|on|in|to|behind|beside|next|near|by)\b))?)\b"
+    # "one at the front one at the back": the next item said with no comma
+    r"|(?:(?<=front)|(?<=back)|(?<=left)|(?<=right)|(?<=rear)|(?<=middle)|(?<=centre)|(?<=corner))"
+    r"\s+one(?=\s+(?:at|on|in)\s+the\s+(?:front|back|left|right|far|near|rear|middle|centre)\b)",
     re.IGNORECASE,
 )
 

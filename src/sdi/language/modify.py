@@ -900,6 +900,12 @@ def _by_side(
         return every[0] if side == "front" else every[-1]
     if re.search(r"\bleft\s+to\s+(?:the\s+)?right\b", said, re.I):
         every = every[::-1]  # "three towers, left to right": the first named is the left one
+    on = next((q.beside for q in built if q.count and q.first <= every[-1] < q.first + q.count),
+              None)  # fmt: skip
+    if on in ("left", "right") and len(every) == 2:
+        # "a tower of 2, and a tower of 5 one cube to its right": the second stands on that side
+        # (the first was taken for the right one, silently)
+        return every[-1] if side == on else every[0]
     return every[0] if side == "right" else every[-1]
 
 

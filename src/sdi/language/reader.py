@@ -245,7 +245,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     drafts = _apart(drafts, st)
     relations, drafts = _gap_of_relation(relations, drafts, st)
     _gap_around_middle(drafts, st)
-    touch = _TOUCHING.search(text) or _RIGHT_BY.search(command)  # "right behind it": against it
+    touch = _touching(text) or _RIGHT_BY.search(command)  # "right behind it": against it
     if touch and any(r.kind == "next_to" and r.gap_m is None for r in relations):
         # "directly to its left, touching it": no gap between the two
         relations = [
@@ -535,6 +535,19 @@ _TOUCHING = re.compile(
 )
 """Structures side by side with no gap: "touching", "against a tower", a staircase "leading up
 to" it (its top step reaches it)."""
+_DENIED = re.compile(
+    r"\b(?:not|never|no|without|avoid|don'?t|doesn'?t|mustn'?t|shouldn'?t|isn'?t|aren'?t)\b",
+    re.IGNORECASE,
+)
+
+
+def _touching(text: str) -> re.Match[str] | None:
+    """The first "touching" said for the structures, not denied in its clause ("I don't want
+    them touching" was read as no gap, silently)."""
+    for m in _TOUCHING.finditer(text):
+        if not _DENIED.search(re.split(r"[.;,!?]", text[: m.start()])[-1]):
+            return m
+    return None
 
 
 _GUESSED_ROW = "no structure named: placed the parts in a row"

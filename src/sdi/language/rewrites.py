@@ -2393,8 +2393,9 @@ _REWRITES += [
     (  # "two towers of 3 and a beam across": the beam lies across the towers
         re.compile(
             r"\b(towers?|pillars?|columns?|stacks?|posts?|uprights?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
-            r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar|deck)\s+(?:across|over|"
+            r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar|deck)(?:\s+(?:across|over|on\s+them|"
             r"on\s+top|(?:resting|sitting|lying|laid)\s+(?:on|across)\s+(?:both|them|the\s+two|top))"
+            r"|(?=\s*(?:[.;]|$)))"
             r"(?:\s+(?:them|the\s+top|of\s+them|both))?"
             r"(?:,?\s+(?:connecting|joining|linking)\s+(?:them|both|the\s+two)(?:\s+of\s+them)?)?\b",
             re.IGNORECASE,
@@ -2412,6 +2413,17 @@ _REWRITES += [
             re.IGNORECASE,
         ),
         "{0}, then ",
+        "",
+    ),
+    (  # "two stacks of two, a beam across their tops, and on the beam a stack of three": what
+        # stands on the beam, said after it (it stood apart, silently)
+        re.compile(
+            r"\s*[,;]?\s*(?:and\s+)?(?:then\s+)?(on(?:\s+top\s+of)?\s+(?:that|the|this)\s+(?:beam|"
+            r"lintel|crossbar|plank|girder))\s*,?\s+(?=(?:put\s+|place\s+|stand\s+|set\s+)?(?:an?|one|"
+            r"\d+)\b)",
+            re.IGNORECASE,
+        ),
+        ". {0} ",
         "",
     ),
     (
@@ -2811,6 +2823,27 @@ def _rise_each(text: str, st: ReadState) -> str:
     return _RISE_EACH.sub(sub, text)
 
 
+_FOR_USE = re.compile(
+    r"\s*,?\s*\bfor\s+(?:my|our|his|her|their|the|your|this|that)\s+(?:[a-z]+\s+){0,2}?(?:"
+    + shape_alternation(exclude=lx.AMBIGUOUS_SHAPES, min_len=3)
+    + r")(?:\s+[a-z-]+){0,2}?(?=\s*(?:[,.;:!?]|$))",
+    re.IGNORECASE,
+)
+
+
+def _for_use(text: str, st: ReadState) -> str:
+    """ "a little wall for my garden scene": what the structure is for, not one more (a garden
+    enclosure was built and given the wall's sizes, silently)."""
+
+    def sub(m: re.Match[str]) -> str:
+        if not families_said(text[: m.start()]) or re.search(rf"\d|\b{_N}\b", m.group(0), re.I):
+            return m.group(0)  # "build one for the garden": the word is all there is
+        st.notes.append(f"read '{m.group(0).strip(' ,')}' as what it is for, not a structure")
+        return " "
+
+    return _FOR_USE.sub(sub, text)
+
+
 _SINGLE_LAYER = re.compile(
     r"\b(?:a|one)\s+(?:single|flat|one[- ]cube[- ]thick)\s+layer\s+of\s+(?:cubes|blocks|parts)\b",
     re.I,
@@ -3110,7 +3143,7 @@ _DISTRIBUTE = re.compile(
     r"(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
     r"(?P<together>\s+(?:side\s+by\s+side|next\s+to\s+each\s+other|in\s+a\s+row))?"
-    r"(?:\s*,?\s*please)?\s*[:,;]\s*(?P<items>(?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
+    r"(?:\s*,?\s*please)?(?:\s*[:,;]\s*|\s+(?=one\s+(?:at|on|in)\s+the\s))(?P<items>(?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
     r"seven|eight)(?=\s*(?:x|by|cubes?\s+high|cubes?\s+tall|high|tall|long)\b))\s*(?:[^.;]|(?<=\d)\.(?=\d))*)",
     re.IGNORECASE,
 )
@@ -3317,7 +3350,10 @@ _LIKE_A = re.compile(
     r"(?:expected|end|final)(?:\s+(?:result|outcome|shape))?\s*(?:should\s+be|will\s+be|is)?\s*:|"
     r"(?:the\s+)?(?:result|outcome)\s*(?:should\s+be|will\s+be|is)?\s*:|"
     # "Two rows of four, one on top of the other. That's a small wall.": what they make
-    r"(?<=[.;!?,]\s)(?:so\s+)?(?:that'?s|that\s+is|which\s+is|(?:which|that|this)\s+makes))"
+    r"(?<=[.;!?,]\s)(?:so\s+)?(?:that'?s|that\s+is|which\s+is|(?:which|that|this)\s+makes)|"
+    # "… a beam across the tops to make a gate", "… so it makes a box": what the parts make
+    r"(?:in\s+order\s+)?to\s+(?:make|form|create)|so\s+(?:that\s+)?(?:it|they|the\s+whole\s+"
+    r"thing)\s+(?:makes?|forms?|becomes?))"
     r"\s+(?:a|an|one)\s+[^,.;:!?]*"
     # a user story's "Done when: one row, seven long.": the whole sentence describes the result
     r"|(?:,\s*|\s+)\b(?:(?:done|complete|finished|accepted)\s+when|acceptance(?:\s+criteria)?|"
@@ -3391,12 +3427,18 @@ def _described_again(text: str, st: ReadState) -> str:
         before = re.findall(r"[a-z]+", text[: m.start()].lower())
         if before and before[-1] in _WANTERS and not m.group(0).lstrip().startswith(","):
             return m.group(0)  # "I'd like a pyramid": the verb
+        purpose = _MADE.match(m.group(0))
+        if purpose and ((before and before[-1] in _PURPOSE_LED) or _WAY.search(m.group(0))):
+            # "then I want to make a wall": what is wanted; "to form a corridor leading away
+            # from me": which way the structures run, read by what reads ways
+            return m.group(0)
         if not any(w in lx.SHAPE_WORDS for w in before):
             return m.group(0)  # "something like a park bench": the likeness is all there is
         said = m.group(0).strip(" ,")
         if _WHAT_IT_MAKES.match(said) and re.search(rf"\d|\b{_N}\b", said, re.IGNORECASE):
             return m.group(0)  # "… that's a tower of 5": a size, not a name for it
-        if _RESULT.search(said):  # "Expected result: a 2 x 3 x 2 block": checked at the end
+        if _RESULT.search(said) or purpose:  # "Expected result: a 2 x 3 x 2 block", "… so it
+            # becomes a solid plate", "… to make a gate": what it makes, checked at the end
             st.claims.append(("result", said))
             return " "
         size = _LIKENESS_SIZE.search(said)
@@ -3446,6 +3488,18 @@ first, the structure described after the colon."""
 
 
 _N = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+_MADE = re.compile(
+    r"\s*,?\s*(?:(?:in\s+order\s+)?to\s|so\s+(?:that\s+)?(?:it|they|the\s+whole\s+thing)\s)",
+    re.IGNORECASE,
+)
+_WAY = re.compile(
+    r"\b(?:away|towards?|front|back|left|right|along|across|leading|running|facing)\b",
+    re.IGNORECASE,
+)
+_PURPOSE_LED = frozenset({"want", "wants", "need", "needs", "like", "love", "going", "have", "has",
+                          "able", "try", "how", "please", "also", "then", "and", "now", "next",
+                          "asked", "ask", "wish", "hope", "plan", "be", "is", "are", "robot"})
+"""Words before "to make a …" that make it a structure asked for, not what the parts make."""
 _WHAT_IT_MAKES = re.compile(
     r"(?:so\s+)?(?:that'?s|that\s+is|which\s+is|(?:which|that|this)\s+makes)\b", re.IGNORECASE
 )
@@ -3986,6 +4040,7 @@ def rewrite(text: str, st: ReadState) -> str:
     text = _apex(_level_labels(_level_list(text, st), st), st)
     text = _attributive(_sized_base(_beam_size(_single_layer(text), st), st), st)
     text = _ONE_SIZED.sub("a ", text)
+    text = _for_use(text, st)
     text = _rise_each(text, st)
     text = _BEAM_HELD.sub(r"\1 resting on ", _OWN_LINTEL.sub(r"\1beam", text))
     text = _tetris(text, st)

@@ -217,6 +217,9 @@ def fill_slots(
         r.subject for r in rels if r.kind == "on" and (beam_only(phrases[r.subject].text)
                                                       or _beam_said(phrases[r.subject].text))
     }
+    for r in rels:
+        if r.kind == "next" and r.side and (r.object is None or r.object < r.subject):
+            phrases[r.subject].beside = r.side  # "… and a tower of 5 to its right"
     for k, p in enumerate(phrases):
         content = [
             w

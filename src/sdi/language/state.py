@@ -24,6 +24,7 @@ class Phrase:
     modified: bool = False  # "then add two more cubes to it": changed an earlier structure
     undone: bool = False  # "… Undo the last one.": its structures were taken back
     structure: int | None = None  # "the first one", "the smaller one": which structure
+    beside: str | None = None  # "a tower of 5 to its right": the side of the one before it
     unused: list[str] = field(default_factory=list)
 
 
