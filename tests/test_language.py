@@ -590,8 +590,11 @@ def test_a_structure_placed_beside_and_touching_has_no_gap():
 
 
 def test_a_beam_over_a_gates_posts_is_the_gates_own():
+    # an arch said by its posts and a beam is that post-and-beam: SDI's bridge, said so (SDI's
+    # arch steps corbels in under its beam)
     r = read("an arch with two posts 3 high and a beam over them")
-    assert [s.shape for s in r.spec.structures] == ["arch"]
+    assert [(s.shape, s.height) for s in r.spec.structures] == [("bridge", 3)]
+    assert any("posts and a beam as a bridge" in n for n in r.notes)
 
 
 def test_a_noun_that_means_tall_is_tall_unless_a_size_is_given():
@@ -10459,3 +10462,67 @@ def test_a_slab_on_four_legs_is_a_table_and_a_height_after_taller():
     # "Table for the packing station mock-up: …": what it is for built nothing of its own
     _built_as_said("Table for the packing station mock-up: four legs two high, top on them. Over.",
                    ["canopy"], None)  # fmt: skip
+
+
+def test_changes_said_plainly_after_the_structure():
+    # each was reported as a change SDI cannot make, or dropped
+    _built_as_said("Build a tower of six. ... Copy that, now pull two off the top. Over.",
+                   ["tower"], [4])  # fmt: skip
+    r = _built_as_said("Row of eight. Take off the last three.", ["row"], [1] * 5)
+    r = _built_as_said("Tower of four at x 0.40, y 0.30. Move it back by 2.", ["tower"], [4])
+    assert (r.spec.structures[0].at_x, r.spec.structures[0].at_y) == (pytest.approx(0.5), 0.3)
+    _built_as_said("Make tower of eight. No, too high, make of five.", ["tower"], [5])
+    r = _built_as_said("Two towers of four, two cubes apart. Now bring them closer, one cube "
+                       "apart.", ["tower", "tower"], [4, 4])  # fmt: skip
+    assert r.spec.gap_m == pytest.approx(0.05)
+
+
+def test_it_ends_a_relation_before_and_a_structure_after_it():
+    # "a 2x2 layer in the middle of it, and one cube on top": "it, and a cube" was one phrase
+    # (a ring was built around the layer, partial)
+    r = _built_as_said("a 4x4 layer, a 2x2 layer in the middle of it, and one cube on top.",
+                       ["grid", "grid", "tower"], None)  # fmt: skip
+    assert [(x.kind, x.subject, x.object) for x in r.spec.relations] == [
+        ("on_top_of", 1, 0), ("on_top_of", 2, 1)]  # fmt: skip
+
+
+def test_call_signs_and_the_structures_said_again():
+    # "Base, this is floor. …": a grid was built for "Base" (partial)
+    r = _built_as_said("Base, this is floor. Block two by two by two, stack of three on top, "
+                       "centred. Over.", ["block", "tower"], None)  # fmt: skip
+    assert [x.kind for x in r.spec.relations] == ["on_top_of"]
+    # "…, just the stacks": a third stack was built (partial)
+    _built_as_said("Two stacks of five, no beam, just the stacks, two cubes apart. Over.",
+                   ["tower", "tower"], [5, 5])  # fmt: skip
+
+
+def test_corrections_in_a_chain_lists_without_commas_and_arches_of_posts_and_a_beam():
+    # "sorry, 3x3, sorry again, 5x5": a 3x3 pyramid and a 5x5 slab, silently
+    r = _built_as_said("Pyramid with a 4x4 base, sorry, 3x3, sorry again, 5x5.", ["pyramid"], None)
+    assert r.spec.structures[0].length == 5
+    # "Tower of 5, no 6, ok 4": 6 built, the 4 reported
+    _built_as_said("Tower of 5, no 6, ok 4.", ["tower"], [4])
+    _built_as_said("a tower of 3, ok", ["tower"], [3])
+    # "three towers um two three and four high": all three 4 high, silently
+    _built_as_said("three towers um two three and four high in a row left to right",
+                   ["tower"] * 3, [2, 3, 4])  # fmt: skip
+    # "a small archway: two pillars of three, a beam across": SDI's corbelled arch, 5 high
+    r = _built_as_said("I'd really like a small archway for my diorama: two pillars of three, a "
+                       "beam across, and nothing else.", ["bridge"], [1, 3, 3])  # fmt: skip
+    assert any("posts and a beam as a bridge" in n for n in r.notes)
+    assert [s.shape for s in plan("an arch with legs of 3").spec.structures] == ["arch"]
+
+
+def test_a_quantity_of_parts_and_a_depth_by_its_letter():
+    # "Row, qty 7 cubes": seven rows, silently
+    _built_as_said("Row, qty 7 cubes, along Y, front edge.", ["row"], [1] * 7)
+    # "shape=slab; w=3; d=5": the depth dropped, silently (3 by 3)
+    _built_as_said("shape=slab; w=3; d=5; layers=1", ["grid"], [1] * 15)
+
+
+def test_the_long_side_said_along_an_axis():
+    # "arranged 3 x 4, one layer, long side along x": the 3 was laid along x, silently
+    for command, along_x in (("Quantity 12 cubes, arranged 3 x 4, one layer, long side along x.",
+                              4), ("a 3x4 slab, short side along x", 3)):  # fmt: skip
+        r = _built_as_said(command, ["grid"], [1] * 12)
+        assert len({round(o.position[0], 3) for o in r.layout.objects}) == along_x

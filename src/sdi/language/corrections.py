@@ -20,7 +20,11 @@ MARKER = re.compile(
     r"correction(?:\s+to\s+(?:the\s+)?(?:previous|last|above|first)\s+(?:line|sentence|one|item))?|"
     r"no\s*,?\s*actually(?:\s*,?\s*make\s+(?:that|it))?|actually\s*,?\s*make\s+(?:that|it)|"
     r"on\s+second\s+thoughts?|change\s+of\s+plan|change\s+that|never\s*mind|nvm|"
-    r"actually|sorry|oops|wait|(?:revised|changed|updated|amended|corrected)\s+to)\b\s*[,:;—–-]?\s*|"
+    r"actually|sorry(?:\s+again)?|oops|wait|(?:revised|changed|updated|amended|corrected)\s+to)\b"
+    r"\s*[,:;—–-]?\s*|"
+    # "Tower of 5, no 6, ok 4": the number settled on
+    r"\s*[,.;]+\s*(?:ok(?:ay)?|fine|alright|right)\s*,?\s*(?=(?:\d+|one|two|three|four|five|six|seven|"
+    r"eight|nine|ten)\b(?!\s*(?:more|less|fewer|extra|others?)\b))|"
     r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment|change)\s*:\s*|"  # a ticket's later line
     # on the radio: "Tower, height six. Negative, height two."
     r"\s*[,.;!—–-]+\s*negative\s*[,:;]\s*|"
@@ -38,7 +42,8 @@ MARKER = re.compile(
     r"seven|eight|nine|ten)\b)|"
     # "… 5 cm apart. Then make the gap 15 cm": the gap said again, changed
     r"\s*[,.;!—–-]+\s*(?:then\s+|now\s+)?(?:make|change|set|widen|narrow)\s+the\s+"
-    r"(?:gap|spacing|space|distance)(?:\s+between\s+them)?(?:\s+to)?\s+(?=\d)",
+    r"(?:gap|spacing|space|distance)(?:\s+between\s+them)?(?:\s+to)?\s+(?=\d|(?:one|two|three|four|"
+    r"five|six|seven|eight|nine|ten)\b)",
     re.IGNORECASE,
 )
 

@@ -396,10 +396,12 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:(?:you|we|i'?ll|i\s+will|then)\s+)?(?:move|shift|slide|push|put)\s+(?:him|her|the\s+whole\s+"
                 r"(?:thing|lot|structure)|everything|all\s+of\s+it)\s+(?=to\s+(?:the\s+)?(?:left|right|front|back|"
                 r"middle|centre|center)\b)", re.I), "move it "),
-    # "slide it left by 2 cubes": 2 cubes to the left
+    # "slide it left by 2 cubes", "Move it back by 2": 2 cubes to the left, to the back
     (re.compile(r"\b(move|shift|slide|push)\s+(it|them)\s+(left|right|back|forward|backward|forwards|backwards)\s+"
-                r"by\s+((?:\d+|one|two|three|four|five)\s+(?:cubes?|cm|mm|parts?))\b", re.I),
-     lambda m: f"{m.group(1)} {m.group(2)} {m.group(4)} to the "
+                r"by\s+((?:\d+|one|two|three|four|five)(?:\s+(?:cubes?|cm|mm|parts?)|(?!\s*(?:m|blocks?)\b)))\b",
+                re.I),
+     lambda m: f"{m.group(1)} {m.group(2)} {m.group(4)}"
+     + ("" if len(m.group(4).split()) > 1 else " cubes") + " to the "
      + {"forward": "front", "forwards": "front", "backward": "back", "backwards": "back"}.get(
          m.group(3).lower(), m.group(3).lower())),
     # "Build tower height 4. Add 3. Remove 1.": one cube off (refused as taking parts out)
@@ -544,6 +546,41 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
                 r"standing\s+on|sitting\s+on|set\s+on|on\s+top\s+of)\s+(four|4)\s+(legs|posts|pillars|"
                 r"columns|supports)\b", re.I),
      r"a table \1 with \2 \3"),
+    # changes said plainly, into the words the changes read: "pull two off the top", "Take off
+    # the last three", "Move it back by 2", "make of five", "bring them closer, one cube apart"
+    # (each was reported as a change SDI cannot make, or dropped)
+    (re.compile(r"\b(?:pull|knock|lift|pop|pluck|remove)\s+(" + _NUM
+                + r")\s+(?:cubes?\s+|blocks?\s+)?(?:off|from)\s+(?:the\s+)?(top|end)\b", re.I),
+     r"take \1 off the \2"),
+    (re.compile(r"\b(?:take\s+off|take\s+away|remove|drop)\s+the\s+last\s+(?!one\b)(" + _NUM
+                + r")\b"
+                r"(?!\s*(?:towers?|stacks?|walls?|rows?))", re.I), r"take \1 off"),
+    (re.compile(r"\bmake\s+(?:of|with)\s+(?=" + _NUM + r"\b)", re.I), "make it "),
+    (re.compile(r"\b(?:now\s+|then\s+)?(?:bring|move|put|push)\s+them\s+(?:closer(?:\s+together)?|"
+                r"further\s+apart|farther\s+apart|apart)\s*,?\s*(?:to\s+)?(" + _NUM
+                + r")\s*(cubes?|blocks?|mm|cm)?\s*(?:apart|gap)\b", re.I),
+     lambda m: f"make the gap {m.group(1)} {m.group(2) or 'cubes'}"),
+    # "Base, this is floor. Block two by two by two, …": a radio call's call signs (a grid was
+    # built for "Base")
+    (re.compile(r"^\s*\w+(?:\s+\w+)?\s*,\s*this\s+is\s+\w+(?:\s+\w+)?\s*[.,;:]\s*", re.I), ""),
+    # "two stacks of five, just the stacks": the stacks said again (a third one was built)
+    (re.compile(r"\s*,?\s*\b(?:just|only)\s+the\s+(" + _FAMILY_SAID + r")s\b(?=\s*(?:[,.;]|$))",
+                re.I),
+     lambda m: "" if lx.SHAPE_WORDS.get(m.group(1).lower()) in families_said(m.string[: m.start()])
+     else m.group(0)),
+    # "three towers um two three and four high": a list said without commas (all were built 4 high)
+    (re.compile(r"(?<![\d.]\s)(?<!x\s)(?<!by\s)\b(" + _NUM + r")((?:\s+" + _NUM
+                + r")+)\s+(and|&)\s+(" + _NUM + r")\b(?!\s*(?:x|by|cm|mm|m)\b)", re.I),
+     lambda m: (", " if re.search(r"[a-z]s(?:\s+(?:um+|uh+|er+|erm+))?\s*$", m.string[: m.start()])
+                else "")
+     + ", ".join([m.group(1), *m.group(2).split()]) + f" {m.group(3)} {m.group(4)}"),
+    # "Row, qty 7 cubes", "Qty 4 columns": a quantity (seven rows were built); "Block 150 x 100
+    # mm, qty 2": that many of the structure named first (one was built)
+    (re.compile(r"\b(?:qty|quantity)\.?\s*[:=]?\s*(" + _NUM + r")\s+(?=[a-z])", re.I), r"\1 "),
+    (re.compile(r"^(\W*)(?:an?\s+)?(" + _FAMILY_SAID + r")\b([^.;]*?),\s*(?:qty|quantity)\.?\s*"
+                r"[:=]?\s*(" + _NUM + r")\b", re.I),
+     lambda m: (f"{m.group(1)}{m.group(4)} {m.group(2)}s{m.group(3)}"
+                if f"{m.group(2).lower()}s" in lx.SHAPE_WORDS else m.group(0))),
     # "3 towers of 4, 1 gap", "in a line 1 gap": the gap's size (read as a height in a list, or
     # as a row 1 long beside the towers, silently)
     (re.compile(r"(?<!by\s)(?<![x×]\s)(?<![x×])\b(\d+|one|two|three)\s+(gap|space)\b"

@@ -451,7 +451,10 @@ def _clause_phrases(
     for j, seg in enumerate(segments):
         first_of.append(len(phrases))
         cut = _listed_pair(doc, seg) if 0 < j < len(markers) else None
-        if cut is not None and {markers[j - 1][2], markers[j][2]} <= _BESIDE_OR_ON:
+        # "a 2x2 layer in the middle of it, and one cube on top": "it" ends the first relation
+        said = [doc[k].lower_ for k in seg[:cut] if doc[k].lower_ != ","] if cut is not None else []
+        pointed = said in (["it"], ["them"])
+        if cut is not None and ({markers[j - 1][2], markers[j][2]} <= _BESIDE_OR_ON or pointed):
             # "a tower to the left of a 3x2 patch, and a row to the right of it": the patch is
             # the first relation's object, the row the second's subject (the row stood left of
             # the tower and right of it: a cycle)

@@ -3718,7 +3718,7 @@ _LETTER_LIST = re.compile(
 
 # "h=2", "L=5 cubes" (read before the "4 h" shorthand would take the h; not "W x D x H =")
 _LETTER_EQ = re.compile(
-    r"(?<!\bx\s)(?<!\bx)\b([LHW])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?", re.IGNORECASE
+    r"(?<!\bx\s)(?<!\bx)\b([LHWD])\s*=\s*(\d+(?:\.\d+)?)\s*(mm|cm|m|cubes?)?", re.IGNORECASE
 )
 
 

@@ -993,9 +993,19 @@ _RISE = re.compile(
 )
 
 
+_RISE_OF_EACH = re.compile(
+    r"\b(\d+|two|three|four|five|six|seven|eight)\s+(?:risers?|steps?|stairs?)\s+(?:of\s+|at\s+)?"
+    r"(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:high\s+|tall\s+)?(?:each|apiece|per\s+step)\b",
+    re.IGNORECASE,
+)
+"""'4 risers of 5 cm each': how much each step rises (read as the staircase 5 cm high: one
+part, silently), said as the rise `_RISE` reads."""
+
+
 def _step_rise(text: str, st: ReadState) -> str:
     """ "a staircase, four steps, 50 mm rise each": every step rises one part — said, and
     kept only when the rise is the part's height (a step is one part high)."""
+    text = _RISE_OF_EACH.sub(r"\1 steps, \2 \3 rise each", text)  # "4 risers of 5 cm each"
     m = _RISE.search(text)
     if m is None or not re.search(r"\b(?:stair|staircase|steps?)\b", text, re.IGNORECASE):
         return text

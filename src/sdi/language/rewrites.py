@@ -2797,32 +2797,6 @@ _ONE_SIZED = re.compile(
 """'one tall tower', 'one big tower': one of them, of that size (read as 1 high, silently)."""
 
 
-_RISE_EACH = re.compile(
-    r"\b(\d+|two|three|four|five|six|seven|eight)\s+(risers?|steps?|stairs?)\s+(?:of\s+|at\s+)?"
-    r"(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:high\s+|tall\s+)?(?:each|apiece|per\s+step)\b",
-    re.IGNORECASE,
-)
-
-
-def _rise_each(text: str, st: ReadState) -> str:
-    """ "Staircase: 4 risers of 5 cm each": how much each step rises (read as the whole
-    staircase 5 cm high: one part, silently). A part's height is SDI's rise; another is said."""
-    part = st.cell.cube[2]
-
-    def sub(m: re.Match[str]) -> str:
-        rise = float(m.group(3)) * lx.UNITS_M[m.group(4).lower()]
-        said = m.group(0).strip()
-        if abs(rise - part) < 1e-6:
-            st.notes.append(f"read '{said}' as steps one part ({part:g} m) high each")
-        else:
-            st.material.append(said)
-            st.notes.append(f"ignored the rise in '{said}': SDI's steps rise one part "
-                            f"({part:g} m) each")  # fmt: skip
-        return f" {m.group(1)} steps "
-
-    return _RISE_EACH.sub(sub, text)
-
-
 _FOR_USE = re.compile(
     r"\s*,?\s*\bfor\s+(?:my|our|his|her|their|the|your|this|that)\s+(?:[a-z]+\s+){0,2}?(?:"
     + shape_alternation(exclude=lx.AMBIGUOUS_SHAPES, min_len=3)
@@ -2842,6 +2816,34 @@ def _for_use(text: str, st: ReadState) -> str:
         return " "
 
     return _FOR_USE.sub(sub, text)
+
+
+_ARCH_WORD = re.compile(r"\barch(?:way)?(e?s)?\b", re.IGNORECASE)
+_POSTS = re.compile(r"\b(?:pillars?|posts?|legs?|columns?|uprights?|piers?|stacks?|towers?)\b",
+                    re.IGNORECASE)
+_BEAM_WORD = re.compile(r"\b(?:beams?|lintels?|crossbars?|planks?|girders?)\b", re.IGNORECASE)
+_CURVED = re.compile(r"\b(?:corbel\w*|curv\w*|round\w*|stepped|pointed|semi-?circular)\b", re.I)
+
+
+def _post_and_beam(text: str, st: ReadState) -> str:
+    """ "a small archway: two pillars of three, a beam across": an arch said by its posts and
+    beam is those posts and that beam — SDI's bridge (SDI's arch steps corbels in under its beam,
+    and was built 5 high on legs of 3, silently)."""
+    out = []
+    for sentence in re.split(r"(?<=[.;!?])", text):
+        if (
+            _ARCH_WORD.search(sentence)
+            and _POSTS.search(sentence)
+            and _BEAM_WORD.search(sentence)
+            and not _CURVED.search(sentence)
+        ):
+            said = _ARCH_WORD.search(sentence)
+            assert said is not None
+            st.notes.append(f"read '{said.group(0)}' of posts and a beam as a bridge: posts and "
+                            "the beam across them (SDI's arch steps corbels in under its beam)")
+            sentence = _ARCH_WORD.sub(lambda m: "bridge" + ("s" if m.group(1) else ""), sentence)
+        out.append(sentence)
+    return "".join(out)
 
 
 _SINGLE_LAYER = re.compile(
@@ -4039,9 +4041,8 @@ def rewrite(text: str, st: ReadState) -> str:
         text = _NOT_TOUCHING.sub(lambda m: HANDLERS["{not_touching}"](m, st, ""), text)
     text = _apex(_level_labels(_level_list(text, st), st), st)
     text = _attributive(_sized_base(_beam_size(_single_layer(text), st), st), st)
-    text = _ONE_SIZED.sub("a ", text)
+    text = _post_and_beam(_ONE_SIZED.sub("a ", text), st)
     text = _for_use(text, st)
-    text = _rise_each(text, st)
     text = _BEAM_HELD.sub(r"\1 resting on ", _OWN_LINTEL.sub(r"\1beam", text))
     text = _tetris(text, st)
 

@@ -349,7 +349,14 @@ class _Parser:
                     "on",
                     "direction",
                 } or after in ("axis", "direction", "wise", "dir"):
-                    self.axes.append((k, w))
+                    axis = w
+                    if self.word(k - 2) in ("side", "sides", "edge", "edges"):
+                        # "long side along x" (the 3 of a 3 x 4 slab was laid along x, silently)
+                        side = self.word(k - 3).removesuffix("est").removesuffix("er")
+                        self.long_side = side in ("long", "short")
+                        if side == "short":
+                            axis = "y" if w == "x" else "x"
+                    self.axes.append((k, axis))
                     t[k].used = True
                     if after in ("axis", "direction", "wise", "dir"):
                         t[k + 1].used = True
