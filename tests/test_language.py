@@ -10526,3 +10526,63 @@ def test_the_long_side_said_along_an_axis():
                               4), ("a 3x4 slab, short side along x", 3)):  # fmt: skip
         r = _built_as_said(command, ["grid"], [1] * 12)
         assert len({round(o.position[0], 3) for o in r.layout.objects}) == along_x
+
+
+def test_corners_one_each_hyphenated_corners_arms_along_each_side_and_before_as_in_front():
+    # "each one in one corner of the table": the four stood in a line, silently
+    r = _built_as_said("Four towers of three, each one in one corner of the table, and in the "
+                       "centre a tower of six.", ["tower"] * 5, [3, 3, 3, 3, 6])  # fmt: skip
+    assert sorted(s.region or "" for s in r.spec.structures) == [
+        "back left", "back right", "centre", "front left", "front right"]  # fmt: skip
+    # "move it to the front-left spawn point": moved to the front only, silently
+    r = _built_as_said("Spawn a tower of 4 blocks, then move it to the front-left spawn point.",
+                       ["tower"], [4])  # fmt: skip
+    assert r.spec.structures[0].region == "front left"
+    # "three cubes along each side": a 2 by 2 L, silently
+    r = _built_as_said("an L shape, like the letter, three cubes along each side, flat on the "
+                       "table.", ["l_shape"], [1] * 5)  # fmt: skip
+    # "Before the wall of five, …, a tower of four": the tower stood to the wall's side
+    r = _built_as_said("Before the wall of five, at distance of one cube, a tower of four.",
+                       ["tower", "wall"], None)  # fmt: skip
+    assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "front")]
+
+
+def test_ordinals_in_a_line_said_from_left_toward_right():
+    # "Three towers in line, the first of two, …, from left toward right": all 2 high, the
+    # right read as a place
+    r = _built_as_said("Three towers in line, the first of two, the second of four, the third of "
+                       "six, from left toward right.", ["tower"] * 3, [2, 4, 6])  # fmt: skip
+    left_to_right = [h for _, h in sorted(_columns(r).items(), key=lambda kv: -kv[0][1])]
+    assert left_to_right == [2, 4, 6]
+
+
+def test_by_said_as_for_and_a_relation_in_a_key_value_line():
+    # "On the block of two for two, a small tower of three": a block 2 by 1, silently
+    r = _built_as_said("On the block of two for two, a small tower of three you put, in the "
+                       "middle.", ["tower", "block"], None)  # fmt: skip
+    assert (r.spec.structures[1].length, r.spec.structures[1].width) == (2, 2)
+    # "on=block 2x2x2": the tower stood beside the block, silently — now reported
+    assert plan("shape=tower; h=2; on=block 2x2x2").status != "success"
+
+
+def test_who_places_it_said_first_and_an_axis_by_its_key():
+    # "Now it will place one cube in each of the four corners": one cube, silently
+    r = _built_as_said("Now it will place one cube in each of the four corners of the table.",
+                       ["tower"] * 4, [1] * 4)  # fmt: skip
+    assert len({s.region for s in r.spec.structures}) == 4
+    # "axis=x": dropped as chatter (the row ran left to right, silently)
+    r = _built_as_said("shape=row; n=5; axis=x; pos=right", ["row"], [1] * 5)
+    assert r.spec.structures[0].axis == "x"
+
+
+def test_structures_picked_by_the_sizes_said_for_them():
+    # "The 2 goes behind the 5": both at the back, side by side (or the 5 behind), silently
+    for command, side in (("Two towers: 2 and 5. The 2 goes behind the 5.", "back"),
+                          ("Two towers: 2 and 5. The 2 goes behind the 5. No, in front.", "front"),
+                          ("Two towers of 2 and 5, the 2 behind the 5", "back")):  # fmt: skip
+        r = _built_as_said(command, ["tower", "tower"], [2, 5])
+        (rel,) = r.spec.relations
+        assert (r.spec.structures[rel.subject].height, rel.side) == (2, side), command
+    # named with articles, read by the rule for them: never two more towers
+    r = plan("2 towers, a 5 and a 3, the 5 behind the 3, gap of 2 cubes")
+    assert len(r.spec.structures) == 2

@@ -81,6 +81,22 @@ def _listed_after_count(m: re.Match[str]) -> str:
     return "" if n.isdigit() and int(n) == len(items) else m.group(0)
 
 
+def _by_their_sizes(m: re.Match[str]) -> str:
+    """ "Two towers: 2 and 5. The 2 goes behind the 5": the ones of those sizes, by name (the
+    5 was put behind the 2, or both at the back, silently)."""
+    before = m.string[: m.start()]
+    said = [w for w in re.findall(r"[a-z]+", before.lower())
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    numbers = words_to_numbers(re.findall(r"\d+|[a-z]+", before.lower()))
+    a, b = (words_to_numbers([m.group(k).lower()])[0] for k in (1, 3))
+    if not said or a == b or a not in numbers or b not in numbers:
+        return m.group(0)
+    if re.search(rf"\ban?\s+(?:{m.group(1)}|{a})\b", before, re.IGNORECASE):
+        return m.group(0)  # "2 towers, a 5 and a 3, the 5 behind the 3": named so (`rewrites`)
+    family = said[-1][:-1] if lx.SHAPE_WORDS.get(said[-1][:-1]) else said[-1]
+    return f"put the {family} of {a} {m.group(2)} the {family} of {b}"
+
+
 def _with_sized_one(m: re.Match[str]) -> str:
     """ "… with a 2 high one": another of the family said before, its height after it ("one"
     with no family before stays as it was)."""
@@ -581,6 +597,33 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
                 r"[:=]?\s*(" + _NUM + r")\b", re.I),
      lambda m: (f"{m.group(1)}{m.group(4)} {m.group(2)}s{m.group(3)}"
                 if f"{m.group(2).lower()}s" in lx.SHAPE_WORDS else m.group(0))),
+    # "move it to the front-left spawn point": the corner said with a hyphen (read as the front)
+    (re.compile(r"\b(front|back|rear)-(left|right)\b", re.I), r"\1 \2"),
+    # "Four towers of three, each one in one corner of the table": one in each corner (the four
+    # were lined up in the middle, silently)
+    (re.compile(r"\beach(?:\s+one)?\s+(?:in|at|on)\s+(?:one|a|its\s+own)\s+corner\b", re.I),
+     "one in each corner"),
+    # "an L shape, three cubes along each side": its arms (read as an axis; a 2 by 2 L, silently)
+    (re.compile(r"\balong\s+(each|every|both)\s+(sides?|arms?|legs?|edges?)\b", re.I), r"on \1 \2"),
+    # "Before the wall of five, at distance of one cube, a tower of four": in front of it, as
+    # non-native speakers say it (no verb: a place, not an order of work)
+    (re.compile(r"(^|[.;:]\s*)before\s+(?=(?:the|a|an|it)\b(?![^.;]*\b(?:build|put|place|make|stack|"
+                r"lay|add|start|begin|do|you|we|i)\b))", re.I), r"\1in front of "),
+    # "from left toward right": from left to right (read as a place on the right)
+    (re.compile(r"\bfrom\s+(?:the\s+)?(left|right|front|back)\s+towards?\s+(?:the\s+)?(left|right|front|"
+                r"back)\b", re.I), r"from \1 to \2"),
+    # "the block of two for two", "a ring of five for five": by, as non-native speakers say it
+    (re.compile(r"(?<=\s)(" + _NUM + r")\s+for\s+(" + _NUM + r")\b", re.I), r"\1 by \2"),
+    # "shape=tower; h=2; on=block 2x2x2": on a block (stood beside it, silently)
+    (re.compile(r"[;,]\s*(on|under|inside|around|beside|behind)\s*=\s*(?=[a-z])", re.I), r" \1 a "),
+    # "shape=row; n=5; axis=x": along x (dropped as chatter, silently)
+    (re.compile(r"\b(?:axis|dir|direction|orientation)\s*[:=]\s*([xy])\b", re.I), r"along \1"),
+    # "Two towers: 2 and 5. The 2 goes behind the 5": the ones of those sizes
+    (re.compile(r"\bthe\s+(" + _NUM + r")(?:\s+one)?\s+(?:(?:goes|is|stands|sits|should\s+(?:go|be|"
+                r"stand)|must\s+(?:go|be)|will\s+(?:go|be))\s+)?(behind|in\s+front\s+of|to\s+the\s+"
+                r"(?:left|right)\s+of|left\s+of|right\s+of|next\s+to|beside|on\s+top\s+of|on)\s+the\s+("
+                + _NUM + r")(?:\s+one)?\b", re.I),
+     _by_their_sizes),
     # "3 towers of 4, 1 gap", "in a line 1 gap": the gap's size (read as a height in a list, or
     # as a row 1 long beside the towers, silently)
     (re.compile(r"(?<!by\s)(?<![x×]\s)(?<![x×])\b(\d+|one|two|three)\s+(gap|space)\b"

@@ -3144,7 +3144,7 @@ _DISTRIBUTE = re.compile(
     r"(?:cubes?\s+)?(?:high|tall|long|wide|thick|deep|layers?|levels?|courses?|tiers?))+"
     r"(?:\s+(?:each|apiece))?|\s+(?:high|tall|long|wide)\s+(?:\d+|two|three|"
     r"four|five|six))?)"
-    r"(?P<together>\s+(?:side\s+by\s+side|next\s+to\s+each\s+other|in\s+a\s+row))?"
+    r"(?P<together>\s+(?:side\s+by\s+side|next\s+to\s+each\s+other|in\s+a\s+row|in\s+(?:a\s+)?line))?"
     r"(?:\s*,?\s*please)?(?:\s*[:,;]\s*|\s+(?=one\s+(?:at|on|in)\s+the\s))(?P<items>(?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
     r"seven|eight)(?=\s*(?:x|by|cubes?\s+high|cubes?\s+tall|high|tall|long)\b))\s*(?:[^.;]|(?<=\d)\.(?=\d))*)",
     re.IGNORECASE,
@@ -3178,7 +3178,10 @@ def _other_side(m: re.Match[str]) -> str:
 
 # "a single cube in each of the four corners of the table": one in each corner region
 _CORNERS = re.compile(
-    r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*(?:(?:please\s+)?(?:put|place|stick|set|build|"
+    r"(?:^|(?<=[,.;:]\s)|(?<=\band\s)|(?<=\bthen\s))\s*(?:(?:now|next|so|ok)\s*,?\s+)?"
+    # "Now it will place one cube in each of the four corners": who places it, said first
+    r"(?:(?:it|the\s+robot|we|you|i)\s+(?:will|should|must|can|could|(?:is|are|am)\s+going\s+to)\s+)?"
+    r"(?:(?:please\s+)?(?:put|place|stick|set|build|"
     r"make|stand|pop|add)\s+)?((?:(?:an?|one|a\s+single|single)\s+)?"
     r"(?:\S+\s+){0,3}?(?:cube|block|brick|tower|stack|column|pyramid|pad|slab)s?"
     r"(?:\s+(?:of\s+)?(?:\d+|two|three|four|five|six|seven|eight|nine|ten)(?:\s+(?:cubes?|high|tall|"
