@@ -10586,3 +10586,14 @@ def test_structures_picked_by_the_sizes_said_for_them():
     # named with articles, read by the rule for them: never two more towers
     r = plan("2 towers, a 5 and a 3, the 5 behind the 3, gap of 2 cubes")
     assert len(r.spec.structures) == 2
+
+
+def test_a_beam_said_last_and_a_copy_on_top_of_towers_a_beam_joins():
+    # "… and bridge them with a beam" stays read by its verb (the rule for a beam said last
+    # took the beam from it and left no towers to join)
+    _built_as_said("two stacks of 3 and bridge them with a beam", ["bridge"], [1, 3, 3])
+    # "… then another cube on top" of towers a beam joins: an IndexError (the phrases counted the
+    # two towers the bridge replaced)
+    r = _built_as_said("two towers of 2 with a beam across them, then another cube on top",
+                       ["bridge", "row"], None)  # fmt: skip
+    _cube_on_the_beam(r)

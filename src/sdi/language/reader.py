@@ -801,6 +801,8 @@ def _stacking_on(
     of its own right after one stacked on the one before it goes on top again."""
     subject_of = {r.subject: r for r in relations}
     out = list(relations)
+    if len(drafts) != max((p.first + p.count for p in phrases), default=0):
+        return out  # structures merged (towers a beam joins): the phrases count the ones said
     for p in phrases:
         k = p.first
         if p.count != 1 or k in subject_of or k < 2 or not _ONE_MORE.match(p.text.strip()):

@@ -6,8 +6,16 @@ from __future__ import annotations
 
 import re
 
-from sdi.language.nouns import BASES, COPY_WORDS, GENERIC, LEAD_VERBS, PRONOUNS, shape_alternation
-from sdi.language.state import Phrase, ReadState
+from sdi.language.nouns import (
+    BASES,
+    COPY_WORDS,
+    GENERIC,
+    LEAD_VERBS,
+    PRONOUNS,
+    beam_only,
+    shape_alternation,
+)
+from sdi.language.state import Phrase, PhraseRelation, ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.structure_spec import SpecDraft, StructureDraft
 
@@ -236,7 +244,9 @@ _THE_GROUP = re.compile(
 def named_twice(spec: SpecDraft, text: str, st: ReadState) -> SpecDraft:
     """ "Tower, 250 mm tall, single column", "a big wall at the back, 8 long and 4 high, it's
     her castle wall": one structure sized and named again in the same phrase, with no word that
-    makes it a second one (two towers and two walls were built)."""
+    makes it a second one (two towers and two walls were built); "two walls, each wall 3 long":
+    the group's size. (A name set off by a dash or said as a shape is taken out of the words
+    before they are read: `normalise._named_twice`.)"""
     if len({s.shape for s in spec.structures}) != 1:
         return spec
     *group, last = spec.structures
@@ -295,6 +305,57 @@ _SPANNING_PARTS = frozenset(
     {"beam", "beams", "lintel", "roof", "top", "deck", "span", "plank", "tabletop", "slab"}
 )
 """Parts of a bridge, an arch or a table that a later clause may name for the whole."""
+
+
+_THE_BEAM = re.compile(
+    r"\W*(?:on\s+)?(?:the|that|this|its)\s+(?:(?:middle|centre|center|top|midpoint)\s+of\s+"
+    r"(?:the\s+)?)?(?:beam|lintel|plank|girder|crossbar|deck)\b\W*?(?:,(?P<rest>.*))?$",
+    re.IGNORECASE,
+)
+"""'the beam', 'the middle of the lintel': the top of what a beam said before made."""
+_MIDDLE = re.compile(
+    r"(?:(?:over|in|at|on)\s+)?(?:the\s+)?(?:middle|centre|center|mid-?span|midpoint)|centred|"
+    r"centered",
+    re.IGNORECASE,
+)
+"""Where on a beam a structure said on it stands: its middle, where SDI stands it."""
+
+
+def the_beam(
+    text: str, earlier: list[Phrase], structures: list[StructureDraft], rels: list[PhraseRelation]
+) -> tuple[int, str] | None:
+    """ "… a beam across them, then a cube on the middle of the beam": the phrase whose
+    structure "the beam" of `text` names — the towers the last beam said before it lies on (they
+    become a bridge), else the last bridge, arch or canopy built — and any words said after it
+    that are not where on the beam (they are reported)."""
+    said = _THE_BEAM.match(text)
+    if said is None:
+        return None
+    rest = (said.group("rest") or "").strip()
+    rest = "" if _MIDDLE.fullmatch(rest) else rest
+    owner = _beam_owner(earlier, structures, rels)
+    return None if owner is None else (owner, rest)
+
+
+def _beam_owner(
+    earlier: list[Phrase], structures: list[StructureDraft], rels: list[PhraseRelation]
+) -> int | None:
+    k = len(earlier)
+    laid: list[tuple[int, int | None]] = [
+        (r.object, r.subject) for r in rels if r.kind == "joined" and r.object is not None
+    ]
+    laid += [(r.subject, r.object) for r in rels if r.kind == "on" and r.subject < k
+             and beam_only(earlier[r.subject].text)]  # fmt: skip
+    laid = [(beam, on) for beam, on in laid if beam < k]
+    if laid:
+        beam, on = max(laid, key=lambda said: said[0])
+        if on is None:  # "…, a beam on top": on the structures said before it
+            on = next((j for j in range(beam - 1, -1, -1) if earlier[j].count), None)
+        return None if on is None else resolve(earlier, on)
+    spans = ("bridge", "arch", "canopy")
+    return next((j for j in range(k - 1, -1, -1) if earlier[j].count and any(
+        structures[i].shape in spans for i in range(earlier[j].first, earlier[j].first
+                                                     + earlier[j].count))), None)  # fmt: skip
 
 
 def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> int | None:

@@ -2393,11 +2393,21 @@ _REWRITES += [
     (  # "two towers of 3 and a beam across": the beam lies across the towers
         re.compile(
             r"\b(towers?|pillars?|columns?|stacks?|posts?|uprights?)\b([^.;]*?)\s*,?\s*\b(?:and|plus|with)\s+"
-            r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar|deck)(?:\s+(?:across|over|on\s+them|"
+            r"(?:a|one|an)\s+(beam|plank|lintel|girder|bar|deck)\s+(?:across|over|on\s+them|"
             r"on\s+top|(?:resting|sitting|lying|laid)\s+(?:on|across)\s+(?:both|them|the\s+two|top))"
-            r"|(?=\s*(?:[.;]|$)))"
             r"(?:\s+(?:them|the\s+top|of\s+them|both))?"
             r"(?:,?\s+(?:connecting|joining|linking)\s+(?:them|both|the\s+two)(?:\s+of\s+them)?)?\b",
+            re.IGNORECASE,
+        ),
+        " {0}{1} joined at the top by a {2} ",
+        "read '{0}' as the towers joined by the beam",
+    ),
+    (  # "two columns of two and one beam": the beam said last, with no verb of its own, lies across
+        # them (it was dropped; "… and bridge them with a beam" is read by its verb)
+        re.compile(
+            r"\b(towers?|pillars?|columns?|stacks?|posts?|uprights?)\b((?:(?!\b(?:with|bridge\w*|join\w*|"
+            r"connect\w*|span\w*|link\w*)\b)[^.;])*?)\s*,?\s*\b(?:and|plus)\s+(?:a|one|an)\s+(beam|plank|"
+            r"lintel|girder|bar|deck)(?=\s*(?:[.;]|$))",
             re.IGNORECASE,
         ),
         " {0}{1} joined at the top by a {2} ",

@@ -22,8 +22,8 @@ from sdi.language.references import (
     pick_structure,
     possessive,
     refers_to,
-    resolve,
     same_as_before,
+    the_beam,
 )
 from sdi.language.state import Phrase, PhraseRelation, ReadState
 from sdi.spec import lexicon as lx
@@ -151,45 +151,6 @@ def _holding(phrases: list[Phrase], i: int) -> int | None:
                 None)  # fmt: skip
 
 
-_THE_BEAM = re.compile(
-    r"\W*(?:on\s+)?(?:the|that|this|its)\s+(?:(?:middle|centre|center|top|midpoint)\s+of\s+"
-    r"(?:the\s+)?)?(?:beam|lintel|plank|girder|crossbar|deck)\b\W*?(?:,(?P<rest>.*))?$",
-    re.IGNORECASE,
-)
-"""'the beam', 'the middle of the lintel': the top of what a beam said before made."""
-_MIDDLE = re.compile(
-    r"(?:(?:over|in|at|on)\s+)?(?:the\s+)?(?:middle|centre|center|mid-?span|midpoint)|centred|"
-    r"centered",
-    re.IGNORECASE,
-)
-"""Where on a beam a structure said on it stands: its middle, where SDI stands it."""
-
-
-def _beam_owner(
-    text: str, earlier: list[Phrase], structures: list[StructureDraft], rels: list[PhraseRelation]
-) -> int | None:
-    """The phrase whose structure "the beam" of `text` names: the towers the last beam said
-    before it lies on (they become a bridge), else the last bridge, arch or canopy built."""
-    if not _THE_BEAM.match(text):
-        return None
-    k = len(earlier)
-    laid: list[tuple[int, int | None]] = [
-        (r.object, r.subject) for r in rels if r.kind == "joined" and r.object is not None
-    ]
-    laid += [(r.subject, r.object) for r in rels if r.kind == "on" and r.subject < k
-             and beam_only(earlier[r.subject].text)]  # fmt: skip
-    laid = [(beam, on) for beam, on in laid if beam < k]
-    if laid:
-        beam, on = max(laid, key=lambda said: said[0])
-        if on is None:  # "…, a beam on top": on the structures said before it
-            on = next((j for j in range(beam - 1, -1, -1) if earlier[j].count), None)
-        return None if on is None else resolve(earlier, on)
-    spans = ("bridge", "arch", "canopy")
-    return next((j for j in range(k - 1, -1, -1) if earlier[j].count and any(
-        structures[i].shape in spans for i in range(earlier[j].first, earlier[j].first
-                                                     + earlier[j].count))), None)  # fmt: skip
-
-
 def _beam_said(text: str) -> bool:
     """A beam before a comma and chatter only ("a beam, if it's no bother")."""
     head, comma, rest = text.partition(",")
@@ -232,15 +193,14 @@ def fill_slots(
             if q.clause < p.clause and q.count
             for i in range(q.first, q.first + q.count)
         ]
-        owner = _beam_owner(p.text, phrases[:k], structures, rels)
-        if owner is not None:  # "… a beam across them, then a cube on the middle of the beam"
-            p.ref, p.structure = owner, phrases[owner].first
-            beam = _THE_BEAM.match(p.text)
-            rest = (beam.group("rest") if beam else None) or ""
-            if rest.strip() and not is_chatter(rest) and not _MIDDLE.fullmatch(rest.strip()):
-                st.material.append(rest.strip())
-                st.notes.append(f"ignored '{rest.strip()}': said of the beam, read as where "
-                                "the structure stands")  # fmt: skip
+        beam = the_beam(p.text, phrases[:k], structures, rels)
+        if beam is not None:  # "… a beam across them, then a cube on the middle of the beam"
+            spanned, rest = beam
+            p.ref, p.structure = spanned, phrases[spanned].first
+            if rest and not is_chatter(rest):
+                st.material.append(rest)
+                st.notes.append(f"ignored '{rest}': said of the beam, read as where the "
+                                "structure stands")  # fmt: skip
             continue
         dropping = _DROPS.search(p.text)
         if dropping and modify(p, phrases[:k], structures, st):
