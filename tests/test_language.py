@@ -10597,3 +10597,16 @@ def test_a_beam_said_last_and_a_copy_on_top_of_towers_a_beam_joins():
     r = _built_as_said("two towers of 2 with a beam across them, then another cube on top",
                        ["bridge", "row"], None)  # fmt: skip
     _cube_on_the_beam(r)
+
+
+def test_a_comparison_then_a_number_stays_a_gap_or_an_unread_change():
+    # "a tower one shorter, 2 cubes apart": the gap was read as a height (0.05 m, silently)
+    r = _built_as_said("a 3 cube tower and a tower one shorter, 2 cubes apart", ["tower", "tower"],
+                       [2, 3])  # fmt: skip
+    assert r.spec.gap_m == pytest.approx(0.1)
+    # "… you make higher, 6" with nothing made: reported, never a wall 6 long (silently)
+    r = plan("Make four tower, all of 3, in one line with space one cube. The first and the "
+             "second you make higher, 6.")  # fmt: skip
+    assert r.status == "partial"
+    # an arch's opening: its corbels narrow it, so the span is not read from it
+    assert plan("Build an arch whose opening is two cubes wide.").status != "success"

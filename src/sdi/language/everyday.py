@@ -519,12 +519,13 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:an?\s+|the\s+)?(?:clear\s+)?opening\s+(?:of\s+|is\s+)?(" + _NUM
                 + r")\s+(?:cubes?\s+|blocks?\s+)?(?:wide|across)\b|\b(?:an?\s+)?(" + _NUM
                 + r")[\s-]+(?:cubes?[\s-]+|blocks?[\s-]+)?(?:wide\s+)?opening\b", re.I),
-     lambda m: f"span {m.group(1) or m.group(2)}"),
+     lambda m: (m.group(0) if re.search(r"\barch", m.string, re.I)  # its corbels narrow it
+                else f"span {m.group(1) or m.group(2)}")),
     # "Make the left one taller, five": the height said after the comparison (made 1 taller)
     (re.compile(r"\b(taller|higher|shorter|lower|longer)\s*[,:—–-]\s*(?:to\s+|say\s+)?(" + _NUM
-                + r")\b(?!\s*(?:cubes?\s+|blocks?\s+)?(?:more|less|fewer|extra|taller|higher|"
-                r"shorter|lower|longer|high|tall|long)\b)", re.I),
-     lambda m: f"{m.group(2)} {'long' if m.group(1).lower() == 'longer' else 'high'}"),
+                + r")\b(?=\s*(?:[.;,!]|$|and\b|then\b))", re.I),
+     lambda m: (m.group(0) if re.search(r"\bmake\s*$", m.string[: m.start()], re.I)  # no object
+                else f"{m.group(2)} {'long' if m.group(1).lower() == 'longer' else 'high'}")),
     # "with the taller one standing behind": the taller one behind (it stood in front, silently)
     (re.compile(r"\b(?:with\s+)?(the\s+(?:taller|shorter|bigger|smaller|higher|lower|tallest|"
                 r"shortest|biggest|smallest|longer|shorter)(?:\s+one)?)\s+(?:is\s+)?(?:standing|placed|"
