@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from sdi.language.nouns import families_said, shape_alternation
+from sdi.language.nouns import families_said, nouns_said, shape_alternation
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import words_to_numbers
 
@@ -58,8 +58,7 @@ def _layers_in_turn(m: re.Match[str]) -> str:
 def _sized_one(m: re.Match[str]) -> str:
     """ "three towers: a small one, a medium one and a big one": one of the family said before,
     that size ("one" was read as 1 high, silently); "middle" is the medium size."""
-    said = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
-            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    said = nouns_said(m.string[: m.start()])
     if not said:
         return m.group(0)
     plural = lx.SHAPE_WORDS.get(said[-1][:-1]) is not None
@@ -85,8 +84,7 @@ def _by_their_sizes(m: re.Match[str]) -> str:
     """ "Two towers: 2 and 5. The 2 goes behind the 5": the ones of those sizes, by name (the
     5 was put behind the 2, or both at the back, silently)."""
     before = m.string[: m.start()]
-    said = [w for w in re.findall(r"[a-z]+", before.lower())
-            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    said = nouns_said(before)
     numbers = words_to_numbers(re.findall(r"\d+|[a-z]+", before.lower()))
     a, b = (words_to_numbers([m.group(k).lower()])[0] for k in (1, 3))
     if not said or a == b or a not in numbers or b not in numbers:
@@ -102,8 +100,7 @@ def _with_sized_one(m: re.Match[str]) -> str:
     with no family before stays as it was)."""
     family = m.group(3).lower()
     if family == "one":
-        said = [w for w in re.findall(r"[a-z]+", m.string[: m.start()].lower())
-                if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+        said = nouns_said(m.string[: m.start()])
         if not said:
             return m.group(0)
         family = said[-1]

@@ -179,7 +179,12 @@ def shape_alternation(*, exclude: Collection[str] = (), min_len: int = 1) -> str
     return "|".join(sorted(said, key=len, reverse=True))
 
 
+def nouns_said(text: str) -> list[str]:
+    """The unambiguous structure nouns of `text`, in the order said."""
+    return [w for w in re.findall(r"[a-z]+", text.lower())
+            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+
+
 def families_said(text: str) -> list[str]:
     """The families the unambiguous structure nouns of `text` name, in the order said."""
-    return [lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", text.lower())
-            if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
+    return [lx.SHAPE_WORDS[w] for w in nouns_said(text)]

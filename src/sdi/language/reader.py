@@ -528,7 +528,7 @@ _RIGHT_BY = re.compile(
     re.I,
 )
 _TOUCHING = re.compile(
-    r"(?<!\bnot\s)(?<!\ball\s)\b(?:touching|flush\s+(?:with|against)|butting\s+(?:up\s+)?against|"
+    r"(?<!\ball\s)\b(?:touching|flush\s+(?:with|against)|butting\s+(?:up\s+)?against|"
     r"pressed\s+against|up\s+against|against(?=\s+(?:a|an|the|it|them|one|each)\b)|"
     r"leading\s+up\s+to(?=\s+(?:a|an|the|it)\b))\b",
     re.IGNORECASE,

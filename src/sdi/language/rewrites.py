@@ -2841,14 +2841,13 @@ def _post_and_beam(text: str, st: ReadState) -> str:
     and was built 5 high on legs of 3, silently)."""
     out = []
     for sentence in re.split(r"(?<=[.;!?])", text):
+        said = _ARCH_WORD.search(sentence)
         if (
-            _ARCH_WORD.search(sentence)
+            said
             and _POSTS.search(sentence)
             and _BEAM_WORD.search(sentence)
             and not _CURVED.search(sentence)
         ):
-            said = _ARCH_WORD.search(sentence)
-            assert said is not None
             st.notes.append(f"read '{said.group(0)}' of posts and a beam as a bridge: posts and "
                             "the beam across them (SDI's arch steps corbels in under its beam)")
             sentence = _ARCH_WORD.sub(lambda m: "bridge" + ("s" if m.group(1) else ""), sentence)

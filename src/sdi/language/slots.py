@@ -151,16 +151,22 @@ def _holding(phrases: list[Phrase], i: int) -> int | None:
                 None)  # fmt: skip
 
 
+def _content(text: str) -> list[str]:
+    """The words of `text` that say something (structure nouns always do)."""
+    return [w for w in re.findall(r"[a-z0-9.]+", text.lower())
+            if w not in words.HARMLESS or w in lx.SHAPE_WORDS]  # fmt: skip
+
+
+def _beam_words(content: list[str]) -> bool:
+    """Nothing said but a beam (or a bridge's top), its parts and "top"."""
+    return all(w in BEAMS or w in lx.PART_WORDS or w == "top" for w in content)
+
+
 def _beam_said(text: str) -> bool:
     """A beam before a comma and chatter only ("a beam, if it's no bother")."""
     head, comma, rest = text.partition(",")
-    content = [w for w in re.findall(r"[a-z0-9.]+", head.lower())
-               if w not in words.HARMLESS or w in lx.SHAPE_WORDS]  # fmt: skip
-    return (
-        bool(comma and rest.strip() and content)
-        and all(w in BEAMS or w in lx.PART_WORDS or w == "top" for w in content)
-        and is_chatter(rest)
-    )
+    content = _content(head)
+    return bool(comma and rest.strip() and content) and _beam_words(content) and is_chatter(rest)
 
 
 _THE_FAMILY = re.compile(
@@ -182,11 +188,7 @@ def fill_slots(
         if r.kind == "next" and r.side and (r.object is None or r.object < r.subject):
             phrases[r.subject].beside = r.side  # "… and a tower of 5 to its right"
     for k, p in enumerate(phrases):
-        content = [
-            w
-            for w in re.findall(r"[a-z0-9.]+", p.text.lower())
-            if w not in words.HARMLESS or w in lx.SHAPE_WORDS
-        ]
+        content = _content(p.text)
         earlier = [
             i
             for q in phrases[:k]
@@ -230,8 +232,7 @@ def fill_slots(
         moves = any(op in _CHANGE_OPS and pattern.search(p.text) for pattern, op in MODIFY)
         if not content and not moves:
             continue  # ("put it on the right" is all harmless words, and a move)
-        if k in joiners and (_beam_said(p.text) or all(
-                w in BEAMS or w in lx.PART_WORDS or w == "top" for w in content)):  # fmt: skip
+        if k in joiners and (_beam_said(p.text) or _beam_words(content)):
             continue  # "a beam", "a bridge on top" as what joins the towers: no own structure
         if modify(p, phrases[:k], structures, st):
             continue
