@@ -27,6 +27,7 @@ _USABLE = (
     | lx.LEVEL_WORDS | lx.STEP_WORDS | lx.PART_WORDS | set(lx.UNITS_M) | BEAMS
     | words.SIGNIFICANT  # "too much, half of that": a change of a size, never chatter
     | {"side", "sides", "corner", "corners", "edge", "edges"}  # "keep it on the starboard side"
+    | {"peak", "apex", "summit"}  # "then a cube on the peak": on top
 ) - lx.AMBIGUOUS_SHAPES - {"well", "item", "items", "object", "objects", "unit"}  # fmt: skip
 
 
@@ -115,6 +116,19 @@ def _where_to_build(tok: Token, word: str) -> bool:
     )
 
 
+def _takes_away(tok: Token) -> bool:
+    """`tok` is a verb that takes parts away ("take one corner cube away", "remove the top"):
+    a change of what is built, never chatter."""
+    lemma = tok.lemma_.lower()
+    if tok.pos_ != "VERB":
+        return False
+    if lemma in ("remove", "delete", "subtract"):
+        return True
+    return lemma in ("take", "knock", "pull", "lift") and any(
+        t.lower_ in ("away", "off", "out") for t in tok.doc[tok.i + 1 : tok.i + 6]
+    )
+
+
 _STUFF = frozenset({
     "glass", "stone", "wood", "metal", "steel", "iron", "plastic", "concrete", "gold", "silver",
     "paper", "card", "cardboard", "lego", "foam", "rubber", "ice", "sand", "clay", "marble",
@@ -159,6 +173,24 @@ def _in_heading(tok: Token) -> bool:
     )
 
 
+def _also(tok: Token) -> bool:
+    """`tok` ("too", "also") ends its clause and says "as well" ("and one on the right too"), not
+    "too much" ("too tall", "not too many")."""
+    doc = tok.doc
+    after = doc[tok.i + 1] if tok.i + 1 < len(doc) else None
+    last = after is None or after.is_punct or after.lower_ in ("and", "then")
+    before = doc[tok.i - 1] if tok.i > 0 else None
+    sized = before is not None and (  # "height too": the number two, misheard
+        before.lower_ in lx.DIMENSION_WORDS
+        or before.lower_ in lx.LEVEL_WORDS
+        or before.lower_ in lx.STEP_WORDS
+        or before.lower_ in ("height", "length", "width", "depth", "by", "x", "of", "is", "=")
+    )
+    return last and not sized and tok.head.pos_ not in ("ADJ", "ADV") and not (
+        before is not None and before.pos_ in ("ADJ", "ADV") and before.lower_ != "right"
+    )
+
+
 def account(word: str, tok: Token | None, st: ReadState) -> None:
     if word in (",", ":", ";", "(", ")", "=", "+", "&", "*"):
         return
@@ -170,6 +202,8 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
         (word in words.CORRECTABLE or word in words.NEGATIONS or numeric)
         and word not in words.HARMLESS
     ) or word in words.SIGNIFICANT
+    if tok is not None and word in ("too", "also") and _also(tok):
+        return  # "and one on the right too": as well, no size
     if tok is not None and _built_unknown(tok, word):
         # "can you make a fridge with legs of 2": what to build is a thing SDI does not know
         st.material.append(word)
@@ -183,7 +217,7 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
         st.ignored.append(word)
         st.notes.append(f"ignored '{word}': says where to build, in words SDI does not know")
         return
-    if tok is not None and not known and not _attached(tok):
+    if tok is not None and not known and not _attached(tok) and not _takes_away(tok):
         if word not in words.HARMLESS and word not in words.CONSULTED:
             st.ignored.append(word)
             st.notes.append(f"ignored '{word}': not about the structure")

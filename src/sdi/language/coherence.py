@@ -562,6 +562,8 @@ def check(doc: Doc, spec: Spec, st: ReadState, tokens: set[int]) -> None:
     if n >= 2 and not spec.relations:
         spanned = any(s.shape in ("bridge", "arch", "canopy") for s in spec.structures)
         for cue in _relation_cues(doc, spanned):
+            if st.flanked and cue.lower().startswith("between"):
+                continue  # placed midway between the places of the two (`composition`)
             st.material.append(cue)
             st.notes.append(
                 f"ignored '{cue}': the structures are built side by side, not related as "

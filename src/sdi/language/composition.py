@@ -63,6 +63,10 @@ def relate(
                 st.flanked = True
                 st.notes.append("placed between the two, side by side")
                 continue
+            if flanked is not None:  # midway between the places of the two
+                st.flanked = True
+                st.notes.append("placed midway between the places of the two")
+                continue
             r = PhraseRelation("joined", r.subject, r.object, r.side)
         subj = r.subject
         if phrases[subj].modified or (r.object is not None and phrases[r.object].modified):
@@ -292,7 +296,7 @@ def relate(
         if at is not None:
             st.anchors.remove(at)
             side = None
-        group = _group(phrases, r.object, obj, s_idx, relations) if kind == "next_to" else []
+        group = _group(phrases, r, obj, s_idx, relations) if kind == "next_to" else []
         inside = _inside(phrases, r.object, obj, (s_idx, o_idx, subj), structures, relations) if (
             kind == "around"
         ) else []
@@ -324,7 +328,7 @@ def relate(
                 Relation(kind="next_to", subject=m, object=group[0], side=along, whole=True)
                 for m in group[1:]
             )
-            said = phrases[r.object].text if r.object is not None else "them"
+            said = phrases[r.object].text if r.object is not None and not r.plural else "them"
             st.notes.append(f"read '{said}' as the {len(group)} together")
         # a copy on every side of a ring stands a part away (the gap between structures made
         # "a ring 5x5 with a tower on each side" wider than the table)
@@ -361,6 +365,13 @@ def relate(
             if r.subject in index and r.object in index
         ]
         structures = [structures[k] for k in keep]
+        for p in phrases:  # the phrases name the structures that remain (towers a beam joins:
+            # the bridge built on them)
+            if p.count:
+                kept = [index[k] for k in range(p.first, p.first + p.count) if k in index]
+                p.first, p.count = (kept[0], len(kept)) if kept else (p.first, 0)
+            if p.structure is not None:
+                p.structure = index.get(p.structure)
     return relations, structures
 
 
@@ -454,11 +465,13 @@ _GROUP_WORDS = re.compile(
 
 
 def _group(
-    phrases: list[Phrase], ref: int | None, obj: int, subject: int, relations: list[Relation]
+    phrases: list[Phrase], r: PhraseRelation, obj: int, subject: int, relations: list[Relation]
 ) -> list[int]:
-    """The structures a plural reference ("them both", "the two") names as a relation's object,
-    when they stand free (no relation of their own yet): else []."""
-    if ref is None or not _GROUP_WORDS.match(phrases[ref].text.strip(" ,.")):
+    """The structures a plural reference ("them both", "the two", "… with a row behind them")
+    names as a relation's object, when they stand free (no relation of their own yet): else
+    []."""
+    ref = r.object
+    if ref is None or not (r.plural or _GROUP_WORDS.match(phrases[ref].text.strip(" ,."))):
         return []
     p = phrases[obj]
     # "two towers of 2 and a row of 4 behind them": the ones named before the subject
@@ -521,11 +534,13 @@ def _flanked(
     r: PhraseRelation,
     structures: list[StructureDraft],
     relations: list[Relation],
-) -> list[Relation]:
+) -> list[Relation] | None:
     """ "a tower of 2 between them", "between them a tower of 2", "two towers and a cube; put
     the cube between them": the structure said between stands in a row with the two it is
     between, in the middle (empty when it is a beam or a spanning structure that joins them,
-    or when the two are not clear)."""
+    or when the two are not clear: None). Two placed in opposite corners ("at the back left … at
+    the front right, and a wall between them"): it stands midway between their places, and they
+    keep theirs (no relations; it was lined up with them along the back, silently)."""
     own = phrases[r.subject]  # after "between": the two, or "them" with the middle after it
     said = own.text.strip(" ,.").lower().split()
     middle: list[int] = []
@@ -546,7 +561,7 @@ def _flanked(
     if not middle:
         before = phrases[resolve(phrases, r.object)] if r.object is not None else None
         if before is None:
-            return []
+            return None
         if phrases[r.object].structure is not None:  # type: ignore[index]
             middle = [phrases[r.object].structure]  # type: ignore[index, list-item]
         else:
@@ -559,13 +574,13 @@ def _flanked(
         # "between", last, stands between the two named before it
         pair, middle = pair[:2], pair[2:]
     if len(pair) != 2 or len(middle) != 1 or middle[0] in pair:
-        return []
+        return None
     x = middle[0]
     if structures[x].shape in ("bridge", "arch", "canopy") or structures[x].part == "beam":
-        return []
+        return None
     related = {rel.subject for rel in relations}
     if x in related or pair[1] in related:
-        return []
+        return None
     a, b = pair
     # a wall or row between two: at its ends, along its length (left to right); two said on
     # either side ("3 on the left, 5 on the right"): from the one to the other
@@ -573,10 +588,30 @@ def _flanked(
     side_a, side_b = structures[a].region, structures[b].region
     if side_a in lx.OPPOSITE_SIDE and lx.OPPOSITE_SIDE[side_a] == side_b:
         along = side_b
+    elif side_a and side_b and len(side_a.split()) + len(side_b.split()) > 2:
+        mid = _midway(side_a, side_b)
+        placed = structures[x].region or structures[x].at_x is not None
+        if mid is not None and not placed:
+            structures[x] = structures[x].model_copy(update={"region": mid})
+            return []
     return [
         Relation(kind="next_to", subject=x, object=a, side=along),
         Relation(kind="next_to", subject=b, object=x, side=along),
     ]
+
+
+def _midway(a: str, b: str) -> str | None:
+    """The region halfway between two regions ("back left" and "front right": the centre;
+    "back left" and "back right": the back), or None when they share no line."""
+    parts = []
+    for axis in (("back", "front"), ("left", "right")):
+        said_a = next((w for w in a.split() if w in axis), None)
+        said_b = next((w for w in b.split() if w in axis), None)
+        if said_a == said_b and said_a is not None:
+            parts.append(said_a)
+        elif said_a is None or said_b is None:
+            return None  # "back left" and "left": not two ends of one line
+    return " ".join(parts) or "centre"
 
 
 def _structures_of(p: Phrase) -> list[int]:

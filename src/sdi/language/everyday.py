@@ -435,6 +435,82 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
                 re.I),
      lambda m: f"make it {m.group(2)} " + {"length": "long", "height": "high", "width": "wide",
                                             "steps": "steps"}[m.group(1).lower()]),
+    # "make a slab 4 buy 4": by (the second 4 was dropped: a 2x2 slab, silently)
+    (re.compile(r"(?<=\d)\s+(?:buy|bye|bu|bt)\s+(?=\d)", re.I), " by "),
+    # "our little one loves bridges": what someone likes is no structure to build (a second
+    # bridge was built, silently)
+    (re.compile(r"\b(loves?|adores?|enjoys?|(?:is|are|s)\s+(?:really\s+|so\s+)?(?:into|crazy\s+"
+                r"about|mad\s+about|obsessed\s+with|fond\s+of))\s+(?:all\s+)?(" + _FAMILY_SAID
+                + r")s\b", re.I),
+     lambda m: f"{m.group(1)} them"
+     if re.search(rf"\b(?:an?|one|the)\s+(?:\w+\s+){{0,3}}?{m.group(2)}\b", m.string[m.end() :],
+                  re.I)
+     else m.group(0)),
+    # "Tolerance of one cube is NOT acceptable": a tolerance, no cube to build
+    (re.compile(r"\btolerances?\s+(?:of\s+|is\s+|=\s*)?(?:\+/-|±|plus\s+or\s+minus)?\s*"
+                r"(?:\d+(?:\.\d+)?|one|half\s+a|a)\s*(?:cubes?|parts?|blocks?)\b", re.I),
+     "tolerance"),
+    # "three tower in line, height of them two, three, four, from left": in that order from the
+    # left (all three were put in the left region, silently)
+    (re.compile(r"(?:\s*,\s*|\s+)(?:starting\s+|counting\s+|going\s+|reading\s+)?from\s+(?:the\s+)?"
+                r"(left|right)(?:\s+side)?\s*(?=[.;!]|$)", re.I),
+     lambda m: m.group(0)
+     if re.search(r"(?:\d|\b(?:cubes?|blocks?|parts?|units?|cm|mm|m|inch(?:es)?|away|apart|far|"
+                  r"distance|offset|steps?|edge))\s*$", m.string[: m.start()], re.I)
+     else f", {m.group(1)} to {'right' if m.group(1).lower() == 'left' else 'left'}"),
+    # "three towers standing in a row …, a wall behind the whole row": behind them all (a row
+    # was built for "the whole row", silently)
+    (re.compile(r"\b(?:the\s+)?(?:whole|entire|full)\s+(?:row|line|group|set|lot)\b(?!\s+of\b)",
+                re.I),
+     lambda m: "them" if re.search(r"\bin\s+(?:a\s+)?(?:row|line)\b|\bside\s+by\s+side\b",
+                                   m.string[: m.start()], re.I) else m.group(0)),
+    # "a beam resting across from one top to the other": across them (the towers were stacked)
+    (re.compile(r"\b(?:(?:resting|laid|lying|running|going|spanning|placed|set)\s+)?(?:across\s+)?"
+                r"from\s+(?:the\s+)?(?:one|first)\s+(?:top|tower|post|pillar|column|stack|leg)?\s*to"
+                r"\s+the\s+(?:other|second)(?:\s+(?:one|top|tower|post|pillar|column|stack|leg))?\b",
+                re.I),
+     " across them "),
+    # "go up in direction of robot": towards it (the staircase climbed the default way)
+    (re.compile(r"\bin\s+(?:the\s+)?direction\s+(?:of|to|towards?)\s+(?:the\s+)?(robot|front|back|rear|left|"
+                r"right)\b", re.I), r"towards the \1"),
+    # "the longer limb being five cubes and the shorter three": an L's arms (both 3, silently)
+    (re.compile(r"\b(?:the\s+|its\s+|with\s+the\s+)?(?:longer|long|longest|bigger|larger)\s+(?:arm|"
+                r"limb|leg|side|branch|wing)\s+(?:being\s+|is\s+|of\s+|=\s*|:\s*)?(" + _NUM
+                + r")(?:\s+cubes?)?(?:\s+long)?\s*,?\s*(?:and\s+)?(?:the\s+|its\s+)?(?:shorter|"
+                r"short|shortest|smaller)(?:\s+(?:arm|limb|leg|side|branch|wing|one))?\s+(?:being\s+|is\s+|"
+                r"of\s+|=\s*|:\s*)?(" + _NUM + r")\b(?:\s+cubes?)?(?:\s+long)?", re.I),
+     r"arms \1 and \2"),
+    # "region!=centre", "position=not left": anywhere but there (read as there, silently)
+    (re.compile(r"\b(?:region|position|location|loc|place|where|side|area)\s*(?:!=|<>|≠|=\s*not\s+|"
+                r":\s*not\s+)\s*(?:the\s+)?((?:front|back|rear)?[\s_-]*(?:left|right|centre|center|middle|"
+                r"front|back|rear))\b", re.I),
+     lambda m: f" not in the {m.group(1).replace('_', ' ').replace('-', ' ').strip()} "),
+    # "And add a cube in the middle of the top": on top of it, centred (it stood in the table's
+    # centre, silently)
+    (re.compile(r"\b(?:in|on|at)\s+the\s+(?:very\s+)?(?:middle|centre|center)\s+of\s+(?:the|its)\s+top\b"
+                r"(?!\s+of\b)", re.I), "on top of it"),
+    # "bridge them with a 1x4 plate": the plate across them is their beam (it was laid between
+    # them on the table, silently)
+    (re.compile(r"\b((?:bridge|join|span|connect|link|cap|top)\s+(?:them|the\s+two|both)(?:\s+\w+)?\s+with\s+"
+                r"(?:a|one|an)\s+)(?:\d+\s*x\s*\d+\s+|long\s+|flat\s+)?(?:plate|plank|board|tile|slab)\b",
+                re.I), r"\1beam"),
+    # "then a single on the peak": a single cube on top (dropped as chatter, silently)
+    (re.compile(r"\b(a|one)\s+single\s+(?=(?:on|at|atop|onto|in|to|beside|next|behind)\b)", re.I),
+     r"\1 single cube "),
+    (re.compile(r"\b(on|at|to|onto)\s+(?:the|its)\s+(?:very\s+)?(?:peak|apex|summit|tip|pinnacle)\b"
+                r"(?!\s+of\b)", re.I), r"\1 top"),
+    # "with a gap of one one cube": a number said twice in speech is said once
+    (re.compile(r"\b(one|two|three|four|five|six|seven|eight|nine|ten)\s+\1\b(?=\s+(?:cubes?|blocks?|"
+                r"bricks?|high|tall|long|wide|levels?|layers?|steps?)\b)", re.I), r"\1"),
+    # "Move it to the front. No, further right too": a move as well as the one before, not
+    # instead of it (the front was lost, silently)
+    (re.compile(r"\bno\b\s*[,.!]?\s*(?:(?:move\s+it\s+|put\s+it\s+)?(?:further|farther|more|a\s+bit|"
+                r"a\s+little)\s+)?(?:to\s+(?:the\s+)?)?(left|right|front|back)\s*,?\s*(?:too|as\s+well|also)\b",
+                re.I), r"and move it to the \1"),
+    # "Make it 4 levels. No, back to 3": that number again (read as the back, silently)
+    (re.compile(r"\b(no|nope|actually|wait|sorry|hmm)\b\s*[,.!]?\s*(?:go\s+|change\s+it\s+|make\s+it\s+|"
+                r"put\s+it\s+|set\s+it\s+)?back\s+to\s+(\d+|one|two|three|four|five|six|seven|eight|nine|"
+                r"ten)\b(?!\s*(?:mm|cm|m|in|inch|inches)\b)", re.I), r"\1, \2"),
     # "Is too tall, make 1 layer less": one layer lower
     (re.compile(r"\b(?:it\s+)?is\s+too\s+(?:tall|high|big),?\s*(?:so\s+)?(?:make|do)\s+(?:it\s+)?(\d+|one|two|"
                 r"three)\s+(?:layers?|levels?|rows?|courses?|cubes?)\s+less\b", re.I),

@@ -769,15 +769,17 @@ def _stair_end(m: re.Match[str], st: ReadState, note: str) -> str:
     said = _said(m)[0]
     if not re.search(r"\b(?:stair|stairs|staircase|steps?)\b", m.string, re.IGNORECASE):
         return m.group(0)  # "at the top end of the wall": no staircase named
-    if re.match(r"\s*,?\s*(?:a|an|one|two|three|the)\s", m.string[m.end() :], re.IGNORECASE):
+    touches = said.lower().startswith(("against", "touching"))
+    if touches and re.match(r"\s*,?\s*(?:a|an|one|two|three|the)\s", m.string[m.end() :], re.I):
         return m.group(0)  # "against its tall end a tower of five": said before what it places
-    high = re.search(r"\b(?:high|higher|highest|upper|tall|taller)\s+end\b", said, re.I)
+    high = re.search(r"\b(?:(?:high|higher|highest|upper|tall|taller)\s+end|(?:top|highest|upper|"
+                     r"tallest)\s+(?:step|stair|tread))\b", said, re.I)
     st.stair_end = "high" if high else "low"
     st.notes.append(f"read '{said}' as beside the staircase's {st.stair_end} end")
     if m.group(0).lstrip().startswith(","):
         return " "  # "tower 3 next to a 3 step staircase, low end": the relation is said
     of = re.search(r"\bof\s+(the\s+\w+)\s*$", said, re.IGNORECASE)
-    touching = " touching " if said.lower().startswith(("against", "touching")) else " "
+    touching = " touching " if touches else " "
     return f" next to {of.group(1) if of else 'it'}{touching}"
 
 

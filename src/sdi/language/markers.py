@@ -500,7 +500,8 @@ def _clause_phrases(
                 if kind == "on":
                     rels.append(PhraseRelation("on", after, before))
                 elif kind == "next":
-                    rels.append(PhraseRelation("next", after, before, side))
+                    them = pronoun and any(doc[i].lower_ == "them" for i in after_toks)
+                    rels.append(PhraseRelation("next", after, before, side, plural=them))
                 elif kind in ("middle", "middle_with"):
                     rels.append(PhraseRelation("middle", before, after))
                 else:

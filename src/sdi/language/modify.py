@@ -665,6 +665,10 @@ def _region(m: re.Match[str], op: str, p: Phrase, before: list[Phrase], built: l
     index = _last_index(built)
     was = structures[index].region
     kept = [w for w in (was or "").split() if w in _ACROSS.get(place, ())]
+    instead = re.match(r"\s*,?\s*(?:instead\s+of|rather\s+than|and\s+not|not)\s+(?:on\s+|at\s+|"
+                       r"in\s+)?(?:the\s+)?(left|right|front|back)\b", p.text[m.end() :], re.I)
+    if instead:  # "put it at the back instead of the left": the side said before, replaced
+        kept = [w for w in kept if w != instead.group(1).lower()]
     if kept:
         place = f"{place} {kept[0]}" if place in ("front", "back") else f"{kept[0]} {place}"
     structures[index] = structures[index].model_copy(

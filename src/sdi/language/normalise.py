@@ -55,8 +55,8 @@ _REFERENCE_NO = re.compile(
     r"hall|aisle|lab|desk|batch|lot|week|version|rev|entry|sheet|page|room|bay|figure|fig|stn|"
     r"run|trial|session|group|team|building|shift|day|item|tab|slide|chapter|section|cycle|"
     r"serial|pallet\s+id|work\s+order|wo|po|part\s+no|label|exhibit|plot|model|drawing|dwg|kit|display|"
-    r"exercise|lesson|experiment|protocol|procedure|sample|bench|rig|line\s+no|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
-    r"(?:[:#]|-(?=\d))?\s*[A-Za-z]*\d[\w-]*|\b\d{3,}-\d+\b"
+    r"exercise|lesson|experiment|protocol|procedure|sample|bench|rig|line(?:\s+no)?|step|task|assignment|question|(?:test\s+)?case|test|scenario|round|mission|quest|spec)\s*"
+    r"(?:[:#]|-(?=\d))?\s*[A-Za-z]*\d[\w-]*(?:\s+of\s+\d+\b)?|\b\d{3,}-\d+\b"
     r"|(?-i:\b[A-Z][A-Z0-9]{1,9}-\d+\b)"  # a ticket's key: "SDI-101", "WO-3321"
     r"|\b\d{1,2}(?:[:.]\d{2})?\s*(?:am|pm|a\.m\.|p\.m\.)(?!\w)|\b\d{1,2}:\d{2}\b",
     re.IGNORECASE,
@@ -913,8 +913,14 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"(?:(?<=[,;.:])|(?<=\band))\s*(second|third|fourth|fifth)\s*[,:]?\s+(?=(?:an?|one)\s)",
                 re.I), " then "),
     # "a staircase, 3 steps, each step 3 cubes wide": the staircase that wide (the step unread)
-    (re.compile(r"\b(?:each|every)\s+(?:step|stair|tread)\s+(?:is\s+)?(?=" + _NUM
-                + r"\s+(?:cubes?\s+|blocks?\s+)?(?:wide|across)\b)", re.I), ""),
+    (re.compile(r"\b(?:each|every)\s+(?:step|stair|tread)\s+(?:is\s+|being\s+)?(?=(?:\d+"
+                r"(?:\.\d+)?\s*(?:mm|cm|m)|" + _NUM
+                + r"(?:\s+(?:cubes?|blocks?))?)\s+(?:wide|across)\b)", re.I),
+     ""),
+    # "a staircase whose top step is 15 cm up": the staircase that high (the step unread)
+    (re.compile(r"\b(?:whose|with\s+(?:its|the|a))\s+(?:top|highest|last|upper)\s+(?:step|stair|"
+                r"tread)\s+(?:is\s+|sits\s+|stands\s+)?(?:at\s+)?(?=\d+(?:\.\d+)?\s*(?:mm|cm|m)\s+(?:up|"
+                r"high|above|off|from|tall)\b)", re.I), ""),
     # a T "5 across the top and 3 down (the stem)": its bar and stem (the 3 was dropped)
     (re.compile(r"\b(" + _NUM + r")\s+(?:cubes?\s+)?across\s+the\s+top\s*(,|and)?\s*(" + _NUM
                 + r")\s+(?:cubes?\s+)?down(?:\s+the\s+(?:stem|middle|centre|center))?\b", re.I),
@@ -1084,7 +1090,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?!\s+of\b))", re.I), r"\1 the "),
     # "climbing towards the robot": to the front; "going down towards the back": it climbs to
     # the front (it was moved to the back, climbing there)
-    (re.compile(r"\b(climb\w*|ris(?:e|es|ing)|ascend\w*|(?:going|goes|stepping|steps)\s+up)\s+"
+    (re.compile(r"\b(climb\w*|ris(?:e|es|ing)|ascend\w*|(?:going|goes|go|stepping|steps)\s+up)\s+"
                 r"(towards?|to)\s+(?:the\s+)?robot\b", re.I), r"\1 \2 the front"),
     (re.compile(r"\b(?:(?:going|goes|stepping|steps|running|runs|sloping|slopes)\s+down|"
                 r"descend(?:s|ing)?|fall(?:s|ing))\s+(?:towards?|to)\s+(?:the\s+)?(front|back|rear|left|"
@@ -2914,7 +2920,7 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:that|which)\s+(?:goes|go|climbs|rises)\s+up\s+(\d+|two|three|four|five|six|seven|"
                 r"eight)\s+steps\s+(to(?:wards)?\s+the\s+(?:left|right|back|front))\b", re.I),
      r"of \1 steps going up \2"),
-    (re.compile(r"\b(?:that|which)\s+(?:goes|climbs|rises)\s+(?=up\s+(?:to(?:wards)?\s+the\s+)?"
+    (re.compile(r"\b(?:that|which)\s+(?:goes|go|climbs|climb|rises|rise)\s+(?=up\s+(?:to(?:wards)?\s+the\s+)?"
                 r"(?:left|right|back|front)\b)", re.I), "going "),
     # "a tower of 3, another of 4 and a third of 5": another one
     (re.compile(r"\ba\s+(?:third|fourth|fifth|sixth)\s+(?:one\s+)?(?=(?:of|with)\s+(?:\d|one|two|three|four|"
@@ -3218,6 +3224,12 @@ def _numbered_steps(text: str, notes: list[str]) -> str:
 
 
 _ROBOT_NAME = re.compile(r"\b(?:the\s+)?(?:abb\s+)?irb\s*-?\s*(?:120|1600)\b", re.IGNORECASE)
+_OWN_TABLE = re.compile(
+    r"\b(of|on|at|across|along|in|to|near|from|onto|off)\s+(?:my|our|your)\s+"
+    r"(?=(?:work\s*)?(?:table|bench|workbench)\b)",
+    re.IGNORECASE,
+)
+"""'on the left side of my table': the work table (a table was built, silently)."""
 
 
 _PAIR_UNIT = re.compile(
@@ -3593,6 +3605,9 @@ _HOMOPHONES: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(arms|legs|sides|pillars|posts|wings)\s+(?:to|too)\s+(?=(?:long|high|tall|"
                 r"wide|deep)\b)", re.I), lambda m: f"{m.group(1)} two "),
     (re.compile(r"(?<=\bby\s)(?:to|too)\b", re.I), "two"),
+    # "Wall, length six, height too. Break.": a size key then its value, spoken
+    (re.compile(r"\b(height|length|width|depth|levels|steps|layers)\s*(?:=|:|is|of)?\s+(?:to|too)\b"
+                r"(?=\s*(?:[,.;!]|$|and\b|then\b|over\b))", re.I), lambda m: f"{m.group(1)} two"),
     (re.compile(r"\bfor\s+(?=" + _COUNTED + r"\b|high\b|tall\b|long\b|wide\b)", re.I), "four "),
     (re.compile(r"(?<=\bof\s)for\s*$", re.I), "four"),
     (re.compile(r"\bate\s+(?=" + _COUNTED + r"\b)", re.I), "eight "),
@@ -3858,7 +3873,7 @@ _AXIS_LABEL = {"x": "d", "y": "w", "z": "h"}  # x away from the robot, y across,
 _SUM = re.compile(r"\b(\d+)\s*\+\s*(\d+)\b")
 
 
-_SLASHES = re.compile(r"\b\d+(?:/\d+)+\b(?!\s*(?:mm|cm|m)\b)")
+_SLASHES = re.compile(r"\b\d+(?:/\d+)+\b(?!\s*(?:mm|cm|m|of|metres?|meters?|inch(?:es)?)\b)")
 
 
 _STRUCTURE_NOUNS = "|".join(
@@ -4658,6 +4673,9 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f"{m.group(1)}{m.group(3)}"
 
     text = _WAY_UP_CORRECTED.sub(way_up, text)  # "going up to the back, no, to the front"
+    # "towers 2/4/6": a list of sizes, read as one before the phrasings read lists
+    text = _SLASHES.sub(lambda m: ", ".join(m.group(0).split("/")[:-1]) + " and " +
+                        m.group(0).split("/")[-1], text)  # fmt: skip
     for pattern, repl in _PHRASINGS:
         text = pattern.sub(repl, text)  # "tower from 5 cubes", "behind of wall", "near to"
     text = _placed_by_size(text)  # "3 and 5 high, the 5 on the left": the one of 5 there
@@ -4714,6 +4732,14 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _DECIMAL_COMMA_UNIT.sub(unit_comma, text)
 
     def reference(m: re.Match[str]) -> str:
+        label = re.match(r"(line|step)\s", m.group(0), re.I)
+        if label and (
+            re.search(r"\b(?:a|an|in|one|each|every|the|this|that|its|top|first|last)\s+$",
+                      m.string[: m.start()], re.I)
+            or re.match(r"\s*(?:x|by|apart|away|[a-z]+\s+(?:apart|away|long|high|wide)|cubes?|"
+                        r"blocks?|high|tall|long|wide|deep|mm|cm|m)\b", m.string[m.end() :], re.I)
+        ):
+            return m.group(0)  # "a line 3 long", "in line 3 apart", "step 2 of 3": no label
         if re.fullmatch(r"[A-Za-z]+-\d+", m.group(0)) and m.group(0).split("-")[0].lower() in (
             lx.SHAPE_WORDS
         ):
@@ -4781,6 +4807,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _LIST_ITEM.sub(" then ", text)  # "1) a tower\n2) another one …"
     text = _BULLET.sub(" , ", text)  # "- tower / - 4 cubes / - left side": one thing's details
     text = _ROBOT_NAME.sub(" the robot ", text)
+    text = _OWN_TABLE.sub(r"\1 the ", text)
     text = _PAIR_UNIT.sub(lambda m: f"({m.group(1)} {m.group(3)}, {m.group(2)} {m.group(3)})", text)
     text = _SLASH_XY.sub(
         lambda m: f"x = {m.group(1)} {m.group(3)}, y = {m.group(2)} {m.group(3)}", text
@@ -4845,7 +4872,5 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return str(total)
 
     text = _SUM.sub(plus, text)
-    text = _SLASHES.sub(lambda m: ", ".join(m.group(0).split("/")[:-1]) + " and " +
-                        m.group(0).split("/")[-1], text)  # fmt: skip
     text = _DIMS.sub(" x ", text)
     return SPACES.sub(" ", text).strip()

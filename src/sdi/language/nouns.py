@@ -65,6 +65,14 @@ def _is_structure_noun(doc: Doc, k: int) -> bool:
     w = doc[k].lower_
     if w in ("cube", "block", "brick", "box") and doc[k - 1].lower_ in _ONE and k > 0:
         return True  # "around a single cube": one part is a structure too
+    if (
+        w in ("block", "brick", "box")
+        and k >= 3
+        and doc[k - 1].like_num
+        and doc[k - 2].lower_ in ("x", "by")
+        and doc[k - 3].like_num
+    ):
+        return True  # "on top of a 2x4 brick": a part that size is a structure
     if w in ("cubes", "blocks", "bricks") and any(
         doc[j].lower_ in ("pair", "couple", "both", "single", "separate", "individual", "loose")
         for j in range(max(0, k - 4), k)
@@ -126,8 +134,10 @@ def object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[in
         return k, True
     if w in _ORDINALS:
         return k, True
-    if w in BASES:
-        return k, strong
+    if w in BASES:  # "a 3x3 base. … a cube on the base": the one said before
+        named = any(t.lower_ in BASES or lx.SHAPE_WORDS.get(t.lower_) in ("grid", "block")
+                    for t in doc[: max(0, k - 2)])  # fmt: skip
+        return k, strong or (named and doc[k - 1].lower_ in ("the", "that", "this"))
     return k, _is_structure_noun(doc, k)
 
 

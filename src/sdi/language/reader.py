@@ -191,14 +191,14 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     corrected[:0] = unscanned
     text = fields.as_words(text, st.notes)  # "Tower | H: 4 | X (mm): 500 | Y (mm): 400"
     text = background.taken_back(background.recounted(text, st.notes), st.notes)
-    text = _shared_size(text, st)  # "…, both 3 high": every structure's height
+    text = _shared_size(_shared_coordinate(text, st), st)  # "…, both 3 high": every one's
     text = normalise(text, st.notes)
     text = viewpoint.take(text, st.notes)  # "I'm opposite the robot … on my left": its right
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes, st.material)
     text = _opening(text, st)
     _vague_counts(command, st)
-    text = _same_one(_margins(_body_measures(text, st), st), st)
+    text = _same_one(_margins(_table_sized(_body_measures(text, st), st), st), st)
     text = _take_long_side(text, st)
     text = _take_u_opening(text, st)
     text = outline_corners(text, st)  # before the gaps are taken: it says one
@@ -619,6 +619,34 @@ def _place_for_all(
     return [s.model_copy(update={"region": last.region}) for s in specs]
 
 
+_SHARED_AT = re.compile(
+    r"\s*,?\s*(?:and\s+)?(?:both|all(?:\s+of\s+them)?|each(?:\s+one)?)\s+(?:(?:are|is|standing)\s+)?"
+    r"(?:at\s+)?([xy])\s*=\s*(-?\d+(?:\.\d+)?\s*(?:mm|cm|m)?)\b",
+    re.IGNORECASE,
+)
+
+
+def _shared_coordinate(text: str, st: ReadState) -> str:
+    """ "a tower at y = 0.5 m and a tower at y = 0.1 m, both at x = 0.4 m": the coordinate said
+    once for every structure placed by the other one (it went to the last one only,
+    silently)."""
+    m = _SHARED_AT.search(text)
+    if m is None:
+        return text
+    axis, value = m.group(1).lower(), m.group(2).strip()
+    other = "y" if axis == "x" else "x"
+    rest = text[: m.start()] + text[m.end() :]
+    at = rf"\bat\s+{other}\s*=\s*-?\d+(?:\.\d+)?\s*(?:mm|cm|m)?\b"
+    placed = list(re.finditer(at, rest, re.I))
+    if len(placed) < 2 or re.search(rf"\b{axis}\s*=", rest, re.I):
+        return text
+    for p in reversed(placed):
+        rest = rest[: p.end()] + f", {axis} = {value}" + rest[p.end() :]
+    st.notes.append(f"read '{m.group(0).strip(' ,')}' as the {axis} of each of the "
+                    f"{len(placed)}")  # fmt: skip
+    return rest
+
+
 def _shared_size(text: str, st: ReadState) -> str:
     """ "two walls 4 long, one on the left and one on the right, both 3 high": a size said once
     at the end for every structure named (it went to the last one only, silently)."""
@@ -801,8 +829,6 @@ def _stacking_on(
     of its own right after one stacked on the one before it goes on top again."""
     subject_of = {r.subject: r for r in relations}
     out = list(relations)
-    if len(drafts) != max((p.first + p.count for p in phrases), default=0):
-        return out  # structures merged (towers a beam joins): the phrases count the ones said
     for p in phrases:
         k = p.first
         if p.count != 1 or k in subject_of or k < 2 or not _ONE_MORE.match(p.text.strip()):
@@ -1002,12 +1028,21 @@ _RISE_OF_EACH = re.compile(
 )
 """'4 risers of 5 cm each': how much each step rises (read as the staircase 5 cm high: one
 part, silently), said as the rise `_RISE` reads."""
+_EACH_RISES = re.compile(
+    r"\b(?:each|every)\s+(?:step|stair|riser)\s+(?:(?:is|being)\s+)?(?:(?:rising|rises)\s+"
+    r"(\d+(?:\.\d+)?)\s*(mm|cm)\b|(\d+(?:\.\d+)?)\s*(mm|cm)\s+(?:high|tall|up|higher)\b)",
+    re.IGNORECASE,
+)
+"""'each step 5 cm high', 'every step rising 50 mm': the rise of each step (read as the
+staircase that high: one part)."""
 
 
 def _step_rise(text: str, st: ReadState) -> str:
     """ "a staircase, four steps, 50 mm rise each": every step rises one part — said, and
     kept only when the rise is the part's height (a step is one part high)."""
     text = _RISE_OF_EACH.sub(r"\1 steps, \2 \3 rise each", text)  # "4 risers of 5 cm each"
+    text = _EACH_RISES.sub(lambda e: f"{e.group(1) or e.group(3)} {e.group(2) or e.group(4)} rise "
+                           "each", text)  # fmt: skip
     m = _RISE.search(text)
     if m is None or not re.search(r"\b(?:stair|staircase|steps?)\b", text, re.IGNORECASE):
         return text
@@ -1229,6 +1264,37 @@ def _body_measures(text: str, st: ReadState) -> str:
         st.notes.append(f"ignored '{m.group(0).strip()}': not a size SDI can measure; say it in "
                         "cubes, cm or mm")  # fmt: skip
     return _BODY_MEASURE.sub(" ", text)
+
+
+_TABLE_SIZED = re.compile(
+    r"\b(?:(?:as|so)\s+(?P<as>wide|long)\s+as|(?:across\s+|along\s+|over\s+)?the\s+(?:whole|full|"
+    r"entire)\s+(?P<of>width|length)\s+of)\s+the\s+(?:work\s*)?(?:table|bench|workspace|work\s+area)\b"
+    r"|\b(?P<along>along|across|on)\s+the\s+(?:whole|full|entire)\s+(?:length\s+of\s+the\s+)?"
+    r"(?P<edge>front|back|rear|left|right)\s+(?:edge|side)\b",
+    re.IGNORECASE,
+)
+"""'a wall as wide as the table', 'a row along the whole front edge': as many parts as the
+table's side takes (a wall of the default size was built, silently)."""
+
+
+def _table_sized(text: str, st: ReadState) -> str:
+    """A structure said as long as a side of the table: that many parts, running along it."""
+    space, part = st.cell.workspace, st.cell.cube[0]
+
+    def sized(m: re.Match[str]) -> str:
+        word = (m.group("as") or m.group("of") or "").lower()
+        edge = (m.group("edge") or "").lower()
+        across = word in ("wide", "width") or edge in ("front", "back", "rear")
+        extent = (space.y_max - space.y_min) if across else (space.x_max - space.x_min)
+        n = int(extent / part + 1e-6)
+        run = "left to right" if across else "front to back"
+        st.notes.append(f"read '{m.group(0).strip()}' as {n} parts long, running {run} (the "
+                        f"table is {extent:g} m that way)")  # fmt: skip
+        if edge:
+            return f" {n} long {m.group('along')} the {edge} edge "
+        return f" {n} long running {run} "
+
+    return _TABLE_SIZED.sub(sized, text)
 
 
 def _opening(text: str, st: ReadState) -> str:

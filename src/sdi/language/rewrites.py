@@ -330,7 +330,7 @@ _REWRITES: list[tuple[re.Pattern[str], str, str]] = [
             r",?\s*\b(?:but\s+|and\s+)?(?:please\s+)?(?:no|without\s+(?:a|any))\s+(?:beams?|"
             r"lintels?|planks?|cubes?|blocks?|towers?|roof|top|bridge|anything|nothing)\s+"
             r"(?:across|on\s+top\s+of|on\s+top|onto|on|over|between|above)\s*(?:of\s+)?"
-            r"(?:them|it|both|the\s+\w+|each\s+\w+)?",
+            r"(?:them|it|both|the\s+\w+|each\s+\w+)?(?!\s*(?:'s|\w))",  # not "the top layer's"
             re.IGNORECASE,
         ),
         " ",
@@ -1341,7 +1341,8 @@ _REWRITES += [
         re.compile(
             r",?\s*\b(?:but\s+|and\s+)?(?:do\s+not|dont|never)\s+(?:put|place|add|build|lay|"
             r"set|stack)\s+(?:anything|a\s+\w+|any\s+\w+)\s+(?:across|on\s+top\s+of|on\s+top|"
-            r"onto|on|over|between|above)\s*(?:of\s+)?(?:them|it|both|the\s+\w+|each\s+\w+)?",
+            r"onto|on|over|between|above)\s*(?:of\s+)?(?:them|it|both|the\s+\w+|each\s+\w+)?"
+            r"(?!\s*(?:'s|\w))",
             re.IGNORECASE,
         ),
         " ",
@@ -1684,6 +1685,16 @@ _REWRITES += [
         ),
         " {0} the ",
         "",
+    ),
+    (  # "in the very centre of the plinth area": a part of the table with a name SDI does not
+        # know (a plinth was built there, silently)
+        re.compile(
+            r"\b(of|in|at|on|to|near|by|within)\s+the\s+(?:" + _SHAPE_ALT
+            + r")\s+(?:area|zone|region|spot|space)\b",
+            re.IGNORECASE,
+        ),
+        " {0} the table ",
+        "read '{0}' as on the work table: SDI knows no area of that name",
     ),
     (  # "put two more on top of that one": that one is it
         re.compile(
@@ -2085,8 +2096,10 @@ _REWRITES += [
         # that end of a staircase ("at its top end", "at the top of the stairs" are left as they
         # were: a tower there may stand on the top step)
         re.compile(
-            r"\b(?:at|by|beside|next\s+to|against|touching)\s+(?:its|the)\s+(?:(?:low|lower|lowest|"
-            r"bottom|high|higher|highest|upper|tall|taller)\s+end|foot|bottom(?=\s+of\s+(?:it|the\s+st)))\b"
+            r"\b(?:at|by|beside|next\s+to|against|touching|near(?:\s+to)?|close\s+to)\s+(?:its|the)"
+            r"\s+(?:(?:low|lower|lowest|bottom|high|higher|highest|upper|tall|taller)\s+end|foot"
+            r"|bottom(?=\s+of\s+(?:it|the\s+st))|(?:top|highest|upper|tallest|lowest|bottom)\s+"
+            r"(?:step|stair|tread))\b"
             r"(?:\s+of\s+(?:it|the\s+(?:staircase|stairs|steps|stair)))?"
             r"|\s*,\s*(?:at\s+)?(?:its\s+|the\s+)?(?:low|lower|bottom)\s+end\b",
             re.IGNORECASE,
@@ -2895,9 +2908,14 @@ def _sized_base(text: str, st: ReadState) -> str:
         noun = m.group("own") or ("block" if m.group("third") else "slab")
         art = m.group("art") or "a"
         st.notes.append(f"read '{m.group(0).strip()}' as {art} {m.group('size')} {noun}")
+        made.append(noun)
         return f"{art} {m.group('size')} {noun}"
 
-    return _SIZED_BASE.sub(sub, text)
+    made: list[str] = []
+    text = _SIZED_BASE.sub(sub, text)
+    if len(made) == 1:  # "a 3x3 base. Place a cube on the base": on that slab (on nothing)
+        text = re.sub(r"\b(the|that|this)\s+base\b(?!\s+of\b)", rf"\1 {made[0]}", text, flags=re.I)
+    return text
 
 
 _OWN_PARTS = re.compile(
@@ -4084,7 +4102,8 @@ def rewrite(text: str, st: ReadState) -> str:
     )
     text = _EVERY_SIDE.sub(lambda m: HANDLERS["{every_side}"](m, st, ""), text)
     tall = _TALL_NOUN.search(text)
-    if tall and not re.search(r"\d|\b(?:" + "|".join(lx.SIZE_WORDS) + r")\b", text, re.I):
+    if tall and not re.search(r"\d|\b(?:" + "|".join([*lx.SIZE_WORDS, *NUMBER_WORDS]) + r")\b",
+                              text, re.I):  # fmt: skip
         # "a skyscraper": the noun says tall when nothing else gives a size
         st.notes.append(f"read '{tall.group(0)}' as a tall tower")
         text = text[: tall.start()] + "tall " + text[tall.start() :]

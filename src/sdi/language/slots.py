@@ -48,9 +48,9 @@ _COUNT_ONLY = re.compile(
 
 
 _DROPS = re.compile(
-    r"^\W*(?:then\s+|and\s+|now\s+|actually\s+|oh\s+)?(?:" + DROP_VERBS
+    r"^\W*(?:then\s+|and\s+|now\s+|actually\s+|oh\s+|finally\s+|lastly\s+)?(?:" + DROP_VERBS
     + r"\s+the\s+(?:\w+est|last|first|second|middle|taller|higher|bigger|larger|shorter|lower|"
-    r"smaller)\b|undo\b|scratch\s+that\b|"
+    r"smaller|left|right|front|back)\b|undo\b|scratch\s+that\b|"
     r"(?:cancel|forget|scrap|"
     r"delete|take\s+back|get\s+rid\s+of)\s+(?:the\s+)?(?:last|latest|previous|that|it)\b)",
     re.IGNORECASE,

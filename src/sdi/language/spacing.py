@@ -277,6 +277,16 @@ def pitches(spec: Spec, st: ReadState) -> Spec:
     return spec.model_copy(update={"gap_m": clear(spec.gap_m), "relations": relations})
 
 
+_A_CUBE_BETWEEN = re.compile(
+    r",?\s*(?:and\s+)?(?:a|one|an?\s+extra|a\s+single|one\s+single)\s+(?:cube|block|brick)\s+between\b",
+    re.IGNORECASE,
+)
+_PLACED_BEFORE = re.compile(
+    r"\b(?:put|place|add|stand|set|stack|build|insert|lay|sit|position|drop)\s*$", re.IGNORECASE
+)
+"""'two towers, and a cube between them', 'put a cube between them': a cube, no gap."""
+
+
 def take_gap(text: str, st: ReadState) -> str:
     """`text` without the gap phrase between structures; the gap in `st.gap_m`."""
     if _INSIDE.search(text):
@@ -298,6 +308,15 @@ def take_gap(text: str, st: ReadState) -> str:
         )
     ):
         m = None  # "a row of three cubes between them", "take the two cubes off": no gap
+    elif (
+        m is not None
+        and _A_CUBE_BETWEEN.match(m.group(0))
+        and (
+            m.group(0).lstrip(" ,").lower().startswith("and")
+            or _PLACED_BEFORE.search(text[: m.start()]) is not None
+        )
+    ):
+        m = None  # "two towers, and a cube between them", "put a cube between them": a cube
     offset_only = (
         m is None
         and _OFFSET.search(text) is not None

@@ -36,6 +36,7 @@ class PhraseRelation:
     subject: int  # phrase index
     object: int | None  # phrase index; None: "on top" with no object (the phrase before)
     side: str | None = None
+    plural: bool = False  # "… with a wall behind them": the object's structures, all together
 
 
 @dataclass
