@@ -10852,3 +10852,142 @@ def test_the_base_said_again_and_a_beam_from_one_top_to_the_other():
     # "a beam resting across from one top to the other": a bridge (the towers were stacked)
     _built_as_said("Two towers of four, and a beam resting across from one top to the other",
                    ["bridge"], None)  # fmt: skip
+
+
+def test_a_group_said_in_an_order_keeps_it_with_a_structure_behind_them():
+    # "in a row from left to right, and a wall of five behind them": 1, 2, 3 from the left (the
+    # order was turned round, silently)
+    r = _built_as_said("Three towers, 1, 2 and 3 high, in a row from left to right, and a wall of "
+                       "five behind them.", ["tower", "tower", "tower", "wall"], None)  # fmt: skip
+    towers = {k: h for k, h in _columns(r).items() if k[0] < min(c[0] for c in _columns(r)) + 0.01}
+    assert [towers[k] for k in sorted(towers, key=lambda c: -c[1])] == [1, 2, 3]
+
+
+def test_shapes_named_in_their_parts_and_ends():
+    # "don't use any Technic beams": no beams, and never "built of cubes only" beside a beam
+    r = plan("Build an arch but don't use any Technic beams, just regular bricks")
+    assert r.status == "partial" and not any("built of cubes only" in n for n in r.notes)
+    # "in the gap of the U": reported, not stood beside it silently; "in its hollow" of a ring
+    r = plan("A U shape with arms of three and a single cube standing in the gap of the U.")
+    assert r.status == "partial" and any("inside a U's opening" in n for n in r.notes)
+    r = _built_as_said("a ring 5 by 5 with a tower in its hollow", ["enclosure", "tower"], None)
+    assert r.spec.relations[0].kind == "around"
+    # "Two bridges side by side, left and right": one on each side (both on the left)
+    r = _built_as_said("Two bridges side by side, left and right", ["bridge", "bridge"], None)
+    assert [s.region for s in r.spec.structures] == ["left", "right"]
+    # an L's corner is where its arms meet (another corner, which SDI chose)
+    r = _built_as_said("L shape 3x3 then tower 2 on the corner", ["l_shape", "tower"], None)
+    assert r.spec.relations[0].at == "bend"
+    # "on either end": at each end (one end, which SDI chose)
+    r = _built_as_said("Set a single cube on either end of a wall four long and two high",
+                       ["tower", "wall"], [2, 2, 3, 3])  # fmt: skip
+    # "another slab half as long": the other side kept (a 2-long slab of the default width)
+    r = _built_as_said("A slab three by four and next to it another slab half as long.",
+                       ["grid", "grid"], None)  # fmt: skip
+    assert (r.spec.structures[1].length, r.spec.structures[1].width) == (3, 2)
+
+
+def test_corrections_of_a_relation_a_bare_size_and_a_tower_made_taller():
+    # "in front of a wall of 5. No wait, behind it. And make the tower 4.": behind, 4 high (a
+    # second tower was built, the relation kept)
+    r = _built_as_said("Put a tower of 2 in front of a wall of 5. No wait, behind it. And make the "
+                       "tower 4.", ["tower", "wall"], None)  # fmt: skip
+    assert r.spec.structures[0].height == 4 and r.spec.relations[0].side == "back"
+    # "Hmm, 3 high." and "Actually high 6.": the size said again (reported unused)
+    r = _built_as_said("Wall 5 long, 2 high. Hmm, 3 high. And make it 7 long.", ["wall"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].height) == (7, 3)
+    _built_as_said("High 4, tower. Actually high 6. Left side.", ["tower"], [6])
+
+
+def test_a_palletisers_courses_rows_by_columns_and_stacks_in_a_pattern():
+    # "one course 8 long" (error: no structure), "Two courses, 6 blocks per course" (a tower of
+    # 2), "3 rows by 4 columns, 2 layers" of a pallet (a pallet and three rows)
+    r = _built_as_said("Lay one course 8 long along the back edge.", ["row"], [1] * 8)
+    assert r.spec.structures[0].region == "back"
+    _built_as_said("Two courses, 6 blocks per course, stacked straight.", ["wall"], [2] * 6)
+    r = _built_as_said("Pallet build: 3 rows by 4 columns, 2 layers, centre of the table.",
+                       ["block"], [2] * 12)  # fmt: skip
+    # "one cube clearance between stacks": the gap (a default tower for 'stacks')
+    r = _built_as_said("Put three stacks of five in a row down the left side, one cube clearance "
+                       "between stacks.", ["tower"] * 3, [5, 5, 5])  # fmt: skip
+    assert r.spec.gap_m == pytest.approx(0.05)
+    # "stacks of 2 in a 3 by 2 pattern": six of them (one was built)
+    _built_as_said("Build stacks of 2 in a 3 by 2 pattern with one-cube aisles.", ["tower"] * 6,
+                   [2] * 6)  # fmt: skip
+
+
+def test_lists_said_by_whose_heights_and_parts_said_by_their_role():
+    # "whose heights, respectively, are two, four and six cubes, each separated … by a single
+    # cube's width": 2, 4, 6 a cube apart (all 6 high, and a cube built from "cube's width")
+    _built_as_said("Construct three towers in a line from left to right, whose heights, "
+                   "respectively, are two, four and six cubes, each separated from the next by a "
+                   "single cube's width.", ["tower"] * 3, [2, 4, 6])  # fmt: skip
+    _built_as_said("three towers of 2, 4 and 6, each separated from the next by a single cube's "
+                   "width.", ["tower"] * 3, [2, 4, 6])  # fmt: skip
+    # "one have three cube, other have five cube, they stand near": 3 and 5, side by side (both
+    # 3; the second put at the front for "near")
+    r = _built_as_said("Make two tower, one have three cube, other have five cube, they stand "
+                       "near.", ["tower", "tower"], [3, 5])  # fmt: skip
+    assert all(s.region is None for s in r.spec.structures)
+    # "close together": never the front region
+    r = _built_as_said("two towers of 3 and 5, close together", ["tower", "tower"], [3, 5])
+    assert all(s.region is None for s in r.spec.structures)
+    # "a crossbeam on top": a beam (the posts stood apart)
+    _built_as_said("A torii-style gate: two posts of four and a crossbeam on top, at the back.",
+                   ["bridge"], None)  # fmt: skip
+    # "Layers: 4x4, then 3x3, …": the levels (read as 4 layers 4 cm from the edge: failure)
+    _built_as_said("Layers: 4x4, then 3x3, then 2x2, then 1. Keep them centred.",
+                   ["grid", "grid", "grid", "tower"], None)  # fmt: skip
+    # "with a single cube as the temple on top": the cube on top (a canopy for the temple)
+    _built_as_said("A Maya pyramid: base four by four, four levels, with a single cube as the "
+                   "temple on top.", ["pyramid"], None)  # fmt: skip
+
+
+def test_a_clock_face_a_checklists_letters_and_a_shape_said_bare_again():
+    # "the robot at six o'clock … at twelve o'clock": at the back (the centre, silently)
+    r = _built_as_said("Picture the table as a clock with the robot at six o'clock. Put a tower of "
+                       "three at twelve o'clock.", ["tower"], [3])  # fmt: skip
+    assert r.spec.structures[0].region == "back"
+    r = _built_as_said("Robot at 6 o'clock: a staircase of four that does not climb towards 12.",
+                       ["staircase"], None)  # fmt: skip
+    assert (r.spec.structures[0].axis, r.spec.structures[0].yaw_deg) == ("x", 180.0)
+    # a time of day stays one
+    assert plan("meet me at 5 o'clock, a tower of 3").spec.structures[0].region is None
+    # "Wall L 6 x ht 3, w 1", "RH of A", "lg ht 2": a checklist's sizes and sides
+    _built_as_said("Wall L 6 x ht 3, w 1.", ["wall"], [3] * 6)
+    r = _built_as_said("Twr A ht 5. Twr B ht 3, RH of A, 2 clr.", ["tower", "tower"], [3, 5])
+    cols = _columns(r)
+    assert cols[min(cols, key=lambda c: c[1])] == 3  # B on the right (-y)
+    _built_as_said("Tbl, lgs qty 4, lg ht 2, tp: beams.", ["canopy"], None)
+    # "on slab" said bare after a slab: on it (a second slab, silently)
+    r = _built_as_said("Slab 3x3, qty 1. Twr ht 2 on slab, ctr.", ["grid", "tower"], None)
+    assert r.spec.relations[0].kind == "on_top_of"
+    # "'Three, the tower, make it!' He means a tower of three.": one tower (two, silently)
+    _built_as_said("'Three, the tower, make it!' He means a tower of three.", ["tower"], [3])
+    # "a little tower on top of the middle" of a bridge: on it (beside it, silently)
+    r = _built_as_said("I want a bridge with pillars 2 high and then a little tower on top of the "
+                       "middle!!", ["bridge", "tower"], None)  # fmt: skip
+    assert r.spec.relations[0].kind == "on_top_of"
+    # "none of them taller than 4": a limit (read as nothing: towers of 3, silently)
+    _built_as_said("three towers, none of them taller than 4", ["tower"] * 3, [4, 4, 4])
+    # "My son says no bridges and no towers today": left out (a bridge was built)
+    _built_as_said("My son says no bridges and no towers today, he wants a plain flat slab, 4 by "
+                   "4", ["grid"], [1] * 16)  # fmt: skip
+    # "mid table": the centre (a table was built)
+    r = _built_as_said("bridge, posts 3 high + beam, mid table", ["bridge"], None)
+    assert r.spec.structures[0].region == "centre"
+
+
+def test_a_question_then_the_request_and_later_steps_said_with_their_particle_last():
+    # "Is there room for two walls side by side? I need two walls …": two walls (a room was
+    # built, and the asked walls beside the described ones: failure)
+    _built_as_said("Is there room for two walls side by side? I need two walls, five long and "
+                   "two high, parallel, with a gap of two.", ["wall", "wall"], [2] * 10)  # fmt: skip
+    # "How many cubes do you have? …": a question of stock (a row of 8 beside the wall)
+    _built_as_said("How many cubes do you have? I want a wall eleven long.", ["wall"], [2] * 11)
+    # "take the first one away", "move the tower to the back": applied (refused)
+    r = _built_as_said("Build a tower of three, then a tower of five, and then take the first one "
+                       "away.", ["tower"], [5])  # fmt: skip
+    r = _built_as_said("Put a slab of 2 by 4 on the right, and then a tower of three on the left, "
+                       "and then move the tower to the back.", ["grid", "tower"], None)  # fmt: skip
+    assert r.spec.structures[1].region.startswith("back")

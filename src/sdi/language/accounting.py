@@ -167,10 +167,10 @@ def _in_heading(tok: Token) -> bool:
         colon is not None
         and 0 < colon <= 4
         and tok.i < colon
-        and tok.pos_ in ("NOUN", "PROPN")
+        and tok.pos_ in ("NOUN", "PROPN", "ADJ")  # "Stepping stones: …"
         and not any(t.like_num for t in doc[:colon])
-        and any(t.lower_ in lx.SHAPE_WORDS for t in doc[colon + 1 :])
-    )
+        and any(t.lower_ in lx.SHAPE_WORDS or t.lower_ in lx.PART_WORDS for t in doc[colon + 1 :])
+    )  # ("Stepping stones: four single cubes in a line": the cubes are what it names)
 
 
 def _also(tok: Token) -> bool:
@@ -225,7 +225,12 @@ def account(word: str, tok: Token | None, st: ReadState) -> None:
     if tok is not None and word in words.NEGATIONS and not _attached(tok):
         st.ignored.append(word)
         return
-    if tok is not None and not known and word.isalpha() and _in_heading(tok):
+    if (
+        tok is not None
+        and (not known or (word in lx.PART_WORDS and word not in lx.SHAPE_WORDS))
+        and word.isalpha()
+        and _in_heading(tok)
+    ):  # ("Stepping stones: four single cubes …": the stones are the heading's)
         st.ignored.append(word)
         st.notes.append(f"read '{word}' as part of the heading that names what follows it")
         return

@@ -324,6 +324,9 @@ def relate(
             # subject beside the whole of it
             o_idx = group[0]
             along = "back" if st.line == "x" else "left"
+            # "… from left to right": each after the first on that side of it (the order was
+            # turned round, silently)
+            along = _LISTED_SIDE.get(st.listing or "", along)
             relations.extend(
                 Relation(kind="next_to", subject=m, object=group[0], side=along, whole=True)
                 for m in group[1:]
@@ -374,6 +377,10 @@ def relate(
                 p.structure = index.get(p.structure)
     return relations, structures
 
+
+_LISTED_SIDE = {"left to right": "right", "right to left": "left", "front to back": "back",
+                "back to front": "front"}  # fmt: skip
+"""The side of the first structure the others of a group said in that order stand on."""
 
 _OWN_TOPS = frozenset({"top", "roof", "beam", "beams", "lintel", "deck", "tabletop", "slab",
                        "plate", "board", "plank", "walkway"})

@@ -23,7 +23,8 @@ MARKER = re.compile(
     r"actually|sorry(?:\s+again)?|oops|wait|(?:revised|changed|updated|amended|corrected)\s+to)\b"
     r"\s*[,:;—–-]?\s*|"
     # "Tower of 5, no 6, ok 4": the number settled on
-    r"\s*[,.;]+\s*(?:ok(?:ay)?|fine|alright|right)\s*,?\s*(?=(?:\d+|one|two|three|four|five|six|seven|"
+    r"\s*[,.;]+\s*(?:ok(?:ay)?|fine|alright|right|hmm+|um+|erm)\s*,?\s*(?=(?:\d+|one|two|three|four|five|"
+    r"six|seven|"
     r"eight|nine|ten)\b(?!\s*(?:more|less|fewer|extra|others?)\b))|"
     r"\s*[,.;!—–-]*\s*\b(?:edit|revision|update|amendment|change)\s*:\s*|"  # a ticket's later line
     # on the radio: "Tower, height six. Negative, height two."
@@ -381,7 +382,36 @@ _FINAL_AGAIN = re.compile(
 """'no wait 6, final answer 6': the number said last, confirmed."""
 
 
+_RELATION = (
+    r"(?:behind|in\s+front\s+of|to\s+the\s+(?:left|right)\s+of|(?:left|right)\s+of|next\s+to|beside|"
+    r"on\s+top\s+of|under(?:neath)?|below)"
+)
+_RELATION_AGAIN = re.compile(
+    r"\s*[,.;:!?…—–-]+\s*(?:no\s*,?\s*wait|wait\s*,?\s*no|no\s*,?\s*sorry|sorry|actually|no|wait|"
+    r"i\s+meant?|make\s+that|or\s+rather)\s*[,:;—–-]?\s*(?:put\s+it\s+|it\s+goes\s+)?"
+    rf"(?P<new>{_RELATION})\s+(?:it|them|that|the\s+\w+)\s*(?=[.;!?]|$|,\s*(?:and|then)\b)",
+    re.IGNORECASE,
+)
+"""'a tower of 2 in front of a wall of 5. No wait, behind it.': the relation said again."""
+
+
+def _relation_again(text: str, notes: list[str]) -> str:
+    """The relation said before a correction that names another one, replaced by it (the
+    correction was read as nothing, and a second tower built, silently)."""
+    m = _RELATION_AGAIN.search(text)
+    if m is None:
+        return text
+    before = text[: m.start()]
+    olds = list(re.finditer(rf"\b{_RELATION}\b", before, re.IGNORECASE))
+    if not olds:
+        return text
+    old = olds[-1]
+    notes.append(f"corrected by the command itself: '{old.group(0)}' → '{m.group('new')}'")
+    return before[: old.start()] + m.group("new") + before[old.end() :] + text[m.end() :]
+
+
 def _corrected(text: str, notes: list[str], material: list[str] | None = None) -> str:
+    text = _relation_again(text, notes)
     text = _FINAL_AGAIN.sub(r"\1", text)
     text = _BETTER.sub(_better, text)
     text = _INSTEAD.sub(lambda m: _instead(m, notes), text)

@@ -174,6 +174,13 @@ def _walls_in_square(m: re.Match[str]) -> str:
     return f"a ring{side}" + (f", {high.group(1)} high" if high else "")
 
 
+def _l_before(text: str) -> bool:
+    """An L is the structure named last before the one said now ("an L shape 3x3 then a tower of
+    2 on the corner")."""
+    said = list(re.finditer(r"\bl[\s-]?shaped?\b|\ban?\s+l\b|\bl[\s-]?form\b", text, re.IGNORECASE))
+    return bool(said) and len(families_said(text[said[-1].end() :])) <= 1
+
+
 EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     # "right in the very centre": the centre ("very" kept "right" from reading as an intensifier)
     (re.compile(r"\bthe\s+very\s+(?=(?:centre|center|middle|front|back|top|bottom|end|edge|corner|"
@@ -470,6 +477,119 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
                 r"\s+the\s+(?:other|second)(?:\s+(?:one|top|tower|post|pillar|column|stack|leg))?\b",
                 re.I),
      " across them "),
+    # "don't use any Technic beams": no beams (the word before the beams hid the refusal)
+    (re.compile(r"\b(?:do\s+not|don'?t|never|please\s+don'?t)\s+use\s+(?:any\s+)?(?:[a-z]+\s+)?(beams?|planks?|"
+                r"lintels?)\b", re.I), r"no \1"),
+    # "a tower of 2 … And make the tower 4.": 4 high (a second tower was built)
+    (re.compile(r"\b((?:make|set|change|turn|bring)\s+(?:the|that|this)\s+(?:tower|column|stack|pillar|post|"
+                r"mast|obelisk)\s+(?:to\s+|into\s+)?)(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
+                r"(?!\s*(?:high|tall|cubes?|blocks?|long|wide|x|by|levels?|layers?|steps?|cm|mm|m|more|less|"
+                r"fewer|times|taller|shorter|higher|lower|bigger|smaller|longer|wider|narrower|up|down)\b)",
+                re.I), r"\1\2 high"),
+    # "Actually high 6", "Hmm, 3 high": a size said again corrects the one before
+    (re.compile(r"\b(actually|no|sorry|wait|rather|hmm+)\s*,?\s*(high|tall|long|wide|deep)\s+(\d+|one|two|three|"
+                r"four|five|six|seven|eight|nine|ten)\b", re.I), r"\1, \3 \2"),
+    # a palletiser's words: "one course 8 long" is a row (error: no structure); "Two courses, 6
+    # blocks per course" a wall 6 long, 2 high (a tower of 2); "Pallet: 3 rows by 4 columns, 2
+    # layers" a 3 by 4 block 2 high (three rows and a pallet)
+    (re.compile(r"\b(a|one|single|1)\s+course\b(?=\s+(?:of\s+)?" + _NUM + r"\b|\s+\w+\s+long\b)",
+                re.I), r"\1 row"),
+    (re.compile(r"\b(" + _NUM + r")\s+(?:courses|layers|levels|tiers)\s*,?\s*(" + _NUM
+                + r")\s+(?:blocks?|bricks?|cubes?)\s+(?:per|in\s+each|each)\s+(?:course|layer|"
+                r"level|tier)\b", re.I),
+     r"a wall \2 long and \1 high"),
+    (re.compile(r"\b(" + _NUM + r")\s+rows?\s+(?:by|x)\s+(" + _NUM + r")\s+columns?\s*,?\s*(" + _NUM
+                + r")\s+(?:layers|levels|courses|tiers)\b", re.I),
+     lambda m: (f"{m.group(1)} by {m.group(2)}, {m.group(3)} layers"
+                if re.search(r"\b(?:pallet|slab|grid|block|base|platform|floor|pad|array)\b",
+                             m.string[: m.start()], re.I)
+                else f"a block {m.group(1)} by {m.group(2)}, {m.group(3)} high")),
+    # "stacks of 2 in a 3 by 2 pattern": six of them (one stack was built)
+    (re.compile(r"(?<![\w-])(?<!\d\s)((?:stacks|towers|columns|pillars|piles|posts)\s+of\s+" + _NUM
+                + r"\s+(?:cubes?\s+)?in\s+an?\s+)(\d)\s*(?:x|by)\s*(\d)(?=\s+(?:grid|array|pattern|"
+                r"matrix|layout|formation|arrangement)\b)", re.I),
+     lambda m: (m.group(0)
+                if re.search(r"\b(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|twelve|"
+                             r"several|some|a\s+few)\s+(?:\w+\s+)?$", m.string[: m.start()], re.I)
+                else f"{int(m.group(2)) * int(m.group(3))} {m.group(1)}{m.group(2)} by "
+                f"{m.group(3)}")),
+    # "a crossbeam on top", "a cross-beam", "a crosspiece": a beam (ignored: the posts stood
+    # apart)
+    (re.compile(r"\bcross[\s-]?(beam|piece|member)(s?)\b", re.I), r"beam\2"),
+    # "Layers: 4x4, then 3x3, …": the heading names what the sizes are (read as 4 layers)
+    (re.compile(r"\b(?:layers|levels|tiers|courses)\s*:\s*(?=\d+\s*(?:x|by)\s*\d+)", re.I), ""),
+    # "with a single cube as the temple on top": the cube; its role names no structure (a
+    # canopy was built for the temple)
+    (re.compile(r"\b(cubes?|blocks?|bricks?|towers?(?:\s+of\s+\d+)?|rows?|slabs?)\s+as\s+(?:the|a|an|its)\s+"
+                r"(?!(?:base|top|bottom|first|second|third|last|middle|centre|center|floor|roof|deck)\b)"
+                r"[a-z]+\b(?=\s*(?:on|at|in|atop|beside|next|behind|,|\.|;|$))", re.I), r"\1"),
+    # "three towers …, whose heights, respectively, are two, four and six cubes": of two, four
+    # and six (all 6 high, silently)
+    (re.compile(r"\s*,?\s*\b(?:whose|their)\s+heights?\s*,?\s*(?:respectively\s*,?\s*)?(?:are|being|of|"
+                r"=|:)\s*(?:respectively\s*,?\s*)?(?=" + _NUM + r"\s*,)", re.I), " of "),
+    # "separated from the next by a single cube's width": one cube (a cube was built, silently)
+    (re.compile(r"\b(?:a|one)\s+(?:single\s+)?(cube|block|brick|part)'?s\s+(?:width|length|breadth)\b",
+                re.I), r"one \1"),
+    # "Make two tower, one have three cube, other have five cube": the other of five (3 and 3)
+    (re.compile(r"(?<=,)\s*other\s+(?=(?:of|has|have|having|with|is|be)\b)", re.I), " the other "),
+    (re.compile(r"\b(one|the\s+other|the\s+first|the\s+second)\s+(?:has|have|having|with|is\s+of)\s+("
+                + _NUM + r")\s+(?:cubes?|blocks?|bricks?)\b", re.I), r"\1 of \2 cubes"),
+    # "close together", "near each other", "they stand near": side by side (read as the front,
+    # near the robot, silently)
+    (re.compile(r"\b(?:(?:stand(?:ing)?|placed|set|put|built)\s+)?(?:close|near)\s+(?:together|to\s+each\s+other|"
+                r"to\s+one\s+another|each\s+other|one\s+another)\b", re.I), "side by side"),
+    (re.compile(r"\b(?:they|both|the\s+two)\s+(?:stand|are|go|should\s+be|standing)\s+(?:near|close)\b"
+                r"(?=\s*(?:[,.;!]|$))", re.I), "side by side"),
+    # "bridge, posts 3 high + beam, mid table": in the centre (a table was built)
+    (re.compile(r"\b(?:at\s+|in\s+)?mid[\s-]+(?:table|bench|workspace|cell)\b", re.I),
+     "in the centre"),
+    # a checklist's "RH of A", "LH side": right-hand and left-hand (B stood on the left of A,
+    # 'RH' reported unused, silently)
+    (re.compile(r"\b(RH|LH)\s+(?:of|from)\b"),
+     lambda m: f"to the {'right' if m.group(1) == 'RH' else 'left'} of"),
+    (re.compile(r"\b(RH|LH)(?:\s+(side|end|corner))?\b"),
+     lambda m: ("right" if m.group(1) == "RH" else "left")
+     + (f" {m.group(2)}" if m.group(2) else "")),
+    # "Twr ht 2 on slab, ctr": on the slab named before (a second slab was built, silently)
+    (re.compile(r"\b(on|onto|atop|beside|behind|next\s+to|in\s+front\s+of|left\s+of|right\s+of)\s+("
+                + _FAMILY_SAID
+                + r")\b(?!\s*(?:of|\d|one|two|three|four|five|six|seven|eight|nine|ten)\b)",
+                re.I),
+     lambda m: (f"{m.group(1)} the {m.group(2)}"
+                if lx.SHAPE_WORDS.get(m.group(2).lower()) in families_said(m.string[: m.start()])
+                and not m.group(2).lower().endswith("s")
+                else m.group(0))),
+    # "'Three, the tower, make it!' He means a tower of three.": what is meant, said again (both
+    # were built)
+    (re.compile(r"^.*?[\"'“‘][^\"'”’]+[\"'”’][\s.!?,]*(?:he|she|they|my\s+\w+|the\s+\w+)\s+(?:means?|meant)\s+",
+                re.I | re.S), ""),
+    # "a little tower on top of the middle": on top of it, centred (beside the bridge, silently)
+    (re.compile(r"\bon\s+top\s+of\s+the\s+(?:very\s+)?(?:middle|centre|center)\b"
+                r"(?=\s*(?:[,.;!?]|$|and\b|then\b|please\b))", re.I),
+     lambda m: ("on top of it" if families_said(m.string[: m.start()]) else m.group(0))),
+    # "none of them taller than 2": no taller than 2, a limit (a tower of 3, silently)
+    (re.compile(r"\bnone\s+(?:of\s+them\s+)?(?:is\s+|are\s+|being\s+)?(taller|higher|longer|wider|bigger)\s+than\b",
+                re.I), r"no \1 than"),
+    # "none on the right side": not there (a tower was built on the right, silently)
+    (re.compile(r"\bnone\s+(?:of\s+them\s+)?((?:on|at|in)\s+the\s+(?:left|right|front|back)"
+                r"(?:\s+(?:side|half|edge))?)\b", re.I), r"not \1"),
+    # "Is there room for two walls side by side?": a question of space (a room was built); "How
+    # many cubes do you have?": of stock (a row of 8)
+    (re.compile(r"\b(?:is\s+there|there'?s|have\s+you\s+got|do\s+you\s+have|got)\s+(?:enough\s+)?(?:room|space)\s+"
+                r"(?:for|to\s+(?:build|fit|put|place))\b", re.I), "can you fit"),
+    (re.compile(r"\bhow\s+many\s+(?:cubes|blocks|bricks|parts|pieces)\s+(?:do|have|are|can|did)\b[^.?!]*\?\s*",
+                re.I), " "),
+    # "take the first one away", "knock the end column off": the verb's particle said last (the
+    # removal was refused)
+    (re.compile(r"\b(take|knock|pull|lift)\s+((?:the|one|an?)\s+(?:(?:first|second|third|last|middle|left|right|"
+                r"front|back|top|end|\w+est)\s+)?(?:one|tower|stack|column|pillar|row|wall|cube|block|layer|"
+                r"level))\s+(away|off|out)\b", re.I), r"\1 \3 \2"),
+    # "… then a tower of three on the left, and then move the tower to the back": it, the one
+    # named last (the move was refused)
+    (re.compile(r"\b(move|shift|slide|put)\s+the\s+(" + _FAMILY_SAID
+                + r")\s+(?=(?:to|over\s+to|into)\s+the\b)", re.I),
+     lambda m: (f"{m.group(1)} it " if families_said(m.string[: m.start()])[-1:]
+                == families_said(m.group(2)) else m.group(0))),
     # "go up in direction of robot": towards it (the staircase climbed the default way)
     (re.compile(r"\bin\s+(?:the\s+)?direction\s+(?:of|to|towards?)\s+(?:the\s+)?(robot|front|back|rear|left|"
                 r"right)\b", re.I), r"towards the \1"),
@@ -563,7 +683,8 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     # structure before (stood apart from it, silently, or in a corner of the table)
     (re.compile(r"\bon\s+(?:its|the)\s+corner\b(?!\s*(?:of|closest|nearest|next|by|cubes?|blocks?|"
                 r"parts?|ones?|pieces?)\b)", re.I),
-     lambda m: ("on one corner of it" if m.group(0).lower().split()[1] == "its"
+     lambda m: (m.group(0) if _l_before(m.string[: m.start()])  # the L's own corner: its bend
+                else "on one corner of it" if m.group(0).lower().split()[1] == "its"
                 or len(families_said(m.string[: m.start()])) >= 2 else m.group(0))),
     # "two towers of 2. make the towers 4 high", "… now make the posts four high": all of them
     # (a third tower was built, or one of them changed)

@@ -66,8 +66,8 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
         return m.group(0)  # "a courtyard 5 cubes on each side": a size
     said = re.sub(r"\s+of\s+an?$", "", _said(m)[0])
     at = "corners" if "corner" in said.lower() else "ends" if " end" in said.lower() else None
-    if at and re.search(r"\b(?:one|either)\b", said, re.IGNORECASE):
-        at = at[:-1]  # "on one corner": a single copy
+    if at and re.search(r"\bone\b", said, re.IGNORECASE):
+        at = at[:-1]  # "on one corner": a single copy ("on either end": each end, as people say)
     all_four = re.search(r"\b(?:four|4|all)\b", said, re.IGNORECASE)
     flanking = at is None and (
         re.search(r"\b(?:either|both|each)\b", said, re.IGNORECASE) or all_four
@@ -116,13 +116,17 @@ def _bend(m: re.Match[str], st: ReadState, note: str) -> str:
     table's back left corner)."""
     sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1]
     withs = list(re.finditer(r"\bwith\b", sentence, re.IGNORECASE))
-    if not withs:
+    before = m.string[: m.start()]
+    l_said = list(_L_NAMED.finditer(before))  # "an L shape 3x3 then a tower of 2 on the corner"
+    l_last = bool(l_said) and len(families_said(before[l_said[-1].end() :])) <= 1
+    if not withs and not l_last:
         return m.group(0)
     named = [
-        lx.SHAPE_WORDS[w] for w in re.findall(r"[a-z]+", sentence[: withs[-1].start()].lower())
+        lx.SHAPE_WORDS[w]
+        for w in re.findall(r"[a-z]+", sentence[: withs[-1].start() if withs else None].lower())
         if w in lx.SHAPE_WORDS
-    ]  # fmt: skip
-    if _L_NAMED.search(sentence):
+    ]
+    if _L_NAMED.search(sentence) or l_last:
         st.anchors.append(("on_top_of", "bend"))
         st.notes.append(f"read '{_said(m)[0]}' as on top of the L's corner, where its arms meet")
     elif named and named[-1] in ("grid", "block", "pack"):
@@ -783,6 +787,17 @@ def _stair_end(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" next to {of.group(1) if of else 'it'}{touching}"
 
 
+def _in_the_u(m: re.Match[str], st: ReadState, note: str) -> str:
+    """ "a single cube standing in the gap of the U": SDI has no place inside a U's opening (the
+    cube stood beside it, silently); "a ring with a tower in its hollow": inside it; with
+    neither named, the words are left as they were."""
+    if not re.search(r"\bu\b(?:[\s-]*shaped?)?|\bhorseshoe\b", m.string, re.IGNORECASE):
+        ring = re.search(r"\b(?:ring|enclosure|fence|pen|frame|corral|castle)\b", m.string, re.I)
+        return " inside it " if ring else m.group(0)  # "a ring with a tower in its hollow"
+    return _cannot(m, st, "SDI cannot stand a structure inside a U's opening; it stands "
+                          "beside the U")  # fmt: skip
+
+
 def _beam_on_beam(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "then add a second beam on top of the first": a bridge carries one beam a span."""
     return _cannot(m, st, "a bridge or arch carries one beam on each span; SDI lays no beam on "
@@ -894,6 +909,15 @@ def _compared(m: re.Match[str], st: ReadState, note: str) -> str:
     if groups[1] in _HEIGHT_WORDS:
         return f" {int(value)} high "
     if groups[1] in ("long", "longer", "wide", "wider"):  # "the other twice as long": 6 long
+        dims = list(re.finditer(rf"\b({number})\s*(?:by|x)\s*({number})\b", m.string[: m.start()],
+                                re.I))  # fmt: skip
+        copy = re.search(r"\b(?:another|a\s+second|the\s+other|one\s+more)\s+\w+\s*,?\s*$",
+                         m.string[: m.start()], re.I)  # fmt: skip
+        if dims and copy:
+            # "a slab three by four and another slab half as long": 3 by 2 (the 3 was lost)
+            a, b = (int(v) for v in words_to_numbers([dims[-1].group(1), dims[-1].group(2)]))
+            if base == b:
+                return f" {a} by {int(value)} "
         return f" {int(value)} {groups[1].removesuffix('er')} "
     return f" of {int(value)} "
 
@@ -1379,6 +1403,7 @@ HANDLERS: dict[str, Handler] = {
     "{unsupported}": _unsupported,
     "{impossible}": _impossible,
     "{beam_on_beam}": _beam_on_beam,
+    "{in_the_u}": _in_the_u,
     "{stair_end}": _stair_end,
     "{corner_named}": _corner_named,
     "{at_most}": _at_most,

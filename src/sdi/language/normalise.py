@@ -1458,7 +1458,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # arch was its height); "… PER ENG": who asked for it
     (re.compile(r"\b(" + _FAMILY_SAID + r")\s*,?\s*(?:qty|quantity)\s*[:=]?\s*(\d+)\b",
                 re.I),
-     lambda m: f"{m.group(2)} {m.group(1)}" + ("" if m.group(2) == "1" else "s")),
+     lambda m: f"{m.group(2)} {m.group(1)}"
+     + ("" if m.group(2) == "1" or m.group(1).lower().endswith("s") else "s")),
     (re.compile(r"\b(?:qty|quantity)\s*(?:of\s+)?(cubes|blocks|parts)\s*[:=]?\s*(\d+)\b", re.I),
      r"\2 \1"),
     (re.compile(r"\s*\bper\s+(?:the\s+)?(?:eng|engineering|engineer|customer|client|spec|drawing|"
@@ -3030,7 +3031,8 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"pieces?|spacers?|stops?|pins?|pegs?|cones?|targets?|blocks?)\b", re.I),
      r"\1 1-cube tower"),
     # "two columns of three, left and right": one on the left, one on the right
-    (re.compile(r"(\b(?:two|2|both)\s+(?:\w+\s+){0,5}?(?:towers|columns|stacks|pillars|walls|rows)\b[^.;]*?)"
+    (re.compile(r"(\b(?:two|2|both)\s+(?:\w+\s+){0,5}?(?:towers|columns|stacks|pillars|walls|rows|"
+                r"bridges|arches|pyramids|staircases|slabs|blocks|rings|tables)\b[^.;]*?)"
                 r",\s*(left|front)\s+and\s+(right|back)\b(?!\s+(?:of|side))", re.I),
      lambda m: m.group(1) + ("" if _APART_SAID.search(m.string)  # side by side, that far apart
                              else f", one on the {m.group(2)} and one on the {m.group(3)}")),
@@ -3286,6 +3288,7 @@ _SMACK = re.compile(
 # Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
 _TICKET_DIM = {"len": "long", "lgth": "long", "ht": "high", "hgt": "high", "hght": "high",
                "wid": "wide", "wdth": "wide", "dp": "deep", "dpth": "deep"}  # fmt: skip
+_ONE_LETTER_DIM = {"l": "long", "w": "wide", "h": "high", "d": "deep"}
 _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     # "two towers, one twice as tall as the other, the short one three cubes": that one 3
     (re.compile(r"\b(two\s+(?:towers|stacks|columns|pillars))\s*,?\s*(?:with\s+)?one\s+(?:of\s+them\s+)?"
@@ -3325,6 +3328,14 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(?:pos|posn|loc)\.?\s*[:=]?\s*((?:front|back|rear|left|right|centre|center|middle)"
                 r"(?:[\s-]+(?:left|right|corner))?)\b", re.I), r"at the \1"),
     (re.compile(r"\b(?:qty|qnty)\.?\s*[:=]?\s*(\d+)\s+(?=[a-z])", re.I), r"\1 "),
+    # a ticket's one-letter sizes after a structure named: "Wall L 6 x ht 3, w 1" (the L and w
+    # reported unused); "lg ht 2" of legs: their height
+    (re.compile(r"(?<![\w'-])(L|W|H|D|w|h|d)\s*[:=]?\s*(\d+(?:\.\d+)?)\b(\s*x(?=\s*\d+\s+(?:high|tall|"
+                r"long|wide|deep)\b))?(?(3)|(?!\s*(?:x\s*\d|by|-?shaped?|\d)))"),
+     lambda m: m.group(0)
+     if not [f for f in families_said(m.string[: m.start()]) if f != "l_shape"]
+     else f"{m.group(2)} {_ONE_LETTER_DIM[m.group(1).lower()]}" + (" and" if m.group(3) else "")),
+    (re.compile(r"\b(?:lg|leg)\s+(?=\d+\s+high\b)", re.I), "legs "),
     # "wall A …, wall B same size": a label, not a size or a letter shape
     # (kept where a later word points at one by its label: "on A's right")
     (re.compile(r"\b(wall|tower|row|block|slab|stack|column|pyramid)\s+[A-D](?=\s*(?:[,:]|\d|$|same\b|"
@@ -4304,6 +4315,57 @@ def _compass(text: str, notes: list[str]) -> str:
     return text
 
 
+_HOURS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+          "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}  # fmt: skip
+_HOUR = r"(\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)"
+_ROBOT_AT = re.compile(
+    r"[^.;:]*?\brobot\s+(?:is\s+|stands\s+|sits\s+)?at\s+" + _HOUR
+    + r"\s*o['’]?\s*clock\b\s*[.;:,]?\s*",
+    re.IGNORECASE,
+)
+_AT_HOUR = re.compile(
+    r"\b(?:at|to(?:wards?)?|on)\s+(?:the\s+)?" + _HOUR + r"(?:\s*o['’]?\s*clock|\s+position|"
+    r"(?P<bare>(?=\s*(?:[.;,!]|$))))",
+    re.IGNORECASE,
+)
+_HOUR_PLACE = ("back", "back right", "back right", "right", "front right", "front right", "front",
+               "front left", "front left", "left", "back left", "back left")  # fmt: skip
+"""The place of each hour (12, 1, …, 11) with the robot at six o'clock: twelve is the far side."""
+
+
+def _clock(text: str, notes: list[str]) -> str:
+    """ "Picture the table as a clock with the robot at six o'clock. Put a tower of three at
+    twelve o'clock": at the back (the hour was dropped, the tower put in the centre). The robot
+    is at six unless the command says another hour."""
+    hours = list(_AT_HOUR.finditer(text))
+    if not hours:
+        return text
+    said = _ROBOT_AT.search(text)
+    robot = 6
+    if said:
+        robot = _HOURS.get(said.group(1).lower()) or int(said.group(1))
+        text = text[: said.start()] + " " + text[said.end() :]
+        hours = list(_AT_HOUR.finditer(text))
+    framed = said is not None or re.search(
+        r"(?<!o')(?<!o’)(?<!o\s)(?<!\bo)\bclock\b|o['’]?\s*clock\s+position", text, re.I
+    )
+    out, end = [], 0
+    for m in hours:
+        near = re.findall(r"[a-z]+", text[: m.start()].lower())[-6:]
+        if not framed and (m.group("bare") is not None or not families_said(" ".join(near))):
+            continue  # "meet me at 5 o'clock": a time of day; "towards 12": a clock said first
+        hour = _HOURS.get(m.group(1).lower()) or int(m.group(1))
+        if not 1 <= hour <= 12 or not 1 <= robot <= 12:
+            return text
+        place = _HOUR_PLACE[(hour - robot + 6) % 12]
+        notes.append(f"read '{m.group(0).strip()}' as the {place} (the robot at {robot} o'clock)")
+        toward = m.group(0).lower().startswith("to")  # "climb towards 12": that way
+        at = f" towards the {place} " if toward else f" at the {place} "
+        out.append(text[end : m.start()] + at)
+        end = m.end()
+    return "".join(out) + text[end:]
+
+
 _AS_IT_IS = re.compile(
     r"\b(twice|double|three\s+times|thrice|half|just|exactly)\s+as\s+(long|wide)\s+as\s+it\s+is\s+"
     r"(?:high|tall)\b",
@@ -4568,6 +4630,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _items_named(text)  # "… END OF ITEM 1": the structure item 1 is
     text = _named_heading(text, notes)  # "Goods shed: a 3 by 4 enclosure": the enclosure
     text = _compass(text, notes)  # "North = back. A tower in the north-west corner."
+    text = _clock(text, notes)  # "the robot at six o'clock … a tower at twelve o'clock"
     text = _swapped(text, notes)  # "a tower left of a wall. Swap sides.": right of it
     text = _answered(text, notes)  # "Should the wall be 2 high? Yes, a wall 6 long …"
     text = _named_twice(text, notes)  # "a plus sign — a cross — 1 in the middle …"

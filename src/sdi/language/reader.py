@@ -322,7 +322,9 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
         for s in specs:
             if s.shape in ("bridge", "arch", "canopy") or s.part == "beam":
                 st.material.append("no beams")
-                st.notes.append(f"ignored 'no beams': a {s.shape} here is built with beams")
+                st.notes = [n for n in st.notes if not n.endswith("': built of cubes only")]
+                a = "an" if s.shape[0] in "aeiou" else "a"
+                st.notes.append(f"ignored 'no beams': {a} {s.shape} here is built with beams")
     if len(specs) > 50:
         raise SpecError(
             f"{len(specs)} structures is more than 50", understood=understood_summary(doc)
@@ -409,9 +411,13 @@ def _asked_then_described(
     with sizes in a later sentence, are the ones described (built once)."""
     asked = [
         q for q in phrases
-        if q.count and q.spec is not None and q.tokens and not _SIZED.search(q.text)
+        if q.count and q.spec is not None and q.tokens
         and doc[q.tokens[0]].sent.text.rstrip().endswith("?")
-    ]  # fmt: skip
+    ]  # fmt: skip  # ("Could a ring fit around a 2x2 block? Try a ring six by six around a 2x2
+    # block": sized, and said again after it)
+    if asked:  # the first question only: a later one may be the description
+        first = doc[asked[0].tokens[0]].sent.start
+        asked = [q for q in asked if doc[q.tokens[0]].sent.start == first]
     if not asked or _ANOTHER.search(st.command):
         return structures
     first_sent = doc[asked[0].tokens[0]].sent.start

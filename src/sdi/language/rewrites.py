@@ -954,6 +954,17 @@ _REWRITES += [
         " 2-D ",
         "read '{0}' as a flat (2-D) one",
     ),
+    # "my son says no bridges and no towers today": what is not wanted, said as someone's wish
+    (
+        re.compile(
+            r"\b(?:says?|said|wants?|asks?\s+for|asked\s+for)\s+no\s+(?:more\s+)?(?:" + _SHAPE_ALT
+            + r")(?:\s*(?:,|and|or|nor)\s*no\s+(?:more\s+)?(?:" + _SHAPE_ALT
+            + r"))*\s+(?:this\s+time|today|now|tonight|please)\b",
+            re.IGNORECASE,
+        ),
+        " ",
+        "left out what is not wanted: '{0}'",
+    ),
     # "not a tower: a flat 2 by 2 patch", "no bridge, just two pillars"
     (
         re.compile(
@@ -1695,6 +1706,15 @@ _REWRITES += [
         ),
         " {0} the table ",
         "read '{0}' as on the work table: SDI knows no area of that name",
+    ),
+    (  # "a cube standing in the gap of the U", "in its opening": no place SDI has
+        re.compile(
+            r"\b(?:standing\s+|placed\s+|set\s+)?(?:in|inside|within|into)\s+(?:the|its)\s+(?:gap|opening|"
+            r"mouth|hollow)\b(?:\s+of\s+(?:the\s+u(?:[\s-]*shape)?|it))?",
+            re.IGNORECASE,
+        ),
+        "{in_the_u}",
+        "",
     ),
     (  # "put two more on top of that one": that one is it
         re.compile(
@@ -2913,7 +2933,8 @@ def _sized_base(text: str, st: ReadState) -> str:
 
     made: list[str] = []
     text = _SIZED_BASE.sub(sub, text)
-    if len(made) == 1:  # "a 3x3 base. Place a cube on the base": on that slab (on nothing)
+    pyramid = families_said(text).count("pyramid")  # a pyramid's base is its own
+    if len(made) == 1 and not pyramid:  # "a 3x3 base. Place a cube on the base": on that slab
         text = re.sub(r"\b(the|that|this)\s+base\b(?!\s+of\b)", rf"\1 {made[0]}", text, flags=re.I)
     return text
 

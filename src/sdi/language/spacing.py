@@ -28,7 +28,8 @@ _GAP = re.compile(
     + r"\s+(?:away|off|out|clear)(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance|aisle|walkway|path|corridor)"
-    r"(?:\s+between(?:\s+(?:them|the\s+two|each))?)?"
+    r"(?:\s+between(?:\s+(?:them|the\s+two|each|(?:the\s+)?(?:stacks|towers|columns|pillars|rows|"
+    r"walls|posts|structures|pieces)))?)?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:of\s+)?width\s+between(?:\s+(?:them|the\s+two|each))?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between\s+(?:them|the\s+two|each\s+other|"
     r"(?:each|every)\s+(?:pair|two)|each(?!\s+(?:cube|part|block|brick)s?\b)|"
@@ -38,7 +39,8 @@ _GAP = re.compile(
     # "in a line with two cubes between, from left to right": between them
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between(?=\s*(?:[,.;!?]|$|from\b|and\b|then\b))"
     + r"|(?:at\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+of\s+(?:distance|separation|space))"
-    r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s))?",
+    r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s|(?:stacks|towers|columns|pillars|rows|walls|posts|"
+    r"structures|pieces)\b))?",
     re.IGNORECASE,
 )  # fmt: skip
 _BETWEEN_EACH = re.compile(

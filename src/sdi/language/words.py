@@ -47,6 +47,7 @@ CONSULTED = _words(
 # Words that carry no geometric meaning: never material.
 HARMLESS = _words(
     """
+    qty qnty ea pcs ext external o/a overall
     a an the this that these those some any please kindly can could would will shall should
     must may might you your i me my we us our let lets want wanted need needs needed like
     love just now go ahead hey hi hello robot robots okay ok thanks thank cheers really very
