@@ -10982,7 +10982,8 @@ def test_a_question_then_the_request_and_later_steps_said_with_their_particle_la
     # "Is there room for two walls side by side? I need two walls …": two walls (a room was
     # built, and the asked walls beside the described ones: failure)
     _built_as_said("Is there room for two walls side by side? I need two walls, five long and "
-                   "two high, parallel, with a gap of two.", ["wall", "wall"], [2] * 10)  # fmt: skip
+                   "two high, parallel, with a gap of two.", ["wall", "wall"],
+                   [2] * 10)  # fmt: skip
     # "How many cubes do you have? …": a question of stock (a row of 8 beside the wall)
     _built_as_said("How many cubes do you have? I want a wall eleven long.", ["wall"], [2] * 11)
     # "take the first one away", "move the tower to the back": applied (refused)
@@ -10991,3 +10992,67 @@ def test_a_question_then_the_request_and_later_steps_said_with_their_particle_la
     r = _built_as_said("Put a slab of 2 by 4 on the right, and then a tower of three on the left, "
                        "and then move the tower to the back.", ["grid", "tower"], None)  # fmt: skip
     assert r.spec.structures[1].region.startswith("back")
+
+
+def test_fore_and_aft_a_checklists_each_and_clear_between_and_an_hour_of_a_structure():
+    # "aft end (fwd = robot end)": the back (the front, silently); "fwd of wall": in front of it
+    r = _built_as_said("Twr ht 4, LH side, aft end (fwd = robot end).", ["tower"], [4])
+    assert r.spec.structures[0].region == "back left"
+    r = _built_as_said("Wall L 5 ht 2. Twr ht 3 fwd of wall, not touching (fwd = robot end).",
+                       ["wall", "tower"], None)  # fmt: skip
+    assert r.spec.relations[0].side == "front"
+    r = _built_as_said("a tower, fwd = far end, at the fwd end", ["tower"], [3])
+    assert r.spec.structures[0].region == "back"
+    r = _built_as_said("Stair, 5 steps, w 2, climbs aft (aft = away from robot).", ["staircase"],
+                       None)  # fmt: skip
+    assert r.spec.structures[0].axis == "x" and r.spec.structures[0].yaw_deg in (None, 0.0)
+    # "ht 2 ea, … 1 cube clr btwn": each 2 high, a cube apart ('ea' read as cubes)
+    r = _built_as_said("Twrs qty 3, ht 2 ea, in line, 1 cube clr btwn.", ["tower"] * 3, [2, 2, 2])
+    assert r.spec.gap_m == pytest.approx(0.05)
+    # "at its three o'clock (robot at six)": to its right; "At two o'clock, robot at six"
+    r = _built_as_said("Build a tower of four in the centre, then a tower of two at its three "
+                       "o'clock (robot at six).", ["tower", "tower"], [2, 4])  # fmt: skip
+    assert r.spec.relations[0].side == "right"
+    r = _built_as_said("At two o'clock, robot at six, a tower of four.", ["tower"], [4])
+    assert r.spec.structures[0].region == "back right"
+
+
+def test_a_structure_named_by_its_label():
+    # "Column A …, Column B …, 50 mm clear to the right of A": beside the first (the table's
+    # right region, 100 mm from it, silently)
+    r = _built_as_said("Column A 150 mm high. Column B 250 mm high, offset 50 mm clear to the "
+                       "right of A.", ["tower", "tower"], [3, 5])  # fmt: skip
+    (rel,) = r.spec.relations
+    assert (rel.subject, rel.object, rel.side) == (1, 0, "right")
+    assert rel.gap_m == pytest.approx(0.05)
+    # "fore and aft": running front to back (read as the back, silently)
+    r = _built_as_said("Anyway, lay out a row of five cubes for me, fore and aft.", ["row"],
+                       [1] * 5)  # fmt: skip
+    assert r.spec.structures[0].axis == "x" and r.spec.structures[0].region is None
+
+
+def test_between_the_first_two_and_steps_said_one_by_one():
+    # "a third tower, of five, between the first two": between them (apart, partial)
+    r = _built_as_said("Build two towers of three, three cubes apart, and then a third tower, of "
+                       "five, between the first two.", ["tower"] * 3, [3, 3, 5])  # fmt: skip
+    assert {rel.object for rel in r.spec.relations} == {0, 2}
+    # "the first step one cube high, the second two, …, the fourth four": four steps (two)
+    r = _built_as_said("Steps: the first step one cube high, the second two, the third three, the "
+                       "fourth four, each step two cubes wide.", ["staircase"], None)  # fmt: skip
+    assert (r.spec.structures[0].steps, r.spec.structures[0].width) == (4, 2)
+
+
+def test_a_table_as_high_in_total():
+    # "a table 3 cubes high in total", "no taller than three cubes in total": legs 2 and the top
+    # (legs 3, 4 high in all, silently)
+    for command in ("a table 3 cubes high in total",
+                    "Build a table but no taller than three cubes in total."):  # fmt: skip
+        r = _built_as_said(command, ["canopy"], None)
+        assert max(o.position[2] + o.size[2] / 2 for o in r.layout.objects) == pytest.approx(0.15)
+
+
+def test_a_cube_said_with_whose_it_is():
+    # "put our class mascot cube right in the middle of it": a cube inside (dropped as chatter)
+    r = _built_as_said("Build a ring five by five, one cube high, and put our class mascot cube "
+                       "right in the middle of it.", ["enclosure", "tower"], None)  # fmt: skip
+    assert r.spec.relations[0].kind == "around"

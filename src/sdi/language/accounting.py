@@ -103,7 +103,7 @@ def _where_to_build(tok: Token, word: str) -> bool:
     if word in words.HARMLESS or word in words.CONSULTED or word in lx.FILLER or tok.is_stop:
         return False
     if tok.dep_ in ("compound", "amod") and tok.head.lower_ in _PLACE_NOUNS:
-        return tok.head.dep_ == "pobj" and tok.head.head.lower_ in ("on", "at", "to", "in")
+        return tok.head.dep_ == "pobj" and tok.head.head.lower_ in ("on", "at", "to", "in", "along")
     adverbial = tok.dep_ == "npadvmod" or (tok.dep_ == "conj" and tok.head.dep_ == "npadvmod")
     verb = tok.head if tok.dep_ == "npadvmod" else tok.head.head
     return (

@@ -174,6 +174,37 @@ def _walls_in_square(m: re.Match[str]) -> str:
     return f"a ring{side}" + (f", {high.group(1)} high" if high else "")
 
 
+_LABELLED = re.compile(r"\b(?:column|tower|wall|row|block|slab|stack|pillar|post|pyramid|staircase|"
+                       r"ring|bridge|twr)\s+([A-D])\b(?!['’])", re.IGNORECASE)
+_ORDINALS = ("first", "second", "third", "fourth")
+
+
+def _label_named(m: re.Match[str]) -> str:
+    """ "Column A …, Column B …, 50 mm clear to the right of A": of the one labelled A, the first
+    named (read as the table's right, silently); the label only, when none is named so."""
+    labels = [x.group(1).upper() for x in _LABELLED.finditer(m.string)]
+    said = m.group(2).upper()
+    if said not in labels or len(set(labels)) < 2 or labels.index(said) > 3:
+        return m.group(0)
+    return f"{m.group(1)} the {_ORDINALS[sorted(set(labels)).index(said)]} one"
+
+
+_ORDINAL_N = {"second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,
+              "eighth": 8}  # fmt: skip
+
+
+def _steps_counted(m: re.Match[str]) -> str:
+    """Steps said one by one, each one higher: that many steps; else the words as they were."""
+    said = re.findall(r"\b(second|third|fourth|fifth|sixth|seventh|eighth)\s+(?:step\s+|stair\s+|"
+                      r"one\s+)?(?:is\s+)?(\d|two|three|four|five|six|seven|eight)\b", m.group(0),
+                      re.I)  # fmt: skip
+    values = [int(words_to_numbers([v.lower()])[0]) for _, v in said]
+    order = [_ORDINAL_N[o.lower()] for o, _ in said]
+    if order != list(range(2, len(said) + 2)) or values != order:
+        return m.group(0)
+    return f"{len(said) + 1} steps"
+
+
 def _l_before(text: str) -> bool:
     """An L is the structure named last before the one said now ("an L shape 3x3 then a tower of
     2 on the corner")."""
@@ -590,6 +621,22 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
                 + r")\s+(?=(?:to|over\s+to|into)\s+the\b)", re.I),
      lambda m: (f"{m.group(1)} it " if families_said(m.string[: m.start()])[-1:]
                 == families_said(m.group(2)) else m.group(0))),
+    # "to the right of A" of structures labelled A and B: of the first one
+    (re.compile(r"\b(of|from|beside|behind|on|onto|next\s+to|than)\s+([A-D])\b(?!['’])(?![-.]?\w)"),
+     _label_named),
+    # "a third tower, of five, between the first two": between them (placed apart, silently)
+    (re.compile(r"\bbetween\s+the\s+(?:first\s+two|two\s+first|other\s+two|two\s+others|two\s+of\s+them)\b"
+                r"(?:\s+(?:" + _FAMILY_SAID + r"))?", re.I), "between them"),
+    # "the first step one cube high, the second two, the third three, the fourth four": four
+    # steps, each one higher (a 2-step staircase, read from the numbers)
+    (re.compile(r"\b(?:the\s+)?first\s+(?:step|stair|level)\s+(?:is\s+)?(?:one|1)\s+(?:cubes?\s+)?(?:high|tall|up)?"
+                r"(?:\s*,?\s*(?:and\s+|then\s+)?the\s+(?:second|third|fourth|fifth|sixth|seventh|eighth)\s+(?:step\s+|"
+                r"stair\s+|one\s+)?(?:is\s+)?(?:\d|two|three|four|five|six|seven|eight)(?:\s+(?:cubes?\s+)?(?:high|tall|up))?)+",
+                re.I), _steps_counted),
+    # "put our class mascot cube right in the middle of it": a cube (the words were read as
+    # chatter and the cube dropped)
+    (re.compile(r"\b(?:our|my|your|his|her|their)\s+(?:[a-z]+\s+){0,2}?(cube|block|brick)\b(?=\s+(?:right\s+|just\s+)?"
+                r"(?:in|on|at|inside|beside|next|behind|into|onto|between)\b)", re.I), r"a \1"),
     # "go up in direction of robot": towards it (the staircase climbed the default way)
     (re.compile(r"\bin\s+(?:the\s+)?direction\s+(?:of|to|towards?)\s+(?:the\s+)?(robot|front|back|rear|left|"
                 r"right)\b", re.I), r"towards the \1"),

@@ -3289,6 +3289,21 @@ _SMACK = re.compile(
 _TICKET_DIM = {"len": "long", "lgth": "long", "ht": "high", "hgt": "high", "hght": "high",
                "wid": "wide", "wdth": "wide", "dp": "deep", "dpth": "deep"}  # fmt: skip
 _ONE_LETTER_DIM = {"l": "long", "w": "wide", "h": "high", "d": "deep"}
+_FAR_FWD = re.compile(
+    r"\b(?:fwd|forward)\s*(?:=|is|means)\s*(?:the\s+)?(?:far|back|away)|\baft\s*(?:=|is|means)\s*"
+    r"(?:the\s+)?(?:robot|near|front)",
+    re.IGNORECASE,
+)
+
+
+def _fore_aft(m: re.Match[str]) -> str:
+    """ "fwd", "aft": the front (the robot's end) and the back, unless the command says fwd is
+    the far end; "fwd of the wall": in front of it."""
+    fwd = m.group(1).lower() == "fwd"
+    front = fwd != bool(_FAR_FWD.search(m.string))
+    if m.group(2):
+        return "in front of the" if front else "behind the"
+    return "front" if front else "back"
 _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     # "two towers, one twice as tall as the other, the short one three cubes": that one 3
     (re.compile(r"\b(two\s+(?:towers|stacks|columns|pillars))\s*,?\s*(?:with\s+)?one\s+(?:of\s+them\s+)?"
@@ -3380,7 +3395,20 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\blvl\b", re.I), "level"),
     (re.compile(r"\bea\b(?=\s+(?:end|side|corner|one|of|tower|stack|column|post|row|wall)s?\b)",
                 re.I), "each"),  # "1 blk on ea end": on each end
+    (re.compile(r"\b(high|tall|long|wide|deep)\s+ea\b", re.I), r"\1 each"),  # "ht 2 ea": each
     (re.compile(r"\b(?:pcs|pc|ea)\b(?=\W|$)", re.I), "cubes"),
+    (re.compile(r"\b(on|of|onto|across)\s+(?:the\s+)?tp\b", re.I), r"\1 top"),  # "1 blk on tp"
+    # a ship's or a cell's ends: "fwd" the front (the robot's end), "aft" the back, unless the
+    # command defines them the other way ("(fwd = far end)")
+    (re.compile(r"\bfore[\s-]+(?:and|&|n)[\s-]+aft\b", re.I), "running front to back"),  # a ship's
+    (re.compile(r"\b(fwd|aft)(\s+of)?\b", re.I), _fore_aft),
+    (re.compile(r"\s*\(?\s*\b(?:front\s*(?:=|is|means)\s*(?:the\s+)?(?:robot(?:'s)?|near|front)|back\s*(?:=|is|"
+                r"means)\s*(?:the\s+)?(?:far|back|away\s+from\s+(?:the\s+)?robot))(?:\s+(?:end|side))?\s*\)?",
+                re.I), " "),  # the definition said, once read (SDI's own: the front is the robot's)
+    (re.compile(r"\b(climb(?:s|ing)?|ris(?:es|ing)|going\s+up|goes\s+up)\s+(back|front|left|right)\b"
+                r"(?!\s+(?:of|edge|side|corner|end|half)\b)", re.I), r"\1 towards the \2"),
+    (re.compile(r"\bLH\s*[-–/>→]+\s*RH\b"), "left to right"),
+    (re.compile(r"\bRH\s*[-–/>→]+\s*LH\b"), "right to left"),
     # a surveyor's shorthand: "@ front L", "R of it", "5L x 2H", "1 clr", "rmv"
     (re.compile(r"(?<=\d)\s*L\s*x\s*(\d+)\s*(?:H\b|high\b)"), r" long and \1 high"),  # "5L x 2H"
     (re.compile(r"(?<=\d)\s*L\b(?!')"), " long"),
@@ -3388,7 +3416,8 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(at|front|back|rear)\s+R\b(?![-'])"), r"\1 right"),
     (re.compile(r"(?:(?<=^)|(?<=[\s,;:]))L(?=\s+of\s+(?:it|them|the|that)\b)"), "left"),
     (re.compile(r"(?:(?<=^)|(?<=[\s,;:]))R(?=\s+of\s+(?:it|them|the|that)\b)"), "right"),
-    (re.compile(r"\b(\d+|one|two|three)\s*(?:clr|clear)\b(?:\s+between(?:\s+(?:them|each|(?:the\s+)?"
+    (re.compile(r"\b(\d+|one|two|three)\s*(?:cubes?\s+|blocks?\s+)?(?:clr|clear)\b(?:\s+(?:between|btwn)"
+                r"(?:\s+(?:them|each|(?:the\s+)?"
                 r"inner\s+faces))?)?", re.I),
      lambda m: f"{m.group(1)} {'mm' if _drawn_mm(m.group(1)) else 'cubes'} apart"),
     (re.compile(r"\brmv\b|\brmve\b", re.I), "remove"),
@@ -4319,12 +4348,13 @@ _HOURS = {"one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven
           "nine": 9, "ten": 10, "eleven": 11, "twelve": 12}  # fmt: skip
 _HOUR = r"(\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)"
 _ROBOT_AT = re.compile(
-    r"[^.;:]*?\brobot\s+(?:is\s+|stands\s+|sits\s+)?at\s+" + _HOUR
-    + r"\s*o['’]?\s*clock\b\s*[.;:,]?\s*",
+    r"(?:[^.;:]*?(?<!o')(?<!o’)\bclock\b[^.;:]*?)?\b(?:the\s+)?robot\s+(?:is\s+|stands\s+|sits\s+)?at\s+"
+    + _HOUR
+    + r"(?:\s*o['’]?\s*clock\b)?(?!\s*(?:cm|mm|m|cubes?)\b)\s*[.;:,]?\s*",
     re.IGNORECASE,
 )
 _AT_HOUR = re.compile(
-    r"\b(?:at|to(?:wards?)?|on)\s+(?:the\s+)?" + _HOUR + r"(?:\s*o['’]?\s*clock|\s+position|"
+    r"\b(?:at|to(?:wards?)?|on)\s+(?:the\s+|its\s+)?" + _HOUR + r"(?:\s*o['’]?\s*clock|\s+position|"
     r"(?P<bare>(?=\s*(?:[.;,!]|$))))",
     re.IGNORECASE,
 )
@@ -4361,6 +4391,9 @@ def _clock(text: str, notes: list[str]) -> str:
         notes.append(f"read '{m.group(0).strip()}' as the {place} (the robot at {robot} o'clock)")
         toward = m.group(0).lower().startswith("to")  # "climb towards 12": that way
         at = f" towards the {place} " if toward else f" at the {place} "
+        if re.search(r"\bits\s", m.group(0), re.I):  # "at its three o'clock": beside it
+            at = {"back": " behind it ", "front": " in front of it ", "left": " to its left ",
+                  "right": " to its right "}.get(place, at)  # fmt: skip
         out.append(text[end : m.start()] + at)
         end = m.end()
     return "".join(out) + text[end:]

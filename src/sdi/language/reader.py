@@ -971,27 +971,34 @@ _LEG_WORDS = re.compile(
 
 
 _OVERALL = re.compile(
-    r"\b(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+)?(?:high|tall)\s+(?:overall|in\s+total|"
-    r"altogether|all\s+told|including\s+the\s+(?:beam|top))\b",
+    r"\b(\d+|two|three|four|five|six|seven|eight)\s+(?:cubes?\s+(?:high\s+|tall\s+)?|(?:high|tall)\s+)"
+    r"(?:overall|in\s+total|altogether|all\s+told|including\s+the\s+(?:beam|top))\b",
     re.IGNORECASE,
 )
 
 
 def _bridge_overall(s: StructureSpec, command: str, st: ReadState) -> StructureSpec:
     """A bridge "4 high overall" is 4 high with its beam: posts one lower (they were 4 high,
-    the bridge 5, silently)."""
+    the bridge 5, silently); a table "no taller than three cubes in total" the same, legs 2."""
     m = _OVERALL.search(command)
-    if s.shape != "bridge" or m is None or _LEG_WORDS.search(command[: m.start()][-40:]):
+    if s.shape not in ("bridge", "canopy") or m is None or _LEG_WORDS.search(
+        command[: m.start()][-40:]
+    ):
         return s
     said = int(words_to_numbers([m.group(1).lower()])[0])
     if s.height != said:
         return s
-    if said < 2:
+    bridge = s.shape == "bridge"
+    what, legs, top = ("bridge", "posts", "beam") if bridge else ("table", "legs", "top")
+    above = 1 if bridge else 2  # a table's top is two layers of beams
+    if said <= above:
         st.material.append(m.group(0))
-        st.notes.append(f"ignored '{m.group(0)}': a bridge is at least 2 high (posts and a beam)")
+        st.notes.append(f"ignored '{m.group(0)}': a {what} is at least {above + 1} high ({legs} "
+                        f"and the {top})")  # fmt: skip
         return s
-    st.notes.append(f"read '{m.group(0)}' as the whole bridge: posts {said - 1} high and the beam")
-    return s.model_copy(update={"height": said - 1})
+    st.notes.append(f"read '{m.group(0)}' as the whole {what}: {legs} {said - above} high and "
+                    f"the {top}")  # fmt: skip
+    return s.model_copy(update={"height": said - above})
 
 
 def _arch_overall(s: StructureSpec, command: str, level_m: float, st: ReadState) -> StructureSpec:
