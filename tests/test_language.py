@@ -3374,7 +3374,8 @@ def test_one_per_corner_or_end_is_one_copy_on_each_not_more_structures(
 @pytest.mark.parametrize(
     ("command", "word"),
     [
-        ("Anyway, lay out a row of five cubes for me, fore and aft.", "fore"),
+        # ("fore and aft" is read now: running front to back, noted — see the test of fwd and aft)
+        ("Lay out a row of six along the starboard side.", "starboard"),
         ("Six high it must be, the mast, and on the bow end.", "bow"),
     ],
 )
