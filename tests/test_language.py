@@ -11057,3 +11057,14 @@ def test_a_cube_said_with_whose_it_is():
     r = _built_as_said("Build a ring five by five, one cube high, and put our class mascot cube "
                        "right in the middle of it.", ["enclosure", "tower"], None)  # fmt: skip
     assert r.spec.relations[0].kind == "around"
+
+
+def test_on_the_other_side_of_the_first():
+    # "… a tower of two next to that, and then a tower of six on the other side of the first
+    # one": across from the two (dropped, silently)
+    r = _built_as_said("Build a tower of four, and then a tower of two next to that, and then a "
+                       "tower of six on the other side of the first one.", ["tower"] * 3,
+                       [2, 4, 6])  # fmt: skip
+    cols = _columns(r)
+    order = [cols[k] for k in sorted(cols, key=lambda c: -c[1])]
+    assert order.index(4) == 1  # the four in the middle

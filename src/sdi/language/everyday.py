@@ -205,6 +205,33 @@ def _steps_counted(m: re.Match[str]) -> str:
     return f"{len(said) + 1} steps"
 
 
+_SIDE_SAID = re.compile(
+    r"\b(?:to\s+(?:its|the)\s+(left|right)|(left|right)\s+of|on\s+its\s+(left|right)|(in\s+front\s+of|behind)|"
+    r"(next\s+to|beside|alongside))\b",
+    re.IGNORECASE,
+)
+
+
+def _other_side(m: re.Match[str]) -> str:
+    """ "a tower of four, a tower of two next to that, and a tower of six on the other side of
+    the first one": the side across from the one said before (or from SDI's own, the left, for
+    "next to"); the relation was dropped, silently."""
+    said = list(_SIDE_SAID.finditer(m.string[: m.start()]))
+    if not said:
+        return m.group(0)
+    last = said[-1]
+    side = (last.group(1) or last.group(2) or last.group(3) or "").lower()
+    obj = m.group(1)
+    if obj.lower() in ("it", "that", "this"):
+        if len(families_said(m.string[: m.start()])) != 2 or not (last.group(1) or last.group(3)):
+            return m.group(0)
+        obj = "the first one"  # "a tower, a tower to its right, and one on the other side of it"
+    if last.group(4):
+        return f"{'behind' if last.group(4).lower().startswith('in') else 'in front of'} {obj}"
+    opposite = {"left": "right", "right": "left"}.get(side, "right")  # "next to": on the left
+    return f"to the {opposite} of {obj}"
+
+
 def _l_before(text: str) -> bool:
     """An L is the structure named last before the one said now ("an L shape 3x3 then a tower of
     2 on the corner")."""
@@ -637,6 +664,10 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     # chatter and the cube dropped)
     (re.compile(r"\b(?:our|my|your|his|her|their)\s+(?:[a-z]+\s+){0,2}?(cube|block|brick)\b(?=\s+(?:right\s+|just\s+)?"
                 r"(?:in|on|at|inside|beside|next|behind|into|onto|between)\b)", re.I), r"a \1"),
+    # "… a tower of two next to that, and then a tower of six on the other side of the first
+    # one": across from it (dropped, silently)
+    (re.compile(r"\b(?:on|at)\s+the\s+other\s+side\s+of\s+(it|that|this|the\s+first(?:\s+one)?|the\s+(?:"
+                + _FAMILY_SAID + r"))\b", re.I), _other_side),
     # "go up in direction of robot": towards it (the staircase climbed the default way)
     (re.compile(r"\bin\s+(?:the\s+)?direction\s+(?:of|to|towards?)\s+(?:the\s+)?(robot|front|back|rear|left|"
                 r"right)\b", re.I), r"towards the \1"),
