@@ -544,10 +544,10 @@ def _flanked(
 ) -> list[Relation] | None:
     """ "a tower of 2 between them", "between them a tower of 2", "two towers and a cube; put
     the cube between them": the structure said between stands in a row with the two it is
-    between, in the middle (empty when it is a beam or a spanning structure that joins them,
-    or when the two are not clear: None). Two placed in opposite corners ("at the back left … at
-    the front right, and a wall between them"): it stands midway between their places, and they
-    keep theirs (no relations; it was lined up with them along the back, silently)."""
+    between, in the middle. Two placed in opposite corners ("at the back left … at the front
+    right, and a wall between them"): it stands midway between their places and they keep
+    theirs — no relations, [] (it was lined up with them along the back, silently). None when
+    it is a beam or a spanning structure that joins them, or when the two are not clear."""
     own = phrases[r.subject]  # after "between": the two, or "them" with the middle after it
     said = own.text.strip(" ,.").lower().split()
     middle: list[int] = []

@@ -182,11 +182,11 @@ _ORDINALS = ("first", "second", "third", "fourth")
 def _label_named(m: re.Match[str]) -> str:
     """ "Column A …, Column B …, 50 mm clear to the right of A": of the one labelled A, the first
     named (read as the table's right, silently); the label only, when none is named so."""
-    labels = [x.group(1).upper() for x in _LABELLED.finditer(m.string)]
-    said = m.group(2).upper()
-    if said not in labels or len(set(labels)) < 2 or labels.index(said) > 3:
+    labels = list(dict.fromkeys(x.group(1).upper() for x in _LABELLED.finditer(m.string)))
+    said = m.group(2).upper()  # the labels in the order the structures are named
+    if said not in labels or len(labels) < 2 or labels.index(said) > 3:
         return m.group(0)
-    return f"{m.group(1)} the {_ORDINALS[sorted(set(labels)).index(said)]} one"
+    return f"{m.group(1)} the {_ORDINALS[labels.index(said)]} one"
 
 
 _ORDINAL_N = {"second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,

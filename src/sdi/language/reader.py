@@ -270,7 +270,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     drafts = spacing.apply_span(drafts, st)
     specs = [check_family(s, st.notes, st.material, part_m=cell.cube[0]) for s in drafts]
     specs = [_arch_overall(s, command, cell.cube[2], st) for s in specs]
-    specs = [_bridge_overall(s, command, st) for s in specs]
+    specs = [_overall_with_top(s, command, st) for s in specs]
     specs = _placed_by_face(specs, st)
     for s in specs:
         if s.shape in ("t_shape", "cross") and s.length and s.length % 2 == 0:
@@ -977,9 +977,10 @@ _OVERALL = re.compile(
 )
 
 
-def _bridge_overall(s: StructureSpec, command: str, st: ReadState) -> StructureSpec:
+def _overall_with_top(s: StructureSpec, command: str, st: ReadState) -> StructureSpec:
     """A bridge "4 high overall" is 4 high with its beam: posts one lower (they were 4 high,
-    the bridge 5, silently); a table "no taller than three cubes in total" the same, legs 2."""
+    the bridge 5, silently); a table "no taller than three cubes in total" the same, less its
+    top of two layers: legs 1 (they were 3, the table 5, silently)."""
     m = _OVERALL.search(command)
     if s.shape not in ("bridge", "canopy") or m is None or _LEG_WORDS.search(
         command[: m.start()][-40:]
