@@ -11068,3 +11068,13 @@ def test_on_the_other_side_of_the_first():
     cols = _columns(r)
     order = [cols[k] for k in sorted(cols, key=lambda c: -c[1])]
     assert order.index(4) == 1  # the four in the middle
+
+
+def test_the_bottom_of_its_own_and_what_is_meant_that_names_nothing():
+    # "3 by 3 on the bottom": its own bottom, never a relation to the block named before it
+    r = plan("Make a solid block out of 18 cubes, 3 by 3 on the bottom")
+    assert r.status == "success" and not r.spec.relations
+    # "He means the tallest you can do, so ten": what is meant names no structure: the quote is
+    # kept (no structure at all was read)
+    _built_as_said("My son says 'a tower as tall as me!' He means the tallest you can do, so ten.",
+                   ["tower"], [10])  # fmt: skip

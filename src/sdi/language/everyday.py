@@ -620,7 +620,8 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     # "'Three, the tower, make it!' He means a tower of three.": what is meant, said again (both
     # were built)
     (re.compile(r"^.*?[\"'“‘][^\"'”’]+[\"'”’][\s.!?,]*(?:he|she|they|my\s+\w+|the\s+\w+)\s+(?:means?|meant)\s+",
-                re.I | re.S), ""),
+                re.I | re.S),
+     lambda m: "" if families_said(m.string[m.end() :]) else m.group(0)),  # what is meant, named
     # "a little tower on top of the middle": on top of it, centred (beside the bridge, silently)
     (re.compile(r"\bon\s+top\s+of\s+the\s+(?:very\s+)?(?:middle|centre|center)\b"
                 r"(?=\s*(?:[,.;!?]|$|and\b|then\b|please\b))", re.I),

@@ -137,6 +137,7 @@ def object_head(doc: Doc, start: int, end: int, strong: bool = True) -> tuple[in
     if w in BASES:  # "a 3x3 base. … a cube on the base": the one said before
         named = any(t.lower_ in BASES or lx.SHAPE_WORDS.get(t.lower_) in ("grid", "block")
                     for t in doc[: max(0, k - 2)])  # fmt: skip
+        named = named and w in ("base", "foundation", "footing")  # ("3 by 3 on the bottom")
         return k, strong or (named and doc[k - 1].lower_ in ("the", "that", "this"))
     return k, _is_structure_noun(doc, k)
 
