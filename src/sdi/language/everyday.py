@@ -12,9 +12,9 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
-from sdi.language.nouns import families_said, nouns_said, shape_alternation
+from sdi.language.nouns import families_said, l_named_last, nouns_said, shape_alternation
 from sdi.spec import lexicon as lx
-from sdi.spec.numbers import words_to_numbers
+from sdi.spec.numbers import ORDINAL_STEPS, words_to_numbers
 
 _Repl = str | Callable[[re.Match[str]], str]
 _NUM = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
@@ -176,7 +176,7 @@ def _walls_in_square(m: re.Match[str]) -> str:
 
 _LABELLED = re.compile(r"\b(?:column|tower|wall|row|block|slab|stack|pillar|post|pyramid|staircase|"
                        r"ring|bridge|twr)\s+([A-D])\b(?!['’])", re.IGNORECASE)
-_ORDINALS = ("first", "second", "third", "fourth")
+_ORDINALS = tuple(ORDINAL_STEPS)[:4]  # "first" … "fourth"
 
 
 def _label_named(m: re.Match[str]) -> str:
@@ -189,17 +189,13 @@ def _label_named(m: re.Match[str]) -> str:
     return f"{m.group(1)} the {_ORDINALS[labels.index(said)]} one"
 
 
-_ORDINAL_N = {"second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,
-              "eighth": 8}  # fmt: skip
-
-
 def _steps_counted(m: re.Match[str]) -> str:
     """Steps said one by one, each one higher: that many steps; else the words as they were."""
     said = re.findall(r"\b(second|third|fourth|fifth|sixth|seventh|eighth)\s+(?:step\s+|stair\s+|"
                       r"one\s+)?(?:is\s+)?(\d|two|three|four|five|six|seven|eight)\b", m.group(0),
                       re.I)  # fmt: skip
     values = [int(words_to_numbers([v.lower()])[0]) for _, v in said]
-    order = [_ORDINAL_N[o.lower()] for o, _ in said]
+    order = [ORDINAL_STEPS[o.lower()] for o, _ in said]
     if order != list(range(2, len(said) + 2)) or values != order:
         return m.group(0)
     return f"{len(said) + 1} steps"
@@ -230,13 +226,6 @@ def _other_side(m: re.Match[str]) -> str:
         return f"{'behind' if last.group(4).lower().startswith('in') else 'in front of'} {obj}"
     opposite = {"left": "right", "right": "left"}.get(side, "right")  # "next to": on the left
     return f"to the {opposite} of {obj}"
-
-
-def _l_before(text: str) -> bool:
-    """An L is the structure named last before the one said now ("an L shape 3x3 then a tower of
-    2 on the corner")."""
-    said = list(re.finditer(r"\bl[\s-]?shaped?\b|\ban?\s+l\b|\bl[\s-]?form\b", text, re.IGNORECASE))
-    return bool(said) and len(families_said(text[said[-1].end() :])) <= 1
 
 
 EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
@@ -762,7 +751,7 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     # structure before (stood apart from it, silently, or in a corner of the table)
     (re.compile(r"\bon\s+(?:its|the)\s+corner\b(?!\s*(?:of|closest|nearest|next|by|cubes?|blocks?|"
                 r"parts?|ones?|pieces?)\b)", re.I),
-     lambda m: (m.group(0) if _l_before(m.string[: m.start()])  # the L's own corner: its bend
+     lambda m: (m.group(0) if l_named_last(m.string[: m.start()])  # the L's own corner: its bend
                 else "on one corner of it" if m.group(0).lower().split()[1] == "its"
                 or len(families_said(m.string[: m.start()])) >= 2 else m.group(0))),
     # "two towers of 2. make the towers 4 high", "… now make the posts four high": all of them

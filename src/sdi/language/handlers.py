@@ -9,7 +9,7 @@ import re
 from collections.abc import Callable
 
 from sdi.errors import InfeasibleError, SpecError
-from sdi.language.nouns import STRUCTURE_PLURALS, families_said
+from sdi.language.nouns import L_NAMED, STRUCTURE_PLURALS, families_said, l_named_last
 from sdi.language.state import ReadState
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import FACTORS, NUMBER_WORDS, words_to_numbers
@@ -107,8 +107,6 @@ def _placement(m: re.Match[str], st: ReadState, note: str) -> str:
     return f" next to {obj or 'it'} "
 
 
-_L_NAMED = re.compile(r"\b(?:l[\s-]?shaped?|an?\s+l|l[\s-]?form)\b", re.IGNORECASE)
-
 
 def _bend(m: re.Match[str], st: ReadState, note: str) -> str:
     """ "an L shape of 5 by 3 with a tower of 4 at the corner": on top of the L where its arms
@@ -116,9 +114,7 @@ def _bend(m: re.Match[str], st: ReadState, note: str) -> str:
     table's back left corner)."""
     sentence = re.split(r"[.;!?]", m.string[: m.start()])[-1]
     withs = list(re.finditer(r"\bwith\b", sentence, re.IGNORECASE))
-    before = m.string[: m.start()]
-    l_said = list(_L_NAMED.finditer(before))  # "an L shape 3x3 then a tower of 2 on the corner"
-    l_last = bool(l_said) and len(families_said(before[l_said[-1].end() :])) <= 1
+    l_last = l_named_last(m.string[: m.start()])  # "an L shape 3x3 then a tower on the corner"
     if not withs and not l_last:
         return m.group(0)
     named = [
@@ -126,7 +122,7 @@ def _bend(m: re.Match[str], st: ReadState, note: str) -> str:
         for w in re.findall(r"[a-z]+", sentence[: withs[-1].start() if withs else None].lower())
         if w in lx.SHAPE_WORDS
     ]
-    if _L_NAMED.search(sentence) or l_last:
+    if L_NAMED.search(sentence) or l_last:
         st.anchors.append(("on_top_of", "bend"))
         st.notes.append(f"read '{_said(m)[0]}' as on top of the L's corner, where its arms meet")
     elif named and named[-1] in ("grid", "block", "pack"):

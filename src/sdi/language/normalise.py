@@ -3287,8 +3287,8 @@ _SMACK = re.compile(
 
 # Shorthand from phones and shop-floor notes: (pattern, expansion). Each expansion is noted.
 _TICKET_DIM = {"len": "long", "lgth": "long", "ht": "high", "hgt": "high", "hght": "high",
-               "wid": "wide", "wdth": "wide", "dp": "deep", "dpth": "deep"}  # fmt: skip
-_ONE_LETTER_DIM = {"l": "long", "w": "wide", "h": "high", "d": "deep"}
+               "wid": "wide", "wdth": "wide", "dp": "deep", "dpth": "deep",
+               "l": "long", "w": "wide", "h": "high", "d": "deep"}  # fmt: skip
 _FAR_FWD = re.compile(
     r"\b(?:fwd|forward)\s*(?:=|is|means)\s*(?:the\s+)?(?:far|back|away)|\baft\s*(?:=|is|means)\s*"
     r"(?:the\s+)?(?:robot|near|front)",
@@ -3349,7 +3349,7 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
                 r"long|wide|deep)\b))?(?(3)|(?!\s*(?:x\s*\d|by|-?shaped?|\d)))"),
      lambda m: m.group(0)
      if not [f for f in families_said(m.string[: m.start()]) if f != "l_shape"]
-     else f"{m.group(2)} {_ONE_LETTER_DIM[m.group(1).lower()]}" + (" and" if m.group(3) else "")),
+     else f"{m.group(2)} {_TICKET_DIM[m.group(1).lower()]}" + (" and" if m.group(3) else "")),
     (re.compile(r"\b(?:lg|leg)\s+(?=\d+\s+high\b)", re.I), "legs "),
     # "wall A …, wall B same size": a label, not a size or a letter shape
     # (kept where a later word points at one by its label: "on A's right")

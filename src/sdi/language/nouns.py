@@ -196,6 +196,17 @@ def nouns_said(text: str) -> list[str]:
             if w in lx.SHAPE_WORDS and w not in lx.AMBIGUOUS_SHAPES]  # fmt: skip
 
 
+L_NAMED = re.compile(r"\b(?:l[\s-]?shaped?|an?\s+l|l[\s-]?form)\b", re.IGNORECASE)
+"""An L shape named ("L shape", "an L", "L-form")."""
+
+
+def l_named_last(text: str) -> bool:
+    """An L is the structure named last in `text`, before the one said now ("an L shape 3x3 then
+    a tower of 2 on the corner": the tower is the only structure named after it)."""
+    said = list(L_NAMED.finditer(text))
+    return bool(said) and len(families_said(text[said[-1].end() :])) <= 1
+
+
 def families_said(text: str) -> list[str]:
     """The families the unambiguous structure nouns of `text` name, in the order said."""
     return [lx.SHAPE_WORDS[w] for w in nouns_said(text)]

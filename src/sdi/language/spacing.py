@@ -20,6 +20,8 @@ from sdi.spec.structure_spec import Spec, StructureDraft
 
 _N = r"(\d+(?:\.\d+)?|a\s+couple\s+of|a\s+pair\s+of|a|an|one|two|three|four|five|six)"
 _UNIT = r"(cubes?|parts?|blocks?|bricks?|pieces?|cm|mm|m)(?:'s|s')?"  # "a cube's space"
+_BETWEEN_PLURAL = r"(?:stacks|towers|columns|pillars|rows|walls|posts|structures|pieces)"
+"""What a gap is said between, named bare ("one cube clearance between stacks")."""
 _GAP = re.compile(
     r",?\s*\b(?:with\s+|leaving\s+|leave\s+|keep\s+|and\s+)?(?:a\s+)?(?:gap\s+(?:of\s+)?"
     + _N + r"(?:[- ]?" + _UNIT + r")?"
@@ -28,8 +30,7 @@ _GAP = re.compile(
     + r"\s+(?:away|off|out|clear)(?:\s+from\s+(?:it|them|each\s+other|the\s+\w+))?"
     + r"|" + _N + r"[- ]?" + _UNIT
     + r"\s+(?:of\s+)?(?:gaps?|spaces?|room|clearance|aisle|walkway|path|corridor)"
-    r"(?:\s+between(?:\s+(?:them|the\s+two|each|(?:the\s+)?(?:stacks|towers|columns|pillars|rows|"
-    r"walls|posts|structures|pieces)))?)?"
+    r"(?:\s+between(?:\s+(?:them|the\s+two|each|(?:the\s+)?" + _BETWEEN_PLURAL + r"))?)?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+(?:of\s+)?width\s+between(?:\s+(?:them|the\s+two|each))?"
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between\s+(?:them|the\s+two|each\s+other|"
     r"(?:each|every)\s+(?:pair|two)|each(?!\s+(?:cube|part|block|brick)s?\b)|"
@@ -39,8 +40,7 @@ _GAP = re.compile(
     # "in a line with two cubes between, from left to right": between them
     + r"|" + _N + r"[- ]?" + _UNIT + r"\s+between(?=\s*(?:[,.;!?]|$|from\b|and\b|then\b))"
     + r"|(?:at\s+)?" + _N + r"[- ]?" + _UNIT + r"\s+of\s+(?:distance|separation|space))"
-    r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s|(?:stacks|towers|columns|pillars|rows|walls|posts|"
-    r"structures|pieces)\b))?",
+    r"(?:\s+between\s+(?:them|the\s+two|the\s+\w+s|" + _BETWEEN_PLURAL + r"\b))?",
     re.IGNORECASE,
 )  # fmt: skip
 _BETWEEN_EACH = re.compile(

@@ -26,7 +26,8 @@ NUMBER_WORDS = COUNT_WORDS - {"one"}
 FACTORS = {"twice": 2.0, "double": 2.0, "thrice": 3.0, "half": 0.5, "just": 1.0, "exactly": 1.0,
            "equally": 1.0}  # fmt: skip
 """What "… as tall" multiplies by ("twice as tall", "just as long")."""
-ORDINAL_STEPS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5}
+ORDINAL_STEPS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6,
+                 "seventh": 7, "eighth": 8}  # fmt: skip
 MULTIPLIERS = {"once": 1, "twice": 2, "thrice": 3}
 
 
