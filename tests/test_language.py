@@ -11078,3 +11078,255 @@ def test_the_bottom_of_its_own_and_what_is_meant_that_names_nothing():
     # kept (no structure at all was read)
     _built_as_said("My son says 'a tower as tall as me!' He means the tallest you can do, so ten.",
                    ["tower"], [10])  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("command", "left_first"),
+    [
+        # "I'm across the table" said bare, and a speech recogniser's "im oposite": not read as
+        # where the speaker stands (the row's left end was the robot's, silently)
+        ("I'm across the table. Build a row of 4 running left to right as I see it, then put a "
+         "cube on its left end", [1, 1, 1, 2]),
+        # the order from the speaker's left read after their left is turned (a line front to
+        # back, all on the left, silently)
+        ("Standing opposite the robot: three towers, 1, 2 and 3 high, going from my left to my "
+         "right.", [3, 2, 1]),
+    ],
+)  # fmt: skip
+def test_a_speaker_across_the_table_in_more_words(command, left_first):
+    r = plan(command)
+    assert r.status == "success" and any("from where the speaker stands" in n for n in r.notes)
+    cols: dict[float, int] = {}
+    for (_, y), h in _columns(r).items():
+        cols[y] = max(cols.get(y, 0), h)
+    assert [cols[y] for y in sorted(cols, reverse=True)] == left_first
+
+
+def test_a_speaker_across_the_table_said_after_or_misspelt():
+    r = plan("im oposite the robot. staircase 4 steps climbing towards me pls")
+    assert r.status == "success" and r.spec.structures[0].axis == "x"
+    tops = {round(o.position[0], 3): o.position[2] for o in r.layout.objects}
+    assert max(tops, key=tops.__getitem__) == max(tops)  # it climbs away from the robot, to +x
+    r = plan("Put a tower of 3 on the robot's left, and a tower of 3 on my left. I'm standing "
+             "across from it.")  # fmt: skip
+    assert r.status == "success"
+    assert [s.region for s in r.spec.structures] == ["left", "right"]
+
+
+def test_too_where_only_a_number_fits_and_each_after_a_row():
+    # "each for long too high": two high (read as 'not about the structure': 4 high, silently)
+    r = _built_as_said("i need three walls each for long too high spaced one apart", ["wall"] * 3,
+                       None)  # fmt: skip
+    assert {(s.length, s.height) for s in r.spec.structures} == {(4, 2)}
+    r = _built_as_said("on the right side a wall put it five long too high", ["wall"], None)
+    assert (r.spec.structures[0].length, r.spec.structures[0].height) == (5, 2)
+    assert "too" in plan("a tower of 5, is that too high?").ignored  # still "too much"
+    # "four towers in a row each two high": theirs (a wall 2 high was built beside them)
+    _built_as_said("make four towers in a row each two high", ["tower"] * 4, [2, 2, 2, 2])
+
+
+@pytest.mark.parametrize(
+    ("command", "shapes", "heights"),
+    [
+        ("GIVEN an empty table WHEN the robot builds THEN exactly 2 towers of height 3 exist.",
+         ["tower", "tower"], [3, 3]),
+        ("GIVEN a tower of 5 WHEN the top 2 cubes are removed THEN a tower of 3 remains.",
+         ["tower"], [3]),
+        ("GIVEN an empty table WHEN I request a bridge THEN there are 2 pillars of 2 cubes AND "
+         "one beam spans them.", ["bridge"], None),
+        ("Given a clear table, when I ask for a wall 4 long, then a wall 4 long and 2 high "
+         "exists.", ["wall"], [2, 2, 2, 2]),
+        ("Precondition: table empty. Action: place a tower of 4.", ["tower"], [4]),
+    ],
+)  # fmt: skip
+def test_acceptance_criteria_build_what_the_then_says(command, shapes, heights):
+    # the table of GIVEN an empty table was built as a structure (a table of its default size)
+    r = _built_as_said(command, shapes, heights)
+    assert "canopy" not in [s.shape for s in r.spec.structures]
+
+
+def test_changes_said_with_only_until_and_break():
+    # "make it only four" (the change was lost), "until it's 7 high" (one cube was added), "break
+    # the top 2 blocks" (a row of 2 was laid beside it)
+    _built_as_said("Would you kindly build a tower of six, and then make it only four?", ["tower"],
+                   [4])  # fmt: skip
+    _built_as_said("Start with a tower of 3. Then add one more cube to it at a time until it's 7 "
+                   "high.", ["tower"], [7])  # fmt: skip
+    r = plan("build a 1x1 pillar 6 blocks high then break the top 2 blocks")
+    assert r.status == "success" and sorted(_columns(r).values()) == [4]
+
+
+def test_not_joined_and_facing_each_other_are_claims_that_hold():
+    # "but NOT joined at the top" was read as joined by a beam
+    r = _built_as_said("two towers of 3, not joined at the top", ["tower", "tower"], [3, 3])
+    assert any("holds" in n for n in r.notes)
+    # "facing each other": two walls the same way ('facing' was left unused: partial)
+    r = _built_as_said("Two walls 5 long, 2 high, facing each other, with a 3 cube gap between "
+                       "them.", ["wall", "wall"], None)  # fmt: skip
+    assert any("'facing each other': holds" in n for n in r.notes)
+
+
+def test_the_one_behind_the_other_and_structures_named_by_a_vague_size():
+    # "the one behind the other" read "one" as a wall one long, silently
+    r = _built_as_said("Make please two walls, the one behind the other, each four long and two "
+                       "high.", ["wall", "wall"], None)  # fmt: skip
+    assert {(s.length, s.height) for s in r.spec.structures} == {(4, 2)}
+    r = plan("two walls, the one behind the other")
+    assert [s.length for s in r.spec.structures] == [None, None]
+    # "the small tower … the big tower" at first mention: two towers (the big one was the small
+    # one again); then each one's size said by that word (both 2, silently)
+    for command in ("Put the small tower in front of the big tower. The small has two cubes, the "
+                    "big has five.",
+                    "Put the small tower before the big tower. The small has two cubes, the big "
+                    "has five.",
+                    "A small tower in front of a big tower: the small one 2 cubes, the big one "
+                    "5."):  # fmt: skip
+        r = _built_as_said(command, ["tower", "tower"], [2, 5])
+        assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "front")]
+        assert r.spec.structures[r.spec.relations[0].subject].height == 2  # the small in front
+
+
+def test_walls_round_the_edge_of_a_floor_stand_on_its_rim():
+    # "walls around the edge of it": a ring on the floor (a wall beside it); a ring on a 3 by 5
+    # slab is that size (a 4 by 4 overhung it: a failure)
+    r = _built_as_said("build a 4x4 floor. now build walls around the edge of it 2 high",
+                       ["grid", "enclosure"], None)  # fmt: skip
+    assert r.spec.relations[0].kind == "on_top_of" and len(r.layout.objects) == 16 + 24
+    r = _built_as_said("a 3x5 slab with a wall round the edge of it", ["grid", "enclosure"], None)
+    assert len(r.layout.objects) == 15 + 12
+
+
+@pytest.mark.parametrize(
+    "command",
+    ["Two towers: the tower of 4 on the right, the tower of 2 on the left, with a 2-cube gap.",
+     "Two towers: a 4 on the right, a 2 on the left",
+     "I'm across the table. Two towers: the 4 on my left, the 2 on my right, with a 2-cube gap."],
+)  # fmt: skip
+def test_items_of_a_list_named_by_the_size_and_place(command):
+    # "the tower of 4 on the right, the tower of 2 on the left": both 4, on one side, silently
+    r = _built_as_said(command, ["tower", "tower"], [2, 4])
+    cols = _columns(r)
+    assert [cols[k] for k in sorted(cols, key=lambda c: -c[1])] == [2, 4]  # left to right
+
+
+def test_a_tolerance_round_the_centre_and_a_table_kept_clear():
+    # "pyramid centre within 8 cm of the table centre": in the centre (a second pyramid 8 cm
+    # long was built)
+    r = _built_as_said("Precondition: table empty. Action: place pyramid, 3 levels. "
+                       "Postcondition: pyramid centre within 8 cm of the table centre.",
+                       ["pyramid"], None)  # fmt: skip
+    assert r.spec.structures[0].region == "centre"
+    # "keep the front half of the table clear" is no empty table SDI starts from
+    r = plan("Put a 3x3 block 2 high in the back right bay, and keep the front half of the table "
+             "clear.")  # fmt: skip
+    assert r.status != "success" or r.spec.structures[0].region == "back right"
+
+
+@pytest.mark.parametrize(
+    ("command", "length_m", "height_m"),
+    [
+        ("All dimensions in cm: a wall 20 long, 10 high.", 0.2, 0.1),  # a failure: 20 cubes
+        ("Units: inches. A wall 12 long, 4 high.", 0.3048, 0.1016),  # 12 cubes, silently
+        ("Inches, all of these: wall, 12 long, 4 high.", 0.3048, 0.1016),
+    ],
+)
+def test_a_unit_said_once_for_every_size(command, length_m, height_m):
+    r = _built_as_said(command, ["wall"], None)
+    s = r.spec.structures[0]
+    assert (s.length_m, s.height_m) == (pytest.approx(length_m), pytest.approx(height_m))
+    assert any("the unit of every size said without one" in n for n in r.notes)
+
+
+def test_a_then_that_says_how_they_stand_a_foot_to_its_right_and_a_vague_size_said_again():
+    # "Then the tower does not touch the ring": a claim about those named before, not what to
+    # build instead of them
+    r = _built_as_said("Given a ring 5x5 outside. When a tower of 3 is placed inside the ring. "
+                       "Then the tower does not touch the ring.", ["enclosure", "tower"], None)
+    assert r.spec.relations[0].kind == "around"
+    # "about a foot to its right": 0.3 m (a foot was not read: 0.1 m, silently)
+    r = plan("Put a 3-cube tower in the back left, and a 2x2 block about a foot to its right.")
+    assert r.status == "success" and r.spec.relations[0].gap_m == pytest.approx(0.3048)
+    # "a tall column … column 4 high": the column named before, 4 high (a second one, silently)
+    _built_as_said("a ring, and inside it a tall column. Ring 6x6, 1 high; column 4 high.",
+                   ["enclosure", "tower"], None)  # fmt: skip
+
+
+def test_a_pyramids_bottom_the_tallest_said_of_one_and_finish_it_at():
+    # "5x5 at the bottom", "the bottom layer has to be 4 by 4": the base ('bottom' unused)
+    s = _built_as_said("I want a low, wide pyramid: 5x5 at the bottom, 3 levels.", ["pyramid"],
+                       None).spec.structures[0]  # fmt: skip
+    assert (s.length, s.height) == (5, 3)
+    s = _built_as_said("A pyramid, you pick the size, but the bottom layer has to be 4 by 4.",
+                       ["pyramid"], None).spec.structures[0]  # fmt: skip
+    assert s.length == 4
+    # "the middle one the tallest": towers one high in the centre, silently
+    r = _built_as_said("three towers of 2, 4 and 3, the middle one the tallest", ["tower"] * 3,
+                       [2, 3, 4])  # fmt: skip
+    cols = _columns(r)
+    assert [cols[k] for k in sorted(cols, key=lambda c: -c[1])][1] == 4
+    assert plan("can you make 3 towers and the midle one is the bigest!!!").status != "success"
+    # "finish it at 6", "take it up to 5 cubes": that high (3, silently)
+    _built_as_said("the tower on the left got to 3 cubes before the gripper jammed. Carry on "
+                   "with it and finish it at 6.", ["tower"], [6])  # fmt: skip
+    _built_as_said("a tower of 3, then take it up to 5 cubes.", ["tower"], [5])
+    # "… centred on it so the centre of mass stays over the middle": what it is for
+    r = plan("a 4x4 slab, then a 2x2 block two high centred on it so the centre of mass stays "
+             "over the middle.")  # fmt: skip
+    assert r.status == "success" and r.spec.relations[0].kind == "on_top_of"
+
+
+def test_numbered_steps_revised_or_left_out():
+    # "Step 2 (revised): …": that step said anew, or changed (both were built)
+    r = _built_as_said("Step 1: tower of 3 on the left. Step 2: tower of 5 on the right. Step 2 "
+                       "(revised): tower of 4 on the right.", ["tower", "tower"], [3, 4])
+    assert [s.region for s in r.spec.structures] == ["left", "right"]
+    r = _built_as_said("Step 1: ring 5 by 5, one high. Step 2: tower of 3 in its centre. Step 2 "
+                       "(revised): a tower of 2 instead.", ["enclosure", "tower"], None)
+    assert r.spec.structures[1].height == 2 and r.spec.relations[0].kind == "around"
+    # "Ignore step 3.", "Skip step 2 - we don't need it.": that step left out (it was built)
+    r = _built_as_said("1. Build a wall 6 long, 2 high. 2. Put a tower of 3 in front of it. 3. Add "
+                       "a second layer to the wall. Ignore step 3.", ["wall", "tower"], None)
+    assert (r.spec.structures[0].height, r.spec.structures[1].height) == (2, 3)
+    _built_as_said("1) Row of 5. 2) A second row of 5 behind it, touching. 3) Skip step 2 - we "
+                   "don't need it.", ["row"], [1, 1, 1, 1, 1])  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("command", "shapes", "heights"),
+    [
+        # "as tall as a pint glass": about 15 cm (read as a vague 'tall': 6, silently)
+        ("Put a tower as tall as a pint glass in the back left corner.", ["tower"], [3]),
+        ("A tower about as tall as a coffee mug.", ["tower"], [2]),
+        ("As tall as a milk carton, the tower, please - at the back.", ["tower"], [4]),
+        # "the size of a shoebox", "of a paperback book": its sides (a default 2 by 2 by 2)
+        ("A block the size of a shoebox.", ["block"], [2] * 24),
+        ("A slab about the size of a paperback book, lying flat, in the front right.", ["grid"],
+         [1] * 8),
+    ],
+)  # fmt: skip
+def test_a_size_said_by_an_everyday_thing(command, shapes, heights):
+    r = _built_as_said(command, shapes, heights)
+    assert any("the usual size of" in n for n in r.notes)
+
+
+def test_no_wait_make_a_number_and_a_structure_taken_off_the_board():
+    # "no wait make 5!!!": five ('make 5' was no structure named there)
+    r = _built_as_said("make 4 towers of 2. no wait make 5!!!", ["tower"] * 5, [2] * 5)
+    # "then take the right one off the board": that tower taken away (refused as parts taken off)
+    r = _built_as_said("Tower of 2 on the front-left square of the board and another on the "
+                       "front-right square. Then take the right one off the board.", ["tower"],
+                       [2])  # fmt: skip
+    assert r.spec.structures[0].region == "front left"
+    # "take the top one off" is still the top cube of it
+    _built_as_said("a tower of 5, take the top one off", ["tower"], [4])
+
+
+def test_an_everyday_thing_said_with_its_measure_is_a_likeness():
+    # the measure said after the thing is the size (the thing's usual size clashed with it)
+    r = _built_as_said("A wall as long as your hand, about twenty centimetres, and two cubes high.",
+                       ["wall"], None)  # fmt: skip
+    assert (r.spec.structures[0].length_m, r.spec.structures[0].height) == (0.2, 2)
+    r = _built_as_said("Something about the size of a shoebox: 30 cm long, 15 cm wide and 10 cm "
+                       "tall, solid.", ["block"], None)  # fmt: skip
+    s = r.spec.structures[0]
+    assert (s.length_m, s.width_m, s.height_m) == (0.3, 0.15, 0.1)

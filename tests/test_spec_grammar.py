@@ -153,3 +153,17 @@ def test_zero_and_limits():
     cell = CellConfig(limits=Limits(max_command_chars=20))
     with pytest.raises(LimitError, match="max_command_chars"):
         parse_command("a tower of three cubes on the left side", cell)
+
+
+@pytest.mark.parametrize(
+    "phrase",
+    ["two towers of 3 close together", "two towers of 3 near each other",
+     "two towers close to one another"],
+)  # fmt: skip
+def test_close_together_says_how_far_apart_not_where(phrase):
+    # "close" and "near" of each other are not the front of the table (near the robot)
+    from sdi.model.cell import CellConfig
+    from sdi.spec.grammar import parse_phrase
+
+    draft, _ = parse_phrase(phrase, CellConfig())
+    assert [s.region for s in draft.structures] == [None, None]

@@ -59,6 +59,10 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
                        r"touching)\b"),
         ("apart", _N + _THEM + r"\s+(?:must|should|may|can|do|does|will|shall)\s*(?:not|never)\s+"
                        r"touch(?:\s+(?:each\s+other|one\s+another))?\b"),
+        # "two towers of 3 but NOT joined at the top": no beam across them (read as joined)
+        ("apart", _N + r"(?:(?:they\s+are|are|(?:must|should)\s+be)\s+)?(?:not|never)\s+(?:joined|"
+                       r"connected|linked|bridged)(?:\s+(?:together|to\s+each\s+other))?(?:\s+(?:at|"
+                       r"across|over|along)\s+(?:the\s+)?tops?)?\b"),
         # a hollow structure left empty
         ("empty", _N + r"(?:with\s+)?(?:nothing|no\s+(?:cubes?|parts?|blocks?|bricks?))\s+"
                        + _INSIDE + r"\b"),
@@ -92,6 +96,10 @@ _CLAIMS: tuple[tuple[str, re.Pattern[str]], ...] = tuple(
         # long structures running the same way
         ("parallel", _N + r"(?:(?:both|all|that\s+are|which\s+are|they\s+are)\s+)?parallel"
                            r"(?:\s+to\s+(?:each\s+other|one\s+another))?\b(?!\s+to\s+the\b)"),
+        # "two walls facing each other", "… 4x2 facing, 3 apart": face to face, the same way
+        ("parallel", _N + r"(?:(?:that\s+are|which\s+are|they\s+are|standing)\s+)?facing"
+                           r"(?:\s+(?:each\s+other|one\s+another))?\b(?!\s+(?:the|a|an|it|them|"
+                           r"left|right|front|back|north|south|east|west|forward|away|towards?)\b)"),
         # "three walls …, one behind the other" (read so in `normalise`): parallel in one line
         ("parallel", _N + r"one\s+behind\s+another\b"),
         # every structure as high as the others

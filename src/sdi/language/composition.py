@@ -280,6 +280,22 @@ def relate(
                     f"{kind.replace('_', ' ')}"
                 )
             replace[s_idx] = subject.model_copy(update=dict.fromkeys(placed))
+        if (
+            kind == "on_top_of"
+            and subject.shape == "enclosure"
+            and subject.length is None
+            and subject.width is None
+            and obj_spec.shape in ("grid", "block")
+            and obj_spec.length
+            and obj_spec.width
+            and min(obj_spec.length, obj_spec.width) >= 3
+        ):  # "a 3x5 slab with a wall round its edge": the ring on its rim (a 4 by 4 overhung)
+            subject = subject.model_copy(
+                update={"length": obj_spec.length, "width": obj_spec.width}
+            )
+            replace[s_idx] = subject
+            st.notes.append(f"the ring as long and wide as the {obj_spec.shape} it stands on: "
+                            f"{obj_spec.length} by {obj_spec.width}")  # fmt: skip
         side = r.side or (phrases[r.object].side if r.object is not None else None)
         if kind == "on_top_of":
             side = edge  # on a top: only an edge said places it off the top's centre

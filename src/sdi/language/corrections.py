@@ -81,6 +81,7 @@ _FILLER = re.compile(
     r"(?:make|set)\s+the\s+(?:gap|space|spacing|distance)(?:\s+(?:to|of))?|"
     r"(?:could|can|would)\s+(?:it|that|we|you)\s+(?:be|make\s+it|do|have)|how\s+about|let'?s\s+(?:do|make)|"
     r"the|a|just|only|(?:base|footprint|size)(?:\s+(?:is|of))?\s*[:=]?|"  # "no wait, base 3 by 3"
+    r"(?:make|do|build)(?=\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)|"
     r"an|to|on|at|in|of|with)\s+)+",
     re.I,
 )

@@ -597,15 +597,6 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(RH|LH)(?:\s+(side|end|corner))?\b"),
      lambda m: ("right" if m.group(1) == "RH" else "left")
      + (f" {m.group(2)}" if m.group(2) else "")),
-    # "Twr ht 2 on slab, ctr": on the slab named before (a second slab was built, silently)
-    (re.compile(r"\b(on|onto|atop|beside|behind|next\s+to|in\s+front\s+of|left\s+of|right\s+of)\s+("
-                + _FAMILY_SAID
-                + r")\b(?!\s*(?:of|\d|one|two|three|four|five|six|seven|eight|nine|ten)\b)",
-                re.I),
-     lambda m: (f"{m.group(1)} the {m.group(2)}"
-                if lx.SHAPE_WORDS.get(m.group(2).lower()) in families_said(m.string[: m.start()])
-                and not m.group(2).lower().endswith("s")
-                else m.group(0))),
     # "'Three, the tower, make it!' He means a tower of three.": what is meant, said again (both
     # were built)
     (re.compile(r"^.*?[\"'“‘][^\"'”’]+[\"'”’][\s.!?,]*(?:he|she|they|my\s+\w+|the\s+\w+)\s+(?:means?|meant)\s+",
@@ -631,7 +622,12 @@ EVERYDAY: list[tuple[re.Pattern[str], _Repl]] = [
     # removal was refused)
     (re.compile(r"\b(take|knock|pull|lift)\s+((?:the|one|an?)\s+(?:(?:first|second|third|last|middle|left|right|"
                 r"front|back|top|end|\w+est)\s+)?(?:one|tower|stack|column|pillar|row|wall|cube|block|layer|"
-                r"level))\s+(away|off|out)\b", re.I), r"\1 \3 \2"),
+                r"level))\s+(away|off|out)\b", re.I),
+     lambda m: (f"{m.group(1)} away {m.group(2)}"  # "take the right one off (the board)": gone
+                if m.group(3).lower() == "off" and re.search(
+                    r"\b(?:first|second|third|middle|left|right|front|back)\s+(?:one|tower|stack|"
+                    r"column|pillar|row|wall|block)$", m.group(2), re.I)
+                else f"{m.group(1)} {m.group(3)} {m.group(2)}")),
     # "… then a tower of three on the left, and then move the tower to the back": it, the one
     # named last (the move was refused)
     (re.compile(r"\b(move|shift|slide|put)\s+the\s+(" + _FAMILY_SAID

@@ -1094,11 +1094,15 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
     n_ = "2" if two else words_to_numbers([groups[0]])[0]
     size = re.sub(r"^\s*,\s*|\s+(?:each|apiece)\s*$", " ", (m.group(4) or "").rstrip())
     noun = f"{m.group(2) or ''}{m.group(3)}{size.rstrip()}"
-    first = re.match(r"one|the\s+first(?:\s+one)?", m.group("items"), re.IGNORECASE)
+    # "two towers: the tower of 4 on the right, the 2 on the left": one of each size
+    listing = re.sub(r"(^|,\s*(?:and\s+)?|\band\s+)(?:the|an?)\s+(?:" + re.escape(m.group(3))
+                     + r"\s+of\s+)?(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:on|at|in|"
+                     r"to)\s)", r"\1one of ", m.group("items"), flags=re.IGNORECASE)  # fmt: skip
+    first = re.match(r"one|the\s+first(?:\s+one)?", listing, re.IGNORECASE)
     if first is None:
         # "two slabs, 2x2 and 3x3, side by side", "2 towers: 4 high on the left, 2 high on
         # the right": a size each, in turn; the words after them are about all of them
-        listed = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", m.group("items"))
+        listed = re.split(r"\s*,\s*(?:and\s+)?|\s+and\s+", listing)
         sized = list(itertools.takewhile(lambda i: bool(_SIZE_LEAD.match(i)), listed))
         tail = ", ".join(listed[len(sized) :])
         kinds = {_size_kind(i) for i in sized}
@@ -1106,7 +1110,7 @@ def _distribute(m: re.Match[str], st: ReadState, note: str) -> str:
             return m.group(0)  # "two walls, 4 long and 3 high": both, each that long and high
         st.notes.append(f"read '{said}' as {n_} {m.group(3)}s, one each")
         return " " + " and ".join(f"a {noun} {i}" for i in sized) + (f", {tail} " if tail else " ")
-    items = [i.strip(" ,") for i in _NEXT_ONE.split(m.group("items")[first.end() :])]
+    items = [i.strip(" ,") for i in _NEXT_ONE.split(listing[first.end() :])]
     pair = _ONE_THE_OTHER.fullmatch(items[0]) if len(items) == 1 else None
     if pair and n_ == "2":
         # "two towers of 3, one behind the other": the second placed by the first

@@ -519,6 +519,9 @@ def modify(
         if _NAMES_MORE.search(rest):
             return False  # "pull the top 3 off and set them down as a tower": more than a change
         change = _CHANGES.get(op)
+        for i, s in enumerate(structures):  # each its own object ("3 towers" are one three
+            structures[i] = s.model_copy()  # times), to tell which ones a change takes away
+        line = [structures[i] for i in _built_indices(built)]
         if op == "offset":
             note = _offset(m, built, structures, st.cell)
         elif change is not None:
@@ -560,6 +563,11 @@ def modify(
         if note is None:
             return False
         st.notes.append(f"'{m.group(0).strip()}': {note}")
+        if len(structures) < len(line):  # some were taken away: which places they left
+            kept = {id(s) for s in structures}
+            gone = [k for k, s in enumerate(line) if id(s) not in kept]
+            st.taken += len(gone)
+            st.taken_inner += sum(0 < k < len(line) - 1 for k in gone)
         p.count = 0
         p.modified = True  # the phrase is a change of that structure, not one of its own
         return True

@@ -13,7 +13,7 @@ from sdi.errors import SpecError
 from sdi.language.everyday import EVERYDAY
 from sdi.language.nouns import families_said, shape_alternation
 from sdi.language.spacing import MOVED
-from sdi.language.units import to_millimetres
+from sdi.language.units import declared, things, to_millimetres
 from sdi.language.words import CORRECTABLE, NEGATIONS, SIGNIFICANT
 from sdi.spec import lexicon as lx
 from sdi.spec.numbers import FACTORS, UNITS, words_to_numbers
@@ -2110,6 +2110,15 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
                 r"(?:\s+direction)?)\b", re.I), r"\1 by \2"),
     (re.compile(r"\b(\d+|three|four|five|six|seven|eight|nine)\s+(?:cubes?\s+)?(?:across\s+|long\s+|wide\s+)?"
                 r"(?:each|both|either|every)\s+ways?\b", re.I), r"\1 by \1"),
+    # a pyramid's "5x5 at the bottom", "the bottom layer has to be 4 by 4": its base ('bottom'
+    # was left unused)
+    (re.compile(r"(?<=\d)\s+(?:at|on)\s+the\s+bottom\b(?!\s+of)|\bthe\s+bottom(?:\s+(?:layer|level|"
+                r"tier|row|course))?(?=\s+(?:has\s+to\s+be|must\s+be|should\s+be|is|of)\s+(?:\d|a\s+\d))",
+                re.I),
+     lambda m: ((" at the base" if m.group(0).lower().startswith(" ") else "the base")
+                if re.search(r"\b(?:pyramid|ziggurat)s?\b", m.string, re.I)
+                and not re.search(r"\b(?:top|middle|second|upper|next)\s+(?:layer|level|tier|"
+                                  r"row)\b", m.string, re.I) else m.group(0))),
     # "bottom layer 4 by 4, then 3 by 3 on it": the first layer ('bottom' was left unused)
     (re.compile(r"^(\W*)(?:the\s+)?bottom\s+(layer|level|tier|course|row)\b(?!\s*[:=-])"
                 r"(?!.*\b(?:top|middle|second|upper|next)\s+(?:(?:layer|level|tier|course|row)\b|"
@@ -2212,6 +2221,25 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # "each leg 2 cubes tall": the legs that high
     (re.compile(r"\s*,?\s*\beach\s+(?:leg|post|pillar)\s+(?:is\s+|being\s+)?(\d+|one|two|three|four|five)\s+"
                 r"(?:cubes?\s+)?(?:tall|high)\b", re.I), r" with legs \1 high"),
+    # "then break the top 2 blocks", "break off the top cube": take them off (a row of 2 was laid
+    # beside it)
+    (re.compile(r"\bbreak\s+(?:off\s+)?(?=the\s+(?:top|upper)\s+(?:" + _NUM + r"\s+)?(?:cubes?|"
+                r"blocks?|bricks?|levels?|layers?)\b)", re.I), "take off "),
+    # "and then make it only four", "make it just 3": the size it becomes (the change was lost)
+    (re.compile(r"\b(make|have)\s+(it|that|them)\s+(?:only|just|simply)\s+(?=" + _NUM + r"\b)",
+                re.I), r"\1 \2 "),
+    # "add one more cube to it at a time until it's 7 high": that high in the end (one was added)
+    (re.compile(r"\b(?:keep\s+)?add(?:ing)?\s+(?:one\s+more\s+cube|one|a\s+cube|cubes|more\s+"
+                r"cubes)(?:\s+(?:to|on(?:to)?)\s+(?:it|the\s+top))?(?:\s+(?:one\s+)?at\s+a\s+time)?\s+"
+                r"until\s+it(?:'s|\s+is|\s+stands)\s+(" + _NUM
+                + r")\s+(?:cubes?\s+)?(?:high|tall)\b", re.I),
+     r"make it \1 high"),
+    # "Carry on with it and finish it at 6", "take it up to 5 cubes": that high in the end (the
+    # size was lost)
+    (re.compile(r"\b(?:finish|complete|top\s+out|take|bring|grow)\s+(it|the\s+tower|that\s+one)\s+"
+                r"(?:off\s+)?(?:up\s+)?(?:at|to)\s+(" + _NUM + r")(?:\s+(?:cubes?|blocks?))?"
+                r"(?:\s+(?:high|tall))?(?=\s*(?:[.,;!]|$|and\b|then\b))", re.I),
+     r"make \1 \2 high"),
     # "lose the top step", "knock off the top level": take it away
     (re.compile(r"\b(?:lose|ditch|drop|knock\s+off|take\s+off|get\s+rid\s+of)\s+(?=the\s+(?:top|last|highest|"
                 r"upper)\s+(?:step|level|layer|tier|cube|course|row)\b)", re.I), "remove "),
@@ -2263,6 +2291,32 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     # back, silently)
     (re.compile(r"\b(?:placed\s+|standing\s+|set\s+)?behind\s+(?:each\s+other|one\s+another)\b",
                 re.I), ", one behind the other"),
+    # "a 4x4 floor. now build walls around the edge of it 2 high": a ring standing on its rim
+    # (a wall was built beside it)
+    (re.compile(r"\b(?:an?\s+)?(?:walls?|low\s+walls?|rim|border|edging)\s+(?:all\s+)?(?:a)?round\s+"
+                r"the\s+(?:outer\s+)?(?:edges?|rim|border|outside)\s+of\s+(it|that|the\s+(?:floor|slab|"
+                r"base|platform|grid|plate|block))\b", re.I), r"a ring on top of \1"),
+    # "pyramid centre within 8 cm of the table centre": in the centre (a second pyramid 8 cm
+    # long was built)
+    (re.compile(r"\b(?:(?:its|the)\s+)?(?:centre|center|middle)\s+(?:is\s+|lies\s+|sits\s+)?within\s+"
+                r"\d+(?:\.\d+)?\s*(?:cm|mm|m)\s+of\s+the\s+(?:table(?:'s)?\s+|workspace(?:'s)?\s+)?"
+                r"(?:centre|center|middle)\b", re.I), "in the centre"),
+    # "three towers, the middle one the tallest", "and the midle one is the bigest": with the
+    # tallest one in the middle (read as towers one high in the centre, silently)
+    (re.compile(r"(?:,\s*|\s+and\s+)(?:with\s+)?the\s+(middle|centre|center|left|right|front|back)"
+                r"(?:[\s-]?hand)?(?:\s+one)?\s+(?:is\s+|being\s+|should\s+be\s+|must\s+be\s+)?the\s+"
+                r"(tallest|highest|biggest|largest|shortest|smallest|lowest)\b(?:\s+one)?", re.I),
+     lambda m: (f" with the {m.group(2)} one "
+                + ("in the middle" if m.group(1).lower() in ("middle", "centre", "center")
+                   else f"on the {m.group(1).lower()}"))),
+    # "Put the small tower before the big tower": in front of it, as "vor" says (dropped)
+    (re.compile(r"\b((?:put|place|set|stand|position)\b[^.;,:]*?)\bbefore\s+(?=(?:the|a|an|it|"
+                r"them)\b(?![^.;,:]*\b(?:is|are|gets|goes|has\s+been)\b))", re.I),
+     r"\1in front of "),
+    # "two walls, the one behind the other": one of them behind the other (read as a wall one
+    # long, silently)
+    (re.compile(r"\bthe\s+one\s+(?=(?:behind|in\s+front\s+of|on\s+top\s+of|next\s+to|beside|"
+                r"on|above)\s+the\s+other\b)", re.I), "one "),
     # "towers of 2, 4 and 6 one behind the other": a list of three or more, in a line front to
     # back (they stood on a 2 by 2 grid, silently)
     (re.compile(r"\b((?:towers|stacks|columns|pillars|piles)\s+of\s+(?:\d+\s*,\s*)+\d+\s*,?\s*and\s+"
@@ -2779,7 +2833,12 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
     (re.compile(r"\b(\d+(?:\.\d+)?\s*(?:cm|mm|m)|(?:\d+|two|three|four|five)\s+cubes?)\s+(?:each\s+way|every\s+way|"
                 r"in\s+(?:each|every)\s+direction|all\s+(?:round|around|ways))\b", re.I),
      r"\1 long, \1 wide and \1 high"),
-    # "two towers, both 4 high": the size of each ("both" is no count of parts)
+    # "two towers, both 4 high": the size of each ("both" is no count of parts); "four towers in
+    # a row each two high": theirs, not the row's (a wall 2 high was built beside them)
+    (re.compile(r"(?:(?<=\brow\s)|(?<=\bline\s)|(?<=\bside\s)|(?<=\bapart\s)|(?<=\bother\s))"
+                r"(?:both|all|each)(?:\s+one)?\s+(?=(?:\d+|one|two|three|"
+                r"four|five|six|seven|eight|nine|ten)\s*(?:cubes?\s+)?(?:high|tall|long|wide|deep|"
+                r"levels?|layers?|steps?)\b)", re.I), ", "),
     (re.compile(r"\b(?:both|all|each)\s+(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*"
                 r"(?:cubes?\s+)?(?:high|tall|long|wide|deep|levels?|layers?|steps?)\b)", re.I), ""),
     # "a ring 4x4, 2 high, with 1 cube, centred inside": a column of cubes in its middle
@@ -3205,6 +3264,9 @@ def _numbered_steps(text: str, notes: list[str]) -> str:
     first = _STEP_LABELS[0].match(text, head)
     if first is None:
         return text
+    text, revised = _revised_steps(text, first.end())
+    dropped = {int(m.group(1)): m.group(0).strip(" .;") for m in _DROP_STEP.finditer(text)}
+    text = _DROP_STEP.sub(" ", text)
     labels = [first]
     pos = first.end()
     for label in _STEP_LABELS[1:]:
@@ -3215,14 +3277,54 @@ def _numbered_steps(text: str, notes: list[str]) -> str:
             break
         labels.append(found)
         pos = found.end()
-    if len(labels) < 2:
+    if len(labels) < 2 and not revised:
         return text
     notes.append(f"read the {len(labels)} numbered steps as steps in that order")
-    out = text[labels[0].end() : labels[1].start()]
-    for k, m in enumerate(labels[1:], start=1):
-        end = labels[k + 1].start() if k + 1 < len(labels) else len(text)
-        out = out.rstrip(" ,;") + ". then " + text[m.end() : end]
-    return out
+    steps = [
+        text[m.end() : labels[k + 1].start() if k + 1 < len(labels) else len(text)]
+        for k, m in enumerate(labels)
+    ]
+    for n, said in revised.items():
+        if n <= len(steps):
+            notes.append(f"read step {n} as revised: '{said.strip(' .;')}'")
+            whole = re.match(r"\W*(?:an?\s+|the\s+)?(?:\w+\s+)?(?:" + _FAMILY_SAID + r")\b", said,
+                             re.I)  # fmt: skip
+            if whole and not re.search(r"\binstead\b", said, re.I):
+                steps[n - 1] = said  # a step said anew
+            else:  # "a tower of 2 instead": a change of the step
+                steps[n - 1] = steps[n - 1].rstrip(" .;,") + ". Actually, " + said
+    for n, said in dropped.items():
+        if n <= len(steps):
+            notes.append(f"left out step {n}, as said ('{said}')")
+            steps[n - 1] = ""
+    kept = [step.strip(" ,;") for step in steps if step.strip(" ,;.")]
+    return ". then ".join(kept)
+
+
+_REVISED = re.compile(
+    r"(?:(?<=^)|(?<=[\s.;,]))(?:step\s+)?([1-9])\s*\(\s*(?:revised|updated|amended|corrected|changed|"
+    r"new)\s*\)\s*[:.)\-–—]?\s*",
+    re.IGNORECASE,
+)
+_ANY_STEP = re.compile(r"(?:(?<=^)|(?<=[\s.;,]))(?:step\s+[1-9]\b|[1-9]\s*[.):](?=\s))", re.I)
+_DROP_STEP = re.compile(
+    r"\b(?:please\s+)?(?:ignore|skip|forget|drop|cancel|delete|scrap|leave\s+out)\s+(?:the\s+)?"
+    r"step\s+([1-9])\b(?:\s*[-–—,:]\s*[^.;]*)?[.;]?",
+    re.IGNORECASE,
+)
+"""'Ignore step 3.', 'Skip step 2 - we don't need it.': that step left out."""
+
+
+def _revised_steps(text: str, after: int) -> tuple[str, dict[int, str]]:
+    """ "Step 2: a tower of 5. Step 2 (revised): make that one 4 instead": the revised words of
+    each step, taken out of `text` (both were read: the revision as a change of step 2)."""
+    revised: dict[int, str] = {}
+    for m in reversed(list(_REVISED.finditer(text, after))):
+        nxt = _ANY_STEP.search(text, m.end())
+        end = nxt.start() if nxt else len(text)
+        revised[int(m.group(1))] = text[m.end() : end]
+        text = text[: m.start()] + " " + text[end:]
+    return text, revised
 
 
 _ROBOT_NAME = re.compile(r"\b(?:the\s+)?(?:abb\s+)?irb\s*-?\s*(?:120|1600)\b", re.IGNORECASE)
@@ -3681,6 +3783,10 @@ _HOMOPHONES: list[tuple[re.Pattern[str], _Repl]] = [
     # a speech recogniser's numbers: "a wall for long to high", "a tower of to in front of
     # it", "tree levels", "just won cube" (a number word where only a number fits)
     (re.compile(r"\bto\s+(?=(?:high|tall|long|wide|deep)\b)", re.I), "two "),  # not "too tall"
+    # "three walls each for long too high", "each one too high": a size where only a number fits
+    # (the height was lost: 'too' read as not about the structure)
+    (re.compile(r"(?:(?<=\blong\s)|(?<=\bhigh\s)|(?<=\btall\s)|(?<=\bwide\s)|(?<=\beach\s)"
+                r"|(?<=\beach\sone\s))too\s+(?=(?:high|tall|long|wide|deep)\b)", re.I), "two "),
     (re.compile(r"(?<=\bof\s)(?:to|too)\b" + _NOT_A_NOUN_NEXT, re.I), "two"),
     (re.compile(r"(?<=\bof\s)for\b" + _NOT_A_NOUN_NEXT, re.I), "four"),
     (_TREE, "three "),
@@ -4217,6 +4323,43 @@ _VAGUE_THEN_SAID = re.compile(
 order (the tall one was 6, the short one 5)."""
 
 
+_VAGUE = r"(tall|short|high|low|taller|shorter|big|small|little|large|bigger|smaller)"
+_VAGUE_ITEM = (
+    r"the\s+" + _VAGUE + r"(?:\s+(?:one|tower|stack|column|pillar|post))?\s*,?\s*(?:is|has|gets|"
+    r"should\s+be|must\s+be|:|=|of|with)?\s*(" + _NUM + r")(?:\s+(?:cubes?|blocks?|bricks?))?"
+    r"(?:\s+(?:high|tall))?"
+)
+_VAGUE_EACH_SAID = re.compile(
+    r"\s*(?:[—–-]+|,|;|:|\.)\s*" + _VAGUE_ITEM + r"\s*(?:,|;|\.)?\s*(?:and\s+)?" + _VAGUE_ITEM
+    + r"\s*(?=[.!]|$)",
+    re.IGNORECASE,
+)
+"""'a small tower in front of a big tower. The small has two cubes, the big has five': each
+one's size said by the word it was named with (both were 2, or the big one lost)."""
+
+
+def _vague_each_said(text: str, notes: list[str]) -> str:
+    """Two structures named by a vague size ("the small tower … the big tower"), then each
+    one's number said by that word ("the small one 2 cubes, the big one 5")."""
+    m = _VAGUE_EACH_SAID.search(text)
+    if m is None:
+        return text
+    said = {m.group(1).lower(): m.group(2), m.group(3).lower(): m.group(4)}
+    before = text[: m.start()]
+    vague = list(re.finditer(r"\b" + _VAGUE + r"\s+(?=(?:tower|stack|column|pillar|post|one)\b)",
+                             before, re.I))  # fmt: skip
+    if len(said) != 2 or sorted(v.group(1).lower() for v in vague) != sorted(said):
+        return text
+    out, at = [], 0
+    for v in vague:
+        value = words_to_numbers([said[v.group(1).lower()]])[0]
+        out += [before[at : v.start()], f"{value}-high "]
+        at = v.end()
+    notes.append(f"read '{m.group(0).strip(' ,;:.—–-')}' as the sizes of the "
+                 f"{' and the '.join(v.group(1).lower() for v in vague)} one")  # fmt: skip
+    return "".join(out) + before[at:] + text[m.end() :]
+
+
 def _vague_then_said(text: str, notes: list[str]) -> str:
     """Two sizes said vaguely ("a tall tower … a short one"), then two numbers for them."""
     m = _VAGUE_THEN_SAID.search(text)
@@ -4670,6 +4813,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _basically(text, notes)  # "a rectangle 4 long, 1 thick, 3 high — basically a wall"
     text = _ordinal_from_side(text, notes)  # "… left to right, the third from the left …"
     text = _vague_then_said(text, notes)  # "a tall tower and a short one — say five and two"
+    text = _vague_each_said(text, notes)  # "… a big tower. The small has 2 cubes, the big 5."
     text = _as_it_is_high(text, notes)  # "a wall twice as long as it is high, and 3 high"
     text = _labelled_again(text, notes)  # "Build tower A, 3 high. Now make tower A 5 high."
     text = _times_the_other(text, notes)  # "… the second twice as tall as the first, … 3"
@@ -4882,7 +5026,8 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
         return f" {metres:g} m "
 
     text = _FRACTION_OF_METRE.sub(fraction, text)
-    text = to_millimetres(text, notes)  # "a 6 inch stack", "a foot-long row"
+    text = to_millimetres(declared(things(text, notes), notes), notes)  # "Units: inches", "a 6
+    # inch stack", "as tall as a coffee mug"
     for pattern, repl in _METRE_WORDS:
         text = pattern.sub(repl, text)
     for m in re.finditer(r"\d+(?:\.\d+)?", text):

@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING
 
 from sdi.errors import LimitError, SpecError
 from sdi.language import (
+    acceptance,
     background,
     claims,
     coherence,
@@ -192,8 +193,9 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     text = fields.as_words(text, st.notes)  # "Tower | H: 4 | X (mm): 500 | Y (mm): 400"
     text = background.taken_back(background.recounted(text, st.notes), st.notes)
     text = _shared_size(_shared_coordinate(text, st), st)  # "…, both 3 high": every one's
-    text = normalise(text, st.notes)
     text = viewpoint.take(text, st.notes)  # "I'm opposite the robot … on my left": its right
+    text = acceptance.take(text, st.notes)  # "GIVEN an empty table … THEN 2 towers of 3 exist"
+    text = normalise(text, st.notes)
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes, st.material)
     text = _opening(text, st)

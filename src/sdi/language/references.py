@@ -218,7 +218,15 @@ def named_again(
         return None
     first = structures[same[0]]
     owner = next((q for q in before if q.count and q.first <= same[0] < q.first + q.count), None)
-    bare = not _sized(first) and not first.model_dump(
+    # "… a tall column. … column 4 high": a size said only by a word is no size of its own (said
+    # again as "a column …", it is a new mention)
+    vague = (
+        owner is not None
+        and not re.match(r"\W*(?:an?|one)\b", p.text, re.I)
+        and not re.search(r"\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten)\b",
+                          owner.text, re.I)
+    )  # fmt: skip
+    bare = (vague or not _sized(first)) and not first.model_dump(
         include={"region", "at_x", "at_y"}, exclude_defaults=True
     )
     if owner is None or owner.clause == p.clause or owner.count != 1 or not bare:
@@ -399,7 +407,12 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
             if spec is not None and any(s.shape in ("bridge", "arch", "canopy")
                                         for s in spec.structures):  # fmt: skip
                 return resolve(before, j)
-    bare = len(said) == 1 and said[0] in lx.SHAPE_WORDS and not said[0].endswith("s")
+    bare = (  # "on slab", "on slab, ctr": the slab named before
+        said[0] in lx.SHAPE_WORDS and not said[0].endswith("s")
+        and all(w in lx.REGION_WORDS for w in said[1:])
+    )  # fmt: skip
+    if bare:
+        words_ = said[:1]  # "slab, center": on the slab, at its centre
     if (
         len(words_) <= 2
         and words_[-1] in GENERIC | BASES | set(lx.SHAPE_WORDS) | {"cube", "block", "brick"}
@@ -419,11 +432,29 @@ def refers_to(p: Phrase, before: list[Phrase], partner: int | None = None) -> in
         for j in reversed(built):
             spec = before[resolve(before, j)].spec
             if spec is not None and any(s.shape == family for s in spec.structures):
+                if sized_otherwise(rest, before[resolve(before, j)].text):
+                    continue  # "the small tower in front of the big tower": another one
                 return resolve(before, j)
         if family is None:
             return resolve(before, built[-1])  # "the structure", "the other one"
         return None  # "the tower" named for the first time: a structure of its own
     return None
+
+
+_LARGE = frozenset({"big", "bigger", "large", "larger", "tall", "taller", "high", "higher", "long"})
+_SMALL = frozenset({"small", "smaller", "little", "short", "shorter", "low", "lower", "tiny"})
+
+
+def sized_otherwise(said: str, earlier: str) -> bool:
+    """`said` ("the big tower") gives a size word the opposite of the one the `earlier` phrase
+    was named with ("the small tower"), or another height: it is another structure."""
+    words_, named = (set(re.findall(r"[a-z]+", t.lower())) for t in (said, earlier))
+    high, was = (set(re.findall(r"\b(\d+)-high\b", t)) for t in (said, earlier))
+    return bool(
+        (_LARGE & words_ and _SMALL & named)
+        or (_SMALL & words_ and _LARGE & named)
+        or (high and was and high != was)  # "the 2-high tower in front of the 5-high tower"
+    )
 
 
 _PICK = re.compile(

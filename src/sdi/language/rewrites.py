@@ -742,7 +742,8 @@ _REWRITES += [
         # (its words were read as a structure to enclose, or reported unused)
         re.compile(
             r"\s*,?\s*\b(?:so\s+that|so|in\s+order\s+that)\s+(?:a|an|the|my|our|his|her|their|it|we|they|he|"
-            r"she|you|i|people|kids|children)\b(?:\s+\w+){0,3}?\s+(?:can|could|will|would|may|might|fits?)\b"
+            r"she|you|i|people|kids|children)\b(?:\s+\w+){0,3}?\s+(?:can|could|will|would|may|might|fits?|"
+            r"stays?|remains?|does\s+not|doesn't|won't|cannot|can't)\b"
             r"[^.,;!?\d]*(?=[.,;!?]|$)",
             re.IGNORECASE,
         ),
@@ -1123,7 +1124,8 @@ _REWRITES += [
     ),
     (  # "two columns of 4, joined at the top": towers joined at the top are a bridge's pillars
         re.compile(
-            r"\b(towers|pillars|columns|stacks|posts)\b([^.;]*?)\b(?:joined|connected|linked|"
+            r"\b(towers|pillars|columns|stacks|posts)\b([^.;]*?)(?<!\bnot\s)(?<!n't\s)(?<!\bnever\s)"
+            r"\b(?:joined|connected|linked|"
             r"bridged|tied)\s+(?:together\s+)?(?:at|across|along|over)\s+(?:the\s+)?tops?\b"
             r"(?!\s+(?:by|with))",
             re.IGNORECASE,
@@ -3194,7 +3196,8 @@ _DISTRIBUTE = re.compile(
     r"four|five|six))?)"
     r"(?P<together>\s+(?:side\s+by\s+side|next\s+to\s+each\s+other|in\s+a\s+row|in\s+(?:a\s+)?line))?"
     r"(?:\s*,?\s*please)?(?:\s*[:,;]\s*|\s+(?=one\s+(?:at|on|in)\s+the\s))(?P<items>(?:one|the\s+first(?:\s+one)?|(?:\d+|two|three|four|five|six|"
-    r"seven|eight)(?=\s*(?:x|by|cubes?\s+high|cubes?\s+tall|high|tall|long)\b))\s*(?:[^.;]|(?<=\d)\.(?=\d))*)",
+    r"seven|eight)(?=\s*(?:x|by|cubes?\s+high|cubes?\s+tall|high|tall|long)\b)|(?:the|an?)\s+(?:\3\s+of\s+)?(?=(?:\d+|two|three|four|five|six|seven|eight)\s+(?:on|at|in|to)\s))"
+    r"\s*(?:[^.;]|(?<=\d)\.(?=\d))*)",
     re.IGNORECASE,
 )
 

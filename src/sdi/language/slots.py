@@ -23,6 +23,7 @@ from sdi.language.references import (
     possessive,
     refers_to,
     same_as_before,
+    sized_otherwise,
     the_beam,
 )
 from sdi.language.state import Phrase, PhraseRelation, ReadState
@@ -212,6 +213,8 @@ def fill_slots(
         if pick is not None and structures:
             p.structure = pick
             p.ref = _holding(phrases[:k], pick)
+            if p.ref is not None and sized_otherwise(p.text, phrases[p.ref].text):
+                p.ref = None  # "the small tower in front of the big tower": another one
             if p.ref is not None:
                 continue
             p.structure = None

@@ -375,19 +375,13 @@ def take_gap(text: str, st: ReadState) -> str:
     return text
 
 
-_INNER_TAKEN = re.compile(
-    r"^'[^']*\b(?:middle|second|centre|center)\b[^']*': \d+ left of the \d+|, from the middle of "
-    r"the line\)$|\(the two in the middle taken away\)$"
-)
-
-
 def _space_kept(spec: Spec, st: ReadState, gap_m: float) -> Spec | None:
     """The middle one (or two) of one-part-wide structures `gap_m` apart taken away: the two
     left keep their places, the space between them (None when they are not one part wide)."""
     widths = {getattr(s, "length", None) or 1 for s in spec.structures}
     if len(spec.structures) != 2 or widths != {1}:
         return None
-    k = 2 if any(n.endswith("(the two in the middle taken away)") for n in st.notes) else 1
+    k = st.taken_inner
     gap = round((k + 1) * gap_m + k * st.cell.cube[1], 6)
     st.notes.append(f"the two left keep their places: {gap:g} m between them")
     return spec.model_copy(update={"gap_m": gap})
@@ -395,7 +389,7 @@ def _space_kept(spec: Spec, st: ReadState, gap_m: float) -> Spec | None:
 
 def apply_gap(spec: Spec, st: ReadState) -> Spec:
     """The stated gap on the relations beside (else between the separate structures)."""
-    inner = any(_INNER_TAKEN.search(n) for n in st.notes)
+    inner = st.taken_inner > 0
     if st.gap_m is None:
         # "three towers, then remove the middle one": at the gap SDI leaves between structures
         if inner and not spec.relations:
@@ -420,7 +414,7 @@ def apply_gap(spec: Spec, st: ReadState) -> Spec:
             st.notes.append("ignored the space of the one taken away: the others stand "
                             f"{st.gap_m:g} m apart, closed up")  # fmt: skip
         return spec.model_copy(update={"gap_m": st.gap_m})
-    if len(spec.structures) < 2 and any(" taken away)" in n for n in st.notes):
+    if len(spec.structures) < 2 and st.taken:
         # "two towers a cube apart, then take the first one down": the gap went with it
         st.notes.append(f"the gap of {st.gap_m:g} m went with the structure taken away")
         return spec

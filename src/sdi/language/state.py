@@ -83,3 +83,7 @@ class ReadState:
     # "not stacked", "they mustn't touch": (kind, what was said), checked on the whole reading
     claims: list[tuple[str, str]] = field(default_factory=list)
     centres: str | None = None  # "100 mm apart, centre to centre": the gaps said are pitches
+    # "three towers, then remove the middle one": the structures a change took out of the
+    # reading, and how many of them stood inside the line (the others keep their places)
+    taken: int = 0
+    taken_inner: int = 0

@@ -29,7 +29,7 @@ _N = (
 _AFTER = (
     r"(?=[\s-]*(?:tall|high|wide|long|deep|across|thick|apart|away|gap|spacing|space|clear|between|"
     r"in\s+(?:height|length|width|depth|diameter)|from|off|out|to\s+the|left|right|behind|"
-    r"in\s+front|of\s+(?:it|the|space|clearance|room)|x\b|by\b|×|square|on\s+"
+    r"in\s+front|of\s+(?:it|the|space|clearance|room)|to\s+(?:its|their|it)|x\b|by\b|×|square|on\s+"
     r"(?:a|each)\s+side|each|per|tower|stack|column|pillar|wall|row|line|pad|slab|block|cubes?|"
     r"blocks?|bricks?|platform|base|floor|layer|step|stairs?|staircase|pyramid|bridge|beam|gate|"
     r"arch|ring|fence|square|grid|high)\b|\s*[,.;:)!?]|\s*$)"
@@ -175,3 +175,114 @@ def to_millimetres(text: str, notes: list[str]) -> str:
     text = _COORD.sub(coord, text)
     text = _SINGLE.sub(single, text)
     return re.sub(r"(\d mm)\s*-(?=[a-z])", r"\1 ", text)  # "a foot-long row"
+
+
+_DECLARED_UNIT = (
+    r"(mm|millimet(?:er|re)s|cm|centimet(?:er|re)s|met(?:er|re)s|inch(?:es)?|feet|foot|ft)"
+)
+# the unit said once for every size ("All dimensions in cm:", "Units: inches.", "(mm)",
+# "Inches, all of these:")
+_DECLARED = re.compile(
+    r"(?:^|(?<=[.;:!?(]))\s*(?:"
+    r"(?:all\s+)?(?:dimensions|dims|sizes|measurements|lengths|figures|numbers|values)\s+"
+    r"(?:are\s+|given\s+|shown\s+|stated\s+)?(?:all\s+)?in\s+" + _DECLARED_UNIT
+    + r"|units?\s*(?:[:=]|are|is)\s*" + _DECLARED_UNIT
+    + r"|(?:all\s+)?in\s+" + _DECLARED_UNIT + r"(?=\s*[:,])"
+    + r"|" + _DECLARED_UNIT + r"\s*,\s*all\s+of\s+(?:these|them|it)"
+    + r")\s*[:,.;]?",
+    re.IGNORECASE,
+)
+_DECLARED_END = re.compile(r"\(\s*(?:all\s+)?(?:in\s+)?" + _DECLARED_UNIT + r"\s*\)", re.I)
+# a bare size: "12 long", "length 12", "20 x 10" (a count, "a tower of 5", is no length)
+_BARE_SIZE = re.compile(
+    r"\b(\d+(?:\.\d+)?)(?=\s*(?:long|high|tall|wide|deep|thick|apart)\b)"
+    r"|(\b(?:length|height|width|depth)\s*(?:[:=]|of|is)?\s*)(\d+(?:\.\d+)?)"
+    r"(?!\s*(?:mm|cm|m|in|inch|inches|ft|feet|foot|cubes?|blocks?|parts?)\b)"
+    r"|\b(\d+(?:\.\d+)?)(\s*(?:x|by|×)\s*)(\d+(?:\.\d+)?)(?:(\s*(?:x|by|×)\s*)(\d+(?:\.\d+)?))?"
+    r"(?!\s*(?:mm|cm|m|in|inch|inches|ft|feet|foot|cubes?|blocks?)\b)",
+    re.IGNORECASE,
+)
+
+
+def declared(text: str, notes: list[str]) -> str:
+    """`text` with the unit said once for every size ("All dimensions in cm: a wall 20 long,
+    10 high") written after each bare size, so a size is never read as a count of parts (a
+    wall 20 cubes long failed; "Units: inches … 12 long" was 12 cubes, silently)."""
+    m = _DECLARED.search(text) or _DECLARED_END.search(text)
+    if m is None:
+        return text
+    unit = next(g for g in m.groups() if g).lower()
+    unit = {"ft": "feet", "foot": "feet", "inch": "inches"}.get(unit, unit)
+    rest = text[: m.start()] + " " + text[m.end() :]
+
+    def sized(s: re.Match[str]) -> str:
+        if s.group(1):
+            return f"{s.group(1)} {unit}"
+        if s.group(3):
+            return f"{s.group(2)}{s.group(3)} {unit}"
+        out = f"{s.group(4)} {unit}{s.group(5)}{s.group(6)} {unit}"
+        return out + (f"{s.group(7)}{s.group(8)} {unit}" if s.group(8) else "")
+
+    out = _BARE_SIZE.sub(sized, rest)
+    if out == rest:
+        return text  # no bare size to give it: the words are left to be reported
+    notes.append(f"read '{m.group(0).strip(' :,.;')}' as the unit of every size said without one")
+    return out
+
+
+# everyday things an operator sizes by, in mm: (long, wide, high) as they usually stand
+_THINGS: dict[str, tuple[float, float, float]] = {
+    "coffee mug": (120, 85, 95), "mug": (120, 85, 95), "cup": (90, 90, 90),
+    "pint glass": (85, 85, 150), "wine glass": (80, 80, 180), "glass": (75, 75, 120),
+    "can of soda": (66, 66, 122), "soda can": (66, 66, 122), "drink can": (66, 66, 122),
+    "can of coke": (66, 66, 122), "milk carton": (70, 70, 195), "wine bottle": (75, 75, 300),
+    "bottle": (75, 75, 250), "shoebox": (300, 180, 110), "shoe box": (300, 180, 110),
+    "shoebox lid": (300, 180, 20), "house brick": (215, 102, 65),
+    "paperback book": (178, 110, 25), "paperback": (178, 110, 25), "book": (240, 170, 30),
+    "computer keyboard": (440, 130, 30), "keyboard": (440, 130, 30), "tea tray": (400, 300, 20),
+    "loaf of bread": (250, 120, 120), "domino": (50, 25, 10), "credit card": (86, 54, 1),
+    "smartphone": (150, 72, 8), "phone": (150, 72, 8), "ruler": (300, 30, 3),
+    "pencil": (180, 7, 7), "hand": (190, 90, 90), "hand's width": (100, 100, 100),
+}  # fmt: skip
+_THING = r"(?:" + "|".join(sorted(map(re.escape, _THINGS), key=len, reverse=True)) + r")"
+_LIKE_THING = re.compile(
+    r"\b(?:(?:about|roughly|around|approximately|nearly)\s+)?(?:"
+    r"as\s+(?P<dim>tall|high|long|wide|big|large)\s+as|the\s+(?P<key>size|length|height|width)\s+of)"
+    r"\s+(?:a|an|one|the|my|your)\s+(?P<thing>" + _THING + r")(?:\s+standing\s+up)?\b",
+    re.IGNORECASE,
+)
+
+
+_MEASURED = re.compile(
+    r"\d\s*(?:mm|cm|m|in|inch|inches|ft|feet)\b|\b(?:ten|fifteen|twenty|thirty|forty|fifty)\s+"
+    r"(?:centimet|millimet|cm\b|mm\b|inch)",
+    re.IGNORECASE,
+)
+
+
+def things(text: str, notes: list[str]) -> str:
+    """ "a tower as tall as a coffee mug", "a block the size of a shoebox": the size of the
+    thing, in millimetres, with a note (read as a vague 'tall', a tower of 6, silently)."""
+
+    def size(m: re.Match[str]) -> str:
+        after = re.split(r"[.;!?]", m.string[m.end() :], maxsplit=1)[0]
+        if _MEASURED.search(after):  # "as long as your hand, about twenty centimetres"
+            notes.append(f"read '{m.group(0).strip()}' as a likeness: the size said after it "
+                         "is used")  # fmt: skip
+            return " "
+        long, wide, high = _THINGS[m.group("thing").lower()]
+        said = (m.group("dim") or m.group("key") or "").lower()
+        if m.group(0).lower().endswith("standing up"):
+            long, high = high, long
+        sized = {"tall": f"{high:g} mm tall", "high": f"{high:g} mm high",
+                 "height": f"{high:g} mm high", "long": f"{long:g} mm long",
+                 "length": f"{long:g} mm long", "wide": f"{wide:g} mm wide",
+                 "width": f"{wide:g} mm wide"}.get(said)  # fmt: skip
+        flat = re.search(r"\b(?:slab|plate|floor|pad|platform|tile|grid)s?\b", m.string, re.I)
+        if sized is None:  # "the size of", "as big as": its footprint, and its height if solid
+            sized = f"{long:g} mm by {wide:g} mm" + ("" if flat else f" by {high:g} mm")
+        notes.append(f"read '{m.group(0).strip()}' as {sized} (the usual size of a "
+                     f"{m.group('thing').lower()})")  # fmt: skip
+        return f" {sized} "
+
+    return _LIKE_THING.sub(size, text)

@@ -20,8 +20,13 @@ _TABLE = r"(?:the\s+)?(?:table|cell|bench|workspace|work\s+area)"
 _ACROSS = re.compile(
     r"(?:(?:as\s+)?(?:seen|looking|viewed|looked\s+at|as\s+I\s+(?:see|look\s+at)\s+(?:it|them))"
     r"\s+)?(?:from\s+where\s+I(?:'m|\s+am)?\s+(?:stand(?:ing)?|sit(?:ting)?|am)\s*,?\s*)?"
-    r"(?:(?:I(?:'m|\s+am)|I\s+(?:stand|sit|work)|we(?:'re|\s+are)|standing|sitting|working)\s+)?"
-    r"(?:(?:across|opposite)\s+(?:from\s+)?" + _ROBOT + r"(?:\s+(?:across|at)\s+" + _TABLE + r")?"
+    r"(?:(?:I(?:'m|\s+am)|im|we(?:'re|\s+are))\s+)?"
+    r"(?:(?:I\s+(?:stand|sit|work)|standing|sitting|working)\s+)?"
+    r"(?:(?:across|opp?os+ite)\s+(?:from\s+)?" + _ROBOT + r"(?:\s+(?:across|at)\s+" + _TABLE + r")?"
+    # "I'm across the table.", "I'm standing across from it": the robot is what they face
+    r"|(?:(?<=\bI'm\s)|(?<=\bim\s)|(?<=\bam\s)|(?<=ing\s))across\s+(?:"
+    + _TABLE
+    + r"|from\s+(?:it|him|her))(?=\s*[,.;:!-]|\s*$)"
     r"|(?:across|on\s+the\s+(?:other|far)\s+side\s+of)\s+" + _TABLE + r"\s+from\s+"
     r"(?:" + _ROBOT + r"|it)"
     r"|facing\s+" + _ROBOT + r"(?:\s+across\s+" + _TABLE + r")?"
@@ -37,6 +42,8 @@ _ACROSS = re.compile(
     + r"\s+facing\s+me)",
     re.IGNORECASE,
 )
+
+_ITS_PLACE = re.compile(r"\s*on\s+the\s+(?:far|other)\b", re.IGNORECASE)
 
 # "the robot's left": the robot's own frame, said outright
 _ROBOTS = re.compile(
@@ -66,10 +73,21 @@ _AWAY_FROM_ME = re.compile(r"\baway\s+from\s+me\b", re.IGNORECASE)
 # "in front of it as I see it": between the speaker and it
 _AS_I_SEE = re.compile(
     r"\b(in\s+front\s+of|behind)\s+((?:it|them|the\s+\w+(?:\s+\w+)?))\s*,?\s*"
-    r"(?:as\s+I\s+(?:see|look\s+at)\s+(?:it|them)|from\s+(?:me|where\s+I\s+(?:stand|am)))\b",
+    r"(?:as\s+I\s+(?:see|look\s+at)\s+(?:it|them)|from\s+(?:me|where\s+I\s+(?:stand|am))"
+    r"|[—–-]*\s*between\s+me\s+and\s+(?:it|them))\b",
     re.IGNORECASE,
 )
-_BEYOND = re.compile(r"\bbeyond\s+(it|them|the\s+\w+)\s+from\s+me\b", re.IGNORECASE)
+# "beyond it from me", "on the far side of the big tower (6) from me": in front of it
+_BEYOND = re.compile(
+    r"\b(?:beyond|on\s+the\s+(?:far|other)\s+side\s+of)\s+(it|them|the\s+\w+(?:\s+\w+)?)"
+    r"(\s*\(\s*\d+\s*\))?\s+from\s+me\b",
+    re.IGNORECASE,
+)
+_BETWEEN_ME = re.compile(r"\bbetween\s+me\s+and\s+(it|them|the\s+\w+)\b", re.IGNORECASE)
+# "the far corner on my right", "my edge": the front corner, the back edge
+_FAR_CORNER = re.compile(r"\b(?:the\s+)?(?:far(?:thest|th?est)?|furthest)\s+(corner|edge)\b", re.I)
+_NEAR_CORNER = re.compile(r"\b(?:the\s+)?(?:near(?:est)?|closest)\s+(corner|edge)\b", re.I)
+_MY_EDGE = re.compile(r"\bmy\s+(?:own\s+)?edge(?:\s+of\s+" + _TABLE + r")?", re.IGNORECASE)
 
 
 def _flip(side: str) -> str:
@@ -79,7 +97,11 @@ def _flip(side: str) -> str:
 
 def take(text: str, notes: list[str]) -> str:
     """`text` with its places in the robot's frame; a note for each viewpoint used."""
-    said = _ACROSS.search(text)
+    text = text.replace("’", "'")  # "I’m opposite the robot"
+    # "a staircase on the far side of the table from the robot" is where it stands, not they
+    said = next(
+        (m for m in _ACROSS.finditer(text) if not _ITS_PLACE.match(m.group(0))), None
+    )
     if said is None:
         return _own_frame(text, notes)
     text = text[: said.start()] + " " + text[said.end() :]
@@ -106,9 +128,13 @@ def take(text: str, notes: list[str]) -> str:
         ),
         text,
     )
-    seen = _BEYOND.sub(lambda m: f"in front of {m.group(1)}", seen)
+    seen = _BEYOND.sub(lambda m: f"in front of {m.group(1)}{m.group(2) or ''}", seen)
+    seen = _BETWEEN_ME.sub(lambda m: f"behind {m.group(1)}", seen)
     if seen != text:
         turns.append("in front of a structure as they see it is behind it")
+    seen = turn(_MY_EDGE, seen, " the back edge ", "their edge is the back")
+    seen = turn(_FAR_CORNER, seen, r" the front \1 ", "the far corner from them is at the front")
+    seen = turn(_NEAR_CORNER, seen, r" the back \1 ", "the corner near them is at the back")
     text = turn(_NEAR_ME, seen, " at the back ", "the side near them is the back")
     text = turn(_FAR_FROM_ME, text, " the front ", "the far side from them the front")
     text = turn(_TOWARDS_ME, text, " towards the back ", "towards them is towards the back")

@@ -1163,6 +1163,12 @@ class _Parser:
                 ):
                     take(k)  # "close to the back": the back, said after it
                     continue
+                if w in ("close", "near") and (
+                    nxt in ("together", "each")
+                    or (nxt == "to" and "other" in (self.word(k + 3), self.word(k + 4)))
+                    or (nxt == "to" and self.word(k + 3) == "another")
+                ):
+                    continue  # "close together", "near each other": how far apart, not where
                 if (
                     w == "far"
                     and nxt in ("left", "right")
