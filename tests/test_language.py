@@ -11330,3 +11330,31 @@ def test_an_everyday_thing_said_with_its_measure_is_a_likeness():
                        "tall, solid.", ["block"], None)  # fmt: skip
     s = r.spec.structures[0]
     assert (s.length_m, s.width_m, s.height_m) == (0.3, 0.15, 0.1)
+
+
+def test_a_maths_teachers_numbers_and_an_engineers_piers_and_deck():
+    # "half of eight" (8), "twice as many towers as 2" (as many: 8), "one step fewer than 5" (1)
+    _built_as_said("a tower of half of eight cubes", ["tower"], [4])
+    r = _built_as_said("build twice as many towers as 2, each 3 high", ["tower"] * 4, [3] * 4)
+    assert not any("'many'" in n for n in r.notes)
+    assert plan("a staircase with one step fewer than 5").spec.structures[0].steps == 4
+    assert plan("a pyramid with two more levels than 1").spec.structures[0].height == 3
+    # "two piers 4 high … with a deck across": a bridge (the piers unused, the deck a slab)
+    r = _built_as_said("two piers 4 high, 3 cubes apart, with a deck across", ["bridge"], None)
+    assert r.spec.structures[0].height == 4
+    _built_as_said("a deck on two piers of 3, clear span 2", ["bridge"], None)
+
+
+def test_a_texters_u_a_family_heading_and_a_beam_laid_on_them():
+    # "can u build like a tower of 5": you (a U shape like a tower: an error)
+    _built_as_said("yo can u build like a tower of 5 rn pls 🙏", ["tower"], [5])
+    assert plan("can u make a u shape 5 wide").spec.structures[0].shape == "u_shape"
+    # "a garden border: a low edging wall 8 long": the wall the heading names (an enclosure)
+    r = _built_as_said("a garden border: a low edging wall 8 long along the front", ["wall"], None)
+    assert r.spec.structures[0].length == 8
+    _built_as_said("Border: a wall 8 long", ["wall"], None)
+    _built_as_said("Enclosure: outer 5x4, wall height 2, open interior.", ["enclosure"], None)
+    # "lay a beam on them", "a deck on two piers": the beam across them (the towers stacked)
+    for command in ("two pillars of 3, lay a beam on them", "two towers of 2, place a beam on top "
+                    "of them", "two piers of 3, lay a deck on them"):  # fmt: skip
+        _built_as_said(command, ["bridge"], None)

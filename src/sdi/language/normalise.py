@@ -212,7 +212,11 @@ def _product(m: re.Match[str]) -> bool:
     return (n + rows + each).isdigit() and int(n) == int(rows) * int(each)
 
 
-_DECK = re.compile(r"\b(?:lay|put|place|set)\s+(?:the|a)\s+deck\b", re.IGNORECASE)
+_DECK = re.compile(
+    r"\b(?:lay|put|place|set)\s+(?:the|a)\s+deck\b|\bdeck\s+(?:across|over|on|spanning)\b"
+    r"|\bwith\s+a\s+deck\s+across\b",
+    re.IGNORECASE,
+)
 _BOTH_SIDES = (
     r"\s*,?\s*(?:left\s+and\s+right|right\s+and\s+left|front\s+and\s+back|back\s+and\s+front)\b"
 )
@@ -3058,6 +3062,16 @@ _PHRASINGS: list[tuple[re.Pattern[str], _Repl]] = [
      lambda m: ("pillar" + m.group(1)) if _BRIDGE.search(m.string) or _DECK.search(m.string)
      else m.group(0) if re.search(r"\b(?:lintels?|beams?|girders?|spans?|across)\b", m.string, re.I)
      else ("column" + m.group(1))),  # an engineer's standing alone are columns
+    # "two pillars of 3, lay a beam on them": put it across them (the towers were stacked)
+    (re.compile(r"\b(?:lay|put|place|set)\s+((?:a|the|one)\s+(?:beam|lintel|plank|girder|deck))\s+(?:on|"
+                r"across|over|onto)\s+(?:top\s+of\s+)?(them|both|the\s+two|the\s+(?:towers|pillars|piers|"
+                r"posts|columns))\b", re.I), r"then put \1 across \2"),
+    # "two piers 4 high … with a deck across", "a deck on two piers of 3": the beam they carry
+    # (a slab was built, the piers reported unused)
+    (re.compile(r"\b(a|the)\s+deck\b", re.I),
+     lambda m: f"{m.group(1)} beam" if re.search(r"\b(?:piers?|pillars?)\b", m.string, re.I)
+     and re.search(r"\bdeck\s+(?:across|over|on|spanning|between)\b|\bacross\b", m.string, re.I)
+     else m.group(0)),
     (re.compile(r"\bbetween\s+(?:neighbouring|neighboring|adjacent)\s+(?:columns|towers|stacks|pillars)\b",
                 re.I), "between them"),
     (re.compile(r"\bground[\s-]+floor\s+(?=slab|plate|pad|platform|layer)", re.I), ""),
@@ -3590,6 +3604,9 @@ _SHORTHAND: list[tuple[re.Pattern[str], _Repl]] = [
         ),
         r"\1",
     ),
+    # a texter's "can u build like a tower of 5": you (read as a U shape like a tower: an error)
+    (re.compile(r"\b(can|could|would|will|do|did|if|when|are|thank)\s+u\b(?![\s-]*(?:shape|shaped)\b)",
+                re.I), r"\1 you"),
     (re.compile(r"\bidk\b", re.I), "I do not know"),
     (re.compile(r"\bidc\b", re.I), "I do not care"),
     (re.compile(r"\bdunno\b", re.I), "I do not know"),
@@ -4288,7 +4305,7 @@ _NOT_A_NAME = frozenset({
 """Words that make a heading a request or a sentence, or say something of the structure's
 shape: not the name of a thing."""
 _HEADING = re.compile(
-    r"^[ \t]*((?:[a-z'-]+[ \t]+){1,3}?)([a-z]+)[ \t]*(?::|--|—|–|[ \t]-[ \t])[ \t]*(?=\S)", re.I
+    r"^[ \t]*((?:[a-z'-]+[ \t]+){0,3}?)([a-z]+)[ \t]*(?::|--|—|–|[ \t]-[ \t])[ \t]*(?=\S)", re.I
 )
 
 
@@ -4771,10 +4788,14 @@ def _named_heading(text: str, notes: list[str]) -> str:
         return text  # "Graphic wall: 5 long, 4 high, and a plinth …": the wall's own sizes first
     said = [w.lower() for w in m.group(1).split()]
     listed = set(families_said(m.group(0))) <= set(described)
-    if said[0] in ("a", "an", "the"):
+    if said[:1] in (["a"], ["an"], ["the"]):
         said = said[1:]
     told = set(_described(first))
-    if not said and len(told) == 1 and not told & {"tower", *families_said(m.group(2))}:
+    # "a garden border: a low wall …": a family of its own, then another one named (not
+    # "Enclosure: outer 5x4, wall height 2", its walls)
+    own = families_said(m.group(2)) and re.match(r"\s*(?:an?|one)\s", first, re.I)
+    named = (not said and not families_said(m.group(2))) or own
+    if named and len(told) == 1 and not told & {"tower", *families_said(m.group(2))}:
         # "The altar: a 2 by 3 block, two high": the heading's noun names what the words after
         # it describe as another structure (an altar is also a table; not "a bridge: 2 pillars
         # of 3, a beam across", which names its parts)
@@ -4792,6 +4813,50 @@ def _named_heading(text: str, notes: list[str]) -> str:
     notes.append(f"read '{m.group(0).strip(' :-—–')}' as the name of what the words after it "
                  "describe")  # fmt: skip
     return text[m.end() :]
+
+
+_HALF_OF = re.compile(r"\bhalf\s+of\s+(" + _NUM + r"|1[02468])\b", re.IGNORECASE)
+_AS_MANY = re.compile(
+    r"\b(twice|double|three\s+times|four\s+times)\s+as\s+many\s+((?:[a-z]+\s+)?)as\s+(" + _NUM
+    + r")\b",
+    re.IGNORECASE,
+)
+_COUNTED_NOUN = r"(?:steps?|levels?|layers?|towers?|rows?|blocks?|stacks?|columns?)"
+_FEWER_THAN = re.compile(
+    r"\b(" + _NUM + r")\s+(?:(" + _COUNTED_NOUN + r")\s+(more|fewer|less)|(more|fewer|less)\s+("
+    + _COUNTED_NOUN + r"))\s+than\s+(" + _NUM + r")\b",
+    re.IGNORECASE,
+)
+
+
+def _arithmetic(text: str, notes: list[str]) -> str:
+    """A maths teacher's numbers: "half of eight", "twice as many towers as 2", "one step fewer
+    than 5" — the number they come to, noted (read as 8, as "many", and 1)."""
+
+    def n(said: str) -> int:
+        return int(words_to_numbers([said.lower()])[0])
+
+    def said_as(m: re.Match[str], value: int, rest: str = "") -> str:
+        notes.append(f"read '{m.group(0).strip()}' as {value}{' ' + rest.strip() if rest else ''}")
+        return f"{value} {rest}".rstrip() + " "
+
+    def half(m: re.Match[str]) -> str:
+        return said_as(m, n(m.group(1)) // 2) if n(m.group(1)) % 2 == 0 else m.group(0)
+
+    def as_many(m: re.Match[str]) -> str:
+        factor = {"twice": 2, "double": 2, "three": 3, "four": 4}[m.group(1).lower().split()[0]]
+        return said_as(m, factor * n(m.group(3)), m.group(2))
+
+    def fewer(m: re.Match[str]) -> str:
+        sign = 1 if (m.group(3) or m.group(4)).lower() == "more" else -1
+        value = n(m.group(6)) + sign * n(m.group(1))
+        noun = m.group(2) or m.group(5)
+        plural = noun if noun.endswith("s") or value == 1 else noun + "s"
+        return said_as(m, value, plural) if value > 0 else m.group(0)
+
+    text = _HALF_OF.sub(half, text)
+    text = _AS_MANY.sub(as_many, text)
+    return _FEWER_THAN.sub(fewer, text)
 
 
 def normalise(command: str, notes: list[str] | None = None) -> str:
@@ -4817,6 +4882,7 @@ def normalise(command: str, notes: list[str] | None = None) -> str:
     text = _as_it_is_high(text, notes)  # "a wall twice as long as it is high, and 3 high"
     text = _labelled_again(text, notes)  # "Build tower A, 3 high. Now make tower A 5 high."
     text = _times_the_other(text, notes)  # "… the second twice as tall as the first, … 3"
+    text = _arithmetic(text, notes)  # "half of eight", "twice as many towers as 2"
     text = _ORDINAL_FIGURE.sub(lambda m: _ORDINAL_WORD[m.group(1)], text)  # "a 2nd row"
     text = _ALONE.sub(r"a single \1", text)  # "between them a cube alone": a cube, not a gap
 

@@ -199,7 +199,7 @@ def read(command: str, cell: CellConfig | None = None) -> Reading:
     st.notes[:0] = corrected
     text = corrections.correct(text, st.notes, st.material)
     text = _opening(text, st)
-    _vague_counts(command, st)
+    _vague_counts(text, st)
     text = _same_one(_margins(_table_sized(_body_measures(text, st), st), st), st)
     text = _take_long_side(text, st)
     text = _take_u_opening(text, st)
