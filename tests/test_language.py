@@ -11184,6 +11184,10 @@ def test_the_one_behind_the_other_and_structures_named_by_a_vague_size():
         r = _built_as_said(command, ["tower", "tower"], [2, 5])
         assert [(x.kind, x.side) for x in r.spec.relations] == [("next_to", "front")]
         assert r.spec.structures[r.spec.relations[0].subject].height == 2  # the small in front
+    # named both ways in one phrase, "the small one" is one of those two
+    r = _built_as_said("a big tower of 6 and a small one of 2, then put a cube on top of the small "
+                       "one", ["tower"] * 3, [3, 6])  # fmt: skip
+    assert r.spec.relations[0].kind == "on_top_of"
 
 
 def test_walls_round_the_edge_of_a_floor_stand_on_its_rim():

@@ -450,10 +450,11 @@ def sized_otherwise(said: str, earlier: str) -> bool:
     was named with ("the small tower"), or another height: it is another structure."""
     words_, named = (set(re.findall(r"[a-z]+", t.lower())) for t in (said, earlier))
     high, was = (set(re.findall(r"\b(\d+)-high\b", t)) for t in (said, earlier))
+    large, small = _LARGE & words_, _SMALL & words_  # (named both ways: one of those)
     return bool(
-        (_LARGE & words_ and _SMALL & named)
-        or (_SMALL & words_ and _LARGE & named)
-        or (high and was and high != was)  # "the 2-high tower in front of the 5-high tower"
+        (large and _SMALL & named and not large & named)
+        or (small and _LARGE & named and not small & named)
+        or (high and was and not high & was)  # "the 2-high tower in front of the 5-high tower"
     )
 
 
