@@ -11145,6 +11145,11 @@ def test_acceptance_criteria_build_what_the_then_says(command, shapes, heights):
     assert "canopy" not in [s.shape for s in r.spec.structures]
 
 
+def test_a_then_in_capitals_without_a_frame_is_a_sequence():
+    # no GIVEN, no WHEN: "THEN" is the next step, and what came before it is built too
+    _built_as_said("BUILD A ROW OF 6 THEN A TOWER OF 2 ON TOP", ["row", "tower"], None)
+
+
 def test_changes_said_with_only_until_and_break():
     # "make it only four" (the change was lost), "until it's 7 high" (one cube was added), "break
     # the top 2 blocks" (a row of 2 was laid beside it)

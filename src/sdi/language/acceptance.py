@@ -46,10 +46,13 @@ def take(text: str, notes: list[str]) -> str:
     text = _EMPTY.sub(empty, text)
     if said:
         notes.append(f"read '{said[0]}' as the table SDI starts from, not a structure to build")
-    framed = _SECTION.search(text) or re.match(r"\s*given\b", text, re.IGNORECASE)
-    if framed is None:
+    # a frame: GIVEN said, or WHEN and THEN both ("BUILD A ROW OF 6 THEN A TOWER" in capitals
+    # is a sequence, not a frame), or "Given …" opening the command
+    capitals = {m.group(1) for m in _SECTION.finditer(text)}
+    framed = "GIVEN" in capitals or {"WHEN", "THEN"} <= capitals
+    if not framed and not re.match(r"\s*given\b", text, re.IGNORECASE):
         return text
-    pattern = _SECTION if _SECTION.search(text) else _SECTION_PROSE
+    pattern = _SECTION if framed else _SECTION_PROSE
     cuts = list(pattern.finditer(text))
     sections = [
         (m.group(1).upper(), text[m.end() : cuts[k + 1].start() if k + 1 < len(cuts) else None])
