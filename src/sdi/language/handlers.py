@@ -147,18 +147,24 @@ def _extra_cube(m: re.Match[str], st: ReadState, note: str) -> str:
 
 
 def _arith(m: re.Match[str], st: ReadState, note: str) -> str:
-    said, groups = _said(m)
-    a_, b_ = (words_to_numbers([g])[0] for g in (groups[0], groups[2]))
-    if groups[2] in ("that", "this", "it", "those", "them"):
+    """ "3 more than 4", "one step fewer than 5": the number worked out, with what it counts."""
+    said, (a, noun, op, noun_after, b) = _said(m)
+    a_, b_ = (words_to_numbers([g])[0] for g in (a, b))
+    if b in ("that", "this", "it", "those", "them"):
         # "one of 2, the other 3 more than that": the number said last before it
         before = re.findall(r"[a-z]+|\d+", m.string[: m.start()].lower())
         said_before = [w for w in words_to_numbers(before) if w.isdigit()]
         b_ = said_before[-1] if said_before else b_
     if not (a_.isdigit() and b_.isdigit()):
         return m.group(0)
-    value = int(b_) + (int(a_) if groups[1] == "more" else -int(a_))
-    st.notes.append(f"read '{said}' as {value}")
-    return f" {value} "
+    value = int(b_) + (int(a_) if op == "more" else -int(a_))
+    counted = noun or noun_after
+    if counted and value < 1:
+        return m.group(0)
+    if counted and value > 1 and not counted.endswith("s"):
+        counted += "s"  # "one step fewer than 5": 4 steps
+    st.notes.append(f"read '{said}' as {value}" + (f" {counted}" if counted else ""))
+    return f" {value} {counted} "
 
 
 def _from_centre(m: re.Match[str], st: ReadState, note: str) -> str:

@@ -4821,17 +4821,9 @@ _AS_MANY = re.compile(
     + r")\b",
     re.IGNORECASE,
 )
-_COUNTED_NOUN = r"(?:steps?|levels?|layers?|towers?|rows?|blocks?|stacks?|columns?)"
-_FEWER_THAN = re.compile(
-    r"\b(" + _NUM + r")\s+(?:(" + _COUNTED_NOUN + r")\s+(more|fewer|less)|(more|fewer|less)\s+("
-    + _COUNTED_NOUN + r"))\s+than\s+(" + _NUM + r")\b",
-    re.IGNORECASE,
-)
-
-
 def _arithmetic(text: str, notes: list[str]) -> str:
-    """A maths teacher's numbers: "half of eight", "twice as many towers as 2", "one step fewer
-    than 5" — the number they come to, noted (read as 8, as "many", and 1)."""
+    """A maths teacher's numbers: "half of eight", "twice as many towers as 2" — the number they
+    come to, noted (read as 8 and as "many"; "one step fewer than 5" is `handlers._arith`'s)."""
 
     def n(said: str) -> int:
         return int(words_to_numbers([said.lower()])[0])
@@ -4847,16 +4839,8 @@ def _arithmetic(text: str, notes: list[str]) -> str:
         factor = {"twice": 2, "double": 2, "three": 3, "four": 4}[m.group(1).lower().split()[0]]
         return said_as(m, factor * n(m.group(3)), m.group(2))
 
-    def fewer(m: re.Match[str]) -> str:
-        sign = 1 if (m.group(3) or m.group(4)).lower() == "more" else -1
-        value = n(m.group(6)) + sign * n(m.group(1))
-        noun = m.group(2) or m.group(5)
-        plural = noun if noun.endswith("s") or value == 1 else noun + "s"
-        return said_as(m, value, plural) if value > 0 else m.group(0)
-
     text = _HALF_OF.sub(half, text)
-    text = _AS_MANY.sub(as_many, text)
-    return _FEWER_THAN.sub(fewer, text)
+    return _AS_MANY.sub(as_many, text)
 
 
 def normalise(command: str, notes: list[str] | None = None) -> str:

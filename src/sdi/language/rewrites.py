@@ -408,6 +408,8 @@ _COUNTED_NOUN = (
     r"(?=(?:of\s+)?\d+\s*(?:cubes?\s+)?(?:high|tall|long|wide|levels?|steps?|x)\b)"
 )
 _NUMBER_WORD = "one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve"
+_COUNTED = r"(?:steps?|levels?|layers?|towers?|rows?|blocks?|stacks?|columns?)"
+"""What a count is said of in "one step fewer than 5" (kept with the number worked out)."""
 _GLOSS_LEAD = r"(?:(?:so\s+|that\s+is\s+|i\.?e\.?\s+)?(?:going|running|measured|counted)\s+)?"
 
 
@@ -1767,8 +1769,8 @@ _REWRITES += [
     ),
     (
         re.compile(
-            r"\b(\d+|one|two|three|four|five)\s+(more|less|fewer)\s+(?:cubes?\s+|parts?\s+)?than\s+"
-            r"(\d+|[a-z]+)\b",
+            r"\b(\d+|one|two|three|four|five)\s+(?:(" + _COUNTED + r")\s+)?(more|less|fewer)\s+"
+            r"(?:cubes?\s+|parts?\s+|(" + _COUNTED + r")\s+)?than\s+(\d+|[a-z]+)\b",
             re.IGNORECASE,
         ),
         "{arith}",
